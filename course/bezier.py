@@ -1,0 +1,516 @@
+"""Bézier curves: de Casteljau's algorithm and the Bernstein form.
+
+A Bézier curve of degree n has n + 1 control points ``P[0] ... P[n]``, given as
+a float array of shape ``(N, d)`` (one row per point, N = n + 1, any dimension
+d >= 1). The parameter t follows the textbook: one de Casteljau step maps a
+level to the next by ``(1 - t) * P[i] + t * P[i + 1]``, so ``B(0) = P[0]`` and
+``B(1) = P[n]``. Parameters outside [0, 1] extrapolate the same polynomial.
+
+Every public function validates its input once and never modifies it.
+
+References
+----------
+.. [1] P. de Casteljau, "Courbes et surfaces à pôles", André Citroën, 1963.
+.. [2] G. Farin, *Curves and Surfaces for CAGD*, 5th ed., Morgan Kaufmann, 2002,
+   chapters 3-5 (de Casteljau, Bernstein form, subdivision, degree elevation).
+.. [3] R. T. Farouki and V. T. Rajan, "On the numerical condition of polynomials
+   in Bernstein form", CAGD 4(3), 1987.
+"""
+
+from __future__ import annotations
+
+import itertools
+import sys
+from functools import lru_cache
+from typing import Any
+
+import numpy as np
+
+from course._validate import (
+    as_choice,
+    as_int,
+    as_parameter,
+    as_points,
+    as_positive_float,
+    as_scalar_parameter,
+)
+
+__all__ = [
+    "bernstein_basis",
+    "bezier_bernstein",
+    "binomial",
+    "de_casteljau",
+    "de_casteljau_levels",
+    "de_casteljau_recursive",
+    "derivative",
+    "elevate",
+    "flatten",
+    "sample_uniform",
+    "split",
+    "uniform_parameters",
+]
+
+# Beyond this degree some binomial(n, k) exceeds the largest float64.
+MAX_BERNSTEIN_DEGREE = 1029
+
+
+# --- de Casteljau ------------------------------------------------------------
+
+
+def de_casteljau(points: Any, t: Any) -> np.ndarray:
+    """Evaluate the Bézier curve at t by repeated linear interpolation.
+
+    The iterative form: each level replaces N points by the N - 1 points
+    ``(1 - t) * P[i] + t * P[i + 1]`` until one is left. It is vectorized over
+    an array of parameters.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+        Control points, one row per point. One point is a degree-0 curve.
+    t : float or array_like, shape (M,)
+        Parameters. Values outside [0, 1] extrapolate.
+
+    Returns
+    -------
+    ndarray
+        Shape (d,) for scalar t, (M, d) for an array of t.
+
+    Examples
+    --------
+    >>> de_casteljau([[0, 0], [1, 2], [2, 0]], 0.5)
+    array([1., 1.])
+    >>> de_casteljau([[0, 0], [1, 2], [2, 0]], [0, 1])
+    array([[0., 0.],
+           [2., 0.]])
+    """
+    control = as_points(points)
+    values, is_scalar = as_parameter(t)
+    curve = _de_casteljau(control, values)
+    return curve[0] if is_scalar else curve
+
+
+def _de_casteljau(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """(M, d) curve points; ``control`` (N, d), ``t`` (M,), both validated."""
+    t = t[:, None]
+    s = 1.0 - t
+    # One (M, d) array per control point: each level is the matplotlib one-liner
+    # beta[:-1] * (1 - t) + beta[1:] * t, done point by point so that the work
+    # stays on contiguous (M, d) blocks instead of an (M, N, d) temporary.
+    beta = [np.broadcast_to(point, (len(t), control.shape[1])) for point in control]
+    for _level in range(1, len(beta)):
+        beta = [beta[i] * s + beta[i + 1] * t for i in range(len(beta) - 1)]
+    return np.array(beta[0], dtype=float)
+
+
+def de_casteljau_recursive(points: Any, t: Any) -> np.ndarray:
+    """The handouts' ``recursive_bezier``: de Casteljau by recursion, scalar t.
+
+    Each call computes one level and recurses on it, so a curve with N control
+    points needs N nested calls. Python limits nesting
+    (``sys.getrecursionlimit()``, 1000 by default): when a curve would come
+    near that limit this raises ``RecursionError`` up front, naming the degree
+    and the limit, instead of failing deep inside the recursion.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+        Control points.
+    t : float
+        One parameter value.
+
+    Returns
+    -------
+    ndarray, shape (d,)
+        The same value as ``de_casteljau(points, t)``.
+
+    Examples
+    --------
+    >>> de_casteljau_recursive([[0, 0], [1, 2], [2, 0]], 0.25)
+    array([0.5  , 0.75])
+    """
+    control = as_points(points)
+    value = as_scalar_parameter(t)
+    depth = _stack_depth()
+    limit = sys.getrecursionlimit()
+    # Headroom for numpy and the interpreter's own frames.
+    needed = len(control) + 50
+    if depth + needed > limit:
+        raise RecursionError(
+            f"de_casteljau_recursive: a degree-{len(control) - 1} curve needs "
+            f"{len(control)} nested calls, and the stack is already {depth} deep; "
+            f"Python's recursion limit is {limit}. Use de_casteljau (iterative), "
+            f"or raise the limit with sys.setrecursionlimit({depth + needed + 100})."
+        )
+    return _recursive_step(control, value)
+
+
+def _recursive_step(level: np.ndarray, t: float) -> np.ndarray:
+    if len(level) == 1:
+        return level[0].copy()
+    return _recursive_step(level[:-1] * (1 - t) + level[1:] * t, t)
+
+
+def _stack_depth() -> int:
+    frame, depth = sys._getframe(), 0
+    while frame is not None:
+        frame, depth = frame.f_back, depth + 1
+    return depth
+
+
+def de_casteljau_levels(points: Any, t: Any) -> list[np.ndarray]:
+    """Every intermediate level of de Casteljau's algorithm at one t.
+
+    Returns
+    -------
+    list of ndarray
+        ``[level0 (N, d), level1 (N - 1, d), ..., level(N-1) (1, d)]``:
+        level 0 is the control polygon, the last level is the point B(t).
+        There are N (N + 1) / 2 points in all: the O(n^2) work of one
+        evaluation.
+
+    Examples
+    --------
+    >>> for level in de_casteljau_levels([[0, 0], [2, 2], [4, 0]], 0.5):
+    ...     print(level.tolist())
+    [[0.0, 0.0], [2.0, 2.0], [4.0, 0.0]]
+    [[1.0, 1.0], [3.0, 1.0]]
+    [[2.0, 1.0]]
+    """
+    level = as_points(points)
+    value = as_scalar_parameter(t)
+    levels = [level]
+    while len(level) > 1:
+        level = level[:-1] * (1 - value) + level[1:] * value
+        levels.append(level)
+    return levels
+
+
+# --- the Bernstein form ------------------------------------------------------
+
+
+@lru_cache(maxsize=64)
+def _pascal_row(n: int) -> tuple[int, ...]:
+    """Row n of Pascal's triangle, exact, each row from the one above it."""
+    row: tuple[int, ...] = (1,)
+    for _ in range(n):
+        row = (1, *(a + b for a, b in itertools.pairwise(row)), 1)
+    return row
+
+
+def binomial(n: int, k: int) -> int:
+    """The binomial coefficient C(n, k), exactly, from Pascal's triangle.
+
+    ``C(n, k) = C(n - 1, k - 1) + C(n - 1, k)``, computed row by row (not by
+    the handouts' double recursion, which takes exponential time) and cached.
+    Zero when k < 0 or k > n.
+
+    Examples
+    --------
+    >>> [binomial(4, k) for k in range(5)]
+    [1, 4, 6, 4, 1]
+    >>> binomial(100, 50)
+    100891344545564193334812497256
+    """
+    n = as_int(n, "n", minimum=0)
+    k = as_int(k, "k")
+    if k < 0 or k > n:
+        return 0
+    return _pascal_row(n)[k]
+
+
+def bernstein_basis(n: int, t: Any) -> np.ndarray:
+    """The Bernstein basis polynomials of degree n at t.
+
+    ``B[m, i] = C(n, i) * t[m]**i * (1 - t[m])**(n - i)``.
+
+    Parameters
+    ----------
+    n : int
+        Degree, 0 <= n <= 1029 (beyond that some C(n, i) overflows float64).
+    t : float or array_like, shape (M,)
+
+    Returns
+    -------
+    ndarray, shape (M, n + 1)
+        One row per parameter (M = 1 for a scalar t). Each row sums to 1.
+
+    Examples
+    --------
+    >>> bernstein_basis(2, [0.0, 0.5])
+    array([[1.  , 0.  , 0.  ],
+           [0.25, 0.5 , 0.25]])
+    """
+    n = as_int(n, "n", minimum=0)
+    if n > MAX_BERNSTEIN_DEGREE:
+        raise ValueError(
+            f"n must be <= {MAX_BERNSTEIN_DEGREE} for the float Bernstein form "
+            f"(C(n, n/2) overflows float64 beyond it); got {n}. Use de_casteljau."
+        )
+    values, _ = as_parameter(t)
+    return _bernstein_basis(n, values)
+
+
+def _bernstein_basis(n: int, t: np.ndarray) -> np.ndarray:
+    t = t[:, None]
+    exponents = np.arange(n + 1)
+    coefficients = np.array([float(c) for c in _pascal_row(n)])
+    # binomial * t^i stays below C(n, n/2) <= 2^n, so no overflow before the
+    # (1 - t) power scales it down.
+    return (coefficients * t**exponents) * (1.0 - t) ** exponents[::-1]
+
+
+def bezier_bernstein(points: Any, t: Any) -> np.ndarray:
+    """Evaluate the curve as ``sum_i C(n, i) t^i (1 - t)^(n - i) P[i]``.
+
+    The handouts' ``naive_bezier``, for any degree: the explicit polynomial,
+    no intermediate levels. Same contract as :func:`de_casteljau`.
+
+    Examples
+    --------
+    >>> bezier_bernstein([[0, 0], [1, 2], [2, 0]], 0.5)
+    array([1., 1.])
+    """
+    control = as_points(points)
+    values, is_scalar = as_parameter(t)
+    if len(control) - 1 > MAX_BERNSTEIN_DEGREE:
+        raise ValueError(
+            f"points: the float Bernstein form works up to degree "
+            f"{MAX_BERNSTEIN_DEGREE} ({MAX_BERNSTEIN_DEGREE + 1} points); got "
+            f"{len(control)} points. Use de_casteljau."
+        )
+    curve = _bernstein_basis(len(control) - 1, values) @ control
+    return curve[0] if is_scalar else curve
+
+
+# --- operations on control polygons -------------------------------------------
+
+
+def split(points: Any, t: Any = 0.5) -> tuple[np.ndarray, np.ndarray]:
+    """Subdivide the curve at t into two curves of the same degree.
+
+    The left polygon is the first point of every de Casteljau level, the right
+    one the last point of every level, read backwards. The left curve on
+    [0, 1] traces the original on [0, t], the right one on [t, 1]. A t outside
+    [0, 1] extends the curve instead.
+
+    Returns
+    -------
+    (left, right) : ndarray, each (N, d)
+
+    Examples
+    --------
+    >>> left, right = split([[0, 0], [2, 2], [4, 0]])
+    >>> left.tolist(), right.tolist()
+    ([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0]], [[2.0, 1.0], [3.0, 1.0], [4.0, 0.0]])
+    """
+    levels = de_casteljau_levels(points, t)
+    left = np.array([level[0] for level in levels])
+    right = np.array([level[-1] for level in reversed(levels)])
+    return left, right
+
+
+def derivative(points: Any) -> np.ndarray:
+    """Control points of the hodograph B'(t): ``n * (P[i + 1] - P[i])``.
+
+    Returns an (N - 1, d) array, the derivative curve of degree n - 1. A
+    degree-0 curve is constant: its derivative is the single point 0, (1, d).
+
+    Examples
+    --------
+    >>> derivative([[0, 0], [1, 2], [3, 3]])
+    array([[2., 4.],
+           [4., 2.]])
+    """
+    control = as_points(points)
+    if len(control) == 1:
+        return np.zeros_like(control)
+    return (len(control) - 1) * (control[1:] - control[:-1])
+
+
+def elevate(points: Any) -> np.ndarray:
+    """The same curve with one more control point (degree n + 1).
+
+    ``Q[i] = i / (n + 1) * P[i - 1] + (1 - i / (n + 1)) * P[i]``.
+
+    Examples
+    --------
+    >>> elevate([[0, 0], [3, 3]])
+    array([[0. , 0. ],
+           [1.5, 1.5],
+           [3. , 3. ]])
+    """
+    control = as_points(points)
+    n = len(control) - 1
+    weights = (np.arange(1, n + 1) / (n + 1))[:, None]
+    middle = weights * control[:-1] + (1 - weights) * control[1:]
+    return np.vstack([control[:1], middle, control[-1:]])
+
+
+# --- sampling ----------------------------------------------------------------
+
+_ACCUMULATE = ("exact", "float32", "float64")
+
+
+def uniform_parameters(step: float, accumulate: str = "exact") -> np.ndarray:
+    """The handouts' parameters t = 0, step, 2 step, ... while t <= 1.
+
+    Parameters
+    ----------
+    step : float
+        Spacing, > 0.
+    accumulate : {"exact", "float32", "float64"}
+        ``"exact"`` gives ``k * step`` and includes t = 1 when 1 / step is
+        a whole number. ``"float32"`` and ``"float64"`` reproduce the C++ loop
+        ``for (t = 0; t <= 1; t += step)`` with a ``float`` or ``double`` t:
+        the rounding errors add up, and the loop usually stops one step short
+        of t = 1, so the curve's last point is never drawn.
+
+    Examples
+    --------
+    >>> uniform_parameters(0.25)
+    array([0.  , 0.25, 0.5 , 0.75, 1.  ])
+    >>> float(uniform_parameters(0.001, accumulate="float64")[-1])
+    0.9990000000000008
+    """
+    step = as_positive_float(step, "step")
+    accumulate = as_choice(accumulate, "accumulate", _ACCUMULATE)
+    if step > 1:
+        return np.zeros(1)
+    if accumulate == "exact":
+        count = int(np.floor(1 / step * (1 + 1e-12)))
+        return np.arange(count + 1) * step
+    dtype = np.float32 if accumulate == "float32" else np.float64
+    steps = np.full(int(np.ceil(1 / step)) + 2, step, dtype=dtype)
+    # cumsum adds sequentially in the given dtype, exactly like the C++ loop.
+    t = np.concatenate([np.zeros(1, dtype), np.cumsum(steps, dtype=dtype)])
+    return t[t <= 1].astype(float)
+
+
+def sample_uniform(points: Any, step: float, accumulate: str = "exact") -> np.ndarray:
+    """Points of the curve at :func:`uniform_parameters` ``(step, accumulate)``.
+
+    Examples
+    --------
+    >>> sample_uniform([[0, 0], [4, 0]], 0.5)
+    array([[0., 0.],
+           [2., 0.],
+           [4., 0.]])
+    """
+    control = as_points(points)
+    return _de_casteljau(control, uniform_parameters(step, accumulate))
+
+
+# --- adaptive flattening -----------------------------------------------------
+
+# Each subdivision halves the parameter interval; after this many the pieces
+# are below float64 resolution of t and further splitting cannot help.
+_MAX_SUBDIVISIONS = 52
+
+
+def flatten(
+    points: Any,
+    tolerance: float,
+    max_step: float | None = None,
+    return_parameters: bool = False,
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
+    """An adaptive polyline within ``tolerance`` of the curve.
+
+    Recursive subdivision at t = 1/2 until each piece is flat: every control
+    point of the piece lies within ``tolerance`` of the chord joining its
+    ends. The piece lies in the convex hull of its control points, so then
+    every point of the curve lies within ``tolerance`` of the polyline. Flat
+    parts get few points, tight bends many: far fewer than a uniform t step
+    with the same accuracy.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+    tolerance : float
+        Largest allowed distance from the curve to the polyline, > 0.
+    max_step : float, optional
+        If given, also split until consecutive polyline points are at most
+        this far apart. ``max_step=1.0`` on pixel coordinates gives points
+        whose pixels leave no gap.
+    return_parameters : bool
+        Also return the parameter t of each polyline point.
+
+    Returns
+    -------
+    ndarray, shape (K, d)
+        Polyline vertices on the curve, from B(0) to B(1), K >= 2 (1 for a
+        degree-0 curve). With ``return_parameters``, ``(vertices, t)``.
+
+    Examples
+    --------
+    >>> flatten([[0, 0], [1, 0], [2, 0]], tolerance=0.1)
+    array([[0., 0.],
+           [2., 0.]])
+    >>> len(flatten([[0, 0], [1, 2], [2, 0]], tolerance=0.1))
+    7
+    """
+    control = as_points(points)
+    tolerance = as_positive_float(tolerance, "tolerance")
+    limit = np.inf if max_step is None else as_positive_float(max_step, "max_step")
+    vertices, parameters = _flatten(control, tolerance, limit)
+    return (vertices, parameters) if return_parameters else vertices
+
+
+def _flatten(
+    control: np.ndarray, tolerance: float, max_step: float
+) -> tuple[np.ndarray, np.ndarray]:
+    if len(control) == 1:
+        return control.copy(), np.zeros(1)
+    # All pieces at one depth are tested and split together, as arrays:
+    # pieces (K, N, d) with parameter intervals [start, start + width).
+    pieces = control[None]
+    starts = np.zeros(1)
+    width = 1.0
+    done_pieces, done_starts, done_widths = [], [], []
+    for depth in range(_MAX_SUBDIVISIONS + 1):
+        flat = _is_flat(pieces, tolerance, max_step) | (depth == _MAX_SUBDIVISIONS)
+        done_pieces.append(pieces[flat])
+        done_starts.append(starts[flat])
+        done_widths.append(np.full(int(flat.sum()), width))
+        pieces, starts = pieces[~flat], starts[~flat]
+        if len(pieces) == 0:
+            break
+        left, right = _split_half(pieces)
+        width /= 2
+        pieces = np.concatenate([left, right])
+        starts = np.concatenate([starts, starts + width])
+    all_pieces = np.concatenate(done_pieces)
+    all_starts = np.concatenate(done_starts)
+    order = np.argsort(all_starts)
+    all_pieces = all_pieces[order]
+    vertices = np.vstack([all_pieces[:, 0], all_pieces[-1:, -1]])
+    ends = np.concatenate(done_widths)[order] + all_starts[order]
+    parameters = np.concatenate([all_starts[order], ends[-1:]])
+    return vertices, parameters
+
+
+def _is_flat(pieces: np.ndarray, tolerance: float, max_step: float) -> np.ndarray:
+    """Which pieces have every control point within tolerance of their chord."""
+    start, end = pieces[:, :1], pieces[:, -1:]
+    chord = end - start
+    length2 = np.sum(chord**2, axis=-1)
+    offsets = pieces - start
+    safe = np.where(length2 > 0, length2, 1.0)
+    u = np.clip(np.sum(offsets * chord, axis=-1) / safe, 0.0, 1.0)
+    u = np.where(length2 > 0, u, 0.0)
+    distance2 = np.sum((offsets - u[..., None] * chord) ** 2, axis=-1)
+    flat = distance2.max(axis=1) <= tolerance**2
+    return flat & (length2[:, 0] <= max_step**2)
+
+
+def _split_half(pieces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Split (K, N, d) pieces at t = 1/2: de Casteljau along axis 1."""
+    count = pieces.shape[1]
+    left = np.empty_like(pieces)
+    right = np.empty_like(pieces)
+    level = pieces
+    for k in range(count):
+        left[:, k] = level[:, 0]
+        right[:, count - 1 - k] = level[:, -1]
+        level = 0.5 * (level[:, :-1] + level[:, 1:])
+    return left, right

@@ -1,0 +1,210 @@
+"""Canvases: blank images, the one function that paints pixels, zoom crops.
+
+Images are float arrays in [0, 1], gray ``(H, W)`` or RGB ``(H, W, 3)``,
+indexed ``image[y, x]``. Rasterizers elsewhere return pixel coordinates;
+:func:`paint` is the only function that writes them into an image. It clips:
+a pixel outside the canvas is dropped, never wrapped around to the other side
+as a negative numpy index would be.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from course._validate import _describe, as_choice, as_float_array, as_image, as_int
+
+__all__ = ["PAINT_MODES", "blank", "crop", "inside", "paint", "yellow_fraction"]
+
+PAINT_MODES = ("add", "max", "over")
+
+
+def blank(width: int, height: int, color: Any = 0.0) -> np.ndarray:
+    """A new image filled with ``color``.
+
+    A scalar color gives a gray ``(height, width)`` image, an RGB triple an
+    ``(height, width, 3)`` image.
+
+    Examples
+    --------
+    >>> blank(3, 2)
+    array([[0., 0., 0.],
+           [0., 0., 0.]])
+    >>> blank(2, 1, (1, 0, 0)).shape
+    (1, 2, 3)
+    """
+    width = as_int(width, "width", minimum=1)
+    height = as_int(height, "height", minimum=1)
+    value = _as_color(color, "color")
+    return np.broadcast_to(value, (height, width, *value.shape)).copy()
+
+
+def _as_color(color: Any, name: str, channels: int | None = None) -> np.ndarray:
+    value = as_float_array(color, name)
+    if value.shape not in ((), (3,)):
+        raise ValueError(f"{name} must be a number or an RGB triple; got shape {value.shape}")
+    if not np.all(np.isfinite(value)) or value.min() < 0 or value.max() > 1:
+        raise ValueError(f"{name} values must be finite and in [0, 1]; got {value.tolist()}")
+    if channels == 1 and value.shape == (3,):
+        raise ValueError(f"{name} must be a number for a gray image; got an RGB triple")
+    return value
+
+
+def inside(pixels: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
+    """Boolean mask of the (x, y) pixels that lie on a canvas of this shape.
+
+    Examples
+    --------
+    >>> inside(np.array([[0, 0], [-1, 0], [2, 1], [1, 2]]), (2, 3))
+    array([ True, False,  True, False])
+    """
+    height, width = shape[:2]
+    x, y = pixels[:, 0], pixels[:, 1]
+    return (x >= 0) & (x < width) & (y >= 0) & (y < height)
+
+
+def as_pixels(pixels: Any, name: str = "pixels") -> np.ndarray:
+    """Validate an integer (K, 2) array of (x, y) pixel coordinates."""
+    array = np.asarray(pixels)
+    if array.size == 0:
+        array = array.reshape(0, 2).astype(np.int64)
+    if array.dtype == bool or not np.issubdtype(array.dtype, np.integer):
+        raise TypeError(
+            f"{name} must be an integer (K, 2) array of (x, y) pixels; got "
+            f"{_describe(pixels)} (round or floor float coordinates first, "
+            "e.g. with course.raster.nearest_pixels)"
+        )
+    if array.ndim != 2 or array.shape[1] != 2:
+        raise ValueError(f"{name} must have shape (K, 2), one (x, y) per row; got {array.shape}")
+    return array
+
+
+def paint(
+    image: np.ndarray,
+    pixels: Any,
+    color: Any,
+    weight: Any = 1.0,
+    mode: str = "add",
+) -> np.ndarray:
+    """Write ``color`` into ``image`` at ``pixels``, in place; the one painter.
+
+    Parameters
+    ----------
+    image : ndarray, float, (H, W) or (H, W, 3)
+        Modified in place, and returned for convenience.
+    pixels : int array, shape (K, 2)
+        (x, y) pixel coordinates; those off the canvas are dropped.
+    color : float or RGB triple in [0, 1]
+    weight : float or array, shape (K,)
+        Per-pixel strength in [0, 1] (anti-aliasing coverage).
+    mode : {"add", "max", "over"}
+        ``"add"``: ``image + weight * color``, saturating at 1, like the
+        handouts' ``Vec3b +=``; repeated pixels add up, so brightness depends
+        on how many samples land in a pixel. ``"max"``: keep the brighter.
+        ``"over"``: blend ``image * (1 - weight) + color * weight``, applied
+        once per repeated pixel, in order.
+
+    Examples
+    --------
+    >>> image = blank(4, 2)
+    >>> _ = paint(image, np.array([[0, 0], [3, 1], [-1, 0], [4, 1]]), 1.0)
+    >>> image
+    array([[1., 0., 0., 0.],
+           [0., 0., 0., 1.]])
+    >>> _ = paint(image, np.array([[1, 0], [1, 0]]), 0.5, weight=0.8)
+    >>> image[0, 1]
+    np.float64(0.8)
+    """
+    if not isinstance(image, np.ndarray) or not np.issubdtype(image.dtype, np.floating):
+        raise TypeError(
+            f"image must be a float numpy array (H, W) or (H, W, 3) to paint into; "
+            f"got {_describe(image)}"
+        )
+    if not (image.ndim == 2 or (image.ndim == 3 and image.shape[2] == 3)):
+        raise ValueError(f"image must have shape (H, W) or (H, W, 3); got {image.shape}")
+    coordinates = as_pixels(pixels)
+    value = _as_color(color, "color", channels=1 if image.ndim == 2 else 3)
+    strength = as_float_array(weight, "weight")
+    if strength.ndim > 1 or (strength.ndim == 1 and strength.shape[0] != len(coordinates)):
+        raise ValueError(
+            f"weight must be a number or an array of shape ({len(coordinates)},), one per "
+            f"pixel; got shape {strength.shape}"
+        )
+    if not np.all(np.isfinite(strength)) or (
+        strength.size and (strength.min() < 0 or strength.max() > 1)
+    ):
+        raise ValueError("weight values must be finite and in [0, 1]")
+    mode = as_choice(mode, "mode", PAINT_MODES)
+
+    strength = np.broadcast_to(strength, (len(coordinates),))
+    keep = inside(coordinates, image.shape)
+    x, y = coordinates[keep, 0], coordinates[keep, 1]
+    strength = strength[keep]
+    if image.ndim == 3:
+        strength = strength[:, None]
+    if mode == "add":
+        # Contributions are >= 0, so clipping the sum once equals saturating
+        # after every addition.
+        np.add.at(image, (y, x), strength * value)
+        np.clip(image, 0.0, 1.0, out=image)
+    elif mode == "max":
+        np.maximum.at(image, (y, x), strength * value)
+    else:
+        # Blending the same color k times leaves color + (old - color) * prod(1 - w).
+        remaining = np.ones_like(image)
+        np.multiply.at(remaining, (y, x), 1.0 - strength)
+        rows, columns = np.divmod(np.unique(y * image.shape[1] + x), image.shape[1])
+        old = image[rows, columns]
+        image[rows, columns] = value + (old - value) * remaining[rows, columns]
+    return image
+
+
+def crop(image: np.ndarray, center: Any, size: int) -> tuple[np.ndarray, tuple[float, ...]]:
+    """A ``size`` x ``size`` window of ``image`` around ``center`` = (x, y).
+
+    The window is shifted to stay on the canvas. Returns the crop (a view)
+    and its ``extent`` for ``imshow(crop, extent=extent)``, so that axes keep
+    image-space coordinates (pixel (r, c) spans [c, c+1) x [r, r+1)).
+
+    Examples
+    --------
+    >>> window, extent = crop(np.zeros((10, 10)), (0.2, 9.7), 4)
+    >>> window.shape, extent
+    ((4, 4), (0, 4, 10, 6))
+    """
+    array = as_image(image, "image", copy=False)
+    height, width = array.shape[:2]
+    size = as_int(size, "size", minimum=1)
+    x, y = as_float_array(center, "center")
+    size_x, size_y = min(size, width), min(size, height)
+    x0 = int(np.clip(np.floor(x) - size_x // 2, 0, width - size_x))
+    y0 = int(np.clip(np.floor(y) - size_y // 2, 0, height - size_y))
+    window = array[y0 : y0 + size_y, x0 : x0 + size_x]
+    return window, (x0, x0 + size_x, y0 + size_y, y0)
+
+
+def yellow_fraction(image: np.ndarray, threshold: float = 0.5) -> float:
+    """The GAMES101 check: of the pixels painted red or green, the share that are both.
+
+    Paint the Bernstein curve in red and the de Casteljau curve in green: where
+    they hit the same pixels, the pixel is yellow. 1.0 means every curve pixel
+    is yellow; a curve drawn backwards or a wrong formula lowers it.
+
+    Examples
+    --------
+    >>> image = blank(3, 1, (0, 0, 0))
+    >>> image[0, 0] = image[0, 1] = (1, 1, 0)
+    >>> image[0, 2] = (1, 0, 0)
+    >>> round(yellow_fraction(image), 3)
+    0.667
+    """
+    array = as_image(image, "image", copy=False)
+    if array.ndim != 3:
+        raise ValueError(f"image must be an RGB (H, W, 3) image; got shape {array.shape}")
+    red = array[..., 0] > threshold
+    green = array[..., 1] > threshold
+    painted = int(np.count_nonzero(red | green))
+    if painted == 0:
+        raise ValueError("image has no red or green pixels to compare")
+    return float(np.count_nonzero(red & green) / painted)

@@ -1,0 +1,94 @@
+"""What every slider app shares: a matplotlib figure shown as an image widget.
+
+The picture is an ``ipywidgets.Image`` holding a PNG that a matplotlib
+``Figure`` renders on the Agg canvas. An app builds its figure and artists
+once; a slider change calls ``update``, which only changes artist data, and
+then the figure is rendered again. No pyplot, no figure rebuilt per step, no
+frontend backend: it passes nbval, runs in JupyterLab and Voila, and the
+update can be driven from plain Python in a test by setting slider values.
+"""
+
+from __future__ import annotations
+
+import io
+from typing import Any
+
+import ipywidgets as widgets
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from PIL import Image as PILImage
+
+__all__ = ["FigureView", "SliderApp"]
+
+
+class FigureView:
+    """A matplotlib ``Figure`` of a fixed pixel size, rendered into an image widget."""
+
+    def __init__(self, width: int = 500, height: int = 500, dpi: int = 100) -> None:
+        self.figure = Figure(figsize=(width / dpi, height / dpi), dpi=dpi)
+        self.canvas = FigureCanvasAgg(self.figure)
+        self.image = widgets.Image(format="png", width=width, height=height)
+
+    def pixels(self) -> np.ndarray:
+        """Draw the figure and return its RGBA pixels, (height, width, 4) uint8."""
+        self.canvas.draw()
+        return np.asarray(self.canvas.buffer_rgba()).copy()
+
+    def render(self) -> bytes:
+        """Draw the figure into the image widget and return the PNG bytes."""
+        self.canvas.draw()
+        buffer = io.BytesIO()
+        # Fast PNG: level-1 compression, the picture is redrawn on every step.
+        PILImage.fromarray(np.asarray(self.canvas.buffer_rgba())).save(
+            buffer, format="png", compress_level=1
+        )
+        self.image.value = buffer.getvalue()
+        return self.image.value
+
+
+class SliderApp:
+    """Controls beside a figure; any control's change redraws the figure.
+
+    Subclasses build their artists in ``__init__`` (after calling this one
+    with their controls) and implement ``update``, which reads the controls'
+    values and changes artist data. ``controls`` maps names to widgets, so a
+    test can do ``app.controls["t"].value = 0.3`` and inspect the result.
+    """
+
+    def __init__(
+        self,
+        controls: dict[str, widgets.ValueWidget],
+        width: int = 500,
+        height: int = 500,
+        dpi: int = 100,
+    ) -> None:
+        self.controls = controls
+        self.view = FigureView(width, height, dpi)
+        self.figure = self.view.figure
+        self.renders = 0
+        for control in controls.values():
+            control.observe(self._on_change, names="value")
+        self.widget = widgets.HBox(
+            [self.view.image, widgets.VBox(list(controls.values()))],
+            layout=widgets.Layout(align_items="flex-start"),
+        )
+
+    def value(self, name: str) -> Any:
+        """The current value of control ``name``."""
+        return self.controls[name].value
+
+    def update(self) -> None:  # pragma: no cover - every app overrides it
+        raise NotImplementedError
+
+    def refresh(self) -> bytes:
+        """Update the artists from the controls and render the picture."""
+        self.update()
+        self.renders += 1
+        return self.view.render()
+
+    def _on_change(self, change: dict) -> None:
+        self.refresh()
+
+    def _repr_mimebundle_(self, **kwargs: Any) -> Any:
+        return self.widget._repr_mimebundle_(**kwargs)

@@ -3,6 +3,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 NOTEBOOKS := $(sort $(wildcard notebooks/[0-9]*.ipynb))
+SOURCES := $(wildcard course tests benchmarks notebooks)
 # JupyterLab refuses to start as root without this flag (containers run as root).
 ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 
@@ -23,12 +24,12 @@ lab: $(VENV)/.lab-installed $(VENV)/.test-installed
 	$(BIN)/jupyter lab notebooks/ $(ROOT_FLAG)
 
 lint: $(VENV)/.test-installed
-	$(BIN)/ruff format --check course tests benchmarks notebooks
-	$(BIN)/ruff check course tests benchmarks notebooks
+	$(BIN)/ruff format --check $(SOURCES)
+	$(BIN)/ruff check $(SOURCES)
 
 format: $(VENV)/.test-installed
-	$(BIN)/ruff format course tests benchmarks notebooks
-	$(BIN)/ruff check --fix course tests benchmarks notebooks
+	$(BIN)/ruff format $(SOURCES)
+	$(BIN)/ruff check --fix $(SOURCES)
 
 test: lint
 	$(BIN)/python -m pytest -n 2 --dist loadfile course tests \

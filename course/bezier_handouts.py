@@ -18,6 +18,8 @@ from typing import Any
 import numpy as np
 
 from course._validate import as_int, as_parameter, as_points, as_scalar_parameter
+from course.bezier import de_casteljau, uniform_parameters
+from course.raster import nearest_pixels
 
 __all__ = [
     "DeCasteljauCost",
@@ -25,6 +27,7 @@ __all__ = [
     "comb_recursive_calls",
     "de_casteljau_reversed",
     "pascal_row_int32",
+    "step_report",
     "trace_iterative",
     "trace_recursive",
 ]
@@ -206,3 +209,39 @@ def trace_iterative(points: Any, t: float) -> DeCasteljauCost:
         peak = max(peak, len(point_list) + len(new_point_list))
         point_list = new_point_list
     return DeCasteljauCost(point_list[0], 1, interpolations, max(peak, 1))
+
+
+def step_report(points: Any, step: float, accumulate: str = "exact") -> dict[str, Any]:
+    """What the handouts' fixed-step loop draws: samples, pixels, gaps, overdraw.
+
+    The curve is sampled at ``t = 0, step, 2 step, ...`` (see
+    :func:`course.bezier.uniform_parameters`) and each sample lights the pixel
+    it falls in. A *gap* is a pair of consecutive samples whose pixels do not
+    touch (not even diagonally); *overdraw* is the mean number of samples per
+    lit pixel.
+
+    Returns
+    -------
+    dict
+        ``samples``, ``pixels`` (distinct), ``gaps``, ``overdraw``,
+        ``last_t`` and ``pixel_list`` (the (K, 2) pixels in sample order).
+
+    Examples
+    --------
+    >>> report = step_report([[0, 0], [10, 0]], 0.25)
+    >>> report["samples"], report["pixels"], report["gaps"]
+    (5, 5, 4)
+    """
+    t = uniform_parameters(step, accumulate)
+    samples = de_casteljau(points, t)
+    pixels = nearest_pixels(samples)
+    jumps = np.abs(np.diff(pixels, axis=0)).max(axis=1) if len(pixels) > 1 else np.zeros(0)
+    distinct = len(np.unique(pixels, axis=0))
+    return {
+        "samples": len(samples),
+        "pixels": distinct,
+        "gaps": int(np.count_nonzero(jumps > 1)),
+        "overdraw": len(samples) / distinct,
+        "last_t": float(t[-1]),
+        "pixel_list": pixels,
+    }

@@ -20,6 +20,7 @@ from course.bezier_handouts import (
     comb_recursive_calls,
     de_casteljau_reversed,
     pascal_row_int32,
+    step_report,
     trace_iterative,
     trace_recursive,
 )
@@ -158,3 +159,15 @@ def test_nearest_pixels_conventions_on_the_curve_end():
     assert nearest_pixels(end).tolist() == [[690, 690]]
     assert nearest_pixels(end, shape=(690, 690)).tolist() == []
     assert nearest_pixels([[689.5, 0.5]], rounding="round").tolist() == [[690, 0]]
+
+
+def test_step_report_counts_gaps_and_overdraw_by_their_definition():
+    report = step_report(SEED_000, 0.001, "float32")
+    t = uniform_parameters(0.001, "float32")
+    pixels = [tuple(int(v) for v in np.floor(p)) for p in de_casteljau(SEED_000, t)]
+    gaps = sum(max(abs(a[0] - b[0]), abs(a[1] - b[1])) > 1 for a, b in itertools.pairwise(pixels))
+    assert (report["samples"], report["pixels"], report["gaps"]) == (1001, len(set(pixels)), gaps)
+    assert report["gaps"] > 100 and report["last_t"] < 1
+    assert report["overdraw"] == 1001 / len(set(pixels))
+    fine = step_report(SEED_000, 0.0001)
+    assert fine["gaps"] == 0 and fine["overdraw"] > 5

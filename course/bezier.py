@@ -26,6 +26,7 @@ from typing import Any
 
 import numpy as np
 
+from course._bezier_fast import bernstein_horner, de_casteljau_chunked
 from course._validate import (
     as_choice,
     as_int,
@@ -92,15 +93,8 @@ def de_casteljau(points: Any, t: Any) -> np.ndarray:
 
 def _de_casteljau(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     """(M, d) curve points; ``control`` (N, d), ``t`` (M,), both validated."""
-    t = t[:, None]
-    s = 1.0 - t
-    # One (M, d) array per control point: each level is the matplotlib one-liner
-    # beta[:-1] * (1 - t) + beta[1:] * t, done point by point so that the work
-    # stays on contiguous (M, d) blocks instead of an (M, N, d) temporary.
-    beta = [np.broadcast_to(point, (len(t), control.shape[1])) for point in control]
-    for _level in range(1, len(beta)):
-        beta = [beta[i] * s + beta[i + 1] * t for i in range(len(beta) - 1)]
-    return np.array(beta[0], dtype=float)
+    # The same step as de_casteljau_levels, on chunks of t that stay in cache.
+    return de_casteljau_chunked(control, t)
 
 
 def de_casteljau_recursive(points: Any, t: Any) -> np.ndarray:
@@ -260,27 +254,65 @@ def _bernstein_basis(n: int, t: np.ndarray) -> np.ndarray:
     return (coefficients * t**exponents) * (1.0 - t) ** exponents[::-1]
 
 
-def bezier_bernstein(points: Any, t: Any) -> np.ndarray:
+_BERNSTEIN_METHODS = ("horner", "naive")
+# Up to this degree Horner's rule in t / (1 - t) cannot overflow for any
+# sensible coordinates (C(128, 64) < 2^127); beyond it the basis matrix does.
+_HORNER_MAX_DEGREE = 128
+
+
+def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
     """Evaluate the curve as ``sum_i C(n, i) t^i (1 - t)^(n - i) P[i]``.
 
     The handouts' ``naive_bezier``, for any degree: the explicit polynomial,
     no intermediate levels. Same contract as :func:`de_casteljau`.
 
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+    t : float or array_like, shape (M,)
+    method : {"horner", "naive"}
+        ``"naive"``: the handouts' sum, one term per control point, each
+        with its binomial and two powers. ``"horner"`` (default, fast): the
+        same polynomial by Horner's rule in ``u = t / (1 - t)`` (Schumaker
+        and Volk), with the points reversed and ``u = (1 - t) / t`` for
+        t >= 1/2 so that |u| <= 1; beyond degree 128 a basis-matrix product.
+        The two agree to rounding.
+
     Examples
     --------
     >>> bezier_bernstein([[0, 0], [1, 2], [2, 0]], 0.5)
     array([1., 1.])
+    >>> bezier_bernstein([[0, 0], [1, 2], [2, 0]], [0.25], method="naive")
+    array([[0.5  , 0.75]])
     """
     control = as_points(points)
     values, is_scalar = as_parameter(t)
-    if len(control) - 1 > MAX_BERNSTEIN_DEGREE:
+    method = as_choice(method, "method", _BERNSTEIN_METHODS)
+    degree = len(control) - 1
+    if degree > MAX_BERNSTEIN_DEGREE:
         raise ValueError(
             f"points: the float Bernstein form works up to degree "
             f"{MAX_BERNSTEIN_DEGREE} ({MAX_BERNSTEIN_DEGREE + 1} points); got "
             f"{len(control)} points. Use de_casteljau."
         )
-    curve = _bernstein_basis(len(control) - 1, values) @ control
+    if method == "naive":
+        curve = _bernstein_naive(control, values)
+    elif degree <= _HORNER_MAX_DEGREE:
+        binomials = np.array([float(c) for c in _pascal_row(degree)])
+        curve = bernstein_horner(control, binomials, values)
+    else:
+        curve = _bernstein_basis(degree, values) @ control
     return curve[0] if is_scalar else curve
+
+
+def _bernstein_naive(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """The handouts' loop: one term C(n, i) (1 - t)^(n - i) t^i P[i] at a time."""
+    n = len(control) - 1
+    t = t[:, None]
+    curve = np.zeros((len(t), control.shape[1]))
+    for i, point in enumerate(control):
+        curve += float(binomial(n, i)) * (1 - t) ** (n - i) * t**i * point
+    return curve
 
 
 # --- operations on control polygons -------------------------------------------

@@ -1,0 +1,124 @@
+"""Lessons 01-02: curve evaluation and the de Casteljau app.
+
+Curves: the best of several runs of ours divided by the best of the anchor's,
+``bezier.Curve(nodes, degree).evaluate_multi(t)`` of the compiled ``bezier``
+package (Fortran, O(n) per parameter), measured in the same run, with the goal
+beside it. Our output is (M, d) by the design's convention; the anchor's is
+(d, M).
+
+The app: the median time of one t-slider step of ``DeCasteljauApp`` (500 x 500
+px, update and PNG included) against rebuilding the figure on every step, as
+``ipywidgets.interact`` with the inline backend does (new pyplot figure,
+``savefig(..., bbox_inches="tight")``).
+"""
+
+from __future__ import annotations
+
+import io
+import time
+from collections.abc import Callable
+
+import bezier
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+from course.bezier import bezier_bernstein, de_casteljau, de_casteljau_levels
+from course.widgets import DeCasteljauApp
+
+GOALS = {"bezier_bernstein": 2.0, "de_casteljau": 4.0}
+
+
+def best_time(function: Callable[[], object], repeats: int = 7) -> float:
+    """The fastest of ``repeats`` runs, after one warm-up (the least noisy estimate)."""
+    function()
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        function()
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def main() -> None:
+    rng = np.random.default_rng(0)
+    for degree in (3, 9):
+        points = rng.uniform(0, 700, (degree + 1, 2))
+        curve = bezier.Curve(np.asfortranarray(points.T), degree=degree)
+        for count in (10**5, 10**6):
+            t = np.linspace(0.0, 1.0, count)
+            anchor = best_time(lambda t=t, curve=curve: curve.evaluate_multi(t))
+            ours = {
+                "bezier_bernstein": lambda t=t, p=points: bezier_bernstein(p, t),
+                "de_casteljau": lambda t=t, p=points: de_casteljau(p, t),
+            }
+            for name, function in ours.items():
+                ratio = best_time(function) / anchor
+                verdict = "met" if ratio <= GOALS[name] else "NOT met"
+                print(
+                    f"{name} degree {degree}, 10^{round(np.log10(count))} t: "
+                    f"{ratio:.2f}x bezier.Curve.evaluate_multi "
+                    f"({anchor * 1e3:.2f} ms) (goal <= {GOALS[name]:g}x, {verdict})"
+                )
+            naive = best_time(lambda t=t, p=points: bezier_bernstein(p, t, method="naive"), 3)
+            print(
+                f"bezier_bernstein(method='naive') degree {degree}, "
+                f"10^{round(np.log10(count))} t: {naive / anchor:.2f}x "
+                f"bezier.Curve.evaluate_multi (readable form, no goal)"
+            )
+
+
+def median_time(function: Callable[[], object], values: np.ndarray) -> float:
+    times = []
+    for value in values:
+        start = time.perf_counter()
+        function(value)
+        times.append(time.perf_counter() - start)
+    return float(np.median(times))
+
+
+def rebuild_picture(points: np.ndarray, t: float) -> bytes:
+    """What an ``interact`` callback does: a new figure per step, shown as PNG."""
+    figure, axes = plt.subplots(figsize=(5, 5), dpi=100)
+    axes.invert_yaxis()
+    curve = de_casteljau(points, np.linspace(0, 1, 201))
+    axes.plot(curve[:, 0], curve[:, 1], color="0.8")
+    for level in de_casteljau_levels(points, t)[:-1]:
+        axes.plot(level[:, 0], level[:, 1], "o-")
+    traced = de_casteljau(points, np.linspace(0, t, 201))
+    axes.plot(traced[:, 0], traced[:, 1], color="crimson", linewidth=2.5)
+    point = de_casteljau(points, t)
+    axes.plot([point[0]], [point[1]], "o", color="crimson", markersize=9)
+    axes.set_title(f"t = {t:.2f}: B(t) = ({point[0]:.1f}, {point[1]:.1f})")
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format="png", bbox_inches="tight")
+    plt.close(figure)
+    return buffer.getvalue()
+
+
+def bench_app() -> None:
+    steps = np.linspace(0.0, 1.0, 41)
+    for count in (4, 10):
+        app = DeCasteljauApp(size=500)
+        app.controls["count"].value = count
+        app.refresh()
+
+        def step(t: float, app: DeCasteljauApp = app) -> None:
+            app.controls["t"].value = float(t)
+
+        ours = median_time(step, steps)
+        points = app.points
+        rebuild = median_time(lambda t, points=points: rebuild_picture(points, t), steps[::2])
+        verdict = "met" if ours <= 0.030 and rebuild / ours >= 3 else "NOT met"
+        print(
+            f"DeCasteljauApp t step, {count} points, 500x500 px: {ours * 1e3:.1f} ms median "
+            f"(goal <= 30 ms); {rebuild / ours:.1f}x faster than rebuilding per step "
+            f"({rebuild * 1e3:.1f} ms) (goal >= 3x, {verdict})"
+        )
+
+
+if __name__ == "__main__":
+    main()
+    bench_app()

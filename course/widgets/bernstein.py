@@ -1,0 +1,70 @@
+"""Lesson 02's app: the Bernstein basis polynomials of one degree, and their values at t.
+
+Every B_{i,n} is drawn on [0, 1] in its own colour, with a marker at its
+value at t; the dashed line is their sum, which is 1 everywhere (partition of
+unity). The bar chart beside shows the weights at t that the curve gives its
+control points.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import matplotlib
+import numpy as np
+
+from course.bezier import bernstein_basis
+from course.widgets.base import SliderApp
+
+__all__ = ["BernsteinBasisApp"]
+
+MAX_DEGREE = 20
+_SAMPLES = np.linspace(0.0, 1.0, 201)
+
+
+class BernsteinBasisApp(SliderApp):
+    """The degree-n Bernstein basis with a marker at t; controls ``degree`` and ``t``."""
+
+    def __init__(
+        self, degree: int = 3, t: float = 0.3, width: int = 700, height: int = 350
+    ) -> None:
+        controls = {
+            "degree": widgets.IntSlider(
+                value=degree, min=0, max=MAX_DEGREE, description="degree n"
+            ),
+            "t": widgets.FloatSlider(value=t, min=0.0, max=1.0, step=0.01, description="t"),
+        }
+        super().__init__(controls, width, height)
+        self.axes = self.figure.add_axes((0.07, 0.12, 0.6, 0.78))
+        self.bars_axes = self.figure.add_axes((0.74, 0.12, 0.24, 0.78))
+        self.axes.set_xlim(0, 1)
+        self.axes.set_ylim(-0.02, 1.08)
+        self.axes.set_xlabel("t")
+        self.bars_axes.set_ylim(0, 1.0)
+        self.bars_axes.set_xlabel("i")
+        self.bars_axes.set_title("weights B_i,n(t)", fontsize=9)
+        self.basis_lines = [self.axes.plot([], [], linewidth=1.5)[0] for _ in range(MAX_DEGREE + 1)]
+        (self.sum_line,) = self.axes.plot([], [], "k--", linewidth=1, label="sum")
+        self.t_line = self.axes.axvline(t, color="crimson", linewidth=1)
+        (self.markers,) = self.axes.plot([], [], "o", color="crimson", markersize=4)
+        self.bars = self.bars_axes.bar(np.arange(MAX_DEGREE + 1), np.zeros(MAX_DEGREE + 1))
+        self.title = self.axes.set_title("", fontsize=10)
+
+    def update(self) -> None:
+        degree, t = int(self.value("degree")), float(self.value("t"))
+        curves = bernstein_basis(degree, _SAMPLES)
+        colors = matplotlib.colormaps["viridis"](np.linspace(0.0, 0.9, degree + 1))
+        for i, line in enumerate(self.basis_lines):
+            if i <= degree:
+                line.set_data(_SAMPLES, curves[:, i])
+                line.set_color(colors[i])
+            else:
+                line.set_data([], [])
+        self.sum_line.set_data(_SAMPLES, curves.sum(axis=1))
+        weights = bernstein_basis(degree, t)[0]
+        self.t_line.set_xdata([t, t])
+        self.markers.set_data(np.full(degree + 1, t), weights)
+        for i, bar in enumerate(self.bars):
+            bar.set_height(weights[i] if i <= degree else 0.0)
+            bar.set_color(colors[min(i, degree)])
+        self.bars_axes.set_xlim(-0.6, degree + 0.6)
+        self.title.set_text(f"n = {degree}, t = {t:.2f}: weights sum to {weights.sum():.12f}")

@@ -1,0 +1,173 @@
+"""course.bezier_accuracy, course.bezier_handouts: the measured pitfalls; the GAMES101 check."""
+
+import itertools
+import math
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+from course.bezier import bezier_bernstein, de_casteljau, sample_uniform, uniform_parameters
+from course.bezier_accuracy import (
+    accuracy_by_degree,
+    bezier_exact,
+    bezier_power,
+    power_coefficients,
+    relative_errors,
+)
+from course.bezier_handouts import (
+    comb_recursive,
+    comb_recursive_calls,
+    de_casteljau_reversed,
+    pascal_row_int32,
+    step_report,
+    trace_iterative,
+    trace_recursive,
+)
+from course.canvas import blank, paint, yellow_fraction
+from course.raster import nearest_pixels
+
+SEED_000 = np.array([[10.0, 10], [690, 10], [10, 690], [690, 690]])
+
+
+def exact_de_casteljau(points, t):
+    """de Casteljau in Fractions: independent of the integer Bernstein sum."""
+    level = [[Fraction(float(v)) for v in row] for row in points]
+    t = Fraction(float(t))
+    while len(level) > 1:
+        level = [
+            [(1 - t) * a + t * b for a, b in zip(p, q, strict=True)]
+            for p, q in itertools.pairwise(level)
+        ]
+    return level[0]
+
+
+@pytest.mark.parametrize("degree", [0, 1, 5, 12])
+def test_exact_evaluation_equals_exact_de_casteljau(degree):
+    points = np.random.default_rng(degree).uniform(-3, 3, (degree + 1, 2))
+    for t in (0.0, 0.3, 0.5, 1.0, 1.7):
+        assert list(bezier_exact(points, t)) == exact_de_casteljau(points, t)
+
+
+def test_power_coefficients_reproduce_the_curve_exactly_where_floats_allow():
+    points = np.array([[0.0, 1], [2, 5], [4, -1], [8, 3], [1, 1]])
+    coefficients = power_coefficients(points)
+    # Degree 4 with integer points: the coefficients are integers, Horner is exact.
+    for t in (0.0, 0.25, 0.5, 1.0):
+        expected = sum(coefficients[j] * t**j for j in range(5))
+        np.testing.assert_array_equal(bezier_power(points, t), expected)
+        assert [float(v) for v in bezier_exact(points, t)] == expected.tolist()
+
+
+def test_relative_errors_are_zero_for_exact_values_and_scale_with_the_polygon():
+    points = np.array([[0.0, 0.0], [4.0, 8.0], [8.0, 0.0]])
+    t = np.array([0.25, 0.5])
+    assert relative_errors(points, t, de_casteljau(points, t)).tolist() == [0.0, 0.0]
+    shifted = de_casteljau(points, t) + np.array([[0.0, 0.5], [0.25, 0.0]])
+    assert relative_errors(points, t, shifted).tolist() == [0.5 / 8, 0.25 / 8]
+
+
+def test_accuracy_study_power_basis_fails_while_de_casteljau_holds():
+    errors = accuracy_by_degree([3, 20, 40], samples=9, rng=np.random.default_rng(0))
+    assert errors["degree"].tolist() == [3, 20, 40]
+    for method in ("de_casteljau", "bernstein_naive", "bernstein_horner"):
+        assert np.all(errors[method] < 1e-14)
+    assert errors["power"][0] < 1e-14
+    assert errors["power"][2] > 1e-3
+    with pytest.raises(ValueError, match="methods"):
+        accuracy_by_degree([3], methods=("monomial",))
+
+
+def test_recursive_comb_values_and_call_counts():
+    for m in range(12):
+        for n in range(m + 2):
+            value, calls = comb_recursive(m, n)
+            assert value == math.comb(m, n)
+            assert calls == comb_recursive_calls(m, n)
+    assert comb_recursive(20, 10) == (184756, 184755)
+    # Exponential: each step of 5 in n multiplies the calls by about 30.
+    assert comb_recursive_calls(25, 12) > 25 * comb_recursive_calls(20, 10)
+
+
+def test_int32_pascal_row_wraps_exactly_where_cpp_int_would():
+    for n in range(34):
+        assert pascal_row_int32(n).tolist() == [math.comb(n, k) for k in range(n + 1)]
+    row = pascal_row_int32(34)
+    assert row[17] == math.comb(34, 17) - 2**32
+
+
+def test_reversed_convention_runs_the_curve_backwards():
+    t = np.linspace(0, 1, 9)
+    np.testing.assert_allclose(de_casteljau_reversed(SEED_000, t), de_casteljau(SEED_000, 1 - t))
+    np.testing.assert_array_equal(de_casteljau_reversed(SEED_000, 0.0), SEED_000[-1])
+    assert de_casteljau_reversed(SEED_000, [0.5]).shape == (1, 2)
+
+
+@pytest.mark.parametrize("count", [1, 2, 4, 10, 30])
+def test_recursion_holds_quadratically_many_points_iteration_linearly(count):
+    points = np.random.default_rng(count).uniform(0, 1, (count, 2))
+    recursive, iterative = trace_recursive(points, 0.3), trace_iterative(points, 0.3)
+    np.testing.assert_allclose(recursive.point, de_casteljau(points, 0.3))
+    np.testing.assert_allclose(iterative.point, de_casteljau(points, 0.3))
+    assert recursive.interpolations == iterative.interpolations == count * (count - 1) // 2
+    assert recursive.calls == count
+    assert recursive.peak_points_held == count * (count + 1) // 2
+    assert iterative.peak_points_held == max(2 * count - 1, 1)
+
+
+# --- the GAMES101 check: red Bernstein + green de Casteljau = yellow ------------------
+
+
+def games101_picture(green_points, accumulate="exact"):
+    image = blank(700, 700, (0, 0, 0))
+    t = uniform_parameters(0.001, accumulate)
+    red = nearest_pixels(bezier_bernstein(SEED_000, t, method="naive"), shape=(700, 700))
+    paint(image, red, (1, 0, 0))
+    paint(image, nearest_pixels(green_points(t), shape=(700, 700)), (0, 1, 0))
+    return image
+
+
+def test_yellow_check_passes_when_both_curves_are_right():
+    image = games101_picture(lambda t: de_casteljau(SEED_000, t))
+    assert yellow_fraction(image) == 1.0
+
+
+def test_yellow_check_fails_for_a_wrong_formula():
+    # Forgetting the binomial coefficients: a different curve.
+    def no_binomials(t):
+        t = t[:, None]
+        return sum((1 - t) ** (3 - i) * t**i * SEED_000[i] for i in range(4)) / (
+            sum((1 - t) ** (3 - i) * t**i for i in range(4))
+        )
+
+    assert yellow_fraction(games101_picture(no_binomials)) < 0.2
+
+
+def test_yellow_check_cannot_see_a_reversed_curve_but_the_float_loop_shows_its_ends():
+    backwards = games101_picture(lambda t: de_casteljau_reversed(SEED_000, t))
+    assert yellow_fraction(backwards) == 1.0
+    # With the C++ float loop, the reversed curve misses the start instead of the end.
+    backwards_float = games101_picture(lambda t: de_casteljau_reversed(SEED_000, t), "float64")
+    assert yellow_fraction(backwards_float) < 1.0
+    pixels = nearest_pixels(sample_uniform(SEED_000, 0.001, "float64"))
+    assert [690, 690] not in pixels.tolist()
+    assert [690, 690] in nearest_pixels(sample_uniform(SEED_000, 0.001)).tolist()
+
+
+def test_nearest_pixels_conventions_on_the_curve_end():
+    end = de_casteljau(SEED_000, [1.0])
+    assert nearest_pixels(end).tolist() == [[690, 690]]
+    assert nearest_pixels(end, shape=(690, 690)).tolist() == []
+    assert nearest_pixels([[689.5, 0.5]], rounding="round").tolist() == [[690, 0]]
+
+
+def test_step_report_counts_gaps_and_overdraw_by_their_definition():
+    report = step_report(SEED_000, 0.001, "float32")
+    t = uniform_parameters(0.001, "float32")
+    pixels = [tuple(int(v) for v in np.floor(p)) for p in de_casteljau(SEED_000, t)]
+    gaps = sum(max(abs(a[0] - b[0]), abs(a[1] - b[1])) > 1 for a, b in itertools.pairwise(pixels))
+    assert (report["samples"], report["pixels"], report["gaps"]) == (1001, len(set(pixels)), gaps)
+    assert report["gaps"] > 100 and report["last_t"] < 1
+    assert report["overdraw"] == 1001 / len(set(pixels))
+    fine = step_report(SEED_000, 0.0001)
+    assert fine["gaps"] == 0 and fine["overdraw"] > 5

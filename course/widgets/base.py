@@ -30,6 +30,7 @@ class FigureView:
         self.figure = Figure(figsize=(width / dpi, height / dpi), dpi=dpi)
         self.canvas = FigureCanvasAgg(self.figure)
         self.image = widgets.Image(format="png", width=width, height=height)
+        self._background = None
 
     def pixels(self) -> np.ndarray:
         """Draw the figure and return its RGBA pixels, (height, width, 4) uint8."""
@@ -37,8 +38,32 @@ class FigureView:
         return np.asarray(self.canvas.buffer_rgba()).copy()
 
     def render(self) -> bytes:
-        """Draw the figure into the image widget and return the PNG bytes."""
+        """Draw the whole figure into the image widget and return the PNG bytes."""
         self.canvas.draw()
+        return self.publish()
+
+    def render_moving(self, artists: list) -> bytes:
+        """Redraw only ``artists`` (made ``set_animated(True)``) over a cached background.
+
+        Blitting: the first call draws everything else once and keeps it;
+        later calls restore it and draw just the moving artists. Call
+        :meth:`invalidate` when something in the background changes.
+        """
+        if self._background is None:
+            self.canvas.draw()  # skips animated artists
+            self._background = self.canvas.copy_from_bbox(self.figure.bbox)
+        else:
+            self.canvas.restore_region(self._background)
+        for artist in artists:
+            self.figure.draw_artist(artist)
+        return self.publish()
+
+    def invalidate(self) -> None:
+        """Forget the cached background; the next :meth:`render_moving` redraws it."""
+        self._background = None
+
+    def publish(self) -> bytes:
+        """Encode the canvas as it stands into the image widget; return the PNG bytes."""
         buffer = io.BytesIO()
         # Fast PNG: level-1 compression, the picture is redrawn on every step.
         PILImage.fromarray(np.asarray(self.canvas.buffer_rgba())).save(

@@ -9,13 +9,11 @@ are the default.
 
 from __future__ import annotations
 
-import io
 import re
 
 import ipywidgets as widgets
 import matplotlib
 import numpy as np
-from PIL import Image as PILImage
 
 from course.bezier import de_casteljau, de_casteljau_levels
 from course.widgets.base import SliderApp
@@ -127,27 +125,12 @@ class DeCasteljauApp(SliderApp):
         self._moving = [*self.level_lines, self.traced, self.point_marker, self.title]
         for artist in self._moving:
             artist.set_animated(True)
-        self._background = None
 
     def refresh(self) -> bytes:
         """Update the artists and render the picture, redrawing only what moved."""
         self.update()
         self.renders += 1
-        canvas = self.view.canvas
-        if self._background is None:
-            canvas.draw()  # skips the animated artists
-            self._background = canvas.copy_from_bbox(self.figure.bbox)
-        else:
-            canvas.restore_region(self._background)
-        for artist in self._moving:
-            self.figure.draw_artist(artist)
-        # As FigureView.render encodes it, minus its full canvas.draw().
-        buffer = io.BytesIO()
-        PILImage.fromarray(np.asarray(canvas.buffer_rgba())).save(
-            buffer, format="png", compress_level=1
-        )
-        self.view.image.value = buffer.getvalue()
-        return buffer.getvalue()
+        return self.view.render_moving(self._moving)
 
     def _on_change(self, change: dict) -> None:
         if self._syncing:  # our own write-back of count and text
@@ -199,7 +182,7 @@ class DeCasteljauApp(SliderApp):
         """New control points: refit the view and redraw the whole curve faintly."""
         self.points = points
         self._drawn_points = points
-        self._background = None
+        self.view.invalidate()
         curve = de_casteljau(points, np.linspace(0.0, 1.0, _CURVE_SAMPLES))
         self.full_curve.set_data(curve[:, 0], curve[:, 1])
         low = np.minimum(points.min(axis=0), curve.min(axis=0))

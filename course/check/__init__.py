@@ -6,4 +6,12 @@ first failing case, its inputs, the expected value and the value given.
 
 from course.check.base import CheckResult
 
-__all__ = ["CheckResult"]
+# lessons 04-05
+from course.check.raster import draw_line, draw_triangle_filled
+
+__all__ = [
+    "CheckResult",
+    # lessons 04-05
+    "draw_line",
+    "draw_triangle_filled",
+]

@@ -213,16 +213,23 @@ def _line_vectorized(x0: int, y0: int, x1: int, y1: int) -> np.ndarray:
     if n == 0:
         return np.array([[x0, y0]], dtype=np.int64)
     step = 1 if major1 >= major0 else -1
-    major = np.arange(major0, major1 + step, step, dtype=np.int64)
     # floor((2 i a + n - 1) / (2 n)) rounds i * a / n to nearest, halves down
     # (toward p0): exactly the loop's choice, as the tests check.
-    minor = np.arange(n - 1, 2 * a * n + n, 2 * a, dtype=np.int64) if a else np.full(n + 1, n - 1)
+    minor = (
+        np.arange(n - 1, 2 * a * n + n, 2 * a, dtype=np.int64)
+        if a
+        else np.full(n + 1, n - 1, dtype=np.int64)
+    )
     minor //= 2 * n
     if minor_step >= 0:
         minor += minor0
     else:
         np.subtract(minor0, minor, out=minor)
-    return np.stack((major, minor) if major_column == 0 else (minor, major), axis=1)
+    # Filling columns of one new array is cheaper than np.stack for short lines.
+    pixels = np.empty((n + 1, 2), dtype=np.int64)
+    pixels[:, major_column] = np.arange(major0, major1 + step, step)
+    pixels[:, 1 - major_column] = minor
+    return pixels
 
 
 def line_4connected(p0: Any, p1: Any, shape: Any = None) -> np.ndarray:

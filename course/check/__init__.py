@@ -8,7 +8,8 @@ from course.check.base import CheckResult
 
 # lessons 04-05
 from course.check.raster import draw_line, draw_triangle_filled
+from course.check.resample import image_supersampling
 
 __all__ = ["CheckResult"]
 # lessons 04-05
-__all__ += ["draw_line", "draw_triangle_filled"]
+__all__ += ["draw_line", "draw_triangle_filled", "image_supersampling"]

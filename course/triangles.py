@@ -3,7 +3,7 @@
 A pixel belongs to a triangle when its centre ``(c + 0.5, r + 0.5)`` lies
 inside. A centre exactly on an edge needs a rule, or two triangles sharing
 that edge would both paint it (or both skip it). The top-left rule, used by
-Direct3D, OpenGL implementations and every GPU, keeps a centre on an edge
+Direct3D and by OpenGL implementations on GPUs, keeps a centre on an edge
 only if the edge is a *left* edge (the interior is to its right) or a *top*
 edge (horizontal, interior below). Every edge shared by two triangles is left
 or top for exactly one of them, so a triangulated region paints each pixel

@@ -20,20 +20,29 @@ from course.raster import line, triangle, triangle_coverage
 GOAL = 3.0  # for line and triangle, the fast forms
 
 
-def best_time(function: Callable[[], object], repeats: int = 7, number: int | None = None) -> float:
-    """Seconds per call: the fastest of ``repeats`` batches of ``number`` calls."""
+def batch_size(function: Callable[[], object]) -> int:
+    """Calls per batch for batches of about 20 ms."""
     function()
-    if number is None:  # aim for batches of about 20 ms
-        start = time.perf_counter()
-        function()
-        number = max(1, int(0.02 / max(time.perf_counter() - start, 1e-7)))
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        for _ in range(number):
-            function()
-        times.append((time.perf_counter() - start) / number)
-    return min(times)
+    start = time.perf_counter()
+    function()
+    return max(1, int(0.02 / max(time.perf_counter() - start, 1e-7)))
+
+
+def best_times(*functions: Callable[[], object], rounds: int = 7) -> list[float]:
+    """Seconds per call of each function: the fastest batch of each.
+
+    The functions' batches alternate, round after round, so that load from
+    other processes on a shared machine falls on all of them alike.
+    """
+    sizes = [batch_size(function) for function in functions]
+    best = [float("inf")] * len(functions)
+    for _ in range(rounds):
+        for index, (function, number) in enumerate(zip(functions, sizes, strict=True)):
+            start = time.perf_counter()
+            for _ in range(number):
+                function()
+            best[index] = min(best[index], (time.perf_counter() - start) / number)
+    return best
 
 
 def report(
@@ -48,14 +57,13 @@ def main() -> None:
     # A 1000-pixel line in the first octant, from the lab's DrawLine.
     p0, p1 = (0, 0), (999, 700)
     assert len(line(p0, p1)) == 1000
-    anchor = best_time(lambda: skimage_line(p0[1], p0[0], p1[1], p1[0]))
-    report("line 1000 px", best_time(lambda: line(p0, p1)), anchor, "skimage.draw.line", GOAL)
-    report(
-        "line 1000 px, method='loop'",
-        best_time(lambda: line(p0, p1, method="loop")),
-        anchor,
-        "skimage.draw.line",
+    anchor, ours, loop = best_times(
+        lambda: skimage_line(p0[1], p0[0], p1[1], p1[0]),
+        lambda: line(p0, p1),
+        lambda: line(p0, p1, method="loop"),
     )
+    report("line 1000 px", ours, anchor, "skimage.draw.line", GOAL)
+    report("line 1000 px, method='loop'", loop, anchor, "skimage.draw.line")
 
     # A triangle covering about half of a 512 x 512 canvas.
     shape = (512, 512)
@@ -67,26 +75,17 @@ def main() -> None:
         f"triangle 512 x 512: {len(pixels)} pixels ({len(pixels) / 512**2:.0%} of the canvas); "
         f"skimage.draw.polygon gives {len(anchor_pixels[0])}"
     )
-    anchor = best_time(lambda: skimage_polygon(rows, columns, shape))
-    report(
-        "triangle half of 512 x 512",
-        best_time(lambda: triangle(*vertices, shape=shape)),
-        anchor,
-        "skimage.draw.polygon",
-        GOAL,
+    anchor, ours, scanline, coverage = best_times(
+        lambda: skimage_polygon(rows, columns, shape),
+        lambda: triangle(*vertices, shape=shape),
+        lambda: triangle(*vertices, shape=shape, method="scanline"),
+        lambda: triangle_coverage(*vertices, shape, 4),
+        rounds=3,
     )
-    report(
-        "triangle half of 512 x 512, method='scanline'",
-        best_time(lambda: triangle(*vertices, shape=shape, method="scanline"), repeats=3),
-        anchor,
-        "skimage.draw.polygon",
-    )
-    report(
-        "triangle_coverage half of 512 x 512, rate 4",
-        best_time(lambda: triangle_coverage(*vertices, shape, 4), repeats=3),
-        anchor,
-        "skimage.draw.polygon",
-    )
+    name = "triangle half of 512 x 512"
+    report(name, ours, anchor, "skimage.draw.polygon", GOAL)
+    report(f"{name}, method='scanline'", scanline, anchor, "skimage.draw.polygon")
+    report(f"triangle_coverage {name[9:]}, rate 4", coverage, anchor, "skimage.draw.polygon")
 
 
 if __name__ == "__main__":

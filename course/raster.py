@@ -91,7 +91,7 @@ _MAX_PIXEL_COORDINATE = 2**24
 
 def _as_pixel(point: Any, name: str) -> tuple[int, int]:
     """An integer pixel (x, y) as two Python ints: float values must be whole."""
-    if type(point) in (tuple, list) and len(point) == 2 and all(type(v) is int for v in point):
+    if type(point) in (tuple, list) and len(point) == 2 and type(point[0]) is type(point[1]) is int:
         x, y = point  # the common case, checked without numpy (lines are short)
     else:
         array = as_point(point, name, dim=2)
@@ -162,7 +162,8 @@ def line(p0: Any, p1: Any, shape: Any = None, method: str = "vectorized") -> np.
     """
     x0, y0 = _as_pixel(p0, "p0")
     x1, y1 = _as_pixel(p1, "p1")
-    method = as_choice(method, "method", LINE_METHODS)
+    if method != "vectorized":
+        method = as_choice(method, "method", LINE_METHODS)
     if method == "loop":
         pixels = np.array(_line_loop(x0, y0, x1, y1), dtype=np.int64)
     else:
@@ -213,21 +214,23 @@ def _line_vectorized(x0: int, y0: int, x1: int, y1: int) -> np.ndarray:
     if n == 0:
         return np.array([[x0, y0]], dtype=np.int64)
     step = 1 if major1 >= major0 else -1
-    # floor((2 i a + n - 1) / (2 n)) rounds i * a / n to nearest, halves down
-    # (toward p0): exactly the loop's choice, as the tests check.
-    minor = (
-        np.arange(n - 1, 2 * a * n + n, 2 * a, dtype=np.int64)
-        if a
-        else np.full(n + 1, n - 1, dtype=np.int64)
-    )
-    minor //= 2 * n
-    if minor_step >= 0:
-        minor += minor0
-    else:
-        np.subtract(minor0, minor, out=minor)
-    # Filling columns of one new array is cheaper than np.stack for short lines.
     pixels = np.empty((n + 1, 2), dtype=np.int64)
     pixels[:, major_column] = np.arange(major0, major1 + step, step)
+    if a == 0:
+        pixels[:, 1 - major_column] = minor0
+        return pixels
+    # Step i is i * a / n along the minor axis, rounded to nearest with halves
+    # toward p0 (the loop's choice, as the tests check): minor0 plus
+    # floor((2 i a + n - 1) / (2 n)) going up, minor0 minus it going down.
+    # Both are one floor division of an arithmetic sequence, with minor0
+    # folded into its start.
+    twice_n = 2 * n
+    if minor_step > 0:
+        start, stride = twice_n * minor0 + n - 1, 2 * a
+    else:
+        start, stride = twice_n * minor0 + n, -2 * a
+    minor = np.arange(start, start + (n + 1) * stride, stride, dtype=np.int64)
+    minor //= twice_n
     pixels[:, 1 - major_column] = minor
     return pixels
 

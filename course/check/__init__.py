@@ -5,10 +5,15 @@ first failing case, its inputs, the expected value and the value given.
 """
 
 from course.check.base import CheckResult
-
-__all__ = ["CheckResult"]
-
-# Lessons 01-02: Bézier curves.
 from course.check.bezier import naive_bezier, recursive_bezier
+from course.check.raster import draw_line, draw_triangle_filled
+from course.check.resample import image_supersampling
 
-__all__ += ["naive_bezier", "recursive_bezier"]
+__all__ = [
+    "CheckResult",
+    "draw_line",
+    "draw_triangle_filled",
+    "image_supersampling",
+    "naive_bezier",
+    "recursive_bezier",
+]

@@ -5,11 +5,17 @@ an image widget beside its controls, redrawn by changing artists.
 """
 
 from course.widgets.base import FigureView, SliderApp
-
-__all__ = ["FigureView", "SliderApp"]
-
-# Lessons 01-02: Bézier curves.
 from course.widgets.bernstein import BernsteinBasisApp
 from course.widgets.de_casteljau import DeCasteljauApp
+from course.widgets.lines import LineApp, TriangleApp
+from course.widgets.supersampling import SupersampleApp
 
-__all__ += ["BernsteinBasisApp", "DeCasteljauApp"]
+__all__ = [
+    "BernsteinBasisApp",
+    "DeCasteljauApp",
+    "FigureView",
+    "LineApp",
+    "SliderApp",
+    "SupersampleApp",
+    "TriangleApp",
+]

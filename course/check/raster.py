@@ -1,0 +1,109 @@
+"""Checkers for lesson 04: the lab's ``DrawLine`` and ``DrawTriangleFilled``.
+
+The student's functions return pixels, as :mod:`course.raster` does:
+``draw_line(p0, p1)`` the (x, y) pixels of the line from p0 to p1, in
+order; ``draw_triangle_filled(p0, p1, p2)`` the pixels whose centres lie
+inside, each once, in any order.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from course.check.base import CheckResult, run_cases
+from course.raster import line, triangle
+
+__all__ = ["draw_line", "draw_triangle_filled"]
+
+# Every octant, both axes, a single pixel, slopes of exactly 1 and 1/2, and
+# lines with ties (the ideal line midway between two pixels).
+_LINE_CASES = [
+    ((2, 3), (9, 5)),
+    ((9, 5), (2, 3)),
+    ((2, 3), (4, 11)),
+    ((4, 11), (2, 3)),
+    ((9, 3), (2, 5)),
+    ((2, 5), (9, 3)),
+    ((4, 3), (2, 11)),
+    ((2, 11), (4, 3)),
+    ((0, 0), (7, 0)),
+    ((0, 7), (0, 0)),
+    ((5, 5), (5, 5)),
+    ((0, 0), (6, 6)),
+    ((6, 0), (0, 6)),
+    ((0, 0), (8, 4)),
+    ((1, 1), (13, 6)),
+]
+
+_TRIANGLE_CASES = [
+    ((1, 1), (9, 2), (4, 8)),
+    ((1, 1), (4, 8), (9, 2)),  # the other winding
+    ((0, 0), (8, 0), (4, 6)),  # flat top
+    ((4, 0), (0, 6), (8, 6)),  # flat bottom
+    ((0, 0), (8, 8), (0, 8)),  # an edge through pixel centres
+    ((0, 0), (8, 0), (8, 8)),  # its partner
+    ((0.5, 0.5), (7.5, 0.5), (0.5, 5.5)),  # edges through centres, vertices on them
+    ((1.25, 0.75), (10.6, 3.2), (3.9, 9.35)),  # float vertices
+    ((1, 1), (5, 3), (9, 5)),  # zero area: no pixels
+    ((2, 2), (2, 2), (7, 4)),  # two equal vertices: no pixels
+    ((0, 2), (12, 2.4), (6, 2.2)),  # thinner than a row
+]
+
+
+def draw_line(student: Callable[..., Any]) -> CheckResult:
+    """Check ``student(p0, p1)`` -> the Bresenham pixels from p0 to p1, in order.
+
+    A line passes when it has one pixel per step along the longer axis,
+    starts at p0, ends at p1, steps to an 8-neighbour each time, and every
+    pixel is within half a pixel of the ideal line along the shorter axis.
+    Where two pixels are equally near, either is accepted.
+    """
+    cases = [{"p0": p0, "p1": p1} for p0, p1 in _LINE_CASES]
+    return run_cases("DrawLine", student, cases, line, _is_bresenham_line, _as_pixel_array)
+
+
+def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
+    """Check ``student(p0, p1, p2)`` -> the pixels whose centres lie inside.
+
+    The pixels must be exactly those of :func:`course.raster.triangle`: each
+    pixel whose centre (x + 0.5, y + 0.5) is inside, centres on an edge
+    decided by the top-left rule, each pixel once, in any order. A triangle
+    of zero area has no pixels.
+    """
+    cases = [{"p0": p0, "p1": p1, "p2": p2} for p0, p1, p2 in _TRIANGLE_CASES]
+    return run_cases(
+        "DrawTriangleFilled", student, cases, triangle, _same_pixel_set, _as_pixel_array
+    )
+
+
+def _as_pixel_array(given: Any) -> np.ndarray:
+    """The student's pixels as an (K, 2) array; a list of (x, y) pairs is fine."""
+    return np.asarray([tuple(pixel) for pixel in given], dtype=float).reshape(-1, 2)
+
+
+def _is_bresenham_line(expected: np.ndarray, given: np.ndarray) -> bool:
+    (x0, y0), (x1, y1) = expected[0], expected[-1]
+    if given.shape != expected.shape or not np.array_equal(given, np.round(given)):
+        return False
+    if tuple(given[0]) != (x0, y0) or tuple(given[-1]) != (x1, y1):
+        return False
+    if len(given) > 1 and not (np.abs(np.diff(given, axis=0)).max(axis=1) == 1).all():
+        return False
+    dx, dy = x1 - x0, y1 - y0
+    n = max(abs(dx), abs(dy))
+    if n == 0:
+        return True
+    x, y = given[:, 0] - x0, given[:, 1] - y0
+    # Offset from the ideal line along the shorter axis, times n.
+    offset = y * dx - x * dy if abs(dx) >= abs(dy) else x * dy - y * dx
+    return bool((2 * np.abs(offset) <= n).all())
+
+
+def _same_pixel_set(expected: np.ndarray, given: np.ndarray) -> bool:
+    def ordered(pixels: np.ndarray) -> np.ndarray:
+        return pixels[np.lexsort((pixels[:, 0], pixels[:, 1]))]
+
+    return given.shape == expected.shape and np.array_equal(ordered(given), ordered(expected))

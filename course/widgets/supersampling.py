@@ -1,0 +1,166 @@
+"""Lesson 05's app: shrinking an image by supersampling, rate by rate.
+
+The lab shrinks a 2500 x 2500 image to 320 x 320. :class:`SupersampleApp`
+does that to a zone plate, whose exact box-filtered downsample is known in
+closed form (:func:`course.images.zone_plate_box`), and to the photograph
+(a 500 x 500 crop shrunk to 64 x 64, the same ratio), whose reference is the
+same supersampling at a very high rate. It shows the result, its difference
+from the reference, and the error at every rate, for the centred sampling
+and for the report's.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import numpy as np
+
+from course.images import photograph, zone_plate, zone_plate_box
+from course.resample import supersample, supersample_without_offset
+from course.widgets.base import SliderApp
+
+__all__ = ["IMAGES", "VERSIONS", "SupersampleApp", "rms_error"]
+
+IMAGES = ("zone plate", "photograph")
+VERSIONS = ("centred", "report's")
+_RESAMPLERS = {"centred": supersample, "report's": supersample_without_offset}
+_PHOTO_SIDE = 500
+_PANEL = 320  # pixels on screen for each picture
+
+
+def rms_error(image: np.ndarray, reference: np.ndarray) -> float:
+    """Root-mean-square difference over every pixel and channel.
+
+    Examples
+    --------
+    >>> rms_error(np.array([0.0, 0.5]), np.array([0.0, 0.0]))
+    0.3535533905932738
+    """
+    return float(np.sqrt(np.mean((np.asarray(image) - reference) ** 2)))
+
+
+class SupersampleApp(SliderApp):
+    """Supersampling from rate 1 to ``max_rate``, against the exact downsample.
+
+    Controls: ``rate``, ``image`` (:data:`IMAGES`) and ``version``
+    (:data:`VERSIONS`: centred sub-pixel samples, or the report's, shifted).
+    ``size`` and ``out_size`` default to the lab's 2500 and 320.
+    """
+
+    def __init__(
+        self,
+        size: int = 2500,
+        out_size: int = 320,
+        rate: int = 1,
+        max_rate: int = 12,
+        reference_rate: int = 32,
+    ) -> None:
+        controls = {
+            "rate": widgets.IntSlider(value=rate, min=1, max=max_rate, description="rate"),
+            "image": widgets.ToggleButtons(options=IMAGES, description="image"),
+            "version": widgets.ToggleButtons(options=VERSIONS, description="sampling"),
+        }
+        super().__init__(controls, width=1080, height=420)
+        self.max_rate = max_rate
+        photo_out = round(_PHOTO_SIDE * out_size / size)
+        photo = photograph()
+        top = (photo.shape[0] - _PHOTO_SIDE) // 2
+        left = (photo.shape[1] - _PHOTO_SIDE) // 2
+        photo = photo[top : top + _PHOTO_SIDE, left : left + _PHOTO_SIDE]
+        self.sources = {"zone plate": zone_plate((size, size)), "photograph": photo}
+        self.out_shapes = {"zone plate": (out_size, out_size), "photograph": (photo_out, photo_out)}
+        self.references = {
+            "zone plate": zone_plate_box((size, size), (out_size, out_size)),
+            "photograph": supersample(photo, (photo_out, photo_out), reference_rate),
+        }
+        self.reference_names = {
+            "zone plate": "exact box filter",
+            "photograph": f"rate {reference_rate}",
+        }
+        self.errors: dict[str, dict[str, np.ndarray]] = {}
+
+        width, height = 1080, 420
+
+        def box(x: float, y: float, w: float, h: float) -> tuple[float, ...]:
+            return (x / width, y / height, w / width, h / height)
+
+        self.result_axes = self.figure.add_axes(box(20, 40, _PANEL, _PANEL))
+        self.difference_axes = self.figure.add_axes(box(370, 40, _PANEL, _PANEL))
+        self.curve_axes = self.figure.add_axes(box(770, 60, 290, 300))
+        for axes in (self.result_axes, self.difference_axes):
+            axes.set_axis_off()
+        self.result = self.result_axes.imshow(
+            np.zeros((out_size, out_size)), cmap="gray", vmin=0, vmax=1, interpolation="nearest"
+        )
+        self.difference = self.difference_axes.imshow(
+            np.zeros((out_size, out_size)),
+            cmap="RdBu_r",
+            vmin=-0.5,
+            vmax=0.5,
+            interpolation="nearest",
+        )
+        rates = np.arange(1, max_rate + 1)
+        self.curves = {
+            version: self.curve_axes.semilogy(
+                rates, np.ones(max_rate), "o-", markersize=3, label=version
+            )[0]
+            for version in VERSIONS
+        }
+        (self.current,) = self.curve_axes.plot(
+            [], [], "o", color="crimson", markersize=8, fillstyle="none"
+        )
+        self.curve_axes.set_xlabel("rate (samples per pixel along each axis)", fontsize=8)
+        self.curve_axes.set_ylabel("RMS error", fontsize=8)
+        self.curve_axes.set_xticks(rates)
+        self.curve_axes.tick_params(labelsize=7)
+        self.curve_axes.grid(True, which="both", color="0.9")
+        self.curve_axes.legend(fontsize=8)
+        self.heading = self.figure.suptitle("", fontsize=10)
+
+    def resample(self, image: str, version: str, rate: int) -> np.ndarray:
+        """The chosen image shrunk by the chosen version at this rate."""
+        return _RESAMPLERS[version](self.sources[image], self.out_shapes[image], rate)
+
+    def error_curves(self, image: str) -> dict[str, np.ndarray]:
+        """RMS error against the reference at every rate, per version (computed once)."""
+        if image not in self.errors:
+            reference = self.references[image]
+            self.errors[image] = {
+                version: np.array(
+                    [
+                        rms_error(self.resample(image, version, rate), reference)
+                        for rate in range(1, self.max_rate + 1)
+                    ]
+                )
+                for version in VERSIONS
+            }
+        return self.errors[image]
+
+    def update(self) -> None:
+        rate, image, version = self.value("rate"), self.value("image"), self.value("version")
+        result = self.resample(image, version, rate)
+        reference = self.references[image]
+        height, width = result.shape[:2]
+        extent = (0, width, height, 0)
+        self.result.set_data(result)
+        self.result.set_extent(extent)
+        difference = result - reference
+        if difference.ndim == 3:
+            difference = difference.mean(axis=2)
+        self.difference.set_data(difference)
+        self.difference.set_extent(extent)
+        error = rms_error(result, reference)
+        self.result_axes.set_title(f"{width} x {height} at rate {rate} ({version})", fontsize=9)
+        self.difference_axes.set_title(
+            f"minus the {self.reference_names[image]}: RMS {error:.4f}", fontsize=9
+        )
+        curves = self.error_curves(image)
+        for name, curve in self.curves.items():
+            curve.set_ydata(curves[name])
+        low = min(values.min() for values in curves.values())
+        high = max(values.max() for values in curves.values())
+        self.curve_axes.set_ylim(low / 1.5, high * 1.5)
+        self.current.set_data([rate], [curves[version][rate - 1]])
+        self.curve_axes.set_title(
+            f"{image}: error against the {self.reference_names[image]}", fontsize=9
+        )
+        self.heading.set_text(f"{rate} x {rate} = {rate * rate} bilinear samples per output pixel")

@@ -1,0 +1,113 @@
+"""course.check.draw_line / draw_triangle_filled: right answers pass, typical mistakes are named."""
+
+import math
+
+from course import check
+from course.raster import line_4connected, triangle
+
+
+def bresenham_ties_toward_the_end(p0, p1):
+    """A correct student answer that breaks ties the other way (>= and <=)."""
+    (x0, y0), (x1, y1) = p0, p1
+    dx, dy = abs(x1 - x0), abs(y1 - y0)
+    sx, sy = (1 if x0 < x1 else -1), (1 if y0 < y1 else -1)
+    err, x, y, pixels = dx - dy, x0, y0, []
+    while True:
+        pixels.append((x, y))
+        if (x, y) == (x1, y1):
+            return pixels
+        err2 = 2 * err
+        if err2 >= -dy:
+            err, x = err - dy, x + sx
+        if err2 <= dx:
+            err, y = err + dx, y + sy
+
+
+def test_draw_line_accepts_bresenham_with_either_tie_rule():
+    result = check.draw_line(bresenham_ties_toward_the_end)
+    assert result and result.message == "all 15 cases pass"
+
+
+def test_draw_line_rejects_the_reports_staircase():
+    result = check.draw_line(lambda p0, p1: line_4connected(p0, p1).tolist())
+    assert not result
+    assert "case 1 is wrong" in result.message and "p0=(2, 3)" in result.message
+
+
+def test_draw_line_rejects_a_rounded_dda_that_skips_steep_pixels():
+    def dda_in_x_only(p0, p1):
+        (x0, y0), (x1, y1) = p0, p1
+        step = 1 if x1 >= x0 else -1
+        if x0 == x1:
+            return [(x0, y0)]
+        return [
+            (x, round(y0 + (y1 - y0) * (x - x0) / (x1 - x0))) for x in range(x0, x1 + step, step)
+        ]
+
+    result = check.draw_line(dda_in_x_only)
+    assert not result and "case 3 is wrong" in result.message
+
+
+def test_draw_line_reports_a_crash_with_its_case():
+    def crashes_on_vertical_lines(p0, p1):
+        slope = (p1[1] - p0[1]) / (p1[0] - p0[0])
+        assert math.isfinite(slope)
+        return bresenham_ties_toward_the_end(p0, p1)
+
+    result = check.draw_line(crashes_on_vertical_lines)
+    assert not result and "raised ZeroDivisionError" in result.message
+    assert "p0=(0, 7)" in result.message
+
+
+def point_in_triangle_with_top_left_rule(p0, p1, p2):
+    """A correct student answer: test every centre of the bounding box."""
+    (ax, ay), (bx, by), (cx, cy) = p0, p1, p2
+    area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    if area == 0:
+        return []
+    if area < 0:
+        (bx, by), (cx, cy) = (cx, cy), (bx, by)
+    edges = [((ax, ay), (bx, by)), ((bx, by), (cx, cy)), ((cx, cy), (ax, ay))]
+    pixels = []
+    for row in range(math.floor(min(ay, by, cy)), math.ceil(max(ay, by, cy))):
+        for column in range(math.floor(min(ax, bx, cx)), math.ceil(max(ax, bx, cx))):
+            px, py = column + 0.5, row + 0.5
+            inside = True
+            for (x0, y0), (x1, y1) in edges:
+                value = (x1 - x0) * (py - y0) - (y1 - y0) * (px - x0)
+                top_left = y1 < y0 or (y1 == y0 and x1 > x0)
+                inside &= value > 0 or (value == 0 and top_left)
+            if inside:
+                pixels.append((column, row))
+    return pixels
+
+
+def test_draw_triangle_filled_accepts_a_correct_answer_in_any_order():
+    assert check.draw_triangle_filled(point_in_triangle_with_top_left_rule)
+    assert check.draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2)[::-1])
+
+
+def test_draw_triangle_filled_names_the_shared_edge_case_for_the_closed_rule():
+    result = check.draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed"))
+    assert not result and "case 5 is wrong" in result.message
+
+
+def test_draw_triangle_filled_rejects_pixels_painted_twice():
+    def twice(p0, p1, p2):
+        pixels = triangle(p0, p1, p2).tolist()
+        return pixels + pixels[:1]
+
+    result = check.draw_triangle_filled(twice)
+    assert not result and "case 1 is wrong" in result.message
+
+
+def test_draw_triangle_filled_reports_the_handouts_division_by_zero():
+    def scanline_without_special_cases(p0, p1, p2):
+        top, middle, _ = sorted([p0, p1, p2], key=lambda p: p[1])
+        # The handout's warning: the slope of top -> middle divides by zero
+        # when the two share a y.
+        (middle[0] - top[0]) / (middle[1] - top[1])
+        return triangle(p0, p1, p2).tolist()
+
+    result = check.draw_triangle_filled(scanline_without_special_cases)
+    assert not result and "case 3 raised ZeroDivisionError" in result.message

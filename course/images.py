@@ -48,3 +48,27 @@ def to_gray(image: Any) -> np.ndarray:
     if array.ndim == 2:
         return array
     return np.clip(array @ _LUMA, 0.0, 1.0)
+
+
+# --- lessons 06-07: dithering and filtering ---------------------------------
+
+__all__ += ["ramp"]
+
+
+def ramp(width: int = 256, height: int = 32) -> np.ndarray:
+    """A horizontal gray ramp, black to white: pixel x has the value (x + 0.5) / width.
+
+    Every column has its own level, so a dithering method's tone (or its
+    failure to keep it) shows along the ramp.
+
+    Examples
+    --------
+    >>> ramp(4, 2)
+    array([[0.125, 0.375, 0.625, 0.875],
+           [0.125, 0.375, 0.625, 0.875]])
+    """
+    from course._validate import as_int
+
+    width = as_int(width, "width", minimum=1)
+    height = as_int(height, "height", minimum=1)
+    return np.tile((np.arange(width) + 0.5) / width, (height, 1))

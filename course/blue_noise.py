@@ -65,13 +65,19 @@ def cluster_energy(pattern: Any, sigma: float = 1.5) -> np.ndarray:
     return np.real(np.fft.ifft2(np.fft.fft2(dots) * np.fft.fft2(kernel)))
 
 
+def _as_dots(value: Any, name: str) -> np.ndarray:
+    """A finite float copy; a boolean dot pattern counts as 0s and 1s."""
+    if isinstance(value, np.ndarray) and value.dtype == bool:
+        value = value.astype(float)
+    array = as_float_array(value, name)
+    require_finite(array, name)
+    return array
+
+
 def _as_square_pattern(pattern: Any) -> np.ndarray:
-    if isinstance(pattern, np.ndarray) and pattern.dtype == bool:
-        pattern = pattern.astype(float)
-    array = as_float_array(pattern, "pattern")
+    array = _as_dots(pattern, "pattern")
     if array.ndim != 2 or array.shape[0] != array.shape[1] or array.size == 0:
         raise ValueError(f"pattern must be a square (N, N) array of dots; got shape {array.shape}")
-    require_finite(array, "pattern")
     return array
 
 
@@ -200,10 +206,9 @@ def _as_rng(rng: Any) -> np.random.Generator:
 
 
 def _as_texture(image: Any) -> np.ndarray:
-    array = as_float_array(image, "image")
+    array = _as_dots(image, "image")
     if array.ndim != 2 or min(array.shape, default=0) < 2:
         raise ValueError(f"image must be a 2-D (H, W) array, H, W >= 2; got shape {array.shape}")
-    require_finite(array, "image")
     return array
 
 

@@ -41,6 +41,7 @@ __all__ = [
     "KERNELS",
     "METHODS",
     "ORDERED_MATRIX",
+    "all_methods",
     "bayer",
     "bayer_matrix",
     "blue_noise",
@@ -206,6 +207,37 @@ def bayer(gray: Any, size: int = 4) -> np.ndarray:
     reps = (-(-array.shape[0] // n), -(-array.shape[1] // n))
     levels = np.tile((matrix + 0.5) / n**2, reps)[: array.shape[0], : array.shape[1]]
     return (array > levels).astype(float)
+
+
+def all_methods(
+    gray: Any, noise: Any = None, rng: np.random.Generator | None = None
+) -> dict[str, np.ndarray]:
+    """Every method of this module on one image, by display name.
+
+    ``noise`` defaults to ``blue_noise_mask(64)`` and ``rng`` (for the
+    uniform noise) to ``default_rng(0)``. Ordered 3 x 3 is three times
+    larger than the others.
+
+    Examples
+    --------
+    >>> results = all_methods(np.full((4, 4), 0.5))
+    >>> [(name, float(result.mean())) for name, result in results.items()][:3]
+    [('threshold', 0.0), ('uniform random', 0.625), ('blue noise', 0.5)]
+    """
+    array = as_gray(gray, "gray")
+    texture = blue_noise_mask(64, np.random.default_rng(0)) if noise is None else noise
+    return {
+        "threshold": threshold(array),
+        "uniform random": uniform_random(array, rng),
+        "blue noise": blue_noise(array, texture),
+        "ordered 3x3": ordered(array),
+        "Bayer 8x8": bayer(array, 8),
+        "Floyd-Steinberg": error_diffusion(array),
+        "Floyd-Steinberg serpentine": error_diffusion(array, serpentine=True),
+        "Jarvis-Judice-Ninke": error_diffusion(array, "jarvis-judice-ninke"),
+        "Stucki": error_diffusion(array, "stucki"),
+        "Atkinson": error_diffusion(array, "atkinson"),
+    }
 
 
 # --- quality -----------------------------------------------------------------

@@ -150,7 +150,10 @@ def convolve(image: Any, kernel: Any, border: str = "handout") -> np.ndarray:
     image[y + 1 - i, x + 1 - j]``. The handout's dot product of kernel and
     window is a correlation: pass ``kernel[::-1, ::-1]`` to get it. (For the
     box it makes no difference; for Sobel it flips the gradient's sign.)
-    The result is not clipped: a kernel with negative weights can leave [0, 1].
+    A kernel of non-negative weights summing to at most 1 (a weighted mean)
+    gives values in [0, 1], and the result is clipped to that range to undo
+    rounding; any other kernel's result is returned as computed (a kernel
+    with negative weights can leave [0, 1]).
 
     Parameters
     ----------
@@ -179,7 +182,12 @@ def convolve(image: Any, kernel: Any, border: str = "handout") -> np.ndarray:
     array = as_image(image, "image")
     weights = _as_kernel(kernel)
     border = as_choice(border, "border", BORDERS)
-    return _correlate(array, weights[::-1, ::-1], border)
+    output = _correlate(array, weights[::-1, ::-1], border)
+    if weights.min() >= 0 and weights.sum() <= 1 + 1e-12:
+        # A weighted mean stays in [0, 1]; nine roundings of 1/9 can leave it
+        # one ulp above 1, which the next filter would reject.
+        np.clip(output, 0.0, 1.0, out=output)
+    return output
 
 
 def sobel(image: Any, border: str = "replicate", method: str = "fast") -> np.ndarray:

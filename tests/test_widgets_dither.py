@@ -81,7 +81,7 @@ def test_repeated_blur_app_applies_each_border_rule_n_times():
     for _ in range(3):
         zero = filters.convolve(zero, filters.BOX, "zero")
     assert np.allclose(app.wholes["zero"].get_array(), zero, atol=1e-15)
-    assert np.allclose(app.crops["zero"].get_array(), zero[:6, :6], atol=1e-15)
+    assert np.allclose(app.crops["zero"].get_array(), zero[:6, -6:], atol=1e-15)
     # Back to fewer blurs: recomputed from the original.
     app.controls["repeats"].value = 1
     assert np.allclose(

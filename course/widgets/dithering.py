@@ -13,6 +13,7 @@ each above a zoomed crop of the same window.
 
 from __future__ import annotations
 
+import textwrap
 from typing import Any
 
 import ipywidgets as widgets
@@ -69,28 +70,20 @@ def side_by_side(
     reference = height
     columns = columns or len(arrays)
     rows = -(-len(arrays) // columns)
-    # Row heights in inches: the whole image at its aspect ratio, a square
-    # crop, and room for a title above each.
+    # Row heights in inches: the whole image at its aspect ratio, then a
+    # square crop; constrained layout makes room for the titles.
     column_inches = width / 100 / columns
-    whole, zoom, title = column_inches * height / width_pixels, column_inches * 0.8, 0.3
-    figure = Figure(figsize=(width / 100, rows * (whole + zoom + 2 * title)), dpi=100)
-    grid = figure.add_gridspec(
-        2 * rows,
-        columns,
-        height_ratios=[whole, zoom] * rows,
-        hspace=2 * title / ((whole + zoom) / 2),
-        wspace=0.05,
-        left=0.01,
-        right=0.99,
-        top=1 - title / (rows * (whole + zoom + 2 * title)),
-        bottom=0.01,
+    whole, zoom = column_inches * height / width_pixels, column_inches * 0.8
+    figure = Figure(
+        figsize=(width / 100, rows * (whole + zoom + 0.5)), dpi=100, layout="constrained"
     )
+    grid = figure.add_gridspec(2 * rows, columns, height_ratios=[whole, zoom] * rows)
     for index, (name, image) in enumerate(arrays.items()):
         row, column = divmod(index, columns)
         scale = image.shape[0] // reference
         overview = _bare(figure.add_subplot(grid[2 * row, column]))
         overview.imshow(image, **{**_GRAY, "interpolation": "antialiased"})
-        overview.set_title(name, fontsize=9)
+        overview.set_title(textwrap.fill(name, 18), fontsize=9)
         window, extent = _zoom_window(image, scale, center, size)
         left, right, bottom, top = extent
         overview.add_patch(

@@ -2,7 +2,7 @@
 
 :class:`RepeatedBlurApp` blurs an image n times (the slider) with each border
 rule of :mod:`course.filters` and shows the whole image above a zoomed crop
-of its top-left corner, where the rules differ: zero padding darkens a frame
+of its top-right corner, where the rules differ: zero padding darkens a frame
 that grows with every pass; the other three keep the edge's brightness.
 """
 
@@ -54,7 +54,7 @@ class RepeatedBlurApp(SliderApp):
     repeats : int
         Initial number of blurs.
     corner : int
-        Side of the zoomed top-left crop.
+        Side of the zoomed top-right crop.
     """
 
     def __init__(self, image: Any, repeats: int = 5, corner: int = 32) -> None:
@@ -79,8 +79,8 @@ class RepeatedBlurApp(SliderApp):
         self.update()
 
     def corner_of(self, image: np.ndarray) -> np.ndarray:
-        """The zoomed top-left corner."""
-        return image[: self.corner, : self.corner]
+        """The zoomed top-right corner."""
+        return image[: self.corner, -self.corner :]
 
     def blurred(self, repeats: int) -> dict[str, np.ndarray]:
         """The image blurred ``repeats`` times under each rule (kept for the next step)."""

@@ -258,23 +258,50 @@ def _wavefront_skew(offsets: list[tuple[int, int, float]]) -> int:
 
 
 def _diffuse_wavefront(
-    gray: np.ndarray, offsets: list[tuple[int, int, float]]
+    gray: np.ndarray, offsets: list[tuple[int, int, float]], band: int | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """All pixels of one wavefront x + s y = t at once, t = 0, 1, 2, ...
+
+    The skewed layout (see ``_wavefront_band``) needs about ``(width + s
+    height) height`` cells: fine for a wide image, quadratic for a tall one.
+    So the image runs in bands of ``band`` rows, by default
+    ``max(width, 1024)``. A band
+    hands the rows below it their values with the errors received so far,
+    added in order, so the result does not depend on the banding.
+    """
+    height, width = gray.shape
+    depth = max(dy for _, dy, _ in offsets)
+    band = band or max(width, 1024)
+    # Rows below the current band, with the errors they have received so far.
+    below = np.vstack([gray, np.zeros((depth, width))])[:depth]
+    values = np.empty_like(gray)
+    for first in range(0, height, band):
+        rows = np.vstack([below, gray[first + depth : first + band + depth]])
+        rows = np.vstack([rows, np.zeros((band + depth - len(rows), width))])
+        count = min(band, height - first)
+        band_values, below = _wavefront_band(rows, count, offsets)
+        values[first : first + count] = band_values
+    return (values > 0.5).astype(float), values
+
+
+def _wavefront_band(
+    rows: np.ndarray, count: int, offsets: list[tuple[int, int, float]]
+) -> tuple[np.ndarray, np.ndarray]:
+    """Run the first ``count`` rows; return their values and the rows below, as received.
 
     ``pending[t, y]`` holds pixel (x = t - s y, y): its value plus the errors
     received so far, so each wavefront is one row of ``pending``, and a push
     by (dx, dy) lands in row ``t + dx + s dy``, column ``y + dy``. Pushes that
     leave the image land in cells no pixel owns, and are never read.
     """
-    height, width = gray.shape
-    skew = _wavefront_skew(offsets)
-    steps = width + skew * (height - 1)
-    reach = max(dx + skew * dy for dx, dy, _ in offsets)
+    width = rows.shape[1]
     depth = max(dy for _, dy, _ in offsets)
-    pending = np.zeros((steps + reach, height + depth))
-    for y in range(height):
-        pending[skew * y : skew * y + width, y] = gray[y]
+    skew = _wavefront_skew(offsets)
+    steps = width + skew * (count - 1)
+    reach = max(max(dx + skew * dy for dx, dy, _ in offsets), skew * depth)
+    pending = np.zeros((steps + reach, count + depth))
+    for y in range(count + depth):
+        pending[skew * y : skew * y + width, y] = rows[y]
 
     # One block addition per kernel row, deepest first; a block spans the
     # row's contiguous dx range, so its wavefronts are consecutive rows of pending.
@@ -288,18 +315,16 @@ def _diffuse_wavefront(
 
     for t in range(steps):
         top = max(0, (t - width) // skew + 1)
-        bottom = min(height, t // skew + 1)
+        bottom = min(count, t // skew + 1)
         value = pending[t, top:bottom]
         pushed = weight_column * (value - (value > 0.5))
-        for start, count, ahead, dy in blocks:
-            rows = slice(t + ahead, t + ahead + count)
-            pending[rows, top + dy : bottom + dy] += pushed[start : start + count]
+        for start, size, ahead, dy in blocks:
+            targets = slice(t + ahead, t + ahead + size)
+            pending[targets, top + dy : bottom + dy] += pushed[start : start + size]
 
     # A pixel's pending value is final once its wavefront has run.
-    values = np.empty_like(gray)
-    for y in range(height):
-        values[y] = pending[skew * y : skew * y + width, y]
-    return (values > 0.5).astype(float), values
+    unskewed = np.array([pending[skew * y : skew * y + width, y] for y in range(count + depth)])
+    return unskewed[:count], unskewed[count:]
 
 
 def error_diffusion_wraparound(gray: Any) -> np.ndarray:

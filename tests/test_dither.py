@@ -161,6 +161,16 @@ def test_the_three_forms_of_error_diffusion_are_equal_bit_for_bit(gray, kernel):
     assert np.array_equal(values > 0.5, expected)
 
 
+@given(float_grays, st.sampled_from(sorted(dither.KERNELS)), st.integers(1, 4))
+def test_wavefront_in_bands_gives_the_same_values(gray, kernel, band):
+    # Tall images run in bands; the bands hand on the errors in order.
+    from course.error_diffusion import _diffuse_wavefront
+
+    values = dither.error_diffusion_values(gray, kernel, method="loop")
+    banded = _diffuse_wavefront(gray, dither.diffusion_offsets(kernel), band=band)[1]
+    assert np.array_equal(banded, values)
+
+
 @given(float_grays, st.sampled_from(sorted(dither.KERNELS)))
 def test_serpentine_rows_form_equals_the_serpentine_loop(gray, kernel):
     expected = loop(gray, kernel, serpentine=True)

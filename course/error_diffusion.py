@@ -265,66 +265,78 @@ def _diffuse_wavefront(
     The skewed layout (see ``_wavefront_band``) needs about ``(width + s
     height) height`` cells: fine for a wide image, quadratic for a tall one.
     So the image runs in bands of ``band`` rows, by default
-    ``max(width, 1024)``. A band
-    hands the rows below it their values with the errors received so far,
-    added in order, so the result does not depend on the banding.
+    ``max(width, 1024)``. A band hands the rows below it their values with
+    the errors received so far, added in order, so the result does not
+    depend on the banding.
     """
     height, width = gray.shape
     depth = max(dy for _, dy, _ in offsets)
     band = band or max(width, 1024)
-    # Rows below the current band, with the errors they have received so far.
-    below = np.vstack([gray, np.zeros((depth, width))])[:depth]
+    blank = np.zeros(width)
+
+    def row(y: int) -> np.ndarray:
+        return gray[y] if y < height else blank
+
     values = np.empty_like(gray)
+    below = [row(y) for y in range(depth)]
     for first in range(0, height, band):
-        rows = np.vstack([below, gray[first + depth : first + band + depth]])
-        rows = np.vstack([rows, np.zeros((band + depth - len(rows), width))])
         count = min(band, height - first)
-        band_values, below = _wavefront_band(rows, count, offsets)
-        values[first : first + count] = band_values
+        rows = below + [row(y) for y in range(first + depth, first + count + depth)]
+        below = _wavefront_band(rows, count, offsets, values[first : first + count])
     return (values > 0.5).astype(float), values
 
 
 def _wavefront_band(
-    rows: np.ndarray, count: int, offsets: list[tuple[int, int, float]]
-) -> tuple[np.ndarray, np.ndarray]:
-    """Run the first ``count`` rows; return their values and the rows below, as received.
+    rows: list[np.ndarray],
+    count: int,
+    offsets: list[tuple[int, int, float]],
+    values: np.ndarray,
+) -> list[np.ndarray]:
+    """Run the first ``count`` of ``rows`` into ``values``; return the rest as received.
 
     ``pending[t, y]`` holds pixel (x = t - s y, y): its value plus the errors
     received so far, so each wavefront is one row of ``pending``, and a push
     by (dx, dy) lands in row ``t + dx + s dy``, column ``y + dy``. Pushes that
     leave the image land in cells no pixel owns, and are never read.
     """
-    width = rows.shape[1]
-    depth = max(dy for _, dy, _ in offsets)
+    width = len(rows[0])
+    depth = len(rows) - count
     skew = _wavefront_skew(offsets)
     steps = width + skew * (count - 1)
     reach = max(max(dx + skew * dy for dx, dy, _ in offsets), skew * depth)
     pending = np.zeros((steps + reach, count + depth))
-    for y in range(count + depth):
-        pending[skew * y : skew * y + width, y] = rows[y]
+    for y, initial in enumerate(rows):
+        pending[skew * y : skew * y + width, y] = initial
 
-    # One block addition per kernel row, deepest first; a block spans the
-    # row's contiguous dx range, so its wavefronts are consecutive rows of pending.
+    # One block addition per kernel row, deepest first. A block spans the
+    # row's contiguous dx range, so its targets are consecutive rows of
+    # pending; ``targets[t : t + size, top:bottom]`` are those of wavefront t.
     weights, blocks = [], []
     for dy in sorted({dy for _, dy, _ in offsets}, reverse=True):
         row = {dx: weight for dx, other_dy, weight in offsets if other_dy == dy}
         first, last = min(row), max(row)
-        blocks.append((len(weights), last - first + 1, first + skew * dy, dy))
+        start = len(weights)
         weights.extend(row.get(dx, 0.0) for dx in range(first, last + 1))
+        targets = pending[first + skew * dy :, dy:]
+        blocks.append((targets, last - first + 1, slice(start, len(weights))))
     weight_column = np.array(weights)[:, None]
+    # Scratch space reused by every step: allocation costs as much as the arithmetic.
+    error_buffer, pushed_buffer = np.empty(count), np.empty((len(weights), count))
+    wavefronts = [
+        (max(0, (t - width) // skew + 1), min(count, t // skew + 1)) for t in range(steps)
+    ]
 
-    for t in range(steps):
-        top = max(0, (t - width) // skew + 1)
-        bottom = min(count, t // skew + 1)
+    for t, (top, bottom) in enumerate(wavefronts):
         value = pending[t, top:bottom]
-        pushed = weight_column * (value - (value > 0.5))
-        for start, size, ahead, dy in blocks:
-            targets = slice(t + ahead, t + ahead + size)
-            pending[targets, top + dy : bottom + dy] += pushed[start : start + size]
+        error = np.subtract(value, value > 0.5, out=error_buffer[: bottom - top])
+        pushed = np.multiply(weight_column, error, out=pushed_buffer[:, : bottom - top])
+        for targets, size, share in blocks:
+            targets[t : t + size, top:bottom] += pushed[share]
 
     # A pixel's pending value is final once its wavefront has run.
-    unskewed = np.array([pending[skew * y : skew * y + width, y] for y in range(count + depth)])
-    return unskewed[:count], unskewed[count:]
+    for y in range(count):
+        values[y] = pending[skew * y : skew * y + width, y]
+    return [pending[skew * y : skew * y + width, y].copy() for y in range(count, count + depth)]
 
 
 def error_diffusion_wraparound(gray: Any) -> np.ndarray:

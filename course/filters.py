@@ -213,6 +213,11 @@ def sobel(image: Any, border: str = "replicate", method: str = "fast") -> np.nda
         is a difference of shifted copies, then a weighted sum of shifted
         copies. Equal to rounding; exactly for multiples of 1/256.
 
+    References
+    ----------
+    I. Sobel and G. Feldman, "A 3x3 isotropic gradient operator for image
+    processing", talk at the Stanford Artificial Intelligence Project, 1968.
+
     Examples
     --------
     >>> sobel([[0.0, 0.0, 1.0, 1.0]] * 3)

@@ -11,12 +11,12 @@ from typing import Any
 import numpy as np
 from matplotlib import cbook
 
-from course._validate import as_image, as_positive_float, as_shape
+from course._validate import as_image, as_int, as_positive_float, as_shape
 
 __all__ = [
     "photograph",
+    "ramp",
     "to_gray",
-    # lessons 04-05
     "zone_plate",
     "zone_plate_box",
 ]
@@ -140,3 +140,23 @@ def zone_plate_box(shape: Any, out_shape: Any, max_frequency: float = 0.25) -> n
 def _zone_plate_rate(height: int, width: int, max_frequency: float) -> float:
     max_frequency = as_positive_float(max_frequency, "max_frequency")
     return max_frequency / max(height, width)
+
+
+# --- lessons 06-07: dithering and filtering ---------------------------------
+
+
+def ramp(width: int = 256, height: int = 32) -> np.ndarray:
+    """A horizontal gray ramp, black to white: pixel x has the value (x + 0.5) / width.
+
+    Every column has its own level, so a dithering method's tone (or its
+    failure to keep it) shows along the ramp.
+
+    Examples
+    --------
+    >>> ramp(4, 2)
+    array([[0.125, 0.375, 0.625, 0.875],
+           [0.125, 0.375, 0.625, 0.875]])
+    """
+    width = as_int(width, "width", minimum=1)
+    height = as_int(height, "height", minimum=1)
+    return np.tile((np.arange(width) + 0.5) / width, (height, 1))

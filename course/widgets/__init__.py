@@ -7,15 +7,21 @@ an image widget beside its controls, redrawn by changing artists.
 from course.widgets.base import FigureView, SliderApp
 from course.widgets.bernstein import BernsteinBasisApp
 from course.widgets.de_casteljau import DeCasteljauApp
+from course.widgets.dithering import DitherComparisonApp, GrayLevelApp, VoidAndClusterApp
+from course.widgets.filtering import RepeatedBlurApp
 from course.widgets.lines import LineApp, TriangleApp
 from course.widgets.supersampling import SupersampleApp
 
 __all__ = [
     "BernsteinBasisApp",
     "DeCasteljauApp",
+    "DitherComparisonApp",
     "FigureView",
+    "GrayLevelApp",
     "LineApp",
+    "RepeatedBlurApp",
     "SliderApp",
     "SupersampleApp",
     "TriangleApp",
+    "VoidAndClusterApp",
 ]

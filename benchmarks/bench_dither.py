@@ -1,0 +1,85 @@
+"""Dithering speed against its anchors; one line per measurement, goal beside it.
+
+    python benchmarks/bench_dither.py
+
+- error_diffusion (Floyd-Steinberg) on a 512 x 512 gray photograph against
+  Pillow's Image.convert("1") (Floyd-Steinberg in C), goal within 10x, with
+  the output equal to the handout's loop form, which is timed on 128 x 128
+  and scaled by the pixel count (it is linear in it).
+- blue_noise_mask(64): goal under 2 s.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+import numpy as np
+from PIL import Image
+
+from course.dither import blue_noise_mask, error_diffusion
+from course.images import photograph, to_gray
+
+
+def best_times(functions: dict[str, Callable[[], object]], repeats: int) -> dict[str, float]:
+    """Best time of each function over interleaved runs.
+
+    CPU time of this process (every function timed here runs on one thread),
+    so that other jobs sharing the machine's cores do not count; the runs
+    are interleaved so that what load remains (caches) hits all alike.
+    """
+    times = dict.fromkeys(functions, float("inf"))
+    for _ in range(repeats):
+        for name, function in functions.items():
+            start = time.process_time()
+            function()
+            times[name] = min(times[name], time.process_time() - start)
+    return times
+
+
+def main() -> None:
+    gray = to_gray(photograph())[:512, :512]
+    # Pillow works on 8-bit pixels; feed both the same levels.
+    gray = np.round(gray * 255) / 255
+    pillow_input = Image.fromarray(np.round(gray * 255).astype(np.uint8), mode="L")
+    small = gray[:128, :128]
+    scale = gray.size / small.size
+
+    times = best_times(
+        {"wavefront": lambda: error_diffusion(gray), "pillow": lambda: pillow_input.convert("1")},
+        repeats=21,
+    )
+    times["rows"] = best_times({"rows": lambda: error_diffusion(gray, method="rows")}, 3)["rows"]
+    loop_small = best_times({"loop": lambda: error_diffusion(small, method="loop")}, 3)["loop"]
+    pillow = times["pillow"]
+
+    fast = error_diffusion(gray)
+    equal = np.array_equal(fast, error_diffusion(gray, method="loop"))
+    agreement = np.mean(fast == (np.asarray(pillow_input.convert("1")) > 0))
+    print(
+        f"error_diffusion 512x512 (wavefront): {times['wavefront'] / pillow:.1f}x "
+        f'Pillow convert("1") (goal <= 10x); output equal to the loop form: '
+        f"{'yes' if equal else 'NO'}"
+    )
+    print(
+        f"error_diffusion 512x512 (rows): {times['rows'] / pillow:.0f}x Pillow "
+        f"(no goal: the serpentine default)"
+    )
+    print(
+        f"error_diffusion 512x512 (loop, timed on 128x128 x {scale:.0f}): "
+        f"{loop_small * scale / pillow:.0f}x Pillow (no goal: the readable form)"
+    )
+    print(
+        f"  (Pillow's own Floyd-Steinberg, on 8-bit integers, agrees on {agreement:.1%} "
+        f"of the pixels; absolute: wavefront {times['wavefront'] * 1e3:.1f} ms, "
+        f"Pillow {pillow * 1e3:.2f} ms)"
+    )
+
+    start = time.perf_counter()
+    blue_noise_mask(64, np.random.default_rng(0))
+    elapsed = time.perf_counter() - start  # wall time: what a notebook waits
+    print(f"blue_noise_mask(64): {elapsed:.2f} s (goal < 2 s)")
+
+
+if __name__ == "__main__":
+    main()

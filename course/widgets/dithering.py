@@ -1,0 +1,291 @@
+"""Lesson 06 apps: dithering methods side by side, a gray-level slider, void-and-cluster.
+
+- :class:`DitherComparisonApp`: every method on one image, zoomed crops
+  (nearest interpolation) at a window the sliders move.
+- :class:`GrayLevelApp`: a flat patch at the slider's level: the ten
+  patterns of the lab's 3 x 3 matrix, and what each method makes of it.
+- :class:`VoidAndClusterApp`: the blue-noise mask being built, dot by dot,
+  over the energy that chooses each dot, with the pattern's spectrum.
+
+:func:`side_by_side` is the static figure the lessons reuse: images in a row,
+each above a zoomed crop of the same window.
+"""
+
+from __future__ import annotations
+
+import textwrap
+from typing import Any
+
+import ipywidgets as widgets
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Rectangle
+
+from course import dither
+from course._validate import as_gray, as_image, as_int
+from course.blue_noise import blue_noise_mask, cluster_energy, radial_power_spectrum
+from course.blue_noise import void_and_cluster as rank_pixels
+from course.canvas import crop
+from course.widgets.base import SliderApp
+
+__all__ = ["DitherComparisonApp", "GrayLevelApp", "VoidAndClusterApp", "side_by_side"]
+
+_GRAY = {"cmap": "gray", "vmin": 0.0, "vmax": 1.0, "interpolation": "nearest"}
+
+
+def _bare(axes: Any) -> Any:
+    axes.set_xticks([])
+    axes.set_yticks([])
+    return axes
+
+
+def _zoom_window(image: np.ndarray, scale: int, center: tuple[float, float], size: int) -> Any:
+    """The same window as ``crop`` on the reference image, of an image ``scale`` times larger."""
+    _, (left, right, bottom, top) = crop(image[::scale, ::scale], center, size)
+    window = image[scale * top : scale * bottom, scale * left : scale * right]
+    return window, (scale * left, scale * right, scale * bottom, scale * top)
+
+
+def side_by_side(
+    images: dict[str, np.ndarray],
+    center: tuple[float, float],
+    size: int = 32,
+    width: int = 1000,
+    columns: int | None = None,
+) -> Figure:
+    """Images in a grid, each with a zoomed crop (nearest) of the same window below it.
+
+    An image k times larger than the first (ordered dithering) is cropped at
+    k times the window, so every crop shows the same part of the scene.
+
+    Examples
+    --------
+    >>> figure = side_by_side({"a": np.zeros((8, 8)), "b": np.ones((24, 24))}, (4, 4), 4)
+    >>> len(figure.axes)
+    4
+    """
+    arrays = {name: as_image(image, f"images[{name!r}]") for name, image in images.items()}
+    size = as_int(size, "size", minimum=1)
+    height, width_pixels = next(iter(arrays.values())).shape[:2]
+    reference = height
+    columns = columns or len(arrays)
+    rows = -(-len(arrays) // columns)
+    # Row heights in inches: the whole image at its aspect ratio, then a
+    # square crop; constrained layout makes room for the titles.
+    column_inches = width / 100 / columns
+    whole, zoom = column_inches * height / width_pixels, column_inches * 0.8
+    figure = Figure(
+        figsize=(width / 100, rows * (whole + zoom + 0.5)), dpi=100, layout="constrained"
+    )
+    grid = figure.add_gridspec(2 * rows, columns, height_ratios=[whole, zoom] * rows)
+    for index, (name, image) in enumerate(arrays.items()):
+        row, column = divmod(index, columns)
+        scale = image.shape[0] // reference
+        overview = _bare(figure.add_subplot(grid[2 * row, column]))
+        overview.imshow(image, **{**_GRAY, "interpolation": "antialiased"})
+        overview.set_title(textwrap.fill(name, 18), fontsize=9)
+        window, extent = _zoom_window(image, scale, center, size)
+        left, right, bottom, top = extent
+        overview.add_patch(
+            Rectangle((left, top), right - left, bottom - top, fill=False, color="red", lw=1)
+        )
+        _bare(figure.add_subplot(grid[2 * row + 1, column])).imshow(window, **_GRAY)
+    return figure
+
+
+class DitherComparisonApp(SliderApp):
+    """Every dithering method on one gray image; sliders move the zoomed window.
+
+    Parameters
+    ----------
+    gray : array_like, (H, W), values in [0, 1]
+    size : int
+        Side of the zoomed window, in input pixels.
+    """
+
+    def __init__(self, gray: Any, size: int = 40) -> None:
+        self.gray = as_gray(gray, "gray")
+        self.size = as_int(size, "size", minimum=4)
+        height, width = self.gray.shape
+        self.results = {"original": self.gray, **dither.all_methods(self.gray)}
+        controls = {
+            "x": widgets.IntSlider(value=width // 2, min=0, max=width - 1, description="x"),
+            "y": widgets.IntSlider(value=height // 2, min=0, max=height - 1, description="y"),
+        }
+        super().__init__(controls, width=1000, height=560)
+        grid = self.figure.add_gridspec(3, 4, left=0.01, right=0.99, top=0.95, bottom=0.01)
+        overview = _bare(self.figure.add_subplot(grid[0, 0]))
+        overview.imshow(self.gray, **{**_GRAY, "interpolation": "antialiased"})
+        overview.set_title("original (red: the window)", fontsize=9)
+        self.window = Rectangle((0, 0), 1, 1, fill=False, color="red", lw=1.5)
+        overview.add_patch(self.window)
+        self.crops = {}
+        for index, name in enumerate(self.results, start=1):
+            axes = _bare(self.figure.add_subplot(grid[divmod(index, 4)]))
+            axes.set_title(name, fontsize=9)
+            self.crops[name] = axes.imshow(np.zeros((self.size, self.size)), **_GRAY)
+        self.update()
+
+    def update(self) -> None:
+        center = (self.value("x") + 0.5, self.value("y") + 0.5)
+        for name, result in self.results.items():
+            scale = result.shape[0] // self.gray.shape[0]
+            window, _ = _zoom_window(result, scale, center, self.size)
+            self.crops[name].set_data(window)
+        _, (left, right, bottom, top) = crop(self.gray, center, self.size)
+        self.window.set_bounds(left, top, right - left, bottom - top)
+
+
+class GrayLevelApp(SliderApp):
+    """A flat patch at one gray level: the lab's ten ordered patterns and each method.
+
+    Parameters
+    ----------
+    level : float
+        Initial slider value in [0, 1].
+    size : int
+        Side of the flat patch in pixels (ordered dithering shows 3 times more).
+    """
+
+    METHODS = ("threshold", "uniform random", "blue noise", "ordered 3x3", "Bayer 8x8")
+
+    def __init__(self, level: float = 0.3, size: int = 24) -> None:
+        self.size = as_int(size, "size", minimum=3)
+        self.mask = blue_noise_mask(32, np.random.default_rng(0))
+        controls = {
+            "level": widgets.FloatSlider(
+                value=level,
+                min=0.0,
+                max=1.0,
+                step=1 / 72,
+                description="level",
+                readout_format=".3f",
+            )
+        }
+        super().__init__(controls, width=1000, height=420)
+        strip = _bare(self.figure.add_axes((0.02, 0.66, 0.96, 0.26)))
+        strip.imshow(self.ordered_patterns(), **_GRAY)
+        strip.set_title(
+            "the ten patterns of M = [[6, 8, 4], [1, 0, 3], [5, 2, 7]]: k sub-pixels "
+            "lit for levels in ((k - 1)/9, k/9]",
+            fontsize=9,
+        )
+        for k in range(10):
+            strip.text(4 * k + 1, 3.6, f"k={k}", ha="center", va="top", fontsize=8)
+        self.highlight = Rectangle((-0.6, -0.6), 3.2, 3.2, fill=False, color="red", lw=2)
+        strip.add_patch(self.highlight)
+        names = (*self.METHODS, "Floyd-Steinberg")
+        self.panels, self.titles = {}, {}
+        for index, name in enumerate(names):
+            axes = _bare(self.figure.add_axes((0.02 + index * 0.163, 0.03, 0.145, 0.5)))
+            self.panels[name] = axes.imshow(np.zeros((self.size, self.size)), **_GRAY)
+            self.titles[name] = axes.set_title(name, fontsize=9)
+        self.update()
+
+    @staticmethod
+    def ordered_patterns() -> np.ndarray:
+        """The ten 3 x 3 patterns in a strip, one gray column between them."""
+        strip = np.full((3, 39), 0.5)
+        for k in range(10):
+            strip[:, 4 * k : 4 * k + 3] = dither.ordered([[k / 9]])
+        return strip
+
+    def outputs(self, level: float) -> dict[str, np.ndarray]:
+        """Each method on the flat patch at ``level``, as the panels show them."""
+        patch = np.full((self.size, self.size), level)
+        return {
+            "threshold": dither.threshold(patch),
+            "uniform random": dither.uniform_random(patch, np.random.default_rng(0)),
+            "blue noise": dither.blue_noise(patch, self.mask),
+            "ordered 3x3": dither.ordered(patch),
+            "Bayer 8x8": dither.bayer(patch, 8),
+            "Floyd-Steinberg": dither.error_diffusion(patch),
+        }
+
+    def update(self) -> None:
+        level = float(self.value("level"))
+        for name, result in self.outputs(level).items():
+            self.panels[name].set_data(result)
+            self.panels[name].set_extent((-0.5, self.size - 0.5, self.size - 0.5, -0.5))
+            self.titles[name].set_text(f"{name}\nlit {result.mean():.3f} (level {level:.3f})")
+        lit = int(dither.ordered([[level]]).sum())
+        self.highlight.set_x(4 * lit - 0.6)
+
+
+class VoidAndClusterApp(SliderApp):
+    """The blue-noise mask built dot by dot: the first k dots over their energy.
+
+    At k dots the picture shows the pixels ranked below k over the energy
+    of that pattern (the Gaussian-blurred dots on a torus), the next dot
+    (rank k) circled, and beside it the radial power spectrum of the k dots
+    against k white-noise dots.
+
+    Parameters
+    ----------
+    size : int
+        Side of the mask.
+    sigma : float
+        Width of the energy's Gaussian.
+    """
+
+    def __init__(self, size: int = 32, sigma: float = 1.5, dots: int = 60) -> None:
+        self.size = as_int(size, "size", minimum=4)
+        self.sigma = sigma
+        self.ranks = rank_pixels(self.size, np.random.default_rng(0), sigma)
+        self.initial = round(0.1 * self.size**2)
+        self.white_order = np.random.default_rng(1).permutation(self.size**2)
+        controls = {
+            "dots": widgets.IntSlider(value=dots, min=1, max=self.size**2 - 1, description="dots")
+        }
+        super().__init__(controls, width=1000, height=460)
+        left = self.figure.add_axes((0.02, 0.05, 0.42, 0.82))
+        _bare(left)
+        self.energy = left.imshow(
+            np.zeros((self.size, self.size)), cmap="viridis", interpolation="nearest"
+        )
+        self.dots = left.imshow(np.zeros((self.size, self.size, 4)), interpolation="nearest")
+        (self.next_dot,) = left.plot([], [], "o", ms=14, mfc="none", mec="red", mew=2)
+        self.heading = left.set_title("", fontsize=9)
+        right = self.figure.add_axes((0.55, 0.12, 0.42, 0.72))
+        frequency, _ = radial_power_spectrum(np.eye(self.size))
+        (self.blue_line,) = right.plot(frequency, np.ones_like(frequency), label="void-and-cluster")
+        (self.white_line,) = right.plot(frequency, np.ones_like(frequency), label="white noise")
+        right.set_xlim(0, 0.72)
+        right.set_ylim(0, 3)
+        right.set_xlabel("frequency (cycles per pixel)")
+        right.set_ylabel("power / (p (1 - p))")
+        right.legend(loc="upper left", fontsize=9)
+        self.ratio = right.set_title("", fontsize=9)
+        self.update()
+
+    def pattern(self, dots: int) -> np.ndarray:
+        """The first ``dots`` pixels of the ranking, as a boolean image."""
+        return self.ranks < dots
+
+    def update(self) -> None:
+        count = int(self.value("dots"))
+        pattern = self.pattern(count)
+        energy = cluster_energy(pattern, self.sigma)
+        self.energy.set_data(energy)
+        self.energy.set_clim(energy.min(), energy.max())
+        overlay = np.zeros((self.size, self.size, 4))
+        overlay[pattern] = (1.0, 1.0, 1.0, 1.0)
+        self.dots.set_data(overlay)
+        y, x = np.unravel_index(int(np.flatnonzero(self.ranks.ravel() == count)[0]), pattern.shape)
+        self.next_dot.set_data([x], [y])
+        if count < self.initial:
+            phase = "phase 1: the initial pattern thinned, tightest cluster first"
+        else:
+            phase = "phase 2: each new dot goes to the largest void (lowest energy)"
+        self.heading.set_text(f"{count} dots, next circled\n{phase}")
+        white = np.zeros(self.size**2, dtype=bool)
+        white[self.white_order[:count]] = True
+        share = count / self.size**2
+        scale = share * (1 - share)
+        _, blue_power = radial_power_spectrum(pattern)
+        _, white_power = radial_power_spectrum(white.reshape(self.size, self.size))
+        self.blue_line.set_ydata(blue_power / scale)
+        self.white_line.set_ydata(white_power / scale)
+        low = (0 < self.blue_line.get_xdata()) & (self.blue_line.get_xdata() < 0.125)
+        ratio = blue_power[low].mean() / white_power[low].mean()
+        self.ratio.set_text(f"power below 0.125 cycles/pixel: {ratio:.3f} x white noise")

@@ -1,0 +1,106 @@
+"""Lessons 06-07 apps, driven through their sliders: the picture changes and shows the library."""
+
+import numpy as np
+import pytest
+
+from course import dither, filters
+from course.blue_noise import cluster_energy
+from course.images import ramp
+from course.widgets import DitherComparisonApp, GrayLevelApp, RepeatedBlurApp, VoidAndClusterApp
+from course.widgets.dithering import side_by_side
+from course.widgets.filtering import border_ring_mean
+
+
+def test_comparison_app_crops_follow_the_sliders_and_show_each_method():
+    gray = ramp(96, 40)
+    app = DitherComparisonApp(gray, size=8)
+    before = app.refresh()
+    app.controls["x"].value = 20
+    app.controls["y"].value = 30
+    assert app.view.image.value != before
+    # Window of 8 around (20.5, 30.5), shifted to stay on the 40-row image.
+    rows, columns = slice(26, 34), slice(16, 24)
+    expected = dither.error_diffusion(gray)[rows, columns]
+    assert np.array_equal(app.crops["Floyd-Steinberg"].get_array(), expected)
+    ordered = dither.ordered(gray)[3 * 26 : 3 * 34, 3 * 16 : 3 * 24]
+    assert np.array_equal(app.crops["ordered 3x3"].get_array(), ordered)
+    assert app.window.get_x() == 16 and app.window.get_y() == 26
+    assert app.describe() == "DitherComparisonApp(x=20, y=30)"
+
+
+@pytest.mark.parametrize("lit", [0, 4, 9])
+def test_gray_level_app_shows_each_method_on_the_flat_patch(lit):
+    app = GrayLevelApp(level=0.5, size=12)
+    before = app.refresh()
+    app.controls["level"].value = lit / 9
+    assert app.renders == 2 and app.view.image.value != before
+    patch = np.full((12, 12), lit / 9)
+    assert np.array_equal(app.panels["Floyd-Steinberg"].get_array(), dither.error_diffusion(patch))
+    assert np.array_equal(app.panels["Bayer 8x8"].get_array(), dither.bayer(patch, 8))
+    cells = np.asarray(app.panels["ordered 3x3"].get_array()).reshape(12, 3, 12, 3)
+    assert np.all(cells.sum(axis=(1, 3)) == lit)
+    assert app.highlight.get_x() == pytest.approx(4 * lit - 0.6)
+    assert f"lit {lit / 9 if lit else 0:.3f}" in app.titles["ordered 3x3"].get_text()
+
+
+def test_gray_level_strip_holds_the_ten_patterns():
+    strip = GrayLevelApp.ordered_patterns()
+    for k in range(10):
+        assert strip[:, 4 * k : 4 * k + 3].sum() == k
+
+
+def test_void_and_cluster_app_shows_the_first_dots_and_the_next_at_the_largest_void():
+    app = VoidAndClusterApp(size=16, dots=10)
+    before = app.refresh()
+    app.controls["dots"].value = 100
+    assert app.view.image.value != before
+    pattern = app.ranks < 100
+    overlay = np.asarray(app.dots.get_array())
+    assert np.array_equal(overlay[..., 3] == 1, pattern)
+    assert np.allclose(app.energy.get_array(), cluster_energy(pattern))
+    x, y = app.next_dot.get_data()
+    energy = cluster_energy(pattern)
+    assert app.ranks[y[0], x[0]] == 100
+    assert energy[y[0], x[0]] <= energy[~pattern].min() + 1e-9
+    assert "phase 2" in app.heading.get_text()
+    app.controls["dots"].value = 5
+    assert "phase 1" in app.heading.get_text()
+    assert "x white noise" in app.ratio.get_text()
+
+
+def test_repeated_blur_app_applies_each_border_rule_n_times():
+    image = np.random.default_rng(0).random((20, 24, 3))
+    app = RepeatedBlurApp(image, repeats=0, corner=6)
+    before = app.refresh()
+    assert np.array_equal(app.wholes["zero"].get_array(), image)
+    app.controls["repeats"].value = 3
+    assert app.view.image.value != before
+    handout = filters.blur(filters.blur(filters.blur(image)))
+    assert np.allclose(app.wholes["handout"].get_array(), handout, atol=1e-15)
+    zero = image
+    for _ in range(3):
+        zero = filters.convolve(zero, filters.BOX, "zero")
+    assert np.allclose(app.wholes["zero"].get_array(), zero, atol=1e-15)
+    assert np.allclose(app.crops["zero"].get_array(), zero[:6, -6:], atol=1e-15)
+    # Back to fewer blurs: recomputed from the original.
+    app.controls["repeats"].value = 1
+    assert np.allclose(
+        app.wholes["replicate"].get_array(), filters.convolve(image, filters.BOX, "replicate")
+    )
+    assert app.describe() == "RepeatedBlurApp(repeats=1)"
+
+
+def test_repeated_blur_app_measures_the_dark_frame_of_zero_padding():
+    app = RepeatedBlurApp(np.full((16, 16), 0.5), repeats=4)
+    assert "at 1.00 x" in app.titles["handout"].get_text()
+    assert "at 1.00 x" in app.titles["reflect"].get_text()
+    ratio = border_ring_mean(app.wholes["zero"].get_array()) / 0.5
+    assert ratio < 0.8 and f"at {ratio:.2f} x" in app.titles["zero"].get_text()
+
+
+def test_side_by_side_crops_the_same_window_of_a_three_times_larger_image():
+    small = np.random.default_rng(0).random((10, 12))
+    large = np.repeat(np.repeat(small, 3, axis=0), 3, axis=1)
+    figure = side_by_side({"small": small, "large": large}, (4, 5), 4)
+    crops = [axes.images[0].get_array() for axes in figure.axes[1::2]]
+    assert np.array_equal(np.repeat(np.repeat(crops[0], 3, axis=0), 3, axis=1), crops[1])

@@ -21,18 +21,27 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_gray, as_positive_float
-from course.coverage import as_curve, curve_polyline, pixels_near
+from course._validate import as_gray, as_positive_float, as_shape
+from course.antialias import METHODS, SPLAT_METHODS, render
+from course.coverage import agg_render, as_curve, curve_polyline, first_of_runs, pixels_near
 
 __all__ = [
+    "AGG",
+    "ARC_LENGTH",
     "CentroidOffsets",
     "centroid_offsets",
     "intensity_along",
     "max_error",
     "position_error",
+    "quality_table",
     "rmse",
     "uniformity",
+    "variants",
 ]
+
+# Names of the variants beside the methods' own names.
+AGG = "Agg (matplotlib)"
+ARC_LENGTH = " + arc length"
 
 # How closely the metrics follow the true curve, in pixels.
 METRIC_TOLERANCE = 1e-3
@@ -78,7 +87,7 @@ def _curve_positions(image: np.ndarray, control: np.ndarray) -> tuple[np.ndarray
     """Arc length of the nearest curve point of every pixel near the curve."""
     line = curve_polyline(control, METRIC_TOLERANCE)
     near = pixels_near(line, image.shape, METRIC_REACH)
-    first = np.r_[True, near.flat[1:] != near.flat[:-1]]
+    first = first_of_runs(near.flat)
     pieces = np.hypot(*np.diff(near.polyline, axis=0).T)
     start = np.concatenate([[0.0], np.cumsum(pieces)])
     segment = near.segment[first]
@@ -127,6 +136,8 @@ def intensity_along(
     control = as_curve(points)
     piece_length = as_positive_float(piece_length, "piece_length")
     position, intensity, length = _curve_positions(gray, control)
+    if length <= 0:
+        raise ValueError("points: the curve has no length, so no intensity per unit length")
     count = max(2, round(length / piece_length))
     spacing = length / count
     scaled = np.clip(position / spacing, 0, count)
@@ -256,3 +267,54 @@ def position_error(image: Any, points: Any, width: float = 1.0) -> float:
     if len(offsets) == 0:
         raise ValueError("image: no column or row near the curve is drawn")
     return float(np.mean(np.abs(offsets)))
+
+
+def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarray]:
+    """Every way this lesson draws a curve, by name, as (H, W) images.
+
+    Each of :data:`course.antialias.METHODS` as the handouts accumulate
+    (saturating count, their step), each splat method again with the
+    arc-length fix (named ``"<method> + arc length"``), and Agg.
+
+    Examples
+    --------
+    >>> images = variants([[1.0, 2.0], [9.0, 2.0]], (4, 10))
+    >>> len(images), images[AGG].shape
+    (17, (4, 10))
+    """
+    control = as_curve(points)
+    shape = as_shape(shape)
+    images = {method: render(control, shape, method, width) for method in METHODS}
+    for method in SPLAT_METHODS:
+        images[method + ARC_LENGTH] = render(control, shape, method, width, weighting="arc_length")
+    images[AGG] = agg_render(control, shape, width)
+    return images
+
+
+def quality_table(
+    images: dict[str, np.ndarray], points: Any, reference: Any, width: float = 1.0
+) -> list[dict[str, Any]]:
+    """One row per image: RMSE, maximum error, uniformity CV, position error.
+
+    Examples
+    --------
+    >>> from course.coverage import reference as exact
+    >>> line = [[2.0, 4.5], [30.0, 4.5]]
+    >>> row = quality_table({"exact": exact(line, (9, 32))}, line, exact(line, (9, 32)))[0]
+    >>> row["name"], row["rmse"], row["position"]
+    ('exact', 0.0, 0.0)
+    """
+    control = as_curve(points)
+    truth = as_gray(reference, "reference")
+    rows = []
+    for name, image in images.items():
+        rows.append(
+            {
+                "name": name,
+                "rmse": rmse(image, truth),
+                "max": max_error(image, truth),
+                "cv": uniformity(image, control),
+                "position": position_error(image, control, width),
+            }
+        )
+    return rows

@@ -47,6 +47,7 @@ from course.coverage import (
     HALF_DIAGONAL,
     agg_render,
     as_curve,
+    first_of_runs,
     pixels_near,
     reference,
     slab_coverage,
@@ -502,7 +503,7 @@ def _nearest_pairs(polyline: np.ndarray, shape: Any, reach: float):
         near = pixels_near(polyline, as_shape(shape), reach)
         offset = np.zeros(2, dtype=np.int64)
     # Pairs are sorted by pixel, nearest segment first.
-    first = np.r_[True, near.flat[1:] != near.flat[:-1]]
+    first = first_of_runs(near.flat)
     pixels = np.stack([near.x[first], near.y[first]], axis=1) + offset
     return pixels, near, first
 

@@ -30,6 +30,9 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from matplotlib.backends.backend_agg import RendererAgg
+from matplotlib.path import Path
+from matplotlib.transforms import Affine2D
 
 from course._validate import as_int, as_points, as_positive_float, as_shape
 from course.bezier import flatten
@@ -37,8 +40,11 @@ from course.bezier import flatten
 __all__ = [
     "REFERENCE_TOLERANCE",
     "NearPixels",
+    "agg_draw",
+    "agg_path",
     "agg_render",
     "curve_polyline",
+    "first_of_runs",
     "pixels_near",
     "reference",
     "slab_coverage",
@@ -198,6 +204,17 @@ def pixels_near(polyline: np.ndarray, shape: tuple[int, int], reach: float) -> N
     )
 
 
+def first_of_runs(values: np.ndarray) -> np.ndarray:
+    """True at the first element of each run of equal neighbours.
+
+    Examples
+    --------
+    >>> first_of_runs(np.array([4, 4, 7, 9, 9])).tolist()
+    [True, False, True, True, False]
+    """
+    return np.concatenate([values[:1] == values[:1], values[1:] != values[:-1]])
+
+
 def segment_distance(
     px: np.ndarray, py: np.ndarray, start: np.ndarray, end: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -278,7 +295,7 @@ def _projection_cdf(s: np.ndarray, wide: np.ndarray, narrow: np.ndarray) -> np.n
     thin = narrow < 1e-6
     safe = np.where(thin, 1.0, 2.0 * wide * narrow)
     quadratic = (q(s + (a + b)) - q(s + (a - b)) - q(s - (a - b)) + q(s - (a + b))) / safe
-    uniform = (s + a) / wide
+    uniform = (s + a) / np.where(wide > 0, wide, 1.0)  # wide is 0 only for no normal
     return np.clip(np.where(thin, uniform, quadratic), 0.0, 1.0)
 
 
@@ -365,7 +382,7 @@ def supersample(
     grid = (np.arange(k) + 0.5) / k
     sub_x, sub_y = (g.ravel() for g in np.meshgrid(grid, grid))
     # Pairs are sorted by pixel: each pixel's pairs form one run.
-    run_starts = np.flatnonzero(np.r_[True, flat[1:] != flat[:-1]])
+    run_starts = np.flatnonzero(first_of_runs(flat))
     run_ends = np.r_[run_starts[1:], len(flat)]
     pairs_per_chunk = max(1, _CHUNK_SAMPLES // (k * k))
     coverage = np.empty(len(run_starts))
@@ -419,14 +436,18 @@ def agg_render(points: Any, shape: Any, width: float = 1.0) -> np.ndarray:
     control = as_curve(points)
     height, canvas_width = as_shape(shape)
     width = as_positive_float(width, "width")
-    renderer = _agg_draw(control, height, canvas_width, width)
+    renderer = agg_draw(agg_path(control), (height, canvas_width), width)
     return np.asarray(renderer.buffer_rgba())[..., 3] / 255.0
 
 
-def agg_path(control: np.ndarray) -> Any:
-    """A matplotlib Path for a Bézier curve of degree 1, 2 or 3."""
-    from matplotlib.path import Path
+def agg_path(control: np.ndarray) -> Path:
+    """A matplotlib Path for a Bézier curve of degree 1, 2 or 3.
 
+    Examples
+    --------
+    >>> agg_path(np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 2.0], [3.0, 0.0]])).codes
+    array([1, 4, 4, 4], dtype=uint8)
+    """
     codes = {2: Path.LINETO, 3: Path.CURVE3, 4: Path.CURVE4}
     if len(control) not in codes:
         raise ValueError(
@@ -436,10 +457,14 @@ def agg_path(control: np.ndarray) -> Any:
     return Path(control, [Path.MOVETO] + [codes[len(control)]] * (len(control) - 1))
 
 
-def _agg_draw(control: np.ndarray, height: int, canvas_width: int, width: float) -> Any:
-    from matplotlib.backends.backend_agg import RendererAgg
-    from matplotlib.transforms import Affine2D
+def agg_draw(path: Path, shape: tuple[int, int], width: float) -> RendererAgg:
+    """Stroke a Path given in image coordinates with ``RendererAgg.draw_path``.
 
+    A new 72 dpi renderer of the canvas's size, white round-capped strokes
+    of ``width`` pixels, no snapping, y flipped to Agg's upward axis. The
+    caller reads ``renderer.buffer_rgba()``; its alpha channel is coverage.
+    """
+    height, canvas_width = shape
     renderer = RendererAgg(canvas_width, height, 72)
     context = renderer.new_gc()
     context.set_linewidth(width)
@@ -449,6 +474,6 @@ def _agg_draw(control: np.ndarray, height: int, canvas_width: int, width: float)
     context.set_snap(False)
     context.set_foreground((1.0, 1.0, 1.0, 1.0))
     flip = Affine2D().scale(1.0, -1.0).translate(0.0, height)
-    renderer.draw_path(context, agg_path(control), flip)
+    renderer.draw_path(context, path, flip)
     context.restore()
     return renderer

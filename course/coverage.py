@@ -27,6 +27,7 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
@@ -174,20 +175,38 @@ def pixels_near(polyline: np.ndarray, shape: tuple[int, int], reach: float) -> N
     # length of its middle m: c lies in [m - 0.5 - r, m - 0.5 + r], an interval
     # holding floor(2 r) + 1 integers. One such window of columns and rows.
     radius = reach + half_length
-    offsets = np.arange(int(np.floor(2 * radius)) + 1)
-    low = np.ceil(middle - 0.5 - radius).astype(np.int64)
-    columns = low[:, 0, None, None] + offsets[None, None, :]
-    rows = low[:, 1, None, None] + offsets[None, :, None]
-    # Distances on the whole (segments, rows, columns) grid by broadcasting,
-    # then one mask: cheaper than gathering segment ends per candidate.
-    distance, along, across = segment_distance(
-        columns + 0.5, rows + 0.5, start[:, None, None, :], end[:, None, None, :]
+    size = int(np.floor(2 * radius)) + 1
+    offsets = np.arange(size, dtype=float) + 0.5
+    low = np.ceil(middle - 0.5 - radius)
+    # Centres relative to each segment's start, on the (segments, rows,
+    # columns) grid by broadcasting; the projections onto the segment's unit
+    # direction give distance and side without a division per candidate.
+    direction = end - start
+    length = np.hypot(*direction.T)
+    # A zero-length segment is a point: any unit vector measures its distance.
+    unit = np.where(
+        (length > 0)[:, None], direction / np.where(length > 0, length, 1.0)[:, None], [1.0, 0.0]
     )
-    keep = (distance <= reach) & (columns >= 0) & (columns < width) & (rows >= 0) & (rows < height)
-    x = np.broadcast_to(columns, keep.shape)[keep]
-    y = np.broadcast_to(rows, keep.shape)[keep]
-    segment = np.broadcast_to(np.arange(len(start))[:, None, None], keep.shape)[keep]
-    distance, along, across = distance[keep], along[keep], across[keep]
+    dx = (low[:, 0] - start[:, 0])[:, None, None] + offsets[None, None, :]
+    dy = (low[:, 1] - start[:, 1])[:, None, None] + offsets[None, :, None]
+    ux, uy = unit[:, 0, None, None], unit[:, 1, None, None]
+    projection = dx * ux + dy * uy
+    across = dx * uy - dy * ux
+    beyond = projection - np.clip(projection, 0.0, length[:, None, None])
+    distance2 = beyond * beyond + across * across
+    index = np.flatnonzero(distance2 <= reach * reach)
+    segment, cell = np.divmod(index, size * size)
+    row, column = np.divmod(cell, size)
+    x = low[segment, 0].astype(np.int64) + column
+    y = low[segment, 1].astype(np.int64) + row
+    on_canvas = (x >= 0) & (x < width) & (y >= 0) & (y < height)
+    index, segment, x, y = index[on_canvas], segment[on_canvas], x[on_canvas], y[on_canvas]
+    distance = np.sqrt(distance2.take(index))
+    has_length = length[segment] > 0
+    along = np.where(has_length, projection.take(index) / length.clip(1e-300)[segment], 0.0)
+    along = np.clip(along, 0.0, 1.0)
+    # A point has no line: its "across" is the distance itself.
+    across = np.where(has_length, across.take(index), distance)
     flat = y * width + x
     # Sort by pixel, then by distance: one float key, far cheaper than lexsort.
     # distance / (2 reach + 1) < 1/2 never reaches the next pixel's key.
@@ -359,6 +378,15 @@ def reference(points: Any, shape: Any, width: float = 1.0, k: int = 16) -> np.nd
     return image.reshape(height, canvas_width)
 
 
+@lru_cache(maxsize=8)
+def _sample_grid(k: int) -> tuple[np.ndarray, np.ndarray]:
+    """Offsets (x, y) of the k x k samples inside a pixel, row by row."""
+    grid = (np.arange(k) + 0.5) / k
+    sub_x, sub_y = (g.ravel() for g in np.meshgrid(grid, grid))
+    sub_x.flags.writeable = sub_y.flags.writeable = False
+    return sub_x, sub_y
+
+
 def supersample(
     near: NearPixels, pairs: np.ndarray, half: float, k: int
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -379,8 +407,7 @@ def supersample(
     if len(index) == 0:
         return index, np.zeros(0)
     flat = near.flat[index]
-    grid = (np.arange(k) + 0.5) / k
-    sub_x, sub_y = (g.ravel() for g in np.meshgrid(grid, grid))
+    sub_x, sub_y = _sample_grid(k)
     # Pairs are sorted by pixel: each pixel's pairs form one run.
     run_starts = np.flatnonzero(first_of_runs(flat))
     run_ends = np.r_[run_starts[1:], len(flat)]

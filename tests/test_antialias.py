@@ -15,6 +15,7 @@ from course.antialias import (
     arc_length_weights,
     bilinear_centres,
     bilinear_corners,
+    curve_samples,
     nearest_round,
     nearest_truncate,
     normalised_centres,
@@ -171,7 +172,8 @@ EDGE_CURVE = np.array([[-6.0, 12.0], [10.0, 40.0], [20.0, -18.0], [40.0, 3.0]])
 
 def _accumulate_by_loop(method, step):
     """The readable definition: samples, the one-sample splat, a bounds check, a sum."""
-    samples = de_casteljau(EDGE_CURVE, uniform_parameters(step))
+    samples = curve_samples(EDGE_CURVE, step)
+    np.testing.assert_allclose(samples, de_casteljau(EDGE_CURVE, uniform_parameters(step)))
     image = np.zeros(SHAPE)
     for x, y in samples:
         for (column, row), weight in ONE_SAMPLE[method](x, y):

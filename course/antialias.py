@@ -45,12 +45,13 @@ from course.bezier import bezier_bernstein, de_casteljau, uniform_parameters
 from course.canvas import inside, paint
 from course.coverage import (
     HALF_DIAGONAL,
+    NearPixels,
     agg_render,
     as_curve,
+    band_coverage,
     first_of_runs,
     pixels_near,
     reference,
-    slab_coverage,
     supersample,
 )
 
@@ -489,23 +490,24 @@ def stroke_polyline(points: Any, tolerance: float = STROKE_TOLERANCE) -> np.ndar
     """The curve flattened for the stroke methods: Wang's count of uniform steps."""
     control = as_curve(points)
     count = wang_segments(control, tolerance)
-    return de_casteljau(control, np.linspace(0.0, 1.0, count + 1))
+    return _evaluate(control, np.linspace(0.0, 1.0, count + 1))
 
 
-def _nearest_pairs(polyline: np.ndarray, shape: Any, reach: float):
+def _nearest_pairs(
+    polyline: np.ndarray, shape: Any, reach: float
+) -> tuple[np.ndarray, NearPixels, np.ndarray]:
     """pixels_near, reduced to the nearest segment of each pixel."""
     if shape is None:
-        # No canvas: a canvas just large enough, shifted so that it starts at 0.
-        origin = np.floor(polyline.min(axis=0) - reach - 2)
-        extent = np.ceil(polyline.max(axis=0) + reach + 2) - origin
-        near = pixels_near(polyline - origin, (int(extent[1]), int(extent[0])), reach)
-        offset = origin.astype(np.int64)
+        # No canvas: one just large enough, its origin wherever the curve is.
+        low = np.floor(polyline.min(axis=0) - reach - 2)
+        extent = np.ceil(polyline.max(axis=0) + reach + 2) - low
+        origin = (int(low[0]), int(low[1]))
+        near = pixels_near(polyline, (int(extent[1]), int(extent[0])), reach, origin)
     else:
         near = pixels_near(polyline, as_shape(shape), reach)
-        offset = np.zeros(2, dtype=np.int64)
     # Pairs are sorted by pixel, nearest segment first.
     first = first_of_runs(near.flat)
-    pixels = np.stack([near.x[first], near.y[first]], axis=1) + offset
+    pixels = np.stack([near.x[first], near.y[first]], axis=1)
     return pixels, near, first
 
 
@@ -587,13 +589,12 @@ def stroke_area(
     pixels, near, first = _nearest_pairs(line, shape, half + HALF_DIAGONAL)
     line = near.polyline
     segment = near.segment[first]
-    direction = line[segment + 1] - line[segment]
-    length = np.hypot(*direction.T)
-    normal = (
-        np.stack([-direction[:, 1], direction[:, 0]], axis=1)
-        / np.where(length > 0, length, 1.0)[:, None]
-    )
-    weights = slab_coverage(near.across[first], normal, width)
+    run_x, run_y = np.abs(line[segment + 1] - line[segment]).T
+    length = np.hypot(run_x, run_y)
+    safe = np.where(length > 0, length, 1.0)
+    # The normal's components are the direction's, swapped: same larger, smaller.
+    wide, narrow = np.maximum(run_x, run_y) / safe, np.minimum(run_x, run_y) / safe
+    weights = band_coverage(near.across[first], wide, narrow, width)
     weights[length == 0] = 0.0  # a zero-length segment has no band; the caps cover it
     # Near the ends the stroke is a half disc, not a band: sample those pixels.
     x, y = near.x[first] + 0.5, near.y[first] + 0.5
@@ -692,7 +693,8 @@ def curve_samples(points: Any, step: float) -> np.ndarray:
 
     Cubics and lower are evaluated in the Bernstein form (one small matrix
     product, twice as fast as de Casteljau's levels and as accurate at these
-    degrees), higher degrees by de Casteljau.
+    degrees), higher degrees by de Casteljau. The stroke methods' polyline
+    (:func:`stroke_polyline`) is evaluated the same way.
 
     Examples
     --------
@@ -701,8 +703,11 @@ def curve_samples(points: Any, step: float) -> np.ndarray:
            [2., 2.],
            [4., 0.]])
     """
-    control = as_curve(points)
-    t = uniform_parameters(step)
+    return _evaluate(as_curve(points), uniform_parameters(step))
+
+
+def _evaluate(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Points of the curve: the Bernstein form up to cubics, de Casteljau beyond."""
     return bezier_bernstein(control, t) if len(control) <= 4 else de_casteljau(control, t)
 
 

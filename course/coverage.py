@@ -44,6 +44,7 @@ __all__ = [
     "agg_draw",
     "agg_path",
     "agg_render",
+    "band_coverage",
     "curve_polyline",
     "first_of_runs",
     "pixels_near",
@@ -114,7 +115,8 @@ class NearPixels:
     x, y : int arrays
         The pixel.
     flat : int array
-        ``y * W + x``, the pixel's index in the flattened image.
+        ``y * W + x`` (from the canvas's origin), the pixel's index in the
+        flattened image.
     segment : int array
         Index i of the segment ``polyline[i] -> polyline[i + 1]``.
     distance : float array
@@ -139,7 +141,12 @@ class NearPixels:
     polyline: np.ndarray
 
 
-def pixels_near(polyline: np.ndarray, shape: tuple[int, int], reach: float) -> NearPixels:
+def pixels_near(
+    polyline: np.ndarray,
+    shape: tuple[int, int],
+    reach: float,
+    origin: tuple[int, int] = (0, 0),
+) -> NearPixels:
     """Every on-canvas pixel whose centre lies within ``reach`` of a segment.
 
     The work is proportional to the number of segments times the area of
@@ -152,6 +159,9 @@ def pixels_near(polyline: np.ndarray, shape: tuple[int, int], reach: float) -> N
     shape : (H, W)
     reach : float
         Largest centre-to-segment distance kept.
+    origin : (x, y) ints
+        The canvas's top-left pixel; ``flat`` counts from it. (0, 0) for an
+        image; elsewhere to cover a curve that runs off every image.
 
     Examples
     --------
@@ -199,7 +209,8 @@ def pixels_near(polyline: np.ndarray, shape: tuple[int, int], reach: float) -> N
     row, column = np.divmod(cell, size)
     x = low[segment, 0].astype(np.int64) + column
     y = low[segment, 1].astype(np.int64) + row
-    on_canvas = (x >= 0) & (x < width) & (y >= 0) & (y < height)
+    left, top = origin
+    on_canvas = (x >= left) & (x < left + width) & (y >= top) & (y < top + height)
     index, segment, x, y = index[on_canvas], segment[on_canvas], x[on_canvas], y[on_canvas]
     distance = np.sqrt(distance2.take(index))
     has_length = length[segment] > 0
@@ -207,7 +218,7 @@ def pixels_near(polyline: np.ndarray, shape: tuple[int, int], reach: float) -> N
     along = np.clip(along, 0.0, 1.0)
     # A point has no line: its "across" is the distance itself.
     across = np.where(has_length, across.take(index), distance)
-    flat = y * width + x
+    flat = (y - top) * width + (x - left)
     # Sort by pixel, then by distance: one float key, far cheaper than lexsort.
     # distance / (2 reach + 1) < 1/2 never reaches the next pixel's key.
     order = np.argsort(flat + distance / (2 * reach + 1))
@@ -291,10 +302,16 @@ def slab_coverage(across: Any, normal: Any, width: float) -> np.ndarray:
     >>> slab_coverage([0.0], [[np.sqrt(0.5), np.sqrt(0.5)]], 1.0).round(4)
     array([0.9142])
     """
-    across = np.asarray(across, dtype=float)
     normal = np.abs(np.asarray(normal, dtype=float))
     wide = np.maximum(normal[..., 0], normal[..., 1])
     narrow = np.minimum(normal[..., 0], normal[..., 1])
+    return band_coverage(np.asarray(across, dtype=float), wide, narrow, width)
+
+
+def band_coverage(
+    across: np.ndarray, wide: np.ndarray, narrow: np.ndarray, width: float
+) -> np.ndarray:
+    """:func:`slab_coverage` given the normal's larger and smaller |component|."""
     half = 0.5 * width
     # Both band edges in one call: rows 0 and 1 of a (2, ...) array.
     edges = _projection_cdf(np.stack([half - across, -half - across]), wide, narrow)

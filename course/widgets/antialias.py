@@ -88,8 +88,12 @@ def zoom_figure(
     size: int = 16,
     columns: int = 4,
     panel_inches: float = 2.4,
+    figure: Figure | None = None,
 ) -> Figure:
     """A still grid of zoomed crops, one per named image, all around ``center``.
+
+    Drawn into ``figure`` if given (e.g. ``pyplot.figure()`` in a notebook,
+    which then shows it), resized to fit; otherwise into a new Figure.
 
     Examples
     --------
@@ -99,7 +103,11 @@ def zoom_figure(
     """
     curve = CurveWalk(points).polyline
     rows = -(-len(images) // columns)
-    figure = Figure(figsize=(panel_inches * columns, (panel_inches + 0.3) * rows), dpi=100)
+    inches = (panel_inches * columns, (panel_inches + 0.3) * rows)
+    if figure is None:
+        figure = Figure(figsize=inches, dpi=100)
+    else:
+        figure.set_size_inches(*inches)
     for index, (name, image) in enumerate(images.items()):
         panel = ZoomPanel(figure.add_subplot(rows, columns, index + 1), curve)
         panel.show(image, center, size, name)

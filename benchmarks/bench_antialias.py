@@ -16,7 +16,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from course.antialias import SPLAT_METHODS, STROKE_METHODS, render
+from course.antialias import SPLAT_METHODS, STROKE_METHODS, arc_length_step, render
 from course.coverage import agg_draw, agg_path
 
 POINTS = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]])
@@ -54,6 +54,7 @@ def main() -> None:
     cases: list[tuple[str, Callable[[], object], float | None]] = []
     for method in SPLAT_METHODS:
         cases.append((method, lambda m=method: render(POINTS, SHAPE, m), GOALS["splat"]))
+    default_samples = round(1 / arc_length_step(POINTS)) + 1
     for method in ("nearest_truncate", "bilinear_centres"):
         cases.append(
             (
@@ -64,7 +65,7 @@ def main() -> None:
         )
         cases.append(
             (
-                f"{method} + arc length, default step (8x the samples)",
+                f"{method} + arc length, default step ({default_samples} samples, not 1001)",
                 lambda m=method: render(POINTS, SHAPE, m, weighting="arc_length"),
                 None,
             )

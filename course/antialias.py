@@ -67,6 +67,7 @@ __all__ = [
     "STROKE_METHODS",
     "WEIGHTINGS",
     "agg_render",
+    "arc_length_step",
     "arc_length_weights",
     "bilinear_centres",
     "bilinear_corners",
@@ -89,7 +90,7 @@ __all__ = [
 # The handouts' loop: for (t = 0; t <= 1; t += 0.001).
 DEFAULT_STEP = 0.001
 # Largest distance between samples the arc-length fix picks by itself, in pixels.
-ARC_LENGTH_SPACING = 0.25
+ARC_LENGTH_SPACING = 0.5
 # Largest distance from the flattened curve to the true one in the stroke methods.
 STROKE_TOLERANCE = 0.01
 WEIGHTINGS = ("count", "arc_length")
@@ -283,7 +284,7 @@ def render(
     step : float, optional
         t step of the splat methods. By default the handouts' 0.001 with
         ``weighting="count"``; with ``"arc_length"`` a step that puts samples
-        at most 0.25 px apart (the fix makes brightness independent of the
+        at most 0.5 px apart (the fix makes brightness independent of the
         step, so it can afford a fine one). Ignored by the stroke methods.
     weighting : {"count", "arc_length"}
         ``"count"``: each sample adds its full splat (the handouts).
@@ -316,7 +317,7 @@ def render(
         # Each pixel comes once: "max" writes it without a saturating sum.
         return paint(image, pixels, 1.0, weights, mode="max")
     if step is None:
-        step = DEFAULT_STEP if weighting == "count" else _arc_length_step(control)
+        step = DEFAULT_STEP if weighting == "count" else arc_length_step(control)
     samples = curve_samples(control, step)
     pixels, weights = splat(samples, method)
     if weighting == "arc_length":
@@ -349,10 +350,22 @@ def _evaluate(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     return bezier_bernstein(control, t) if len(control) <= 4 else de_casteljau(control, t)
 
 
-def _arc_length_step(control: np.ndarray) -> float:
-    """A t step that keeps samples within ARC_LENGTH_SPACING px of each other."""
+def arc_length_step(points: Any) -> float:
+    """The t step the arc-length fix uses by default: samples at most 0.5 px apart.
+
+    ``|B'(t)| <= n max |P[i+1] - P[i]|`` (the hodograph's control points bound
+    the speed), so a step of 0.5 px over that bound never moves further. Never
+    coarser than the handouts' 0.001.
+
+    Examples
+    --------
+    >>> arc_length_step([[0, 0], [100, 0]])
+    0.001
+    >>> round(arc_length_step([[10, 10], [690, 10], [10, 690], [690, 690]]), 7)
+    0.0001733
+    """
+    control = as_curve(points)
     if len(control) < 2:
         return DEFAULT_STEP
-    # |B'(t)| <= n max |P[i+1] - P[i]|: the hodograph's control points bound it.
     speed = (len(control) - 1) * np.hypot(*np.diff(control, axis=0).T).max()
     return float(min(DEFAULT_STEP, ARC_LENGTH_SPACING / speed)) if speed > 0 else DEFAULT_STEP

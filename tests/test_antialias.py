@@ -12,6 +12,7 @@ from course.antialias import (
     ONE_SAMPLE,
     SPLAT_METHODS,
     STROKE_METHODS,
+    arc_length_step,
     arc_length_weights,
     bilinear_centres,
     bilinear_corners,
@@ -289,11 +290,15 @@ def test_arc_length_weighting_puts_one_unit_of_ink_per_unit_of_length():
     assert counts[1] > 1.5 * counts[0]
 
 
-def test_arc_length_default_step_leaves_samples_a_quarter_pixel_apart():
-    control = np.array([[0.0, 0.0], [100.0, 0.0]])
-    image = render(control, (3, 101), "nearest_truncate", weighting="arc_length")
-    # Pixel 50 gets four samples of 0.25 px each.
-    assert image[0, 50] == pytest.approx(1.0)
+def test_arc_length_default_step_leaves_samples_half_a_pixel_apart():
+    control = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]])
+    samples = curve_samples(control, arc_length_step(control))
+    assert np.hypot(*np.diff(samples, axis=0).T).max() <= 0.5
+    # Close enough that a finer step changes little.
+    shape = (700, 700)
+    default = render(control, shape, "bilinear_centres", weighting="arc_length")
+    finer = render(control, shape, "bilinear_centres", step=2e-5, weighting="arc_length")
+    assert np.sqrt(np.mean((default - finer) ** 2)) <= 1e-3
 
 
 # --- bad input ---------------------------------------------------------------------

@@ -145,9 +145,10 @@ def paint(
         strength = strength[:, None]
     if mode == "add":
         # Contributions are >= 0, so clipping the sum once equals saturating
-        # after every addition.
+        # after every addition. Only the painted pixels can have passed 1:
+        # clip those, not the whole image (O(pixels), and nothing else touched).
         np.add.at(image, (y, x), strength * value)
-        np.clip(image, 0.0, 1.0, out=image)
+        image[y, x] = np.minimum(image[y, x], 1.0)
     elif mode == "max":
         np.maximum.at(image, (y, x), strength * value)
     else:

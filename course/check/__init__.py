@@ -4,6 +4,7 @@ A result is truthy when every case passes; otherwise its message names the
 first failing case, its inputs, the expected value and the value given.
 """
 
+from course.check.antialias import bilinear_splat
 from course.check.base import CheckResult
 from course.check.bezier import naive_bezier, recursive_bezier
 from course.check.dither import dithering_error_diffuse
@@ -13,6 +14,7 @@ from course.check.resample import image_supersampling
 
 __all__ = [
     "CheckResult",
+    "bilinear_splat",
     "blur",
     "dithering_error_diffuse",
     "draw_line",

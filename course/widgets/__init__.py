@@ -4,6 +4,7 @@ Every app is a :class:`~course.widgets.base.SliderApp`: a figure rendered to
 an image widget beside its controls, redrawn by changing artists.
 """
 
+from course.widgets.antialias import StepApp, ZoomApp
 from course.widgets.base import FigureView, SliderApp
 from course.widgets.bernstein import BernsteinBasisApp
 from course.widgets.de_casteljau import DeCasteljauApp
@@ -21,7 +22,9 @@ __all__ = [
     "LineApp",
     "RepeatedBlurApp",
     "SliderApp",
+    "StepApp",
     "SupersampleApp",
     "TriangleApp",
     "VoidAndClusterApp",
+    "ZoomApp",
 ]

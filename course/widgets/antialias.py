@@ -1,0 +1,241 @@
+"""Lesson 03's apps: zoomed pixel views of anti-aliased curves.
+
+:class:`ZoomApp` shows the same window of several renderings side by side,
+each pixel a flat square (nearest interpolation), with the pixel grid and
+the true curve drawn on top; a slider moves the window along the curve and
+drop-downs pick the variants. :class:`StepApp` changes the t step of a
+splat method and shows the gaps at coarse steps, the saturation at fine
+ones, and the brightness per unit length along the whole curve.
+:func:`zoom_figure` is the still version of the zoomed comparison.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import ipywidgets as widgets
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.collections import LineCollection
+from matplotlib.figure import Figure
+
+from course.aa_metrics import intensity_along, uniformity
+from course.antialias import SPLAT_METHODS, WEIGHTINGS, render
+from course.canvas import crop
+from course.coverage import as_curve, curve_polyline
+from course.widgets.base import SliderApp
+
+__all__ = ["StepApp", "ZoomApp", "ZoomPanel", "zoom_figure"]
+
+# Seed 000's test curve on its 700 x 700 window.
+SEED_000_POINTS = ((10.0, 10.0), (690.0, 10.0), (10.0, 690.0), (690.0, 690.0))
+
+
+class CurveWalk:
+    """Points of a curve by fraction of its arc length, for moving a window along it."""
+
+    def __init__(self, points: Any) -> None:
+        self.polyline = curve_polyline(as_curve(points), 1e-3)
+        pieces = np.hypot(*np.diff(self.polyline, axis=0).T)
+        self.lengths = np.concatenate([[0.0], np.cumsum(pieces)])
+
+    def at(self, fraction: float) -> np.ndarray:
+        """The (x, y) point ``fraction`` of the way along the curve."""
+        s = float(np.clip(fraction, 0.0, 1.0)) * self.lengths[-1]
+        return np.array(
+            [np.interp(s, self.lengths, self.polyline[:, i]) for i in range(2)], dtype=float
+        )
+
+
+class ZoomPanel:
+    """One axes showing a zoomed crop: flat pixels, the pixel grid, the true curve.
+
+    Built once; :meth:`show` changes the picture, the grid and the view.
+    """
+
+    def __init__(self, axes: Axes, curve: np.ndarray) -> None:
+        self.axes = axes
+        self.picture = axes.imshow(
+            np.zeros((2, 2)), cmap="gray", vmin=0.0, vmax=1.0, interpolation="nearest"
+        )
+        self.grid = LineCollection([], colors="#3a6ea5", linewidths=0.5, alpha=0.6)
+        axes.add_collection(self.grid)
+        (self.curve,) = axes.plot(curve[:, 0], curve[:, 1], color="#e8502f", linewidth=1.0)
+        self.title = axes.set_title("", fontsize=9)
+        axes.set_xticks([])
+        axes.set_yticks([])
+
+    def show(self, image: np.ndarray, center: Any, size: int, title: str) -> np.ndarray:
+        """Show the ``size`` x ``size`` crop of ``image`` around ``center``; return it."""
+        window, extent = crop(image, center, size)
+        self.picture.set_data(window)
+        self.picture.set_extent(extent)
+        x0, x1, y1, y0 = extent
+        columns = [[(x, y0), (x, y1)] for x in range(x0, x1 + 1)]
+        rows = [[(x0, y), (x1, y)] for y in range(y0, y1 + 1)]
+        self.grid.set_segments(columns + rows)
+        self.axes.set_xlim(x0, x1)
+        self.axes.set_ylim(y1, y0)  # y down, as in the image
+        self.title.set_text(title)
+        return window
+
+
+def zoom_figure(
+    images: Mapping[str, np.ndarray],
+    points: Any,
+    center: Any,
+    size: int = 16,
+    columns: int = 4,
+    panel_inches: float = 2.4,
+    figure: Figure | None = None,
+) -> Figure:
+    """A still grid of zoomed crops, one per named image, all around ``center``.
+
+    Drawn into ``figure`` if given (e.g. ``pyplot.figure()`` in a notebook,
+    which then shows it), resized to fit; otherwise into a new Figure.
+
+    Examples
+    --------
+    >>> figure = zoom_figure({"a": np.zeros((20, 20))}, [[0, 0], [20, 20]], (10, 10), 8)
+    >>> len(figure.axes)
+    1
+    """
+    curve = CurveWalk(points).polyline
+    rows = -(-len(images) // columns)
+    inches = (panel_inches * columns, (panel_inches + 0.3) * rows)
+    if figure is None:
+        figure = Figure(figsize=inches, dpi=100)
+    else:
+        figure.set_size_inches(*inches)
+    for index, (name, image) in enumerate(images.items()):
+        panel = ZoomPanel(figure.add_subplot(rows, columns, index + 1), curve)
+        panel.show(image, center, size, name)
+    figure.tight_layout()
+    return figure
+
+
+class ZoomApp(SliderApp):
+    """Three chosen renderings and the exact reference, zoomed at one place on the curve.
+
+    Parameters
+    ----------
+    images : mapping of name to (H, W) image
+        The renderings to pick from (e.g. ``course.aa_metrics.variants``).
+    points : array_like (N, 2)
+        The curve's control points, drawn on top.
+    reference : (H, W) image
+        Shown in the fourth panel, and used for each panel's RMSE in the window.
+    picks : three names from ``images``
+    """
+
+    def __init__(
+        self,
+        images: Mapping[str, np.ndarray],
+        points: Any,
+        reference: np.ndarray,
+        picks: tuple[str, str, str] | None = None,
+    ) -> None:
+        names = list(images)
+        picks = picks or tuple(names[:3])
+        unknown = [name for name in picks if name not in images]
+        if unknown or len(picks) != 3:
+            raise ValueError(f"picks must be three names from images; got {picks!r}")
+        self.images = dict(images)
+        self.reference = reference
+        self.walk = CurveWalk(points)
+        controls = {
+            "position": widgets.FloatSlider(
+                value=0.1, min=0.0, max=1.0, step=0.005, description="along curve"
+            ),
+            "size": widgets.IntSlider(value=16, min=6, max=48, description="window px"),
+        }
+        for slot, name in zip(("left", "middle", "right"), picks, strict=True):
+            controls[slot] = widgets.Dropdown(options=names, value=name, description=slot)
+        super().__init__(controls, width=1000, height=300)
+        self.panels = [
+            ZoomPanel(self.figure.add_subplot(1, 4, i + 1), self.walk.polyline) for i in range(4)
+        ]
+        self.figure.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.9, wspace=0.05)
+        self.windows: list[np.ndarray] = []
+
+    def center(self) -> np.ndarray:
+        """The window's centre: the curve point at the position slider."""
+        return self.walk.at(self.value("position"))
+
+    def update(self) -> None:
+        center, size = self.center(), self.value("size")
+        truth, _ = crop(self.reference, center, size)
+        self.windows = []
+        for panel, slot in zip(self.panels, ("left", "middle", "right"), strict=False):
+            name = self.value(slot)
+            window, _ = crop(self.images[name], center, size)
+            error = np.sqrt(np.mean((window - truth) ** 2))
+            self.windows.append(
+                panel.show(self.images[name], center, size, f"{name}\nRMSE here {error:.3f}")
+            )
+        self.windows.append(self.panels[3].show(self.reference, center, size, "exact reference\n"))
+
+
+class StepApp(SliderApp):
+    """One splat method at a chosen t step: a zoomed window and brightness along the curve.
+
+    Coarse steps leave gaps between the splats; fine steps pile samples
+    into the same pixels, which the handouts' saturating sum clips at 1, so
+    the brightness follows how fast the curve moves. With
+    ``weighting="arc_length"`` the brightness per unit length stays at 1
+    for every step fine enough to leave no gaps.
+    """
+
+    def __init__(self, points: Any = SEED_000_POINTS, shape: tuple[int, int] = (700, 700)) -> None:
+        self.points = as_curve(points)
+        self.shape = shape
+        self.walk = CurveWalk(self.points)
+        controls = {
+            "step": widgets.FloatLogSlider(
+                value=0.001,
+                base=10,
+                min=-4,
+                max=-1.3,
+                step=0.05,
+                description="t step",
+                readout_format=".2g",
+            ),
+            "method": widgets.Dropdown(
+                options=SPLAT_METHODS, value="bilinear_centres", description="method"
+            ),
+            "weighting": widgets.ToggleButtons(options=WEIGHTINGS, value="count"),
+            "position": widgets.FloatSlider(
+                value=0.02, min=0.0, max=1.0, step=0.005, description="along curve"
+            ),
+        }
+        super().__init__(controls, width=900, height=380)
+        grid = self.figure.add_gridspec(1, 2, width_ratios=(1, 1.6))
+        self.panel = ZoomPanel(self.figure.add_subplot(grid[0]), self.walk.polyline)
+        self.profile_axes = self.figure.add_subplot(grid[1])
+        (self.profile,) = self.profile_axes.plot([], [], color="#2a6f97", linewidth=1.2)
+        self.profile_axes.axhline(1.0, color="#e8502f", linewidth=0.8, linestyle="--")
+        self.marker = self.profile_axes.axvline(0.0, color="gray", linewidth=0.8)
+        self.profile_axes.set_xlabel("arc length (px)")
+        self.profile_axes.set_ylabel("intensity per unit length")
+        self.profile_axes.set_xlim(0, self.walk.lengths[-1])
+        self.profile_axes.set_ylim(0, 1.6)
+        self.profile_title = self.profile_axes.set_title("", fontsize=9)
+        self.figure.subplots_adjust(left=0.02, right=0.98, bottom=0.14, top=0.9, wspace=0.2)
+        self.image = np.zeros(shape)
+        self.density = np.zeros(0)
+
+    def update(self) -> None:
+        method, weighting = self.value("method"), self.value("weighting")
+        self.image = render(
+            self.points, self.shape, method, step=self.value("step"), weighting=weighting
+        )
+        positions, self.density = intensity_along(self.image, self.points)
+        self.profile.set_data(positions, self.density)
+        fraction = self.value("position")
+        self.marker.set_xdata([fraction * self.walk.lengths[-1]] * 2)
+        cv = uniformity(self.image, self.points)
+        self.profile_title.set_text(
+            f"{method}, {weighting}: CV {100 * cv:.1f}%, mean {self.density.mean():.2f}"
+        )
+        self.panel.show(self.image, self.walk.at(fraction), 24, f"t step {self.value('step'):.2g}")

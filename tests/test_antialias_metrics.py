@@ -1,0 +1,103 @@
+"""course.aa_metrics: each metric against a case whose answer is known."""
+
+import numpy as np
+import pytest
+
+from course.aa_metrics import (
+    AGG,
+    ARC_LENGTH,
+    centroid_offsets,
+    intensity_along,
+    max_error,
+    position_error,
+    quality_table,
+    rmse,
+    uniformity,
+    variants,
+)
+from course.antialias import METHODS, SPLAT_METHODS, render
+from course.coverage import reference
+
+SEED_CURVE = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]) / 5
+SHAPE = (140, 140)
+
+
+def test_rmse_and_max_error_by_hand():
+    image = np.array([[0.0, 0.5], [1.0, 0.25]])
+    truth = np.array([[0.0, 0.25], [0.5, 0.25]])
+    assert rmse(image, truth) == pytest.approx(np.sqrt((0.0625 + 0.25) / 4))
+    assert max_error(image, truth) == 0.5
+    with pytest.raises(ValueError, match="same shape"):
+        rmse(image, np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="reference values must lie in"):
+        rmse(image, truth + 2)
+
+
+@pytest.mark.parametrize("width", [1.0, 2.0])
+def test_an_exact_stroke_has_its_width_per_unit_length_everywhere(width):
+    exact = reference(SEED_CURVE, SHAPE, width, k=32)
+    _, density = intensity_along(exact, SEED_CURVE)
+    np.testing.assert_allclose(density, width, rtol=0.01)
+    assert uniformity(exact, SEED_CURVE) <= 0.005
+
+
+def test_the_handouts_count_bands_and_the_arc_length_fix_does_not():
+    counted = render(SEED_CURVE, SHAPE, "bilinear_centres", step=0.002)
+    fixed = render(SEED_CURVE, SHAPE, "bilinear_centres", weighting="arc_length")
+    assert uniformity(counted, SEED_CURVE) > 0.1
+    assert uniformity(fixed, SEED_CURVE) < 0.01
+
+
+def test_intensity_along_follows_a_dimmer_stretch():
+    # A straight line whose right half is drawn at half intensity.
+    line = [[2.0, 4.5], [62.0, 4.5]]
+    image = reference(line, (9, 64), 1.0, k=16)
+    image[:, 32:] *= 0.5
+    positions, density = intensity_along(image, line, piece_length=4)
+    np.testing.assert_allclose(density[positions < 28], 1.0, atol=1e-9)
+    np.testing.assert_allclose(density[positions > 32], 0.5, atol=1e-9)
+
+
+def test_uniformity_rejects_an_empty_drawing():
+    with pytest.raises(ValueError, match="nothing is drawn"):
+        uniformity(np.zeros(SHAPE), SEED_CURVE)
+
+
+def test_centroid_offsets_see_the_half_pixel_shift_of_corner_splats():
+    # A horizontal line: corner-based splats centre it half a pixel low, the
+    # centre-based ones on it.
+    line = [[3.0, 8.3], [40.0, 8.3]]
+    corners = render(line, (16, 44), "bilinear_corners", weighting="arc_length")
+    centres = render(line, (16, 44), "bilinear_centres", weighting="arc_length")
+    inner = slice(3, -3)  # away from the ends
+    np.testing.assert_allclose(centroid_offsets(corners, line).offset[inner], 0.5, atol=1e-6)
+    np.testing.assert_allclose(centroid_offsets(centres, line).offset[inner], 0.0, atol=1e-6)
+
+
+def test_steep_parts_are_measured_along_rows():
+    line = [[8.3, 2.0], [8.3, 30.0]]
+    image = render(line, (32, 16), "bilinear_corners", weighting="arc_length")
+    offsets = centroid_offsets(image, line)
+    assert not offsets.along_columns.any()
+    np.testing.assert_allclose(offsets.offset[3:-3], 0.5, atol=1e-6)
+
+
+def test_the_reference_sits_on_the_curve():
+    exact = reference(SEED_CURVE, SHAPE, 1.0, k=32)
+    assert position_error(exact, SEED_CURVE) <= 0.02
+    offsets = centroid_offsets(exact, SEED_CURVE)
+    # Every column of the S is crossed once; the steep middle is read by rows.
+    assert offsets.along_columns.any() and (~offsets.along_columns).any()
+    assert len(offsets.offset) >= 100
+
+
+def test_variants_and_the_quality_table():
+    images = variants(SEED_CURVE, SHAPE)
+    assert list(images) == [*METHODS, *(m + ARC_LENGTH for m in SPLAT_METHODS), AGG]
+    exact = reference(SEED_CURVE, SHAPE, 1.0, k=32)
+    table = {row["name"]: row for row in quality_table(images, SEED_CURVE, exact)}
+    # The claims the lesson makes, at this smaller scale.
+    assert table["bilinear_zero_offset"]["rmse"] == table["nearest_round"]["rmse"]
+    assert table["stroke_area"]["rmse"] < table[AGG]["rmse"]
+    assert table["stroke_area"]["cv"] <= 0.05
+    assert table["bilinear_centres" + ARC_LENGTH]["cv"] < table["bilinear_centres"]["cv"]

@@ -1,0 +1,210 @@
+"""course.coverage: the exact reference, Agg's rendering, and the geometry under both."""
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from matplotlib.path import Path
+
+from course.coverage import (
+    agg_draw,
+    agg_render,
+    curve_polyline,
+    pixels_near,
+    reference,
+    segment_distance,
+    slab_coverage,
+    subdivide,
+)
+
+SEED_CURVE = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]) / 5
+
+
+def band_by_brute_force(across, normal, width, k=400):
+    """Fraction of a k x k grid of points of the pixel inside the band."""
+    grid = (np.arange(k) + 0.5) / k - 0.5
+    u, v = np.meshgrid(grid, grid)
+    return np.mean(np.abs(across + normal[0] * u + normal[1] * v) <= width / 2)
+
+
+@given(
+    angle=st.floats(0, 2 * math.pi),
+    across=st.floats(-1.8, 1.8),
+    width=st.sampled_from([0.5, 1.0, 1.7, 3.0]),
+)
+def test_slab_coverage_is_the_area_of_the_pixel_inside_the_band(angle, across, width):
+    normal = np.array([math.cos(angle), math.sin(angle)])
+    exact = float(slab_coverage([across], [normal], width)[0])
+    # A 400 x 400 grid errs by at most about 2 / 400 for a band's two edges.
+    assert exact == pytest.approx(band_by_brute_force(across, normal, width), abs=6e-3)
+
+
+def test_slab_coverage_known_values():
+    # Axis-aligned: the overlap of two intervals. 45 degrees through the
+    # centre: the square minus two corner triangles of legs 1 - sqrt(2)/2.
+    assert slab_coverage([0.3], [[1.0, 0.0]], 1.0)[0] == pytest.approx(0.7)
+    assert slab_coverage([0.3], [[0.0, -1.0]], 2.0)[0] == pytest.approx(1.0)
+    leg = 1 - math.sqrt(0.5)
+    diagonal = [[math.sqrt(0.5), math.sqrt(0.5)]]
+    assert slab_coverage([0.0], diagonal, 1.0)[0] == pytest.approx(1 - 2 * leg**2 / 2)
+
+
+@pytest.mark.parametrize("angle", [0.0, 0.3, math.pi / 4, 1.2])
+def test_reference_converges_to_the_exact_area_as_k_grows(angle):
+    # A long straight stroke: away from its ends each pixel's exact coverage
+    # is slab_coverage, so the supersampling error can be measured.
+    direction = np.array([math.cos(angle), math.sin(angle)])
+    start = np.array([20.3, 20.1]) - 14 * direction
+    line = np.array([start, start + 28 * direction])
+    normal = np.array([-direction[1], direction[0]])
+    rows, columns = np.mgrid[14:27, 14:27]
+    centres = np.stack([columns + 0.5, rows + 0.5], axis=-1)
+    across = (centres - start) @ normal
+    exact = slab_coverage(-across, np.broadcast_to(normal, centres.shape), 1.0)
+    errors = []
+    for k in (4, 8, 16, 32, 64):
+        image = reference(line, (40, 40), 1.0, k=k)
+        error = np.abs(image[14:27, 14:27] - exact)
+        # Each band edge crossing a row of k samples misplaces at most one.
+        assert error.max() <= 2 / k + 1e-9
+        errors.append(np.sqrt(np.mean(error**2)))
+    assert all(later <= earlier for earlier, later in itertools.pairwise(errors))
+    assert errors[-1] <= errors[0] / 6
+
+
+def test_reference_holds_the_stroke_area():
+    # Width x length plus the two half-disc caps.
+    for width in (1.0, 3.0):
+        image = reference(SEED_CURVE, (140, 140), width, k=32)
+        line = curve_polyline(SEED_CURVE, 1e-4)
+        length = np.hypot(*np.diff(line, axis=0).T).sum()
+        assert image.sum() == pytest.approx(width * length + math.pi * width**2 / 4, rel=1e-3)
+
+
+def test_reference_wide_stroke_agrees_with_sampling_every_pixel():
+    # The wholly-inside shortcut and the "near the curve" search against
+    # testing every sample of every pixel.
+    curve = np.array([[2.0, 3.0], [14.0, 1.0], [9.0, 13.0]])
+    width, k = 3.0, 8
+    image = reference(curve, (16, 18), width, k=k)
+    line = curve_polyline(curve, 1e-4)
+    grid = (np.arange(k) + 0.5) / k
+    ys, xs = np.mgrid[0:16, 0:18]
+    size = (16, 18, k, k)
+    points_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(16, 18, -1)
+    points_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(16, 18, -1)
+    nearest = np.full(points_x.shape, np.inf)
+    for a, b in itertools.pairwise(line):
+        distance, _, _ = segment_distance(points_x, points_y, a, b)
+        nearest = np.minimum(nearest, distance)
+    np.testing.assert_allclose(image, np.mean(nearest <= width / 2, axis=-1), atol=1e-12)
+    assert image.max() == 1.0
+
+
+def agg_polyline(line, shape, width=1.0):
+    """Agg stroking a fine polyline, matplotlib's simplification off."""
+    path = Path(line)
+    path.should_simplify = False
+    return np.asarray(agg_draw(path, shape, width).buffer_rgba())[..., 3] / 255.0
+
+
+def test_agg_is_aligned_with_the_reference_by_measurement():
+    # A horizontal and a vertical stroke a quarter pixel off the centres:
+    # Agg's rows and columns match the reference's to 8-bit precision, so
+    # no half-pixel shift and one point of width is one pixel at 72 dpi.
+    for line in ([[2.0, 5.25], [14.0, 5.25]], [[5.75, 2.0], [5.75, 14.0]]):
+        agg = agg_render(line, (12, 16))
+        exact = reference(line, (12, 16), 1.0, k=16)
+        assert np.abs(agg - exact)[3:9, 3:9].max() <= 2 / 255
+    # The seed curve drawn by Agg from a fine polyline matches the reference
+    # everywhere but the round caps, which Agg approximates by a polygon.
+    line = curve_polyline(SEED_CURVE, 1e-3)
+    agg = agg_polyline(line, (140, 140))
+    exact = reference(SEED_CURVE, (140, 140), 1.0, k=64)
+    away_from_caps = np.ones((140, 140), bool)
+    away_from_caps[:4, :4] = away_from_caps[-4:, -4:] = False
+    error = np.abs(agg - exact)[away_from_caps]
+    assert error.max() <= 0.025
+    assert np.sqrt(np.mean(error**2)) <= 1e-3
+
+
+def test_agg_flattens_the_cubic_itself_more_coarsely():
+    # The production path: CURVE4 codes, flattened by Agg. Its error is
+    # larger than the polyline's: Agg's own subdivision, not the alignment.
+    curve_error = np.abs(
+        agg_render(SEED_CURVE * 5, (700, 700)) - reference(SEED_CURVE * 5, (700, 700), k=16)
+    )
+    assert 0.05 <= curve_error.max() <= 0.25
+
+
+def test_agg_render_draws_lines_and_quadratics_and_refuses_higher_degrees():
+    assert agg_render([[1.0, 1.5], [6.0, 1.5]], (3, 8))[1, 2:6].tolist() == [1.0] * 4
+    assert agg_render([[1.0, 1.0], [4.0, 6.0], [7.0, 1.0]], (8, 8)).sum() > 0
+    with pytest.raises(ValueError, match="degree 1 to 3"):
+        agg_render(np.zeros((5, 2)), (8, 8))
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "words"),
+    [
+        ({"width": 0.0}, ValueError, "width must be > 0"),
+        ({"k": 0}, ValueError, "k must be >= 1"),
+        ({"k": 2.5}, TypeError, "k must be an integer"),
+        ({"shape": (4, 4, 3)}, ValueError, "shape must be a pair"),
+        ({"points": [[0.0, np.nan]]}, ValueError, "points must be finite"),
+    ],
+)
+def test_reference_rejects_bad_input_by_name(kwargs, error, words):
+    with pytest.raises(error, match=words):
+        reference(**({"points": [[0, 0], [3, 3]], "shape": (4, 4)} | kwargs))
+
+
+polylines = st.lists(
+    st.tuples(
+        st.integers(-40, 360).map(lambda n: n / 16), st.integers(-40, 360).map(lambda n: n / 16)
+    ),
+    min_size=2,
+    max_size=6,
+).map(lambda rows: np.array(rows, dtype=float))
+
+
+@given(line=polylines, reach=st.sampled_from([0.5, 1.0, 1.2071, 2.5]))
+def test_pixels_near_finds_exactly_the_pairs_within_reach(line, reach):
+    shape = (20, 22)
+    near = pixels_near(line, shape, reach)
+    pieces = near.polyline
+    np.testing.assert_allclose(subdivide(line, 10.0)[[0, -1]], line[[0, -1]])
+    found = set(zip(near.x.tolist(), near.y.tolist(), near.segment.tolist(), strict=True))
+    ys, xs = np.mgrid[0 : shape[0], 0 : shape[1]]
+    surely, maybe = set(), set()  # within reach; within reach up to rounding
+    for index, (a, b) in enumerate(itertools.pairwise(pieces)):
+        distance, _, _ = segment_distance(xs + 0.5, ys + 0.5, a, b)
+        for y, x in zip(*np.nonzero(distance <= reach + 1e-9), strict=True):
+            maybe.add((int(x), int(y), index))
+            if distance[y, x] <= reach - 1e-9:
+                surely.add((int(x), int(y), index))
+    assert surely <= found <= maybe
+    # Sorted by pixel, nearest segment first.
+    keys = near.flat * 10.0 + near.distance
+    assert np.all(np.diff(keys) >= -1e-9)  # ties may come in either order
+
+
+@given(
+    point=st.tuples(st.floats(-5, 5), st.floats(-5, 5)),
+    a=st.tuples(st.floats(-5, 5), st.floats(-5, 5)),
+    b=st.tuples(st.floats(-5, 5), st.floats(-5, 5)),
+)
+def test_segment_distance_is_the_distance_to_the_nearest_point(point, a, b):
+    a, b = np.array(a), np.array(b)
+    distance, along, across = segment_distance(
+        np.array([point[0]]), np.array([point[1]]), a[None], b[None]
+    )
+    samples = a + np.linspace(0, 1, 20001)[:, None] * (b - a)
+    brute = np.hypot(*(samples - point).T).min()
+    assert distance[0] == pytest.approx(brute, abs=1e-3 * max(1.0, np.hypot(*(b - a))))
+    nearest = a + along[0] * (b - a)
+    assert np.hypot(*(nearest - point)) == pytest.approx(distance[0], abs=1e-9)
+    assert abs(across[0]) <= distance[0] + 1e-9

@@ -1,0 +1,93 @@
+"""course.widgets.antialias: the sliders move the picture to what the library computes."""
+
+import numpy as np
+import pytest
+
+from course.aa_metrics import intensity_along
+from course.antialias import render
+from course.canvas import crop
+from course.coverage import reference
+from course.widgets import StepApp, ZoomApp
+from course.widgets.antialias import CurveWalk, zoom_figure
+
+CURVE = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]) / 5
+SHAPE = (140, 140)
+
+
+@pytest.fixture(scope="module")
+def images():
+    return {
+        name: render(CURVE, SHAPE, name)
+        for name in ("nearest_round", "bilinear_corners", "bilinear_centres", "stroke_area")
+    }
+
+
+@pytest.fixture(scope="module")
+def exact():
+    return reference(CURVE, SHAPE, 1.0, k=16)
+
+
+def test_zoom_app_moves_its_window_along_the_curve(images, exact):
+    app = ZoomApp(images, CURVE, exact, picks=("nearest_round", "bilinear_corners", "stroke_area"))
+    before = app.refresh()
+    centre = app.center()
+    # The window shows exactly the crop around the curve point.
+    window, extent = crop(images["nearest_round"], centre, 16)
+    np.testing.assert_array_equal(app.panels[0].picture.get_array(), window)
+    assert tuple(app.panels[0].axes.get_xlim()) == extent[:2]
+    app.controls["position"].value = 0.5
+    assert app.renders == 2 and app.view.image.value != before
+    middle = CurveWalk(CURVE).at(0.5)
+    np.testing.assert_allclose(app.center(), middle)
+    np.testing.assert_allclose(middle, [70.0, 70.0], atol=1e-6)  # the S's centre
+    np.testing.assert_array_equal(app.windows[2], crop(images["stroke_area"], middle, 16)[0])
+    np.testing.assert_array_equal(app.windows[3], crop(exact, middle, 16)[0])
+
+
+def test_zoom_app_picks_variants_and_sizes(images, exact):
+    app = ZoomApp(images, CURVE, exact, picks=("nearest_round", "bilinear_corners", "stroke_area"))
+    app.refresh()
+    app.controls["middle"].value = "bilinear_centres"
+    window, _ = crop(images["bilinear_centres"], app.center(), 16)
+    np.testing.assert_array_equal(app.windows[1], window)
+    assert "bilinear_centres" in app.panels[1].title.get_text()
+    app.controls["size"].value = 30
+    assert app.windows[1].shape == (30, 30)
+    # The grid has one line per pixel edge: 31 columns and 31 rows.
+    assert len(app.panels[1].grid.get_segments()) == 62
+    assert app.describe().startswith("ZoomApp(position=0.1, size=30, left='nearest_round'")
+
+
+def test_zoom_app_rejects_unknown_picks(images, exact):
+    with pytest.raises(ValueError, match="picks must be three names"):
+        ZoomApp(images, CURVE, exact, picks=("nearest_round", "gaussian", "stroke_area"))
+
+
+def test_step_app_shows_gaps_saturation_and_the_fix():
+    app = StepApp(CURVE, SHAPE)
+    app.refresh()
+    fine = app.image.copy()
+    np.testing.assert_array_equal(fine, render(CURVE, SHAPE, "bilinear_centres", step=0.001))
+    _positions, density = intensity_along(fine, CURVE)
+    np.testing.assert_allclose(app.profile.get_ydata(), density)
+    # Step 0.001 on a 5x smaller curve: several samples per pixel, saturated.
+    assert fine.max() == 1.0 and density.max() > 1.5
+    app.controls["step"].value = 0.04
+    coarse = app.image
+    assert coarse.sum() < fine.sum() / 4
+    assert "CV" in app.profile_title.get_text()
+    app.controls["weighting"].value = "arc_length"
+    # Samples 6 px apart: each splat is clipped at 1, the gaps lose ink.
+    assert app.profile.get_ydata().mean() < 0.8
+    app.controls["step"].value = 0.001
+    assert np.abs(app.profile.get_ydata() - 1.0).max() < 0.05
+    app.controls["method"].value = "nearest_truncate"
+    np.testing.assert_array_equal(
+        app.image, render(CURVE, SHAPE, "nearest_truncate", step=0.001, weighting="arc_length")
+    )
+
+
+def test_zoom_figure_has_one_panel_per_image(images):
+    figure = zoom_figure(images, CURVE, (70, 70), size=12, columns=2)
+    assert len(figure.axes) == 4
+    assert [axes.get_title() for axes in figure.axes] == list(images)

@@ -29,13 +29,20 @@ CAP = 6000  # sweeps of Jacobi and Gauss-Seidel actually run; the rest is extrap
 
 
 def best_time(function, repeats=7):
-    function()  # warm caches (the sine matrices, BLAS threads)
-    times = []
+    return best_times([function], repeats)[0]
+
+
+def best_times(functions, repeats=15):
+    """Best time of each function, run in turns so that a busy machine slows all alike."""
+    for function in functions:
+        function()  # warm caches (the sine matrices, BLAS threads)
+    best = [float("inf")] * len(functions)
     for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return min(times)
+        for index, function in enumerate(functions):
+            start = time.perf_counter()
+            function()
+            best[index] = min(best[index], time.perf_counter() - start)
+    return best
 
 
 def against_opencv():
@@ -51,11 +58,14 @@ def against_opencv():
     ellipse = ((columns - 99.5) / 95) ** 2 + ((rows - 99.5) / 80) ** 2 < 1
     rectangle = np.zeros((200, 200), bool)
     rectangle[1:-1, 1:-1] = True
-    results = []
     for name, mask, goal in (("rectangle", None, 1.0), ("ellipse mask", ellipse, 5.0)):
         mask8 = (rectangle if mask is None else mask).astype(np.uint8) * 255
-        theirs = best_time(lambda m=mask8: cv2.seamlessClone(fg8, bg8, m, centre, cv2.NORMAL_CLONE))
-        ours = best_time(lambda m=mask: poisson.seamless_clone(background, foreground, offset, m))
+        theirs, ours = best_times(
+            [
+                lambda m=mask8: cv2.seamlessClone(fg8, bg8, m, centre, cv2.NORMAL_CLONE),
+                lambda m=mask: poisson.seamless_clone(background, foreground, offset, m),
+            ]
+        )
         ratio = ours / theirs
         verdict = "met" if ratio <= goal else "NOT met"
         print(
@@ -63,23 +73,19 @@ def against_opencv():
             f"{ratio:.2f}x cv2.seamlessClone NORMAL_CLONE ({theirs * 1e3:.1f} ms) "
             f"(goal <= {goal:g}x: {verdict})"
         )
-        results.append((name, mask))
-    # How far OpenCV is from the Poisson solution on the mask (it solves the
-    # bounding box with mixed guidance, then keeps the masked pixels).
-    cv = cv2.seamlessClone(fg8, bg8, ellipse.astype(np.uint8) * 255, centre, cv2.NORMAL_CLONE)
-    cv = cv[..., ::-1] / 255.0
-    problem = poisson.clone_problem(background, foreground, offset, ellipse)
+    # How far OpenCV is from the Poisson solution on the mask: it solves the
+    # mask's bounding box, foreground gradients inside the mask and the
+    # background's outside, and writes the whole box back.
+    ellipse8 = ellipse.astype(np.uint8) * 255
+    cv = cv2.seamlessClone(fg8, bg8, ellipse8, centre, cv2.NORMAL_CLONE)[..., ::-1] / 255.0
     exact = poisson.seamless_clone(background, foreground, offset, ellipse)
     region = np.zeros(background.shape[:2], bool)
     region[offset[1] : offset[1] + 200, offset[0] : offset[0] + 200] = ellipse
-    difference = np.abs(cv - exact)[region]
-    x, y = problem.corner
-    h, w = problem.region.shape
-    window = cv[y : y + h, x : x + w]
+    inside, outside = np.abs(cv - exact)[region], np.abs(cv - exact)[~region]
     print(
-        f"  (information) on the ellipse, cv2 differs from the exact Poisson solution by "
-        f"{difference.mean() * 255:.1f} grey levels on average, {difference.max() * 255:.0f} at "
-        f"most; its residual is {problem.residual(window):.2g} (exact: < 1e-12)"
+        f"  (information) ellipse: cv2 differs from the exact Poisson solution by "
+        f"{inside.mean() * 255:.1f} grey levels on average inside the mask, and changes pixels "
+        f"outside the mask by up to {outside.max() * 255:.0f} (ours: 0)"
     )
 
 

@@ -30,6 +30,7 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -57,6 +58,7 @@ __all__ = [
     "correction_boundary",
     "inpaint",
     "inpaint_problem",
+    "iterates",
     "lab_clone",
     "naive_paste",
     "seamless_clone",
@@ -392,10 +394,7 @@ def convergence(
     omega = _as_omega(omega, method, problem.region)
     reference = None if exact is None else _planes(problem._as_solution(exact))
     values, region, source = _planes(problem.values), problem.region, _planes(problem.source)
-    if method == "jacobi":
-        sweeps = solvers.jacobi_sweeps(values, region, source)
-    else:
-        sweeps = solvers.sor_sweeps(values, region, source, omega)
+    sweeps = _sweeps(problem, method, omega)
     recorded, residuals, errors = [], [], []
     u = values
     for done in range(iterations + 1):
@@ -407,6 +406,34 @@ def convergence(
         if done < iterations:
             u = next(sweeps)
     return ConvergenceHistory(method, np.array(recorded), np.array(residuals), np.array(errors))
+
+
+def iterates(
+    problem: PoissonProblem, method: str, omega: float | None = None
+) -> Iterator[np.ndarray]:
+    """The window after each sweep of an iterative method, forever.
+
+    Each item is a view of the iterate, which the next sweep overwrites: copy
+    it to keep it.
+
+    Examples
+    --------
+    >>> problem = clone_problem(np.zeros((5, 6)), np.full((3, 4), 0.5), (1, 1))
+    >>> sweeps = iterates(problem, "jacobi")
+    >>> next(sweeps)[1]   # each unknown: three neighbours at 0, one at 0.5
+    array([0.   , 0.125, 0.125, 0.   ])
+    """
+    method = as_choice(method, "method", ITERATIVE)
+    omega = _as_omega(omega, method, problem.region)
+    for planes in _sweeps(problem, method, omega):
+        yield planes[0] if problem.values.ndim == 2 else np.moveaxis(planes, 0, -1)
+
+
+def _sweeps(problem: PoissonProblem, method: str, omega: float) -> Iterator[np.ndarray]:
+    values, region, source = _planes(problem.values), problem.region, _planes(problem.source)
+    if method == "jacobi":
+        return solvers.jacobi_sweeps(values, region, source)
+    return solvers.sor_sweeps(values, region, source, omega)
 
 
 def naive_paste(background: Any, foreground: Any, offset: Any, mask: Any = None) -> np.ndarray:

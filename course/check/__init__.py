@@ -7,3 +7,8 @@ first failing case, its inputs, the expected value and the value given.
 from course.check.base import CheckResult
 
 __all__ = ["CheckResult"]
+
+# Lesson 08: Poisson image editing.
+from course.check.poisson import poisson_boundary
+
+__all__ += ["poisson_boundary"]

@@ -121,19 +121,35 @@ class PoissonProblem:
 
         Over every pair of a region pixel and its neighbour outside the region.
         A visible seam is a step much larger than the image's own texture.
+
+        Examples
+        --------
+        >>> problem = clone_problem(np.zeros((5, 5)), np.zeros((3, 3)), (1, 1))
+        >>> image = np.zeros((5, 5)); image[2, 2] = 0.5   # the one region pixel
+        >>> problem.seam(image), problem.texture(image)
+        (0.5, nan)
         """
+        return self._mean_step(image, across_border=True)
+
+    def texture(self, image: np.ndarray) -> float:
+        """Mean absolute step between neighbouring region pixels of ``image``.
+
+        NaN for a region without two neighbouring pixels.
+        """
+        return self._mean_step(image, across_border=False)
+
+    def _mean_step(self, image: np.ndarray, across_border: bool) -> float:
         x, y = self.corner
         height, width = self.region.shape
         window = np.asarray(image, dtype=float)[y : y + height, x : x + width]
         steps = []
         for dy, dx in solvers.NEIGHBOURS:
-            inner = self.region[1:-1, 1:-1]
-            outside = ~self.region[1 + dy : height - 1 + dy, 1 + dx : width - 1 + dx]
-            pairs = inner & outside
-            here = window[1:-1, 1:-1][pairs]
-            there = window[1 + dy : height - 1 + dy, 1 + dx : width - 1 + dx][pairs]
-            steps.append(np.abs(here - there).reshape(-1))
-        return float(np.concatenate(steps).mean())
+            neighbour = (slice(1 + dy, height - 1 + dy), slice(1 + dx, width - 1 + dx))
+            other = self.region[neighbour]
+            pairs = self.region[1:-1, 1:-1] & (~other if across_border else other)
+            steps.append(np.abs(window[1:-1, 1:-1][pairs] - window[neighbour][pairs]).reshape(-1))
+        steps = np.concatenate(steps)
+        return float(steps.mean()) if steps.size else float("nan")
 
     def _as_solution(self, solution: Any) -> np.ndarray:
         array = as_float_array(solution, "solution")
@@ -151,12 +167,14 @@ class ConvergenceHistory:
 
     ``errors`` is the largest ``|u - exact|`` over the region, in image units
     (multiply by 255 for grey levels); NaN when no exact solution was given.
+    ``solution`` is the last iterate, a window like ``problem.values``.
     """
 
     method: str
     sweeps: np.ndarray
     residuals: np.ndarray
     errors: np.ndarray
+    solution: np.ndarray
 
 
 def seamless_clone(
@@ -405,7 +423,13 @@ def convergence(
             errors.append(error)
         if done < iterations:
             u = next(sweeps)
-    return ConvergenceHistory(method, np.array(recorded), np.array(residuals), np.array(errors))
+    return ConvergenceHistory(
+        method,
+        np.array(recorded),
+        np.array(residuals),
+        np.array(errors),
+        _image(u.copy(), problem.values),
+    )
 
 
 def iterates(

@@ -503,3 +503,11 @@ def test_the_checker_names_the_case_a_typical_mistake_fails(wrong, case):
     result = check.poisson_boundary(wrong)
     assert not result
     assert case in result.message
+
+
+def test_the_history_ends_with_the_iterate_solve_returns():
+    problem = small_problem()
+    history = poisson.convergence(problem, "gauss_seidel", 12, every=5)
+    assert list(history.sweeps) == [0, 5, 10, 12]
+    solved = poisson.solve(problem, "gauss_seidel", iterations=12)
+    assert np.abs(history.solution - solved).max() < 1e-15

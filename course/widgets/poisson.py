@@ -12,11 +12,13 @@ from typing import Any
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib.figure import Figure
 
 from course import images, poisson
+from course._validate import as_image, as_int
 from course.widgets.base import SliderApp
 
-__all__ = ["PoissonIterationApp"]
+__all__ = ["PoissonIterationApp", "show_images"]
 
 # Sweeps the slider stops at, roughly three per decade up to the lab's 8000.
 SWEEP_STOPS = (0, 1, 3, 10, 30, 100, 300, 1000, 3000, 8000)
@@ -135,3 +137,40 @@ class PoissonIterationApp(SliderApp):
 
     def _error(self, solution: np.ndarray) -> float:
         return float(np.abs(solution - self.exact)[self.problem.region].max() * 255)
+
+
+def show_images(
+    pictures: dict[str, Any],
+    window: tuple[slice, slice] | None = None,
+    columns: int | None = None,
+    width: int = 1000,
+) -> Figure:
+    """Images side by side with their titles; ``window`` crops every one alike.
+
+    Gray images are shown on a fixed 0-1 grey scale, so equal values look
+    equal across panels.
+
+    Examples
+    --------
+    >>> figure = show_images({"a": np.zeros((4, 6)), "b": np.ones((4, 6, 3))}, columns=1)
+    >>> len(figure.axes), [axes.get_title() for axes in figure.axes]
+    (2, ['a', 'b'])
+    """
+    arrays = {name: as_image(image, f"pictures[{name!r}]") for name, image in pictures.items()}
+    if window is not None:
+        arrays = {name: image[window] for name, image in arrays.items()}
+    columns = as_int(columns or len(arrays), "columns", minimum=1)
+    rows = -(-len(arrays) // columns)
+    height, image_width = next(iter(arrays.values())).shape[:2]
+    panel = width / 100 / columns
+    figure = Figure(
+        figsize=(width / 100, rows * (panel * height / image_width + 0.35)),
+        dpi=100,
+        layout="constrained",
+    )
+    for index, (name, image) in enumerate(arrays.items()):
+        axes = figure.add_subplot(rows, columns, index + 1)
+        axes.imshow(image, cmap="gray", vmin=0, vmax=1, interpolation="antialiased")
+        axes.set_title(name, fontsize=10)
+        axes.set_axis_off()
+    return figure

@@ -100,6 +100,19 @@ class PoissonProblem:
         """True when the region is every pixel inside the outer ring."""
         return bool(self.region[1:-1, 1:-1].all())
 
+    def planes(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(values, region, source)`` as :mod:`course.poisson_solvers` takes them.
+
+        Channels first, ``(C, h, w)``, so that each channel is one plane; copies.
+
+        Examples
+        --------
+        >>> problem = clone_problem(np.zeros((5, 5, 3)), np.ones((3, 4, 3)), (0, 1))
+        >>> [array.shape for array in problem.planes()]
+        [(3, 3, 4), (3, 4), (3, 3, 4)]
+        """
+        return _planes(self.values), self.region.copy(), _planes(self.source)
+
     def residual(self, solution: Any) -> float:
         """Largest ``|b_p + sum_q u_q - 4 u_p|`` over the region: 0 for the exact solution."""
         return solvers.residual(
@@ -384,7 +397,7 @@ def sweeps_to_residual(
     """
     tolerance = as_positive_float(tolerance, "tolerance")
     planes, done = _solve_planes(problem, method, max_iterations, tolerance, omega)
-    if solvers.residual(planes, problem.region, _planes(problem.source)) > tolerance:
+    if solvers.residual(planes, *problem.planes()[1:]) > tolerance:
         return None
     return done
 
@@ -411,7 +424,7 @@ def convergence(
     every = as_int(every, "every", minimum=1)
     omega = _as_omega(omega, method, problem.region)
     reference = None if exact is None else _planes(problem._as_solution(exact))
-    values, region, source = _planes(problem.values), problem.region, _planes(problem.source)
+    values, region, source = problem.planes()
     sweeps = _sweeps(problem, method, omega)
     recorded, residuals, errors = [], [], []
     u = values
@@ -454,7 +467,7 @@ def iterates(
 
 
 def _sweeps(problem: PoissonProblem, method: str, omega: float) -> Iterator[np.ndarray]:
-    values, region, source = _planes(problem.values), problem.region, _planes(problem.source)
+    values, region, source = problem.planes()
     if method == "jacobi":
         return solvers.jacobi_sweeps(values, region, source)
     return solvers.sor_sweeps(values, region, source, omega)
@@ -617,7 +630,7 @@ def _solve_planes(
     method = as_choice(method, "method", METHODS)
     if method == "auto":
         method = "dst" if problem.rectangular else "direct"
-    values, region, source = _planes(problem.values), problem.region, _planes(problem.source)
+    values, region, source = problem.planes()
     if method not in ITERATIVE:
         for name, given in (("iterations", iterations), ("tolerance", tolerance), ("omega", omega)):
             if given is not None:

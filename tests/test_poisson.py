@@ -213,16 +213,10 @@ def small_problem(rgb=True, mask=None):
     return poisson.clone_problem(background, foreground, (2, 1), mask=mask)
 
 
-def planes(problem):
-    values = problem.values if problem.values.ndim == 3 else problem.values[..., None]
-    source = problem.source if problem.source.ndim == 3 else problem.source[..., None]
-    return np.moveaxis(values, -1, 0).copy(), problem.region, np.moveaxis(source, -1, 0).copy()
-
-
 @pytest.mark.parametrize("mask", [None, "blob"])
 def test_jacobi_loop_and_vectorised_jacobi_are_identical(mask):
     problem = small_problem(mask=mask_for((7, 8), seed=2) if mask else None)
-    values, region, source = planes(problem)
+    values, region, source = problem.planes()
     sweeps = solvers.jacobi_sweeps(values, region, source)
     for _ in range(6):
         fast = next(sweeps)
@@ -233,7 +227,7 @@ def test_jacobi_loop_and_vectorised_jacobi_are_identical(mask):
 @pytest.mark.parametrize("mask", [None, "blob"])
 def test_sor_loop_and_triangular_solve_sor_agree(omega, mask):
     problem = small_problem(mask=mask_for((7, 8), seed=2) if mask else None)
-    values, region, source = planes(problem)
+    values, region, source = problem.planes()
     sweeps = solvers.sor_sweeps(values, region, source, omega)
     for _ in range(5):
         fast = next(sweeps)

@@ -144,7 +144,7 @@ def against_jacobi():
         print(
             f"time to residual 1e-6 on 280x111, {method}: {timings[method]:.3g} s, "
             f"{ratio:.2g}x the lab's Jacobi ({timings['jacobi']:.3g} s, extrapolated) "
-            f"(goal < 1x: {'met' if ratio < 1 else 'NOT met'})"
+            "(issue 6 sets no goal: for the record)"
         )
 
 

@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 from matplotlib import cbook
 
-from course._validate import as_image, as_int, as_shape
+from course._validate import as_image
 
 __all__ = ["photograph", "to_gray"]
 
@@ -53,6 +53,8 @@ def to_gray(image: Any) -> np.ndarray:
 # --- lesson 08: Poisson image editing ----------------------------------------
 # A scene pair like the lab's (a plane pasted into a lake at (500, 300)) and a
 # scratched photograph, all procedural and deterministic.
+
+from course._validate import as_int, as_shape  # noqa: E402
 
 __all__ += ["lake", "plane", "plane_mask", "scratched_photograph"]
 

@@ -192,6 +192,17 @@ def test_inpaint_fills_a_scratch_with_the_laplace_solution():
     assert filled[hole].min() >= image[~hole].min() and filled[hole].max() <= image[~hole].max()
 
 
+@pytest.mark.parametrize("method", ["jacobi", "gauss_seidel", "sor"])
+def test_inpainting_iterations_reach_the_direct_fill(method):
+    image = scipy.ndimage.gaussian_filter(np.random.default_rng(6).random((18, 22)), 1)
+    hole = np.zeros((18, 22), bool)
+    hole[4:14, 6] = True
+    hole[9, 3:19] = True
+    exact = poisson.inpaint(image, hole)
+    iterative = poisson.inpaint(image, hole, method=method, iterations=5000, tolerance=1e-13)
+    assert np.abs(iterative - exact).max() < 1e-11
+
+
 # --- the iterations -----------------------------------------------------------------
 
 

@@ -160,3 +160,204 @@ def ramp(width: int = 256, height: int = 32) -> np.ndarray:
     width = as_int(width, "width", minimum=1)
     height = as_int(height, "height", minimum=1)
     return np.tile((np.arange(width) + 0.5) / width, (height, 1))
+
+
+# --- lesson 08: Poisson image editing ----------------------------------------
+# A scene pair like the lab's (a plane pasted into a lake at (500, 300)) and a
+# scratched photograph, all procedural and deterministic.
+
+LAKE_SHAPE = (450, 800)
+PLANE_SHAPE = (111, 280)
+
+
+def lake(shape: Any = LAKE_SHAPE, rng: np.random.Generator | None = None) -> np.ndarray:
+    """A lake at dusk: a blue sky with clouds, a wooded shore, rippled water; RGB.
+
+    The default 450 x 800 holds the lab's 280 x 111 plane at offset (500, 300),
+    over the water. Deterministic unless another ``rng`` is given.
+
+    Examples
+    --------
+    >>> image = lake()
+    >>> image.shape, bool(0 <= image.min() <= image.max() <= 1)
+    ((450, 800, 3), True)
+    >>> bool(image[50, 400, 2] > image[50, 400, 0])   # the sky is blue
+    True
+    """
+    height, width = as_shape(shape)
+    rng = np.random.default_rng(8) if rng is None else rng
+    rows = np.arange(height)[:, None] / height
+    columns = np.arange(width)[None, :] / width
+    horizon = 0.42 + 0.03 * np.sin(2 * np.pi * columns * 1.3 + 0.4)
+    shore = (
+        horizon
+        + 0.05
+        + 0.02 * np.sin(2 * np.pi * columns * 3.1)
+        + 0.012 * _smooth_noise((1, width), (0, 4), rng)
+    )
+    # Sky: deep blue overhead fading to pale at the horizon, soft clouds.
+    height_above = np.clip(rows / horizon, 0, 1)
+    sky = _mix((0.18, 0.36, 0.72), (0.78, 0.84, 0.92), height_above**1.5)
+    clouds = np.clip(_smooth_noise((height, width), (10, 40), rng) * 1.6 - 0.3, 0, 1)
+    sky = _mix(sky, (0.97, 0.96, 0.95), 0.75 * clouds[..., None] * (1 - height_above[..., None]))
+    # Shore: dark trees with a ragged top.
+    trees = _mix(
+        (0.10, 0.22, 0.12), (0.20, 0.30, 0.16), _smooth_noise((height, width), (1, 2), rng)
+    )
+    # Water: the sky's colour darkened with depth, streaked by ripples.
+    depth = np.clip((rows - shore) / (1 - shore), 0, 1)
+    water = _mix((0.42, 0.56, 0.66), (0.08, 0.22, 0.33), depth**0.7)
+    ripples = _smooth_noise((height, width), (0.8, 12), rng) * (0.35 + 0.65 * depth)
+    water = water + 0.09 * ripples[..., None]
+    image = np.where(
+        (rows < horizon)[..., None], sky, np.where((rows < shore)[..., None], trees, water)
+    )
+    image = image + 0.012 * rng.standard_normal(image.shape)  # film grain
+    return np.clip(image, 0.0, 1.0)
+
+
+def plane(shape: Any = PLANE_SHAPE, rng: np.random.Generator | None = None) -> np.ndarray:
+    """A white seaplane in an orange evening sky, side view, facing right; RGB.
+
+    The sky is nothing like :func:`lake`'s water, so pasting the plane's
+    rectangle as it is leaves a visible seam. The default 111 x 280 is the size
+    of the lab's photograph. Deterministic unless another ``rng`` is given.
+
+    Examples
+    --------
+    >>> image = plane()
+    >>> image.shape
+    (111, 280, 3)
+    >>> bool(image[5, 5, 0] > image[5, 5, 2])   # orange sky: more red than blue
+    True
+    """
+    height, width = as_shape(shape)
+    rng = np.random.default_rng(80) if rng is None else rng
+    rows = np.arange(height)[:, None] / height
+    sky = _mix((0.93, 0.55, 0.25), (0.98, 0.80, 0.52), np.broadcast_to(rows, (height, width)))
+    sky = sky + 0.05 * _smooth_noise((height, width), (4, 20), rng)[..., None]
+    body = _plane_coverage((height, width))
+    # Light from above: the fuselage darkens towards its belly.
+    paint = _mix((0.96, 0.96, 0.97), (0.62, 0.64, 0.70), np.broadcast_to(rows, (height, width)))
+    stripe = _plane_parts((height, width), "stripe")
+    paint = np.where(stripe[..., None] > 0, (0.75, 0.10, 0.12), paint)
+    dark = _plane_parts((height, width), "windows")
+    paint = _mix(paint, (0.15, 0.18, 0.25), dark[..., None])
+    image = _mix(sky, paint, body[..., None]) + 0.008 * rng.standard_normal((height, width, 3))
+    return np.clip(image, 0.0, 1.0)
+
+
+def plane_mask(shape: Any = PLANE_SHAPE, margin: int = 4) -> np.ndarray:
+    """The plane's silhouette grown by ``margin`` pixels: a mask for seamless_clone.
+
+    False on the outer ring of pixels, as :func:`course.poisson.seamless_clone`
+    requires of a mask.
+
+    Examples
+    --------
+    >>> mask = plane_mask()
+    >>> mask.shape, mask.dtype, bool(mask[0].any() or mask[:, 0].any())
+    ((111, 280), dtype('bool'), False)
+    >>> bool(0.2 < mask.mean() < 0.5)
+    True
+    """
+    import scipy.ndimage
+
+    height, width = as_shape(shape)
+    margin = as_int(margin, "margin", minimum=0)
+    silhouette = _plane_coverage((height, width)) > 0.5
+    grown = scipy.ndimage.binary_dilation(silhouette, iterations=margin) if margin else silhouette
+    grown[[0, -1], :] = False
+    grown[:, [0, -1]] = False
+    return grown
+
+
+def scratched_photograph(
+    scratches: int = 7, width: int = 3, rng: np.random.Generator | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`photograph` with white scratches, and the mask of the scratched pixels.
+
+    Each scratch is a random quadratic Bézier curve ``width`` pixels wide,
+    kept away from the image border so :func:`course.poisson.inpaint` has known
+    pixels all around it. Returns ``(scratched, mask)``.
+
+    Examples
+    --------
+    >>> scratched, mask = scratched_photograph()
+    >>> scratched.shape, mask.shape, bool(mask[0].any())
+    ((600, 512, 3), (600, 512), False)
+    >>> bool((scratched[mask] > 0.9).all())
+    True
+    """
+    import scipy.ndimage
+
+    from course.bezier import de_casteljau
+
+    scratches = as_int(scratches, "scratches", minimum=0)
+    width = as_int(width, "width", minimum=1)
+    rng = np.random.default_rng(88) if rng is None else rng
+    image = photograph()
+    height, columns = image.shape[:2]
+    border = 10 + width
+    mask = np.zeros((height, columns), bool)
+    t = np.linspace(0.0, 1.0, 4 * (height + columns))
+    for _ in range(scratches):
+        control = rng.uniform((border, border), (columns - border, height - border), (3, 2))
+        x, y = np.rint(de_casteljau(control, t)).astype(int).T
+        mask[y, x] = True
+    mask = scipy.ndimage.binary_dilation(mask, iterations=(width - 1) // 2) if width > 1 else mask
+    scratched = image.copy()
+    scratched[mask] = (0.96, 0.95, 0.93)
+    return scratched, mask
+
+
+def _mix(a: Any, b: Any, t: Any) -> np.ndarray:
+    """``(1 - t) a + t b``, colours broadcast against a weight array (scalar or (H, W, 1))."""
+    a, b, t = np.asarray(a, float), np.asarray(b, float), np.asarray(t, float)
+    if t.ndim == 2 and (a.shape[-1:] == (3,) or b.shape[-1:] == (3,)):
+        t = t[..., None]
+    return (1 - t) * a + t * b
+
+
+def _smooth_noise(shape: tuple[int, int], sigma: tuple[float, float], rng: np.random.Generator):
+    """Gaussian-blurred white noise scaled to [-1, 1]: ``sigma`` = (rows, columns) in pixels."""
+    import scipy.ndimage
+
+    noise = scipy.ndimage.gaussian_filter(rng.standard_normal(shape), sigma, mode="wrap")
+    return noise / max(np.abs(noise).max(), 1e-12)
+
+
+def _plane_coverage(shape: tuple[int, int]) -> np.ndarray:
+    """Fraction of each pixel inside the plane (2 x 2 samples per pixel)."""
+    return _plane_parts(shape, "body")
+
+
+def _plane_parts(shape: tuple[int, int], part: str) -> np.ndarray:
+    """Coverage of one part of the plane, in coordinates scaled to the sprite's size."""
+    height, width = shape
+    total = np.zeros(shape)
+    for sy in (0.25, 0.75):
+        for sx in (0.25, 0.75):
+            y = (np.arange(height)[:, None] + sy) / height * 111
+            x = (np.arange(width)[None, :] + sx) / width * 280
+            total += _plane_inside(x, y, part)
+    return total / 4
+
+
+def _plane_inside(x: np.ndarray, y: np.ndarray, part: str) -> np.ndarray:
+    """Is (x, y) inside a part, on the 280 x 111 design grid (the plane faces right)."""
+    fuselage = ((x - 140) / 112) ** 2 + ((y - 52) / 13) ** 2 <= 1
+    fuselage |= (x >= 40) & (x <= 160) & (np.abs(y - 50 + (x - 40) * 0.02) <= 11 - (160 - x) * 0.04)
+    if part == "stripe":
+        return fuselage & (np.abs(y - 55) <= 1.5)
+    if part == "windows":
+        window_row = (np.abs(y - 47) <= 2.5) & (x >= 150) & (x <= 232) & ((x - 150) % 10 < 5)
+        cockpit = ((x - 238) / 9) ** 2 + ((y - 46) / 4) ** 2 <= 1
+        return fuselage & (window_row | cockpit)
+    # Tail fin: trailing edge upright at x = 32, leading edge sloping up and back.
+    fin = (y >= 14) & (y <= 50) & (x >= 32) & (x <= 48 + (y - 14))
+    wing = (np.abs(y - 58) <= 3.5) & (x >= 105) & (x <= 205)
+    tailplane = (np.abs(y - 47) <= 2.5) & (x >= 28) & (x <= 78)
+    strut = ((np.abs(x - 130) <= 2) | (np.abs(x - 190) <= 2)) & (y >= 60) & (y <= 88)
+    float_ = ((x - 165) / 80) ** 2 + ((y - 92) / 6) ** 2 <= 1
+    return fuselage | fin | wing | tailplane | strut | float_

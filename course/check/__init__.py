@@ -9,6 +9,7 @@ from course.check.base import CheckResult
 from course.check.bezier import naive_bezier, recursive_bezier
 from course.check.dither import dithering_error_diffuse
 from course.check.filters import blur, edge
+from course.check.poisson import poisson_boundary
 from course.check.raster import draw_line, draw_triangle_filled
 from course.check.resample import image_supersampling
 
@@ -22,5 +23,6 @@ __all__ = [
     "edge",
     "image_supersampling",
     "naive_bezier",
+    "poisson_boundary",
     "recursive_bezier",
 ]

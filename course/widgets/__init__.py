@@ -11,6 +11,7 @@ from course.widgets.de_casteljau import DeCasteljauApp
 from course.widgets.dithering import DitherComparisonApp, GrayLevelApp, VoidAndClusterApp
 from course.widgets.filtering import RepeatedBlurApp
 from course.widgets.lines import LineApp, TriangleApp
+from course.widgets.poisson import PoissonIterationApp
 from course.widgets.supersampling import SupersampleApp
 
 __all__ = [
@@ -20,6 +21,7 @@ __all__ = [
     "FigureView",
     "GrayLevelApp",
     "LineApp",
+    "PoissonIterationApp",
     "RepeatedBlurApp",
     "SliderApp",
     "StepApp",

@@ -1,0 +1,333 @@
+"""The Poisson problem of an edit: a window, its region, its boundary values and guidance.
+
+:func:`clone_problem` and :func:`inpaint_problem` validate their inputs once
+(every message names the parameter) and cut out the window the solvers work
+on: the region's bounding box and one more ring of pixels, its boundary. The
+solvers in :mod:`course.poisson_solvers` take the window's arrays channels
+first (:meth:`PoissonProblem.planes`); :mod:`course.poisson` solves and pastes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from course import poisson_solvers as solvers
+from course._validate import (
+    _describe,
+    as_choice,
+    as_float_array,
+    as_image,
+    as_int,
+    require_finite,
+)
+
+__all__ = ["GUIDANCE", "PoissonProblem", "clone_problem", "inpaint_problem"]
+
+GUIDANCE = ("plain", "mixed")
+
+
+@dataclass(frozen=True)
+class PoissonProblem:
+    """The discrete Poisson equation on a region, cut out of a larger image.
+
+    Attributes
+    ----------
+    values : ndarray, (h, w) or (h, w, 3)
+        Outside the region, the fixed boundary values; inside it, the
+        iterative methods' starting guess (the foreground, as in the lab).
+    region : ndarray of bool, (h, w)
+        The unknown pixels; False on the outer ring, so each has 4 neighbours.
+    source : ndarray, like ``values``
+        ``b_p = sum_q v_pq`` at each region pixel (0 elsewhere): the guidance.
+    corner : (int, int)
+        ``(x, y)`` of ``values[0, 0]`` in the image the result goes into.
+    """
+
+    values: np.ndarray
+    region: np.ndarray
+    source: np.ndarray
+    corner: tuple[int, int]
+
+    @property
+    def rectangular(self) -> bool:
+        """True when the region is every pixel inside the outer ring."""
+        return bool(self.region[1:-1, 1:-1].all())
+
+    def planes(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(values, region, source)`` as :mod:`course.poisson_solvers` takes them.
+
+        Channels first, ``(C, h, w)``, so that each channel is one plane; copies.
+
+        Examples
+        --------
+        >>> problem = clone_problem(np.zeros((5, 5, 3)), np.ones((3, 4, 3)), (0, 1))
+        >>> [array.shape for array in problem.planes()]
+        [(3, 3, 4), (3, 4), (3, 3, 4)]
+        """
+        return planes_of(self.values), self.region.copy(), planes_of(self.source)
+
+    def residual(self, solution: Any) -> float:
+        """Largest ``|b_p + sum_q u_q - 4 u_p|`` over the region: 0 for the exact solution."""
+        return solvers.residual(
+            planes_of(self._as_solution(solution)), self.region, planes_of(self.source)
+        )
+
+    def paste(self, image: np.ndarray, solution: Any) -> np.ndarray:
+        """A copy of ``image`` whose region pixels are ``solution``'s."""
+        solution = self._as_solution(solution)
+        x, y = self.corner
+        height, width = self.region.shape
+        result = np.array(image, dtype=float)
+        window = result[y : y + height, x : x + width]
+        window[self.region] = solution[self.region]
+        return result
+
+    def seam(self, image: np.ndarray) -> float:
+        """Mean absolute step across the region's border in ``image`` (which holds the region).
+
+        Over every pair of a region pixel and its neighbour outside the region.
+        A visible seam is a step much larger than the image's own texture.
+
+        Examples
+        --------
+        >>> problem = clone_problem(np.zeros((5, 5)), np.zeros((3, 3)), (1, 1))
+        >>> image = np.zeros((5, 5)); image[2, 2] = 0.5   # the one region pixel
+        >>> problem.seam(image), problem.texture(image)
+        (0.5, nan)
+        """
+        return self._mean_step(image, across_border=True)
+
+    def texture(self, image: np.ndarray) -> float:
+        """Mean absolute step between neighbouring region pixels of ``image``.
+
+        NaN for a region without two neighbouring pixels.
+        """
+        return self._mean_step(image, across_border=False)
+
+    def _mean_step(self, image: np.ndarray, across_border: bool) -> float:
+        x, y = self.corner
+        height, width = self.region.shape
+        window = np.asarray(image, dtype=float)[y : y + height, x : x + width]
+        steps = []
+        for dy, dx in solvers.NEIGHBOURS:
+            neighbour = (slice(1 + dy, height - 1 + dy), slice(1 + dx, width - 1 + dx))
+            other = self.region[neighbour]
+            pairs = self.region[1:-1, 1:-1] & (~other if across_border else other)
+            steps.append(np.abs(window[1:-1, 1:-1][pairs] - window[neighbour][pairs]).reshape(-1))
+        steps = np.concatenate(steps)
+        return float(steps.mean()) if steps.size else float("nan")
+
+    def _as_solution(self, solution: Any) -> np.ndarray:
+        array = as_float_array(solution, "solution")
+        if array.shape != self.values.shape:
+            raise ValueError(
+                f"solution must have the problem's shape {self.values.shape}; got {array.shape}"
+            )
+        require_finite(array, "solution")
+        return array
+
+
+def clone_problem(
+    background: Any, foreground: Any, offset: Any, mask: Any = None, guidance: str = "plain"
+) -> PoissonProblem:
+    """The Poisson problem :func:`seamless_clone` solves, for :func:`solve` and :func:`convergence`.
+
+    Examples
+    --------
+    >>> problem = clone_problem(np.zeros((6, 6)), np.ones((4, 5)), (1, 2))
+    >>> problem.corner, problem.region.shape, problem.rectangular
+    ((1, 2), (4, 5), True)
+    """
+    background, foreground, corner, mask = clone_inputs(background, foreground, offset, mask)
+    guidance = as_choice(guidance, "guidance", GUIDANCE)
+    return build_clone_problem(background, foreground, corner, mask, guidance)
+
+
+def inpaint_problem(image: Any, mask: Any) -> PoissonProblem:
+    """The Laplace problem :func:`inpaint` solves: the hole, cropped with a ring around it.
+
+    Examples
+    --------
+    >>> hole = np.zeros((6, 6), bool); hole[2:4, 3] = True
+    >>> problem = inpaint_problem(np.zeros((6, 6)), hole)
+    >>> problem.corner, problem.region.astype(int)
+    ((2, 1), array([[0, 0, 0],
+           [0, 1, 0],
+           [0, 1, 0],
+           [0, 0, 0]]))
+    """
+    image = as_image(image, "image")
+    mask = _as_mask(mask, "mask", image.shape[:2], "the image's (H, W)")
+    rows, columns = np.nonzero(mask)
+    height, width = mask.shape
+    edge = (rows == 0) | (rows == height - 1) | (columns == 0) | (columns == width - 1)
+    if edge.any():
+        where = (int(columns[edge][0]), int(rows[edge][0]))
+        raise ValueError(
+            f"mask touches the image border, e.g. at (x, y) = {where}: inpaint needs known "
+            "pixels all around the hole, so leave the first and last rows and columns "
+            "unmasked (or pad the image)"
+        )
+    top, left = rows.min() - 1, columns.min() - 1
+    window = (slice(top, rows.max() + 2), slice(left, columns.max() + 2))
+    values = image[window].copy()
+    return PoissonProblem(values, mask[window].copy(), np.zeros_like(values), (int(left), int(top)))
+
+
+# --- building the problem -------------------------------------------------
+
+
+def build_clone_problem(
+    background: np.ndarray,
+    foreground: np.ndarray,
+    corner: tuple[int, int],
+    mask: np.ndarray | None,
+    guidance: str,
+) -> PoissonProblem:
+    """:func:`clone_problem` on inputs that :func:`clone_inputs` has checked."""
+    height, width = foreground.shape[:2]
+    if mask is None:
+        mask = np.zeros((height, width), bool)
+        mask[1:-1, 1:-1] = True
+    rows, columns = np.nonzero(mask)
+    top, bottom = rows.min() - 1, rows.max() + 2
+    left, right = columns.min() - 1, columns.max() + 2
+    region = mask[top:bottom, left:right].copy()
+    crop = (corner[0] + left, corner[1] + top)
+    f = foreground[top:bottom, left:right]
+    b = window_at(background, crop, region.shape)
+    values = np.where(_channels_last(region, f), f, b)
+    source = _guidance_sum(planes_of(f), planes_of(b), region, guidance)
+    return PoissonProblem(values, region, image_of(source, f), (int(crop[0]), int(crop[1])))
+
+
+def _guidance_sum(f: np.ndarray, b: np.ndarray, region: np.ndarray, guidance: str) -> np.ndarray:
+    """``sum_q v_pq`` over the four neighbours of each region pixel (channels first)."""
+    _, height, width = f.shape
+    total = np.zeros_like(f)
+    for dy, dx in solvers.NEIGHBOURS:
+        neighbour = (slice(None), slice(1 + dy, height - 1 + dy), slice(1 + dx, width - 1 + dx))
+        step = f[:, 1:-1, 1:-1] - f[neighbour]
+        if guidance == "mixed":
+            background_step = b[:, 1:-1, 1:-1] - b[neighbour]
+            step = np.where(np.abs(step) > np.abs(background_step), step, background_step)
+        total[:, 1:-1, 1:-1] += step
+    return total * region
+
+
+def window_in(problem: PoissonProblem, image: np.ndarray, corner: tuple[int, int]) -> np.ndarray:
+    """The problem's window cut from ``image``, whose top-left pixel sits at ``corner``."""
+    x = problem.corner[0] - corner[0]
+    y = problem.corner[1] - corner[1]
+    height, width = problem.region.shape
+    return image[y : y + height, x : x + width]
+
+
+def window_at(image: np.ndarray, corner: tuple[int, int], shape: tuple[int, int]) -> np.ndarray:
+    """The ``shape`` window of ``image`` whose top-left pixel is ``corner = (x, y)``."""
+    x, y = corner
+    return image[y : y + shape[0], x : x + shape[1]]
+
+
+def _channels_last(mask: np.ndarray, like: np.ndarray) -> np.ndarray:
+    return mask if like.ndim == 2 else mask[..., None]
+
+
+def planes_of(image: np.ndarray) -> np.ndarray:
+    """``(h, w)`` or ``(h, w, 3)`` to channels first, ``(C, h, w)``."""
+    if image.ndim == 2:
+        return image[None].astype(float)
+    return np.ascontiguousarray(np.moveaxis(image, -1, 0), dtype=float)
+
+
+def image_of(planes: np.ndarray, like: np.ndarray) -> np.ndarray:
+    """Back from channels first to the layout of ``like``."""
+    if like.ndim == 2:
+        return planes[0].copy()
+    return np.ascontiguousarray(np.moveaxis(planes, 0, -1))
+
+
+# --- input checks -------------------------------------------------------------
+
+
+def clone_inputs(
+    background: Any, foreground: Any, offset: Any, mask: Any
+) -> tuple[np.ndarray, np.ndarray, tuple[int, int], np.ndarray | None]:
+    """Validate seamless_clone's inputs once; every message names the parameter."""
+    _same_kind_of_dtype(background, foreground)
+    background = as_image(background, "background")
+    foreground = as_image(foreground, "foreground")
+    if background.ndim != foreground.ndim:
+        kinds = {2: "gray", 3: "RGB"}
+        raise ValueError(
+            f"foreground is {kinds[foreground.ndim]} (shape {foreground.shape}) but background "
+            f"is {kinds[background.ndim]} (shape {background.shape}): both must be gray or "
+            "both RGB (course.images.to_gray converts)"
+        )
+    x, y = _as_offset(offset)
+    height, width = foreground.shape[:2]
+    full_height, full_width = background.shape[:2]
+    if not (0 <= x and x + width <= full_width and 0 <= y and y + height <= full_height):
+        raise ValueError(
+            f"foreground of shape {foreground.shape[:2]} at offset (x, y) = ({x}, {y}) does not "
+            f"fit inside background of shape {background.shape[:2]}: it would cover columns "
+            f"{x} to {x + width - 1} and rows {y} to {y + height - 1}; the background has "
+            f"columns 0 to {full_width - 1} and rows 0 to {full_height - 1}"
+        )
+    if height < 3 or width < 3:
+        raise ValueError(
+            f"foreground must be at least 3 x 3 pixels: its outer ring is the boundary and the "
+            f"region lies inside it; got shape {foreground.shape[:2]}"
+        )
+    if mask is not None:
+        mask = _as_mask(mask, "mask", (height, width), "the foreground's (h, w)")
+        ring = mask.copy()
+        ring[1:-1, 1:-1] = False
+        if ring.any():
+            rows, columns = np.nonzero(ring)
+            raise ValueError(
+                "mask must be False on the foreground's outer ring (its first and last rows "
+                "and columns), which is the boundary and takes the background's values; got "
+                f"{rows.size} masked pixels there, e.g. (x, y) = ({columns[0]}, {rows[0]})"
+            )
+    return background, foreground, (x, y), mask
+
+
+def _same_kind_of_dtype(background: Any, foreground: Any) -> None:
+    kinds = [np.asarray(image).dtype for image in (background, foreground)]
+    floating = [np.issubdtype(kind, np.floating) for kind in kinds]
+    if floating[0] != floating[1]:
+        raise TypeError(
+            f"foreground has dtype {kinds[1]} but background has dtype {kinds[0]}: convert both "
+            "to float images in [0, 1] (a uint8 image / 255)"
+        )
+
+
+def _as_offset(offset: Any) -> tuple[int, int]:
+    if isinstance(offset, (str, bytes)) or not hasattr(offset, "__len__") or len(offset) != 2:
+        raise ValueError(
+            "offset must be a pair (x, y) of integers, the column and row of the foreground's "
+            f"top-left pixel in the background; got {_describe(offset)}"
+        )
+    return as_int(offset[0], "offset[0] (x)"), as_int(offset[1], "offset[1] (y)")
+
+
+def _as_mask(mask: Any, name: str, shape: tuple[int, int], what: str) -> np.ndarray:
+    array = np.asarray(mask)
+    if array.dtype != bool:
+        values = as_float_array(array, name)
+        require_finite(values, name)
+        if not np.isin(values, (0.0, 1.0)).all():
+            raise ValueError(
+                f"{name} must be boolean (or 0 and 1); got values from {values.min():g} to "
+                f"{values.max():g}"
+            )
+        array = values == 1.0
+    if array.shape != shape:
+        raise ValueError(f"{name} must have shape {shape}, {what}; got shape {array.shape}")
+    if not array.any():
+        raise ValueError(f"{name} is empty: it selects no pixel, so there is nothing to solve")
+    return array.copy()

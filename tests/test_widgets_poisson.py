@@ -1,0 +1,62 @@
+"""course.widgets.poisson: the sweep slider shows the library's iterate and its error."""
+
+import numpy as np
+import pytest
+import scipy.ndimage
+
+from course import poisson
+from course.widgets import PoissonIterationApp
+
+RNG = np.random.default_rng(4)
+BACKGROUND = scipy.ndimage.gaussian_filter(RNG.random((40, 60, 3)), (3, 3, 0)) * 0.5 + 0.25
+FOREGROUND = RNG.random((20, 30, 3)) * 0.3 + 0.6
+OFFSET = (15, 10)
+
+
+@pytest.fixture
+def app():
+    app = PoissonIterationApp(BACKGROUND, FOREGROUND, OFFSET, stops=(0, 1, 10, 50))
+    app.refresh()
+    return app
+
+
+def test_moving_the_sweep_slider_shows_the_library_iterate(app):
+    before = app.view.image.value
+    app.controls["sweeps"].value = 50
+    assert app.view.image.value != before
+    expected = poisson.seamless_clone(
+        BACKGROUND, FOREGROUND, OFFSET, method="jacobi", iterations=50, clip=False
+    )
+    shown = np.asarray(app.picture.get_array())
+    assert np.allclose(shown, np.clip(expected, 0, 1)[app.window], atol=1e-12)
+    assert "Jacobi, 50 sweeps" in app.caption.get_text()
+
+
+def test_the_error_panel_is_the_distance_to_the_exact_solution(app):
+    app.controls["method"].value = "sor"
+    app.controls["sweeps"].value = 10
+    iterate = poisson.seamless_clone(
+        BACKGROUND, FOREGROUND, OFFSET, method="sor", iterations=10, clip=False
+    )
+    exact = poisson.seamless_clone(BACKGROUND, FOREGROUND, OFFSET, clip=False)
+    error = np.abs(iterate - exact).max(axis=2) * 255
+    assert np.allclose(np.asarray(app.error_image.get_array()), error[app.window], atol=1e-9)
+    assert f"error up to {error.max():.1f} grey levels" in app.caption.get_text()
+
+
+def test_more_sweeps_leave_less_error_and_going_back_reuses_the_iterate(app):
+    errors = []
+    for sweeps in (1, 10, 50):
+        app.controls["sweeps"].value = sweeps
+        errors.append(np.asarray(app.error_image.get_array()).max())
+    assert errors[0] > errors[1] > errors[2]
+    kept = app.iterate("jacobi", 10)
+    app.controls["sweeps"].value = 10
+    assert app.iterate("jacobi", 10) is kept
+
+
+def test_the_default_scene_is_the_lab_scene():
+    app = PoissonIterationApp(stops=(0, 1))
+    assert app.problem.corner == (500, 300)
+    assert app.problem.region.shape == (111, 280)
+    assert app.describe() == "PoissonIterationApp(method='jacobi', sweeps=0)"

@@ -108,10 +108,16 @@ def served(tmp_path_factory) -> Path:
     """A private copy of the notebooks, and Jupyter folders of its own."""
     root = tmp_path_factory.mktemp("jupyter")
     shutil.copytree(REPOSITORY / "notebooks", root / "notebooks")
-    # No "news" question popping up over the notebook in the screenshots.
-    settings = root / "settings" / "@jupyterlab" / "apputils-extension"
-    settings.mkdir(parents=True)
-    (settings / "notification.jupyterlab-settings").write_text(json.dumps({"fetchNews": "false"}))
+    settings = {
+        # No "news" question popping up over the notebook in the screenshots.
+        "apputils-extension/notification": {"fetchNews": "false"},
+        # No empty page after the last cell: the screenshots end where the notebook does.
+        "notebook-extension/tracker": {"scrollPastEnd": False},
+    }
+    for name, values in settings.items():
+        path = root / "settings" / "@jupyterlab" / f"{name}.jupyterlab-settings"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(json.dumps(values))
     return root
 
 

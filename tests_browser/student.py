@@ -117,21 +117,47 @@ def wait_for_new_picture(image: Locator, old_src: str, settle: float = 0.8) -> N
     raise AssertionError("the picture kept changing for 60 s after the key presses")
 
 
-def tall_screenshot(page: Page, path: Path, width: int = 1280, limit: int = 8192) -> None:
-    """A screenshot of the whole page, even when its content scrolls inside a panel.
+_SCROLLER = """() => {
+    // The element that scrolls the notebook: the tallest one that overflows and may scroll.
+    let best = document.scrollingElement;
+    for (const element of document.querySelectorAll('*')) {
+        const style = getComputedStyle(element).overflowY;
+        if ((style === 'auto' || style === 'scroll') && element.clientHeight > 0
+                && element.scrollHeight > element.clientHeight
+                && element.scrollHeight > best.scrollHeight) {
+            best = element;
+        }
+    }
+    window.__scroller = best;
+    return [best.scrollHeight, best.clientHeight];
+}"""
+
+
+def tall_screenshot(page: Page, path: Path, width: int = 1280, limit: int = 8192) -> list[Path]:
+    """Screenshots of the whole notebook, from its top, even though it scrolls inside a panel.
 
     JupyterLab and Voila scroll the notebook inside an element, so a "full
-    page" screenshot shows only the window: make the window as tall as the
-    tallest scrolling content instead (Chromium captures at most 8192 px of
-    height; a longer notebook is cut there), then restore it.
+    page" screenshot shows only the window. The window is made as tall as
+    the notebook instead; Chromium captures at most 8192 px of height, so a
+    longer notebook is taken in parts (``name.png``, ``name-part2.png``, ...),
+    scrolling the panel between them. Returns the files written.
     """
-    height = page.evaluate(
-        "() => Math.max(...[...document.querySelectorAll('*')].map(e => e.scrollHeight))"
-    )
-    page.set_viewport_size({"width": width, "height": min(int(height) + 150, limit)})
-    page.wait_for_timeout(500)
-    page.screenshot(path=path)
+    total, visible = page.evaluate(_SCROLLER)
+    page.set_viewport_size({"width": width, "height": min(total - visible + 900 + 50, limit)})
+    page.wait_for_timeout(300)
+    total, visible = page.evaluate(_SCROLLER)
+    paths, offset = [], 0
+    while True:
+        page.evaluate("offset => { window.__scroller.scrollTop = offset; }", offset)
+        page.wait_for_timeout(500)  # cells scrolled into view render their content
+        part = path if not paths else path.with_name(f"{path.stem}-part{len(paths) + 1}.png")
+        page.screenshot(path=part)
+        paths.append(part)
+        if offset + visible >= total or visible <= 0:
+            break
+        offset = min(offset + visible, total - visible)
     page.set_viewport_size({"width": width, "height": 900})
+    return paths
 
 
 def first_app(page: Page) -> Locator:

@@ -8,7 +8,24 @@ notebook is registered here, one :class:`Lesson` per number in
 its key pictures (for ``python -m course gallery`` and the course map), and
 the slider that the browser tests move like a student and what the picture
 must show afterwards. A notebook without an entry is still listed, tested
-and exported; adding the entry is all a new lesson needs.
+and exported; adding the entry is all a new lesson needs. For example::
+
+    "03": Lesson(
+        "03",
+        handout="GAMES101 homework 4, improvement part (seed 000): anti-aliasing",
+        teaches="one line on what the lesson teaches",
+        pictures=(Picture("03_name", "caption", lambda: app_picture(SomeApp(...))),),
+        slider=SliderMove(
+            build=lambda: SomeApp(...),  # exactly as the notebook's first app cell
+            control="width",  # a key of app.controls: an IntSlider or FloatSlider
+            moves=(("ArrowRight", "ArrowRight"), ("End",)),
+            landmarks=_some_landmarks,  # app -> [Landmark], from the library's functions
+        ),
+    ),
+
+where ``_some_landmarks(app)`` computes, with the library (not the app's
+artists), a few pixels whose colour is then known, using
+:func:`landmark_at` to map data coordinates to the picture.
 """
 
 from __future__ import annotations

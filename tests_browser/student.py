@@ -227,6 +227,16 @@ def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem
     """Every registered move on the first app's slider, each checked and screenshotted."""
     control = spec.build().controls[spec.control]
     app = first_app(page)
+    # Before any move, the page must show what spec.build() draws: the registry
+    # entry builds the same app as the notebook's first app cell.
+    shown = read_picture(app.locator("img.widget-image").first)
+    expected, _ = library_picture(spec, control.value)
+    assert shown.shape == expected.shape
+    differing = (np.abs(shown - expected) > PIXEL_TOLERANCE).any(axis=2).mean()
+    assert differing <= DIFFERING_SHARE, (
+        f"before any move, {differing:.2%} of the pixels differ from what the registry's "
+        "build() draws: does it build the app as the notebook's first app cell does?"
+    )
     for step, keys in enumerate(spec.moves, start=1):
         move = press_on_slider(app, control.description, keys, type(control.value))
         name = f"{stem}-move{step}-{'-'.join(keys)}-{spec.control}{move.value:g}"

@@ -3,13 +3,14 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 NOTEBOOKS := $(sort $(wildcard notebooks/[0-9]*.ipynb))
-SOURCES := $(wildcard course tests benchmarks notebooks)
+SOURCES := $(wildcard course tests tests_browser benchmarks notebooks)
+APP_PORT ?= 8866
 # JupyterLab refuses to start as root without this flag (containers run as root).
 ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
-.PHONY: lab test lint format notebooks bench clean
+.PHONY: lab app student test test-browser lint format notebooks bench clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -23,6 +24,14 @@ $(VENV)/.%-installed: pyproject.toml | $(BIN)/python
 lab: $(VENV)/.lab-installed $(VENV)/.test-installed
 	$(BIN)/jupyter lab notebooks/ $(ROOT_FLAG)
 
+# The lessons as apps for a lecture hall: Voila, code hidden, sliders live.
+app: $(VENV)/.lab-installed $(VENV)/.test-installed
+	$(BIN)/voila notebooks/ --no-browser --Voila.ip=127.0.0.1 --port=$(APP_PORT)
+
+# The student edition: solutions replaced by stubs, outputs cleared, in student/.
+student: $(VENV)/.test-installed
+	$(BIN)/python -m course student --out student --force
+
 lint: $(VENV)/.test-installed
 	$(BIN)/ruff format --check $(SOURCES)
 	$(BIN)/ruff check $(SOURCES)
@@ -34,6 +43,11 @@ format: $(VENV)/.test-installed
 test: lint
 	$(BIN)/python -m pytest -n 2 --dist loadfile course tests \
 		--nbval --nbval-current-env --nbval-cell-timeout=300 $(NOTEBOOKS)
+
+# Every notebook run in JupyterLab and one through Voila, in Debian's Chromium
+# (/usr/bin/chromium); screenshots in build/screenshots/. Not part of `make test`.
+test-browser: $(VENV)/.browser-installed $(VENV)/.test-installed
+	$(BIN)/python -m pytest -p no:cacheprovider --timeout=900 --durations=0 -v tests_browser
 
 notebooks: $(VENV)/.test-installed
 	for notebook in $(NOTEBOOKS); do \

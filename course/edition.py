@@ -1,0 +1,147 @@
+"""The student edition: every notebook with its solutions replaced by stubs.
+
+An exercise cell in a lesson is tagged ``solution``: it defines the
+student's function and ends with the checker call, for example::
+
+    def recursive_bezier(control_points, t):
+        ...the working solution...
+
+
+    check.recursive_bezier(recursive_bezier)
+
+The student edition keeps every line of that cell but the bodies of its
+top-level functions: each ``def`` line (with its decorators) and docstring
+stay, and the body becomes ``raise NotImplementedError("your code here")``.
+So the notebook still runs from top to bottom, and the checker's report on
+the stub reads ``FAIL ...: case 1 raised NotImplementedError: your code
+here`` until the student writes the function. The cell's tag becomes
+``exercise``; every output and execution count is cleared, as ThinkDSP's
+student notebooks do.
+"""
+
+from __future__ import annotations
+
+import ast
+import copy
+import json
+from pathlib import Path
+from typing import Any
+
+from course.gallery import check_output_folder
+from course.lessons import NOTEBOOKS, notebooks
+
+__all__ = [
+    "SOLUTION_TAG",
+    "STUB_LINE",
+    "exercise_stub",
+    "solution_cells",
+    "student_notebook",
+    "write_student_edition",
+]
+
+SOLUTION_TAG = "solution"
+EXERCISE_TAG = "exercise"
+STUB_LINE = 'raise NotImplementedError("your code here")'
+
+
+def exercise_stub(source: str) -> str:
+    """The cell ``source`` with each top-level function's body replaced by a stub.
+
+    Examples
+    --------
+    >>> print(exercise_stub('''def area(w, h):
+    ...     \"\"\"Width times height.\"\"\"
+    ...     return w * h
+    ...
+    ...
+    ... check.area(area)'''))
+    def area(w, h):
+        \"\"\"Width times height.\"\"\"
+        raise NotImplementedError("your code here")
+    <BLANKLINE>
+    <BLANKLINE>
+    check.area(area)
+    """
+    tree = ast.parse(source)
+    functions = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
+    if not functions:
+        raise ValueError(
+            "source: a solution cell must define the exercise's function at top level "
+            f"(def name(...): ...); got no def in:\n{source}"
+        )
+    lines = source.splitlines()
+    # Replace from the bottom up, so earlier line numbers stay valid.
+    for function in reversed(functions):
+        body = function.body
+        first = body[0]
+        has_docstring = (
+            isinstance(first, ast.Expr)
+            and isinstance(first.value, ast.Constant)
+            and isinstance(first.value.value, str)
+        )
+        if first.lineno == function.lineno:
+            raise ValueError(
+                f"source: put the body of {function.name} on its own lines, not after "
+                f"'def ...:' (line {function.lineno})"
+            )
+        indent = " " * first.col_offset
+        if has_docstring:
+            keep = first.end_lineno
+        else:
+            # Comments above the first statement belong to the body (they may give
+            # the answer away); the header ends at the last code line before them.
+            keep = first.lineno - 1
+            while keep > function.lineno and lines[keep - 1].strip()[:1] in ("", "#"):
+                keep -= 1
+        lines[keep : function.end_lineno] = [indent + STUB_LINE]
+    return "\n".join(lines)
+
+
+def _tags(cell: dict[str, Any]) -> list[str]:
+    return list(cell.get("metadata", {}).get("tags", []))
+
+
+def solution_cells(notebook: dict[str, Any]) -> list[int]:
+    """Indices of the cells tagged ``solution``."""
+    return [
+        index
+        for index, cell in enumerate(notebook["cells"])
+        if cell["cell_type"] == "code" and SOLUTION_TAG in _tags(cell)
+    ]
+
+
+def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
+    """A copy of ``notebook`` (nbformat 4 JSON) with stubs for solutions and no outputs."""
+    student = copy.deepcopy(notebook)
+    for index in solution_cells(student):
+        cell = student["cells"][index]
+        cell["source"] = exercise_stub("".join(cell["source"]))
+        tags = [EXERCISE_TAG if tag == SOLUTION_TAG else tag for tag in _tags(cell)]
+        cell["metadata"]["tags"] = tags
+    for cell in student["cells"]:
+        if cell["cell_type"] == "code":
+            cell["outputs"] = []
+            cell["execution_count"] = None
+    return student
+
+
+def write_student_edition(
+    out: str | Path, folder: str | Path = NOTEBOOKS, force: bool = False
+) -> list[Path]:
+    """Write the student edition of every notebook in ``folder`` into ``out``.
+
+    Refuses a non-empty ``out`` unless ``force``; never deletes a file (with
+    ``force``, notebooks of the same names are replaced). Returns the paths
+    written.
+    """
+    out = Path(out)
+    check_output_folder(out, force)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for book in notebooks(folder, index=True):
+        notebook = json.loads(book.path.read_text(encoding="utf-8"))
+        path = out / book.path.name
+        text = json.dumps(student_notebook(notebook), indent=1, ensure_ascii=False)
+        path.write_text(text + "\n", encoding="utf-8")
+        written.append(path)
+    return written

@@ -1,0 +1,117 @@
+"""The gallery: every lesson's key figures as PNG files, without Jupyter.
+
+For slides and for readers without Jupyter: ``python -m course gallery --out
+DIR`` renders the pictures registered in :data:`course.lessons.LESSONS` for
+the lessons whose notebooks exist. It refuses to write into a folder that
+already holds anything unless told ``force=True``, and it never deletes a
+file: with ``force`` it adds its own files, replacing only files of the same
+names.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import TextIO
+
+from course.lessons import NOTEBOOKS, Picture, notebooks
+
+__all__ = ["ProgressBar", "check_output_folder", "gallery_pictures", "write_gallery"]
+
+
+class ProgressBar:
+    """A one-line text progress bar, redrawn in place on a terminal.
+
+    Examples
+    --------
+    >>> import io
+    >>> stream = io.StringIO()
+    >>> bar = ProgressBar(4, stream, width=8)
+    >>> bar.advance("first.png")
+    >>> stream.getvalue()
+    '\\r[##------] 1/4 first.png'
+    """
+
+    def __init__(self, total: int, stream: TextIO | None = None, width: int = 30) -> None:
+        self.total, self.done, self.width = total, 0, width
+        self.stream = sys.stderr if stream is None else stream
+        self._last_length = 0
+
+    def advance(self, label: str) -> None:
+        self.done += 1
+        filled = round(self.width * self.done / max(self.total, 1))
+        line = f"[{'#' * filled}{'-' * (self.width - filled)}] {self.done}/{self.total} {label}"
+        # Pad over a longer previous label, since "\r" only moves the cursor.
+        self.stream.write("\r" + line.ljust(self._last_length))
+        self._last_length = len(line)
+        self.stream.flush()
+
+    def close(self) -> None:
+        self.stream.write("\n")
+        self.stream.flush()
+
+
+def check_output_folder(out: Path, force: bool) -> None:
+    """Refuse a file, or a folder that holds anything unless ``force``: nothing is deleted."""
+    if out.exists() and not out.is_dir():
+        raise NotADirectoryError(f"out: expected a folder; got the file {out}")
+    if out.is_dir() and any(out.iterdir()) and not force:
+        raise FileExistsError(
+            f"out: {out} is not empty; choose an empty folder, or pass force=True "
+            "(--force) to add these files to it (files of the same names are replaced, "
+            "nothing is deleted)"
+        )
+
+
+def gallery_pictures(folder: str | Path = NOTEBOOKS) -> list[Picture]:
+    """The registered pictures of every lesson notebook in ``folder``, in lesson order."""
+    return [picture for book in notebooks(folder) for picture in book.pictures]
+
+
+def write_gallery(
+    out: str | Path,
+    force: bool = False,
+    pictures: list[Picture] | None = None,
+    stream: TextIO | None = None,
+) -> list[Path]:
+    """Render ``pictures`` (default: :func:`gallery_pictures`) as ``out/<name>.png``.
+
+    Parameters
+    ----------
+    out : path
+        The folder to write; created if missing.
+    force : bool
+        Write into a folder that is not empty. Files of other names are left
+        alone; a file of the same name as a picture is replaced.
+    pictures : list of Picture, optional
+    stream : text stream, optional
+        Where the progress bar goes (default standard error).
+
+    Returns
+    -------
+    list of Path
+        The files written, in order.
+
+    Raises
+    ------
+    FileExistsError
+        If ``out`` holds anything and ``force`` is false, before anything is written.
+    NotADirectoryError
+        If ``out`` exists and is not a folder.
+    """
+    out = Path(out)
+    check_output_folder(out, force)
+    pictures = gallery_pictures() if pictures is None else pictures
+    names = [picture.name for picture in pictures]
+    if len(set(names)) != len(names):
+        raise ValueError(f"pictures: expected distinct names; got {names}")
+    out.mkdir(parents=True, exist_ok=True)
+    bar = ProgressBar(len(pictures), stream)
+    written = []
+    for picture in pictures:
+        path = out / f"{picture.name}.png"
+        path.write_bytes(picture.render())
+        written.append(path)
+        bar.advance(path.name)
+    bar.close()
+    return written

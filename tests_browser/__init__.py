@@ -1,0 +1,1 @@
+"""Browser tests: the lessons in JupyterLab and Voila, in Chromium (make test-browser)."""

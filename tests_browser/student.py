@@ -1,0 +1,245 @@
+"""What a student does in the browser, as Playwright steps, and what the test then reads.
+
+Shared by the JupyterLab and the Voila tests: reading an app's picture out
+of the page, moving a slider with the keyboard, and comparing the picture
+with the one the library renders in this process for the same value.
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+import json
+import re
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from PIL import Image
+from playwright.sync_api import Locator, Page
+
+from course.lessons import Landmark, SliderMove
+
+SLIDER_APP_MIME = "application/vnd.jupyter.widget-view+json"
+# A picture matches the library's when at most this share of its pixels
+# differ by more than PIXEL_TOLERANCE in a channel (the kernel and this
+# process run the same matplotlib; a differing value moves whole artists).
+PIXEL_TOLERANCE = 24
+DIFFERING_SHARE = 0.001
+
+_READ_IMAGE = """async image => {
+    const response = await fetch(image.src);
+    const bytes = new Uint8Array(await response.arrayBuffer());
+    let text = "";
+    for (let i = 0; i < bytes.length; i += 0x8000) {
+        text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    }
+    return btoa(text);
+}"""
+
+_ERROR_TEXT = re.compile(
+    r"Traceback \(most recent call last\)|^\w*(Error|Exception)\b|Error displaying widget",
+    re.MULTILINE,
+)
+
+
+def slider_apps_in(path: Path) -> int:
+    """How many slider apps the committed notebook shows (widget view plus still PNG)."""
+    notebook = json.loads(path.read_text(encoding="utf-8"))
+    return sum(
+        1
+        for cell in notebook["cells"]
+        for output in cell.get("outputs", [])
+        if SLIDER_APP_MIME in output.get("data", {}) and "image/png" in output.get("data", {})
+    )
+
+
+def rgb(png: bytes) -> np.ndarray:
+    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(int)
+
+
+def read_picture(image: Locator) -> np.ndarray:
+    """The PNG an image widget shows, fetched from its blob URL, as RGB."""
+    return rgb(base64.b64decode(image.evaluate(_READ_IMAGE)))
+
+
+def error_outputs(page: Page) -> list[str]:
+    """Texts of outputs that show an error: tracebacks and widgets that failed to display."""
+    texts = page.locator(
+        ".jp-OutputArea-output[data-mime-type='application/vnd.jupyter.stderr'],"
+        " .jp-OutputArea-output[data-mime-type='application/vnd.jupyter.error'],"
+        " .jupyter-widgets .jp-RenderedText"
+    ).evaluate_all("outputs => outputs.map(output => output.textContent)")
+    texts += page.get_by_text("Error displaying widget").all_text_contents()
+    return [text[:2000] for text in texts if _ERROR_TEXT.search(text)]
+
+
+def unrendered_apps(page: Page) -> list[str]:
+    """Widget images that have no picture: empty src, not loaded, or zero size."""
+    return page.locator("img.widget-image").evaluate_all(
+        """images => images
+            .filter(image => !image.src || !image.complete || image.naturalWidth === 0)
+            .map(image => image.outerHTML.slice(0, 200))"""
+    )
+
+
+def wait_for_pictures(page: Page, count: int, timeout: float = 60) -> None:
+    """Until ``count`` widget images have loaded a picture."""
+    page.wait_for_function(
+        """count => [...document.querySelectorAll('img.widget-image')]
+            .filter(image => image.src && image.complete && image.naturalWidth > 0)
+            .length >= count""",
+        arg=count,
+        timeout=timeout * 1000,
+    )
+
+
+def wait_for_new_picture(image: Locator, old_src: str, settle: float = 0.8) -> None:
+    """Until the image's src changed and then stayed the same for ``settle`` seconds.
+
+    Every key press sends a value; the kernel answers each with a picture, so
+    the last picture is the one that stops changing.
+    """
+    image.page.wait_for_function(
+        "([image, old]) => image.src !== old && image.complete && image.naturalWidth > 0",
+        arg=[image.element_handle(), old_src],
+    )
+    src, since = image.get_attribute("src"), time.monotonic()
+    deadline = since + 60
+    while time.monotonic() < deadline:
+        time.sleep(0.1)
+        now = image.get_attribute("src")
+        if now != src:
+            src, since = now, time.monotonic()
+        elif time.monotonic() - since >= settle:
+            return
+    raise AssertionError("the picture kept changing for 60 s after the key presses")
+
+
+_SCROLLER = """() => {
+    // The element that scrolls the notebook: the tallest one that overflows and may scroll.
+    let best = document.scrollingElement;
+    for (const element of document.querySelectorAll('*')) {
+        const style = getComputedStyle(element).overflowY;
+        if ((style === 'auto' || style === 'scroll') && element.clientHeight > 0
+                && element.scrollHeight > element.clientHeight
+                && element.scrollHeight > best.scrollHeight) {
+            best = element;
+        }
+    }
+    window.__scroller = best;
+    return [best.scrollHeight, best.clientHeight];
+}"""
+
+
+def tall_screenshot(page: Page, path: Path, width: int = 1280, limit: int = 8192) -> list[Path]:
+    """Screenshots of the whole notebook, from its top, even though it scrolls inside a panel.
+
+    JupyterLab and Voila scroll the notebook inside an element, so a "full
+    page" screenshot shows only the window. The window is made as tall as
+    the notebook instead; Chromium captures at most 8192 px of height, so a
+    longer notebook is taken in parts (``name.png``, ``name-part2.png``, ...),
+    scrolling the panel between them. Returns the files written.
+    """
+    total, visible = page.evaluate(_SCROLLER)
+    page.set_viewport_size({"width": width, "height": min(total - visible + 900 + 50, limit)})
+    page.wait_for_timeout(300)
+    total, visible = page.evaluate(_SCROLLER)
+    paths, offset = [], 0
+    while True:
+        page.evaluate("offset => { window.__scroller.scrollTop = offset; }", offset)
+        page.wait_for_timeout(500)  # cells scrolled into view render their content
+        part = path if not paths else path.with_name(f"{path.stem}-part{len(paths) + 1}.png")
+        page.screenshot(path=part)
+        paths.append(part)
+        if offset + visible >= total or visible <= 0:
+            break
+        offset = min(offset + visible, total - visible)
+    page.set_viewport_size({"width": width, "height": 900})
+    return paths
+
+
+def first_app(page: Page) -> Locator:
+    """The first slider app on the page: the widget box holding the first widget image."""
+    return page.locator(".widget-hbox").filter(has=page.locator("img.widget-image")).first
+
+
+def slider(app: Locator, description: str) -> Locator:
+    label = app.page.locator("label.widget-label").filter(
+        has_text=re.compile(rf"^\s*{re.escape(description)}\s*$")
+    )
+    return app.locator(".widget-slider").filter(has=label).first
+
+
+@dataclass
+class Move:
+    """One key sequence pressed on a slider, and what the browser then showed."""
+
+    keys: tuple[str, ...]
+    value: float
+    before: np.ndarray
+    after: np.ndarray
+
+
+def press_on_slider(app: Locator, description: str, keys: tuple[str, ...], value_type) -> Move:
+    """Focus the slider's handle, press ``keys`` like a student, wait for the new picture."""
+    image = app.locator("img.widget-image").first
+    control = slider(app, description)
+    handle = control.locator(".noUi-handle").first
+    handle.scroll_into_view_if_needed()
+    before_src = image.get_attribute("src")
+    before = read_picture(image)
+    handle.focus()
+    for key in keys:
+        handle.press(key)
+    wait_for_new_picture(image, before_src)
+    readout = control.locator(".widget-readout").text_content().strip()
+    return Move(keys, value_type(readout), before, read_picture(image))
+
+
+def library_picture(spec: SliderMove, value) -> tuple[np.ndarray, list[Landmark]]:
+    """The picture the library draws for the app with its control at ``value``, and landmarks."""
+    app = spec.build()
+    app.refresh()
+    app.controls[spec.control].value = value
+    return rgb(app.view.image.value), spec.landmarks(app)
+
+
+def assert_shows_what_the_library_computes(move: Move, spec: SliderMove) -> None:
+    expected, landmarks = library_picture(spec, move.value)
+    assert move.after.shape == expected.shape, (move.after.shape, expected.shape)
+    assert (move.after != move.before).any(), f"{move.keys}: the picture did not change"
+    differing = (np.abs(move.after - expected) > PIXEL_TOLERANCE).any(axis=2).mean()
+    assert differing <= DIFFERING_SHARE, (
+        f"{move.keys} -> {spec.control} = {move.value}: {differing:.2%} of the pixels differ "
+        f"from the library's picture (tolerance {DIFFERING_SHARE:.2%})"
+    )
+    for landmark in landmarks:
+        shown = move.after[landmark.row, landmark.column]
+        assert np.abs(shown - landmark.color).max() <= landmark.tolerance, (
+            f"{landmark.what}: expected colour {landmark.color} at row {landmark.row}, "
+            f"column {landmark.column}; the browser shows {shown.tolist()}"
+        )
+
+
+def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem: str) -> None:
+    """Every registered move on the first app's slider, each checked and screenshotted."""
+    control = spec.build().controls[spec.control]
+    app = first_app(page)
+    # Before any move, the page must show what spec.build() draws: the registry
+    # entry builds the same app as the notebook's first app cell.
+    shown = read_picture(app.locator("img.widget-image").first)
+    expected, _ = library_picture(spec, control.value)
+    assert shown.shape == expected.shape
+    differing = (np.abs(shown - expected) > PIXEL_TOLERANCE).any(axis=2).mean()
+    assert differing <= DIFFERING_SHARE, (
+        f"before any move, {differing:.2%} of the pixels differ from what the registry's "
+        "build() draws: does it build the app as the notebook's first app cell does?"
+    )
+    for step, keys in enumerate(spec.moves, start=1):
+        move = press_on_slider(app, control.description, keys, type(control.value))
+        name = f"{stem}-move{step}-{'-'.join(keys)}-{spec.control}{move.value:g}"
+        app.screenshot(path=folder / f"{name}.png")
+        assert_shows_what_the_library_computes(move, spec)
+    assert not error_outputs(page), error_outputs(page)

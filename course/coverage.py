@@ -262,15 +262,17 @@ def segment_distance(
     (array([1., 1.]), array([0.5, 1. ]), array([-1.,  0.]))
     """
     direction = end - start
-    length2 = np.einsum("...i,...i->...", direction, direction)
+    # hypot, not the squared length: a tiny segment's square underflows to a
+    # subnormal and loses its digits.
+    length = np.hypot(direction[..., 0], direction[..., 1])
     dx, dy = px - start[..., 0], py - start[..., 1]
-    safe = np.where(length2 > 0, length2, 1.0)
-    along = np.clip((dx * direction[..., 0] + dy * direction[..., 1]) / safe, 0.0, 1.0)
+    safe = np.where(length > 0, length, 1.0)
+    unit_x, unit_y = direction[..., 0] / safe, direction[..., 1] / safe
+    along = np.clip((dx * unit_x + dy * unit_y) / safe, 0.0, 1.0)
     distance = np.hypot(dx - along * direction[..., 0], dy - along * direction[..., 1])
-    length = np.sqrt(safe)
     # Left of the direction with y down: the cross product direction x offset < 0.
-    across = (dx * direction[..., 1] - dy * direction[..., 0]) / length
-    across = np.where(length2 > 0, across, distance)
+    across = dx * unit_y - dy * unit_x
+    across = np.where(length > 0, across, distance)
     return distance, along, across
 
 

@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 from matplotlib.path import Path
 
@@ -197,6 +197,8 @@ def test_pixels_near_finds_exactly_the_pairs_within_reach(line, reach):
     a=st.tuples(st.floats(-5, 5), st.floats(-5, 5)),
     b=st.tuples(st.floats(-5, 5), st.floats(-5, 5)),
 )
+# A segment so short that its squared length is subnormal.
+@example(point=(0.0, 0.0), a=(1.0, 0.0), b=(1.0, 1.160787573581926e-159))
 def test_segment_distance_is_the_distance_to_the_nearest_point(point, a, b):
     a, b = np.array(a), np.array(b)
     distance, along, across = segment_distance(

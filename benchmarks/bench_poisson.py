@@ -15,6 +15,13 @@
 
 Each library gets its native input: uint8 BGR for OpenCV, float RGB in [0, 1]
 for course. Times are the best of several runs.
+
+OpenCV's seamlessClone runs on one thread (cv2.setNumThreads(1) does not
+change its time). Ours uses numpy's BLAS, which starts threads for the
+capacitance method's matrix product: when other processes keep every core
+busy, those threads wait on each other and that product takes several times
+longer (the ellipse line then reads 3x or worse instead of 2x). Run with
+OPENBLAS_NUM_THREADS=1 to measure both on one thread.
 """
 
 from __future__ import annotations

@@ -3,7 +3,9 @@
 1. ``seamless_clone`` (default method) against ``cv2.seamlessClone`` with
    NORMAL_CLONE, a 200 x 200 RGB patch into a 512 x 512 image, for the whole
    rectangle and for an elliptical mask. Goals: within 1x (rectangle) and 5x
-   (mask) of OpenCV's time.
+   (mask) of OpenCV's time. Each line names the method ``"auto"`` chose. For
+   the record, the two exact methods for masks on three shapes, to check the
+   rule by which ``"auto"`` picks one (``course.poisson.exact_method``).
 2. On the lab's scene (a 280 x 111 plane in a lake, at (500, 300)), the time
    each method needs to bring the residual to 1e-6, against Jacobi. Jacobi and
    Gauss-Seidel would need tens of thousands of sweeps: they run a capped
@@ -13,6 +15,13 @@
 
 Each library gets its native input: uint8 BGR for OpenCV, float RGB in [0, 1]
 for course. Times are the best of several runs.
+
+OpenCV's seamlessClone runs on one thread (cv2.setNumThreads(1) does not
+change its time). Ours uses numpy's BLAS, which starts threads for the
+capacitance method's matrix product: when other processes keep every core
+busy, those threads wait on each other and that product takes several times
+longer (the ellipse line then reads 3x or worse instead of 2x). Run with
+OPENBLAS_NUM_THREADS=1 to measure both on one thread.
 """
 
 from __future__ import annotations
@@ -62,6 +71,7 @@ def against_opencv():
     rectangle[1:-1, 1:-1] = True
     for name, mask, goal in (("rectangle", None, 1.0), ("ellipse mask", ellipse, 5.0)):
         mask8 = (rectangle if mask is None else mask).astype(np.uint8) * 255
+        chosen = poisson.exact_method(poisson.clone_problem(background, foreground, offset, mask))
         theirs, ours = best_times(
             [
                 lambda m=mask8: cv2.seamlessClone(fg8, bg8, m, centre, cv2.NORMAL_CLONE),
@@ -71,9 +81,9 @@ def against_opencv():
         ratio = ours / theirs
         verdict = "met" if ratio <= goal else "NOT met"
         print(
-            f"seamless_clone 200x200 RGB into 512x512, {name}: {ours * 1e3:.1f} ms, "
-            f"{ratio:.2f}x cv2.seamlessClone NORMAL_CLONE ({theirs * 1e3:.1f} ms) "
-            f"(goal <= {goal:g}x: {verdict})"
+            f"seamless_clone 200x200 RGB into 512x512, {name} (auto = {chosen}): "
+            f"{ours * 1e3:.1f} ms, {ratio:.2f}x cv2.seamlessClone NORMAL_CLONE "
+            f"({theirs * 1e3:.1f} ms) (goal <= {goal:g}x: {verdict})"
         )
     # How far OpenCV is from the Poisson solution on the mask: it solves the
     # mask's bounding box, foreground gradients inside the mask and the
@@ -89,6 +99,26 @@ def against_opencv():
         f"{inside.mean() * 255:.1f} grey levels on average inside the mask, and changes pixels "
         f"outside the mask by up to {outside.max() * 255:.0f} (ours: 0)"
     )
+    # The rule behind "auto": capacitance when the border is short for the area.
+    radius = np.hypot((columns - 99.5) / 98, (rows - 99.5) / 98)
+    ring = (radius < 1) & (radius > 0.94)
+    problems = {
+        "ellipse": poisson.clone_problem(background, foreground, offset, ellipse),
+        "ring 6 px wide": poisson.clone_problem(background, foreground, offset, ring),
+        "the lesson's plane silhouette": poisson.clone_problem(
+            images.lake(), images.plane(), (500, 300), images.plane_mask()
+        ),
+    }
+    for name, problem in problems.items():
+        capacitance, direct = best_times(
+            [lambda m=m, p=problem: poisson.solve(p, m) for m in ("capacitance", "direct")],
+            repeats=7,
+        )
+        print(
+            f"  (information) {name}, {int(problem.region.sum())} pixels: capacitance "
+            f"{capacitance * 1e3:.1f} ms, direct {direct * 1e3:.1f} ms; auto picks "
+            f"{poisson.exact_method(problem)}"
+        )
 
 
 def against_jacobi():
@@ -129,7 +159,7 @@ def against_jacobi():
     count = poisson.sweeps_to_residual(problem, "sor", TOLERANCE)
     timings["sor"] = count * sweep_time("sor", omega)
     print(f"  sor (omega {omega:.4f}): {count} sweeps (counted) = {timings['sor']:.3f} s")
-    for method in ("direct", "dst"):
+    for method in ("direct", "dst", "capacitance"):
         timings[method] = best_time(lambda m=method: poisson.solve(problem, m), repeats=5)
         residual = problem.residual(poisson.solve(problem, method))
         print(f"  {method}: exact, residual {residual:.1g}, {timings[method] * 1e3:.1f} ms")
@@ -141,7 +171,7 @@ def against_jacobi():
         f"  the lab's skeleton as a Python loop (course.poisson.lab_clone): {two / 2:.2f} s per "
         f"sweep, {two / 2 * poisson.LAB_ITERATIONS / 60:.0f} min for its 8000 sweeps"
     )
-    for method in ("gauss_seidel", "sor", "direct", "dst"):
+    for method in ("gauss_seidel", "sor", "direct", "dst", "capacitance"):
         ratio = timings[method] / timings["jacobi"]
         print(
             f"time to residual 1e-6 on 280x111, {method}: {timings[method]:.3g} s, "

@@ -19,8 +19,12 @@ boundary setup.
 
 The solvers are in :mod:`course.poisson_solvers`: ``"direct"`` (sparse
 factorisation, any region), ``"dst"`` (sine transforms, rectangles),
-``"jacobi"``, ``"gauss_seidel"`` and ``"sor"``. The default, ``"auto"``, is
-exact and fast: ``"dst"`` for a rectangle, ``"direct"`` otherwise.
+``"jacobi"``, ``"gauss_seidel"`` and ``"sor"``; and in
+:mod:`course.poisson_capacitance`: ``"capacitance"`` (sine transforms on a box
+around any region, corrected on the region's border). The default, ``"auto"``,
+is exact and fast: ``"dst"`` for a rectangle, otherwise ``"capacitance"`` or
+``"direct"``, whichever is expected faster for the region's shape
+(:func:`exact_method`).
 
 References
 ----------
@@ -36,6 +40,7 @@ from typing import Any
 
 import numpy as np
 
+from course import poisson_capacitance as capacitance
 from course import poisson_solvers as solvers
 from course._validate import (
     as_choice,
@@ -64,6 +69,7 @@ __all__ = [
     "clone_problem",
     "convergence",
     "correction_boundary",
+    "exact_method",
     "inpaint",
     "inpaint_problem",
     "iterates",
@@ -74,10 +80,13 @@ __all__ = [
     "sweeps_to_residual",
 ]
 
-METHODS = ("auto", "direct", "dst", "jacobi", "gauss_seidel", "sor")
+METHODS = ("auto", "direct", "dst", "capacitance", "jacobi", "gauss_seidel", "sor")
 ITERATIVE = ("jacobi", "gauss_seidel", "sor")
 # The lab's skeleton runs 8000 sweeps; the iterative methods default to it.
 LAB_ITERATIONS = 8000
+# method="capacitance" refuses a border of more pixels than this: its dense
+# matrix would take 800 MB (a speckled mask; "direct" handles it easily).
+MAX_CHARGES = 10_000
 
 
 @dataclass(frozen=True)
@@ -127,9 +136,12 @@ def seamless_clone(
         background. The whole foreground must lie inside the background.
     mask : array_like of bool, (h, w), optional
         The pixels to clone; False on the foreground's outer ring.
-    method : {"auto", "direct", "dst", "jacobi", "gauss_seidel", "sor"}
-        ``"auto"`` (exact and fast) is ``"dst"`` for a rectangle, ``"direct"``
-        otherwise. ``"dst"`` needs a rectangular region.
+    method : {"auto", "direct", "dst", "capacitance", "jacobi", "gauss_seidel", "sor"}
+        ``"auto"`` (exact and fast) is ``"dst"`` for a rectangle, and for a
+        mask ``"capacitance"`` when its border is short for its area (an
+        ellipse), ``"direct"`` when long (a thin ring, a ragged silhouette):
+        see :func:`exact_method`. ``"dst"`` needs a rectangular region. The
+        exact methods agree to rounding.
     guidance : {"plain", "mixed"}
         ``"plain"`` follows the foreground's gradients; ``"mixed"`` takes, on
         each edge and channel, whichever of the foreground's and background's
@@ -235,6 +247,28 @@ def solve(
     """
     planes, _ = _solve_planes(problem, method, iterations, tolerance, omega)
     return image_of(planes, problem.values)
+
+
+def exact_method(problem: PoissonProblem) -> str:
+    """The exact method ``method="auto"`` uses for ``problem``.
+
+    ``"dst"`` for a rectangle. For any other region, ``"capacitance"`` if it
+    is expected faster than ``"direct"`` (its cost grows with the border's
+    length, the factorisation's with the area; see
+    :func:`course.poisson_capacitance.faster_than_direct`), else ``"direct"``.
+
+    Examples
+    --------
+    >>> disc = np.hypot(*np.indices((41, 41)) - 20) < 19
+    >>> ring = disc & (np.hypot(*np.indices((41, 41)) - 20) > 16)
+    >>> background, foreground = np.zeros((50, 50)), np.ones((41, 41))
+    >>> [exact_method(clone_problem(background, foreground, (4, 4), mask))
+    ...  for mask in (None, disc, ring)]
+    ['dst', 'capacitance', 'direct']
+    """
+    if problem.rectangular:
+        return "dst"
+    return "capacitance" if capacitance.faster_than_direct(problem.region) else "direct"
 
 
 def sweeps_to_residual(
@@ -417,7 +451,7 @@ def _solve_planes(
 ) -> tuple[np.ndarray, int]:
     method = as_choice(method, "method", METHODS)
     if method == "auto":
-        method = "dst" if problem.rectangular else "direct"
+        method = exact_method(problem)
     values, region, source = problem.planes()
     if method not in ITERATIVE:
         for name, given in (("iterations", iterations), ("tolerance", tolerance), ("omega", omega)):
@@ -431,9 +465,18 @@ def _solve_planes(
                 raise ValueError(
                     "method='dst' needs a rectangular region (every pixel inside the "
                     "foreground's outer ring); this mask is not a rectangle, so use "
-                    "method='direct' or 'auto'"
+                    "method='capacitance', 'direct' or 'auto'"
                 )
             return solvers.solve_dst(values, region, source), 0
+        if method == "capacitance":
+            charges = capacitance.charge_pixels(capacitance.embedding(region))[0].size
+            if charges > MAX_CHARGES:
+                raise ValueError(
+                    f"method='capacitance' needs a dense {charges} x {charges} matrix for this "
+                    f"region, whose border has {charges} pixels (at most {MAX_CHARGES}); use "
+                    "method='direct' or 'auto' for a ragged or scattered mask"
+                )
+            return capacitance.solve_capacitance(values, region, source), 0
         return solvers.solve_direct(values, region, source), 0
     iterations = LAB_ITERATIONS if iterations is None else as_int(iterations, "iterations", 0)
     if tolerance is not None:

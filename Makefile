@@ -56,7 +56,10 @@ notebooks: $(VENV)/.test-installed
 	done
 	$(BIN)/nbstripout --keep-output --keep-count $(NOTEBOOKS)
 
+# One BLAS thread: every anchor runs on one core, so the ratios compare like with
+# like, and a busy machine cannot stall a multithreaded matrix product.
 bench: $(VENV)/.bench-installed $(VENV)/.test-installed
+	export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1; \
 	for script in benchmarks/bench_*.py; do $(BIN)/python "$$script" || exit 1; done
 
 clean:

@@ -11,10 +11,10 @@ load of a shared machine falls on both alike.
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable
 
 import numpy as np
+from timing import best_times
 
 from course.antialias import SPLAT_METHODS, STROKE_METHODS, arc_length_step, render
 from course.coverage import agg_draw, agg_path
@@ -22,27 +22,6 @@ from course.coverage import agg_draw, agg_path
 POINTS = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]])
 SHAPE = (700, 700)
 GOALS = {"splat": 3.0, "stroke": 10.0}
-
-
-def batch_size(function: Callable[[], object]) -> int:
-    """Calls per batch for batches of about 20 ms."""
-    function()
-    start = time.perf_counter()
-    function()
-    return max(1, int(0.02 / max(time.perf_counter() - start, 1e-7)))
-
-
-def best_times(*functions: Callable[[], object], rounds: int = 9) -> list[float]:
-    """Seconds per call of each function: the fastest of its batches, interleaved."""
-    sizes = [batch_size(function) for function in functions]
-    best = [float("inf")] * len(functions)
-    for _ in range(rounds):
-        for index, (function, number) in enumerate(zip(functions, sizes, strict=True)):
-            start = time.perf_counter()
-            for _ in range(number):
-                function()
-            best[index] = min(best[index], (time.perf_counter() - start) / number)
-    return best
 
 
 def main() -> None:

@@ -24,22 +24,12 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+from timing import best_time
 
 from course.bezier import bezier_bernstein, de_casteljau, de_casteljau_levels
 from course.widgets import DeCasteljauApp
 
 GOALS = {"bezier_bernstein": 2.0, "de_casteljau": 4.0}
-
-
-def best_time(function: Callable[[], object], repeats: int = 7) -> float:
-    """The fastest of ``repeats`` runs, after one warm-up (the least noisy estimate)."""
-    function()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def main() -> None:

@@ -12,29 +12,13 @@
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
 
 import numpy as np
 from PIL import Image
+from timing import best_time, named_best_times
 
 from course.dither import blue_noise_mask, error_diffusion
 from course.images import photograph, to_gray
-
-
-def best_times(functions: dict[str, Callable[[], object]], repeats: int) -> dict[str, float]:
-    """Best time of each function over interleaved runs.
-
-    CPU time of this process (every function timed here runs on one thread),
-    so that other jobs sharing the machine's cores do not count; the runs
-    are interleaved so that what load remains (caches) hits all alike.
-    """
-    times = dict.fromkeys(functions, float("inf"))
-    for _ in range(repeats):
-        for name, function in functions.items():
-            start = time.process_time()
-            function()
-            times[name] = min(times[name], time.process_time() - start)
-    return times
 
 
 def main() -> None:
@@ -45,12 +29,12 @@ def main() -> None:
     small = gray[:128, :128]
     scale = gray.size / small.size
 
-    times = best_times(
+    times = named_best_times(
         {"wavefront": lambda: error_diffusion(gray), "pillow": lambda: pillow_input.convert("1")},
-        repeats=21,
+        rounds=21,
     )
-    times["rows"] = best_times({"rows": lambda: error_diffusion(gray, method="rows")}, 3)["rows"]
-    loop_small = best_times({"loop": lambda: error_diffusion(small, method="loop")}, 3)["loop"]
+    times["rows"] = best_time(lambda: error_diffusion(gray, method="rows"), rounds=3)
+    loop_small = best_time(lambda: error_diffusion(small, method="loop"), rounds=3)
     pillow = times["pillow"]
 
     fast = error_diffusion(gray)

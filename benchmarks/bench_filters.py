@@ -11,10 +11,10 @@ scaled by the pixel count.
 from __future__ import annotations
 
 import numpy as np
+from scipy import ndimage
 
 # The same interleaved best-of timer as the dithering benchmark (same folder).
-from bench_dither import best_times
-from scipy import ndimage
+from timing import named_best_times
 
 from course.filters import blur, sobel
 
@@ -30,7 +30,7 @@ def main() -> None:
     images = {"gray": rng.random((1024, 1024)), "RGB": rng.random((1024, 1024, 3))}
     for kind, image in images.items():
         size = (3, 3) if image.ndim == 2 else (3, 3, 1)
-        times = best_times(
+        times = named_best_times(
             {
                 "blur": lambda image=image: blur(image),
                 "uniform_filter": lambda image=image, size=size: ndimage.uniform_filter(
@@ -39,7 +39,7 @@ def main() -> None:
                 "sobel": lambda image=image: sobel(image),
                 "scipy_sobel": lambda image=image: scipy_sobel(image),
             },
-            repeats=7 if kind == "gray" else 3,
+            rounds=7 if kind == "gray" else 3,
         )
         print(
             f"blur 1024x1024 {kind}: {times['blur'] / times['uniform_filter']:.2f}x "
@@ -52,19 +52,19 @@ def main() -> None:
 
     small = images["gray"][:64, :64]
     scale = images["gray"].size / small.size
-    loops = best_times(
+    loops = named_best_times(
         {
             "blur": lambda: blur(small, method="loop"),
             "sobel": lambda: sobel(small, method="loop"),
         },
-        repeats=2,
+        rounds=2,
     )
-    anchors = best_times(
+    anchors = named_best_times(
         {
             "blur": lambda: ndimage.uniform_filter(images["gray"], 3),
             "sobel": lambda: scipy_sobel(images["gray"]),
         },
-        repeats=3,
+        rounds=3,
     )
     for name in ("blur", "sobel"):
         print(

@@ -27,33 +27,16 @@ OPENBLAS_NUM_THREADS=1 to measure both on one thread.
 from __future__ import annotations
 
 import sys
-import time
 
 import cv2
 import numpy as np
+from timing import best_time, best_times
 
 from course import images, poisson
 from course import poisson_solvers as solvers
 
 TOLERANCE = 1e-6
 CAP = 6000  # sweeps of Jacobi and Gauss-Seidel actually run; the rest is extrapolated
-
-
-def best_time(function, repeats=7):
-    return best_times([function], repeats)[0]
-
-
-def best_times(functions, repeats=15):
-    """Best time of each function, run in turns so that a busy machine slows all alike."""
-    for function in functions:
-        function()  # warm caches (the sine matrices, BLAS threads)
-    best = [float("inf")] * len(functions)
-    for _ in range(repeats):
-        for index, function in enumerate(functions):
-            start = time.perf_counter()
-            function()
-            best[index] = min(best[index], time.perf_counter() - start)
-    return best
 
 
 def against_opencv():
@@ -73,7 +56,7 @@ def against_opencv():
         mask8 = (rectangle if mask is None else mask).astype(np.uint8) * 255
         chosen = poisson.exact_method(poisson.clone_problem(background, foreground, offset, mask))
         theirs, ours = best_times(
-            [
+            *[
                 lambda m=mask8: cv2.seamlessClone(fg8, bg8, m, centre, cv2.NORMAL_CLONE),
                 lambda m=mask: poisson.seamless_clone(background, foreground, offset, m),
             ]
@@ -111,8 +94,8 @@ def against_opencv():
     }
     for name, problem in problems.items():
         capacitance, direct = best_times(
-            [lambda m=m, p=problem: poisson.solve(p, m) for m in ("capacitance", "direct")],
-            repeats=7,
+            *[lambda m=m, p=problem: poisson.solve(p, m) for m in ("capacitance", "direct")],
+            rounds=7,
         )
         print(
             f"  (information) {name}, {int(problem.region.sum())} pixels: capacitance "
@@ -137,7 +120,7 @@ def against_jacobi():
         kind = "jacobi" if method == "jacobi" else "sor"
         sweeps = 200
         seconds = best_time(
-            lambda: solvers.iterate(values, region, source, kind, sweeps, omega), repeats=3
+            lambda: solvers.iterate(values, region, source, kind, sweeps, omega), rounds=3
         )
         return seconds / sweeps
 
@@ -160,12 +143,12 @@ def against_jacobi():
     timings["sor"] = count * sweep_time("sor", omega)
     print(f"  sor (omega {omega:.4f}): {count} sweeps (counted) = {timings['sor']:.3f} s")
     for method in ("direct", "dst", "capacitance"):
-        timings[method] = best_time(lambda m=method: poisson.solve(problem, m), repeats=5)
+        timings[method] = best_time(lambda m=method: poisson.solve(problem, m), rounds=5)
         residual = problem.residual(poisson.solve(problem, method))
         print(f"  {method}: exact, residual {residual:.1g}, {timings[method] * 1e3:.1f} ms")
     # The lab's own loop, in pure Python: time two sweeps and scale.
     two = best_time(
-        lambda: poisson.lab_clone(images.lake(), images.plane(), (500, 300), 2), repeats=1
+        lambda: poisson.lab_clone(images.lake(), images.plane(), (500, 300), 2), rounds=1
     )
     print(
         f"  the lab's skeleton as a Python loop (course.poisson.lab_clone): {two / 2:.2f} s per "

@@ -8,41 +8,14 @@ ours are numpy. The readable loop forms are timed too, without a goal.
 
 from __future__ import annotations
 
-import time
-from collections.abc import Callable
-
 import numpy as np
 from skimage.draw import line as skimage_line
 from skimage.draw import polygon as skimage_polygon
+from timing import best_times
 
 from course.raster import line, triangle, triangle_coverage
 
 GOAL = 3.0  # for line and triangle, the fast forms
-
-
-def batch_size(function: Callable[[], object]) -> int:
-    """Calls per batch for batches of about 20 ms."""
-    function()
-    start = time.perf_counter()
-    function()
-    return max(1, int(0.02 / max(time.perf_counter() - start, 1e-7)))
-
-
-def best_times(*functions: Callable[[], object], rounds: int = 7) -> list[float]:
-    """Seconds per call of each function: the fastest batch of each.
-
-    The functions' batches alternate, round after round, so that load from
-    other processes on a shared machine falls on all of them alike.
-    """
-    sizes = [batch_size(function) for function in functions]
-    best = [float("inf")] * len(functions)
-    for _ in range(rounds):
-        for index, (function, number) in enumerate(zip(functions, sizes, strict=True)):
-            start = time.perf_counter()
-            for _ in range(number):
-                function()
-            best[index] = min(best[index], (time.perf_counter() - start) / number)
-    return best
 
 
 def report(

@@ -10,26 +10,14 @@ pixel) and scaled by the number of output pixels, so this stays quick.
 
 from __future__ import annotations
 
-import time
-from collections.abc import Callable
-
 import numpy as np
 from PIL import Image
+from timing import best_time
 
 from course.resample import supersample
 
 SIZE, OUT, RATE = 2500, 320, 12
 BLOCK, BLOCK_OUT = 125, 16
-
-
-def best_time(function: Callable[[], object], repeats: int = 5) -> float:
-    function()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def main() -> None:
@@ -55,7 +43,7 @@ def main() -> None:
 
     block = image[:BLOCK, :BLOCK]
     loop_block = best_time(
-        lambda: supersample(block, (BLOCK_OUT, BLOCK_OUT), RATE, method="loop"), repeats=1
+        lambda: supersample(block, (BLOCK_OUT, BLOCK_OUT), RATE, method="loop"), rounds=1
     )
     loop = loop_block * (OUT / BLOCK_OUT) ** 2
     fast = best_time(lambda: supersample(image, (OUT, OUT), RATE))

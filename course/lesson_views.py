@@ -4,16 +4,20 @@
 the course map) and a slider the browser tests move. This module makes
 them: every picture calls the library's functions or apps with the
 notebook's own arguments, and every landmark function computes, with the
-library and not from the app's artists, a few pixels of the app's picture
-whose colour is then known for the value the slider shows (lesson 04: the
-Bresenham pixels where ``course.raster.line`` puts them, black on white).
-A landmark inside a pixel of a zoomed view sits at the point of that pixel
+library and not from the app's artists, pixels of the app's picture whose
+colour is then known for the value the slider shows (lesson 04: the
+Bresenham pixels where ``course.raster.line`` puts them, black on white;
+lesson 06: every pixel of the flat patch as ``course.dither`` dithers it).
+Each is chosen so that the picture one slider stop away fails it
+(``tests/test_lessons.py`` checks that after every registered move). A
+landmark inside a pixel of a zoomed view sits at the point of that pixel
 farthest from any line drawn over it, so the overlay cannot hide it.
 """
 
 from __future__ import annotations
 
 import functools
+import itertools
 from dataclasses import replace
 from typing import Any
 
@@ -177,25 +181,8 @@ def zoom_app() -> ZoomApp:
     return ZoomApp(renderings, np.array(SEED_000_POINTS), exact, picks=ZOOM_PICKS)
 
 
-def _telling_pixels(window: np.ndarray) -> list[tuple[int, int]]:
-    """(row, column) of the brightest pixel, its darkest neighbour, and a mid-gray pixel."""
-    values = np.clip(window, 0.0, 1.0)
-    row, column = np.unravel_index(int(np.argmax(values)), values.shape)
-    chosen = [(int(row), int(column))]
-    rows = slice(max(row - 1, 0), row + 2)
-    columns = slice(max(column - 1, 0), column + 2)
-    near = values[rows, columns]
-    dark = np.unravel_index(int(np.argmin(near)), near.shape)
-    chosen.append((rows.start + int(dark[0]), columns.start + int(dark[1])))
-    middling = np.abs(values - 0.5)
-    if middling.min() < 0.3:
-        mid = np.unravel_index(int(np.argmin(middling)), values.shape)
-        chosen.append((int(mid[0]), int(mid[1])))
-    return chosen
-
-
 def zoom_landmarks(app: SliderApp) -> list[Landmark]:
-    """Pixels of each panel: ``crop`` of the variant's rendering around the curve point.
+    """Every pixel of each panel: ``crop`` of the variant's rendering around the curve point.
 
     The window's centre is the point ``position`` of the way along the curve
     (by arc length); each panel must show ``crop(rendering, centre, size)``,
@@ -212,7 +199,7 @@ def zoom_landmarks(app: SliderApp) -> list[Landmark]:
     for panel, (name, image) in zip(app.panels, shown, strict=True):
         window, extent = crop(image, centre, size)
         left, _, _, top = extent
-        for row, column in _telling_pixels(window):
+        for row, column in np.ndindex(*window.shape):
             x, y = left + column, top + row
             value = float(window[row, column])
             point = _clear_point(x, y, segments)
@@ -242,29 +229,36 @@ def step_app_picture(weighting: str) -> bytes:
 
 
 def line_landmarks(app: SliderApp) -> list[Landmark]:
-    """Bresenham's pixels (``raster.line``) black, the report's extra ones white, Wu's grays."""
+    """Every pixel of the three panels: ``raster.line``, ``line_4connected``, ``wu_line``.
+
+    Bresenham's and the report's pixels black on white, Wu's weights in
+    grays; a pixel the report lights and Bresenham does not is named so.
+    """
     p0 = (int(app.value("x0")), int(app.value("y0")))
     p1 = (int(app.value("x1")), int(app.value("y1")))
     ideal = np.array([[np.add(p0, 0.5), np.add(p1, 0.5)]])
     bresenham = {tuple(pixel) for pixel in line(p0, p1).tolist()}
     staircase = {tuple(pixel) for pixel in line_4connected(p0, p1).tolist()}
-    axes = {name: image.axes for name, image in app.panels.items()}
+    wu = {}
+    for pixel, weight in zip(*wu_line(np.add(p0, 0.5), np.add(p1, 0.5)), strict=True):
+        wu[tuple(pixel.tolist())] = min(wu.get(tuple(pixel.tolist()), 0.0) + weight, 1.0)
+    grid = app.panels["bresenham"].get_array().shape[0]
     landmarks = []
-
-    def mark(panel: str, pixel: tuple[int, int], color: tuple[int, ...], what: str) -> None:
+    for pixel in itertools.product(range(grid), repeat=2):
         point = _clear_point(*pixel, ideal)
-        landmarks.append(landmark_at(app, axes[panel], point, color, f"{what} {pixel}"))
-
-    for pixel in sorted(bresenham):
-        mark("bresenham", pixel, BLACK, f"line({p0}, {p1}) pixel")
-    for pixel in sorted(staircase - bresenham):
-        mark("bresenham", pixel, WHITE, "not a Bresenham pixel, yet in the report's loop:")
-        mark("report", pixel, BLACK, "line_4connected pixel")
-    pixels, weights = wu_line(np.add(p0, 0.5), np.add(p1, 0.5))
-    for pixel, weight in zip(pixels.tolist(), weights, strict=True):
-        if 0.2 < weight < 0.8:
-            color = _colormap("Greys", float(weight))
-            mark("wu", tuple(pixel), color, f"wu_line weight {weight:.2f} at")
+        drawn = pixel in bresenham
+        if drawn:
+            role = f"line({p0}, {p1}) pixel {pixel}"
+        elif pixel in staircase:
+            role = f"not a Bresenham pixel, yet in the report's loop: {pixel}"
+        else:
+            role = f"background {pixel}"
+        for panel, color, what in (
+            ("bresenham", BLACK if drawn else WHITE, role),
+            ("report", BLACK if pixel in staircase else WHITE, f"line_4connected {pixel}"),
+            ("wu", _colormap("Greys", wu.get(pixel, 0.0)), f"wu_line {pixel}"),
+        ):
+            landmarks.append(landmark_at(app, app.panels[panel].axes, point, color, what))
     return landmarks
 
 

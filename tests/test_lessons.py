@@ -186,22 +186,22 @@ def test_zoom_landmarks_are_the_crop_of_each_rendering_around_the_curve_point():
         window, (left, right, bottom, top) = crop(image, centre, 16)
         assert (right - left, bottom - top) == (16, 16)
         own = [mark for mark in marks if mark.what.startswith(f"{name} at position 0.500")]
-        assert own, name
-        # Each landmark's colour is the value crop() gives at the pixel it names.
-        brightest = gray_color(float(np.clip(window, 0, 1).max()))
-        assert own[0].color == brightest
-        assert f"({left + int(np.argmax(window) % 16)}, " in own[0].what
+        # One landmark per pixel of the window, coloured as crop() gives it, in order.
+        assert [mark.color for mark in own] == [gray_color(value) for value in window.ravel()]
+        assert own[17].what.endswith(f"pixel ({left + 1}, {top + 1}) = {window[1, 1]:.2f}")
 
 
-def test_line_landmarks_are_every_bresenham_pixel_and_the_report_s_extra_ones():
+def test_line_landmarks_are_every_pixel_of_the_three_rasterizers():
     (spec,) = LESSONS["04"].sliders
     app = spec.build()
     app.controls["y1"].value = 29  # (3, 6) to (27, 29): steep, octant 1
     marks = spec.landmarks(app)
+    assert len(marks) == 3 * 32 * 32
     black = [mark for mark in marks if "line((3, 6), (27, 29)) pixel" in mark.what]
     white = [mark for mark in marks if "not a Bresenham pixel" in mark.what]
     assert len(black) == max(27 - 3, 29 - 6) + 1
     assert {mark.color for mark in black} == {(0, 0, 0)}
+    # The report's staircase has |dx| + |dy| + 1 pixels, Bresenham's max(|dx|, |dy|) + 1.
     assert len(white) == (24 + 23 + 1) - len(black) and {m.color for m in white} == {(255,) * 3}
 
 

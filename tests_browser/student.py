@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import base64
 import io
+import itertools
 import json
 import re
 import time
@@ -250,6 +251,12 @@ def assert_shows_what_the_library_computes(move: Move, spec: SliderMove, control
     )
 
 
+def key_names(keys: tuple[str, ...]) -> str:
+    """Keys for a file name, repeats counted: ``('ArrowRight',) * 3`` is ``3xArrowRight``."""
+    groups = [(key, len(list(run))) for key, run in itertools.groupby(keys)]
+    return "-".join(key if count == 1 else f"{count}x{key}" for key, count in groups)
+
+
 def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem: str) -> None:
     """Every registered move on the app's slider, each checked and screenshotted."""
     control = spec.build().controls[spec.control]
@@ -269,7 +276,7 @@ def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem
         move = press_on_slider(app, control, keys, value)
         value = move.value
         which = f"-app{spec.app}" if spec.app else ""
-        name = f"{stem}{which}-move{step}-{'-'.join(keys)}-{spec.control}{move.value:g}"
+        name = f"{stem}{which}-move{step}-{key_names(keys)}-{spec.control}={move.value:g}"
         app.screenshot(path=folder / f"{name}.png")
         assert_shows_what_the_library_computes(move, spec, control)
     assert not error_outputs(page), error_outputs(page)

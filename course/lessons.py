@@ -6,41 +6,42 @@ heading and its summary the paragraph after it. What cannot be read off a
 notebook is registered here, one :class:`Lesson` per number in
 :data:`LESSONS`: the handout task it answers, what it teaches in one line,
 its key pictures (for ``python -m course gallery`` and the course map), and
-the slider that the browser tests move like a student and what the picture
+the sliders that the browser tests move like a student and what the picture
 must show afterwards. A notebook without an entry is still listed, tested
 and exported; adding the entry is all a new lesson needs. For example::
 
-    "03": Lesson(
-        "03",
-        handout="GAMES101 homework 4, improvement part (seed 000): anti-aliasing",
+    "04": Lesson(
+        "04",
+        handout="Lab 1 report (seed 001), Task 4 (line drawing) and Task 5 (triangles)",
         teaches="one line on what the lesson teaches",
-        pictures=(Picture("03_name", "caption", lambda: app_picture(SomeApp(...))),),
-        slider=SliderMove(
-            build=lambda: SomeApp(...),  # exactly as the notebook's first app cell
-            control="width",  # a key of app.controls: an IntSlider or FloatSlider
-            moves=(("ArrowRight", "ArrowRight"), ("End",)),
-            landmarks=_some_landmarks,  # app -> [Landmark], from the library's functions
+        pictures=(Picture("04_name", "caption", lambda: app_picture(LineApp())),),
+        sliders=(
+            SliderMove(
+                build=LineApp,  # exactly as the notebook's cell builds the app
+                control="y1",  # a key of app.controls: a slider
+                moves=(("ArrowRight", "ArrowRight"), ("End",)),
+                landmarks=views.line_landmarks,  # app -> [Landmark], by the library
+                app=0,  # the notebook's first slider app
+            ),
         ),
     ),
 
-where ``_some_landmarks(app)`` computes, with the library (not the app's
-artists), a few pixels whose colour is then known, using
-:func:`landmark_at` to map data coordinates to the picture.
+where the pictures and landmark functions live in :mod:`course.lesson_views`:
+``line_landmarks(app)`` computes, with the library (``course.raster.line``),
+not from the app's artists, pixels whose colour is then known, using
+:func:`course.showcase.landmark_at` to map data coordinates to the picture.
 """
 
 from __future__ import annotations
 
 import json
 import re
-from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
-from course.bezier import bernstein_basis, de_casteljau
-from course.widgets import BernsteinBasisApp, DeCasteljauApp, SliderApp
-from course.widgets.de_casteljau import DEFAULT_POINTS, parse_points
+from course import lesson_views as views
+from course.showcase import Landmark, Picture, SliderMove, app_picture, landmark_at
+from course.widgets import DeCasteljauApp, LineApp, SupersampleApp
 
 __all__ = [
     "LESSONS",
@@ -62,49 +63,6 @@ _HEADING = re.compile(r"^#\s+(.+?)\s*$", re.MULTILINE)
 
 
 @dataclass(frozen=True)
-class Landmark:
-    """A pixel of an app's picture whose colour the library determines.
-
-    ``row`` and ``column`` index the picture (row 0 at the top); the pixel
-    must be within ``tolerance`` of ``color`` in every RGB channel (0-255).
-    """
-
-    what: str
-    row: int
-    column: int
-    color: tuple[int, int, int]
-    tolerance: int = 40
-
-
-@dataclass(frozen=True)
-class SliderMove:
-    """How a student moves one slider of a lesson's first app, and what must follow.
-
-    ``build`` makes the app exactly as the notebook's first app cell does,
-    so that a test can set ``control`` to the value the browser shows and
-    render the picture the kernel should have sent. ``moves`` are key
-    sequences pressed on the slider's focused handle (Playwright key names);
-    the picture is checked after each one. ``landmarks(app)`` names pixels
-    whose colour the library computes for the app's current control values
-    (for lesson 01, the red dot at the point ``de_casteljau`` returns).
-    """
-
-    build: Callable[[], SliderApp]
-    control: str
-    moves: tuple[tuple[str, ...], ...]
-    landmarks: Callable[[SliderApp], list[Landmark]]
-
-
-@dataclass(frozen=True)
-class Picture:
-    """One key figure of a lesson: a file name (no suffix), a caption, a PNG renderer."""
-
-    name: str
-    caption: str
-    render: Callable[[], bytes]
-
-
-@dataclass(frozen=True)
 class Lesson:
     """What the notebook cannot say about itself."""
 
@@ -112,7 +70,7 @@ class Lesson:
     handout: str
     teaches: str
     pictures: tuple[Picture, ...] = ()
-    slider: SliderMove | None = None
+    sliders: tuple[SliderMove, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -177,64 +135,6 @@ def _title_and_summary(path: Path) -> tuple[str, str]:
     raise ValueError(f"{path.name}: a lesson notebook starts with a '# Title' markdown heading")
 
 
-def app_picture(app: SliderApp) -> bytes:
-    """The PNG an app shows for its current control values."""
-    return app.refresh()
-
-
-def landmark_at(
-    app: SliderApp, axes, point, color: tuple[int, int, int], what: str, tolerance: int = 40
-) -> Landmark:
-    """The picture pixel where ``axes`` draws the data point ``point``.
-
-    Matplotlib's display coordinates have y up from the figure's bottom;
-    the picture's rows go down from its top, hence the flip.
-    """
-    x, y = axes.transData.transform(np.asarray(point, dtype=float))
-    height = app.figure.bbox.height
-    return Landmark(what, round(float(height - y)), round(float(x)), color, tolerance)
-
-
-CRIMSON = (220, 20, 60)
-
-
-# Lesson 01: de Casteljau's algorithm.
-def _de_casteljau_landmarks(app: SliderApp) -> list[Landmark]:
-    points = parse_points(app.value("points"))
-    t = float(app.value("t"))
-    point = de_casteljau(points, t)
-    return [landmark_at(app, app.axes, point, CRIMSON, f"B({t:.2f}) by de_casteljau")]
-
-
-def _de_casteljau_picture(t: float, count: int = 4) -> Picture:
-    return Picture(
-        f"01_de_casteljau_degree{count - 1}_t{t:.2f}",
-        f"de Casteljau's levels for {count} control points at t = {t:.2f}",
-        lambda: app_picture(DeCasteljauApp(points=DEFAULT_POINTS[:count], t=t)),
-    )
-
-
-# Lesson 02: the Bernstein form.
-def _bernstein_landmarks(app: SliderApp) -> list[Landmark]:
-    degree, t = int(app.value("degree")), float(app.value("t"))
-    weights = bernstein_basis(degree, t)[0]
-    landmarks = []
-    for i, weight in enumerate(weights):
-        centre = landmark_at(app, app.axes, (t, weight), CRIMSON, f"B_{i},{degree}({t:.2f})")
-        # The vertical line at t is crimson too: look 2 px to its right, still
-        # inside the marker (radius about 2.8 px), where only the marker is red.
-        landmarks.append(replace(centre, column=centre.column + 2))
-    return landmarks
-
-
-def _bernstein_picture(degree: int, t: float) -> Picture:
-    return Picture(
-        f"02_bernstein_degree{degree}_t{t:.2f}",
-        f"the degree-{degree} Bernstein basis and its weights at t = {t:.2f}",
-        lambda: app_picture(BernsteinBasisApp(degree=degree, t=t)),
-    )
-
-
 #: One entry per lesson number; later lessons add theirs here.
 LESSONS: dict[str, Lesson] = {
     "01": Lesson(
@@ -244,16 +144,18 @@ LESSONS: dict[str, Lesson] = {
         teaches="a Bézier curve by repeated linear interpolation, every level under a t "
         "slider; recursion vs iteration; the handouts' pitfalls measured",
         pictures=(
-            _de_casteljau_picture(0.5),
-            _de_casteljau_picture(0.25),
-            _de_casteljau_picture(0.75),
-            _de_casteljau_picture(0.3, count=10),
+            views.de_casteljau_picture(0.5),
+            views.de_casteljau_picture(0.25),
+            views.de_casteljau_picture(0.75),
+            views.de_casteljau_picture(0.3, count=10),
         ),
-        slider=SliderMove(
-            build=DeCasteljauApp,
-            control="t",
-            moves=(("ArrowRight", "ArrowRight", "ArrowRight"), ("ArrowLeft",), ("End",)),
-            landmarks=_de_casteljau_landmarks,
+        sliders=(
+            SliderMove(
+                build=DeCasteljauApp,
+                control="t",
+                moves=(("ArrowRight", "ArrowRight", "ArrowRight"), ("ArrowLeft",), ("End",)),
+                landmarks=views.de_casteljau_landmarks,
+            ),
         ),
     ),
     "02": Lesson(
@@ -262,12 +164,227 @@ LESSONS: dict[str, Lesson] = {
         "with the recursive binomial (seed 002)",
         teaches="the Bernstein basis under a degree slider; binomials three ways; "
         "from Bernstein to de Casteljau; accuracy against the degree",
-        pictures=(_bernstein_picture(3, 0.3), _bernstein_picture(9, 0.5)),
-        slider=SliderMove(
-            build=lambda: BernsteinBasisApp(degree=3, t=0.3),
-            control="t",
-            moves=(("ArrowLeft", "ArrowLeft"), ("Home",)),
-            landmarks=_bernstein_landmarks,
+        pictures=(views.bernstein_picture(3, 0.3), views.bernstein_picture(9, 0.5)),
+        sliders=(
+            SliderMove(
+                build=views.bernstein_app,
+                control="t",
+                moves=(("ArrowLeft", "ArrowLeft"), ("Home",)),
+                landmarks=views.bernstein_landmarks,
+            ),
+        ),
+    ),
+    "03": Lesson(
+        "03",
+        handout="GAMES101 homework 4, improvement part (seeds 000, 002, 003): anti-aliasing "
+        "the curve with seed 000's three addColor splats, seed 002's sub-sample falloff and "
+        "seed 003's normalised splat",
+        teaches="a curve's pixels as the coverage of a stroke: every handout splat measured "
+        "against an exact reference and Agg, the t-step pitfall and the arc-length fix",
+        pictures=(
+            Picture(
+                "03_every_variant_zoomed",
+                "seed 000's curve near its first control point, every variant as 14 x 14 "
+                "flat pixels under the true curve (red), beside the exact reference",
+                views.zoom_every_variant,
+            ),
+            Picture(
+                "03_seed000_three_splats_position0.10",
+                "seed 000's left, middle and right addColor beside the exact reference, "
+                "10% of the way along the curve, with each window's RMSE",
+                lambda: app_picture(views.zoom_app()),
+            ),
+            Picture(
+                "03_t_step_0.001_count",
+                "bilinear_centres at the handouts' t step 0.001, splats counted as the "
+                "handouts do: the brightness per unit length follows the curve's speed, "
+                "about half at the fast ends",
+                lambda: views.step_app_picture("count"),
+            ),
+            Picture(
+                "03_t_step_0.001_arc_length",
+                "the same splats weighted by arc length: brightness 1 per unit length "
+                "along the curve, dipping only near the fast ends, where samples 0.001 "
+                "apart leave gaps",
+                lambda: views.step_app_picture("arc_length"),
+            ),
+        ),
+        sliders=(
+            SliderMove(
+                build=views.zoom_app,
+                control="position",
+                moves=(("ArrowRight", "ArrowRight"), ("ArrowRight",) * 4, ("End",), ("Home",)),
+                landmarks=views.zoom_landmarks,
+            ),
+        ),
+    ),
+    "04": Lesson(
+        "04",
+        handout="Lab 1 report (seed 001), Task 4 (Bresenham's line in every octant) and "
+        "Task 5 (scanline triangle filling)",
+        teaches="Bresenham's line in all eight octants against the report's 4-connected "
+        "staircase; filled triangles with the top-left rule, no cracks and no double paint",
+        pictures=(
+            Picture(
+                "04_line_bresenham_report_wu",
+                "the line from (3, 6) to (27, 17): Bresenham, the report's staircase "
+                "(|dx| + |dy| + 1 pixels) and Wu's anti-aliased line",
+                lambda: app_picture(LineApp()),
+            ),
+            Picture(
+                "04_triangles_top_left",
+                "two triangles sharing an edge, filled with the top-left rule: every "
+                "pixel painted once; right, 4 x 4 supersampled coverage",
+                lambda: views.triangle_picture("top-left"),
+            ),
+            Picture(
+                "04_triangles_closed",
+                "the same triangles with the closed rule: the pixels whose centres lie on "
+                "the shared edge are painted twice (red)",
+                lambda: views.triangle_picture("closed"),
+            ),
+        ),
+        sliders=(
+            SliderMove(
+                build=LineApp,
+                control="y1",
+                moves=(("ArrowRight",) * 4, ("Home",), ("End",)),
+                landmarks=views.line_landmarks,
+            ),
+        ),
+    ),
+    "05": Lesson(
+        "05",
+        handout="Lab 1 report (seed 001), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
+        "by supersampling",
+        teaches="supersampling as an estimate of the box filter, measured against a zone "
+        "plate's exact downsample; the report's half-sample shift found and measured",
+        pictures=(
+            Picture(
+                "05_zone_plate_rate1",
+                "the zone plate shrunk to 320 x 320 with one sample per pixel: false rings, "
+                "their difference from the exact box filter, and the error at every rate",
+                lambda: app_picture(views.supersample_app(1)),
+            ),
+            Picture(
+                "05_zone_plate_rate4",
+                "the same at rate 4 (16 samples per pixel): the false rings are gone",
+                lambda: app_picture(views.supersample_app(4)),
+            ),
+        ),
+        sliders=(
+            SliderMove(
+                build=SupersampleApp,
+                control="rate",
+                moves=(("ArrowRight", "ArrowRight"), ("End",)),
+                landmarks=views.supersample_landmarks,
+            ),
+        ),
+    ),
+    "06": Lesson(
+        "06",
+        handout="Lab 1 report (seed 001), Task 1: threshold, uniform random, blue noise, "
+        "ordered 3 x 3 and Floyd-Steinberg error diffusion",
+        teaches="gray levels from black and white dots: the lab's five methods and the "
+        "classics beside them, error diffusion bit for bit fast, blue noise by "
+        "void-and-cluster, the ordered matrix's bias and the x - 1 slip measured",
+        pictures=(
+            Picture(
+                "06_dithering_table",
+                "the photograph and every dithering method, each above the same window "
+                "zoomed to show single dots",
+                views.dithering_table,
+            ),
+            Picture(
+                "06_dithering_ramp",
+                "a gray ramp from 0 to 1 through every method",
+                views.dithering_ramp,
+            ),
+            Picture(
+                "06_gray_level_0.30",
+                "a flat 0.30 patch: the ten ordered 3 x 3 patterns (k = 3 framed) and what "
+                "each method makes of it",
+                lambda: app_picture(views.gray_level_app()),
+            ),
+            Picture(
+                "06_void_and_cluster_120_dots",
+                "void-and-cluster after 120 dots of a 32 x 32 mask: the dots over their "
+                "energy, the next dot circled, and the spectrum against white noise",
+                views.void_and_cluster_picture,
+            ),
+        ),
+        sliders=(
+            SliderMove(
+                build=views.gray_level_app,
+                control="level",
+                moves=(("ArrowLeft",), ("ArrowRight",) * 5, ("End",)),
+                landmarks=views.gray_level_landmarks,
+                app=1,
+            ),
+        ),
+    ),
+    "07": Lesson(
+        "07",
+        handout="Lab 1 report (seed 001), Task 2: 3 x 3 blur with the report's border rule "
+        "and Sobel edges",
+        teaches="blur and Sobel edges with 3 x 3 kernels, separable and fast; the four "
+        "border rules and zero padding's dark frame, measured; scipy.ndimage agrees inside",
+        pictures=(
+            Picture(
+                "07_blur_and_edges",
+                "the photograph blurred once and five times, and its Sobel magnitude (gray "
+                "and per channel, clipped to 1), each above a zoomed window",
+                views.blur_and_edges,
+            ),
+            Picture(
+                "07_repeated_blur_8",
+                "eight blurs under each border rule: zero padding darkens the frame, the "
+                "other rules keep the edge's brightness (top-right corner zoomed)",
+                lambda: app_picture(views.repeated_blur_app()),
+            ),
+        ),
+        sliders=(
+            SliderMove(
+                build=views.repeated_blur_app,
+                control="repeats",
+                moves=(("ArrowRight", "ArrowRight"), ("Home",), ("End",)),
+                landmarks=views.repeated_blur_landmarks,
+            ),
+        ),
+    ),
+    "08": Lesson(
+        "08",
+        handout="Lab 1 report (seed 001), Task 3: Poisson image editing, the plane pasted "
+        "into the lake with the lab's 8000 'Jacobi' sweeps",
+        teaches="seamless cloning and inpainting as a Poisson equation, solved exactly "
+        "(DST, sparse) and by Jacobi, Gauss-Seidel and SOR; why 8000 sweeps are not enough",
+        pictures=(
+            Picture(
+                "08_naive_paste_and_seamless_clone",
+                "the plane pasted into the lake: copied pixels leave a frame, the seamless "
+                "clone has none",
+                views.clone_comparison,
+            ),
+            Picture(
+                "08_jacobi_1000_sweeps",
+                "1000 Jacobi sweeps: the result and its error against the exact solution, "
+                "still large in the middle of the region",
+                lambda: app_picture(views.poisson_app()),
+            ),
+            Picture(
+                "08_inpainting",
+                "seven scratches across the photograph, filled by solving Laplace's "
+                "equation, beside the original",
+                views.inpainting,
+            ),
+        ),
+        sliders=(
+            SliderMove(
+                build=views.poisson_app,
+                control="sweeps",
+                moves=(("ArrowRight",), ("ArrowLeft", "ArrowLeft"), ("End",)),
+                landmarks=views.poisson_landmarks,
+            ),
         ),
     ),
 }

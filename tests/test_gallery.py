@@ -29,13 +29,37 @@ def test_writes_every_registered_picture_of_the_lessons_present(tmp_path):
     assert sorted(path.name for path in out.iterdir()) == sorted(expected)
     assert len(expected) >= len(LESSONS)
     # The progress bar ends full, with the last file, and a newline.
-    assert stream.getvalue().endswith(f"{len(expected)}/{len(expected)} {expected[-1]}\n")
+    # (padded with spaces over a longer previous label).
+    last = stream.getvalue().split("\r")[-1]
+    assert last.endswith("\n") and last.rstrip().endswith(
+        f"{len(expected)}/{len(expected)} {expected[-1]}"
+    )
     # Lesson 01's picture at t = 0.25 shows B(0.25) where de_casteljau puts it.
-    app = LESSONS["01"].slider.build()
+    (spec,) = LESSONS["01"].sliders
+    app = spec.build()
     app.controls["t"].value = 0.25
-    (landmark,) = LESSONS["01"].slider.landmarks(app)
-    image = np.asarray(Image.open(out / "01_de_casteljau_degree3_t0.25.png").convert("RGB"))
-    assert np.abs(image[landmark.row, landmark.column] - np.array(landmark.color)).max() <= 40
+    assert_landmarks(out / "01_de_casteljau_degree3_t0.25.png", spec.landmarks(app))
+    # The slider apps' pictures show what the library computes, landmark by landmark.
+    for number, name in (
+        ("03", "03_seed000_three_splats_position0.10"),
+        ("04", "04_line_bresenham_report_wu"),
+        ("06", "06_gray_level_0.30"),
+        ("08", "08_jacobi_1000_sweeps"),
+    ):
+        (spec,) = LESSONS[number].sliders
+        app = spec.build()
+        app.refresh()
+        assert_landmarks(out / f"{name}.png", spec.landmarks(app))
+    # A still figure is the width its notebook asks for (900 px), cropped to its content.
+    assert abs(Image.open(out / "06_dithering_table.png").size[0] - 900) < 45
+
+
+def assert_landmarks(path, landmarks):
+    image = np.asarray(Image.open(path).convert("RGB")).astype(int)
+    assert landmarks
+    for mark in landmarks:
+        shown = image[mark.row, mark.column]
+        assert np.abs(shown - np.array(mark.color)).max() <= mark.tolerance, (path.name, mark)
 
 
 def test_refuses_a_non_empty_folder_and_writes_nothing(tmp_path):
@@ -75,10 +99,20 @@ def test_progress_bar_redraws_one_line_over_a_longer_label():
     assert second == "[####] 2/2 b.png".ljust(len(first)) + "\n"
 
 
-def test_command_line_refuses_then_forces(tmp_path, capsys):
+def test_command_line_refuses_then_forces(tmp_path, capsys, monkeypatch):
+    # The command's own work, on two tiny pictures (the test above renders the real ones).
+    monkeypatch.setattr("course.gallery.gallery_pictures", lambda folder: TINY)
     (tmp_path / "keep.txt").write_text("x")
     assert main(["gallery", "--out", str(tmp_path)]) == 2
     assert "is not empty" in capsys.readouterr().err
     assert main(["gallery", "--out", str(tmp_path), "--force"]) == 0
-    names = {path.name for path in tmp_path.iterdir()}
-    assert names == {"keep.txt"} | {picture.name + ".png" for picture in gallery_pictures()}
+    assert "wrote 2 files" in capsys.readouterr().err
+    assert {path.name for path in tmp_path.iterdir()} == {"keep.txt", "a.png", "b.png"}
+
+
+def test_every_registered_picture_is_a_png_named_for_its_lesson():
+    pictures = gallery_pictures()
+    assert len(pictures) >= 2 * len(LESSONS)
+    assert all(
+        picture.caption and picture.name[:3] in {f"{n}_" for n in LESSONS} for picture in pictures
+    )

@@ -9,24 +9,30 @@ from __future__ import annotations
 
 import base64
 import io
+import itertools
 import json
 import re
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from PIL import Image
 from playwright.sync_api import Locator, Page
 
-from course.lessons import Landmark, SliderMove
+from course.showcase import (
+    DIFFERING_SHARE,
+    Landmark,
+    SliderMove,
+    differing_share,
+    nearest_stop,
+    neighbour_value,
+    readout_shows,
+    value_after_keys,
+)
 
 SLIDER_APP_MIME = "application/vnd.jupyter.widget-view+json"
-# A picture matches the library's when at most this share of its pixels
-# differ by more than PIXEL_TOLERANCE in a channel (the kernel and this
-# process run the same matplotlib; a differing value moves whole artists).
-PIXEL_TOLERANCE = 24
-DIFFERING_SHARE = 0.001
 
 _READ_IMAGE = """async image => {
     const response = await fetch(image.src);
@@ -160,9 +166,9 @@ def tall_screenshot(page: Page, path: Path, width: int = 1280, limit: int = 8192
     return paths
 
 
-def first_app(page: Page) -> Locator:
-    """The first slider app on the page: the widget box holding the first widget image."""
-    return page.locator(".widget-hbox").filter(has=page.locator("img.widget-image")).first
+def nth_app(page: Page, index: int) -> Locator:
+    """The page's slider app number ``index`` (from 0): the box around its picture."""
+    return page.locator("img.widget-image").nth(index).locator("xpath=..")
 
 
 def slider(app: Locator, description: str) -> Locator:
@@ -177,16 +183,20 @@ class Move:
     """One key sequence pressed on a slider, and what the browser then showed."""
 
     keys: tuple[str, ...]
-    value: float
+    value: Any
     before: np.ndarray
     after: np.ndarray
 
 
-def press_on_slider(app: Locator, description: str, keys: tuple[str, ...], value_type) -> Move:
-    """Focus the slider's handle, press ``keys`` like a student, wait for the new picture."""
+def press_on_slider(app: Locator, control, keys: tuple[str, ...], start) -> Move:
+    """Focus the slider's handle, press ``keys`` like a student, wait for the new picture.
+
+    The value the slider then holds is predicted from the keys (readouts
+    round: two decimals by default), and the readout must show it.
+    """
     image = app.locator("img.widget-image").first
-    control = slider(app, description)
-    handle = control.locator(".noUi-handle").first
+    element = slider(app, control.description)
+    handle = element.locator(".noUi-handle").first
     handle.scroll_into_view_if_needed()
     before_src = image.get_attribute("src")
     before = read_picture(image)
@@ -194,52 +204,79 @@ def press_on_slider(app: Locator, description: str, keys: tuple[str, ...], value
     for key in keys:
         handle.press(key)
     wait_for_new_picture(image, before_src)
-    readout = control.locator(".widget-readout").text_content().strip()
-    return Move(keys, value_type(readout), before, read_picture(image))
+    value = value_after_keys(control, start, keys)
+    readout = element.locator(".widget-readout").text_content().strip()
+    assert readout_shows(control, value, readout), (
+        f"{keys} from {start}: expected the slider at {value}; its readout shows {readout}"
+    )
+    return Move(keys, value, before, read_picture(image))
 
 
-def library_picture(spec: SliderMove, value) -> tuple[np.ndarray, list[Landmark]]:
+def library_picture(spec: SliderMove, value, landmarks: bool = True):
     """The picture the library draws for the app with its control at ``value``, and landmarks."""
     app = spec.build()
     app.refresh()
     app.controls[spec.control].value = value
-    return rgb(app.view.image.value), spec.landmarks(app)
+    picture = rgb(app.view.image.value)
+    return (picture, spec.landmarks(app)) if landmarks else picture
 
 
-def assert_shows_what_the_library_computes(move: Move, spec: SliderMove) -> None:
+def failing_landmarks(picture: np.ndarray, landmarks: list[Landmark]) -> list[str]:
+    """What each landmark the picture does not show expected, and what is there instead."""
+    return [
+        f"{landmark.what}: expected colour {landmark.color} at row {landmark.row}, column "
+        f"{landmark.column}; the picture shows {picture[landmark.row, landmark.column].tolist()}"
+        for landmark in landmarks
+        if np.abs(picture[landmark.row, landmark.column] - landmark.color).max()
+        > landmark.tolerance
+    ]
+
+
+def assert_shows_what_the_library_computes(move: Move, spec: SliderMove, control) -> None:
     expected, landmarks = library_picture(spec, move.value)
-    assert move.after.shape == expected.shape, (move.after.shape, expected.shape)
     assert (move.after != move.before).any(), f"{move.keys}: the picture did not change"
-    differing = (np.abs(move.after - expected) > PIXEL_TOLERANCE).any(axis=2).mean()
+    differing = differing_share(move.after, expected)
     assert differing <= DIFFERING_SHARE, (
         f"{move.keys} -> {spec.control} = {move.value}: {differing:.2%} of the pixels differ "
         f"from the library's picture (tolerance {DIFFERING_SHARE:.2%})"
     )
-    for landmark in landmarks:
-        shown = move.after[landmark.row, landmark.column]
-        assert np.abs(shown - landmark.color).max() <= landmark.tolerance, (
-            f"{landmark.what}: expected colour {landmark.color} at row {landmark.row}, "
-            f"column {landmark.column}; the browser shows {shown.tolist()}"
-        )
+    wrong = failing_landmarks(move.after, landmarks)
+    assert not wrong, f"{len(wrong)} of {len(landmarks)} landmarks fail: {wrong[:5]}"
+    # The two checks must be able to fail: the library's picture one stop off
+    # (what a lagging or misplaced update would show) fails at least one.
+    other = neighbour_value(control, move.value)
+    off = library_picture(spec, other, landmarks=False)
+    assert differing_share(off, expected) > DIFFERING_SHARE or failing_landmarks(off, landmarks), (
+        f"the picture for {spec.control} = {other} would pass as {move.value}: move elsewhere"
+    )
+
+
+def key_names(keys: tuple[str, ...]) -> str:
+    """Keys for a file name, repeats counted: ``('ArrowRight',) * 3`` is ``3xArrowRight``."""
+    groups = [(key, len(list(run))) for key, run in itertools.groupby(keys)]
+    return "-".join(key if count == 1 else f"{count}x{key}" for key, count in groups)
 
 
 def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem: str) -> None:
-    """Every registered move on the first app's slider, each checked and screenshotted."""
+    """Every registered move on the app's slider, each checked and screenshotted."""
     control = spec.build().controls[spec.control]
-    app = first_app(page)
+    app = nth_app(page, spec.app)
     # Before any move, the page must show what spec.build() draws: the registry
-    # entry builds the same app as the notebook's first app cell.
+    # entry builds the same app as the notebook's app cell. (The browser puts
+    # a value off the slider's grid on its nearest stop as it shows the slider.)
+    value = nearest_stop(control, control.value)
     shown = read_picture(app.locator("img.widget-image").first)
-    expected, _ = library_picture(spec, control.value)
-    assert shown.shape == expected.shape
-    differing = (np.abs(shown - expected) > PIXEL_TOLERANCE).any(axis=2).mean()
+    expected, _ = library_picture(spec, value)
+    differing = differing_share(shown, expected)
     assert differing <= DIFFERING_SHARE, (
         f"before any move, {differing:.2%} of the pixels differ from what the registry's "
-        "build() draws: does it build the app as the notebook's first app cell does?"
+        "build() draws: does it build the app as the notebook's app cell does?"
     )
     for step, keys in enumerate(spec.moves, start=1):
-        move = press_on_slider(app, control.description, keys, type(control.value))
-        name = f"{stem}-move{step}-{'-'.join(keys)}-{spec.control}{move.value:g}"
+        move = press_on_slider(app, control, keys, value)
+        value = move.value
+        which = f"-app{spec.app}" if spec.app else ""
+        name = f"{stem}{which}-move{step}-{key_names(keys)}-{spec.control}={move.value:g}"
         app.screenshot(path=folder / f"{name}.png")
-        assert_shows_what_the_library_computes(move, spec)
+        assert_shows_what_the_library_computes(move, spec, control)
     assert not error_outputs(page), error_outputs(page)

@@ -4,11 +4,12 @@ For each ``notebooks/NN_*.ipynb``: open it, clear the committed outputs (so
 that only what this run produces is seen), Run All Cells from the menu, wait
 until every code cell has run and the kernel is idle, then assert that no
 output shows an error and that every slider app rendered its picture. A
-screenshot of the whole notebook is kept. For a lesson whose entry in
-``course.lessons`` names a slider, the slider of its first app is moved with
-the keyboard, and after each move the picture must have changed and match
-what the library renders for the value the slider now shows, landmarks
-included (lesson 01: the red dot at the point ``de_casteljau`` returns).
+screenshot of the whole notebook is kept. For each slider that the lesson's
+entry in ``course.lessons`` names, the slider is moved with the keyboard,
+and after each move the picture must have changed and match what the
+library renders for the value the slider now shows, landmarks included
+(lesson 01: the red dot at the point ``de_casteljau`` returns; lesson 04:
+the Bresenham pixels where ``course.raster.line`` puts them).
 """
 
 from __future__ import annotations
@@ -103,10 +104,8 @@ def test_notebook_runs_in_jupyterlab_and_its_sliders_work(book, lab, page, scree
         assert page.locator("img.widget-image").count() >= apps
         assert not unrendered_apps(page), unrendered_apps(page)
 
-        spec = book.lesson.slider if book.lesson else None
-        if spec is None:
-            return
-        move_sliders_like_a_student(page, spec, folder, book.path.stem)
+        for spec in book.lesson.sliders if book.lesson else ():
+            move_sliders_like_a_student(page, spec, folder, book.path.stem)
     finally:
         shut_down_kernels(lab)
 

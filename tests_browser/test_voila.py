@@ -23,7 +23,7 @@ from tests_browser.student import (
     wait_for_pictures,
 )
 
-WITH_SLIDER = [book for book in notebooks(NOTEBOOKS) if book.lesson and book.lesson.slider]
+WITH_SLIDER = [book for book in notebooks(NOTEBOOKS) if book.lesson and book.lesson.sliders]
 
 
 def code_lines(path) -> list[str]:
@@ -61,5 +61,5 @@ def test_a_lesson_served_by_voila_hides_its_code_and_its_slider_works(voila, pag
     assert not visible_code, f"code is visible: {visible_code[:5]}"
     assert code_lines(book.path), "the check above needs code lines to look for"
 
-    spec = book.lesson.slider
-    move_sliders_like_a_student(page, spec, folder, book.path.stem)
+    for spec in book.lesson.sliders:
+        move_sliders_like_a_student(page, spec, folder, book.path.stem)

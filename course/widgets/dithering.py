@@ -142,11 +142,13 @@ class GrayLevelApp(SliderApp):
     Parameters
     ----------
     level : float
-        Initial slider value in [0, 1].
+        Initial slider value in [0, 1], rounded to the slider's steps of 1/72
+        (eight per ninth), as the browser rounds it when it shows the slider.
     size : int
         Side of the flat patch in pixels (ordered dithering shows 3 times more).
     """
 
+    STEP = 1 / 72
     METHODS = ("threshold", "uniform random", "blue noise", "ordered 3x3", "Bayer 8x8")
 
     def __init__(self, level: float = 0.3, size: int = 24) -> None:
@@ -154,10 +156,10 @@ class GrayLevelApp(SliderApp):
         self.mask = blue_noise_mask(32, np.random.default_rng(0))
         controls = {
             "level": widgets.FloatSlider(
-                value=level,
+                value=round(float(level) / self.STEP) * self.STEP,
                 min=0.0,
                 max=1.0,
-                step=1 / 72,
+                step=self.STEP,
                 description="level",
                 readout_format=".3f",
             )

@@ -95,9 +95,12 @@ class SliderApp:
         self.renders = 0
         for control in controls.values():
             control.observe(self._on_change, names="value")
+        # Controls beside the picture when the window is wide enough, below it
+        # when not: they never shrink, so their labels are never cut off.
+        panel = widgets.VBox(list(controls.values()), layout=widgets.Layout(flex="0 0 auto"))
         self.widget = widgets.HBox(
-            [self.view.image, widgets.VBox(list(controls.values()))],
-            layout=widgets.Layout(align_items="flex-start"),
+            [self.view.image, panel],
+            layout=widgets.Layout(align_items="flex-start", flex_flow="row wrap"),
         )
 
     def value(self, name: str) -> Any:

@@ -176,3 +176,15 @@ def as_choice(value: Any, name: str, choices: tuple[str, ...] | list[str]) -> st
         options = ", ".join(repr(c) for c in choices)
         raise ValueError(f"{name} must be one of {options}; got {value!r}")
     return value
+
+
+def as_rng(rng: Any, name: str = "rng") -> np.random.Generator:
+    """A numpy Generator; None gives ``default_rng(0)``, so results are reproducible."""
+    if rng is None:
+        return np.random.default_rng(0)
+    if not isinstance(rng, np.random.Generator):
+        raise TypeError(
+            f"{name} must be a numpy.random.Generator, e.g. numpy.random.default_rng(0); "
+            f"got {_describe(rng)}"
+        )
+    return rng

@@ -20,7 +20,13 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import _describe, as_float_array, as_int, as_positive_float, require_finite
+from course._validate import (
+    as_float_array,
+    as_int,
+    as_positive_float,
+    as_rng,
+    require_finite,
+)
 
 __all__ = [
     "blue_noise_mask",
@@ -123,7 +129,7 @@ def void_and_cluster(
     True
     """
     size = as_int(size, "size", minimum=2)
-    generator = _as_rng(rng)
+    generator = as_rng(rng)
     sigma = as_positive_float(sigma, "sigma")
     fraction = as_positive_float(initial_fraction, "initial_fraction")
     if fraction > 0.5:
@@ -192,17 +198,6 @@ def blue_noise_mask(size: int = 64, rng: np.random.Generator | None = None) -> n
     """
     ranks = void_and_cluster(size, rng)
     return (ranks + 0.5) / ranks.size
-
-
-def _as_rng(rng: Any) -> np.random.Generator:
-    if rng is None:
-        return np.random.default_rng(0)
-    if not isinstance(rng, np.random.Generator):
-        raise TypeError(
-            f"rng must be a numpy.random.Generator, e.g. numpy.random.default_rng(0); "
-            f"got {_describe(rng)}"
-        )
-    return rng
 
 
 def _as_texture(image: Any) -> np.ndarray:

@@ -152,12 +152,13 @@ def paint(
     elif mode == "max":
         np.maximum.at(image, (y, x), strength * value)
     else:
-        # Blending the same color k times leaves color + (old - color) * prod(1 - w).
-        remaining = np.ones_like(image)
-        np.multiply.at(remaining, (y, x), 1.0 - strength)
-        rows, columns = np.divmod(np.unique(y * image.shape[1] + x), image.shape[1])
-        old = image[rows, columns]
-        image[rows, columns] = value + (old - value) * remaining[rows, columns]
+        # Blending the same color k times leaves color + (old - color) * prod(1 - w),
+        # so one product per distinct painted pixel is enough.
+        flat, slot = np.unique(y * image.shape[1] + x, return_inverse=True)
+        remaining = np.ones((len(flat), *image.shape[2:]))
+        np.multiply.at(remaining, slot.ravel(), 1.0 - strength)
+        rows, columns = np.divmod(flat, image.shape[1])
+        image[rows, columns] = value + (image[rows, columns] - value) * remaining
     return image
 
 

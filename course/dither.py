@@ -26,8 +26,8 @@ from typing import Any
 import numpy as np
 from scipy import ndimage
 
-from course._validate import as_choice, as_gray, as_int, as_positive_float
-from course.blue_noise import _as_rng, blue_noise_mask
+from course._validate import as_choice, as_gray, as_int, as_positive_float, as_rng
+from course.blue_noise import blue_noise_mask
 from course.error_diffusion import (
     KERNELS,
     METHODS,
@@ -87,7 +87,7 @@ def uniform_random(gray: Any, rng: np.random.Generator | None = None) -> np.ndar
            [0., 0., 1., 0.]])
     """
     array = as_gray(gray, "gray")
-    noise = _as_rng(rng).random(array.shape)
+    noise = as_rng(rng).random(array.shape)
     return (array + (noise - 0.5) > 0.5).astype(float)
 
 

@@ -1,4 +1,4 @@
-"""Lesson 03: drawing seed 000's curve on 700 x 700, against matplotlib's Agg.
+"""Lesson 05: drawing seed 000's curve on 700 x 700, against matplotlib's Agg.
 
 The anchor is a new ``RendererAgg`` of 700 x 700 at 72 dpi and one
 ``draw_path`` of the cubic (``CURVE4`` codes, width 1, round caps): Agg's

@@ -1,4 +1,4 @@
-"""Lesson 04: Bresenham lines and filled triangles against scikit-image.
+"""Lesson 03: Bresenham lines and filled triangles against scikit-image.
 
 Each line is the best of several runs of ours divided by the best of the
 anchor's, measured in the same run, with the goal beside it.

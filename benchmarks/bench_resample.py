@@ -1,4 +1,4 @@
-"""Lesson 05: supersampling 2500 x 2500 to 320 x 320 at rate 12, as the lab does.
+"""Lesson 04: supersampling 2500 x 2500 to 320 x 320 at rate 12, as the lab does.
 
 The anchor is Pillow's ``Image.resize(..., Image.Resampling.BOX)`` on the
 same sizes: one area-weighted average per output pixel in compiled code, on

@@ -5,7 +5,7 @@ the course map) and a slider the browser tests move. This module makes
 them: every picture calls the library's functions or apps with the
 notebook's own arguments, and every landmark function computes, with the
 library and not from the app's artists, pixels of the app's picture whose
-colour is then known for the value the slider shows (lesson 04: the
+colour is then known for the value the slider shows (lesson 03: the
 Bresenham pixels where ``course.raster.line`` puts them, black on white;
 lesson 06: every pixel of the flat patch as ``course.dither`` dithers it).
 Each is chosen so that the picture one slider stop away fails it
@@ -146,7 +146,7 @@ def bernstein_picture(degree: int, t: float) -> Picture:
     )
 
 
-# --- Lesson 03: anti-aliasing a curve ----------------------------------------
+# --- Lesson 05: anti-aliasing a curve ----------------------------------------
 
 SEED_000_SHAPE = (700, 700)
 ZOOM_PICKS = ("bilinear_zero_offset", "bilinear_corners", "bilinear_centres")
@@ -176,7 +176,7 @@ def seed_000_renderings() -> tuple[dict[str, np.ndarray], np.ndarray]:
 
 
 def zoom_app() -> ZoomApp:
-    """Lesson 03's first app, as its notebook builds it."""
+    """Lesson 05's first app, as its notebook builds it."""
     renderings, exact = seed_000_renderings()
     return ZoomApp(renderings, np.array(SEED_000_POINTS), exact, picks=ZOOM_PICKS)
 
@@ -225,7 +225,7 @@ def step_app_picture(weighting: str) -> bytes:
     return app_picture(app)
 
 
-# --- Lesson 04: lines and triangles ------------------------------------------
+# --- Lesson 03: lines and triangles ------------------------------------------
 
 
 def line_landmarks(app: SliderApp) -> list[Landmark]:
@@ -268,7 +268,7 @@ def triangle_picture(rule: str) -> bytes:
     return app_picture(app)
 
 
-# --- Lesson 05: supersampling ------------------------------------------------
+# --- Lesson 04: sampling and supersampling -----------------------------------
 
 
 @functools.cache

@@ -176,69 +176,25 @@ LESSONS: dict[str, Lesson] = {
     ),
     "03": Lesson(
         "03",
-        handout="GAMES101 homework 4, improvement part (seeds 000, 002, 003): anti-aliasing "
-        "the curve with seed 000's three addColor splats, seed 002's sub-sample falloff and "
-        "seed 003's normalised splat",
-        teaches="a curve's pixels as the coverage of a stroke: every handout splat measured "
-        "against an exact reference and Agg, the t-step pitfall and the arc-length fix",
-        pictures=(
-            Picture(
-                "03_every_variant_zoomed",
-                "seed 000's curve near its first control point, every variant as 14 x 14 "
-                "flat pixels under the true curve (red), beside the exact reference",
-                views.zoom_every_variant,
-            ),
-            Picture(
-                "03_seed000_three_splats_position0.10",
-                "seed 000's left, middle and right addColor beside the exact reference, "
-                "10% of the way along the curve, with each window's RMSE",
-                lambda: app_picture(views.zoom_app()),
-            ),
-            Picture(
-                "03_t_step_0.001_count",
-                "bilinear_centres at the handouts' t step 0.001, splats counted as the "
-                "handouts do: the brightness per unit length follows the curve's speed, "
-                "about half at the fast ends",
-                lambda: views.step_app_picture("count"),
-            ),
-            Picture(
-                "03_t_step_0.001_arc_length",
-                "the same splats weighted by arc length: brightness 1 per unit length "
-                "along the curve, dipping only near the fast ends, where samples 0.001 "
-                "apart leave gaps",
-                lambda: views.step_app_picture("arc_length"),
-            ),
-        ),
-        sliders=(
-            SliderMove(
-                build=views.zoom_app,
-                control="position",
-                moves=(("ArrowRight", "ArrowRight"), ("ArrowRight",) * 4, ("End",), ("Home",)),
-                landmarks=views.zoom_landmarks,
-            ),
-        ),
-    ),
-    "04": Lesson(
-        "04",
         handout="Lab 1 report (seed 001), Task 4 (Bresenham's line in every octant) and "
         "Task 5 (scanline triangle filling)",
         teaches="Bresenham's line in all eight octants against the report's 4-connected "
         "staircase; filled triangles with the top-left rule, no cracks and no double paint",
         pictures=(
             Picture(
-                "04_line_bresenham_report_wu",
+                "03_line_bresenham_report_wu",
                 "the line from (3, 6) to (27, 17): Bresenham, the report's staircase "
                 "(|dx| + |dy| + 1 pixels) and Wu's anti-aliased line",
                 lambda: app_picture(LineApp()),
             ),
             Picture(
-                "04_triangles_top_left",
+                "03_triangles_top_left",
                 "two triangles sharing an edge, filled with the top-left rule: every "
                 "pixel painted once; right, 4 x 4 supersampled coverage",
                 lambda: views.triangle_picture("top-left"),
             ),
             Picture(
-                "04_triangles_closed",
+                "03_triangles_closed",
                 "the same triangles with the closed rule: the pixels whose centres lie on "
                 "the shared edge are painted twice (red)",
                 lambda: views.triangle_picture("closed"),
@@ -253,21 +209,21 @@ LESSONS: dict[str, Lesson] = {
             ),
         ),
     ),
-    "05": Lesson(
-        "05",
+    "04": Lesson(
+        "04",
         handout="Lab 1 report (seed 001), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
         "by supersampling",
         teaches="supersampling as an estimate of the box filter, measured against a zone "
         "plate's exact downsample; the report's half-sample shift found and measured",
         pictures=(
             Picture(
-                "05_zone_plate_rate1",
+                "04_zone_plate_rate1",
                 "the zone plate shrunk to 320 x 320 with one sample per pixel: false rings, "
                 "their difference from the exact box filter, and the error at every rate",
                 lambda: app_picture(views.supersample_app(1)),
             ),
             Picture(
-                "05_zone_plate_rate4",
+                "04_zone_plate_rate4",
                 "the same at rate 4 (16 samples per pixel): the false rings are gone",
                 lambda: app_picture(views.supersample_app(4)),
             ),
@@ -278,6 +234,50 @@ LESSONS: dict[str, Lesson] = {
                 control="rate",
                 moves=(("ArrowRight", "ArrowRight"), ("End",)),
                 landmarks=views.supersample_landmarks,
+            ),
+        ),
+    ),
+    "05": Lesson(
+        "05",
+        handout="GAMES101 homework 4, improvement part (seeds 000, 002, 003): anti-aliasing "
+        "the curve with seed 000's three addColor splats, seed 002's sub-sample falloff and "
+        "seed 003's normalised splat",
+        teaches="a curve's pixels as the coverage of a stroke: every handout splat measured "
+        "against an exact reference and Agg, the t-step pitfall and the arc-length fix",
+        pictures=(
+            Picture(
+                "05_every_variant_zoomed",
+                "seed 000's curve near its first control point, every variant as 14 x 14 "
+                "flat pixels under the true curve (red), beside the exact reference",
+                views.zoom_every_variant,
+            ),
+            Picture(
+                "05_seed000_three_splats_position0.10",
+                "seed 000's left, middle and right addColor beside the exact reference, "
+                "10% of the way along the curve, with each window's RMSE",
+                lambda: app_picture(views.zoom_app()),
+            ),
+            Picture(
+                "05_t_step_0.001_count",
+                "bilinear_centres at the handouts' t step 0.001, splats counted as the "
+                "handouts do: the brightness per unit length follows the curve's speed, "
+                "about half at the fast ends",
+                lambda: views.step_app_picture("count"),
+            ),
+            Picture(
+                "05_t_step_0.001_arc_length",
+                "the same splats weighted by arc length: brightness 1 per unit length "
+                "along the curve, dipping only near the fast ends, where samples 0.001 "
+                "apart leave gaps",
+                lambda: views.step_app_picture("arc_length"),
+            ),
+        ),
+        sliders=(
+            SliderMove(
+                build=views.zoom_app,
+                control="position",
+                moves=(("ArrowRight", "ArrowRight"), ("ArrowRight",) * 4, ("End",), ("Home",)),
+                landmarks=views.zoom_landmarks,
             ),
         ),
     ),

@@ -41,8 +41,8 @@ def test_writes_every_registered_picture_of_the_lessons_present(tmp_path):
     assert_landmarks(out / "01_de_casteljau_degree3_t0.25.png", spec.landmarks(app))
     # The slider apps' pictures show what the library computes, landmark by landmark.
     for number, name in (
-        ("03", "03_seed000_three_splats_position0.10"),
-        ("04", "04_line_bresenham_report_wu"),
+        ("03", "03_line_bresenham_report_wu"),
+        ("05", "05_seed000_three_splats_position0.10"),
         ("06", "06_gray_level_0.30"),
         ("08", "08_jacobi_1000_sweeps"),
     ):

@@ -1,4 +1,4 @@
-"""Lesson 04-05 apps: moving a slider redraws what the library computes."""
+"""Lesson 03-04 apps: moving a slider redraws what the library computes."""
 
 import numpy as np
 import pytest

@@ -8,7 +8,7 @@ screenshot of the whole notebook is kept. For each slider that the lesson's
 entry in ``course.lessons`` names, the slider is moved with the keyboard,
 and after each move the picture must have changed and match what the
 library renders for the value the slider now shows, landmarks included
-(lesson 01: the red dot at the point ``de_casteljau`` returns; lesson 04:
+(lesson 01: the red dot at the point ``de_casteljau`` returns; lesson 03:
 the Bresenham pixels where ``course.raster.line`` puts them).
 """
 

@@ -1,4 +1,4 @@
-"""Lesson 03's exercise: write the bilinear splat about pixel centres.
+"""Lesson 05's exercise: write the bilinear splat about pixel centres.
 
 The GAMES101 optional task: for a curve point, do not light one pixel but
 share it among the pixels around it, by distance to their centres. The

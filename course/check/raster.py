@@ -1,4 +1,4 @@
-"""Checkers for lesson 04: the lab's ``DrawLine`` and ``DrawTriangleFilled``.
+"""Checkers for lesson 03: the lab's ``DrawLine`` and ``DrawTriangleFilled``.
 
 The student's functions return pixels, as :mod:`course.raster` does:
 ``draw_line(p0, p1)`` the (x, y) pixels of the line from p0 to p1, in

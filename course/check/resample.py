@@ -1,4 +1,4 @@
-"""Checker for lesson 05: the lab's supersampling (Task 6).
+"""Checker for lesson 04: the lab's supersampling (Task 6).
 
 The student's ``supersample(image, out_shape, rate)`` returns the shrunk
 image: for each output pixel, the mean of rate x rate bilinear samples at

@@ -1,4 +1,4 @@
-"""Lesson 03's apps: zoomed pixel views of anti-aliased curves.
+"""Lesson 05's apps: zoomed pixel views of anti-aliased curves.
 
 :class:`ZoomApp` shows the same window of several renderings side by side,
 each pixel a flat square (nearest interpolation), with the pixel grid and

@@ -1,4 +1,4 @@
-"""Lesson 04's apps: Bresenham against the report's staircase, and filled triangles.
+"""Lesson 03's apps: Bresenham against the report's staircase, and filled triangles.
 
 :class:`LineApp` draws one line three ways on a zoomed 32 x 32 grid, with
 the ideal line (from pixel centre to pixel centre) on top. :class:`TriangleApp`

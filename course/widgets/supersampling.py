@@ -1,4 +1,4 @@
-"""Lesson 05's app: shrinking an image by supersampling, rate by rate.
+"""Lesson 04's app: shrinking an image by supersampling, rate by rate.
 
 The lab shrinks a 2500 x 2500 image to 320 x 320. :class:`SupersampleApp`
 does that to a zone plate, whose exact box-filtered downsample is known in

@@ -1,7 +1,10 @@
-"""Sample images: matplotlib's bundled photograph and procedural test images.
+"""The course's examples: its curves, matplotlib's bundled photograph, procedural images.
 
-Every image is a float array in [0, 1], gray (H, W) or RGB (H, W, 3). Nothing
-is downloaded: photographs come from matplotlib's own sample data.
+Every example is defined here once, and every lesson, app, checker, test and
+benchmark takes it from here. Curves are read-only float arrays ``(N, 2)``
+of control points in image space; images are float arrays in [0, 1], gray
+(H, W) or RGB (H, W, 3). Nothing is downloaded: photographs come from
+matplotlib's own sample data.
 """
 
 from __future__ import annotations
@@ -14,12 +17,49 @@ from matplotlib import cbook
 from course._validate import as_image, as_int, as_positive_float, as_shape
 
 __all__ = [
+    "EXAMPLE_POINTS",
+    "SEED_000_CUBIC",
+    "SEED_000_SHAPE",
     "photograph",
     "ramp",
     "to_gray",
     "zone_plate",
     "zone_plate_box",
 ]
+
+
+def _read_only(points: list[list[float]]) -> np.ndarray:
+    array = np.array(points, dtype=float)
+    array.flags.writeable = False
+    return array
+
+
+# --- lessons 01-02 and 05: the curves -----------------------------------------
+
+#: The GAMES101 handout's test curve (seed 000): a cubic S across a 700 x 700 window.
+SEED_000_CUBIC = _read_only([[10, 10], [690, 10], [10, 690], [690, 690]])
+#: The window, (H, W), seed 000 draws its curve in.
+SEED_000_SHAPE = (700, 700)
+#: Twelve control points for the de Casteljau app: seed 000's cubic, then a zigzag
+#: that seed 002's degree-9 curve could have. Take the first N for N points.
+EXAMPLE_POINTS = _read_only(
+    [
+        [10, 10],
+        [690, 10],
+        [10, 690],
+        [690, 690],
+        [350, 600],
+        [120, 350],
+        [600, 150],
+        [250, 60],
+        [470, 480],
+        [60, 520],
+        [640, 380],
+        [350, 250],
+    ]
+)
+
+# --- images -------------------------------------------------------------------
 
 # ITU-R BT.601 luma weights, as OpenCV's cvtColor(..., COLOR_RGB2GRAY).
 _LUMA = np.array([0.299, 0.587, 0.114])

@@ -1,4 +1,4 @@
-"""course.edition: the student edition's stubs fail their checkers, the solutions pass."""
+"""course.classroom.edition: the student edition's stubs fail their checkers, the solutions pass."""
 
 import ast
 import copy
@@ -8,15 +8,15 @@ import nbformat
 import pytest
 from nbclient import NotebookClient
 
-from course.__main__ import main
-from course.edition import (
+from course.classroom.cli import main
+from course.classroom.edition import (
     STUB_LINE,
     exercise_stub,
     solution_cells,
     student_notebook,
     write_student_edition,
 )
-from course.lessons import notebooks
+from course.classroom.notebooks import notebooks
 
 SOLUTION = '''import math
 

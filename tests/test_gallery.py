@@ -1,4 +1,4 @@
-"""course.gallery and ``python -m course gallery``: pictures written, none clobbered unasked."""
+"""course.classroom.gallery and ``python -m course gallery``: pictures written, none clobbered."""
 
 import io
 
@@ -6,9 +6,12 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from course.__main__ import main
-from course.gallery import ProgressBar, gallery_pictures, write_gallery
-from course.lessons import LESSONS, Picture, notebooks
+from course.classroom.cli import main
+from course.classroom.gallery import ProgressBar, gallery_pictures, write_gallery
+from course.classroom.notebooks import notebooks
+from course.classroom.registry import Picture, lessons
+
+LESSONS = lessons()
 
 
 def tiny_png(value: int) -> bytes:
@@ -24,7 +27,9 @@ def test_writes_every_registered_picture_of_the_lessons_present(tmp_path):
     stream = io.StringIO()
     out = tmp_path / "new" / "gallery"
     written = write_gallery(out, stream=stream)
-    expected = [picture.name + ".png" for book in notebooks() for picture in book.pictures]
+    expected = [
+        f"{picture.name}.png" for book in notebooks() for picture in LESSONS[book.number].pictures
+    ]
     assert [path.name for path in written] == expected
     assert sorted(path.name for path in out.iterdir()) == sorted(expected)
     assert len(expected) >= len(LESSONS)
@@ -90,7 +95,7 @@ def test_duplicate_names_are_refused_before_writing(tmp_path):
 
 def test_progress_bar_redraws_one_line_over_a_longer_label():
     stream = io.StringIO()
-    bar = ProgressBar(2, stream, width=4)
+    bar = ProgressBar(2, stream, length=4)
     bar.advance("a-long-name.png")
     bar.advance("b.png")
     bar.close()
@@ -101,7 +106,7 @@ def test_progress_bar_redraws_one_line_over_a_longer_label():
 
 def test_command_line_refuses_then_forces(tmp_path, capsys, monkeypatch):
     # The command's own work, on two tiny pictures (the test above renders the real ones).
-    monkeypatch.setattr("course.gallery.gallery_pictures", lambda folder: TINY)
+    monkeypatch.setattr("course.classroom.gallery.gallery_pictures", lambda folder: TINY)
     (tmp_path / "keep.txt").write_text("x")
     assert main(["gallery", "--out", str(tmp_path)]) == 2
     assert "is not empty" in capsys.readouterr().err

@@ -6,8 +6,9 @@ import numpy as np
 from PIL import Image
 
 from course.bezier import bernstein_basis, de_casteljau, de_casteljau_levels
+from course.images import EXAMPLE_POINTS
 from course.widgets import BernsteinBasisApp, DeCasteljauApp
-from course.widgets.de_casteljau import DEFAULT_POINTS, parse_points
+from course.widgets.de_casteljau import parse_points
 
 CRIMSON = np.array([220, 20, 60])
 
@@ -34,7 +35,7 @@ def test_moving_t_redraws_the_levels_and_the_point_where_de_casteljau_puts_them(
     app.controls["t"].value = 0.3
     assert app.view.image.value != before
     points = parse_points(app.value("points"))
-    np.testing.assert_array_equal(points, DEFAULT_POINTS[:4])
+    np.testing.assert_array_equal(points, EXAMPLE_POINTS[:4])
     levels = de_casteljau_levels(points, 0.3)
     for drawn, level in zip(drawn_levels(app), levels[:-1], strict=True):
         np.testing.assert_allclose(drawn, level)
@@ -51,14 +52,14 @@ def test_more_points_extend_the_list_and_draw_every_level():
     app = DeCasteljauApp(t=0.7)
     app.controls["count"].value = 10
     points = parse_points(app.value("points"))
-    np.testing.assert_array_equal(points, DEFAULT_POINTS[:10])
+    np.testing.assert_array_equal(points, EXAMPLE_POINTS[:10])
     levels = de_casteljau_levels(points, 0.7)
     assert len(drawn_levels(app)) == 9
     for drawn, level in zip(drawn_levels(app), levels[:-1], strict=True):
         np.testing.assert_allclose(drawn, level)
     assert "degree 9" in app.title.get_text()
     app.controls["count"].value = 2
-    assert parse_points(app.value("points")).tolist() == DEFAULT_POINTS[:2].tolist()
+    assert parse_points(app.value("points")).tolist() == EXAMPLE_POINTS[:2].tolist()
     assert len(drawn_levels(app)) == 1
 
 

@@ -21,11 +21,9 @@ import numpy as np
 from PIL import Image
 from playwright.sync_api import Locator, Page
 
-from course.showcase import (
-    DIFFERING_SHARE,
-    Landmark,
-    SliderMove,
-    differing_share,
+from course.classroom.pictures import DIFFERING_SHARE, differing_share
+from course.classroom.registry import Landmark, SliderMove
+from course.classroom.sliders import (
     nearest_stop,
     neighbour_value,
     readout_shows,

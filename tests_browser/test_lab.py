@@ -5,7 +5,7 @@ that only what this run produces is seen), Run All Cells from the menu, wait
 until every code cell has run and the kernel is idle, then assert that no
 output shows an error and that every slider app rendered its picture. A
 screenshot of the whole notebook is kept. For each slider that the lesson's
-entry in ``course.lessons`` names, the slider is moved with the keyboard,
+module in ``course.lessons`` registers, the slider is moved with the keyboard,
 and after each move the picture must have changed and match what the
 library renders for the value the slider now shows, landmarks included
 (lesson 01: the red dot at the point ``de_casteljau`` returns; lesson 03:
@@ -21,7 +21,8 @@ import urllib.request
 import pytest
 from playwright.sync_api import Page
 
-from course.lessons import NOTEBOOKS, notebooks
+from course.classroom.notebooks import NOTEBOOKS, notebooks
+from course.classroom.registry import lessons
 from tests_browser.student import (
     error_outputs,
     move_sliders_like_a_student,
@@ -32,6 +33,7 @@ from tests_browser.student import (
 )
 
 BOOKS = notebooks(NOTEBOOKS, index=True)
+LESSONS = lessons()
 RUN_TIMEOUT = 300  # seconds for one notebook's Run All
 
 
@@ -104,7 +106,7 @@ def test_notebook_runs_in_jupyterlab_and_its_sliders_work(book, lab, page, scree
         assert page.locator("img.widget-image").count() >= apps
         assert not unrendered_apps(page), unrendered_apps(page)
 
-        for spec in book.lesson.sliders if book.lesson else ():
+        for spec in LESSONS[book.number].sliders if book.number in LESSONS else ():
             move_sliders_like_a_student(page, spec, folder, book.path.stem)
     finally:
         shut_down_kernels(lab)

@@ -1,6 +1,6 @@
 """One lesson as ``make app`` serves it: Voila, code hidden, the slider live.
 
-The lesson is the first one whose entry in ``course.lessons`` names a
+The lesson is the first one whose module in ``course.lessons`` registers a
 slider. Voila streams the page while its kernel runs the notebook, so the
 page has loaded when every cell has run; then the pictures must appear,
 no output may show an error, no line of code may be visible, and moving the
@@ -13,7 +13,8 @@ import json
 
 import pytest
 
-from course.lessons import NOTEBOOKS, notebooks
+from course.classroom.notebooks import NOTEBOOKS, notebooks
+from course.classroom.registry import lessons
 from tests_browser.student import (
     error_outputs,
     move_sliders_like_a_student,
@@ -23,7 +24,10 @@ from tests_browser.student import (
     wait_for_pictures,
 )
 
-WITH_SLIDER = [book for book in notebooks(NOTEBOOKS) if book.lesson and book.lesson.sliders]
+LESSONS = lessons()
+WITH_SLIDER = [
+    book for book in notebooks(NOTEBOOKS) if book.number in LESSONS and LESSONS[book.number].sliders
+]
 
 
 def code_lines(path) -> list[str]:
@@ -61,5 +65,5 @@ def test_a_lesson_served_by_voila_hides_its_code_and_its_slider_works(voila, pag
     assert not visible_code, f"code is visible: {visible_code[:5]}"
     assert code_lines(book.path), "the check above needs code lines to look for"
 
-    for spec in book.lesson.sliders:
+    for spec in LESSONS[book.number].sliders:
         move_sliders_like_a_student(page, spec, folder, book.path.stem)

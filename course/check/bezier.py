@@ -16,10 +16,9 @@ import numpy as np
 
 from course.bezier import bezier_bernstein, de_casteljau
 from course.check.base import CheckResult, close, run_cases
+from course.images import SEED_000_CUBIC
 
 __all__ = ["naive_bezier", "recursive_bezier"]
-
-_SEED_000 = [[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]
 
 
 def _cases(max_points: int) -> list[dict[str, Any]]:
@@ -27,7 +26,7 @@ def _cases(max_points: int) -> list[dict[str, Any]]:
     polygons = [
         np.array([[0.0, 0.0], [4.0, 2.0]]),
         np.array([[0.0, 0.0], [1.0, 2.0], [4.0, 0.0]]),
-        np.array(_SEED_000),
+        SEED_000_CUBIC.copy(),
     ]
     polygons += [rng.uniform(0, 700, (count, 2)).round(1) for count in range(5, max_points + 1)]
     cases = []

@@ -24,14 +24,13 @@ from course.aa_metrics import intensity_along, uniformity
 from course.antialias import SPLAT_METHODS, WEIGHTINGS, render
 from course.canvas import crop
 from course.coverage import as_curve, curve_polyline
+from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.widgets.base import SliderApp
 
 __all__ = ["StepApp", "ZoomApp", "ZoomPanel", "zoom_figure"]
 
+
 # Seed 000's test curve on its 700 x 700 window.
-SEED_000_POINTS = ((10.0, 10.0), (690.0, 10.0), (10.0, 690.0), (690.0, 690.0))
-
-
 class CurveWalk:
     """Points of a curve by fraction of its arc length, for moving a window along it."""
 
@@ -187,7 +186,9 @@ class StepApp(SliderApp):
     for every step fine enough to leave no gaps.
     """
 
-    def __init__(self, points: Any = SEED_000_POINTS, shape: tuple[int, int] = (700, 700)) -> None:
+    def __init__(
+        self, points: Any = SEED_000_CUBIC, shape: tuple[int, int] = SEED_000_SHAPE
+    ) -> None:
         self.points = as_curve(points)
         self.shape = shape
         self.walk = CurveWalk(self.points)

@@ -16,29 +16,12 @@ import matplotlib
 import numpy as np
 
 from course.bezier import de_casteljau, de_casteljau_levels
+from course.images import EXAMPLE_POINTS
 from course.widgets.base import SliderApp
 
-__all__ = ["DEFAULT_POINTS", "DeCasteljauApp", "format_points", "parse_points"]
+__all__ = ["DeCasteljauApp", "format_points", "parse_points"]
 
-# Seed 000's main loop, then a zigzag that seed 002's degree-9 curve could have.
-DEFAULT_POINTS = np.array(
-    [
-        [10, 10],
-        [690, 10],
-        [10, 690],
-        [690, 690],
-        [350, 600],
-        [120, 350],
-        [600, 150],
-        [250, 60],
-        [470, 480],
-        [60, 520],
-        [640, 380],
-        [350, 250],
-    ],
-    dtype=float,
-)
-MIN_POINTS, MAX_POINTS = 2, len(DEFAULT_POINTS)
+MIN_POINTS, MAX_POINTS = 2, len(EXAMPLE_POINTS)
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 _CURVE_SAMPLES = 201
 
@@ -77,11 +60,11 @@ class DeCasteljauApp(SliderApp):
 
     Controls: ``t`` (0 to 1), ``count`` (number of control points, 2 to 12)
     and ``points`` (the control points as text). Changing ``count`` cuts the
-    list or extends it with :data:`DEFAULT_POINTS`.
+    list or extends it with :data:`EXAMPLE_POINTS`.
     """
 
     def __init__(self, points: np.ndarray | None = None, t: float = 0.5, size: int = 500) -> None:
-        start = DEFAULT_POINTS[:4] if points is None else parse_points(format_points(points))
+        start = EXAMPLE_POINTS[:4] if points is None else parse_points(format_points(points))
         controls = {
             "t": widgets.FloatSlider(value=t, min=0.0, max=1.0, step=0.01, description="t"),
             "count": widgets.IntSlider(
@@ -149,7 +132,7 @@ class DeCasteljauApp(SliderApp):
             self.status.value = ""
         count = self.value("count")
         if self._count_changed:
-            points = np.vstack([points, DEFAULT_POINTS[len(points) : count]])[:count]
+            points = np.vstack([points, EXAMPLE_POINTS[len(points) : count]])[:count]
         points = points[:MAX_POINTS]
         if len(points) != count or self._count_changed:
             self._syncing = True

@@ -1,11 +1,10 @@
 """The gallery: every lesson's key figures as PNG files, without Jupyter.
 
 For slides and for readers without Jupyter: ``python -m course gallery --out
-DIR`` renders the pictures registered in :data:`course.lessons.LESSONS` for
-the lessons whose notebooks exist. It refuses to write into a folder that
-already holds anything unless told ``force=True``, and it never deletes a
-file: with ``force`` it adds its own files, replacing only files of the same
-names.
+DIR`` renders the pictures registered by the lesson modules whose notebooks
+exist. It refuses to write into a folder that already holds anything unless
+told ``force=True``, and it never deletes a file: with ``force`` it adds its
+own files, replacing only files of the same names.
 """
 
 from __future__ import annotations
@@ -14,9 +13,11 @@ import sys
 from pathlib import Path
 from typing import TextIO
 
-from course.lessons import NOTEBOOKS, Picture, notebooks
+from course.classroom.folders import check_output_folder
+from course.classroom.notebooks import NOTEBOOKS, notebooks
+from course.classroom.registry import Picture, lessons
 
-__all__ = ["ProgressBar", "check_output_folder", "gallery_pictures", "write_gallery"]
+__all__ = ["ProgressBar", "gallery_pictures", "write_gallery"]
 
 
 class ProgressBar:
@@ -26,21 +27,21 @@ class ProgressBar:
     --------
     >>> import io
     >>> stream = io.StringIO()
-    >>> bar = ProgressBar(4, stream, width=8)
+    >>> bar = ProgressBar(4, stream, length=8)
     >>> bar.advance("first.png")
     >>> stream.getvalue()
     '\\r[##------] 1/4 first.png'
     """
 
-    def __init__(self, total: int, stream: TextIO | None = None, width: int = 30) -> None:
-        self.total, self.done, self.width = total, 0, width
+    def __init__(self, total: int, stream: TextIO | None = None, length: int = 30) -> None:
+        self.total, self.done, self.length = total, 0, length
         self.stream = sys.stderr if stream is None else stream
         self._last_length = 0
 
     def advance(self, label: str) -> None:
         self.done += 1
-        filled = round(self.width * self.done / max(self.total, 1))
-        line = f"[{'#' * filled}{'-' * (self.width - filled)}] {self.done}/{self.total} {label}"
+        filled = round(self.length * self.done / max(self.total, 1))
+        line = f"[{'#' * filled}{'-' * (self.length - filled)}] {self.done}/{self.total} {label}"
         # Pad over a longer previous label, since "\r" only moves the cursor.
         self.stream.write("\r" + line.ljust(self._last_length))
         self._last_length = len(line)
@@ -51,21 +52,15 @@ class ProgressBar:
         self.stream.flush()
 
 
-def check_output_folder(out: Path, force: bool) -> None:
-    """Refuse a file, or a folder that holds anything unless ``force``: nothing is deleted."""
-    if out.exists() and not out.is_dir():
-        raise NotADirectoryError(f"out: expected a folder; got the file {out}")
-    if out.is_dir() and any(out.iterdir()) and not force:
-        raise FileExistsError(
-            f"out: {out} is not empty; choose an empty folder, or pass force=True "
-            "(--force) to add these files to it (files of the same names are replaced, "
-            "nothing is deleted)"
-        )
-
-
 def gallery_pictures(folder: str | Path = NOTEBOOKS) -> list[Picture]:
     """The registered pictures of every lesson notebook in ``folder``, in lesson order."""
-    return [picture for book in notebooks(folder) for picture in book.pictures]
+    registered = lessons()
+    return [
+        picture
+        for book in notebooks(folder)
+        if book.number in registered
+        for picture in registered[book.number].pictures
+    ]
 
 
 def write_gallery(

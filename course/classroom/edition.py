@@ -1,5 +1,8 @@
 """The student edition: every notebook with its solutions replaced by stubs.
 
+Standard library only: ``python -m course student`` needs no numpy, matplotlib
+or ipywidgets.
+
 An exercise cell in a lesson is tagged ``solution``: it defines the
 student's function and ends with the checker call, for example::
 
@@ -27,8 +30,8 @@ import json
 from pathlib import Path
 from typing import Any
 
-from course.gallery import check_output_folder
-from course.lessons import NOTEBOOKS, notebooks
+from course.classroom.folders import check_output_folder
+from course.classroom.notebooks import NOTEBOOKS, notebooks
 
 __all__ = [
     "SOLUTION_TAG",

@@ -1,0 +1,63 @@
+"""Command line: ``python -m course gallery --out DIR``, ``student --out DIR`` and ``map``.
+
+Standard library only: ``student`` is a JSON transform and runs without numpy,
+matplotlib or ipywidgets; ``gallery`` loads them when the lesson modules draw.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from course.classroom import edition, gallery
+from course.classroom.course_map import course_map
+from course.classroom.notebooks import NOTEBOOKS
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m course", description=__doc__)
+    commands = parser.add_subparsers(dest="command", required=True)
+    gallery_command = commands.add_parser(
+        "gallery", help="render every lesson's key figures to PNG files, without Jupyter"
+    )
+    student_command = commands.add_parser(
+        "student", help="write the notebooks with solutions replaced by stubs, outputs cleared"
+    )
+    for command in (gallery_command, student_command):
+        command.add_argument("--out", required=True, type=Path, help="the folder to write")
+        command.add_argument(
+            "--force",
+            action="store_true",
+            help="write into a non-empty folder (files of the same names are replaced; "
+            "nothing is deleted)",
+        )
+        command.add_argument(
+            "--notebooks", type=Path, default=NOTEBOOKS, help="the lessons' folder"
+        )
+    map_command = commands.add_parser(
+        "map", help="print the course map: a Markdown table of the lessons (the README's)"
+    )
+    map_command.add_argument(
+        "--notebooks", type=Path, default=NOTEBOOKS, help="the lessons' folder"
+    )
+    map_command.add_argument(
+        "--link-prefix",
+        default="",
+        help="what goes before each notebook's file name in its link ('notebooks/' for the README)",
+    )
+    args = parser.parse_args(argv)
+    try:
+        if args.command == "map":
+            print(course_map(args.notebooks, args.link_prefix))
+            return 0
+        if args.command == "gallery":
+            pictures = gallery.gallery_pictures(args.notebooks)
+            written = gallery.write_gallery(args.out, args.force, pictures)
+        else:
+            written = edition.write_student_edition(args.out, args.notebooks, args.force)
+    except (FileExistsError, NotADirectoryError, ValueError) as error:
+        print(f"python -m course {args.command}: {error}", file=sys.stderr)
+        return 2
+    print(f"wrote {len(written)} files to {args.out}", file=sys.stderr)
+    return 0

@@ -1,0 +1,150 @@
+"""What a notebook cannot say about itself: one registry entry per lesson module.
+
+A lesson is a notebook ``notebooks/NN_topic.ipynb`` and a module
+``course/lessons/lNN_topic.py`` that defines ``LESSON``, a :class:`Lesson`:
+the handout task it answers, what it teaches in one line, its key pictures
+(for ``python -m course gallery`` and the course map) and the sliders that
+the browser tests move like a student, with the pixels the picture must then
+show. The modules are discovered, not listed: adding a lesson is adding its
+files. For example, ``course/lessons/l03_lines_and_triangles.py`` holds::
+
+    LESSON = Lesson(
+        handout="Lab 1 report (seed 001), Task 4 (line drawing) and Task 5 (triangles)",
+        teaches="one line on what the lesson teaches",
+        pictures=(Picture("03_name", "caption", lambda: app_picture(LineApp())),),
+        sliders=(
+            SliderMove(
+                build=LineApp,  # exactly as the notebook's cell builds the app
+                control="y1",  # a key of app.controls: a slider
+                moves=(("ArrowRight", "ArrowRight"), ("End",)),
+                landmarks=line_landmarks,  # app -> [Landmark], by the library
+                app=0,  # the notebook's first slider app
+            ),
+        ),
+    )
+
+where ``line_landmarks(app)``, in the same module, computes with the
+library (``course.raster.line``), not from the app's artists, pixels whose
+colour is then known, using :func:`course.classroom.pictures.landmark_at` to
+map data coordinates to the picture. Standard library only: the types here
+hold the callables, the lesson modules import what they draw with.
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+__all__ = [
+    "LESSONS_PACKAGE",
+    "LESSON_MODULE",
+    "Landmark",
+    "Lesson",
+    "Picture",
+    "SliderMove",
+    "lesson_modules",
+    "lessons",
+]
+
+#: The package the lesson modules are found in, and their names in it.
+LESSONS_PACKAGE = "course.lessons"
+LESSON_MODULE = re.compile(r"^l(\d\d)_(\w+)$")
+
+
+@dataclass(frozen=True)
+class Landmark:
+    """A pixel of an app's picture whose colour the library determines.
+
+    ``row`` and ``column`` index the picture (row 0 at the top); the pixel
+    must be within ``tolerance`` of ``color`` in every RGB channel (0-255).
+    """
+
+    what: str
+    row: int
+    column: int
+    color: tuple[int, int, int]
+    tolerance: int = 40
+
+
+@dataclass(frozen=True)
+class SliderMove:
+    """How a student moves one slider of a lesson's app, and what must follow.
+
+    ``app`` counts the notebook's slider apps from 0 in the order the
+    notebook shows them. ``build`` makes that app (a
+    :class:`course.widgets.base.SliderApp`) exactly as the notebook's cell
+    does, so that a test can set ``control`` to the value the browser shows
+    and render the picture the kernel should have sent. ``moves`` are key
+    sequences pressed on the slider's focused handle (Playwright key names);
+    the picture is checked after each one, so each must end on a value the
+    slider's readout shows unambiguously. ``landmarks(app)`` names pixels
+    whose colour the library computes for the app's current control values
+    (for lesson 01, the red dot at the point ``de_casteljau`` returns).
+    """
+
+    build: Callable[[], Any]
+    control: str
+    moves: tuple[tuple[str, ...], ...]
+    landmarks: Callable[[Any], list[Landmark]]
+    app: int = 0
+
+
+@dataclass(frozen=True)
+class Picture:
+    """One key figure of a lesson: a file name (no suffix), a caption, a PNG renderer."""
+
+    name: str
+    caption: str
+    render: Callable[[], bytes]
+
+
+@dataclass(frozen=True)
+class Lesson:
+    """A lesson's registry entry: what its notebook cannot say about itself."""
+
+    handout: str
+    teaches: str
+    pictures: tuple[Picture, ...] = ()
+    sliders: tuple[SliderMove, ...] = ()
+
+
+def lesson_modules() -> dict[str, str]:
+    """The lesson modules ``lNN_topic`` of :mod:`course.lessons`: number -> module name.
+
+    Examples
+    --------
+    >>> lesson_modules()["01"]
+    'course.lessons.l01_de_casteljau'
+    """
+    package = importlib.import_module(LESSONS_PACKAGE)
+    found: dict[str, str] = {}
+    for module in pkgutil.iter_modules(package.__path__):
+        match = LESSON_MODULE.match(module.name)
+        if not match:
+            continue
+        number, name = match.group(1), f"{LESSONS_PACKAGE}.{module.name}"
+        if number in found:
+            raise ValueError(f"lesson {number}: two modules claim it, {found[number]} and {name}")
+        found[number] = name
+    return dict(sorted(found.items()))
+
+
+def lessons() -> dict[str, Lesson]:
+    """Every lesson module's ``LESSON``, by lesson number, in lesson order.
+
+    Importing the modules imports what they draw with (numpy, matplotlib,
+    the apps); call this only where the pictures or the sliders are needed.
+    """
+    entries = {}
+    for number, name in lesson_modules().items():
+        lesson = getattr(importlib.import_module(name), "LESSON", None)
+        if not isinstance(lesson, Lesson):
+            raise TypeError(
+                f"{name}: expected a module-level LESSON = Lesson(...); got {type(lesson).__name__}"
+            )
+        entries[number] = lesson
+    return entries

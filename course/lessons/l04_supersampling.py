@@ -1,0 +1,97 @@
+"""Lesson 04, sampling and supersampling: its registry entry, pictures and landmarks."""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from course import images
+from course.classroom.pictures import (
+    app_picture,
+    colormap_color,
+    gray_color,
+    landmark_at,
+    read_only,
+)
+from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.resample import supersample, supersample_without_offset
+from course.widgets import SupersampleApp
+from course.widgets.base import SliderApp
+
+
+@functools.cache
+def zone_plate_lab() -> tuple[np.ndarray, np.ndarray]:
+    """The lab's 2500 x 2500 zone plate and its exact 320 x 320 box downsample."""
+    plate = images.zone_plate((2500, 2500))
+    return read_only(plate), read_only(images.zone_plate_box((2500, 2500), (320, 320)))
+
+
+def supersample_app(rate: int = 1) -> SupersampleApp:
+    app = SupersampleApp()
+    app.controls["rate"].value = rate
+    return app
+
+
+def supersample_landmarks(app: SliderApp) -> list[Landmark]:
+    """Result and difference pixels: ``supersample`` of the zone plate, minus ``zone_plate_box``.
+
+    The landmarks are the 200 pixels where this rate differs most from the
+    rates beside it.
+    """
+    if app.value("image") != "zone plate":
+        raise ValueError("supersample_landmarks: the browser test moves the zone plate's rate")
+    plate, exact = zone_plate_lab()
+    rate = int(app.value("rate"))
+    resample = supersample if app.value("version") == "centred" else supersample_without_offset
+    result = resample(plate, (320, 320), rate)
+    difference = result - exact
+    # Where this rate differs most from both neighbouring rates: the false
+    # rings that move. The result is shown pixel for pixel, 1 px per pixel.
+    changes = [
+        np.abs(result - resample(plate, (320, 320), other))
+        for other in (rate - 1, rate + 1)
+        if 1 <= other <= 12
+    ]
+    telling = np.min(changes, axis=0)
+    landmarks = []
+    for flat_index in np.argsort(telling, axis=None)[::-1][:200]:
+        row, column = (int(i) for i in np.unravel_index(flat_index, telling.shape))
+        centre = (column + 0.5, row + 0.5)
+        value = float(result[row, column])
+        what = f"supersample(zone plate, rate {rate}) pixel ({column}, {row})"
+        landmarks.append(landmark_at(app, app.result_axes, centre, gray_color(value), what, 3))
+        color = colormap_color("RdBu_r", float(difference[row, column]), -0.5, 0.5)
+        landmarks.append(
+            landmark_at(app, app.difference_axes, centre, color, f"{what} - zone_plate_box", 3)
+        )
+    return landmarks
+
+
+LESSON = Lesson(
+    handout="Lab 1 report (seed 001), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
+    "by supersampling",
+    teaches="supersampling as an estimate of the box filter, measured against a zone "
+    "plate's exact downsample; the report's half-sample shift found and measured",
+    pictures=(
+        Picture(
+            "04_zone_plate_rate1",
+            "the zone plate shrunk to 320 x 320 with one sample per pixel: false rings, "
+            "their difference from the exact box filter, and the error at every rate",
+            lambda: app_picture(supersample_app(1)),
+        ),
+        Picture(
+            "04_zone_plate_rate4",
+            "the same at rate 4 (16 samples per pixel): the false rings are gone",
+            lambda: app_picture(supersample_app(4)),
+        ),
+    ),
+    sliders=(
+        SliderMove(
+            build=SupersampleApp,
+            control="rate",
+            moves=(("ArrowRight", "ArrowRight"), ("End",)),
+            landmarks=supersample_landmarks,
+        ),
+    ),
+)

@@ -1,0 +1,130 @@
+"""Lesson 06, dithering: its registry entry, pictures and landmarks."""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from course import dither, images
+from course.classroom.pictures import (
+    app_picture,
+    figure_picture,
+    gray_color,
+    landmark_at,
+    read_only,
+)
+from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.widgets import GrayLevelApp, VoidAndClusterApp
+from course.widgets.base import SliderApp
+from course.widgets.dithering import side_by_side
+
+
+@functools.cache
+def half_size_gray_photograph() -> np.ndarray:
+    """The photograph in gray at half size, as the notebook dithers it."""
+    return read_only(images.to_gray(images.photograph())[::2, ::2])
+
+
+@functools.cache
+def blue_noise_32() -> np.ndarray:
+    return read_only(dither.blue_noise_mask(32, np.random.default_rng(0)))
+
+
+def gray_level_app() -> GrayLevelApp:
+    return GrayLevelApp(level=0.3, size=24)
+
+
+def gray_level_landmarks(app: SliderApp) -> list[Landmark]:
+    """The flat patch at the new level as ``dither`` makes it, and the ordered pattern marked.
+
+    For each of ordered 3 x 3, Bayer 8 x 8, blue noise and Floyd-Steinberg,
+    every pixel of the library's output for a flat patch (but the outermost,
+    under the panel's frame); and the red frame around pattern k = the
+    number of sub-pixels ``dither.ordered`` lights for one pixel at this level.
+    """
+    level, size = float(app.value("level")), 24
+    patch = np.full((size, size), level)
+    outputs = {
+        "ordered 3x3": dither.ordered(patch),
+        "Bayer 8x8": dither.bayer(patch, 8),
+        "blue noise": dither.blue_noise(patch, blue_noise_32()),
+        "Floyd-Steinberg": dither.error_diffusion(patch),
+    }
+    landmarks = []
+    for name, output in outputs.items():
+        scale = output.shape[0] // size  # ordered dithering shows 3 sub-pixels per pixel
+        axes = app.panels[name].axes
+        # Not the patch's outer pixels, which the panel's frame covers in part.
+        inner = np.zeros(output.shape, dtype=bool)
+        inner[scale:-scale, scale:-scale] = True
+        for row, column in zip(*np.nonzero(inner), strict=True):
+            value = float(output[row, column])
+            centre = ((column + 0.5) / scale - 0.5, (row + 0.5) / scale - 0.5)
+            what = f"{name} of a flat {level:.3f} patch: pixel ({column}, {row}) = {value:g}"
+            landmarks.append(landmark_at(app, axes, centre, gray_color(value), what, 24))
+    lit = int(dither.ordered([[level]]).sum())
+    # The frame's left side, or its right side for pattern 0 (at the strip's edge).
+    side = 4 * lit - 0.6 if lit > 0 else 2.6
+    what = f"red frame around pattern k = {lit} (dither.ordered lights {lit} of 9 at {level:.3f})"
+    landmarks.append(landmark_at(app, app.highlight.axes, (side, 1.0), (255, 0, 0), what))
+    return landmarks
+
+
+def dithering_table() -> bytes:
+    gray = half_size_gray_photograph()
+    table = {"original": gray, **dither.all_methods(gray)}
+    return figure_picture(side_by_side(table, center=(150, 80), size=32, width=900, columns=6))
+
+
+def dithering_ramp() -> bytes:
+    gradient = images.ramp(256, 32)
+    table = {"ramp": gradient, **dither.all_methods(gradient)}
+    return figure_picture(side_by_side(table, center=(64, 16), size=24, columns=6))
+
+
+def void_and_cluster_picture() -> bytes:
+    return app_picture(VoidAndClusterApp(size=32, dots=120))
+
+
+LESSON = Lesson(
+    handout="Lab 1 report (seed 001), Task 1: threshold, uniform random, blue noise, "
+    "ordered 3 x 3 and Floyd-Steinberg error diffusion",
+    teaches="gray levels from black and white dots: the lab's five methods and the "
+    "classics beside them, error diffusion bit for bit fast, blue noise by "
+    "void-and-cluster, the ordered matrix's bias and the x - 1 slip measured",
+    pictures=(
+        Picture(
+            "06_dithering_table",
+            "the photograph and every dithering method, each above the same window "
+            "zoomed to show single dots",
+            dithering_table,
+        ),
+        Picture(
+            "06_dithering_ramp",
+            "a gray ramp from 0 to 1 through every method",
+            dithering_ramp,
+        ),
+        Picture(
+            "06_gray_level_0.30",
+            "a flat 0.30 patch: the ten ordered 3 x 3 patterns (k = 3 framed) and what "
+            "each method makes of it",
+            lambda: app_picture(gray_level_app()),
+        ),
+        Picture(
+            "06_void_and_cluster_120_dots",
+            "void-and-cluster after 120 dots of a 32 x 32 mask: the dots over their "
+            "energy, the next dot circled, and the spectrum against white noise",
+            void_and_cluster_picture,
+        ),
+    ),
+    sliders=(
+        SliderMove(
+            build=gray_level_app,
+            control="level",
+            moves=(("ArrowLeft",), ("ArrowRight",) * 5, ("End",)),
+            landmarks=gray_level_landmarks,
+            app=1,
+        ),
+    ),
+)

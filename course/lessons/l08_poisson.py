@@ -1,0 +1,119 @@
+"""Lesson 08, Poisson image editing: its registry entry, pictures and landmarks."""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from course import images, poisson
+from course.classroom.pictures import (
+    app_picture,
+    colormap_color,
+    figure_picture,
+    landmark_at,
+    read_only,
+    rgb_color,
+)
+from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.widgets import PoissonIterationApp
+from course.widgets.base import SliderApp
+from course.widgets.poisson import MARGIN, show_images
+
+PLANE_OFFSET = (500, 300)
+AROUND_THE_PLANE = (slice(280, 430), slice(470, 800))
+
+
+@functools.cache
+def lake_and_plane() -> tuple[np.ndarray, np.ndarray]:
+    return read_only(images.lake()), read_only(images.plane())
+
+
+def poisson_app() -> PoissonIterationApp:
+    """Lesson 08's app as the notebook shows it: 1000 sweeps of Jacobi."""
+    app = PoissonIterationApp()
+    app.controls["sweeps"].value = 1000
+    return app
+
+
+def poisson_landmarks(app: SliderApp) -> list[Landmark]:
+    """Region pixels of ``seamless_clone`` after n sweeps, and their error against ``solve``."""
+    lake, plane = lake_and_plane()
+    method, sweeps = app.value("method"), int(app.value("sweeps"))
+    problem = poisson.clone_problem(lake, plane, PLANE_OFFSET)
+    exact = poisson.solve(problem)
+    iterate = poisson.solve(problem, method, iterations=sweeps)
+    clone = poisson.seamless_clone(lake, plane, PLANE_OFFSET, method=method, iterations=sweeps)
+    start = float(np.abs(problem.values - exact)[problem.region].max() * 255)
+    error = np.abs(iterate - exact).max(axis=2) * 255
+    x0, y0 = problem.corner
+    height, width = problem.region.shape
+    left, top = x0 - MARGIN, y0 - MARGIN  # the app's view: the region and a margin
+    landmarks = []
+    for row in (height // 4, height // 2, 3 * height // 4):
+        for column in (width // 4, width // 2, 3 * width // 4):
+            x, y = x0 + column, y0 + row
+            what = f"{method}, {sweeps} sweeps: pixel ({x}, {y})"
+            point = (x - left, y - top)
+            color = rgb_color(clone[y, x])
+            landmarks.append(landmark_at(app, app.picture.axes, point, color, what, 12))
+            color = colormap_color("magma", float(error[row, column]), 0.0, start)
+            landmarks.append(
+                landmark_at(app, app.error_image.axes, point, color, f"{what}: error", 12)
+            )
+    return landmarks
+
+
+def clone_comparison() -> bytes:
+    lake, plane = lake_and_plane()
+    pictures = {
+        "naive paste": poisson.naive_paste(lake, plane, PLANE_OFFSET),
+        "seamless clone": poisson.seamless_clone(lake, plane, PLANE_OFFSET),
+    }
+    return figure_picture(show_images(pictures, window=AROUND_THE_PLANE))
+
+
+def inpainting() -> bytes:
+    scratched, scratches = images.scratched_photograph()
+    pictures = {
+        "scratched": scratched,
+        "inpainted": poisson.inpaint(scratched, scratches),
+        "original": images.photograph(),
+    }
+    return figure_picture(show_images(pictures, window=(slice(120, 420), slice(60, 460))))
+
+
+LESSON = Lesson(
+    handout="Lab 1 report (seed 001), Task 3: Poisson image editing, the plane pasted "
+    "into the lake with the lab's 8000 'Jacobi' sweeps",
+    teaches="seamless cloning and inpainting as a Poisson equation, solved exactly "
+    "(DST, sparse) and by Jacobi, Gauss-Seidel and SOR; why 8000 sweeps are not enough",
+    pictures=(
+        Picture(
+            "08_naive_paste_and_seamless_clone",
+            "the plane pasted into the lake: copied pixels leave a frame, the seamless "
+            "clone has none",
+            clone_comparison,
+        ),
+        Picture(
+            "08_jacobi_1000_sweeps",
+            "1000 Jacobi sweeps: the result and its error against the exact solution, "
+            "still large in the middle of the region",
+            lambda: app_picture(poisson_app()),
+        ),
+        Picture(
+            "08_inpainting",
+            "seven scratches across the photograph, filled by solving Laplace's "
+            "equation, beside the original",
+            inpainting,
+        ),
+    ),
+    sliders=(
+        SliderMove(
+            build=poisson_app,
+            control="sweeps",
+            moves=(("ArrowRight",), ("ArrowLeft", "ArrowLeft"), ("End",)),
+            landmarks=poisson_landmarks,
+        ),
+    ),
+)

@@ -1,0 +1,46 @@
+"""course.classroom.course_map: the course map's table, and the README's copy of it."""
+
+import re
+from pathlib import Path
+
+from conftest import write_notebook
+
+from course.classroom.cli import main
+from course.classroom.course_map import course_map
+from course.classroom.notebooks import notebooks
+from course.classroom.registry import lessons
+
+README = Path(__file__).resolve().parent.parent / "README.md"
+
+
+def test_one_row_per_lesson_with_its_registry_entry_or_its_summary(tmp_path):
+    write_notebook(tmp_path / "01_de_casteljau.ipynb", "# Lesson 01 · de Casteljau")
+    write_notebook(tmp_path / "42_unregistered.ipynb", "# Later\n\nIt does | this.")
+    table = course_map(tmp_path).splitlines()
+    assert table[0] == "| lesson | what it teaches | handout task it answers |"
+    assert len(table) == 2 + 2
+    entry = lessons()["01"]
+    assert table[2] == (
+        f"| [Lesson 01 · de Casteljau](01_de_casteljau.ipynb) | {entry.teaches} | {entry.handout} |"
+    )
+    # A notebook without a module still has its row: its summary, and what to add.
+    assert table[3] == (
+        "| [Later](42_unregistered.ipynb) | It does \\| this. "
+        "| (no module course/lessons/l42_unregistered.py) |"
+    )
+
+
+def test_the_readme_lesson_table_is_the_course_map(capsys):
+    """The README's table is generated: ``python -m course map --link-prefix notebooks/``."""
+    expected = course_map(link_prefix="notebooks/")
+    assert main(["map", "--link-prefix", "notebooks/"]) == 0
+    assert capsys.readouterr().out == expected + "\n"
+    section = README.read_text(encoding="utf-8").split("## Lessons\n", 1)[1]
+    table = "\n".join(re.findall(r"^\|.*\|$", section.split("\n## ")[0], re.MULTILINE))
+    assert table == expected, (
+        "README.md's lesson table is out of date; replace it with the output of "
+        "`python -m course map --link-prefix notebooks/`"
+    )
+    links = re.findall(r"\]\((notebooks/[^)]+)\)", table)
+    assert links == [f"notebooks/{book.path.name}" for book in notebooks()]
+    assert all((README.parent / link).is_file() for link in links)

@@ -27,7 +27,7 @@ import numpy as np
 from timing import best_time, best_times
 
 from course.bezier import bezier_bernstein, de_casteljau, de_casteljau_levels
-from course.widgets import DeCasteljauApp
+from course.widgets.de_casteljau import DeCasteljauApp
 
 GOALS = {"bezier_bernstein": 2.0, "de_casteljau": 4.0}
 

@@ -118,8 +118,8 @@ def test_no_module_imports_itself_through_others():
 
 def test_the_checks_can_fail():
     """A made-up upward import and a made-up cycle are both caught."""
-    assert layer("course.widgets.lines") == "apps and checkers"
+    assert layer("course.widgets.lines_and_triangles") == "apps and checkers"
     assert LAYERS[layer("course.classroom.pictures")] > LAYERS[layer("course.raster")]
     assert cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
-    assert "course.widgets.base" in GRAPH["course.widgets.lines"]
+    assert "course.widgets.base" in GRAPH["course.widgets.lines_and_triangles"]
     assert "course.dither" in GRAPH["course.lessons.l06_dithering"]  # "from course import dither"

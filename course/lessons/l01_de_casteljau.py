@@ -6,9 +6,8 @@ from course.bezier import de_casteljau
 from course.classroom.pictures import CRIMSON, app_picture, landmark_at
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.images import EXAMPLE_POINTS
-from course.widgets import DeCasteljauApp
 from course.widgets.base import SliderApp
-from course.widgets.de_casteljau import parse_points
+from course.widgets.de_casteljau import DeCasteljauApp, parse_points
 
 
 def de_casteljau_landmarks(app: SliderApp) -> list[Landmark]:

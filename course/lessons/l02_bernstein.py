@@ -7,8 +7,8 @@ from dataclasses import replace
 from course.bezier import bernstein_basis
 from course.classroom.pictures import CRIMSON, app_picture, landmark_at
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.widgets import BernsteinBasisApp
 from course.widgets.base import SliderApp
+from course.widgets.bernstein import BernsteinBasisApp
 
 
 def bernstein_landmarks(app: SliderApp) -> list[Landmark]:

@@ -16,8 +16,8 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.raster import line, line_4connected, wu_line
-from course.widgets import LineApp, TriangleApp
 from course.widgets.base import SliderApp
+from course.widgets.lines_and_triangles import LineApp, TriangleApp
 
 
 def line_landmarks(app: SliderApp) -> list[Landmark]:

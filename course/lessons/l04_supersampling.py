@@ -16,8 +16,8 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.resample import supersample, supersample_without_offset
-from course.widgets import SupersampleApp
 from course.widgets.base import SliderApp
+from course.widgets.supersampling import SupersampleApp
 
 
 @functools.cache

@@ -21,8 +21,7 @@ from course.classroom.pictures import (
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.coverage import curve_polyline, reference
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
-from course.widgets import StepApp, ZoomApp
-from course.widgets.antialias import CurveWalk, zoom_figure
+from course.widgets.antialiasing import CurveWalk, StepApp, ZoomApp, zoom_figure
 from course.widgets.base import SliderApp
 
 ZOOM_PICKS = ("bilinear_zero_offset", "bilinear_corners", "bilinear_centres")

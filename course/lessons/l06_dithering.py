@@ -15,9 +15,8 @@ from course.classroom.pictures import (
     read_only,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.widgets import GrayLevelApp, VoidAndClusterApp
 from course.widgets.base import SliderApp
-from course.widgets.dithering import side_by_side
+from course.widgets.dithering import GrayLevelApp, VoidAndClusterApp, side_by_side
 
 
 @functools.cache

@@ -15,10 +15,9 @@ from course.classroom.pictures import (
     rgb_color,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.widgets import RepeatedBlurApp
 from course.widgets.base import SliderApp
 from course.widgets.dithering import side_by_side
-from course.widgets.filtering import blurred
+from course.widgets.filtering import RepeatedBlurApp, blurred
 
 
 @functools.cache

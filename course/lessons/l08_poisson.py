@@ -16,9 +16,8 @@ from course.classroom.pictures import (
     rgb_color,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.widgets import PoissonIterationApp
 from course.widgets.base import SliderApp
-from course.widgets.poisson import MARGIN, show_images
+from course.widgets.poisson import MARGIN, PoissonIterationApp, show_images
 
 PLANE_OFFSET = (500, 300)
 AROUND_THE_PLANE = (slice(280, 430), slice(470, 800))

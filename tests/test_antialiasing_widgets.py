@@ -1,4 +1,4 @@
-"""course.widgets.antialias: the sliders move the picture to what the library computes."""
+"""course.widgets.antialiasing: the sliders move the picture to what the library computes."""
 
 import numpy as np
 import pytest
@@ -7,8 +7,7 @@ from course.aa_metrics import intensity_along
 from course.antialias import render
 from course.canvas import crop
 from course.coverage import reference
-from course.widgets import StepApp, ZoomApp
-from course.widgets.antialias import CurveWalk, zoom_figure
+from course.widgets.antialiasing import CurveWalk, StepApp, ZoomApp, zoom_figure
 
 CURVE = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]) / 5
 SHAPE = (140, 140)

@@ -5,7 +5,7 @@ import pytest
 import scipy.ndimage
 
 from course import poisson
-from course.widgets import PoissonIterationApp
+from course.widgets.poisson import PoissonIterationApp
 
 RNG = np.random.default_rng(4)
 BACKGROUND = scipy.ndimage.gaussian_filter(RNG.random((40, 60, 3)), (3, 3, 0)) * 0.5 + 0.25

@@ -1,11 +1,11 @@
-"""course.check.bilinear_splat: a correct splat passes, the handouts' mistakes fail by case."""
+"""course.check.antialiasing.bilinear_splat: a correct splat passes, the handouts' mistakes fail."""
 
 import math
 
 import pytest
 
-from course import check
-from course.check.antialias import splat_table
+from course.check import antialiasing as check
+from course.check.antialiasing import splat_table
 
 
 def correct(x, y):

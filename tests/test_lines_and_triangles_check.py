@@ -1,8 +1,8 @@
-"""course.check.draw_line / draw_triangle_filled: right answers pass, typical mistakes are named."""
+"""course.check.lines_and_triangles: right lines and fills pass, typical mistakes are named."""
 
 import math
 
-from course import check
+from course.check import lines_and_triangles as check
 from course.raster import line_4connected, triangle
 
 

@@ -1,14 +1,11 @@
-"""Lesson 03-04 apps: moving a slider redraws what the library computes."""
+"""course.widgets.lines_and_triangles: moving a slider redraws what the library computes."""
 
 import numpy as np
 import pytest
 
 from course.canvas import blank, paint
-from course.images import zone_plate, zone_plate_box
 from course.raster import line, line_4connected, triangle, triangle_coverage
-from course.resample import supersample, supersample_without_offset
-from course.widgets import LineApp, SupersampleApp, TriangleApp
-from course.widgets.supersampling import rms_error
+from course.widgets.lines_and_triangles import LineApp, TriangleApp
 
 
 def set_values(app, **values):
@@ -92,38 +89,3 @@ def test_triangle_app_moves_a_vertex_and_shows_the_coverage_at_the_rate():
         paint(expected, pixels, 1.0, weight=weights)
     np.testing.assert_allclose(app.coverage.get_array(), expected)
     assert "7 x 7 samples" in app.right.get_title()
-
-
-@pytest.fixture(scope="module")
-def small_supersample_app():
-    # The lab's ratio at a fifth of the size keeps the test quick.
-    return SupersampleApp(size=500, out_size=64, max_rate=6, reference_rate=8)
-
-
-def test_supersample_app_shows_the_result_and_its_error_at_each_rate(small_supersample_app):
-    app = small_supersample_app
-    set_values(app, image="zone plate", version="centred", rate=1)
-    plate, exact = zone_plate((500, 500)), zone_plate_box((500, 500), (64, 64))
-    set_values(app, rate=4)
-    result = supersample(plate, (64, 64), 4)
-    np.testing.assert_allclose(app.result.get_array(), result)
-    assert f"RMS {rms_error(result, exact):.4f}" in app.difference_axes.get_title()
-    curve = app.curves["centred"].get_ydata()
-    assert curve[3] == pytest.approx(rms_error(result, exact))
-    assert curve[0] > 0.25 > 0.01 > curve[3]
-    set_values(app, version="report's")
-    shifted = supersample_without_offset(plate, (64, 64), 4)
-    np.testing.assert_allclose(app.result.get_array(), shifted)
-    assert tuple(app.current.get_ydata()) == (pytest.approx(rms_error(shifted, exact)),)
-
-
-def test_supersample_app_switches_to_the_photograph(small_supersample_app):
-    app = small_supersample_app
-    before = app.view.image.value
-    set_values(app, image="photograph", version="centred", rate=2)
-    assert app.view.image.value != before
-    assert app.result.get_array().shape == (64, 64, 3)
-    np.testing.assert_allclose(
-        app.result.get_array(), supersample(app.sources["photograph"], (64, 64), 2)
-    )
-    assert "rate 8" in app.difference_axes.get_title()

@@ -1,0 +1,48 @@
+"""Lesson 04's app: the supersampled result and its error, as course.resample computes them."""
+
+import numpy as np
+import pytest
+
+from course.images import zone_plate, zone_plate_box
+from course.resample import supersample, supersample_without_offset
+from course.widgets.supersampling import SupersampleApp, rms_error
+
+
+def set_values(app, **values):
+    for name, value in values.items():
+        app.controls[name].value = value
+
+
+@pytest.fixture(scope="module")
+def small_supersample_app():
+    # The lab's ratio at a fifth of the size keeps the test quick.
+    return SupersampleApp(size=500, out_size=64, max_rate=6, reference_rate=8)
+
+
+def test_supersample_app_shows_the_result_and_its_error_at_each_rate(small_supersample_app):
+    app = small_supersample_app
+    set_values(app, image="zone plate", version="centred", rate=1)
+    plate, exact = zone_plate((500, 500)), zone_plate_box((500, 500), (64, 64))
+    set_values(app, rate=4)
+    result = supersample(plate, (64, 64), 4)
+    np.testing.assert_allclose(app.result.get_array(), result)
+    assert f"RMS {rms_error(result, exact):.4f}" in app.difference_axes.get_title()
+    curve = app.curves["centred"].get_ydata()
+    assert curve[3] == pytest.approx(rms_error(result, exact))
+    assert curve[0] > 0.25 > 0.01 > curve[3]
+    set_values(app, version="report's")
+    shifted = supersample_without_offset(plate, (64, 64), 4)
+    np.testing.assert_allclose(app.result.get_array(), shifted)
+    assert tuple(app.current.get_ydata()) == (pytest.approx(rms_error(shifted, exact)),)
+
+
+def test_supersample_app_switches_to_the_photograph(small_supersample_app):
+    app = small_supersample_app
+    before = app.view.image.value
+    set_values(app, image="photograph", version="centred", rate=2)
+    assert app.view.image.value != before
+    assert app.result.get_array().shape == (64, 64, 3)
+    np.testing.assert_allclose(
+        app.result.get_array(), supersample(app.sources["photograph"], (64, 64), 2)
+    )
+    assert "rate 8" in app.difference_axes.get_title()

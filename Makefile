@@ -55,6 +55,7 @@ notebooks: $(VENV)/.test-installed
 			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
 	done
 	$(BIN)/nbstripout --keep-output --keep-count $(NOTEBOOKS)
+	$(BIN)/python -m course map --readme README.md
 
 # One BLAS thread: every anchor runs on one core, so the ratios compare like with
 # like, and a busy machine cannot stall a multithreaded matrix product.

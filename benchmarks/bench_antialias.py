@@ -13,13 +13,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-import numpy as np
 from timing import best_times
 
-from course.antialias import SPLAT_METHODS, STROKE_METHODS, arc_length_step, render
+from course.antialias import SPLATS, STROKES, arc_length_step, render
 from course.coverage import agg_draw, agg_path
+from course.images import SEED_000_CUBIC
 
-POINTS = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]])
+POINTS = SEED_000_CUBIC
 SHAPE = (700, 700)
 GOALS = {"splat": 3.0, "stroke": 10.0}
 
@@ -31,7 +31,7 @@ def main() -> None:
         return agg_draw(path, SHAPE, 1.0)
 
     cases: list[tuple[str, Callable[[], object], float | None]] = []
-    for method in SPLAT_METHODS:
+    for method in SPLATS:
         cases.append((method, lambda m=method: render(POINTS, SHAPE, m), GOALS["splat"]))
     default_samples = round(1 / arc_length_step(POINTS)) + 1
     for method in ("nearest_truncate", "bilinear_centres"):
@@ -49,7 +49,7 @@ def main() -> None:
                 None,
             )
         )
-    for method in STROKE_METHODS:
+    for method in STROKES:
         cases.append((method, lambda m=method: render(POINTS, SHAPE, m), GOALS["stroke"]))
 
     for name, function, goal in cases:

@@ -114,7 +114,7 @@ def against_jacobi():
     values = np.moveaxis(problem.values, -1, 0).copy()
     source = np.moveaxis(problem.source, -1, 0).copy()
     region = problem.region
-    rate = solvers.jacobi_rate(height - 2, width - 2)
+    rate = solvers.jacobi_rate((height - 2, width - 2))
 
     def sweep_time(method, omega=1.0):
         kind = "jacobi" if method == "jacobi" else "sor"

@@ -51,7 +51,7 @@ def main() -> None:
     anchor, ours, scanline, coverage = best_times(
         lambda: skimage_polygon(rows, columns, shape),
         lambda: triangle(*vertices, shape=shape),
-        lambda: triangle(*vertices, shape=shape, method="scanline"),
+        lambda: triangle(*vertices, shape=shape, method="loop"),
         lambda: triangle_coverage(*vertices, shape, 4),
         rounds=3,
     )

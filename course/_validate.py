@@ -1,8 +1,8 @@
-"""Input checks shared by every public function.
+"""Input checks shared by every public function: the one home of every validator.
 
 Each public function validates once, at its boundary, with these helpers and
-then hands plain float arrays to pure array code. Every message names the
-parameter, the expected shape or type, and what was given.
+then hands plain arrays to pure array code. Every message names the
+parameter, the expected shape or type, and what was given (:func:`describe`).
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 
-def _describe(value: Any) -> str:
+def describe(value: Any) -> str:
     """A short description of a value for an error message."""
     if isinstance(value, np.ndarray):
         return f"an array of shape {value.shape} and dtype {value.dtype}"
@@ -35,7 +35,7 @@ def as_float_array(value: Any, name: str) -> np.ndarray:
         np.issubdtype(array.dtype, np.integer) or np.issubdtype(array.dtype, np.floating)
     ):
         raise TypeError(
-            f"{name} must hold real numbers; got {_describe(value)}"
+            f"{name} must hold real numbers; got {describe(value)}"
             + (f" with dtype {array.dtype}" if not isinstance(value, np.ndarray) else "")
         )
     return array.astype(float, copy=True)
@@ -77,6 +77,17 @@ def as_points(points: Any, name: str = "points") -> np.ndarray:
     return array
 
 
+def as_curve(points: Any, name: str = "points") -> np.ndarray:
+    """Validate control points of a curve in image space: finite, shape (N, 2)."""
+    control = as_points(points, name)
+    if control.shape[1] != 2:
+        raise ValueError(
+            f"{name} must have shape (N, 2): (x, y) control points in image space; "
+            f"got shape {control.shape}"
+        )
+    return control
+
+
 def as_point(point: Any, name: str, dim: int | None = None) -> np.ndarray:
     """Validate one point: a finite float ``(d,)`` array."""
     array = as_float_array(point, name)
@@ -110,7 +121,7 @@ def as_scalar_parameter(t: Any, name: str = "t") -> float:
 def as_positive_float(value: Any, name: str, allow_zero: bool = False) -> float:
     """A finite real number > 0 (or >= 0 with ``allow_zero``)."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise TypeError(f"{name} must be a real number; got {_describe(value)}")
+        raise TypeError(f"{name} must be a real number; got {describe(value)}")
     number = float(value)
     if not np.isfinite(number):
         raise ValueError(f"{name} must be finite; got {number}")
@@ -123,7 +134,7 @@ def as_positive_float(value: Any, name: str, allow_zero: bool = False) -> float:
 def as_int(value: Any, name: str, minimum: int | None = None) -> int:
     """An integer (not a bool, not a float), optionally at least ``minimum``."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
-        raise TypeError(f"{name} must be an integer; got {_describe(value)}")
+        raise TypeError(f"{name} must be an integer; got {describe(value)}")
     number = int(value)
     if minimum is not None and number < minimum:
         raise ValueError(f"{name} must be >= {minimum}; got {number}")
@@ -134,11 +145,27 @@ def as_shape(shape: Any, name: str = "shape") -> tuple[int, int]:
     """A canvas shape ``(H, W)`` of positive integers."""
     if not isinstance(shape, (tuple, list)) or len(shape) != 2:
         raise ValueError(
-            f"{name} must be a pair (H, W) of positive integers; got {_describe(shape)}"
+            f"{name} must be a pair (H, W) of positive integers; got {describe(shape)}"
         )
     height = as_int(shape[0], f"{name}[0] (height)", minimum=1)
     width = as_int(shape[1], f"{name}[1] (width)", minimum=1)
     return height, width
+
+
+def as_pixels(pixels: Any, name: str = "pixels") -> np.ndarray:
+    """Validate an integer (K, 2) array of (x, y) pixel coordinates."""
+    array = np.asarray(pixels)
+    if array.size == 0:
+        array = array.reshape(0, 2).astype(np.int64)
+    if array.dtype == bool or not np.issubdtype(array.dtype, np.integer):
+        raise TypeError(
+            f"{name} must be an integer (K, 2) array of (x, y) pixels; got "
+            f"{describe(pixels)} (round or floor float coordinates first, "
+            "e.g. with course.raster.nearest_pixels)"
+        )
+    if array.ndim != 2 or array.shape[1] != 2:
+        raise ValueError(f"{name} must have shape (K, 2), one (x, y) per row; got {array.shape}")
+    return array
 
 
 def as_image(image: Any, name: str = "image", copy: bool = True) -> np.ndarray:
@@ -185,6 +212,6 @@ def as_rng(rng: Any, name: str = "rng") -> np.random.Generator:
     if not isinstance(rng, np.random.Generator):
         raise TypeError(
             f"{name} must be a numpy.random.Generator, e.g. numpy.random.default_rng(0); "
-            f"got {_describe(rng)}"
+            f"got {describe(rng)}"
         )
     return rng

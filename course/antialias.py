@@ -12,7 +12,7 @@ by a stroke of width w around the curve, once (:func:`stroke_linear`,
 :func:`stroke_area`); :mod:`course.coverage` holds the exact reference and
 Agg's rendering, re-exported here.
 
-:func:`render` draws a curve with any of :data:`METHODS`.
+:func:`render` draws a curve with any of :data:`RENDER_METHODS`.
 
 References
 ----------
@@ -29,14 +29,13 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_choice, as_points, as_positive_float, as_shape
+from course._validate import as_choice, as_curve, as_points, as_positive_float, as_shape
 from course.bezier import bezier_bernstein, de_casteljau, uniform_parameters
 from course.canvas import paint
 from course.coverage import (
     HALF_DIAGONAL,
     NearPixels,
     agg_render,
-    as_curve,
     band_coverage,
     first_of_runs,
     pixels_near,
@@ -47,6 +46,7 @@ from course.splats import (
     ONE_SAMPLE,
     PIXELS_PER_SAMPLE,
     SPLAT_METHODS,
+    SPLATS,
     arc_length_weights,
     bilinear_centres,
     bilinear_corners,
@@ -55,16 +55,16 @@ from course.splats import (
     nearest_truncate,
     normalised_centres,
     splat,
-    splat_loop,
     subsample_falloff,
 )
 
 __all__ = [
     "DEFAULT_STEP",
-    "METHODS",
     "ONE_SAMPLE",
+    "RENDER_METHODS",
+    "SPLATS",
     "SPLAT_METHODS",
-    "STROKE_METHODS",
+    "STROKES",
     "WEIGHTINGS",
     "agg_render",
     "arc_length_step",
@@ -79,7 +79,6 @@ __all__ = [
     "reference",
     "render",
     "splat",
-    "splat_loop",
     "stroke_area",
     "stroke_linear",
     "stroke_polyline",
@@ -96,8 +95,9 @@ STROKE_TOLERANCE = 0.01
 WEIGHTINGS = ("count", "arc_length")
 # Samples per pixel side for the round caps of stroke_area.
 CAP_SAMPLES = 16
-STROKE_METHODS = ("stroke_linear", "stroke_area")
-METHODS = SPLAT_METHODS + STROKE_METHODS
+#: The stroke-coverage methods of :func:`render`.
+STROKES = ("stroke_linear", "stroke_area")
+RENDER_METHODS = SPLATS + STROKES
 
 
 # --- what a graphics engineer would use: stroke coverage -------------------------
@@ -272,7 +272,7 @@ def render(
     shape : (H, W)
         Canvas size; pixels off it are dropped, never wrapped.
     method : str
-        One of :data:`METHODS`. The splat methods sample the curve at
+        One of :data:`RENDER_METHODS`. The splat methods sample the curve at
         t = 0, step, 2 step, ... and add every splat with saturation, as the
         handouts do. The stroke methods flatten the curve (Wang's formula,
         within 0.01 px) and compute each nearby pixel's coverage once.
@@ -306,7 +306,7 @@ def render(
     """
     control = as_curve(points)
     height, canvas_width = as_shape(shape)
-    method = as_choice(method, "method", METHODS)
+    method = as_choice(method, "method", RENDER_METHODS)
     width = as_positive_float(width, "width")
     weighting = as_choice(weighting, "weighting", WEIGHTINGS)
     if step is not None:
@@ -361,7 +361,8 @@ def arc_length_step(points: Any) -> float:
     --------
     >>> arc_length_step([[0, 0], [100, 0]])
     0.001
-    >>> round(arc_length_step([[10, 10], [690, 10], [10, 690], [690, 690]]), 7)
+    >>> from course.images import SEED_000_CUBIC
+    >>> round(arc_length_step(SEED_000_CUBIC), 7)
     0.0001733
     """
     control = as_curve(points)

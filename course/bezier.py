@@ -37,15 +37,19 @@ from course._validate import (
 )
 
 __all__ = [
+    "BEZIER_BERNSTEIN_METHODS",
+    "MAX_BERNSTEIN_DEGREE",
     "bernstein_basis",
     "bezier_bernstein",
     "binomial",
+    "clear_pascal_cache",
     "de_casteljau",
     "de_casteljau_levels",
     "de_casteljau_recursive",
     "derivative",
     "elevate",
     "flatten",
+    "pascal_row",
     "sample_uniform",
     "split",
     "uniform_parameters",
@@ -183,9 +187,28 @@ def de_casteljau_levels(points: Any, t: Any) -> list[np.ndarray]:
 # --- the Bernstein form ------------------------------------------------------
 
 
+def pascal_row(n: int) -> tuple[int, ...]:
+    """Row n of Pascal's triangle, exact: ``(C(n, 0), ..., C(n, n))``.
+
+    Each row is built from the one above it, ``n (n + 1) / 2`` additions,
+    and the last 64 rows asked for are kept (:func:`clear_pascal_cache`
+    forgets them, to time the cold cost).
+
+    Examples
+    --------
+    >>> pascal_row(4)
+    (1, 4, 6, 4, 1)
+    """
+    return _pascal_row(as_int(n, "n", minimum=0))
+
+
+def clear_pascal_cache() -> None:
+    """Forget the rows :func:`pascal_row` keeps, so the next call builds its row anew."""
+    _pascal_row.cache_clear()
+
+
 @lru_cache(maxsize=64)
 def _pascal_row(n: int) -> tuple[int, ...]:
-    """Row n of Pascal's triangle, exact, each row from the one above it."""
     row: tuple[int, ...] = (1,)
     for _ in range(n):
         row = (1, *(a + b for a, b in itertools.pairwise(row)), 1)
@@ -254,7 +277,7 @@ def _bernstein_basis(n: int, t: np.ndarray) -> np.ndarray:
     return (coefficients * t**exponents) * (1.0 - t) ** exponents[::-1]
 
 
-_BERNSTEIN_METHODS = ("horner", "naive")
+BEZIER_BERNSTEIN_METHODS = ("horner", "loop")
 # Up to this degree Horner's rule in t / (1 - t) cannot overflow for any
 # sensible coordinates (C(128, 64) < 2^127); beyond it the basis matrix does.
 _HORNER_MAX_DEGREE = 128
@@ -270,8 +293,8 @@ def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
     ----------
     points : array_like, shape (N, d)
     t : float or array_like, shape (M,)
-    method : {"horner", "naive"}
-        ``"naive"``: the handouts' sum, one term per control point, each
+    method : {"horner", "loop"}
+        ``"loop"``: the handouts' sum, one term per control point, each
         with its binomial and two powers. ``"horner"`` (default, fast): the
         same polynomial by Horner's rule in ``u = t / (1 - t)`` (Schumaker
         and Volk), with the points reversed and ``u = (1 - t) / t`` for
@@ -282,12 +305,12 @@ def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
     --------
     >>> bezier_bernstein([[0, 0], [1, 2], [2, 0]], 0.5)
     array([1., 1.])
-    >>> bezier_bernstein([[0, 0], [1, 2], [2, 0]], [0.25], method="naive")
+    >>> bezier_bernstein([[0, 0], [1, 2], [2, 0]], [0.25], method="loop")
     array([[0.5  , 0.75]])
     """
     control = as_points(points)
     values, is_scalar = as_parameter(t)
-    method = as_choice(method, "method", _BERNSTEIN_METHODS)
+    method = as_choice(method, "method", BEZIER_BERNSTEIN_METHODS)
     degree = len(control) - 1
     if degree > MAX_BERNSTEIN_DEGREE:
         raise ValueError(
@@ -295,17 +318,23 @@ def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
             f"{MAX_BERNSTEIN_DEGREE} ({MAX_BERNSTEIN_DEGREE + 1} points); got "
             f"{len(control)} points. Use de_casteljau."
         )
-    if method == "naive":
-        curve = _bernstein_naive(control, values)
-    elif degree <= _HORNER_MAX_DEGREE:
-        binomials = np.array([float(c) for c in _pascal_row(degree)])
-        curve = bernstein_horner(control, binomials, values)
+    if method == "loop":
+        curve = _bezier_bernstein_loop(control, values)
     else:
-        curve = _bernstein_basis(degree, values) @ control
+        curve = _bezier_bernstein_horner(control, values)
     return curve[0] if is_scalar else curve
 
 
-def _bernstein_naive(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+def _bezier_bernstein_horner(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Horner's rule in t / (1 - t), or the basis matrix beyond degree 128."""
+    degree = len(control) - 1
+    if degree > _HORNER_MAX_DEGREE:
+        return _bernstein_basis(degree, t) @ control
+    binomials = np.array([float(c) for c in _pascal_row(degree)])
+    return bernstein_horner(control, binomials, t)
+
+
+def _bezier_bernstein_loop(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     """The handouts' loop: one term C(n, i) (1 - t)^(n - i) t^i P[i] at a time."""
     n = len(control) - 1
     t = t[:, None]

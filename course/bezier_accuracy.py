@@ -23,10 +23,10 @@ from typing import Any
 import numpy as np
 
 from course._validate import as_int, as_parameter, as_points
-from course.bezier import _pascal_row, bezier_bernstein, de_casteljau
+from course.bezier import bezier_bernstein, de_casteljau, pascal_row
 
 __all__ = [
-    "ACCURACY_METHODS",
+    "ACCURACY_BY_DEGREE_METHODS",
     "accuracy_by_degree",
     "bezier_exact",
     "bezier_power",
@@ -34,7 +34,7 @@ __all__ = [
     "relative_errors",
 ]
 
-ACCURACY_METHODS = ("de_casteljau", "bernstein_naive", "bernstein_horner", "power")
+ACCURACY_BY_DEGREE_METHODS = ("de_casteljau", "bernstein_loop", "bernstein_horner", "power")
 
 
 def _as_integers(control: np.ndarray) -> tuple[list[list[int]], int]:
@@ -65,7 +65,7 @@ def bezier_exact(points: Any, t: Any) -> np.ndarray:
     values, is_scalar = as_parameter(t)
     integers, denominator = _as_integers(control)
     degree = len(control) - 1
-    binomials = _pascal_row(degree)
+    binomials = pascal_row(degree)
     result = np.empty((len(values), control.shape[1]), dtype=object)
     for row, value in enumerate(values):
         exact_t = Fraction(float(value))
@@ -98,11 +98,11 @@ def power_coefficients(points: Any) -> np.ndarray:
     degree = len(control) - 1
     coefficients = np.empty(control.shape)
     for j in range(degree + 1):
-        row = _pascal_row(j)
+        row = pascal_row(j)
         for axis in range(control.shape[1]):
             alternating = sum((-1) ** (j - i) * row[i] * integers[i][axis] for i in range(j + 1))
             coefficients[j, axis] = float(
-                Fraction(_pascal_row(degree)[j] * alternating, denominator)
+                Fraction(pascal_row(degree)[j] * alternating, denominator)
             )
     return coefficients
 
@@ -150,7 +150,7 @@ def accuracy_by_degree(
     degrees: Any,
     samples: int = 17,
     rng: np.random.Generator | None = None,
-    methods: tuple[str, ...] = ACCURACY_METHODS,
+    methods: tuple[str, ...] = ACCURACY_BY_DEGREE_METHODS,
 ) -> dict[str, np.ndarray]:
     """The worst relative error of each method for random curves of each degree.
 
@@ -175,13 +175,13 @@ def accuracy_by_degree(
     samples = as_int(samples, "samples", minimum=1)
     evaluate = {
         "de_casteljau": de_casteljau,
-        "bernstein_naive": lambda p, t: bezier_bernstein(p, t, method="naive"),
+        "bernstein_loop": lambda p, t: bezier_bernstein(p, t, method="loop"),
         "bernstein_horner": bezier_bernstein,
         "power": bezier_power,
     }
     unknown = [m for m in methods if m not in evaluate]
     if unknown:
-        raise ValueError(f"methods must be among {ACCURACY_METHODS}; got {unknown}")
+        raise ValueError(f"methods must be among {ACCURACY_BY_DEGREE_METHODS}; got {unknown}")
     degree_list = [as_int(n, "degrees", minimum=0) for n in np.atleast_1d(degrees).tolist()]
     results: dict[str, list[float]] = {method: [] for method in methods}
     for degree in degree_list:

@@ -13,29 +13,36 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import _describe, as_choice, as_float_array, as_image, as_int
+from course._validate import (
+    as_choice,
+    as_float_array,
+    as_image,
+    as_int,
+    as_pixels,
+    as_shape,
+    describe,
+)
 
 __all__ = ["PAINT_MODES", "blank", "crop", "inside", "paint", "yellow_fraction"]
 
 PAINT_MODES = ("add", "max", "over")
 
 
-def blank(width: int, height: int, color: Any = 0.0) -> np.ndarray:
-    """A new image filled with ``color``.
+def blank(shape: Any, color: Any = 0.0) -> np.ndarray:
+    """A new image of ``shape = (H, W)`` filled with ``color``.
 
-    A scalar color gives a gray ``(height, width)`` image, an RGB triple an
-    ``(height, width, 3)`` image.
+    A scalar color gives a gray ``(H, W)`` image, an RGB triple an
+    ``(H, W, 3)`` image.
 
     Examples
     --------
-    >>> blank(3, 2)
+    >>> blank((2, 3))
     array([[0., 0., 0.],
            [0., 0., 0.]])
-    >>> blank(2, 1, (1, 0, 0)).shape
+    >>> blank((1, 2), (1, 0, 0)).shape
     (1, 2, 3)
     """
-    width = as_int(width, "width", minimum=1)
-    height = as_int(height, "height", minimum=1)
+    height, width = as_shape(shape)
     value = _as_color(color, "color")
     return np.broadcast_to(value, (height, width, *value.shape)).copy()
 
@@ -62,22 +69,6 @@ def inside(pixels: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
     height, width = shape[:2]
     x, y = pixels[:, 0], pixels[:, 1]
     return (x >= 0) & (x < width) & (y >= 0) & (y < height)
-
-
-def as_pixels(pixels: Any, name: str = "pixels") -> np.ndarray:
-    """Validate an integer (K, 2) array of (x, y) pixel coordinates."""
-    array = np.asarray(pixels)
-    if array.size == 0:
-        array = array.reshape(0, 2).astype(np.int64)
-    if array.dtype == bool or not np.issubdtype(array.dtype, np.integer):
-        raise TypeError(
-            f"{name} must be an integer (K, 2) array of (x, y) pixels; got "
-            f"{_describe(pixels)} (round or floor float coordinates first, "
-            "e.g. with course.raster.nearest_pixels)"
-        )
-    if array.ndim != 2 or array.shape[1] != 2:
-        raise ValueError(f"{name} must have shape (K, 2), one (x, y) per row; got {array.shape}")
-    return array
 
 
 def paint(
@@ -107,7 +98,7 @@ def paint(
 
     Examples
     --------
-    >>> image = blank(4, 2)
+    >>> image = blank((2, 4))
     >>> _ = paint(image, np.array([[0, 0], [3, 1], [-1, 0], [4, 1]]), 1.0)
     >>> image
     array([[1., 0., 0., 0.],
@@ -119,7 +110,7 @@ def paint(
     if not isinstance(image, np.ndarray) or not np.issubdtype(image.dtype, np.floating):
         raise TypeError(
             f"image must be a float numpy array (H, W) or (H, W, 3) to paint into; "
-            f"got {_describe(image)}"
+            f"got {describe(image)}"
         )
     if not (image.ndim == 2 or (image.ndim == 3 and image.shape[2] == 3)):
         raise ValueError(f"image must have shape (H, W) or (H, W, 3); got {image.shape}")
@@ -162,8 +153,8 @@ def paint(
     return image
 
 
-def crop(image: np.ndarray, center: Any, size: int) -> tuple[np.ndarray, tuple[float, ...]]:
-    """A ``size`` x ``size`` window of ``image`` around ``center`` = (x, y).
+def crop(image: np.ndarray, centre: Any, size: int) -> tuple[np.ndarray, tuple[float, ...]]:
+    """A ``size`` x ``size`` window of ``image`` around ``centre`` = (x, y).
 
     The window is shifted to stay on the canvas. Returns the crop (a view)
     and its ``extent`` for ``imshow(crop, extent=extent)``, so that axes keep
@@ -178,7 +169,7 @@ def crop(image: np.ndarray, center: Any, size: int) -> tuple[np.ndarray, tuple[f
     array = as_image(image, "image", copy=False)
     height, width = array.shape[:2]
     size = as_int(size, "size", minimum=1)
-    x, y = as_float_array(center, "center")
+    x, y = as_float_array(centre, "center")
     size_x, size_y = min(size, width), min(size, height)
     x0 = int(np.clip(np.floor(x) - size_x // 2, 0, width - size_x))
     y0 = int(np.clip(np.floor(y) - size_y // 2, 0, height - size_y))
@@ -195,7 +186,7 @@ def yellow_fraction(image: np.ndarray, threshold: float = 0.5) -> float:
 
     Examples
     --------
-    >>> image = blank(3, 1, (0, 0, 0))
+    >>> image = blank((1, 3), (0, 0, 0))
     >>> image[0, 0] = image[0, 1] = (1, 1, 0)
     >>> image[0, 2] = (1, 0, 0)
     >>> round(yellow_fraction(image), 3)

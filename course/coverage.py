@@ -35,7 +35,7 @@ from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.path import Path
 from matplotlib.transforms import Affine2D
 
-from course._validate import as_int, as_points, as_positive_float, as_shape
+from course._validate import as_curve, as_int, as_positive_float, as_shape
 from course.bezier import flatten
 
 __all__ = [
@@ -58,17 +58,6 @@ HALF_DIAGONAL = np.sqrt(0.5)
 REFERENCE_TOLERANCE = 1e-4
 # Sub-sample rows processed at once by the reference (bounds its memory).
 _CHUNK_SAMPLES = 1 << 20
-
-
-def as_curve(points: Any, name: str = "points") -> np.ndarray:
-    """Validate control points of a curve in image space: finite, shape (N, 2)."""
-    control = as_points(points, name)
-    if control.shape[1] != 2:
-        raise ValueError(
-            f"{name} must have shape (N, 2): (x, y) control points in image space; "
-            f"got shape {control.shape}"
-        )
-    return control
 
 
 def curve_polyline(points: Any, tolerance: float, max_step: float = 1.0) -> np.ndarray:

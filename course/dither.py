@@ -29,8 +29,8 @@ from scipy import ndimage
 from course._validate import as_choice, as_gray, as_int, as_positive_float, as_rng
 from course.blue_noise import blue_noise_mask
 from course.error_diffusion import (
+    ERROR_DIFFUSION_METHODS,
     KERNELS,
-    METHODS,
     diffusion_offsets,
     error_diffusion,
     error_diffusion_values,
@@ -38,9 +38,10 @@ from course.error_diffusion import (
 )
 
 __all__ = [
+    "ERROR_DIFFUSION_METHODS",
     "KERNELS",
-    "METHODS",
     "ORDERED_MATRIX",
+    "ORDERED_METHODS",
     "all_methods",
     "bayer",
     "bayer_matrix",
@@ -60,6 +61,7 @@ __all__ = [
 #: The lab's 3 x 3 dither matrix (Foley et al.), indexed [row, column]: the
 #: sub-pixel at row i, column j of a cell lights once the value exceeds M[i, j] / 9.
 ORDERED_MATRIX = np.array([[6, 8, 4], [1, 0, 3], [5, 2, 7]])
+ORDERED_METHODS = ("tiled", "loop")
 
 
 def threshold(gray: Any) -> np.ndarray:
@@ -114,7 +116,7 @@ def blue_noise(gray: Any, noise: Any) -> np.ndarray:
     return (array + (tiled - 0.5) > 0.5).astype(float)
 
 
-def ordered(gray: Any, method: str = "fast") -> np.ndarray:
+def ordered(gray: Any, method: str = "tiled") -> np.ndarray:
     """The lab's ordered dithering: each pixel becomes a 3 x 3 cell of sub-pixels.
 
     Output pixel ``(3 y + i, 3 x + j)`` is 1 where ``gray[y, x] > M[i, j] / 9``
@@ -126,9 +128,9 @@ def ordered(gray: Any, method: str = "fast") -> np.ndarray:
     Parameters
     ----------
     gray : array_like, (H, W), values in [0, 1]
-    method : {"fast", "loop"}
+    method : {"tiled", "loop"}
         ``"loop"`` is the handout's form, nine comparisons per pixel;
-        ``"fast"`` compares the whole image against the tiled matrix at once.
+        ``"tiled"`` compares the whole image against the tiled matrix at once.
 
     Returns
     -------
@@ -142,20 +144,30 @@ def ordered(gray: Any, method: str = "fast") -> np.ndarray:
            [0., 1., 0.]])
     """
     array = as_gray(gray, "gray")
-    method = as_choice(method, "method", ("fast", "loop"))
-    levels = ORDERED_MATRIX / 9
+    method = as_choice(method, "method", ORDERED_METHODS)
     if method == "loop":
-        height, width = array.shape
-        output = np.zeros((3 * height, 3 * width))
-        for y in range(height):
-            for x in range(width):
-                for i in range(3):
-                    for j in range(3):
-                        if array[y, x] > levels[i, j]:
-                            output[3 * y + i, 3 * x + j] = 1.0
-        return output
+        return _ordered_loop(array)
+    return _ordered_tiled(array)
+
+
+def _ordered_loop(array: np.ndarray) -> np.ndarray:
+    """The handout's nine comparisons per pixel, one sub-pixel at a time."""
+    levels = ORDERED_MATRIX / 9
+    height, width = array.shape
+    output = np.zeros((3 * height, 3 * width))
+    for y in range(height):
+        for x in range(width):
+            for i in range(3):
+                for j in range(3):
+                    if array[y, x] > levels[i, j]:
+                        output[3 * y + i, 3 * x + j] = 1.0
+    return output
+
+
+def _ordered_tiled(array: np.ndarray) -> np.ndarray:
+    """Every pixel enlarged to 3 x 3, compared with the matrix tiled over the image."""
     enlarged = np.repeat(np.repeat(array, 3, axis=0), 3, axis=1)
-    return (enlarged > np.tile(levels, array.shape)).astype(float)
+    return (enlarged > np.tile(ORDERED_MATRIX / 9, array.shape)).astype(float)
 
 
 def bayer_matrix(size: int) -> np.ndarray:

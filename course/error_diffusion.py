@@ -15,11 +15,11 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import _describe, as_choice, as_gray
+from course._validate import as_choice, as_gray, describe
 
 __all__ = [
+    "ERROR_DIFFUSION_METHODS",
     "KERNELS",
-    "METHODS",
     "diffusion_offsets",
     "error_diffusion",
     "error_diffusion_values",
@@ -37,7 +37,7 @@ KERNELS: dict[str, tuple[tuple[tuple[int, ...], ...], int]] = {
     "atkinson": (((0, 0, 1, 1), (1, 1, 1, 0), (0, 1, 0, 0)), 8),
 }
 
-METHODS = ("wavefront", "rows", "loop")
+ERROR_DIFFUSION_METHODS = ("wavefront", "rows", "loop")
 
 
 def diffusion_offsets(kernel: str = "floyd-steinberg") -> list[tuple[int, int, float]]:
@@ -127,10 +127,10 @@ def _run(
     array = as_gray(gray, "gray")
     offsets = diffusion_offsets(kernel)
     if not isinstance(serpentine, (bool, np.bool_)):
-        raise TypeError(f"serpentine must be True or False; got {_describe(serpentine)}")
+        raise TypeError(f"serpentine must be True or False; got {describe(serpentine)}")
     if method is None:
         method = "rows" if serpentine else "wavefront"
-    method = as_choice(method, "method", METHODS)
+    method = as_choice(method, "method", ERROR_DIFFUSION_METHODS)
     if method == "wavefront":
         if serpentine:
             raise ValueError(
@@ -138,10 +138,10 @@ def _run(
                 "starts where the row above ended, so no two rows can run together; "
                 "use method='rows' (the default for serpentine)"
             )
-        return _diffuse_wavefront(array, offsets)
+        return _error_diffusion_wavefront(array, offsets)
     if method == "rows":
-        return _diffuse_rows(array, offsets, bool(serpentine))
-    return _diffuse_loop(array, offsets, bool(serpentine))
+        return _error_diffusion_rows(array, offsets, bool(serpentine))
+    return _error_diffusion_loop(array, offsets, bool(serpentine))
 
 
 def error_diffusion_values(
@@ -170,7 +170,7 @@ def error_diffusion_values(
     return _run(gray, kernel, serpentine, method)[1]
 
 
-def _diffuse_loop(
+def _error_diffusion_loop(
     gray: np.ndarray, offsets: list[tuple[int, int, float]], serpentine: bool
 ) -> tuple[np.ndarray, np.ndarray]:
     """The handout's form: one pixel at a time, errors pushed into a copy.
@@ -197,7 +197,7 @@ def _diffuse_loop(
     return output, buffer
 
 
-def _diffuse_rows(
+def _error_diffusion_rows(
     gray: np.ndarray, offsets: list[tuple[int, int, float]], serpentine: bool
 ) -> tuple[np.ndarray, np.ndarray]:
     """A loop along each row; the pushes to the rows below as whole-row additions.
@@ -257,7 +257,7 @@ def _wavefront_skew(offsets: list[tuple[int, int, float]]) -> int:
     return skew
 
 
-def _diffuse_wavefront(
+def _error_diffusion_wavefront(
     gray: np.ndarray, offsets: list[tuple[int, int, float]], band: int | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """All pixels of one wavefront x + s y = t at once, t = 0, 1, 2, ...

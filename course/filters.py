@@ -28,9 +28,21 @@ import numpy as np
 
 from course._validate import as_choice, as_float_array, as_image, require_finite
 
-__all__ = ["BORDERS", "BOX", "SOBEL_X", "SOBEL_Y", "blur", "convolve", "sobel"]
+__all__ = [
+    "BLUR_METHODS",
+    "BORDERS",
+    "BOX",
+    "SOBEL_METHODS",
+    "SOBEL_X",
+    "SOBEL_Y",
+    "blur",
+    "convolve",
+    "sobel",
+]
 
 BORDERS = ("handout", "zero", "replicate", "reflect")
+BLUR_METHODS = ("shifted_sums", "loop")
+SOBEL_METHODS = ("separable", "loop")
 
 #: The box kernel: every neighbour weighs 1/9.
 BOX = np.full((3, 3), 1 / 9)
@@ -61,7 +73,7 @@ def _box_sum(image: np.ndarray) -> np.ndarray:
     return total
 
 
-def blur(image: Any, method: str = "fast") -> np.ndarray:
+def blur(image: Any, method: str = "shifted_sums") -> np.ndarray:
     """3 x 3 box blur; at the border, the mean of the in-image neighbours.
 
     Inside, each pixel becomes the mean of its 3 x 3 neighbourhood, as
@@ -72,10 +84,10 @@ def blur(image: Any, method: str = "fast") -> np.ndarray:
     Parameters
     ----------
     image : array_like, (H, W) or (H, W, 3), values in [0, 1]
-    method : {"fast", "loop"}
+    method : {"shifted_sums", "loop"}
         ``"loop"`` is the handout's form: for each pixel, add up the in-image
-        neighbours and count them. ``"fast"`` adds shifted copies of the
-        whole image, along rows then columns, and divides by the counts. The
+        neighbours and count them. ``"shifted_sums"`` adds shifted copies of
+        the whole image, along rows then columns, and divides by the counts. The
         two agree to rounding, and exactly when the sums are exact (e.g. for
         multiples of 1/256).
 
@@ -87,20 +99,31 @@ def blur(image: Any, method: str = "fast") -> np.ndarray:
            [0.225, 0.15 , 0.225]])
     """
     array = as_image(image, "image")
-    method = as_choice(method, "method", ("fast", "loop"))
-    height, width = array.shape[:2]
+    method = as_choice(method, "method", BLUR_METHODS)
     if method == "loop":
-        output = np.empty_like(array)
-        for y in range(height):
-            for x in range(width):
-                total, count = 0.0, 0
-                for dy in (-1, 0, 1):
-                    for dx in (-1, 0, 1):
-                        if 0 <= y + dy < height and 0 <= x + dx < width:
-                            total = total + array[y + dy, x + dx]
-                            count += 1
-                output[y, x] = total / count
-        return output
+        return _blur_loop(array)
+    return _blur_shifted_sums(array)
+
+
+def _blur_loop(array: np.ndarray) -> np.ndarray:
+    """The handout's loop: each pixel's in-image neighbours, added up and counted."""
+    height, width = array.shape[:2]
+    output = np.empty_like(array)
+    for y in range(height):
+        for x in range(width):
+            total, count = 0.0, 0
+            for dy in (-1, 0, 1):
+                for dx in (-1, 0, 1):
+                    if 0 <= y + dy < height and 0 <= x + dx < width:
+                        total = total + array[y + dy, x + dx]
+                        count += 1
+            output[y, x] = total / count
+    return output
+
+
+def _blur_shifted_sums(array: np.ndarray) -> np.ndarray:
+    """Shifted copies added along rows then columns, divided by the neighbour counts."""
+    height, width = array.shape[:2]
     counts = np.outer(_neighbour_counts(height), _neighbour_counts(width))
     if array.ndim == 3:
         counts = counts[:, :, None]
@@ -190,7 +213,7 @@ def convolve(image: Any, kernel: Any, border: str = "handout") -> np.ndarray:
     return output
 
 
-def sobel(image: Any, border: str = "replicate", method: str = "fast") -> np.ndarray:
+def sobel(image: Any, border: str = "replicate", method: str = "separable") -> np.ndarray:
     """Gradient magnitude ``sqrt(Gx**2 + Gy**2)`` with the Sobel kernels.
 
     ``Gx`` is the dot product of ``SOBEL_X`` with each 3 x 3 window (the
@@ -207,9 +230,9 @@ def sobel(image: Any, border: str = "replicate", method: str = "fast") -> np.nda
         ``"reflect"`` keep a flat image at zero gradient; ``"zero"`` makes the
         image's edge an edge. (``"handout"`` does not apply: Sobel's weights
         sum to zero, there is nothing to rescale.)
-    method : {"fast", "loop"}
-        ``"loop"``: the handout's two dot products per pixel. ``"fast"``: the
-        kernels are separable, ``SOBEL_X = [1, 2, 1]^T [-1, 0, 1]``, so each
+    method : {"separable", "loop"}
+        ``"loop"``: the handout's two dot products per pixel. ``"separable"``:
+        the kernels are separable, ``SOBEL_X = [1, 2, 1]^T [-1, 0, 1]``, so each
         is a difference of shifted copies, then a weighted sum of shifted
         copies. Equal to rounding; exactly for multiples of 1/256.
 
@@ -227,9 +250,14 @@ def sobel(image: Any, border: str = "replicate", method: str = "fast") -> np.nda
     """
     array = as_image(image, "image")
     border = as_choice(border, "border", ("replicate", "reflect", "zero"))
-    method = as_choice(method, "method", ("fast", "loop"))
+    method = as_choice(method, "method", SOBEL_METHODS)
     if method == "loop":
         return _sobel_loop(array, border)
+    return _sobel_separable(array, border)
+
+
+def _sobel_separable(array: np.ndarray, border: str) -> np.ndarray:
+    """Each kernel as a difference of shifted copies, then a [1, 2, 1] sum of shifted copies."""
     pad = ((1, 1), (1, 1)) + ((0, 0),) * (array.ndim - 2)
     padded = np.pad(array, pad, mode=_PAD_MODES[border])
     across = padded[:, 2:] - padded[:, :-2]  # [-1, 0, 1] along each row

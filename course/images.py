@@ -185,20 +185,19 @@ def _zone_plate_rate(height: int, width: int, max_frequency: float) -> float:
 # --- lessons 06-07: dithering and filtering ---------------------------------
 
 
-def ramp(width: int = 256, height: int = 32) -> np.ndarray:
-    """A horizontal gray ramp, black to white: pixel x has the value (x + 0.5) / width.
+def ramp(shape: Any = (32, 256)) -> np.ndarray:
+    """A horizontal gray ramp of ``shape = (H, W)``, black to white: pixel x is (x + 0.5) / W.
 
     Every column has its own level, so a dithering method's tone (or its
     failure to keep it) shows along the ramp.
 
     Examples
     --------
-    >>> ramp(4, 2)
+    >>> ramp((2, 4))
     array([[0.125, 0.375, 0.625, 0.875],
            [0.125, 0.375, 0.625, 0.875]])
     """
-    width = as_int(width, "width", minimum=1)
-    height = as_int(height, "height", minimum=1)
+    height, width = as_shape(shape)
     return np.tile((np.arange(width) + 0.5) / width, (height, 1))
 
 

@@ -62,8 +62,9 @@ from course.poisson_problem import (
 
 __all__ = [
     "GUIDANCE",
+    "ITERATIVE_METHODS",
     "LAB_ITERATIONS",
-    "METHODS",
+    "SOLVE_METHODS",
     "ConvergenceHistory",
     "PoissonProblem",
     "clone_problem",
@@ -80,8 +81,8 @@ __all__ = [
     "sweeps_to_residual",
 ]
 
-METHODS = ("auto", "direct", "dst", "capacitance", "jacobi", "gauss_seidel", "sor")
-ITERATIVE = ("jacobi", "gauss_seidel", "sor")
+SOLVE_METHODS = ("auto", "direct", "dst", "capacitance", "jacobi", "gauss_seidel", "sor")
+ITERATIVE_METHODS = ("jacobi", "gauss_seidel", "sor")
 # The lab's skeleton runs 8000 sweeps; the iterative methods default to it.
 LAB_ITERATIONS = 8000
 # method="capacitance" refuses a border of more pixels than this: its dense
@@ -312,7 +313,7 @@ def convergence(
     >>> history.sweeps, np.round(history.residuals, 3)
     (array([0, 2, 4]), array([1.  , 0.5 , 0.25]))
     """
-    method = as_choice(method, "method", ITERATIVE)
+    method = as_choice(method, "method", ITERATIVE_METHODS)
     iterations = as_int(iterations, "iterations", minimum=0)
     every = as_int(every, "every", minimum=1)
     omega = _as_omega(omega, method, problem.region)
@@ -353,7 +354,7 @@ def iterates(
     >>> next(sweeps)[1]   # each unknown: three neighbours at 0, one at 0.5
     array([0.   , 0.125, 0.125, 0.   ])
     """
-    method = as_choice(method, "method", ITERATIVE)
+    method = as_choice(method, "method", ITERATIVE_METHODS)
     omega = _as_omega(omega, method, problem.region)
     for planes in _sweeps(problem, method, omega):
         yield planes[0] if problem.values.ndim == 2 else np.moveaxis(planes, 0, -1)
@@ -449,15 +450,15 @@ def _solve_planes(
     tolerance: float | None,
     omega: float | None,
 ) -> tuple[np.ndarray, int]:
-    method = as_choice(method, "method", METHODS)
+    method = as_choice(method, "method", SOLVE_METHODS)
     if method == "auto":
         method = exact_method(problem)
     values, region, source = problem.planes()
-    if method not in ITERATIVE:
+    if method not in ITERATIVE_METHODS:
         for name, given in (("iterations", iterations), ("tolerance", tolerance), ("omega", omega)):
             if given is not None:
                 raise ValueError(
-                    f"{name} applies to the iterative methods {ITERATIVE}; "
+                    f"{name} applies to the iterative methods {ITERATIVE_METHODS}; "
                     f"method={method!r} is exact, so leave {name} unset (got {given!r})"
                 )
         if method == "dst":

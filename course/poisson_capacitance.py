@@ -47,7 +47,8 @@ import numpy as np
 import scipy.fft
 import scipy.linalg
 
-from course.poisson_solvers import _eigenvalues, _sine_matrix, defect
+from course.poisson_solvers import defect
+from course.sine_transform import laplacian_eigenvalues, sine_matrix
 
 __all__ = [
     "BREAK_EVEN",
@@ -146,7 +147,7 @@ def embedding(region: np.ndarray) -> np.ndarray:
            [1, 1, 1]])
     """
     height, width = region.shape
-    inside = np.zeros(box_shape(height - 2, width - 2), bool)
+    inside = np.zeros(box_shape((height - 2, width - 2)), bool)
     inside[: height - 2, : width - 2] = region[1:-1, 1:-1]
     return inside
 
@@ -190,8 +191,8 @@ def faster_than_direct(region: np.ndarray) -> bool:
     return dense_work(region) < BREAK_EVEN * float(region.sum()) ** 1.5
 
 
-def box_shape(height: int, width: int) -> tuple[int, int]:
-    """The smallest box at least ``height x width`` whose sine transforms are fast.
+def box_shape(shape: tuple[int, int]) -> tuple[int, int]:
+    """The smallest box at least ``shape = (H, W)`` whose sine transforms are fast.
 
     A type-I sine transform of length ``n`` is an FFT of length ``2 (n + 1)``,
     fast when ``n + 1`` has only small prime factors. The box may be larger
@@ -199,9 +200,10 @@ def box_shape(height: int, width: int) -> tuple[int, int]:
 
     Examples
     --------
-    >>> box_shape(160, 190)   # 161 = 7 x 23 and 191 is prime; 162 = 2 x 3^4, 192 = 2^6 x 3
+    >>> box_shape((160, 190))   # 161 = 7 x 23 and 191 is prime; 162 = 2 x 3^4, 192 = 2^6 x 3
     (161, 191)
     """
+    height, width = shape
     return (
         scipy.fft.next_fast_len(height + 1, real=True) - 1,
         scipy.fft.next_fast_len(width + 1, real=True) - 1,
@@ -240,7 +242,7 @@ def box_solve(rhs: np.ndarray) -> np.ndarray:
     array([[[0.35714286, 0.42857143, 0.35714286]]])
     """
     height, width = rhs.shape[1:]
-    eigenvalues = _eigenvalues(height)[:, None] + _eigenvalues(width)[None, :]
+    eigenvalues = laplacian_eigenvalues(height)[:, None] + laplacian_eigenvalues(width)[None, :]
     spectrum = scipy.fft.dstn(rhs, type=1, axes=(1, 2)) / eigenvalues
     return scipy.fft.idstn(spectrum, type=1, axes=(1, 2))
 
@@ -279,7 +281,7 @@ def box_green(rows: np.ndarray, columns: np.ndarray, shape: tuple[int, int]) -> 
     modes = np.arange(1, width + 1)
     # 2 + mu = 2 cosh(theta) with mu = 4 sin^2(pi l / (2 (n + 1))), without cancellation:
     theta = 2.0 * np.arcsinh(np.sin(np.pi * modes / (2.0 * (width + 1))))
-    sines = np.sqrt(2.0 / (width + 1)) * _sine_matrix(width)[columns]
+    sines = np.sqrt(2.0 / (width + 1)) * sine_matrix(width)[columns]
     i = (rows + 1)[:, None].astype(float)
     # sinh(theta i) = e^(theta i) (1 - e^(-2 theta i)) / 2, and likewise the others.
     rising = -np.expm1(-2.0 * theta * i)

@@ -16,11 +16,11 @@ import numpy as np
 
 from course import poisson_solvers as solvers
 from course._validate import (
-    _describe,
     as_choice,
     as_float_array,
     as_image,
     as_int,
+    describe,
     require_finite,
 )
 
@@ -310,7 +310,7 @@ def _as_offset(offset: Any) -> tuple[int, int]:
     if isinstance(offset, (str, bytes)) or not hasattr(offset, "__len__") or len(offset) != 2:
         raise ValueError(
             "offset must be a pair (x, y) of integers, the column and row of the foreground's "
-            f"top-left pixel in the background; got {_describe(offset)}"
+            f"top-left pixel in the background; got {describe(offset)}"
         )
     return as_int(offset[0], "offset[0] (x)"), as_int(offset[1], "offset[1] (y)")
 

@@ -37,26 +37,27 @@ References
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Callable, Iterator
 
 import numpy as np
-import scipy.fft
 import scipy.sparse
 import scipy.sparse.linalg
 
+from course._validate import as_choice
+from course.sine_transform import laplacian_eigenvalues, sine_transform
+
 __all__ = [
+    "JACOBI_SWEEPS_METHODS",
+    "SOR_SWEEPS_METHODS",
     "PixelSystem",
     "defect",
     "iterate",
-    "jacobi_loop",
     "jacobi_rate",
     "jacobi_sweeps",
     "optimal_omega",
     "residual",
     "solve_direct",
     "solve_dst",
-    "sor_loop",
     "sor_sweeps",
 ]
 
@@ -64,6 +65,8 @@ __all__ = [
 # up, down, left, right. The loop form and the vectorised form add in the same
 # order, so their floating-point results are identical, not just close.
 NEIGHBOURS = ((-1, 0), (1, 0), (0, -1), (0, 1))
+JACOBI_SWEEPS_METHODS = ("slices", "loop")
+SOR_SWEEPS_METHODS = ("triangular_solve", "loop")
 
 
 def neighbour_sum(u: np.ndarray) -> np.ndarray:
@@ -113,13 +116,16 @@ def residual(u: np.ndarray, region: np.ndarray, source: np.ndarray) -> float:
 
 
 def jacobi_sweeps(
-    values: np.ndarray, region: np.ndarray, source: np.ndarray
+    values: np.ndarray, region: np.ndarray, source: np.ndarray, method: str = "slices"
 ) -> Iterator[np.ndarray]:
     """Jacobi iteration: every unknown becomes the average of its neighbours plus ``b / 4``.
 
     All pixels are updated from the previous iterate at once. Yields the
     iterate after each sweep, forever; it is one array updated in place, so
-    copy it to keep it. :func:`jacobi_loop` is the same sweep pixel by pixel.
+    copy it to keep it. ``method="slices"`` (the default) updates the whole
+    region from four shifted slices of the previous iterate; ``"loop"`` is
+    the same sweep pixel by pixel (slow: for reading and testing), with the
+    same sums in the same order, so the iterates are equal bit for bit.
 
     Examples
     --------
@@ -129,6 +135,14 @@ def jacobi_sweeps(
     >>> next(sweeps)[0, 1].copy(), next(sweeps)[0, 1]
     (array([1.  , 0.25, 0.  , 0.  ]), array([1.    , 0.25  , 0.0625, 0.    ]))
     """
+    if as_choice(method, "method", JACOBI_SWEEPS_METHODS) == "loop":
+        return _jacobi_sweeps_loop(values, region, source)
+    return _jacobi_sweeps_slices(values, region, source)
+
+
+def _jacobi_sweeps_slices(
+    values: np.ndarray, region: np.ndarray, source: np.ndarray
+) -> Iterator[np.ndarray]:
     u = values.copy()
     inner = u[:, 1:-1, 1:-1]  # a view: writing it writes u
     unknown = region[1:-1, 1:-1]
@@ -138,21 +152,13 @@ def jacobi_sweeps(
         yield u
 
 
-def jacobi_loop(
-    values: np.ndarray, region: np.ndarray, source: np.ndarray, iterations: int
-) -> np.ndarray:
-    """:func:`jacobi_sweeps` as the per-pixel loop it is (slow: for reading and testing).
-
-    Examples
-    --------
-    >>> values = np.zeros((1, 3, 4)); values[0, :, 0] = 1.0
-    >>> region = np.zeros((3, 4), bool); region[1, 1:3] = True
-    >>> jacobi_loop(values, region, np.zeros((1, 3, 4)), 2)[0, 1]
-    array([1.    , 0.25  , 0.0625, 0.    ])
-    """
+def _jacobi_sweeps_loop(
+    values: np.ndarray, region: np.ndarray, source: np.ndarray
+) -> Iterator[np.ndarray]:
+    """The per-pixel loop: each unknown from its four neighbours in the previous sweep."""
     u = values.copy()
     channels, height, width = u.shape
-    for _ in range(iterations):
+    while True:
         previous = u.copy()  # Jacobi reads only the previous iterate
         for c in range(channels):
             for y in range(1, height - 1):
@@ -165,11 +171,15 @@ def jacobi_loop(
                             + previous[c, y, x + 1]
                         )
                         u[c, y, x] = (total + source[c, y, x]) * 0.25
-    return u
+        yield u
 
 
 def sor_sweeps(
-    values: np.ndarray, region: np.ndarray, source: np.ndarray, omega: float = 1.0
+    values: np.ndarray,
+    region: np.ndarray,
+    source: np.ndarray,
+    omega: float = 1.0,
+    method: str = "triangular_solve",
 ) -> Iterator[np.ndarray]:
     """Successive over-relaxation in row-by-row order; ``omega = 1`` is Gauss-Seidel.
 
@@ -179,13 +189,16 @@ def sor_sweeps(
     does. Each update moves a pixel ``omega`` times as far as Gauss-Seidel
     would: ``u <- (1 - omega) u + omega (sum_q u_q + b) / 4`` [2]_.
 
-    Such a sweep is a triangular solve: with the unknowns numbered row by row,
-    ``L`` and ``U`` the links to earlier and later neighbours and ``c`` the
-    right-hand side, ``(4 I - omega L) x_new = 4 (1 - omega) x + omega (U x + c)``.
-    SuperLU solves it (the matrix is already triangular: no fill, no
-    pivoting) in compiled code, which makes the row-by-row order fast without
-    reordering it. Yields the iterate after each sweep, forever; it is one array
-    updated in place. :func:`sor_loop` is the same sweep pixel by pixel.
+    ``method="loop"`` is that in-place loop, pixel by pixel (slow: for
+    reading and testing; with ``omega = 1`` it is the lab's loop).
+    ``"triangular_solve"`` (the default) sees that such a sweep is a
+    triangular solve: with the unknowns numbered row by row, ``L`` and ``U``
+    the links to earlier and later neighbours and ``c`` the right-hand side,
+    ``(4 I - omega L) x_new = 4 (1 - omega) x + omega (U x + c)``. SuperLU
+    solves it (the matrix is already triangular: no fill, no pivoting) in
+    compiled code, which makes the row-by-row order fast without reordering
+    it. The two agree to rounding. Yields the iterate after each sweep,
+    forever; it is one array updated in place.
 
     Examples
     --------
@@ -194,6 +207,14 @@ def sor_sweeps(
     >>> next(sor_sweeps(values, region, np.zeros((1, 3, 4))))[0, 1]  # (1 + 0) / 4, then 0.25 / 4
     array([1.    , 0.25  , 0.0625, 0.    ])
     """
+    if as_choice(method, "method", SOR_SWEEPS_METHODS) == "loop":
+        return _sor_sweeps_loop(values, region, source, omega)
+    return _sor_sweeps_triangular_solve(values, region, source, omega)
+
+
+def _sor_sweeps_triangular_solve(
+    values: np.ndarray, region: np.ndarray, source: np.ndarray, omega: float
+) -> Iterator[np.ndarray]:
     system = PixelSystem(values, region, source)
     sweep = system.relaxation(omega)
     x = system.unknowns(values)
@@ -204,27 +225,13 @@ def sor_sweeps(
         yield u
 
 
-def sor_loop(
-    values: np.ndarray,
-    region: np.ndarray,
-    source: np.ndarray,
-    iterations: int,
-    omega: float = 1.0,
-) -> np.ndarray:
-    """:func:`sor_sweeps` as the per-pixel loop it is (slow: for reading and testing).
-
-    With ``omega = 1`` this is the lab's in-place loop.
-
-    Examples
-    --------
-    >>> values = np.zeros((1, 3, 4)); values[0, :, 0] = 1.0
-    >>> region = np.zeros((3, 4), bool); region[1, 1:3] = True
-    >>> sor_loop(values, region, np.zeros((1, 3, 4)), 1)[0, 1]
-    array([1.    , 0.25  , 0.0625, 0.    ])
-    """
+def _sor_sweeps_loop(
+    values: np.ndarray, region: np.ndarray, source: np.ndarray, omega: float
+) -> Iterator[np.ndarray]:
+    """The lab's in-place loop, relaxed by omega: up and left are already new."""
     u = values.copy()
     channels, height, width = u.shape
-    for _ in range(iterations):
+    while True:
         for c in range(channels):
             for y in range(1, height - 1):
                 for x in range(1, width - 1):
@@ -232,7 +239,7 @@ def sor_loop(
                         total = u[c, y - 1, x] + u[c, y + 1, x] + u[c, y, x - 1] + u[c, y, x + 1]
                         average = (total + source[c, y, x]) * 0.25
                         u[c, y, x] = (1.0 - omega) * u[c, y, x] + omega * average
-    return u
+        yield u
 
 
 def iterate(
@@ -304,18 +311,19 @@ def optimal_omega(region: np.ndarray) -> float:
     width = columns.max() - columns.min() + 1
     depth = scipy.ndimage.distance_transform_cdt(region, metric="chessboard").max()
     thickness = min(2 * int(depth) - 1, height, width)
-    rho = jacobi_rate(thickness, max(height, width))
+    rho = jacobi_rate((thickness, max(height, width)))
     return float(2.0 / (1.0 + np.sqrt(1.0 - rho**2)))
 
 
-def jacobi_rate(height: int, width: int) -> float:
-    """How much one Jacobi sweep shrinks the slowest error on a ``height x width`` rectangle.
+def jacobi_rate(shape: tuple[int, int]) -> float:
+    """How much one Jacobi sweep shrinks the slowest error on a rectangle of ``shape = (H, W)``.
 
     Examples
     --------
-    >>> round(jacobi_rate(109, 278), 6)   # the lab's 280 x 111 plane, inside its ring
+    >>> round(jacobi_rate((109, 278)), 6)   # the lab's 280 x 111 plane, inside its ring
     0.999764
     """
+    height, width = shape
     return float((np.cos(np.pi / (height + 1)) + np.cos(np.pi / (width + 1))) / 2)
 
 
@@ -457,50 +465,9 @@ def solve_dst(values: np.ndarray, region: np.ndarray, source: np.ndarray) -> np.
     rhs[:, :, 0] += values[:, 1:-1, 0]
     rhs[:, :, -1] += values[:, 1:-1, -1]
     m, n = rhs.shape[1:]
-    eigenvalues = _eigenvalues(m)[:, None] + _eigenvalues(n)[None, :]
-    spectrum = _sine_transform(_sine_transform(rhs, axis=1), axis=2) / eigenvalues
+    eigenvalues = laplacian_eigenvalues(m)[:, None] + laplacian_eigenvalues(n)[None, :]
+    spectrum = sine_transform(sine_transform(rhs, axis=1), axis=2) / eigenvalues
     # The sine transform is its own inverse up to the factor (size + 1) / 2.
-    solution = _sine_transform(_sine_transform(spectrum, axis=1), axis=2)
+    solution = sine_transform(sine_transform(spectrum, axis=1), axis=2)
     u[:, 1:-1, 1:-1] = solution * (4.0 / ((m + 1) * (n + 1)))
     return u
-
-
-def _eigenvalues(size: int) -> np.ndarray:
-    """Eigenvalues ``2 - 2 cos(pi k / (size + 1))`` of the 1-D Laplacian ``[-1, 2, -1]``."""
-    return 2.0 - 2.0 * np.cos(np.pi * np.arange(1, size + 1) / (size + 1))
-
-
-def _sine_transform(x: np.ndarray, axis: int) -> np.ndarray:
-    """``sum_j x_j sin(pi j k / (size + 1))`` along ``axis`` (1 or 2) of a ``(C, m, n)`` array.
-
-    A type-I DST of length ``size`` is an FFT of length ``2 (size + 1)``.
-    When ``size + 1`` has a large prime factor (199 for a 200-pixel patch)
-    that FFT is ten times slower than for a neighbouring size, and below a
-    thousand pixels a matrix product with the sine matrix (BLAS) is faster.
-    """
-    size = x.shape[axis]
-    if size > 1024 or _largest_prime_factor(size + 1) <= 50:
-        return scipy.fft.dst(x, type=1, axis=axis) * 0.5  # scipy's DST-I has a factor 2
-    sines = _sine_matrix(size)
-    # 2-D products only: numpy's stacked (broadcast) matmul does not call BLAS.
-    if axis == 2:
-        return (x.reshape(-1, size) @ sines).reshape(x.shape)
-    return np.stack([sines @ plane for plane in x])
-
-
-def _largest_prime_factor(number: int) -> int:
-    """The largest prime factor of a positive integer (1 for 1): 5 for 200, 199 for 199."""
-    largest, factor = 1, 2
-    while factor * factor <= number:
-        while number % factor == 0:
-            largest, number = factor, number // factor
-        factor += 1
-    return max(largest, number)
-
-
-@functools.lru_cache(maxsize=8)
-def _sine_matrix(size: int) -> np.ndarray:
-    k = np.arange(1, size + 1)
-    sines = np.sin(np.pi * np.outer(k, k) / (size + 1))
-    sines.flags.writeable = False
-    return sines

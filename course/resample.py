@@ -150,9 +150,15 @@ def supersample(image: Any, out_shape: Any, rate: int, method: str = "separable"
     method = as_choice(method, "method", SUPERSAMPLE_METHODS)
     if method == "loop":
         return _supersample_loop(pixels, (height, width), rate)
-    rows = _resampling_matrix(pixels.shape[0], height, rate, sample_offset=0.5, centre=0.5)
-    columns = _resampling_matrix(pixels.shape[1], width, rate, sample_offset=0.5, centre=0.5)
-    return _separable(pixels, rows, columns)
+    return _supersample_separable(pixels, (height, width), rate)
+
+
+def _supersample_separable(image: np.ndarray, out_shape: tuple[int, int], rate: int) -> np.ndarray:
+    """Two sparse products: one axis' samples and bilinear weights, then the other's."""
+    height, width = out_shape
+    rows = _resampling_matrix(image.shape[0], height, rate, sample_offset=0.5, centre=0.5)
+    columns = _resampling_matrix(image.shape[1], width, rate, sample_offset=0.5, centre=0.5)
+    return _separable(image, rows, columns)
 
 
 def _supersample_loop(image: np.ndarray, out_shape: tuple[int, int], rate: int) -> np.ndarray:

@@ -8,7 +8,7 @@ off with distance. Each of their *splats* is here, faithfully, as a function
 of (x, y), ``weights`` a float ``(K,)`` array in [0, 1], in sample order,
 optionally clipped to a canvas with ``shape=(H, W)``. Beside each vectorized
 splat is its one-sample form, written like the C++ (:data:`ONE_SAMPLE`), and
-:func:`splat_loop` runs it sample by sample.
+``splat(samples, kind, method="loop")`` runs it sample by sample.
 
 :mod:`course.antialias` draws curves with them (and with stroke coverage).
 
@@ -34,6 +34,7 @@ from course.canvas import inside
 __all__ = [
     "ONE_SAMPLE",
     "PIXELS_PER_SAMPLE",
+    "SPLATS",
     "SPLAT_METHODS",
     "arc_length_weights",
     "bilinear_centres",
@@ -43,7 +44,6 @@ __all__ = [
     "nearest_truncate",
     "normalised_centres",
     "splat",
-    "splat_loop",
     "subsample_falloff",
 ]
 
@@ -353,40 +353,48 @@ _SPLATS: dict[str, tuple[SplatFunction, Callable, int]] = {
     "subsample_falloff": (subsample_falloff, _subsample_falloff_one, 1),
     "normalised_centres": (normalised_centres, _normalised_centres_one, 4),
 }
-SPLAT_METHODS = tuple(_SPLATS)
+#: The handouts' splats, by name.
+SPLATS = tuple(_SPLATS)
+#: The forms of :func:`splat`: all samples at once, or the one-sample form in a loop.
+SPLAT_METHODS = ("vectorized", "loop")
 # The one-sample forms, for reading beside the handouts' C++.
 ONE_SAMPLE = {name: entry[1] for name, entry in _SPLATS.items()}
-# How many (pixel, weight) rows each method gives per sample, before clipping.
+# How many (pixel, weight) rows each splat gives per sample, before clipping.
 PIXELS_PER_SAMPLE = {name: entry[2] for name, entry in _SPLATS.items()}
 
 
-def splat(samples: Any, method: str, shape: Any = None) -> tuple[np.ndarray, np.ndarray]:
-    """Run the splat ``method`` (one of :data:`SPLAT_METHODS`) on the samples.
+def splat(
+    samples: Any, kind: str, shape: Any = None, method: str = "vectorized"
+) -> tuple[np.ndarray, np.ndarray]:
+    """Run the splat ``kind`` (one of :data:`SPLATS`) on the samples.
+
+    ``method="loop"`` is the handouts' form: the splat's one-sample function
+    (:data:`ONE_SAMPLE`) called sample by sample, each giving a few (pixel,
+    weight) pairs; ``"vectorized"`` (the default) splats every sample at
+    once with array operations. Same pixels and weights, in the same order.
 
     Examples
     --------
     >>> splat([[0.5, 0.5]], "nearest_round")[0].tolist()
     [[0, 0]]
-    """
-    method = as_choice(method, "method", SPLAT_METHODS)
-    return _SPLATS[method][0](samples, shape)
-
-
-def splat_loop(samples: Any, method: str) -> tuple[np.ndarray, np.ndarray]:
-    """The readable form: the splat's one-sample function, called sample by sample.
-
-    Same result as :func:`splat`, as the handouts compute it: a loop over
-    curve points, each giving a few (pixel, weight) pairs.
-
-    Examples
-    --------
-    >>> pixels, weights = splat_loop([[2.25, 1.5]], "bilinear_corners")
+    >>> pixels, weights = splat([[2.25, 1.5]], "bilinear_corners", method="loop")
     >>> pixels.tolist(), weights.tolist()
     ([[2, 1], [3, 1], [2, 2], [3, 2]], [0.375, 0.125, 0.375, 0.125])
     """
-    points = _as_samples(samples)
+    kind = as_choice(kind, "kind", SPLATS)
     method = as_choice(method, "method", SPLAT_METHODS)
-    one_sample = ONE_SAMPLE[method]
+    if method == "loop":
+        return _clipped(*_splat_loop(_as_samples(samples), kind), shape)
+    return _splat_vectorized(samples, kind, shape)
+
+
+def _splat_vectorized(samples: Any, kind: str, shape: Any) -> tuple[np.ndarray, np.ndarray]:
+    return _SPLATS[kind][0](samples, shape)
+
+
+def _splat_loop(points: np.ndarray, kind: str) -> tuple[np.ndarray, np.ndarray]:
+    """The handouts' loop over curve points, each splatted by its one-sample form."""
+    one_sample = ONE_SAMPLE[kind]
     pixels, weights = [], []
     for x, y in points.tolist():
         for pixel, weight in one_sample(x, y):

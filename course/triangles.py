@@ -34,8 +34,8 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_choice, as_int, as_point, as_shape
-from course.canvas import as_pixels, inside
+from course._validate import as_choice, as_int, as_pixels, as_point, as_shape
+from course.canvas import inside
 
 __all__ = [
     "EDGE_RULES",
@@ -47,7 +47,7 @@ __all__ = [
 ]
 
 SUBPIXEL = 256
-TRIANGLE_METHODS = ("edges", "scanline")
+TRIANGLE_METHODS = ("edge_functions", "loop")
 EDGE_RULES = ("top-left", "closed", "open")
 
 _HALF = SUBPIXEL // 2
@@ -63,7 +63,7 @@ def triangle(
     p2: Any,
     shape: Any = None,
     rule: str = "top-left",
-    method: str = "edges",
+    method: str = "edge_functions",
 ) -> np.ndarray:
     """The pixels whose centres lie inside the triangle ``p0 p1 p2``.
 
@@ -79,12 +79,12 @@ def triangle(
         and top edges, so shared edges are painted once. ``"closed"``: all of
         them, so a shared edge is painted twice. ``"open"``: none, so a shared
         edge through pixel centres leaves a crack.
-    method : {"edges", "scanline"}
-        ``"scanline"`` is the handout's Task 5: sort the vertices by y, fill
-        the upper and lower halves row by row between the left and right
-        edges. ``"edges"`` tests every centre of the bounding box against the
-        three edge functions at once (vectorized, the default). Both return
-        the same array.
+    method : {"edge_functions", "loop"}
+        ``"loop"`` is the handout's Task 5, a scanline fill: sort the vertices
+        by y, fill the upper and lower halves row by row between the left
+        and right edges. ``"edge_functions"`` (the default) tests every centre
+        of the bounding box against the three edge functions at once. Both
+        return the same array.
 
     Returns
     -------
@@ -95,7 +95,7 @@ def triangle(
     Examples
     --------
     >>> from course.canvas import blank, paint
-    >>> print(paint(blank(6, 4), triangle((0, 0), (6, 0), (0, 4)), 1.0).astype(int))
+    >>> print(paint(blank((4, 6)), triangle((0, 0), (6, 0), (0, 4)), 1.0).astype(int))
     [[1 1 1 1 1 0]
      [1 1 1 1 0 0]
      [1 1 0 0 0 0]
@@ -115,10 +115,10 @@ def triangle(
     rule = as_choice(rule, "rule", EDGE_RULES)
     method = as_choice(method, "method", TRIANGLE_METHODS)
     canvas = None if shape is None else as_shape(shape)
-    if method == "scanline":
-        pixels = np.array(_triangle_scanline(vertices, canvas, rule), dtype=np.int64)
+    if method == "loop":
+        pixels = np.array(_triangle_loop(vertices, canvas, rule), dtype=np.int64)
         return pixels.reshape(-1, 2)
-    return _triangle_edges(vertices, canvas, rule)
+    return _triangle_edge_functions(vertices, canvas, rule)
 
 
 def _snap(p0: Any, p1: Any, p2: Any) -> list[tuple[int, int]]:
@@ -154,7 +154,7 @@ def _centre_range(low: int, high: int, low_in: bool, high_in: bool) -> tuple[int
     return first, last
 
 
-def _triangle_scanline(
+def _triangle_loop(
     vertices: list[tuple[int, int]], canvas: tuple[int, int] | None, rule: str
 ) -> list[tuple[int, int]]:
     """The handout's scanline fill, in exact integer arithmetic (1/SUBPIXEL units)."""
@@ -234,7 +234,7 @@ def _edge_functions(
     return edges
 
 
-def _triangle_edges(
+def _triangle_edge_functions(
     vertices: list[tuple[int, int]], canvas: tuple[int, int] | None, rule: str
 ) -> np.ndarray:
     """Test every pixel centre of the bounding box against the three edge functions."""

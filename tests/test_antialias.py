@@ -8,10 +8,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from course.antialias import (
-    METHODS,
     ONE_SAMPLE,
-    SPLAT_METHODS,
-    STROKE_METHODS,
+    RENDER_METHODS,
+    SPLATS,
+    STROKES,
     arc_length_step,
     arc_length_weights,
     bilinear_centres,
@@ -22,7 +22,6 @@ from course.antialias import (
     normalised_centres,
     render,
     splat,
-    splat_loop,
     stroke_area,
     stroke_linear,
     stroke_polyline,
@@ -31,6 +30,7 @@ from course.antialias import (
 )
 from course.bezier import de_casteljau, uniform_parameters
 from course.coverage import reference
+from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 
 # Coordinates that are exact binary fractions, so sums and floors are exact.
@@ -52,16 +52,16 @@ NORMALISED = ("nearest_truncate", "nearest_round", "bilinear_zero_offset", "bili
 NORMALISED += ("bilinear_centres", "normalised_centres")
 
 
-@pytest.mark.parametrize("method", SPLAT_METHODS)
+@pytest.mark.parametrize("kind", SPLATS)
 @given(samples=any_samples)
-def test_the_vectorized_splat_matches_the_one_sample_loop(method, samples):
-    pixels, weights = splat(samples, method)
-    loop_pixels, loop_weights = splat_loop(samples, method)
+def test_the_vectorized_splat_matches_the_one_sample_loop(kind, samples):
+    pixels, weights = splat(samples, kind)
+    loop_pixels, loop_weights = splat(samples, kind, method="loop")
     np.testing.assert_array_equal(pixels, loop_pixels)
     np.testing.assert_allclose(weights, loop_weights, rtol=0, atol=1e-12)
 
 
-@pytest.mark.parametrize("method", SPLAT_METHODS)
+@pytest.mark.parametrize("method", SPLATS)
 @given(samples=any_samples)
 def test_weights_lie_in_zero_one(method, samples):
     _, weights = splat(samples, method)
@@ -148,7 +148,7 @@ def test_arc_length_weights_add_up_to_the_polyline_length():
 
 
 def test_wang_segments_keep_the_chords_within_tolerance():
-    control = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]])
+    control = SEED_000_CUBIC
     count = wang_segments(control, 0.05)
     chords = de_casteljau(control, np.linspace(0, 1, count + 1))
     # Each chord's midpoint parameter is where a chord strays most, roughly;
@@ -183,13 +183,13 @@ def _accumulate_by_loop(method, step):
     return image
 
 
-@pytest.mark.parametrize("method", SPLAT_METHODS)
+@pytest.mark.parametrize("method", SPLATS)
 def test_render_at_every_edge_equals_the_loop_that_skips_off_canvas_pixels(method):
     expected = _accumulate_by_loop(method, 0.005)
     np.testing.assert_allclose(render(EDGE_CURVE, SHAPE, method, step=0.005), expected, atol=1e-12)
 
 
-@pytest.mark.parametrize("method", METHODS)
+@pytest.mark.parametrize("method", RENDER_METHODS)
 @pytest.mark.parametrize("offset", [0.25, 0.75, 1.5])
 def test_nothing_wraps_around_to_the_far_side(method, offset):
     # Lines just outside each edge, running past both ends of it: a negative
@@ -213,10 +213,10 @@ def test_truncation_folds_the_strip_left_of_the_canvas_onto_column_0():
     assert render([[-1.5, 2.5], [-1.5, 9.5]], SHAPE, "nearest_truncate").sum() == 0.0
 
 
-@pytest.mark.parametrize("method", [*SPLAT_METHODS, "stroke_linear", "stroke_area"])
+@pytest.mark.parametrize("method", [*SPLATS, "stroke_linear", "stroke_area"])
 def test_splats_with_a_shape_keep_only_pixels_on_the_canvas(method):
     samples = stroke_polyline(EDGE_CURVE)
-    if method in SPLAT_METHODS:
+    if method in SPLATS:
         pixels, weights = splat(samples, method, shape=SHAPE)
         all_pixels, all_weights = splat(samples, method)
     else:
@@ -234,7 +234,7 @@ def test_splats_with_a_shape_keep_only_pixels_on_the_canvas(method):
     np.testing.assert_allclose(weights, all_weights[on_canvas])
 
 
-@pytest.mark.parametrize("method", STROKE_METHODS)
+@pytest.mark.parametrize("method", STROKES)
 def test_stroke_methods_match_the_reference_at_the_edges(method):
     exact = reference(EDGE_CURVE, SHAPE, 1.0, k=32)
     image = render(EDGE_CURVE, SHAPE, method)
@@ -245,7 +245,7 @@ def test_stroke_methods_match_the_reference_at_the_edges(method):
 
 # --- stroke coverage against the exact reference -------------------------------
 
-SEED_CURVE = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]) / 5
+SEED_CURVE = SEED_000_CUBIC / 5
 
 
 @pytest.mark.parametrize("width", [1.0, 2.5])
@@ -292,7 +292,7 @@ def test_arc_length_weighting_puts_one_unit_of_ink_per_unit_of_length():
 
 
 def test_arc_length_default_step_leaves_samples_half_a_pixel_apart():
-    control = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]])
+    control = SEED_000_CUBIC
     samples = curve_samples(control, arc_length_step(control))
     assert np.hypot(*np.diff(samples, axis=0).T).max() <= 0.5
     # Close enough that a finer step changes little.
@@ -329,14 +329,16 @@ def test_render_rejects_bad_input_by_name(kwargs, error, words):
         render(**arguments)
 
 
-@pytest.mark.parametrize("method", SPLAT_METHODS)
-def test_splats_reject_bad_samples_by_name(method):
+@pytest.mark.parametrize("kind", SPLATS)
+def test_splats_reject_bad_samples_by_name(kind):
     with pytest.raises(ValueError, match=r"samples must have shape \(M, 2\)"):
-        splat(np.zeros((3, 3)), method)
+        splat(np.zeros((3, 3)), kind)
     with pytest.raises(ValueError, match="samples must be finite"):
-        splat([[0.0, np.nan]], method)
-    with pytest.raises(ValueError, match="method must be one of"):
-        splat([[0.0, 0.0]], method + "_typo")
+        splat([[0.0, np.nan]], kind)
+    with pytest.raises(ValueError, match="kind must be one of"):
+        splat([[0.0, 0.0]], kind + "_typo")
+    with pytest.raises(ValueError, match="method must be one of 'vectorized', 'loop'"):
+        splat([[0.0, 0.0]], kind, method="fast")
 
 
 def test_stroke_functions_reject_bad_polylines_and_widths():
@@ -348,6 +350,6 @@ def test_stroke_functions_reject_bad_polylines_and_widths():
 
 def test_render_does_not_modify_its_input():
     points = EDGE_CURVE.copy()
-    for method in METHODS:
+    for method in RENDER_METHODS:
         render(points, SHAPE, method)
     np.testing.assert_array_equal(points, EDGE_CURVE)

@@ -3,13 +3,14 @@
 import numpy as np
 import pytest
 
-from course.aa_metrics import intensity_along
 from course.antialias import render
 from course.canvas import crop
 from course.coverage import reference
+from course.curve_quality import intensity_along
+from course.images import SEED_000_CUBIC
 from course.widgets.antialiasing import CurveWalk, StepApp, ZoomApp, zoom_figure
 
-CURVE = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]) / 5
+CURVE = SEED_000_CUBIC / 5
 SHAPE = (140, 140)
 
 
@@ -29,7 +30,7 @@ def exact():
 def test_zoom_app_moves_its_window_along_the_curve(images, exact):
     app = ZoomApp(images, CURVE, exact, picks=("nearest_round", "bilinear_corners", "stroke_area"))
     before = app.refresh()
-    centre = app.center()
+    centre = app.centre()
     # The window shows exactly the crop around the curve point.
     window, extent = crop(images["nearest_round"], centre, 16)
     np.testing.assert_array_equal(app.panels[0].picture.get_array(), window)
@@ -37,7 +38,7 @@ def test_zoom_app_moves_its_window_along_the_curve(images, exact):
     app.controls["position"].value = 0.5
     assert app.renders == 2 and app.view.image.value != before
     middle = CurveWalk(CURVE).at(0.5)
-    np.testing.assert_allclose(app.center(), middle)
+    np.testing.assert_allclose(app.centre(), middle)
     np.testing.assert_allclose(middle, [70.0, 70.0], atol=1e-6)  # the S's centre
     np.testing.assert_array_equal(app.windows[2], crop(images["stroke_area"], middle, 16)[0])
     np.testing.assert_array_equal(app.windows[3], crop(exact, middle, 16)[0])
@@ -47,7 +48,7 @@ def test_zoom_app_picks_variants_and_sizes(images, exact):
     app = ZoomApp(images, CURVE, exact, picks=("nearest_round", "bilinear_corners", "stroke_area"))
     app.refresh()
     app.controls["middle"].value = "bilinear_centres"
-    window, _ = crop(images["bilinear_centres"], app.center(), 16)
+    window, _ = crop(images["bilinear_centres"], app.centre(), 16)
     np.testing.assert_array_equal(app.windows[1], window)
     assert "bilinear_centres" in app.panels[1].title.get_text()
     app.controls["size"].value = 30

@@ -12,7 +12,7 @@ class LineApp(SliderApp):
     """A minimal app: a horizontal line at height y."""
 
     def __init__(self) -> None:
-        super().__init__({"y": widgets.FloatSlider(value=0.5, min=0, max=1)}, 200, 100)
+        super().__init__({"y": widgets.FloatSlider(value=0.5, min=0, max=1)}, shape=(100, 200))
         axes = self.figure.add_axes((0, 0, 1, 1))
         axes.set_xlim(0, 1)
         axes.set_ylim(0, 1)

@@ -17,9 +17,10 @@ from course.bezier_handouts import (
     trace_recursive,
 )
 from course.canvas import blank, paint, yellow_fraction
+from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 
-SEED_000 = np.array([[10.0, 10], [690, 10], [10, 690], [690, 690]])
+SEED_000 = SEED_000_CUBIC
 
 
 def test_recursive_comb_values_and_call_counts():
@@ -63,9 +64,9 @@ def test_recursion_holds_quadratically_many_points_iteration_linearly(count):
 
 
 def games101_picture(green_points, accumulate="exact"):
-    image = blank(700, 700, (0, 0, 0))
+    image = blank((700, 700), (0, 0, 0))
     t = uniform_parameters(0.001, accumulate)
-    red = nearest_pixels(bezier_bernstein(SEED_000, t, method="naive"), shape=(700, 700))
+    red = nearest_pixels(bezier_bernstein(SEED_000, t, method="loop"), shape=(700, 700))
     paint(image, red, (1, 0, 0))
     paint(image, nearest_pixels(green_points(t), shape=(700, 700)), (0, 1, 0))
     return image

@@ -7,7 +7,7 @@ from course.canvas import blank, crop, inside, paint, yellow_fraction
 
 
 def test_paint_drops_pixels_off_the_canvas_instead_of_wrapping():
-    image = blank(4, 3)
+    image = blank((3, 4))
     pixels = np.array([[-1, 0], [0, -1], [4, 0], [0, 3], [-4, -3], [1, 1]])
     paint(image, pixels, 1.0)
     expected = np.zeros((3, 4))
@@ -16,29 +16,29 @@ def test_paint_drops_pixels_off_the_canvas_instead_of_wrapping():
 
 
 def test_add_saturates_and_counts_repeats():
-    image = blank(2, 1)
+    image = blank((1, 2))
     paint(image, np.array([[0, 0]] * 3 + [[1, 0]] * 5), 1.0, weight=0.25)
     np.testing.assert_allclose(image, [[0.75, 1.0]])
 
 
 def test_max_keeps_the_brighter_value():
-    image = blank(2, 1, 0.5)
+    image = blank((1, 2), 0.5)
     paint(image, np.array([[0, 0], [1, 0]]), 1.0, weight=np.array([0.25, 0.75]), mode="max")
     np.testing.assert_allclose(image, [[0.5, 0.75]])
 
 
 def test_over_blends_each_repeat_in_turn():
-    image = blank(1, 1, 0.0)
+    image = blank((1, 1), 0.0)
     paint(image, np.array([[0, 0], [0, 0]]), 1.0, weight=0.5, mode="over")
     # 0 -> 0.5 -> 0.75, as two successive blends give.
     np.testing.assert_allclose(image, [[0.75]])
-    untouched = blank(2, 1, 0.3)
+    untouched = blank((1, 2), 0.3)
     paint(untouched, np.array([[0, 0]]), 1.0, weight=0.5, mode="over")
     assert untouched[0, 1] == 0.3
 
 
 def test_rgb_paint_writes_the_color():
-    image = blank(2, 2, (0, 0, 0))
+    image = blank((2, 2), (0, 0, 0))
     paint(image, np.array([[1, 0]]), (1, 0, 0))
     paint(image, np.array([[1, 0], [0, 1]]), (0, 1, 0))
     np.testing.assert_array_equal(image[0, 1], [1, 1, 0])
@@ -61,7 +61,7 @@ def test_rgb_paint_writes_the_color():
 def test_paint_rejects_bad_input_by_name(kwargs, error, words):
     arguments = {"pixels": np.array([[0, 0]]), "color": 1.0} | kwargs
     with pytest.raises(error, match=words.replace("(", r"\(").replace(")", r"\)")):
-        paint(blank(2, 2), **arguments)
+        paint(blank((2, 2)), **arguments)
 
 
 def test_paint_needs_a_float_image():

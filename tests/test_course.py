@@ -1,4 +1,4 @@
-"""The package as a whole: its layers import one way, downwards, and without cycles.
+"""The package as a whole: layers, imports and one vocabulary for the handout's forms.
 
 ``design.md``'s three layers: the algorithms (``course/*.py``), the apps and
 checkers (``course/widgets``, ``course/check``), and the classroom
@@ -10,11 +10,18 @@ functions alike, so a deferred import cannot hide an upward dependency.
 from __future__ import annotations
 
 import ast
+import importlib
+import inspect
+import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import course
+from course import bezier, dither, filters, raster, resample, splats, triangles
+from course import poisson_solvers as solvers
+from course.classroom.source import source_of
 
 PACKAGE = Path(course.__file__).resolve().parent
 LAYERS = {"algorithms": 0, "apps and checkers": 1, "classroom": 2}
@@ -123,3 +130,210 @@ def test_the_checks_can_fail():
     assert cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
     assert "course.widgets.base" in GRAPH["course.widgets.lines_and_triangles"]
     assert "course.dither" in GRAPH["course.lessons.l06_dithering"]  # "from course import dither"
+
+
+# --- one vocabulary: the handout's form is method="loop" ----------------------
+
+ALGORITHMS = sorted(m for m in MODULES if layer(m) == "algorithms" and m != "course")
+
+
+def methods_tuples() -> dict[str, tuple[str, ...]]:
+    """Every ``<FUNCTION>_METHODS`` tuple of the algorithm modules that has a "loop" form."""
+    found = {}
+    for module_name in ALGORITHMS:
+        module = importlib.import_module(module_name)
+        for name, value in vars(module).items():
+            if name.endswith("_METHODS") and isinstance(value, tuple) and "loop" in value:
+                function = getattr(module, name[: -len("_METHODS")].lower(), None)
+                if getattr(function, "__module__", None) == module_name:  # not a re-export
+                    found[f"{module_name}.{function.__name__}"] = value
+    return found
+
+
+FORMS = methods_tuples()
+
+
+def dyadic(shape, seed=0, levels=256):
+    """Values k / levels: sums and averages of them are exact in floating point."""
+    return np.random.default_rng(seed).integers(0, levels + 1, shape) / levels
+
+
+def run_sweeps(sweeps, count):
+    return np.stack([next(sweeps).copy() for _ in range(count)])
+
+
+def _poisson_arrays():
+    values = dyadic((2, 7, 9), seed=4)
+    region = np.zeros((7, 9), bool)
+    region[1:-1, 1:-1] = True
+    region[3, 2] = False
+    return values, region, dyadic((2, 7, 9), seed=5) / 16
+
+
+SPLAT_SAMPLES = np.random.default_rng(3).uniform(-5, 40, size=(300, 2))
+# Each function with a loop form, called on the same inputs with a given method;
+# the tolerance is 0 where the forms add the same numbers in the same order.
+FORM_CASES = {
+    "course.bezier.bezier_bernstein": (
+        lambda method: bezier.bezier_bernstein(dyadic((8, 2)) * 700, np.arange(17) / 16, method),
+        1e-12,
+    ),
+    "course.raster.line": (
+        lambda method: np.concatenate([raster.line(p0, p1, method=method) for p0, p1 in LINE_ENDS]),
+        0,
+    ),
+    "course.triangles.triangle": (
+        lambda method: np.concatenate(
+            [
+                triangles.triangle(*vertices, rule=rule, method=method)
+                for vertices in TRIANGLES
+                for rule in triangles.EDGE_RULES
+            ]
+        ),
+        0,
+    ),
+    "course.resample.supersample": (
+        lambda method: resample.supersample(dyadic((20, 30, 3)), (7, 9), 3, method),
+        1e-12,
+    ),
+    "course.filters.blur": (lambda method: filters.blur(dyadic((9, 11, 3)), method), 0),
+    "course.filters.sobel": (
+        lambda method: np.stack(
+            [filters.sobel(dyadic((9, 11)), border, method) for border in BORDERS_OF_SOBEL]
+        ),
+        0,
+    ),
+    "course.dither.ordered": (lambda method: dither.ordered(dyadic((9, 11), 1, 9), method), 0),
+    "course.error_diffusion.error_diffusion": (
+        lambda method: dither.error_diffusion_values(dyadic((12, 17)), method=method),
+        0,
+    ),
+    "course.splats.splat": (
+        lambda method: [splats.splat(SPLAT_SAMPLES, kind, method=method) for kind in splats.SPLATS],
+        1e-12,
+    ),
+    "course.poisson_solvers.jacobi_sweeps": (
+        lambda method: run_sweeps(solvers.jacobi_sweeps(*_poisson_arrays(), method=method), 6),
+        0,
+    ),
+    "course.poisson_solvers.sor_sweeps": (
+        lambda method: run_sweeps(
+            solvers.sor_sweeps(*_poisson_arrays(), omega=1.5, method=method), 6
+        ),
+        1e-14,
+    ),
+}
+LINE_ENDS = [((3, 6), (27, 17)), ((27, 17), (3, 6)), ((5, 5), (5, -4)), ((0, 0), (-7, 3))]
+TRIANGLES = [((0.5, 0.25), (9.75, 3.5), (2.25, 8.0)), ((0, 0), (4, 4), (0, 4))]
+BORDERS_OF_SOBEL = ("replicate", "reflect", "zero")
+
+
+def test_every_function_with_a_loop_form_is_proven_equal_to_its_other_forms():
+    assert sorted(FORMS) == sorted(FORM_CASES)
+    assert len(FORMS) >= 10
+
+
+@pytest.mark.parametrize("function", sorted(FORM_CASES))
+def test_the_loop_form_equals_the_default_on_the_same_inputs(function):
+    call, tolerance = FORM_CASES[function]
+    default = call(inspect.signature(resolve(function)).parameters["method"].default)
+    for method in FORMS[function]:
+        for got, expected in zip(as_list(call(method)), as_list(default), strict=True):
+            if tolerance:
+                np.testing.assert_allclose(got, expected, rtol=tolerance, atol=tolerance)
+            else:
+                np.testing.assert_array_equal(got, expected)
+
+
+def resolve(dotted: str):
+    module, name = dotted.rsplit(".", 1)
+    return getattr(importlib.import_module(module), name)
+
+
+def as_list(result):
+    """A result as a flat list of arrays (splats give (pixels, weights) per kind)."""
+    if isinstance(result, list):
+        return [array for pair in result for array in pair]
+    return [result]
+
+
+@pytest.mark.parametrize("function", sorted(FORMS))
+def test_each_form_lives_in_its_module_under_the_convention_name(function):
+    """``f(..., method=m)`` runs ``_f_m``: where ``source_of`` and a newcomer find a form."""
+    module_name, name = function.rsplit(".", 1)
+    module = importlib.import_module(module_name)
+    for method in FORMS[function]:
+        assert callable(getattr(module, f"_{name}_{method}", None)), f"_{name}_{method}"
+        assert source_of(resolve(function), method).startswith(f"def _{name}_{method}(")
+    # The handout's form is "loop"; the others are named for their technique.
+    assert not {"fast", "naive", "scanline", "vectorised"} & set(FORMS[function])
+
+
+# --- public names only across modules, and in the notebooks ---------------------
+
+NOTEBOOKS = sorted((PACKAGE.parent / "notebooks").glob("*.ipynb"))
+
+
+def private_imports(tree: ast.AST) -> list[str]:
+    """Names imported with a leading underscore (``from x import _y``), and dunder reaches."""
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            found += [alias.name for alias in node.names if alias.name.startswith("_")]
+        if isinstance(node, ast.Attribute) and node.attr == "__globals__":
+            found.append("__globals__")
+    return found
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_no_module_imports_another_module_s_private_names(module):
+    tree = ast.parse(MODULES[module].read_text(encoding="utf-8"))
+    assert not private_imports(tree), f"{module} imports {private_imports(tree)}"
+
+
+def notebook_code(path: Path) -> ast.AST:
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    lines = [
+        line
+        for cell in cells
+        if cell["cell_type"] == "code"
+        for line in "".join(cell["source"]).splitlines()
+        if not line.lstrip().startswith(("%", "!"))  # IPython magics
+    ]
+    return ast.parse("\n".join(lines))
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda path: path.stem)
+def test_notebooks_use_public_names_only(path):
+    tree = notebook_code(path)
+    private = private_imports(tree)
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            modules = [alias.name for alias in node.names] if isinstance(node, ast.Import) else []
+            modules.append(getattr(node, "module", None) or "")
+            private += [name for name in modules if any(p.startswith("_") for p in name.split("."))]
+        if isinstance(node, ast.Attribute) and node.attr.startswith("_"):
+            if not (node.attr.startswith("__") and node.attr.endswith("__")):
+                private.append(node.attr)
+    assert not private, f"{path.name} reaches private names: {private}"
+
+
+def test_the_private_name_checks_can_fail():
+    tree = ast.parse("from course.bezier import _pascal_row\nf.__globals__['x']")
+    assert private_imports(tree) == ["_pascal_row", "__globals__"]
+
+
+def test_test_files_are_named_for_what_they_test():
+    """``test_<module>.py``, ``test_<topic>_check.py``, ``test_<topic>_widgets.py``."""
+    stems = {name.rsplit(".", 1)[-1] for name in MODULES} | {"course"}
+    checks = {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.check.")}
+    apps = {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.widgets.")}
+    named = [path.stem[len("test_") :] for path in Path(__file__).parent.glob("test_*.py")]
+    stray = [
+        name
+        for name in named
+        if name not in stems
+        and not (name.endswith("_check") and name[: -len("_check")] in checks)
+        and not (name.endswith("_widgets") and name[: -len("_widgets")] in apps)
+    ]
+    assert not stray, f"tests named for no module: {stray}"

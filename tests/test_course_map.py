@@ -6,7 +6,7 @@ from pathlib import Path
 from conftest import write_notebook
 
 from course.classroom.cli import main
-from course.classroom.course_map import course_map
+from course.classroom.course_map import README_MARKERS, course_map, update_readme
 from course.classroom.notebooks import notebooks
 from course.classroom.registry import lessons
 
@@ -31,16 +31,36 @@ def test_one_row_per_lesson_with_its_registry_entry_or_its_summary(tmp_path):
 
 
 def test_the_readme_lesson_table_is_the_course_map(capsys):
-    """The README's table is generated: ``python -m course map --link-prefix notebooks/``."""
+    """The README's table is generated: ``make notebooks`` runs ``python -m course map``."""
     expected = course_map(link_prefix="notebooks/")
     assert main(["map", "--link-prefix", "notebooks/"]) == 0
     assert capsys.readouterr().out == expected + "\n"
-    section = README.read_text(encoding="utf-8").split("## Lessons\n", 1)[1]
-    table = "\n".join(re.findall(r"^\|.*\|$", section.split("\n## ")[0], re.MULTILINE))
+    start, end = README_MARKERS
+    table = README.read_text(encoding="utf-8").split(start)[1].split(end)[0].strip()
     assert table == expected, (
-        "README.md's lesson table is out of date; replace it with the output of "
-        "`python -m course map --link-prefix notebooks/`"
+        "README.md's lesson table is out of date: run `make notebooks`, or "
+        "`python -m course map --readme README.md`"
     )
     links = re.findall(r"\]\((notebooks/[^)]+)\)", table)
     assert links == [f"notebooks/{book.path.name}" for book in notebooks()]
     assert all((README.parent / link).is_file() for link in links)
+
+
+def test_update_readme_rewrites_only_between_its_markers(tmp_path, capsys):
+    books = tmp_path / "lessons"
+    books.mkdir()
+    write_notebook(books / "01_de_casteljau.ipynb", "# Lesson 01 · de Casteljau")
+    readme = tmp_path / "README.md"
+    start, end = README_MARKERS
+    readme.write_text(f"# Course\n\n{start}\nold table\n{end}\n\nMore.\n")
+    assert main(["map", "--readme", str(readme), "--notebooks", str(books)]) == 0
+    assert "lesson table rewritten" in capsys.readouterr().out
+    text = readme.read_text()
+    assert text.startswith(f"# Course\n\n{start}\n| lesson |") and text.endswith(
+        f"{end}\n\nMore.\n"
+    )
+    assert "](lessons/01_de_casteljau.ipynb)" in text and "old table" not in text
+    assert update_readme(readme, books) is False
+    readme.write_text("no markers\n")
+    assert main(["map", "--readme", str(readme), "--notebooks", str(books)]) == 2
+    assert "expected one line" in capsys.readouterr().err

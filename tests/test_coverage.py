@@ -19,8 +19,9 @@ from course.coverage import (
     slab_coverage,
     subdivide,
 )
+from course.images import SEED_000_CUBIC
 
-SEED_CURVE = np.array([[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]) / 5
+SEED_CURVE = SEED_000_CUBIC / 5
 
 
 def band_by_brute_force(across, normal, width, k=400):

@@ -85,7 +85,7 @@ def test_ordered_loop_and_fast_forms_are_equal(gray):
 
 
 def test_uniform_random_is_the_specified_formula_and_reproducible():
-    gray = ramp(40, 8)
+    gray = ramp((8, 40))
     expected = gray + (np.random.default_rng(7).random(gray.shape) - 0.5) > 0.5
     assert np.array_equal(dither.uniform_random(gray, np.random.default_rng(7)), expected)
     assert np.array_equal(dither.uniform_random(gray), dither.uniform_random(gray))
@@ -152,7 +152,7 @@ def test_mean_difference_measures_the_ordered_bias():
 
 
 def test_blurred_error_ranks_error_diffusion_far_above_threshold_on_a_ramp():
-    gray = ramp(128, 32)
+    gray = ramp((32, 128))
     errors = {
         "threshold": dither.blurred_error(gray, dither.threshold(gray)),
         "error_diffusion": dither.blurred_error(gray, dither.error_diffusion(gray)),

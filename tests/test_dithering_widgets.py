@@ -15,7 +15,7 @@ from course.widgets.dithering import (
 
 
 def test_comparison_app_crops_follow_the_sliders_and_show_each_method():
-    gray = ramp(96, 40)
+    gray = ramp((40, 96))
     app = DitherComparisonApp(gray, size=8)
     before = app.refresh()
     app.controls["x"].value = 20

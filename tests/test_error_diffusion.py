@@ -38,10 +38,10 @@ def test_the_three_forms_of_error_diffusion_are_equal_bit_for_bit(gray, kernel):
 @given(float_grays, st.sampled_from(sorted(dither.KERNELS)), st.integers(1, 4))
 def test_wavefront_in_bands_gives_the_same_values(gray, kernel, band):
     # Tall images run in bands; the bands hand on the errors in order.
-    from course.error_diffusion import _diffuse_wavefront
+    from course.error_diffusion import _error_diffusion_wavefront
 
     values = dither.error_diffusion_values(gray, kernel, method="loop")
-    banded = _diffuse_wavefront(gray, dither.diffusion_offsets(kernel), band=band)[1]
+    banded = _error_diffusion_wavefront(gray, dither.diffusion_offsets(kernel), band=band)[1]
     assert np.array_equal(banded, values)
 
 
@@ -72,14 +72,14 @@ def test_floyd_steinberg_values_worked_by_hand():
     # (x 1, y 1): 7/8 - 3/8 * 1/16 + 11/128 * 5/16 + 305/2048 * 7/16 = 30919/32768 -> 1.
     gray = np.array([[5 / 8, 1 / 4], [1 / 4, 7 / 8]])
     expected = np.array([[5 / 8, 11 / 128], [305 / 2048, 30919 / 32768]])
-    for method in dither.METHODS:
+    for method in dither.ERROR_DIFFUSION_METHODS:
         assert np.array_equal(dither.error_diffusion_values(gray, method=method), expected)
         assert np.array_equal(dither.error_diffusion(gray, method=method), [[1, 0], [0, 1]])
 
 
 @pytest.mark.parametrize("kernel", ["floyd-steinberg", "jarvis-judice-ninke", "stucki"])
 def test_error_diffusion_keeps_the_mean_of_a_gradient_within_one_percent(kernel):
-    gray = ramp(256, 64)
+    gray = ramp((64, 256))
     result = dither.error_diffusion(gray, kernel)
     assert abs(result.mean() / gray.mean() - 1) < 0.01
     # And column by column the tone follows the ramp (8-column bands).

@@ -210,8 +210,7 @@ def test_bad_kernels_and_options_are_rejected_naming_them():
         filters.convolve(image, filters.BOX, "wrap")
     with pytest.raises(ValueError, match="border must be one of 'replicate', 'reflect', 'zero'"):
         filters.sobel(image, "handout")
-    with pytest.raises(ValueError, match="method must be one of 'fast', 'loop'"):
+    with pytest.raises(ValueError, match="method must be one of 'shifted_sums', 'loop'"):
         filters.blur(image, method="scipy")
-
-
-# --- exercise checkers -------------------------------------------------------
+    with pytest.raises(ValueError, match="method must be one of 'separable', 'loop'"):
+        filters.sobel(image, method="fast")

@@ -19,9 +19,9 @@ def test_line_app_draws_both_lines_where_the_sliders_put_them():
     before = app.view.image.value
     set_values(app, x0=30, y0=2, x1=4, y1=25)
     assert app.view.image.value != before
-    expected = paint(blank(32, 32), line((30, 2), (4, 25)), 1.0)
+    expected = paint(blank((32, 32)), line((30, 2), (4, 25)), 1.0)
     np.testing.assert_array_equal(app.panels["bresenham"].get_array(), expected)
-    staircase = paint(blank(32, 32), line_4connected((30, 2), (4, 25)), 1.0)
+    staircase = paint(blank((32, 32)), line_4connected((30, 2), (4, 25)), 1.0)
     np.testing.assert_array_equal(app.panels["report"].get_array(), staircase)
     assert app.panels["bresenham"].axes.get_title().startswith("Bresenham: 27 px")
     assert app.panels["report"].axes.get_title().startswith("report's loop: 50 px")
@@ -83,7 +83,7 @@ def test_triangle_app_moves_a_vertex_and_shows_the_coverage_at_the_rate():
     assert app.view.image.value != before
     a, b, c, d = app.vertices()
     assert tuple(b) == (15.25, 0.5)
-    expected = blank(16, 16)
+    expected = blank((16, 16))
     for triple in ((a, b, c), (a, c, d)):
         pixels, weights = triangle_coverage(*triple, (16, 16), 7)
         paint(expected, pixels, 1.0, weight=weights)

@@ -12,6 +12,7 @@ from test_poisson import assert_solves_poisson_with_background_boundary, scene
 from course import images, poisson
 from course import poisson_capacitance as capacitance
 from course import poisson_solvers as solvers
+from course.sine_transform import largest_prime_factor
 
 
 def box_matrix(height, width):
@@ -67,10 +68,10 @@ def test_charge_pixels_are_the_outside_neighbours_of_the_region():
 
 def test_the_box_has_fast_sizes_and_holds_the_region():
     for height, width in [(3, 3), (160, 190), (198, 198), (1000, 7)]:
-        box = capacitance.box_shape(height, width)
+        box = capacitance.box_shape((height, width))
         assert box[0] >= height and box[1] >= width
         # n + 1 has no prime factor above 11, so the sine transforms are FFTs.
-        assert all(solvers._largest_prime_factor(side + 1) <= 11 for side in box)
+        assert all(largest_prime_factor(side + 1) <= 11 for side in box)
 
 
 # --- the method against the sparse factorisation, on many shapes ---------------------

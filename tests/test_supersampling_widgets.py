@@ -4,8 +4,9 @@ import numpy as np
 import pytest
 
 from course.images import zone_plate, zone_plate_box
+from course.metrics import rmse
 from course.resample import supersample, supersample_without_offset
-from course.widgets.supersampling import SupersampleApp, rms_error
+from course.widgets.supersampling import SupersampleApp
 
 
 def set_values(app, **values):
@@ -26,14 +27,14 @@ def test_supersample_app_shows_the_result_and_its_error_at_each_rate(small_super
     set_values(app, rate=4)
     result = supersample(plate, (64, 64), 4)
     np.testing.assert_allclose(app.result.get_array(), result)
-    assert f"RMS {rms_error(result, exact):.4f}" in app.difference_axes.get_title()
+    assert f"RMS {rmse(result, exact):.4f}" in app.difference_axes.get_title()
     curve = app.curves["centred"].get_ydata()
-    assert curve[3] == pytest.approx(rms_error(result, exact))
+    assert curve[3] == pytest.approx(rmse(result, exact))
     assert curve[0] > 0.25 > 0.01 > curve[3]
     set_values(app, version="report's")
     shifted = supersample_without_offset(plate, (64, 64), 4)
     np.testing.assert_allclose(app.result.get_array(), shifted)
-    assert tuple(app.current.get_ydata()) == (pytest.approx(rms_error(shifted, exact)),)
+    assert tuple(app.current.get_ydata()) == (pytest.approx(rmse(shifted, exact)),)
 
 
 def test_supersample_app_switches_to_the_photograph(small_supersample_app):

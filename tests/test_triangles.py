@@ -86,7 +86,7 @@ def test_shape_keeps_the_canvas_part_without_wrapping(method, p0, p1, p2):
 def test_both_forms_agree_on_arbitrary_floats(coordinates, rule):
     p0, p1, p2 = np.reshape(coordinates, (3, 2))
     np.testing.assert_array_equal(
-        triangle(p0, p1, p2, rule=rule), triangle(p0, p1, p2, rule=rule, method="scanline")
+        triangle(p0, p1, p2, rule=rule), triangle(p0, p1, p2, rule=rule, method="loop")
     )
 
 

@@ -137,7 +137,9 @@ _SCROLLER = """() => {
 }"""
 
 
-def tall_screenshot(page: Page, path: Path, width: int = 1280, limit: int = 8192) -> list[Path]:
+def tall_screenshot(
+    page: Page, path: Path, viewport_width: int = 1280, limit: int = 8192
+) -> list[Path]:
     """Screenshots of the whole notebook, from its top, even though it scrolls inside a panel.
 
     JupyterLab and Voila scroll the notebook inside an element, so a "full
@@ -147,7 +149,9 @@ def tall_screenshot(page: Page, path: Path, width: int = 1280, limit: int = 8192
     scrolling the panel between them. Returns the files written.
     """
     total, visible = page.evaluate(_SCROLLER)
-    page.set_viewport_size({"width": width, "height": min(total - visible + 900 + 50, limit)})
+    page.set_viewport_size(
+        {"width": viewport_width, "height": min(total - visible + 900 + 50, limit)}
+    )
     page.wait_for_timeout(300)
     total, visible = page.evaluate(_SCROLLER)
     paths, offset = [], 0
@@ -160,7 +164,7 @@ def tall_screenshot(page: Page, path: Path, width: int = 1280, limit: int = 8192
         if offset + visible >= total or visible <= 0:
             break
         offset = min(offset + visible, total - visible)
-    page.set_viewport_size({"width": width, "height": 900})
+    page.set_viewport_size({"width": viewport_width, "height": 900})
     return paths
 
 

@@ -18,7 +18,7 @@ def _cases() -> list[dict[str, Any]]:
     rng = np.random.default_rng(6)
     return [
         {"gray": np.full((4, 6), 0.5)},
-        {"gray": ramp(16, 4)},
+        {"gray": ramp((4, 16))},
         {"gray": rng.random((1, 10))},
         {"gray": np.full((8, 1), 0.3)},
         {"gray": rng.random((9, 13))},

@@ -11,7 +11,7 @@ import sys
 from pathlib import Path
 
 from course.classroom import edition, gallery
-from course.classroom.course_map import course_map
+from course.classroom.course_map import course_map, update_readme
 from course.classroom.notebooks import NOTEBOOKS
 
 
@@ -44,10 +44,19 @@ def main(argv: list[str] | None = None) -> int:
     map_command.add_argument(
         "--link-prefix",
         default="",
-        help="what goes before each notebook's file name in its link ('notebooks/' for the README)",
+        help="what goes before each notebook's file name in its link",
+    )
+    map_command.add_argument(
+        "--readme",
+        type=Path,
+        help="rewrite the lesson table between this README's markers instead of printing it",
     )
     args = parser.parse_args(argv)
     try:
+        if args.command == "map" and args.readme:
+            changed = update_readme(args.readme, args.notebooks)
+            print(f"{args.readme}: lesson table {'rewritten' if changed else 'unchanged'}")
+            return 0
         if args.command == "map":
             print(course_map(args.notebooks, args.link_prefix))
             return 0
@@ -56,7 +65,7 @@ def main(argv: list[str] | None = None) -> int:
             written = gallery.write_gallery(args.out, args.force, pictures)
         else:
             written = edition.write_student_edition(args.out, args.notebooks, args.force)
-    except (FileExistsError, NotADirectoryError, ValueError) as error:
+    except (FileExistsError, FileNotFoundError, NotADirectoryError, ValueError) as error:
         print(f"python -m course {args.command}: {error}", file=sys.stderr)
         return 2
     print(f"wrote {len(written)} files to {args.out}", file=sys.stderr)

@@ -6,7 +6,6 @@ import functools
 
 import numpy as np
 
-from course.aa_metrics import variants
 from course.bezier import de_casteljau
 from course.canvas import crop
 from course.classroom.pictures import (
@@ -20,6 +19,7 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.coverage import curve_polyline, reference
+from course.curve_quality import variants
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.widgets.antialiasing import CurveWalk, StepApp, ZoomApp, zoom_figure
 from course.widgets.base import SliderApp
@@ -62,7 +62,7 @@ def zoom_landmarks(app: SliderApp) -> list[Landmark]:
 
     The window's centre is the point ``position`` of the way along the curve
     (by arc length); each panel must show ``crop(rendering, centre, size)``,
-    the rendering as ``aa_metrics.variants`` and ``coverage.reference`` make it.
+    the rendering as ``curve_quality.variants`` and ``coverage.reference`` make it.
     """
     renderings, exact = seed_000_renderings()
     position, size = float(app.value("position")), int(app.value("size"))
@@ -90,7 +90,7 @@ def zoom_every_variant() -> bytes:
     renderings, exact = seed_000_renderings()
     panels = {name: renderings[name] for name in ZOOMED_VARIANTS} | {"exact reference": exact}
     centre = de_casteljau(SEED_000_CUBIC, 0.08)
-    figure = zoom_figure(panels, SEED_000_CUBIC, center=centre, size=14, columns=4)
+    figure = zoom_figure(panels, SEED_000_CUBIC, centre=centre, size=14, columns=4)
     return figure_picture(figure)
 
 

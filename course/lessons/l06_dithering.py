@@ -73,13 +73,15 @@ def gray_level_landmarks(app: SliderApp) -> list[Landmark]:
 def dithering_table() -> bytes:
     gray = half_size_gray_photograph()
     table = {"original": gray, **dither.all_methods(gray)}
-    return figure_picture(side_by_side(table, center=(150, 80), size=32, width=900, columns=6))
+    return figure_picture(
+        side_by_side(table, centre=(150, 80), size=32, figure_width=900, columns=6)
+    )
 
 
 def dithering_ramp() -> bytes:
-    gradient = images.ramp(256, 32)
+    gradient = images.ramp((32, 256))
     table = {"ramp": gradient, **dither.all_methods(gradient)}
-    return figure_picture(side_by_side(table, center=(64, 16), size=24, columns=6))
+    return figure_picture(side_by_side(table, centre=(64, 16), size=24, columns=6))
 
 
 def void_and_cluster_picture() -> bytes:

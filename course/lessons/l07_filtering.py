@@ -61,7 +61,7 @@ def blur_and_edges() -> bytes:
         "Sobel (gray), clipped": np.clip(filters.sobel(gray), 0, 1),
         "Sobel per channel, clipped": np.clip(filters.sobel(rgb), 0, 1),
     }
-    return figure_picture(side_by_side(pictures, center=(150, 80), size=40, width=1000))
+    return figure_picture(side_by_side(pictures, centre=(150, 80), size=40, figure_width=1000))
 
 
 LESSON = Lesson(

@@ -20,11 +20,13 @@ from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
-from course.aa_metrics import intensity_along, uniformity
-from course.antialias import SPLAT_METHODS, WEIGHTINGS, render
+from course._validate import as_curve
+from course.antialias import SPLATS, WEIGHTINGS, render
 from course.canvas import crop
-from course.coverage import as_curve, curve_polyline
+from course.coverage import curve_polyline
+from course.curve_quality import intensity_along, uniformity
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
+from course.metrics import rmse
 from course.widgets.base import SliderApp
 
 __all__ = ["StepApp", "ZoomApp", "ZoomPanel", "zoom_figure"]
@@ -65,9 +67,9 @@ class ZoomPanel:
         axes.set_xticks([])
         axes.set_yticks([])
 
-    def show(self, image: np.ndarray, center: Any, size: int, title: str) -> np.ndarray:
-        """Show the ``size`` x ``size`` crop of ``image`` around ``center``; return it."""
-        window, extent = crop(image, center, size)
+    def show(self, image: np.ndarray, centre: Any, size: int, title: str) -> np.ndarray:
+        """Show the ``size`` x ``size`` crop of ``image`` around ``centre``; return it."""
+        window, extent = crop(image, centre, size)
         self.picture.set_data(window)
         self.picture.set_extent(extent)
         x0, x1, y1, y0 = extent
@@ -83,13 +85,13 @@ class ZoomPanel:
 def zoom_figure(
     images: Mapping[str, np.ndarray],
     points: Any,
-    center: Any,
+    centre: Any,
     size: int = 16,
     columns: int = 4,
     panel_inches: float = 2.4,
     figure: Figure | None = None,
 ) -> Figure:
-    """A still grid of zoomed crops, one per named image, all around ``center``.
+    """A still grid of zoomed crops, one per named image, all around ``centre``.
 
     Drawn into ``figure`` if given (e.g. ``pyplot.figure()`` in a notebook,
     which then shows it), resized to fit; otherwise into a new Figure.
@@ -109,7 +111,7 @@ def zoom_figure(
         figure.set_size_inches(*inches)
     for index, (name, image) in enumerate(images.items()):
         panel = ZoomPanel(figure.add_subplot(rows, columns, index + 1), curve)
-        panel.show(image, center, size, name)
+        panel.show(image, centre, size, name)
     figure.tight_layout()
     return figure
 
@@ -120,7 +122,7 @@ class ZoomApp(SliderApp):
     Parameters
     ----------
     images : mapping of name to (H, W) image
-        The renderings to pick from (e.g. ``course.aa_metrics.variants``).
+        The renderings to pick from (e.g. ``course.curve_quality.variants``).
     points : array_like (N, 2)
         The curve's control points, drawn on top.
     reference : (H, W) image
@@ -151,29 +153,29 @@ class ZoomApp(SliderApp):
         }
         for slot, name in zip(("left", "middle", "right"), picks, strict=True):
             controls[slot] = widgets.Dropdown(options=names, value=name, description=slot)
-        super().__init__(controls, width=1000, height=300)
+        super().__init__(controls, shape=(300, 1000))
         self.panels = [
             ZoomPanel(self.figure.add_subplot(1, 4, i + 1), self.walk.polyline) for i in range(4)
         ]
         self.figure.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.9, wspace=0.05)
         self.windows: list[np.ndarray] = []
 
-    def center(self) -> np.ndarray:
+    def centre(self) -> np.ndarray:
         """The window's centre: the curve point at the position slider."""
         return self.walk.at(self.value("position"))
 
     def update(self) -> None:
-        center, size = self.center(), self.value("size")
-        truth, _ = crop(self.reference, center, size)
+        centre, size = self.centre(), self.value("size")
+        truth, _ = crop(self.reference, centre, size)
         self.windows = []
         for panel, slot in zip(self.panels, ("left", "middle", "right"), strict=False):
             name = self.value(slot)
-            window, _ = crop(self.images[name], center, size)
-            error = np.sqrt(np.mean((window - truth) ** 2))
+            window, _ = crop(self.images[name], centre, size)
+            error = rmse(window, truth)
             self.windows.append(
-                panel.show(self.images[name], center, size, f"{name}\nRMSE here {error:.3f}")
+                panel.show(self.images[name], centre, size, f"{name}\nRMSE here {error:.3f}")
             )
-        self.windows.append(self.panels[3].show(self.reference, center, size, "exact reference\n"))
+        self.windows.append(self.panels[3].show(self.reference, centre, size, "exact reference\n"))
 
 
 class StepApp(SliderApp):
@@ -203,14 +205,14 @@ class StepApp(SliderApp):
                 readout_format=".2g",
             ),
             "method": widgets.Dropdown(
-                options=SPLAT_METHODS, value="bilinear_centres", description="method"
+                options=SPLATS, value="bilinear_centres", description="method"
             ),
             "weighting": widgets.ToggleButtons(options=WEIGHTINGS, value="count"),
             "position": widgets.FloatSlider(
                 value=0.02, min=0.0, max=1.0, step=0.005, description="along curve"
             ),
         }
-        super().__init__(controls, width=900, height=380)
+        super().__init__(controls, shape=(380, 900))
         grid = self.figure.add_gridspec(1, 2, width_ratios=(1, 1.6))
         self.panel = ZoomPanel(self.figure.add_subplot(grid[0]), self.walk.polyline)
         self.profile_axes = self.figure.add_subplot(grid[1])

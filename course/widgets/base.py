@@ -20,16 +20,27 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from PIL import Image as PILImage
 
-__all__ = ["FigureView", "SliderApp"]
+__all__ = ["GRAY_PIXELS", "FigureView", "SliderApp", "bare_axes"]
+
+#: imshow settings for a gray image in [0, 1], pixels drawn as flat squares.
+GRAY_PIXELS = {"cmap": "gray", "vmin": 0.0, "vmax": 1.0, "interpolation": "nearest"}
+
+
+def bare_axes(axes: Any) -> Any:
+    """The axes without ticks, for a picture: returned, so it can wrap ``add_subplot``."""
+    axes.set_xticks([])
+    axes.set_yticks([])
+    return axes
 
 
 class FigureView:
-    """A matplotlib ``Figure`` of a fixed pixel size, rendered into an image widget."""
+    """A matplotlib ``Figure`` of ``shape = (H, W)`` pixels, rendered into an image widget."""
 
-    def __init__(self, width: int = 500, height: int = 500, dpi: int = 100) -> None:
-        self.figure = Figure(figsize=(width / dpi, height / dpi), dpi=dpi)
+    def __init__(self, shape: tuple[int, int] = (500, 500), dpi: int = 100) -> None:
+        rows, columns = shape
+        self.figure = Figure(figsize=(columns / dpi, rows / dpi), dpi=dpi)
         self.canvas = FigureCanvasAgg(self.figure)
-        self.image = widgets.Image(format="png", width=width, height=height)
+        self.image = widgets.Image(format="png", width=columns, height=rows)
         self._background = None
 
     def pixels(self) -> np.ndarray:
@@ -85,12 +96,11 @@ class SliderApp:
     def __init__(
         self,
         controls: dict[str, widgets.ValueWidget],
-        width: int = 500,
-        height: int = 500,
+        shape: tuple[int, int] = (500, 500),
         dpi: int = 100,
     ) -> None:
         self.controls = controls
-        self.view = FigureView(width, height, dpi)
+        self.view = FigureView(shape, dpi)
         self.figure = self.view.figure
         self.renders = 0
         for control in controls.values():

@@ -25,7 +25,7 @@ class BernsteinBasisApp(SliderApp):
     """The degree-n Bernstein basis with a marker at t; controls ``degree`` and ``t``."""
 
     def __init__(
-        self, degree: int = 3, t: float = 0.3, width: int = 700, height: int = 350
+        self, degree: int = 3, t: float = 0.3, shape: tuple[int, int] = (350, 700)
     ) -> None:
         controls = {
             "degree": widgets.IntSlider(
@@ -33,7 +33,7 @@ class BernsteinBasisApp(SliderApp):
             ),
             "t": widgets.FloatSlider(value=t, min=0.0, max=1.0, step=0.01, description="t"),
         }
-        super().__init__(controls, width, height)
+        super().__init__(controls, shape)
         self.axes = self.figure.add_axes((0.07, 0.12, 0.6, 0.78))
         self.bars_axes = self.figure.add_axes((0.74, 0.12, 0.24, 0.78))
         self.axes.set_xlim(0, 1)

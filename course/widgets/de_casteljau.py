@@ -74,7 +74,7 @@ class DeCasteljauApp(SliderApp):
                 value=format_points(start), description="x, y", continuous_update=False
             ),
         }
-        super().__init__(controls, size, size)
+        super().__init__(controls, shape=(size, size))
         self.status = widgets.Label()
         self.widget.children[1].children += (self.status,)
         self._syncing = False
@@ -170,6 +170,6 @@ class DeCasteljauApp(SliderApp):
         self.full_curve.set_data(curve[:, 0], curve[:, 1])
         low = np.minimum(points.min(axis=0), curve.min(axis=0))
         high = np.maximum(points.max(axis=0), curve.max(axis=0))
-        center, half = (low + high) / 2, max(float((high - low).max()) * 0.55, 1.0)
-        self.axes.set_xlim(center[0] - half, center[0] + half)
-        self.axes.set_ylim(center[1] + half, center[1] - half)
+        centre, half = (low + high) / 2, max(float((high - low).max()) * 0.55, 1.0)
+        self.axes.set_xlim(centre[0] - half, centre[0] + half)
+        self.axes.set_ylim(centre[1] + half, centre[1] - half)

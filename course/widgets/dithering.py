@@ -26,34 +26,28 @@ from course._validate import as_gray, as_image, as_int
 from course.blue_noise import blue_noise_mask, cluster_energy, radial_power_spectrum
 from course.blue_noise import void_and_cluster as rank_pixels
 from course.canvas import crop
-from course.widgets.base import SliderApp
+from course.widgets.base import GRAY_PIXELS, SliderApp, bare_axes
 
 __all__ = ["DitherComparisonApp", "GrayLevelApp", "VoidAndClusterApp", "side_by_side"]
 
-_GRAY = {"cmap": "gray", "vmin": 0.0, "vmax": 1.0, "interpolation": "nearest"}
 
-
-def _bare(axes: Any) -> Any:
-    axes.set_xticks([])
-    axes.set_yticks([])
-    return axes
-
-
-def _zoom_window(image: np.ndarray, scale: int, center: tuple[float, float], size: int) -> Any:
+def _zoom_window(image: np.ndarray, scale: int, centre: tuple[float, float], size: int) -> Any:
     """The same window as ``crop`` on the reference image, of an image ``scale`` times larger."""
-    _, (left, right, bottom, top) = crop(image[::scale, ::scale], center, size)
+    _, (left, right, bottom, top) = crop(image[::scale, ::scale], centre, size)
     window = image[scale * top : scale * bottom, scale * left : scale * right]
     return window, (scale * left, scale * right, scale * bottom, scale * top)
 
 
 def side_by_side(
     images: dict[str, np.ndarray],
-    center: tuple[float, float],
+    centre: tuple[float, float],
     size: int = 32,
-    width: int = 1000,
+    figure_width: int = 1000,
     columns: int | None = None,
 ) -> Figure:
     """Images in a grid, each with a zoomed crop (nearest) of the same window below it.
+
+    The figure is ``figure_width`` pixels wide, the grid ``columns`` images across.
 
     An image k times larger than the first (ordered dithering) is cropped at
     k times the window, so every crop shows the same part of the scene.
@@ -66,30 +60,30 @@ def side_by_side(
     """
     arrays = {name: as_image(image, f"images[{name!r}]") for name, image in images.items()}
     size = as_int(size, "size", minimum=1)
-    height, width_pixels = next(iter(arrays.values())).shape[:2]
+    height, width = next(iter(arrays.values())).shape[:2]
     reference = height
     columns = columns or len(arrays)
     rows = -(-len(arrays) // columns)
     # Row heights in inches: the whole image at its aspect ratio, then a
     # square crop; constrained layout makes room for the titles.
-    column_inches = width / 100 / columns
-    whole, zoom = column_inches * height / width_pixels, column_inches * 0.8
+    column_inches = figure_width / 100 / columns
+    whole, zoom = column_inches * height / width, column_inches * 0.8
     figure = Figure(
-        figsize=(width / 100, rows * (whole + zoom + 0.5)), dpi=100, layout="constrained"
+        figsize=(figure_width / 100, rows * (whole + zoom + 0.5)), dpi=100, layout="constrained"
     )
     grid = figure.add_gridspec(2 * rows, columns, height_ratios=[whole, zoom] * rows)
     for index, (name, image) in enumerate(arrays.items()):
         row, column = divmod(index, columns)
         scale = image.shape[0] // reference
-        overview = _bare(figure.add_subplot(grid[2 * row, column]))
-        overview.imshow(image, **{**_GRAY, "interpolation": "antialiased"})
+        overview = bare_axes(figure.add_subplot(grid[2 * row, column]))
+        overview.imshow(image, **{**GRAY_PIXELS, "interpolation": "antialiased"})
         overview.set_title(textwrap.fill(name, 18), fontsize=9)
-        window, extent = _zoom_window(image, scale, center, size)
+        window, extent = _zoom_window(image, scale, centre, size)
         left, right, bottom, top = extent
         overview.add_patch(
             Rectangle((left, top), right - left, bottom - top, fill=False, color="red", lw=1)
         )
-        _bare(figure.add_subplot(grid[2 * row + 1, column])).imshow(window, **_GRAY)
+        bare_axes(figure.add_subplot(grid[2 * row + 1, column])).imshow(window, **GRAY_PIXELS)
     return figure
 
 
@@ -112,27 +106,27 @@ class DitherComparisonApp(SliderApp):
             "x": widgets.IntSlider(value=width // 2, min=0, max=width - 1, description="x"),
             "y": widgets.IntSlider(value=height // 2, min=0, max=height - 1, description="y"),
         }
-        super().__init__(controls, width=1000, height=560)
+        super().__init__(controls, shape=(560, 1000))
         grid = self.figure.add_gridspec(3, 4, left=0.01, right=0.99, top=0.95, bottom=0.01)
-        overview = _bare(self.figure.add_subplot(grid[0, 0]))
-        overview.imshow(self.gray, **{**_GRAY, "interpolation": "antialiased"})
+        overview = bare_axes(self.figure.add_subplot(grid[0, 0]))
+        overview.imshow(self.gray, **{**GRAY_PIXELS, "interpolation": "antialiased"})
         overview.set_title("original (red: the window)", fontsize=9)
         self.window = Rectangle((0, 0), 1, 1, fill=False, color="red", lw=1.5)
         overview.add_patch(self.window)
         self.crops = {}
         for index, name in enumerate(self.results, start=1):
-            axes = _bare(self.figure.add_subplot(grid[divmod(index, 4)]))
+            axes = bare_axes(self.figure.add_subplot(grid[divmod(index, 4)]))
             axes.set_title(name, fontsize=9)
-            self.crops[name] = axes.imshow(np.zeros((self.size, self.size)), **_GRAY)
+            self.crops[name] = axes.imshow(np.zeros((self.size, self.size)), **GRAY_PIXELS)
         self.update()
 
     def update(self) -> None:
-        center = (self.value("x") + 0.5, self.value("y") + 0.5)
+        centre = (self.value("x") + 0.5, self.value("y") + 0.5)
         for name, result in self.results.items():
             scale = result.shape[0] // self.gray.shape[0]
-            window, _ = _zoom_window(result, scale, center, self.size)
+            window, _ = _zoom_window(result, scale, centre, self.size)
             self.crops[name].set_data(window)
-        _, (left, right, bottom, top) = crop(self.gray, center, self.size)
+        _, (left, right, bottom, top) = crop(self.gray, centre, self.size)
         self.window.set_bounds(left, top, right - left, bottom - top)
 
 
@@ -149,7 +143,15 @@ class GrayLevelApp(SliderApp):
     """
 
     STEP = 1 / 72
-    METHODS = ("threshold", "uniform random", "blue noise", "ordered 3x3", "Bayer 8x8")
+    # The methods side by side under the strip, in the order of :meth:`outputs`.
+    PANELS = (
+        "threshold",
+        "uniform random",
+        "blue noise",
+        "ordered 3x3",
+        "Bayer 8x8",
+        "Floyd-Steinberg",
+    )
 
     def __init__(self, level: float = 0.3, size: int = 24) -> None:
         self.size = as_int(size, "size", minimum=3)
@@ -164,9 +166,9 @@ class GrayLevelApp(SliderApp):
                 readout_format=".3f",
             )
         }
-        super().__init__(controls, width=1000, height=420)
-        strip = _bare(self.figure.add_axes((0.02, 0.66, 0.96, 0.26)))
-        strip.imshow(self.ordered_patterns(), **_GRAY)
+        super().__init__(controls, shape=(420, 1000))
+        strip = bare_axes(self.figure.add_axes((0.02, 0.66, 0.96, 0.26)))
+        strip.imshow(self.ordered_patterns(), **GRAY_PIXELS)
         strip.set_title(
             "the ten patterns of M = [[6, 8, 4], [1, 0, 3], [5, 2, 7]]: k sub-pixels "
             "lit for levels in ((k - 1)/9, k/9]",
@@ -176,11 +178,10 @@ class GrayLevelApp(SliderApp):
             strip.text(4 * k + 1, 3.6, f"k={k}", ha="center", va="top", fontsize=8)
         self.highlight = Rectangle((-0.6, -0.6), 3.2, 3.2, fill=False, color="red", lw=2)
         strip.add_patch(self.highlight)
-        names = (*self.METHODS, "Floyd-Steinberg")
         self.panels, self.titles = {}, {}
-        for index, name in enumerate(names):
-            axes = _bare(self.figure.add_axes((0.02 + index * 0.163, 0.03, 0.145, 0.5)))
-            self.panels[name] = axes.imshow(np.zeros((self.size, self.size)), **_GRAY)
+        for index, name in enumerate(self.PANELS):
+            axes = bare_axes(self.figure.add_axes((0.02 + index * 0.163, 0.03, 0.145, 0.5)))
+            self.panels[name] = axes.imshow(np.zeros((self.size, self.size)), **GRAY_PIXELS)
             self.titles[name] = axes.set_title(name, fontsize=9)
         self.update()
 
@@ -239,9 +240,9 @@ class VoidAndClusterApp(SliderApp):
         controls = {
             "dots": widgets.IntSlider(value=dots, min=1, max=self.size**2 - 1, description="dots")
         }
-        super().__init__(controls, width=1000, height=460)
+        super().__init__(controls, shape=(460, 1000))
         left = self.figure.add_axes((0.02, 0.05, 0.42, 0.82))
-        _bare(left)
+        bare_axes(left)
         self.energy = left.imshow(
             np.zeros((self.size, self.size)), cmap="viridis", interpolation="nearest"
         )

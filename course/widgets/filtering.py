@@ -15,14 +15,13 @@ import numpy as np
 
 from course import filters
 from course._validate import as_image, as_int
-from course.widgets.base import SliderApp
-from course.widgets.dithering import _GRAY, _bare
+from course.widgets.base import GRAY_PIXELS, SliderApp, bare_axes
 
 __all__ = ["RepeatedBlurApp", "border_ring_mean"]
 
 
-def border_ring_mean(image: Any, width: int = 1) -> float:
-    """Mean of the outermost ``width`` pixels all around the image.
+def border_ring_mean(image: Any, thickness: int = 1) -> float:
+    """Mean of the outermost ``thickness`` pixels all around the image.
 
     Examples
     --------
@@ -32,9 +31,9 @@ def border_ring_mean(image: Any, width: int = 1) -> float:
     1.0
     """
     array = as_image(image, "image")
-    width = as_int(width, "width", minimum=1)
+    thickness = as_int(thickness, "thickness", minimum=1)
     ring = np.ones(array.shape[:2], dtype=bool)
-    ring[width:-width, width:-width] = False
+    ring[thickness:-thickness, thickness:-thickness] = False
     return float(array[ring].mean())
 
 
@@ -62,19 +61,19 @@ class RepeatedBlurApp(SliderApp):
         self.corner = as_int(corner, "corner", minimum=2)
         self.original_ring = border_ring_mean(self.image)
         controls = {"repeats": widgets.IntSlider(value=repeats, min=0, max=30, description="blurs")}
-        super().__init__(controls, width=1000, height=560)
+        super().__init__(controls, shape=(560, 1000))
         self.done = 0
         self.results = dict.fromkeys(filters.BORDERS, self.image)
         self.wholes, self.crops, self.titles = {}, {}, {}
         grid = self.figure.add_gridspec(2, 4, left=0.01, right=0.99, top=0.9, bottom=0.01)
-        style = _GRAY if self.image.ndim == 2 else {"interpolation": "nearest"}
+        style = GRAY_PIXELS if self.image.ndim == 2 else {"interpolation": "nearest"}
         for column, border in enumerate(filters.BORDERS):
-            top = _bare(self.figure.add_subplot(grid[0, column]))
+            top = bare_axes(self.figure.add_subplot(grid[0, column]))
             self.wholes[border] = top.imshow(
                 self.image, **{**style, "interpolation": "antialiased"}
             )
             self.titles[border] = top.set_title(border, fontsize=9)
-            bottom = _bare(self.figure.add_subplot(grid[1, column]))
+            bottom = bare_axes(self.figure.add_subplot(grid[1, column]))
             self.crops[border] = bottom.imshow(self.corner_of(self.image), **style)
         self.update()
 

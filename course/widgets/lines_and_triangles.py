@@ -71,7 +71,7 @@ class LineApp(SliderApp):
             name: widgets.IntSlider(value=value, min=0, max=limit, description=name)
             for name, value in zip(("x0", "y0", "x1", "y1"), (*p0, *p1), strict=True)
         }
-        super().__init__(controls, width=960, height=380)
+        super().__init__(controls, shape=(380, 960))
         self.panels = {}
         self.ideal = {}
         for index, name in enumerate(("bresenham", "report", "wu")):
@@ -97,9 +97,9 @@ class LineApp(SliderApp):
         staircase = line_4connected(p0, p1)
         wu_pixels, wu_weights = wu_line(np.add(p0, 0.5), np.add(p1, 0.5))
         size = LINE_GRID
-        self.panels["bresenham"].set_data(paint(blank(size, size), bresenham, 1.0))
-        self.panels["report"].set_data(paint(blank(size, size), staircase, 1.0))
-        self.panels["wu"].set_data(paint(blank(size, size), wu_pixels, 1.0, weight=wu_weights))
+        self.panels["bresenham"].set_data(paint(blank((size, size)), bresenham, 1.0))
+        self.panels["report"].set_data(paint(blank((size, size)), staircase, 1.0))
+        self.panels["wu"].set_data(paint(blank((size, size)), wu_pixels, 1.0, weight=wu_weights))
         for ideal in self.ideal.values():
             ideal.set_data([p0[0] + 0.5, p1[0] + 0.5], [p0[1] + 0.5, p1[1] + 0.5])
         dx, dy = p1[0] - p0[0], p1[1] - p0[1]
@@ -173,7 +173,7 @@ class TriangleApp(SliderApp):
             options=EDGE_RULES, value=rule, description="rule", style={"button_width": "70px"}
         )
         controls["rate"] = widgets.IntSlider(value=rate, min=1, max=8, description="SSAA rate")
-        super().__init__(controls, width=860, height=460)
+        super().__init__(controls, shape=(460, 860))
         size = TRIANGLE_GRID
         left = self.figure.add_axes((0.04, 0.05, 0.44, 0.8))
         right = self.figure.add_axes((0.53, 0.05, 0.44, 0.8))
@@ -228,7 +228,7 @@ class TriangleApp(SliderApp):
             f"{doubled} painted twice, {cracks} missed on the shared edge",
             fontsize=9,
         )
-        image = blank(*shape[::-1])
+        image = blank(shape)
         for triple in ((a, b, c), (a, c, d)):
             pixels, weights = triangle_coverage(*triple, shape, rate, rule=rule)
             paint(image, pixels, 1.0, weight=weights)

@@ -67,7 +67,7 @@ class PoissonIterationApp(SliderApp):
                 options=self.stops, value=self.stops[0], description="sweeps"
             ),
         }
-        super().__init__(controls, width=900, height=330)
+        super().__init__(controls, shape=(330, 900))
         x, y = self.problem.corner
         height, width = self.problem.region.shape
         self.window = (
@@ -143,9 +143,11 @@ def show_images(
     pictures: dict[str, Any],
     window: tuple[slice, slice] | None = None,
     columns: int | None = None,
-    width: int = 1000,
+    figure_width: int = 1000,
 ) -> Figure:
     """Images side by side with their titles; ``window`` crops every one alike.
+
+    The figure is ``figure_width`` pixels wide, the grid ``columns`` images across.
 
     Gray images are shown on a fixed 0-1 grey scale, so equal values look
     equal across panels.
@@ -161,10 +163,10 @@ def show_images(
         arrays = {name: image[window] for name, image in arrays.items()}
     columns = as_int(columns or len(arrays), "columns", minimum=1)
     rows = -(-len(arrays) // columns)
-    height, image_width = next(iter(arrays.values())).shape[:2]
-    panel = width / 100 / columns
+    height, width = next(iter(arrays.values())).shape[:2]
+    panel = figure_width / 100 / columns
     figure = Figure(
-        figsize=(width / 100, rows * (panel * height / image_width + 0.35)),
+        figsize=(figure_width / 100, rows * (panel * height / width + 0.35)),
         dpi=100,
         layout="constrained",
     )

@@ -15,27 +15,17 @@ import ipywidgets as widgets
 import numpy as np
 
 from course.images import photograph, zone_plate, zone_plate_box
+from course.metrics import rmse
 from course.resample import supersample, supersample_without_offset
 from course.widgets.base import SliderApp
 
-__all__ = ["IMAGES", "VERSIONS", "SupersampleApp", "rms_error"]
+__all__ = ["IMAGES", "VERSIONS", "SupersampleApp"]
 
 IMAGES = ("zone plate", "photograph")
 VERSIONS = ("centred", "report's")
 _RESAMPLERS = {"centred": supersample, "report's": supersample_without_offset}
 _PHOTO_SIDE = 500
 _PANEL = 320  # pixels on screen for each picture
-
-
-def rms_error(image: np.ndarray, reference: np.ndarray) -> float:
-    """Root-mean-square difference over every pixel and channel.
-
-    Examples
-    --------
-    >>> rms_error(np.array([0.0, 0.5]), np.array([0.0, 0.0]))
-    0.3535533905932738
-    """
-    return float(np.sqrt(np.mean((np.asarray(image) - reference) ** 2)))
 
 
 class SupersampleApp(SliderApp):
@@ -59,7 +49,7 @@ class SupersampleApp(SliderApp):
             "image": widgets.ToggleButtons(options=IMAGES, description="image"),
             "version": widgets.ToggleButtons(options=VERSIONS, description="sampling"),
         }
-        super().__init__(controls, width=1080, height=420)
+        super().__init__(controls, shape=(420, 1080))
         self.max_rate = max_rate
         photo_out = round(_PHOTO_SIDE * out_size / size)
         photo = photograph()
@@ -127,7 +117,7 @@ class SupersampleApp(SliderApp):
             self.errors[image] = {
                 version: np.array(
                     [
-                        rms_error(self.resample(image, version, rate), reference)
+                        rmse(self.resample(image, version, rate), reference)
                         for rate in range(1, self.max_rate + 1)
                     ]
                 )
@@ -148,7 +138,7 @@ class SupersampleApp(SliderApp):
             difference = difference.mean(axis=2)
         self.difference.set_data(difference)
         self.difference.set_extent(extent)
-        error = rms_error(result, reference)
+        error = rmse(result, reference)
         self.result_axes.set_title(f"{width} x {height} at rate {rate} ({version})", fontsize=9)
         self.difference_axes.set_title(
             f"minus the {self.reference_names[image]}: RMS {error:.4f}", fontsize=9

@@ -1,11 +1,10 @@
-"""Measuring an anti-aliased curve: error, brightness uniformity, position.
+"""How good an anti-aliased curve is: brightness uniformity and position, every variant.
 
-Each function takes a rendered gray image (intensity in [0, 1]) and either
-the exact reference image (:func:`course.coverage.reference`) or the curve's
-control points, and returns numbers a lesson can put in a table:
+Each measure takes a rendered gray image (intensity in [0, 1]) and the
+curve's control points, and returns numbers a lesson can put in a table
+beside :func:`course.metrics.rmse` and :func:`course.metrics.max_error`
+against the exact reference (:func:`course.coverage.reference`):
 
-- :func:`rmse` and :func:`max_error`: against the exact reference, over the
-  whole image.
 - :func:`uniformity`: the coefficient of variation of the intensity per unit
   length along the curve. A stroke of width w holds w units of intensity per
   unit of length everywhere (the area of a band is its width times its
@@ -21,9 +20,10 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_gray, as_positive_float, as_shape
-from course.antialias import METHODS, SPLAT_METHODS, render
-from course.coverage import agg_render, as_curve, curve_polyline, first_of_runs, pixels_near
+from course._validate import as_curve, as_gray, as_positive_float, as_shape
+from course.antialias import RENDER_METHODS, SPLATS, render
+from course.coverage import agg_render, curve_polyline, first_of_runs, pixels_near
+from course.metrics import max_error, rmse
 
 __all__ = [
     "AGG",
@@ -31,10 +31,8 @@ __all__ = [
     "CentroidOffsets",
     "centroid_offsets",
     "intensity_along",
-    "max_error",
     "position_error",
     "quality_table",
-    "rmse",
     "uniformity",
     "variants",
 ]
@@ -47,40 +45,6 @@ ARC_LENGTH = " + arc length"
 METRIC_TOLERANCE = 1e-3
 # Pixels farther than this from the curve are not counted as part of it.
 METRIC_REACH = 3.0
-
-
-def _pair(image: Any, reference: Any) -> tuple[np.ndarray, np.ndarray]:
-    first = as_gray(image, "image")
-    second = as_gray(reference, "reference")
-    if first.shape != second.shape:
-        raise ValueError(
-            f"image and reference must have the same shape; got {first.shape} and {second.shape}"
-        )
-    return first, second
-
-
-def rmse(image: Any, reference: Any) -> float:
-    """Root-mean-square difference over every pixel of the image.
-
-    Examples
-    --------
-    >>> rmse([[0.0, 1.0]], [[0.0, 0.5]])
-    0.3535533905932738
-    """
-    first, second = _pair(image, reference)
-    return float(np.sqrt(np.mean((first - second) ** 2)))
-
-
-def max_error(image: Any, reference: Any) -> float:
-    """Largest absolute difference at any pixel.
-
-    Examples
-    --------
-    >>> max_error([[0.0, 1.0]], [[0.25, 0.5]])
-    0.5
-    """
-    first, second = _pair(image, reference)
-    return float(np.abs(first - second).max())
 
 
 def _curve_positions(image: np.ndarray, control: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -272,7 +236,7 @@ def position_error(image: Any, points: Any, width: float = 1.0) -> float:
 def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarray]:
     """Every way this lesson draws a curve, by name, as (H, W) images.
 
-    Each of :data:`course.antialias.METHODS` as the handouts accumulate
+    Each of :data:`course.antialias.RENDER_METHODS` as the handouts accumulate
     (saturating count, their step), each splat method again with the
     arc-length fix (named ``"<method> + arc length"``), and Agg.
 
@@ -284,8 +248,8 @@ def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarra
     """
     control = as_curve(points)
     shape = as_shape(shape)
-    images = {method: render(control, shape, method, width) for method in METHODS}
-    for method in SPLAT_METHODS:
+    images = {method: render(control, shape, method, width) for method in RENDER_METHODS}
+    for method in SPLATS:
         images[method + ARC_LENGTH] = render(control, shape, method, width, weighting="arc_length")
     images[AGG] = agg_render(control, shape, width)
     return images

@@ -53,10 +53,10 @@ def main() -> None:
                     f"{ratio:.2f}x bezier.Curve.evaluate_multi "
                     f"({anchor * 1e3:.2f} ms) (goal <= {GOALS[name]:g}x, {verdict})"
                 )
-            naive = best_time(lambda t=t, p=points: bezier_bernstein(p, t, method="loop"), 3)
+            loop = best_time(lambda t=t, p=points: bezier_bernstein(p, t, method="loop"), 3)
             print(
-                f"bezier_bernstein(method='naive') degree {degree}, "
-                f"10^{round(np.log10(count))} t: {naive / anchor:.2f}x "
+                f"bezier_bernstein(method='loop') degree {degree}, "
+                f"10^{round(np.log10(count))} t: {loop / anchor:.2f}x "
                 f"bezier.Curve.evaluate_multi (readable form, no goal)"
             )
 

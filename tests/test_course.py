@@ -13,6 +13,7 @@ import ast
 import importlib
 import inspect
 import json
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -337,3 +338,26 @@ def test_test_files_are_named_for_what_they_test():
         and not (name.endswith("_widgets") and name[: -len("_widgets")] in apps)
     ]
     assert not stray, f"tests named for no module: {stray}"
+
+
+STANDARD_LIBRARY_ONLY = [
+    f"course.classroom.{name}"
+    for name in ("cli", "course_map", "edition", "folders", "gallery", "notebooks", "registry")
+] + ["course.classroom.source", "course.classroom", "course.__main__", "course"]
+
+
+@pytest.mark.parametrize("module", STANDARD_LIBRARY_ONLY)
+def test_the_classroom_s_plumbing_needs_the_standard_library_only(module):
+    tree = ast.parse(MODULES[module].read_text(encoding="utf-8"))
+    imported = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            imported.update(alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            imported.add(node.module)
+    outside = {
+        name
+        for name in imported
+        if name.split(".")[0] not in sys.stdlib_module_names and name not in STANDARD_LIBRARY_ONLY
+    }
+    assert not outside, f"{module} imports {sorted(outside)}"

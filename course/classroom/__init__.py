@@ -12,11 +12,13 @@ The third of the package's three layers (``design.md``): algorithms in
 - :mod:`~course.classroom.gallery`: every lesson's key pictures as PNG files;
 - :mod:`~course.classroom.edition`: the student edition;
 - :mod:`~course.classroom.cli`: ``python -m course``;
+- :mod:`~course.classroom.folders`: output folders, never clobbered unasked;
+- :mod:`~course.classroom.source`: the library's source as "Going further" shows it;
 - :mod:`~course.classroom.pictures` and :mod:`~course.classroom.sliders`:
   how the lesson modules draw their pictures and how the browser tests
   predict a slider.
 
-The first six use the standard library only, so that ``python -m course
-student`` (a JSON transform) starts without numpy, matplotlib or ipywidgets.
-Nothing here is imported by the layers below.
+All but the last two use the standard library only, so that ``python -m
+course student`` (a JSON transform) starts without numpy, matplotlib or
+ipywidgets. Nothing here is imported by the layers below.
 """

@@ -4,12 +4,15 @@ Each function reproduces one form from the seeds, mistakes included, with
 the counters a lesson needs: the recursive ``comb`` of seed 002 (exponential
 calls), its 32-bit ``int`` (overflows past C(33, 16)), the reversed
 convention ``t * P[i] + (1 - t) * P[i + 1]`` of seeds 002 and 004 (the same
-curve run backwards), and the recursive and iterative de Casteljau of seeds
-000 and 004 with the intermediate points they hold.
+curve run backwards), the recursive and iterative de Casteljau of seeds
+000 and 004 with the intermediate points they hold, and the lab's Task 7,
+which draws the curve as Bresenham segments between points at equal steps
+of t (seed 001).
 """
 
 from __future__ import annotations
 
+import itertools
 import sys
 from dataclasses import dataclass
 from functools import cache
@@ -18,15 +21,19 @@ from typing import Any
 import numpy as np
 
 from course._validate import as_int, as_parameter, as_points, as_scalar_parameter
-from course.bezier import de_casteljau, uniform_parameters
-from course.raster import nearest_pixels
+from course.bezier import de_casteljau, flatten, uniform_parameters
+from course.raster import line, nearest_pixels
 
 __all__ = [
+    "MAX_SEGMENTS",
     "DeCasteljauCost",
+    "bresenham_curve",
     "comb_recursive",
     "comb_recursive_calls",
+    "curve_pixels",
     "de_casteljau_reversed",
     "pascal_row_int32",
+    "segments_report",
     "step_report",
     "trace_iterative",
     "trace_recursive",
@@ -244,4 +251,110 @@ def step_report(points: Any, step: float, accumulate: str = "exact") -> dict[str
         "overdraw": len(samples) / distinct,
         "last_t": float(t[-1]),
         "pixel_list": pixels,
+    }
+
+
+# --- the lab's Task 7: the curve as Bresenham segments ------------------------------
+
+#: More segments than this would draw each pixel many times over: the report's
+#: loop is for a handful of segments, a long curve wants ``flatten``.
+MAX_SEGMENTS = 4096
+
+
+def bresenham_curve(points: Any, segments: int) -> np.ndarray:
+    """The lab's Task 7: ``segments`` Bresenham lines between curve points at equal t steps.
+
+    The points ``B(k / segments)`` go to the pixels that hold them (floor),
+    and each consecutive pair is joined by :func:`course.raster.line`, as
+    the lab's loop calls ``DrawLine``. Each joint is drawn twice, once by
+    each line that meets there, so the (K, 2) pixels keep their repeats, in
+    drawing order.
+
+    Examples
+    --------
+    >>> bresenham_curve([[0.5, 0.5], [4.5, 0.5], [4.5, 4.5]], 2).tolist()
+    [[0, 0], [1, 0], [2, 1], [3, 1], [3, 1], [3, 2], [4, 3], [4, 4]]
+    """
+    control = as_points(points)
+    if control.shape[1] != 2:
+        raise ValueError(f"points must have shape (N, 2) for image space; got {control.shape}")
+    segments = as_int(segments, "segments", minimum=1)
+    if segments > MAX_SEGMENTS:
+        raise ValueError(f"segments must be <= {MAX_SEGMENTS}; got {segments}")
+    ends = nearest_pixels(de_casteljau(control, np.linspace(0.0, 1.0, segments + 1)))
+    return np.concatenate([line(a, b) for a, b in itertools.pairwise(ends)])
+
+
+def curve_pixels(points: Any) -> np.ndarray:
+    """The pixels the curve itself passes through: (K, 2), distinct, in order along it.
+
+    The curve is flattened to points at most 1 pixel apart and within 0.01
+    pixel of it (:func:`course.bezier.flatten` with ``max_step=1``), so
+    consecutive pixels touch (8-connected) and none is skipped.
+
+    Examples
+    --------
+    >>> curve_pixels([[0.5, 0.5], [4.5, 0.5]]).tolist()
+    [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0]]
+    """
+    control = as_points(points)
+    if control.shape[1] != 2:
+        raise ValueError(f"points must have shape (N, 2) for image space; got {control.shape}")
+    pixels = nearest_pixels(flatten(control, 0.01, max_step=1.0))
+    keep = np.ones(len(pixels), dtype=bool)
+    keep[1:] = (np.diff(pixels, axis=0) != 0).any(axis=1)
+    pixels = pixels[keep]
+    _, first = np.unique(pixels, axis=0, return_index=True)
+    return pixels[np.sort(first)]
+
+
+def segments_report(points: Any, segments: int) -> dict[str, Any]:
+    """How :func:`bresenham_curve` with ``segments`` lines compares with :func:`curve_pixels`.
+
+    Returns
+    -------
+    dict
+        ``pixels``: distinct pixels drawn; ``twice``: pixels drawn more than
+        once (the joints, and pixels two lines share); ``curve``: the
+        curve's own pixels; ``off``: drawn pixels the curve does not pass
+        through (where the chords stray from it); ``missed``: curve pixels
+        with no drawn pixel beside them (not even diagonally), where the
+        drawing leaves the curve by more than a pixel. ``off_pixels`` and
+        ``missed_pixels`` list them, (K, 2) each.
+
+    Examples
+    --------
+    A quarter turn drawn with one chord, then with eight:
+
+    >>> turn = [[0.5, 0.5], [10.5, 0.5], [10.5, 10.5]]
+    >>> [segments_report(turn, n)[key] for n in (1, 8) for key in ("off", "missed", "twice")]
+    [9, 14, 0, 1, 0, 7]
+    """
+    drawn = bresenham_curve(points, segments)
+    painted, counts = np.unique(drawn, axis=0, return_counts=True)
+    curve = curve_pixels(points)
+    low = np.minimum(painted.min(axis=0), curve.min(axis=0)) - 1
+    high = np.maximum(painted.max(axis=0), curve.max(axis=0)) + 2
+    grid = np.zeros((high - low)[::-1], dtype=bool)  # rows y, columns x
+    on_curve = grid.copy()
+    px, py = (painted - low).T
+    cx, cy = (curve - low).T
+    grid[py, px] = True
+    on_curve[cy, cx] = True
+    near = grid.copy()  # within one pixel of a drawn one, diagonals included
+    for dy in (-1, 0, 1):
+        for dx in (-1, 0, 1):
+            near[1:-1, 1:-1] |= grid[
+                1 + dy : grid.shape[0] - 1 + dy, 1 + dx : grid.shape[1] - 1 + dx
+            ]
+    off = painted[~on_curve[py, px]]
+    missed = curve[~near[cy, cx]]
+    return {
+        "pixels": len(painted),
+        "twice": int(np.count_nonzero(counts > 1)),
+        "curve": len(curve),
+        "off": len(off),
+        "missed": len(missed),
+        "off_pixels": off,
+        "missed_pixels": missed,
     }

@@ -23,7 +23,15 @@ from course._validate import (
     describe,
 )
 
-__all__ = ["PAINT_MODES", "blank", "crop", "inside", "paint", "yellow_fraction"]
+__all__ = [
+    "PAINT_MODES",
+    "blank",
+    "crop",
+    "crop_extent",
+    "inside",
+    "paint",
+    "yellow_fraction",
+]
 
 PAINT_MODES = ("add", "max", "over")
 
@@ -167,14 +175,25 @@ def crop(image: np.ndarray, centre: Any, size: int) -> tuple[np.ndarray, tuple[f
     ((4, 4), (0, 4, 10, 6))
     """
     array = as_image(image, "image", copy=False)
-    height, width = array.shape[:2]
+    left, right, bottom, top = crop_extent(array.shape[:2], centre, size)
+    return array[top:bottom, left:right], (left, right, bottom, top)
+
+
+def crop_extent(shape: Any, centre: Any, size: int) -> tuple[int, int, int, int]:
+    """The window :func:`crop` takes from a canvas of ``shape``: ``(left, right, bottom, top)``.
+
+    Examples
+    --------
+    >>> crop_extent((10, 10), (0.2, 9.7), 4)
+    (0, 4, 10, 6)
+    """
+    height, width = as_shape(shape)
     size = as_int(size, "size", minimum=1)
-    x, y = as_float_array(centre, "center")
+    x, y = as_float_array(centre, "centre")
     size_x, size_y = min(size, width), min(size, height)
     x0 = int(np.clip(np.floor(x) - size_x // 2, 0, width - size_x))
     y0 = int(np.clip(np.floor(y) - size_y // 2, 0, height - size_y))
-    window = array[y0 : y0 + size_y, x0 : x0 + size_x]
-    return window, (x0, x0 + size_x, y0 + size_y, y0)
+    return x0, x0 + size_x, y0 + size_y, y0
 
 
 def yellow_fraction(image: np.ndarray, threshold: float = 0.5) -> float:

@@ -20,19 +20,24 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_curve, as_gray, as_positive_float, as_shape
+from course._validate import as_choice, as_curve, as_gray, as_positive_float, as_shape
 from course.antialias import RENDER_METHODS, SPLATS, render
-from course.coverage import agg_render, curve_polyline, first_of_runs, pixels_near
+from course.canvas import crop_extent
+from course.coverage import agg_render, curve_polyline, first_of_runs, pixels_near, reference
 from course.metrics import max_error, rmse
 
 __all__ = [
     "AGG",
     "ARC_LENGTH",
+    "REFERENCE",
+    "VARIANTS",
     "CentroidOffsets",
     "centroid_offsets",
     "intensity_along",
     "position_error",
     "quality_table",
+    "render_variant",
+    "render_window",
     "uniformity",
     "variants",
 ]
@@ -40,6 +45,11 @@ __all__ = [
 # Names of the variants beside the methods' own names.
 AGG = "Agg (matplotlib)"
 ARC_LENGTH = " + arc length"
+#: Every variant of the lesson, by name: the render methods, the splats with the
+#: arc-length fix, and matplotlib's Agg.
+VARIANTS = (*RENDER_METHODS, *(splat + ARC_LENGTH for splat in SPLATS), AGG)
+#: The name :func:`render_window` gives the exact coverage.
+REFERENCE = "exact reference"
 
 # How closely the metrics follow the true curve, in pixels.
 METRIC_TOLERANCE = 1e-3
@@ -233,8 +243,25 @@ def position_error(image: Any, points: Any, width: float = 1.0) -> float:
     return float(np.mean(np.abs(offsets)))
 
 
+def render_variant(name: str, points: Any, shape: Any, width: float = 1.0) -> np.ndarray:
+    """The variant ``name`` of :data:`VARIANTS` drawn on a canvas of ``shape``, (H, W).
+
+    Examples
+    --------
+    >>> render_variant(AGG, [[1.0, 2.0], [9.0, 2.0]], (4, 10)).shape
+    (4, 10)
+    """
+    name = as_choice(name, "name", VARIANTS)
+    control = as_curve(points)
+    if name == AGG:
+        return agg_render(control, shape, width)
+    if name.endswith(ARC_LENGTH):
+        return render(control, shape, name[: -len(ARC_LENGTH)], width, weighting="arc_length")
+    return render(control, shape, name, width)
+
+
 def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarray]:
-    """Every way this lesson draws a curve, by name, as (H, W) images.
+    """Every way this lesson draws a curve, by name, as (H, W) images: :data:`VARIANTS`.
 
     Each of :data:`course.antialias.RENDER_METHODS` as the handouts accumulate
     (saturating count, their step), each splat method again with the
@@ -248,11 +275,39 @@ def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarra
     """
     control = as_curve(points)
     shape = as_shape(shape)
-    images = {method: render(control, shape, method, width) for method in RENDER_METHODS}
-    for method in SPLATS:
-        images[method + ARC_LENGTH] = render(control, shape, method, width, weighting="arc_length")
-    images[AGG] = agg_render(control, shape, width)
-    return images
+    return {name: render_variant(name, control, shape, width) for name in VARIANTS}
+
+
+def render_window(
+    name: str, points: Any, shape: Any, centre: Any, size: int, width: float = 1.0, k: int = 64
+) -> tuple[np.ndarray, tuple[int, int, int, int]]:
+    """A variant, or :data:`REFERENCE`, drawn only in the window :func:`~course.canvas.crop` takes.
+
+    The values of ``crop(render_variant(name, points, shape), centre, size)``
+    (and of the reference at ``k`` x ``k`` samples per pixel), to rounding,
+    at the cost of the window alone: the curve is moved by the window's
+    corner, a whole number of pixels, and drawn on a canvas of the window's
+    size. For apps that redraw as a control point is dragged. Returns the
+    window and its extent ``(left, right, bottom, top)``.
+
+    Examples
+    --------
+    >>> from course.canvas import crop
+    >>> curve = [[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]
+    >>> window, extent = render_window("bilinear_centres", curve, (700, 700), (100, 40), 8)
+    >>> full = render_variant("bilinear_centres", curve, (700, 700))
+    >>> extent, bool(np.allclose(window, crop(full, (100, 40), 8)[0], atol=1e-12))
+    ((96, 104, 44, 36), True)
+    """
+    control = as_curve(points)
+    left, right, bottom, top = crop_extent(shape, centre, size)
+    moved = control - (left, top)
+    window_shape = (bottom - top, right - left)
+    if name == REFERENCE:
+        window = reference(moved, window_shape, width, k)
+    else:
+        window = render_variant(name, moved, window_shape, width)
+    return window, (left, right, bottom, top)
 
 
 def quality_table(

@@ -40,14 +40,15 @@ def _read_only(points: list[list[float]]) -> np.ndarray:
 SEED_000_CUBIC = _read_only([[10, 10], [690, 10], [10, 690], [690, 690]])
 #: The window, (H, W), seed 000 draws its curve in.
 SEED_000_SHAPE = (700, 700)
-#: Twelve control points for the de Casteljau app: seed 000's cubic, then a zigzag
-#: that seed 002's degree-9 curve could have. Take the first N for N points.
+#: Twelve control points for the de Casteljau app. The first four are a generic
+#: cubic: no symmetry, so at t = 0.5 every level of the construction stands apart.
+#: Then a zigzag, as seed 002's degree-9 curve could have. Take the first N for N points.
 EXAMPLE_POINTS = _read_only(
     [
-        [10, 10],
-        [690, 10],
-        [10, 690],
-        [690, 690],
+        [90, 610],
+        [170, 130],
+        [540, 80],
+        [620, 470],
         [350, 600],
         [120, 350],
         [600, 150],

@@ -27,40 +27,85 @@ def exact():
     return reference(CURVE, SHAPE, 1.0, k=16)
 
 
+PICKS = ("nearest_round", "bilinear_corners", "stroke_area")
+
+
 def test_zoom_app_moves_its_window_along_the_curve(images, exact):
-    app = ZoomApp(images, CURVE, exact, picks=("nearest_round", "bilinear_corners", "stroke_area"))
+    app = ZoomApp(CURVE, SHAPE, picks=PICKS, k=16)
     before = app.refresh()
     centre = app.centre()
-    # The window shows exactly the crop around the curve point.
+    # The window shows exactly the crop of the whole rendering around the curve point.
     window, extent = crop(images["nearest_round"], centre, 16)
-    np.testing.assert_array_equal(app.panels[0].picture.get_array(), window)
+    np.testing.assert_allclose(app.panels[0].picture.get_array(), window, atol=1e-9)
     assert tuple(app.panels[0].axes.get_xlim()) == extent[:2]
     app.controls["position"].value = 0.5
     assert app.renders == 2 and app.view.image.value != before
     middle = CurveWalk(CURVE).at(0.5)
     np.testing.assert_allclose(app.centre(), middle)
     np.testing.assert_allclose(middle, [70.0, 70.0], atol=1e-6)  # the S's centre
-    np.testing.assert_array_equal(app.windows[2], crop(images["stroke_area"], middle, 16)[0])
-    np.testing.assert_array_equal(app.windows[3], crop(exact, middle, 16)[0])
+    np.testing.assert_allclose(
+        app.windows[2], crop(images["stroke_area"], middle, 16)[0], atol=1e-9
+    )
+    np.testing.assert_allclose(app.windows[3], crop(exact, middle, 16)[0], atol=1e-9)
 
 
-def test_zoom_app_picks_variants_and_sizes(images, exact):
-    app = ZoomApp(images, CURVE, exact, picks=("nearest_round", "bilinear_corners", "stroke_area"))
+def test_zoom_app_picks_variants_and_sizes(images):
+    app = ZoomApp(CURVE, SHAPE, picks=PICKS, k=16)
     app.refresh()
     app.controls["middle"].value = "bilinear_centres"
     window, _ = crop(images["bilinear_centres"], app.centre(), 16)
-    np.testing.assert_array_equal(app.windows[1], window)
+    np.testing.assert_allclose(app.windows[1], window, atol=1e-9)
     assert "bilinear_centres" in app.panels[1].title.get_text()
-    app.controls["size"].value = 30
-    assert app.windows[1].shape == (30, 30)
-    # The grid has one line per pixel edge: 31 columns and 31 rows.
-    assert len(app.panels[1].grid.get_segments()) == 62
-    assert app.describe().startswith("ZoomApp(position=0.1, size=30, left='nearest_round'")
+    app.controls["size"].value = 32
+    assert app.windows[1].shape == (32, 32)
+    # The grid has one line per pixel edge: 33 columns and 33 rows.
+    assert len(app.panels[1].grid.get_segments()) == 66
+    # Every window size fills its 192-pixel panel at a whole zoom.
+    assert all(ZoomApp.PANEL % size == 0 for size in ZoomApp.SIZES)
+    assert app.describe().startswith("ZoomApp(position=0.1, size=32, left='nearest_round'")
 
 
-def test_zoom_app_rejects_unknown_picks(images, exact):
+def test_dragging_a_control_point_redraws_every_window_for_the_new_curve():
+    app = ZoomApp(CURVE, SHAPE, picks=PICKS, k=16)
+    app.refresh()
+    start = app.picture_point(app.overview, CURVE[1])
+    app.pointer("down", *start)
+    assert app.grabbed == "P1"
+    app.pointer("move", *np.add(start, (-20, 15)))
+    dragging_title = app.panels[3].title.get_text()
+    app.pointer("up", *np.add(start, (-40, 30)))
+    moved = np.asarray(app.points)
+    expected = app.data_point(app.overview, *np.add(start, (-40, 30)))
+    np.testing.assert_allclose(moved[1], np.round(expected, 1))
+    np.testing.assert_array_equal(moved[[0, 2, 3]], CURVE[[0, 2, 3]])
+    assert app.value("points").startswith("2, 2; ")
+    centre = CurveWalk(moved).at(app.value("position"))
+    for index, name in enumerate(PICKS):
+        whole = render(moved, SHAPE, name)
+        np.testing.assert_allclose(app.windows[index], crop(whole, centre, 16)[0], atol=1e-9)
+    exact = reference(moved, SHAPE, 1.0, 16)
+    np.testing.assert_allclose(app.windows[3], crop(exact, centre, 16)[0], atol=1e-9)
+    assert app.panels[3].title.get_text() == dragging_title == "exact reference\n"  # k = 16
+
+
+def test_while_dragging_the_reference_takes_fewer_samples():
+    app = ZoomApp(CURVE, SHAPE, picks=PICKS, k=32)
+    app.refresh()
+    start = app.picture_point(app.overview, CURVE[2])
+    app.pointer("down", *start)
+    app.pointer("move", *np.add(start, (5, 0)))
+    assert app.panels[3].title.get_text().startswith("reference, k = 16 (drag)")
+    app.pointer("up", *np.add(start, (5, 0)))
+    assert app.panels[3].title.get_text() == "exact reference\n"
+
+
+def test_zoom_app_rejects_unknown_picks_and_keeps_points_on_bad_text():
     with pytest.raises(ValueError, match="picks must be three names"):
-        ZoomApp(images, CURVE, exact, picks=("nearest_round", "gaussian", "stroke_area"))
+        ZoomApp(CURVE, SHAPE, picks=("nearest_round", "gaussian", "stroke_area"))
+    app = ZoomApp(CURVE, SHAPE, picks=PICKS, k=16)
+    app.controls["points"].value = "1, 2; 3, 4"
+    assert "expected 4 points" in app.status.value
+    np.testing.assert_array_equal(app.points, CURVE)
 
 
 def test_step_app_shows_gaps_saturation_and_the_fix():

@@ -14,12 +14,11 @@ from course.widgets.dithering import (
 )
 
 
-def test_comparison_app_crops_follow_the_sliders_and_show_each_method():
+def test_comparison_app_crops_follow_the_window_and_show_each_method():
     gray = ramp((40, 96))
     app = DitherComparisonApp(gray, size=8)
     before = app.refresh()
-    app.controls["x"].value = 20
-    app.controls["y"].value = 30
+    app.controls["window"].value = "20, 30"
     assert app.view.image.value != before
     # Window of 8 around (20.5, 30.5), shifted to stay on the 40-row image.
     rows, columns = slice(26, 34), slice(16, 24)
@@ -28,7 +27,28 @@ def test_comparison_app_crops_follow_the_sliders_and_show_each_method():
     ordered = dither.ordered(gray)[3 * 26 : 3 * 34, 3 * 16 : 3 * 24]
     assert np.array_equal(app.crops["ordered 3x3"].get_array(), ordered)
     assert app.window.get_x() == 16 and app.window.get_y() == 26
-    assert app.describe() == "DitherComparisonApp(x=20, y=30)"
+    assert app.describe() == "DitherComparisonApp(window='20, 30')"
+
+
+def test_dragging_the_window_moves_it_by_the_pointer_and_stops_at_the_edge():
+    gray = ramp((40, 96))
+    app = DitherComparisonApp(gray, size=8)
+    app.refresh()
+    start = app.press_point("window")
+    app.pointer("down", *np.add(start, (3, 0)))  # anywhere inside the window grabs it
+    assert app.grabbed == "window"
+    app.pointer("move", *np.add(start, (3 + 20, 10)))
+    app.pointer("up", *np.add(start, (3 + 20, 10)))
+    shift = app.data_point(app.overview, *np.add(start, (20, 10))) - app.data_point(
+        app.overview, *start
+    )
+    expected = np.floor(np.array([48.5, 20.5]) + shift).astype(int)
+    assert app.value("window") == f"{expected[0]}, {expected[1]}"
+    app.drag_along("window", [(10_000, 10_000)])
+    assert app.value("window") == "95, 39"
+    app.controls["window"].value = "200, 3"
+    assert "x must lie from 0 to 95, y from 0 to 39" in app.status.value
+    assert app.value("window") == "200, 3"  # as typed, to be fixed
 
 
 @pytest.mark.parametrize("lit", [0, 4, 9])

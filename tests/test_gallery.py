@@ -46,7 +46,7 @@ def test_writes_every_registered_picture_of_the_lessons_present(tmp_path):
     assert_landmarks(out / "01_de_casteljau_degree3_t0.25.png", spec.landmarks(app))
     # The slider apps' pictures show what the library computes, landmark by landmark.
     for number, name in (
-        ("03", "03_line_bresenham_report_wu"),
+        ("03", "03_triangles_top_left"),
         ("05", "05_seed000_three_splats_position0.10"),
         ("06", "06_gray_level_0.30"),
         ("08", "08_jacobi_1000_sweeps"),
@@ -55,6 +55,11 @@ def test_writes_every_registered_picture_of_the_lessons_present(tmp_path):
         app = spec.build()
         app.refresh()
         assert_landmarks(out / f"{name}.png", spec.landmarks(app))
+    # A dragging app's picture, as the gallery draws it before any drag.
+    spec = LESSONS["08"].drags[0]
+    app = spec.build()
+    app.refresh()
+    assert_landmarks(out / "08_drag_the_plane.png", spec.landmarks(app))
     # A still figure is the width its notebook asks for (900 px), cropped to its content.
     assert abs(Image.open(out / "06_dithering_table.png").size[0] - 900) < 45
 

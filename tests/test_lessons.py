@@ -7,6 +7,7 @@ stop away.
 """
 
 import io
+import re
 
 import numpy as np
 import pytest
@@ -126,23 +127,66 @@ def test_zoom_landmarks_are_the_crop_of_each_rendering_around_the_curve_point():
         window, (left, right, bottom, top) = crop(image, centre, 16)
         assert (right - left, bottom - top) == (16, 16)
         own = [mark for mark in marks if mark.what.startswith(f"{name} at position 0.500")]
-        # One landmark per pixel of the window, coloured as crop() gives it, in order.
+        # One landmark per pixel of the window, coloured as the whole rendering's crop.
         assert [mark.color for mark in own] == [gray_color(value) for value in window.ravel()]
         assert own[17].what.endswith(f"pixel ({left + 1}, {top + 1}) = {window[1, 1]:.2f}")
 
 
 def test_line_landmarks_are_every_pixel_of_the_three_rasterizers():
-    (spec,) = LESSONS["03"].sliders
+    spec = next(drag for drag in LESSONS["03"].drags if drag.handle == "p1")
     app = spec.build()
-    app.controls["y1"].value = 29  # (3, 6) to (27, 29): steep, octant 1
+    app.controls["endpoints"].value = "3, 6; 27, 29"  # steep, octant 1
     marks = spec.landmarks(app)
-    assert len(marks) == 3 * 32 * 32
+    near_ends = 2 * 9 - 2  # pixels within 1.5 of an end: 9 around each, less what they share
+    assert len(marks) == 3 * (32 * 32 - 2 * 9)
     black = [mark for mark in marks if "line((3, 6), (27, 29)) pixel" in mark.what]
     white = [mark for mark in marks if "not a Bresenham pixel" in mark.what]
-    assert len(black) == max(27 - 3, 29 - 6) + 1
+    assert len(black) == max(27 - 3, 29 - 6) + 1 - 4  # less the two pixels next to each end
     assert {mark.color for mark in black} == {(0, 0, 0)}
+    assert near_ends == 16
     # The report's staircase has |dx| + |dy| + 1 pixels, Bresenham's max(|dx|, |dy|) + 1.
-    assert len(white) == (24 + 23 + 1) - len(black) and {m.color for m in white} == {(255,) * 3}
+    assert {m.color for m in white} == {(255,) * 3} and len(white) > 15
+
+
+def test_triangle_landmarks_colour_each_pixel_by_who_paints_it():
+    spec = next(drag for drag in LESSONS["03"].drags if drag.handle == "B")
+    app = spec.build()
+    app.controls["rule"].value = "closed"
+    marks = spec.landmarks(app)
+    both = [mark for mark in marks if mark.what.endswith("painted by both")]
+    assert {mark.color for mark in both} == {(220, 20, 60)}  # crimson
+    listed = {tuple(map(int, re.findall(r"pixel \((\d+), (\d+)\)", m.what)[0])) for m in both}
+    doubled = {(int(c), int(r)) for r, c in np.argwhere(app.counts == 2)}
+    # Every pixel painted twice is a landmark, but those under a vertex's label.
+    far = {p for p in doubled if np.hypot(*(app.vertices() - np.add(p, 0.5)).T).min() >= 2}
+    assert far and far <= listed <= doubled
+
+
+DRAGS = [
+    pytest.param(spec, id=f"{number}-{spec.handle}")
+    for number, lesson in LESSONS.items()
+    for spec in lesson.drags
+]
+
+
+def test_the_issue_s_drags_are_registered():
+    assert {"01-P1", "03-B", "08-foreground"} <= {param.id for param in DRAGS}
+
+
+@pytest.mark.parametrize("spec", DRAGS)
+def test_after_a_registered_drag_the_landmarks_hold_and_the_picture_before_fails_them(spec):
+    app = spec.build()
+    before = refreshed(app)
+    start = app.press_point(spec.handle)
+    assert app.handle_at(*start).name == spec.handle  # a press there grabs it
+    app.drag_along(spec.handle, spec.path)
+    assert app.grabbed is None
+    after = rgb(bytes(app.view.image.value))
+    landmarks = spec.landmarks(app)
+    assert landmarks and all(shows(after, mark) for mark in landmarks)
+    # The browser test checks the same: a picture that missed the drag must fail.
+    assert differing_share(before, after) > DIFFERING_SHARE
+    assert not all(shows(before, mark) for mark in landmarks)
 
 
 def test_gray_level_landmarks_frame_the_pattern_dither_ordered_picks():

@@ -1,23 +1,24 @@
-"""course.widgets.lines_and_triangles: moving a slider redraws what the library computes."""
+"""course.widgets.lines_and_triangles: a drag, a typed point or a slider redraws the library."""
 
 import numpy as np
 import pytest
 
+from course.bezier_handouts import bresenham_curve, segments_report
 from course.canvas import blank, paint
 from course.raster import line, line_4connected, triangle, triangle_coverage
-from course.widgets.lines_and_triangles import LineApp, TriangleApp
+from course.widgets.base import parse_points
+from course.widgets.lines_and_triangles import CurveSegmentsApp, LineApp, TriangleApp
 
 
-def set_values(app, **values):
-    for name, value in values.items():
-        app.controls[name].value = value
+def set_ends(app, p0, p1):
+    app.controls["endpoints"].value = f"{p0[0]}, {p0[1]}; {p1[0]}, {p1[1]}"
 
 
-def test_line_app_draws_both_lines_where_the_sliders_put_them():
+def test_line_app_draws_both_lines_where_the_text_puts_them():
     app = LineApp()
     app.refresh()
     before = app.view.image.value
-    set_values(app, x0=30, y0=2, x1=4, y1=25)
+    set_ends(app, (30, 2), (4, 25))
     assert app.view.image.value != before
     expected = paint(blank((32, 32)), line((30, 2), (4, 25)), 1.0)
     np.testing.assert_array_equal(app.panels["bresenham"].get_array(), expected)
@@ -33,7 +34,7 @@ def test_line_app_reaches_every_octant():
     centre = (16, 16)
     seen = set()
     for target in [(28, 20), (20, 28), (12, 28), (4, 20), (4, 12), (12, 4), (20, 4), (28, 12)]:
-        set_values(app, x0=centre[0], y0=centre[1], x1=target[0], y1=target[1])
+        set_ends(app, centre, target)
         seen.add(app.heading.get_text().rsplit(" ", 1)[1])
         painted = int(app.panels["bresenham"].get_array().sum())
         assert painted == max(abs(target[0] - 16), abs(target[1] - 16)) + 1
@@ -49,9 +50,37 @@ def test_line_app_shows_the_pixels_on_screen():
     panel = dark[:, : rgba.shape[1] // 3]
     rows = np.flatnonzero(panel.sum(axis=1) > 100)
     assert len(rows) > 0
-    set_values(app, y0=31, y1=31)
+    set_ends(app, (0, 31), (31, 31))
     moved = (app.view.pixels()[..., :3] < 60).all(axis=2)[:, : rgba.shape[1] // 3]
     assert np.flatnonzero(moved.sum(axis=1) > 100).mean() > rows.mean() + 100
+
+
+def test_dragging_an_end_in_any_panel_snaps_it_to_the_pixel_under_the_pointer():
+    app = LineApp()
+    app.refresh()
+    wu = app.panels["wu"].axes
+    start = app.picture_point(wu, (27.5, 17.5))  # the centre of p1's pixel, in the Wu panel
+    app.pointer("down", *start)
+    assert app.grabbed == "p1" and app.highlight_ring(wu)[0].get_xydata().tolist() == [[27.5, 17.5]]
+    target = app.picture_point(wu, (10.7, 29.2))
+    app.pointer("move", *target)
+    app.pointer("up", *target)
+    assert app.endpoints() == ((3, 6), (10, 29)) and app.value("endpoints") == "3, 6; 10, 29"
+    expected = paint(blank((32, 32)), line((3, 6), (10, 29)), 1.0)
+    np.testing.assert_array_equal(app.panels["bresenham"].get_array(), expected)
+    app.drag_along("p0", [(-5000, -5000)])  # far past the grid: the corner pixel
+    assert app.endpoints()[0] == (0, 0)
+
+
+def test_line_app_keeps_the_last_line_on_bad_text():
+    app = LineApp()
+    for text, words in (
+        ("1, 2", "expected 2 points; got 1"),
+        ("1.5, 2; 3, 4", "expected whole pixels"),
+        ("0, 0; 40, 3", "x must lie from 0 to 31, y from 0 to 31"),
+    ):
+        app.controls["endpoints"].value = text
+        assert words in app.status.value and app.endpoints() == ((3, 6), (27, 17))
 
 
 # A square split along its diagonal, which passes through 8 pixel centres
@@ -64,7 +93,7 @@ SQUARE = ((1.0, 1.0), (9.0, 1.0), (9.0, 9.0), (1.0, 9.0))
 )
 def test_triangle_app_counts_what_the_rule_does_to_the_shared_edge(rule, twice, missed):
     app = TriangleApp(vertices=SQUARE, rule="closed" if rule == "top-left" else "top-left")
-    set_values(app, rule=rule)
+    app.controls["rule"].value = rule
     title = app.left.get_title()
     assert f"{twice} painted twice, {missed} missed" in title
     first = triangle(*SQUARE[:3], shape=(16, 16), rule=rule)
@@ -75,17 +104,59 @@ def test_triangle_app_counts_what_the_rule_does_to_the_shared_edge(rule, twice, 
     assert int((owners > 0).sum()) == 64 - missed
 
 
-def test_triangle_app_moves_a_vertex_and_shows_the_coverage_at_the_rate():
+def test_triangle_app_moves_a_dragged_vertex_and_shows_the_coverage_at_the_rate():
     app = TriangleApp()
     app.refresh()
     before = app.view.image.value
-    set_values(app, bx=15.25, by=0.5, rate=7)
+    start = app.picture_point(app.right, (13.5, 3.0))  # B, grabbed in the coverage panel
+    app.pointer("down", *start)
+    assert app.grabbed == "B"
+    app.pointer("up", *app.picture_point(app.right, (15.3, 0.6)))  # snaps to quarter pixels
+    app.controls["rate"].value = 7
     assert app.view.image.value != before
     a, b, c, d = app.vertices()
     assert tuple(b) == (15.25, 0.5)
+    assert parse_points(app.value("vertices"))[1].tolist() == [15.25, 0.5]
     expected = blank((16, 16))
     for triple in ((a, b, c), (a, c, d)):
         pixels, weights = triangle_coverage(*triple, (16, 16), 7)
         paint(expected, pixels, 1.0, weight=weights)
     np.testing.assert_allclose(app.coverage.get_array(), expected)
     assert "7 x 7 samples" in app.right.get_title()
+
+
+def test_curve_segments_app_draws_the_lab_s_lines_and_counts_them():
+    app = CurveSegmentsApp(segments=4)
+    app.refresh()
+    control = app.control.copy()
+    report = segments_report(control, 4)
+    picture = np.asarray(app.pixels.get_array())
+    drawn = np.unique(bresenham_curve(control, 4), axis=0)
+    assert set(map(tuple, np.argwhere(picture == 1)[:, ::-1].tolist())) == {
+        tuple(p)
+        for p in drawn.tolist()
+        if tuple(p) not in set(map(tuple, report["off_pixels"].tolist()))
+    }
+    assert (picture == 2).sum() == report["off"] and (picture == 3).sum() == report["missed"]
+    assert f"{report['off']} off the curve" in app.grid_axes.get_title()
+    assert list(app.counts["twice"].get_ydata())[:3] == [
+        segments_report(control, n)["twice"] for n in (1, 2, 4)
+    ]
+    app.controls["segments"].value = 16
+    assert "16 segments" in app.grid_axes.get_title()
+    assert list(app.now.get_xdata()) == [16, 16]
+
+
+def test_dragging_a_control_point_of_the_segments_app_redraws_them():
+    app = CurveSegmentsApp(segments=8)
+    app.refresh()
+    start = app.drag_along("P2", [(10, 10), (-40, 30)])
+    moved = parse_points(app.value("points"))
+    expected = np.round(app.data_point(app.grid_axes, *np.add(start, (-40, 30))), 1)
+    np.testing.assert_allclose(moved[2], expected)
+    # Ten screen pixels per grid pixel: a whole zoom.
+    box = app.grid_axes.get_window_extent()
+    assert (round(box.width, 6), round(box.height, 6)) == (400, 400)
+    assert (round(box.x0, 6), round(box.y0, 6)) == (40, 30)
+    report = segments_report(moved, 8)
+    assert (np.asarray(app.pixels.get_array()) == 2).sum() == report["off"]

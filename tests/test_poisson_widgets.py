@@ -5,7 +5,7 @@ import pytest
 import scipy.ndimage
 
 from course import poisson
-from course.widgets.poisson import PoissonIterationApp
+from course.widgets.poisson import CloneApp, PoissonIterationApp, half_size
 
 RNG = np.random.default_rng(4)
 BACKGROUND = scipy.ndimage.gaussian_filter(RNG.random((40, 60, 3)), (3, 3, 0)) * 0.5 + 0.25
@@ -60,3 +60,26 @@ def test_the_default_scene_is_the_lab_scene():
     assert app.problem.corner == (500, 300)
     assert app.problem.region.shape == (111, 280)
     assert app.describe() == "PoissonIterationApp(method='jacobi', sweeps=0)"
+
+
+def test_the_clone_app_follows_a_drag_with_the_library_s_paste_and_clone():
+    background = np.tile(np.linspace(0.2, 0.8, 40), (30, 1))
+    foreground = np.full((10, 12), 0.9)
+    foreground[3:7, 4:8] = 0.1  # a dark spot on a light patch
+    app = CloneApp(background, foreground, offset=(4, 6))
+    app.refresh()
+    start = app.drag_along("foreground", [(5, 5), (3.0, 2.0)])
+    x, y = app.offset
+    # Grabbed at the patch's middle, (4 + 6, 6 + 5); a screen pixel is 2 image pixels.
+    pointer = app.data_point(app.panels["naive paste"].axes, *np.add(start, (3, 2)))
+    np.testing.assert_allclose(pointer, (10 + 6, 11 + 4))
+    assert (x, y) == (10, 10) and app.value("offset") == "10, 10"
+    clone = half_size(poisson.seamless_clone(background, foreground, (x, y)))
+    naive = half_size(poisson.naive_paste(background, foreground, (x, y)))
+    np.testing.assert_allclose(app.panels["seamless clone"].get_array(), clone, atol=1e-12)
+    np.testing.assert_array_equal(app.panels["naive paste"].get_array(), naive)
+    app.drag_along("foreground", [(-10_000, 10_000)])  # beyond the image: the corner it fits
+    assert tuple(app.offset) == (0, 30 - 10)
+    app.controls["offset"].value = "35, 0"
+    assert "x must lie from 0 to 28" in app.status.value and tuple(app.offset) == (0, 20)
+    assert app.view.image.format == "jpeg" and bytes(app.view.image.value)[:2] == b"\xff\xd8"

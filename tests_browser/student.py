@@ -22,7 +22,7 @@ from PIL import Image
 from playwright.sync_api import Locator, Page
 
 from course.classroom.pictures import DIFFERING_SHARE, differing_share
-from course.classroom.registry import Landmark, SliderMove
+from course.classroom.registry import DragMove, Landmark, SliderMove
 from course.classroom.sliders import (
     nearest_stop,
     neighbour_value,
@@ -49,13 +49,14 @@ _ERROR_TEXT = re.compile(
 
 
 def slider_apps_in(path: Path) -> int:
-    """How many slider apps the committed notebook shows (widget view plus still PNG)."""
+    """How many apps the committed notebook shows (widget view plus a still picture)."""
     notebook = json.loads(path.read_text(encoding="utf-8"))
     return sum(
         1
         for cell in notebook["cells"]
         for output in cell.get("outputs", [])
-        if SLIDER_APP_MIME in output.get("data", {}) and "image/png" in output.get("data", {})
+        if SLIDER_APP_MIME in output.get("data", {})
+        and ({"image/png", "image/jpeg"} & set(output.get("data", {})))
     )
 
 
@@ -169,8 +170,9 @@ def tall_screenshot(
 
 
 def nth_app(page: Page, index: int) -> Locator:
-    """The page's slider app number ``index`` (from 0): the box around its picture."""
-    return page.locator("img.widget-image").nth(index).locator("xpath=..")
+    """The page's app number ``index`` (from 0): the box around its picture and controls."""
+    picture = page.locator("img.widget-image").nth(index)
+    return picture.locator("xpath=ancestor::div[contains(@class, 'widget-hbox')][1]")
 
 
 def slider(app: Locator, description: str) -> Locator:
@@ -259,8 +261,11 @@ def key_names(keys: tuple[str, ...]) -> str:
     return "-".join(key if count == 1 else f"{count}x{key}" for key, count in groups)
 
 
-def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem: str) -> None:
-    """Every registered move on the app's slider, each checked and screenshotted."""
+def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem: str) -> Any:
+    """Every registered move on the app's slider, each checked and screenshotted.
+
+    Returns the value the slider is left at.
+    """
     control = spec.build().controls[spec.control]
     app = nth_app(page, spec.app)
     # Before any move, the page must show what spec.build() draws: the registry
@@ -281,4 +286,65 @@ def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem
         name = f"{stem}{which}-move{step}-{key_names(keys)}-{spec.control}={move.value:g}"
         app.screenshot(path=folder / f"{name}.png")
         assert_shows_what_the_library_computes(move, spec, control)
+    assert not error_outputs(page), error_outputs(page)
+    return value
+
+
+def drag_like_a_student(
+    page: Page, spec: DragMove, folder: Path, stem: str, settings: dict | None = None
+) -> None:
+    """Press the handle where the page draws it, move along the path, release; then check.
+
+    ``settings`` are the control values the page's app holds already (the
+    sliders moved before): the library's app takes them first. The page's
+    picture after the drag must be what the library draws after the same
+    drag in plain Python (``SliderApp.drag_along``), landmarks included; the
+    picture before the drag must fail them.
+    """
+    app = nth_app(page, spec.app)
+    image = app.locator("img.widget-image").first
+    image.scroll_into_view_if_needed()
+    built = spec.build()
+    built.refresh()
+    for name, value in (settings or {}).items():
+        built.controls[name].value = value
+    before = read_picture(image)
+    differing = differing_share(before, rgb(bytes(built.view.image.value)))
+    assert differing <= DIFFERING_SHARE, (
+        f"before the drag, {differing:.2%} of the pixels differ from what the registry's "
+        "build() draws: does it build the app as the notebook's cell does?"
+    )
+    start = built.press_point(spec.handle)
+    box = image.bounding_box()
+    scale = np.array(
+        [box["width"] / built.view.image.width, box["height"] / built.view.image.height]
+    )
+
+    def on_page(point: np.ndarray) -> tuple[float, float]:
+        x, y = np.array([box["x"], box["y"]]) + np.asarray(point) * scale
+        return float(x), float(y)
+
+    before_src = image.get_attribute("src")
+    page.mouse.move(*on_page(start))
+    page.mouse.down()
+    for offset in spec.path:
+        page.mouse.move(*on_page(start + np.asarray(offset)), steps=4)
+    page.mouse.up()
+    wait_for_new_picture(image, before_src)
+    after = read_picture(image)
+    app.screenshot(path=folder / f"{stem}-drag-{spec.handle}.png")
+
+    built.drag_along(spec.handle, spec.path)
+    expected, landmarks = rgb(bytes(built.view.image.value)), spec.landmarks(built)
+    differing = differing_share(after, expected)
+    assert differing <= DIFFERING_SHARE, (
+        f"after dragging {spec.handle} along {spec.path}, {differing:.2%} of the pixels differ "
+        f"from the library's picture (tolerance {DIFFERING_SHARE:.2%})"
+    )
+    wrong = failing_landmarks(after, landmarks)
+    assert not wrong, f"{len(wrong)} of {len(landmarks)} landmarks fail: {wrong[:5]}"
+    # The two checks must be able to fail: the picture before the drag fails one.
+    assert differing_share(before, expected) > DIFFERING_SHARE or failing_landmarks(
+        before, landmarks
+    ), "the picture before the drag would pass as the picture after it"
     assert not error_outputs(page), error_outputs(page)

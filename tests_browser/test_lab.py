@@ -1,4 +1,4 @@
-"""Every notebook run in JupyterLab in Chromium, and each registered slider moved by keyboard.
+"""Every notebook run in JupyterLab in Chromium; each registered slider moved, each drag made.
 
 For each ``notebooks/NN_*.ipynb``: open it, clear the committed outputs (so
 that only what this run produces is seen), Run All Cells from the menu, wait
@@ -9,7 +9,9 @@ module in ``course.lessons`` registers, the slider is moved with the keyboard,
 and after each move the picture must have changed and match what the
 library renders for the value the slider now shows, landmarks included
 (lesson 01: the red dot at the point ``de_casteljau`` returns; lesson 03:
-the Bresenham pixels where ``course.raster.line`` puts them).
+the Bresenham pixels where ``course.raster.line`` puts them). Each registered
+drag is made with the mouse, pressed where the picture draws the handle, and
+the picture must then show what the library draws after the same drag.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from playwright.sync_api import Page
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 from course.classroom.registry import lessons
 from tests_browser.student import (
+    drag_like_a_student,
     error_outputs,
     move_sliders_like_a_student,
     slider_apps_in,
@@ -106,8 +109,13 @@ def test_notebook_runs_in_jupyterlab_and_its_sliders_work(book, lab, page, scree
         assert page.locator("img.widget-image").count() >= apps
         assert not unrendered_apps(page), unrendered_apps(page)
 
-        for spec in LESSONS[book.number].sliders if book.number in LESSONS else ():
-            move_sliders_like_a_student(page, spec, folder, book.path.stem)
+        lesson = LESSONS.get(book.number)
+        moved: dict[int, dict] = {}  # app -> the sliders' values after their moves
+        for spec in lesson.sliders if lesson else ():
+            value = move_sliders_like_a_student(page, spec, folder, book.path.stem)
+            moved.setdefault(spec.app, {})[spec.control] = value
+        for spec in lesson.drags if lesson else ():
+            drag_like_a_student(page, spec, folder, book.path.stem, moved.get(spec.app))
     finally:
         shut_down_kernels(lab)
 

@@ -1,4 +1,4 @@
-"""One lesson as ``make app`` serves it: Voila, code hidden, the slider live.
+"""One lesson as ``make app`` serves it: Voila, code hidden, the slider and the drags live.
 
 The lesson is the first one whose module in ``course.lessons`` registers a
 slider. Voila streams the page while its kernel runs the notebook, so the
@@ -16,6 +16,7 @@ import pytest
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 from course.classroom.registry import lessons
 from tests_browser.student import (
+    drag_like_a_student,
     error_outputs,
     move_sliders_like_a_student,
     slider_apps_in,
@@ -65,5 +66,9 @@ def test_a_lesson_served_by_voila_hides_its_code_and_its_slider_works(voila, pag
     assert not visible_code, f"code is visible: {visible_code[:5]}"
     assert code_lines(book.path), "the check above needs code lines to look for"
 
+    moved: dict[int, dict] = {}  # app -> the sliders' values after their moves
     for spec in LESSONS[book.number].sliders:
-        move_sliders_like_a_student(page, spec, folder, book.path.stem)
+        value = move_sliders_like_a_student(page, spec, folder, book.path.stem)
+        moved.setdefault(spec.app, {})[spec.control] = value
+    for spec in LESSONS[book.number].drags:
+        drag_like_a_student(page, spec, folder, book.path.stem, moved.get(spec.app))

@@ -55,8 +55,17 @@ DIFFERING_SHARE = 0.001
 
 
 def app_picture(app: SliderApp) -> bytes:
-    """The PNG an app shows for its current control values."""
-    return app.refresh()
+    """The picture an app shows for its current control values, as a PNG.
+
+    A photographic app sends JPEG to the browser; its picture is encoded
+    again here, losslessly, from the figure as drawn.
+    """
+    shown = app.refresh()
+    if app.view.image.format == "png":
+        return shown
+    buffer = io.BytesIO()
+    PILImage.fromarray(np.asarray(app.view.canvas.buffer_rgba())).save(buffer, format="png")
+    return buffer.getvalue()
 
 
 def figure_picture(figure: Figure) -> bytes:

@@ -3,9 +3,9 @@
 A lesson is a notebook ``notebooks/NN_topic.ipynb`` and a module
 ``course/lessons/lNN_topic.py`` that defines ``LESSON``, a :class:`Lesson`:
 the handout task it answers, what it teaches in one line, its key pictures
-(for ``python -m course gallery`` and the course map) and the sliders that
-the browser tests move like a student, with the pixels the picture must then
-show. The modules are discovered, not listed: adding a lesson is adding its
+(for ``python -m course gallery`` and the course map) and the sliders and
+drags that the browser tests make like a student, with the pixels the
+picture must then show. The modules are discovered, not listed: adding a lesson is adding its
 files. For example, ``course/lessons/l03_lines_and_triangles.py`` holds::
 
     LESSON = Lesson(
@@ -42,6 +42,7 @@ from typing import Any
 __all__ = [
     "LESSONS_PACKAGE",
     "LESSON_MODULE",
+    "DragMove",
     "Landmark",
     "Lesson",
     "Picture",
@@ -94,6 +95,27 @@ class SliderMove:
 
 
 @dataclass(frozen=True)
+class DragMove:
+    """How a student drags one thing on a lesson's app, and what must follow.
+
+    ``build`` makes the app (a :class:`course.widgets.base.SliderApp`) as the
+    notebook's cell does; ``handle`` names what is grabbed (the first of the
+    app's handles of that name, :meth:`~course.widgets.base.SliderApp.handles`),
+    pressed where it is drawn. ``path`` lists the pointer's moves as offsets
+    in picture pixels from that press; it is released at the last one.
+    ``landmarks(app)`` names pixels whose colour the library computes for
+    the app after the drag (for lesson 01, B(t) for the moved points).
+    ``app`` counts the notebook's apps from 0, as in :class:`SliderMove`.
+    """
+
+    build: Callable[[], Any]
+    handle: str
+    path: tuple[tuple[float, float], ...]
+    landmarks: Callable[[Any], list[Landmark]]
+    app: int = 0
+
+
+@dataclass(frozen=True)
 class Picture:
     """One key figure of a lesson: a file name (no suffix), a caption, a PNG renderer."""
 
@@ -110,6 +132,7 @@ class Lesson:
     teaches: str
     pictures: tuple[Picture, ...] = ()
     sliders: tuple[SliderMove, ...] = ()
+    drags: tuple[DragMove, ...] = ()
 
 
 def lesson_modules() -> dict[str, str]:

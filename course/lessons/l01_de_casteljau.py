@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from course.bezier import de_casteljau
 from course.classroom.pictures import CRIMSON, app_picture, landmark_at
-from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
 from course.images import EXAMPLE_POINTS
-from course.widgets.base import SliderApp
-from course.widgets.de_casteljau import DeCasteljauApp, parse_points
+from course.widgets.base import SliderApp, parse_points
+from course.widgets.de_casteljau import DeCasteljauApp
 
 
 def de_casteljau_landmarks(app: SliderApp) -> list[Landmark]:
@@ -42,6 +42,14 @@ LESSON = Lesson(
             build=DeCasteljauApp,
             control="t",
             moves=(("ArrowRight", "ArrowRight", "ArrowRight"), ("ArrowLeft",), ("End",)),
+            landmarks=de_casteljau_landmarks,
+        ),
+    ),
+    drags=(
+        DragMove(
+            build=DeCasteljauApp,
+            handle="P1",
+            path=((15, 20), (40, 55), (70, 90)),
             landmarks=de_casteljau_landmarks,
         ),
     ),

@@ -5,6 +5,7 @@ from __future__ import annotations
 import itertools
 
 import numpy as np
+from matplotlib.colors import to_rgb
 
 from course.classroom.pictures import (
     BLACK,
@@ -14,10 +15,16 @@ from course.classroom.pictures import (
     colormap_color,
     landmark_at,
 )
-from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.raster import line, line_4connected, wu_line
+from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
+from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
 from course.widgets.base import SliderApp
-from course.widgets.lines_and_triangles import LineApp, TriangleApp
+from course.widgets.lines_and_triangles import (
+    OWNER_COLORS,
+    TRIANGLE_GRID,
+    CurveSegmentsApp,
+    LineApp,
+    TriangleApp,
+)
 
 
 def line_landmarks(app: SliderApp) -> list[Landmark]:
@@ -26,8 +33,7 @@ def line_landmarks(app: SliderApp) -> list[Landmark]:
     Bresenham's and the report's pixels black on white, Wu's weights in
     grays; a pixel the report lights and Bresenham does not is named so.
     """
-    p0 = (int(app.value("x0")), int(app.value("y0")))
-    p1 = (int(app.value("x1")), int(app.value("y1")))
+    p0, p1 = app.endpoints()
     ideal = np.array([[np.add(p0, 0.5), np.add(p1, 0.5)]])
     bresenham = {tuple(pixel) for pixel in line(p0, p1).tolist()}
     staircase = {tuple(pixel) for pixel in line_4connected(p0, p1).tolist()}
@@ -37,6 +43,8 @@ def line_landmarks(app: SliderApp) -> list[Landmark]:
     grid = app.panels["bresenham"].get_array().shape[0]
     landmarks = []
     for pixel in itertools.product(range(grid), repeat=2):
+        if min(np.hypot(*np.subtract(pixel, end)) for end in (p0, p1)) < 1.5:
+            continue  # under the end's dot
         point = clear_point(*pixel, ideal)
         drawn = pixel in bresenham
         if drawn:
@@ -54,6 +62,57 @@ def line_landmarks(app: SliderApp) -> list[Landmark]:
     return landmarks
 
 
+def _triangle_pixels(app: SliderApp) -> list[tuple[tuple[int, int], tuple[float, float]]]:
+    """Each pixel of the 16 x 16 grid, and a point in it clear of the outlines and labels."""
+    corners = app.vertices()
+    a, _, c, _ = corners
+    outline = np.array([[corners[i], corners[(i + 1) % 4]] for i in range(4)] + [[a, c]])
+    pixels = []
+    for column, row in itertools.product(range(TRIANGLE_GRID), repeat=2):
+        if np.hypot(*(corners - (column + 0.5, row + 0.5)).T).min() < 2.0:
+            continue  # a vertex's label or highlight may cover it
+        pixels.append(((column, row), clear_point(column, row, outline)))
+    return pixels
+
+
+def triangle_landmarks(app: SliderApp) -> list[Landmark]:
+    """Left panel: who paints each pixel, by ``raster.triangle`` with the app's rule."""
+    a, b, c, d = app.vertices()
+    shape = (TRIANGLE_GRID, TRIANGLE_GRID)
+    rule = app.value("rule")
+    first = hit_counts([triangle(a, b, c, shape=shape, rule=rule)], shape) > 0
+    second = hit_counts([triangle(a, c, d, shape=shape, rule=rule)], shape) > 0
+    owners = np.where(first & second, 3, first + 2 * second)
+    names = ("nobody", "ABC", "ACD", "both")
+    landmarks = []
+    for (column, row), point in _triangle_pixels(app):
+        owner = int(owners[row, column])
+        color = tuple(round(channel * 255) for channel in to_rgb(OWNER_COLORS[owner]))
+        what = f"triangle({rule}) pixel ({column}, {row}) painted by {names[owner]}"
+        landmarks.append(landmark_at(app, app.left, point, color, what))
+    return landmarks
+
+
+def coverage_landmarks(app: SliderApp) -> list[Landmark]:
+    """Right panel: each pixel's coverage by ``raster.triangle_coverage`` at the app's rate."""
+    a, b, c, d = app.vertices()
+    shape = (TRIANGLE_GRID, TRIANGLE_GRID)
+    rule, rate = app.value("rule"), int(app.value("rate"))
+    coverage = np.zeros(shape)
+    for triple in ((a, b, c), (a, c, d)):
+        pixels, weights = triangle_coverage(*triple, shape, rate, rule=rule)
+        np.add.at(coverage, (pixels[:, 1], pixels[:, 0]), weights)
+    coverage = np.minimum(coverage, 1.0)
+    landmarks = []
+    for (column, row), point in _triangle_pixels(app):
+        value = float(coverage[row, column])
+        what = f"coverage at rate {rate}, pixel ({column}, {row}) = {value:.3f}"
+        color = colormap_color("Greys", value)
+        # Tolerance 2: the rates next to each other differ by a few grey levels.
+        landmarks.append(landmark_at(app, app.right, point, color, what, 2))
+    return landmarks
+
+
 def triangle_picture(rule: str) -> bytes:
     app = TriangleApp()
     app.controls["rule"].value = rule
@@ -61,16 +120,24 @@ def triangle_picture(rule: str) -> bytes:
 
 
 LESSON = Lesson(
-    handout="Lab 1 report (seed 001), Task 4 (Bresenham's line in every octant) and "
-    "Task 5 (scanline triangle filling)",
+    handout="Lab 1 report (seed 001), Task 4 (Bresenham's line in every octant), Task 5 "
+    "(scanline triangle filling) and Task 7 (the Bézier curve drawn with lines)",
     teaches="Bresenham's line in all eight octants against the report's 4-connected "
-    "staircase; filled triangles with the top-left rule, no cracks and no double paint",
+    "staircase; a curve as connected segments; filled triangles with the top-left rule, "
+    "no cracks and no double paint",
     pictures=(
         Picture(
             "03_line_bresenham_report_wu",
             "the line from (3, 6) to (27, 17): Bresenham, the report's staircase "
             "(|dx| + |dy| + 1 pixels) and Wu's anti-aliased line",
             lambda: app_picture(LineApp()),
+        ),
+        Picture(
+            "03_curve_as_4_segments",
+            "a cubic drawn as 4 Bresenham segments on a 40 x 40 grid: where the chords "
+            "stray off the curve, and how that falls with more segments while the joints "
+            "are drawn twice",
+            lambda: app_picture(CurveSegmentsApp()),
         ),
         Picture(
             "03_triangles_top_left",
@@ -87,10 +154,26 @@ LESSON = Lesson(
     ),
     sliders=(
         SliderMove(
+            build=TriangleApp,
+            control="rate",
+            moves=(("ArrowLeft", "ArrowLeft"), ("Home",), ("End",)),
+            landmarks=coverage_landmarks,
+            app=2,
+        ),
+    ),
+    drags=(
+        DragMove(
             build=LineApp,
-            control="y1",
-            moves=(("ArrowRight",) * 4, ("Home",), ("End",)),
+            handle="p1",
+            path=((-20, 15), (-60, 50), (-110, 90)),
             landmarks=line_landmarks,
+        ),
+        DragMove(
+            build=TriangleApp,
+            handle="B",
+            path=((-20, 10), (-50, 40), (-70, 55)),
+            landmarks=triangle_landmarks,
+            app=2,
         ),
     ),
 )

@@ -7,7 +7,6 @@ import functools
 import numpy as np
 
 from course.bezier import de_casteljau
-from course.canvas import crop
 from course.classroom.pictures import (
     app_picture,
     clear_point,
@@ -19,12 +18,11 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.coverage import curve_polyline, reference
-from course.curve_quality import variants
+from course.curve_quality import REFERENCE, render_window, variants
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
-from course.widgets.antialiasing import CurveWalk, StepApp, ZoomApp, zoom_figure
+from course.widgets.antialiasing import ZOOM_PICKS, CurveWalk, StepApp, ZoomApp, zoom_figure
 from course.widgets.base import SliderApp
 
-ZOOM_PICKS = ("bilinear_zero_offset", "bilinear_corners", "bilinear_centres")
 # The variants the notebook zooms into, in its order (its "Every variant" cell).
 ZOOMED_VARIANTS = (
     "nearest_round",
@@ -53,26 +51,24 @@ def seed_000_renderings() -> tuple[dict[str, np.ndarray], np.ndarray]:
 
 def zoom_app() -> ZoomApp:
     """Lesson 05's first app, as its notebook builds it."""
-    renderings, exact = seed_000_renderings()
-    return ZoomApp(renderings, SEED_000_CUBIC, exact, picks=ZOOM_PICKS)
+    return ZoomApp(SEED_000_CUBIC, SEED_000_SHAPE, picks=ZOOM_PICKS)
 
 
 def zoom_landmarks(app: SliderApp) -> list[Landmark]:
-    """Every pixel of each panel: ``crop`` of the variant's rendering around the curve point.
+    """Every pixel of each panel: the variant drawn in the window around the curve point.
 
     The window's centre is the point ``position`` of the way along the curve
-    (by arc length); each panel must show ``crop(rendering, centre, size)``,
-    the rendering as ``curve_quality.variants`` and ``coverage.reference`` make it.
+    (by arc length); each panel must show that window of the variant, as
+    ``curve_quality.render_window`` draws it, and of the exact reference.
     """
-    renderings, exact = seed_000_renderings()
+    points = np.asarray(app.points)
     position, size = float(app.value("position")), int(app.value("size"))
-    centre = CurveWalk(SEED_000_CUBIC).at(position)
-    segments = segments_of(curve_polyline(SEED_000_CUBIC, 1e-3))
-    shown = [(app.value(slot), renderings[app.value(slot)]) for slot in ("left", "middle", "right")]
-    shown.append(("exact reference", exact))
+    centre = CurveWalk(points).at(position)
+    segments = segments_of(curve_polyline(points, 1e-3))
+    names = [app.value(slot) for slot in ("left", "middle", "right")] + [REFERENCE]
     landmarks = []
-    for panel, (name, image) in zip(app.panels, shown, strict=True):
-        window, extent = crop(image, centre, size)
+    for panel, name in zip(app.panels, names, strict=True):
+        window, extent = render_window(name, points, SEED_000_SHAPE, centre, size, k=app.k)
         left, _, _, top = extent
         for row, column in np.ndindex(*window.shape):
             x, y = left + column, top + row
@@ -115,8 +111,8 @@ LESSON = Lesson(
         ),
         Picture(
             "05_seed000_three_splats_position0.10",
-            "seed 000's left, middle and right addColor beside the exact reference, "
-            "10% of the way along the curve, with each window's RMSE",
+            "seed 000's curve whole, and its left, middle and right addColor beside the "
+            "exact reference, 10% of the way along the curve, with each window's RMSE",
             lambda: app_picture(zoom_app()),
         ),
         Picture(

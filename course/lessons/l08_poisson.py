@@ -15,9 +15,9 @@ from course.classroom.pictures import (
     read_only,
     rgb_color,
 )
-from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
 from course.widgets.base import SliderApp
-from course.widgets.poisson import MARGIN, PoissonIterationApp, show_images
+from course.widgets.poisson import MARGIN, CloneApp, PoissonIterationApp, half_size, show_images
 
 PLANE_OFFSET = (500, 300)
 AROUND_THE_PLANE = (slice(280, 430), slice(470, 800))
@@ -63,6 +63,38 @@ def poisson_landmarks(app: SliderApp) -> list[Landmark]:
     return landmarks
 
 
+def clone_landmarks(app: SliderApp) -> list[Landmark]:
+    """Both panels where the foreground sits, as ``naive_paste`` and ``seamless_clone`` make them.
+
+    Shown at half size, each screen pixel the mean of 2 x 2 image pixels:
+    the landmarks are a 5 x 5 grid over the region and a ring of points just
+    outside it, where a seam would show.
+    """
+    lake, plane = app.background, app.foreground
+    x, y = (int(v) for v in app.offset)
+    height, width = plane.shape[:2]
+    pictures = {
+        "naive paste": half_size(poisson.naive_paste(lake, plane, (x, y))),
+        "seamless clone": half_size(poisson.seamless_clone(lake, plane, (x, y))),
+    }
+    columns = [x + 2 + round(k * (width - 5) / 4) for k in range(5)] + [x - 3, x + width + 2]
+    rows = [y + 2 + round(k * (height - 5) / 4) for k in range(5)] + [y - 3, y + height + 2]
+    landmarks = []
+    for name, shown in pictures.items():
+        axes = app.panels[name].axes
+        for column in columns:
+            for row in rows:
+                half_row, half_column = row // 2, column // 2
+                if not (0 <= half_row < shown.shape[0] and 0 <= half_column < shown.shape[1]):
+                    continue
+                centre = (2 * half_column + 1, 2 * half_row + 1)  # the block's middle
+                color = rgb_color(shown[half_row, half_column])
+                what = f"{name} at ({x}, {y}): image pixels around {centre}"
+                # JPEG: a block of 8 x 8 screen pixels may shift each channel a little.
+                landmarks.append(landmark_at(app, axes, centre, color, what, 24))
+    return landmarks
+
+
 def clone_comparison() -> bytes:
     lake, plane = lake_and_plane()
     pictures = {
@@ -89,6 +121,12 @@ LESSON = Lesson(
     "(DST, sparse) and by Jacobi, Gauss-Seidel and SOR; why 8000 sweeps are not enough",
     pictures=(
         Picture(
+            "08_drag_the_plane",
+            "the plane dragged over the lake: the copied pixels leave a frame, the "
+            "seamless clone, solved again at every step, has none",
+            lambda: app_picture(CloneApp()),
+        ),
+        Picture(
             "08_naive_paste_and_seamless_clone",
             "the plane pasted into the lake: copied pixels leave a frame, the seamless "
             "clone has none",
@@ -113,6 +151,15 @@ LESSON = Lesson(
             control="sweeps",
             moves=(("ArrowRight",), ("ArrowLeft", "ArrowLeft"), ("End",)),
             landmarks=poisson_landmarks,
+            app=1,
+        ),
+    ),
+    drags=(
+        DragMove(
+            build=CloneApp,
+            handle="foreground",
+            path=((-20, -10), (-60, -35), (-100, -55)),
+            landmarks=clone_landmarks,
         ),
     ),
 )

@@ -19,20 +19,24 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
+from matplotlib.patches import Rectangle
 
 from course._validate import as_curve
 from course.antialias import SPLATS, WEIGHTINGS, render
 from course.canvas import crop
 from course.coverage import curve_polyline
-from course.curve_quality import intensity_along, uniformity
+from course.curve_quality import REFERENCE, VARIANTS, intensity_along, render_window, uniformity
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.metrics import rmse
-from course.widgets.base import SliderApp
+from course.widgets.base import Handle, SliderApp, bare_axes, format_points
 
-__all__ = ["StepApp", "ZoomApp", "ZoomPanel", "zoom_figure"]
+__all__ = ["ZOOM_PICKS", "CurveWalk", "StepApp", "ZoomApp", "ZoomPanel", "zoom_figure"]
 
 
-# Seed 000's test curve on its 700 x 700 window.
+#: The three variants the lesson's zoom app starts with: seed 000's three splats.
+ZOOM_PICKS = ("bilinear_zero_offset", "bilinear_corners", "bilinear_centres")
+
+
 class CurveWalk:
     """Points of a curve by fraction of its arc length, for moving a window along it."""
 
@@ -67,9 +71,17 @@ class ZoomPanel:
         axes.set_xticks([])
         axes.set_yticks([])
 
+    def artists(self) -> list[Any]:
+        """What changes as the panel moves: for an app that redraws only those."""
+        return [self.picture, self.grid, self.curve, self.title]
+
     def show(self, image: np.ndarray, centre: Any, size: int, title: str) -> np.ndarray:
         """Show the ``size`` x ``size`` crop of ``image`` around ``centre``; return it."""
         window, extent = crop(image, centre, size)
+        return self.show_window(window, extent, title)
+
+    def show_window(self, window: np.ndarray, extent: Any, title: str) -> np.ndarray:
+        """Show ``window``, a crop with extent ``(left, right, bottom, top)``; return it."""
         self.picture.set_data(window)
         self.picture.set_extent(extent)
         x0, x1, y1, y0 = extent
@@ -117,65 +129,147 @@ def zoom_figure(
 
 
 class ZoomApp(SliderApp):
-    """Three chosen renderings and the exact reference, zoomed at one place on the curve.
+    """Three variants and the exact reference, zoomed where a window sits on the curve.
 
-    Parameters
-    ----------
-    images : mapping of name to (H, W) image
-        The renderings to pick from (e.g. ``course.curve_quality.variants``).
-    points : array_like (N, 2)
-        The curve's control points, drawn on top.
-    reference : (H, W) image
-        Shown in the fourth panel, and used for each panel's RMSE in the window.
-    picks : three names from ``images``
+    Left, the whole curve on its canvas with its control polygon and the
+    window; drag a control point and every panel follows, each redrawn in
+    its window alone (:func:`course.curve_quality.render_window`). The
+    window sits ``position`` of the way along the curve (by arc length) and
+    shows ``size`` x ``size`` pixels, each a flat square at an integer zoom;
+    drop-downs pick the variants of :data:`course.curve_quality.VARIANTS`.
+    The control points can be typed too.
     """
+
+    BLIT = True
+    PANEL = 192  # screen pixels per panel: every window size divides it
+    SIZES = (6, 8, 12, 16, 24, 32, 48)
 
     def __init__(
         self,
-        images: Mapping[str, np.ndarray],
-        points: Any,
-        reference: np.ndarray,
-        picks: tuple[str, str, str] | None = None,
+        points: Any = SEED_000_CUBIC,
+        shape: tuple[int, int] = SEED_000_SHAPE,
+        picks: tuple[str, str, str] = ZOOM_PICKS,
+        width: float = 1.0,
+        k: int = 64,
     ) -> None:
-        names = list(images)
-        picks = picks or tuple(names[:3])
-        unknown = [name for name in picks if name not in images]
+        unknown = [name for name in picks if name not in VARIANTS]
         if unknown or len(picks) != 3:
-            raise ValueError(f"picks must be three names from images; got {picks!r}")
-        self.images = dict(images)
-        self.reference = reference
-        self.walk = CurveWalk(points)
-        controls = {
+            raise ValueError(
+                f"picks must be three names from course.curve_quality.VARIANTS; got {picks!r}"
+            )
+        self.points = as_curve(points)
+        self.shape = shape
+        self.stroke_width = width
+        self.k = k
+        self.walk = CurveWalk(self.points)
+        controls: dict[str, widgets.ValueWidget] = {
             "position": widgets.FloatSlider(
                 value=0.1, min=0.0, max=1.0, step=0.005, description="along curve"
             ),
-            "size": widgets.IntSlider(value=16, min=6, max=48, description="window px"),
+            "size": widgets.SelectionSlider(options=self.SIZES, value=16, description="window px"),
         }
         for slot, name in zip(("left", "middle", "right"), picks, strict=True):
-            controls[slot] = widgets.Dropdown(options=names, value=name, description=slot)
-        super().__init__(controls, shape=(300, 1000))
-        self.panels = [
-            ZoomPanel(self.figure.add_subplot(1, 4, i + 1), self.walk.polyline) for i in range(4)
+            controls[slot] = widgets.Dropdown(options=VARIANTS, value=name, description=slot)
+        controls["points"] = widgets.Textarea(
+            value=format_points(self.points), description="x, y", continuous_update=False
+        )
+        panel, gap, margin = self.PANEL, 14, 10
+        columns = margin + 280 + 2 * gap + 4 * panel + 3 * gap + margin
+        rows = 300
+        super().__init__(controls, shape=(rows, columns))
+        overview = self.figure.add_axes(
+            (margin / columns, margin / rows, 280 / columns, 280 / rows), aspect="equal"
+        )
+        overview.set_xlim(0, shape[1])
+        overview.set_ylim(shape[0], 0)
+        bare_axes(overview)
+        (self.overview_curve,) = overview.plot([], [], color="#e8502f", linewidth=1.2)
+        (self.polygon,) = overview.plot([], [], "o--", color="0.4", markersize=6, linewidth=0.8)
+        self.window_box = Rectangle((0, 0), 0, 0, fill=False, edgecolor="#3a6ea5", linewidth=1.5)
+        overview.add_patch(self.window_box)
+        self.labels = [
+            overview.annotate(
+                f"P{i}", (0, 0), xytext=(4, 4), textcoords="offset points", fontsize=8
+            )
+            for i in range(len(self.points))
         ]
-        self.figure.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.9, wspace=0.05)
+        self.overview = overview
+        self.panels = []
+        for index in range(4):
+            left = margin + 280 + 2 * gap + index * (panel + gap)
+            axes = self.figure.add_axes((left / columns, 8 / rows, panel / columns, panel / rows))
+            self.panels.append(ZoomPanel(axes, self.walk.polyline))
+        self.animate(
+            self.overview_curve,
+            self.polygon,
+            self.window_box,
+            *self.labels,
+            *(artist for zoom in self.panels for artist in zoom.artists()),
+        )
+        self.highlight_ring(overview)
         self.windows: list[np.ndarray] = []
 
     def centre(self) -> np.ndarray:
         """The window's centre: the curve point at the position slider."""
         return self.walk.at(self.value("position"))
 
+    def read_points(self) -> np.ndarray:
+        """The control points, as the text describes them."""
+        points = self.typed_points("points", self.points, len(self.points))
+        if not np.array_equal(points, self.points):
+            self.points = points
+            self.walk = CurveWalk(points)
+        return self.points
+
     def update(self) -> None:
+        points = self.read_points()
+        coarse = curve_polyline(points, 0.25)
+        self.overview_curve.set_data(coarse[:, 0], coarse[:, 1])
+        self.polygon.set_data(points[:, 0], points[:, 1])
+        for label, point in zip(self.labels, points, strict=True):
+            label.xy = tuple(point)
         centre, size = self.centre(), self.value("size")
-        truth, _ = crop(self.reference, centre, size)
+        # While a point is dragged the reference takes 16 x 16 samples a pixel
+        # (error under 1/16), 16 times faster; at rest, k x k.
+        k = self.k if self.grabbed is None else min(self.k, 16)
+        truth, extent = render_window(
+            REFERENCE, points, self.shape, centre, size, self.stroke_width, k
+        )
+        left, right, bottom, top = extent
+        near = self._near(extent)
+        self.window_box.set_bounds(left, top, right - left, bottom - top)
         self.windows = []
-        for panel, slot in zip(self.panels, ("left", "middle", "right"), strict=False):
+        for zoom, slot in zip(self.panels, ("left", "middle", "right"), strict=False):
             name = self.value(slot)
-            window, _ = crop(self.images[name], centre, size)
+            window, _ = render_window(name, points, self.shape, centre, size, self.stroke_width)
             error = rmse(window, truth)
-            self.windows.append(
-                panel.show(self.images[name], centre, size, f"{name}\nRMSE here {error:.3f}")
-            )
-        self.windows.append(self.panels[3].show(self.reference, centre, size, "exact reference\n"))
+            zoom.curve.set_data(near[:, 0], near[:, 1])
+            self.windows.append(zoom.show_window(window, extent, f"{name}\nRMSE here {error:.3f}"))
+        self.panels[3].curve.set_data(near[:, 0], near[:, 1])
+        reference_title = "exact reference\n" if k == self.k else f"reference, k = {k} (drag)\n"
+        self.windows.append(self.panels[3].show_window(truth, extent, reference_title))
+
+    def _near(self, extent: tuple[int, int, int, int]) -> np.ndarray:
+        """The part of the curve's polyline around the window (drawing all of it is slow)."""
+        left, right, bottom, top = extent
+        line = self.walk.polyline
+        inside = (
+            (line[:, 0] >= left - 2)
+            & (line[:, 0] <= right + 2)
+            & (line[:, 1] >= top - 2)
+            & (line[:, 1] <= bottom + 2)
+        )
+        keep = inside | np.roll(inside, 1) | np.roll(inside, -1)  # a segment's far end too
+        return np.where(keep[:, None], line, np.nan)
+
+    def handles(self) -> list[Handle]:
+        return [Handle(f"P{i}", self.overview, tuple(p)) for i, p in enumerate(self.points)]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        points = self.points.copy()
+        height, width = self.shape
+        points[int(name[1:])] = np.clip(np.round(point, 1), 0, (width, height))
+        self.controls["points"].value = format_points(points)
 
 
 class StepApp(SliderApp):

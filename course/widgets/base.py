@@ -1,29 +1,61 @@
-"""What every slider app shares: a matplotlib figure shown as an image widget.
+"""What every app shares: a matplotlib figure shown as a picture the student can grab.
 
-The picture is an ``ipywidgets.Image`` holding a PNG that a matplotlib
+The picture is a :class:`Picture` widget holding a PNG that a matplotlib
 ``Figure`` renders on the Agg canvas. An app builds its figure and artists
-once; a slider change calls ``update``, which only changes artist data, and
-then the figure is rendered again. No pyplot, no figure rebuilt per step, no
-frontend backend: it passes nbval, runs in JupyterLab and Voila, and the
-update can be driven from plain Python in a test by setting slider values.
+once; a control's change calls ``update``, which only changes artist data,
+and then the figure is rendered again. No pyplot, no figure rebuilt per step,
+no frontend backend: it passes nbval, runs in JupyterLab and Voila, and the
+update can be driven from plain Python in a test by setting control values.
+
+Where a parameter is a point (a control point, a vertex, where to paste), the
+student drags it on the picture. An app lists what can be grabbed as
+:class:`Handle` objects in data coordinates; :meth:`SliderApp.pointer` maps a
+press, a move or a release at a picture pixel through the axes' inverse
+transform and calls the app's :meth:`~SliderApp.drag`. The browser sends at
+most one move at a time (``picture.js``), so a drag never queues redraws.
+Every point also has a text box, for the keyboard; the two stay in step.
 """
 
 from __future__ import annotations
 
 import base64
 import io
+import re
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
+import anywidget
 import ipywidgets as widgets
 import numpy as np
+import traitlets
+from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.patches import Rectangle
 from PIL import Image as PILImage
 
-__all__ = ["GRAY_PIXELS", "FigureView", "SliderApp", "bare_axes"]
+__all__ = [
+    "GRAY_PIXELS",
+    "HIGHLIGHT",
+    "FigureView",
+    "Handle",
+    "Picture",
+    "SliderApp",
+    "bare_axes",
+    "format_points",
+    "parse_points",
+]
 
 #: imshow settings for a gray image in [0, 1], pixels drawn as flat squares.
 GRAY_PIXELS = {"cmap": "gray", "vmin": 0.0, "vmax": 1.0, "interpolation": "nearest"}
+#: The colour of what the student holds (Okabe and Ito's orange, colour-blind safe).
+HIGHLIGHT = "#E69F00"
+
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
 def bare_axes(axes: Any) -> Any:
@@ -33,23 +65,85 @@ def bare_axes(axes: Any) -> Any:
     return axes
 
 
-class FigureView:
-    """A matplotlib ``Figure`` of ``shape = (H, W)`` pixels, rendered into an image widget."""
+def parse_points(text: str) -> np.ndarray:
+    """Read ``"x, y; x, y; ..."`` (any separators) into an (N, 2) array.
 
-    def __init__(self, shape: tuple[int, int] = (500, 500), dpi: int = 100) -> None:
+    Examples
+    --------
+    >>> parse_points("10, 10; 690, 10.5; (3, 4)")
+    array([[ 10. ,  10. ],
+           [690. ,  10.5],
+           [  3. ,   4. ]])
+    """
+    numbers = [float(value) for value in _NUMBER.findall(text)]
+    if not numbers or len(numbers) % 2:
+        raise ValueError(f"points need an x and a y each; got {len(numbers)} numbers")
+    points = np.array(numbers).reshape(-1, 2)
+    if not np.isfinite(points).all():
+        raise ValueError("points must be finite numbers")
+    return points
+
+
+def format_points(points: Any) -> str:
+    """The text form :func:`parse_points` reads.
+
+    Examples
+    --------
+    >>> format_points(np.array([[10.0, 10.0], [2.5, 3.0]]))
+    '10, 10; 2.5, 3'
+    """
+    return "; ".join(f"{x:g}, {y:g}" for x, y in np.asarray(points, dtype=float))
+
+
+class Picture(anywidget.AnyWidget):
+    """An app's picture: the PNG the kernel draws, and the student's pointer on it.
+
+    ``value`` holds the PNG. ``handles`` lists what a press would grab, in
+    picture pixels (row 0 at the top), so that the browser shows a grabbing
+    hand over it: ``[x, y, radius, 0, 0, 0, 0]`` for a point and ``[0, 0, 0,
+    left, top, right, bottom]`` for a box. Presses, moves and releases come
+    back as messages ``{"kind", "x", "y"}`` in picture pixels; the kernel
+    answers each with ``{"kind": "drawn"}`` once its picture is published.
+    """
+
+    _esm = (Path(__file__).parent / "picture.js").read_text(encoding="utf-8")
+    value = traitlets.Bytes(b"").tag(sync=True)
+    format = traitlets.Unicode("png").tag(sync=True)
+    width = traitlets.Int(0).tag(sync=True)
+    height = traitlets.Int(0).tag(sync=True)
+    handles = traitlets.List([]).tag(sync=True)
+    clickable = traitlets.Bool(False).tag(sync=True)
+
+
+class FigureView:
+    """A matplotlib ``Figure`` of ``shape = (H, W)`` pixels, rendered into a :class:`Picture`.
+
+    ``format`` is ``"png"`` (lossless: line art, pixels to count) or ``"jpeg"``
+    (photographs: on lesson 08's lake, 2.0 ms to encode against PNG's 12 ms,
+    74 kB against 212 kB; at quality :data:`JPEG_QUALITY` with full-resolution
+    colour no channel moves by more than 19 of 255).
+    """
+
+    #: JPEG quality of the photographic apps (colour kept at full resolution).
+    JPEG_QUALITY = 95
+
+    def __init__(
+        self, shape: tuple[int, int] = (500, 500), dpi: int = 100, format: str = "png"
+    ) -> None:
         rows, columns = shape
+        if format not in ("png", "jpeg"):
+            raise ValueError(f"format must be one of 'png', 'jpeg'; got {format!r}")
         self.figure = Figure(figsize=(columns / dpi, rows / dpi), dpi=dpi)
         self.canvas = FigureCanvasAgg(self.figure)
-        self.image = widgets.Image(format="png", width=columns, height=rows)
+        self.image = Picture(width=columns, height=rows, format=format)
         self._background = None
 
     def pixels(self) -> np.ndarray:
-        """Draw the figure and return its RGBA pixels, (height, width, 4) uint8."""
-        self.canvas.draw()
+        """The picture as last rendered, RGBA pixels (height, width, 4) uint8, before encoding."""
         return np.asarray(self.canvas.buffer_rgba()).copy()
 
     def render(self) -> bytes:
-        """Draw the whole figure into the image widget and return the PNG bytes."""
+        """Draw the whole figure into the picture and return the PNG bytes."""
         self.canvas.draw()
         return self.publish()
 
@@ -74,40 +168,88 @@ class FigureView:
         self._background = None
 
     def publish(self) -> bytes:
-        """Encode the canvas as it stands into the image widget; return the PNG bytes."""
+        """Encode the canvas as it stands into the picture; return the encoded bytes."""
         buffer = io.BytesIO()
-        # Fast PNG: level-1 compression, the picture is redrawn on every step.
-        PILImage.fromarray(np.asarray(self.canvas.buffer_rgba())).save(
-            buffer, format="png", compress_level=1
-        )
+        pixels = np.asarray(self.canvas.buffer_rgba())
+        if self.image.format == "jpeg":
+            PILImage.fromarray(pixels[..., :3]).save(
+                buffer, format="jpeg", quality=self.JPEG_QUALITY, subsampling=0
+            )
+        else:  # fast PNG: level-1 compression, the picture is redrawn on every step
+            PILImage.fromarray(pixels).save(buffer, format="png", compress_level=1)
         self.image.value = buffer.getvalue()
         return buffer.getvalue()
 
 
+@dataclass(frozen=True)
+class Handle:
+    """Something on the picture a student can grab, in the data coordinates of ``axes``.
+
+    A point (``box`` is None) is grabbed within :attr:`SliderApp.GRAB_RADIUS`
+    picture pixels of ``at``; a box ``(x0, y0, x1, y1)`` anywhere inside it,
+    and it moves by its anchor ``at``. A drag keeps the offset between the
+    pointer and the anchor, so nothing jumps when it is grabbed off-centre.
+    """
+
+    name: str
+    axes: Axes
+    at: tuple[float, float]
+    box: tuple[float, float, float, float] | None = None
+
+
+@dataclass
+class _Grab:
+    handle: Handle
+    offset: np.ndarray
+    start: tuple[float, float]
+
+
 class SliderApp:
-    """Controls beside a figure; any control's change redraws the figure.
+    """Controls beside a picture; a control's change, or a drag on the picture, redraws it.
 
     Subclasses build their artists in ``__init__`` (after calling this one
     with their controls) and implement ``update``, which reads the controls'
     values and changes artist data. ``controls`` maps names to widgets, so a
     test can do ``app.controls["t"].value = 0.3`` and inspect the result.
+    Apps with points to drag also implement :meth:`handles` and :meth:`drag`
+    (and, if they like, :meth:`click` and :meth:`double_click`); a test drives
+    them with :meth:`pointer`, as the browser does.
     """
+
+    #: Apps whose axes stay put redraw only their moving artists (:meth:`animate`)
+    #: over a cached background; they call ``view.invalidate()`` when it changes.
+    BLIT = False
+    #: How near a point, in picture pixels, a press grabs it.
+    GRAB_RADIUS = 10.0
+    #: How far a press may move, in picture pixels, and still count as a click.
+    CLICK_SLOP = 4.0
 
     def __init__(
         self,
         controls: dict[str, widgets.ValueWidget],
         shape: tuple[int, int] = (500, 500),
         dpi: int = 100,
+        format: str = "png",
     ) -> None:
         self.controls = controls
-        self.view = FigureView(shape, dpi)
+        self.view = FigureView(shape, dpi, format)
         self.figure = self.view.figure
         self.renders = 0
+        self.status = widgets.Label()
+        self.grabbed: str | None = None
+        self._grab: _Grab | None = None
+        self._press: tuple[float, float] | None = None
+        self._held = False
+        self._rings: dict[Axes, tuple[Line2D, Rectangle]] = {}
+        self.moving: list[Any] = []
         for control in controls.values():
             control.observe(self._on_change, names="value")
+        self.view.image.on_msg(self._on_message)
         # Controls beside the picture when the window is wide enough, below it
         # when not: they never shrink, so their labels are never cut off.
-        panel = widgets.VBox(list(controls.values()), layout=widgets.Layout(flex="0 0 auto"))
+        panel = widgets.VBox(
+            [*controls.values(), self.status], layout=widgets.Layout(flex="0 0 auto")
+        )
         self.widget = widgets.HBox(
             [self.view.image, panel],
             layout=widgets.Layout(align_items="flex-start", flex_flow="row wrap"),
@@ -123,11 +265,272 @@ class SliderApp:
     def refresh(self) -> bytes:
         """Update the artists from the controls and render the picture."""
         self.update()
+        self._place_highlight()
         self.renders += 1
-        return self.view.render()
+        png = self.render()
+        self._publish_handles()
+        return png
+
+    def render(self) -> bytes:
+        """Draw the figure, or only what moves over the cached rest when the app blits."""
+        return self.view.render_moving(self.moving) if self.BLIT else self.view.render()
+
+    def animate(self, *artists: Any) -> None:
+        """Mark artists as moving: with :attr:`BLIT`, only these are redrawn each step."""
+        for artist in artists:
+            artist.set_animated(True)
+            self.moving.append(artist)
 
     def _on_change(self, change: dict) -> None:
+        if self._held:
+            return  # one redraw after the drag has set every control it moves
         self.refresh()
+
+    @contextmanager
+    def holding(self) -> Iterator[None]:
+        """Change several controls with one redraw, after the block."""
+        self._held = True
+        try:
+            yield
+        finally:
+            self._held = False
+        self.refresh()
+
+    def typed_points(
+        self,
+        control: str,
+        kept: Any,
+        count: int,
+        low: Any = -np.inf,
+        high: Any = np.inf,
+        whole: bool = False,
+    ) -> np.ndarray:
+        """The ``count`` points typed in text ``control``, if they are within bounds; else ``kept``.
+
+        ``low`` and ``high`` bound x and y (a number, or one per axis), both
+        included; ``whole`` asks for whole pixels. A text that fails keeps
+        the last points, stays as typed for the student to fix, and the
+        status line says why.
+        """
+        try:
+            points = parse_points(self.value(control))
+            if len(points) != count:
+                raise ValueError(f"expected {count} point{'s' * (count > 1)}; got {len(points)}")
+            if whole and (points != np.round(points)).any():
+                raise ValueError("expected whole pixels")
+            low_x, low_y = np.broadcast_to(low, 2)
+            high_x, high_y = np.broadcast_to(high, 2)
+            if (
+                not ((low_x <= points[:, 0]) & (points[:, 0] <= high_x)).all()
+                or not ((low_y <= points[:, 1]) & (points[:, 1] <= high_y)).all()
+            ):
+                raise ValueError(
+                    f"x must lie from {low_x:g} to {high_x:g}, y from {low_y:g} to {high_y:g}"
+                )
+        except ValueError as error:
+            self.status.value = f"Kept the last {control}: {error}"
+            return np.array(kept, dtype=float)
+        self.status.value = ""
+        return points
+
+    # --- what can be grabbed: apps with points override these -------------------
+
+    def handles(self) -> list[Handle]:
+        """What a press can grab, in the order a tie is settled (first wins)."""
+        return []
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        """Move handle ``name`` so that its anchor is at ``point`` (data coordinates)."""
+        raise NotImplementedError(f"{type(self).__name__} has no draggable {name!r}")
+
+    def click(self, axes: Axes, point: np.ndarray) -> bool:
+        """A click on no handle, at ``point`` in ``axes``; True if it changed something."""
+        return False
+
+    def double_click(self, name: str) -> bool:
+        """A double click on handle ``name``; True if it changed something."""
+        return False
+
+    # --- the pointer ------------------------------------------------------------
+
+    def pointer(self, kind: str, x: float, y: float) -> None:
+        """A press (``"down"``), ``"move"``, release (``"up"``) or ``"double"`` at pixel (x, y).
+
+        (x, y) is a pixel of the picture, x to the right, y down from the top;
+        it may lie outside the picture (the browser keeps sending moves once
+        a drag leaves it). Redraws when anything changed.
+        """
+        if kind not in ("down", "move", "up", "double"):
+            raise ValueError(f"kind must be one of 'down', 'move', 'up', 'double'; got {kind!r}")
+        x, y = float(x), float(y)
+        if not (np.isfinite(x) and np.isfinite(y)):
+            raise ValueError(f"x and y must be finite picture pixels; got ({x}, {y})")
+        if kind == "down":
+            self.status.value = ""
+            handle = self.handle_at(x, y)
+            self._press = None if handle else (x, y)
+            if handle:
+                offset = self.data_point(handle.axes, x, y) - np.asarray(handle.at, dtype=float)
+                self._grab = _Grab(handle, offset, (x, y))
+                self.grabbed = handle.name
+                self.refresh()  # the highlight
+        elif kind in ("move", "up") and self._grab is not None:
+            grab = self._grab
+            point = self.data_point(grab.handle.axes, x, y) - grab.offset
+            if kind == "up":
+                self._grab, self.grabbed = None, None
+            with self.holding():
+                self.drag(grab.handle.name, point)
+        elif kind == "up" and self._press is not None:
+            press, self._press = self._press, None
+            axes = self.axes_at(x, y)
+            if np.hypot(x - press[0], y - press[1]) <= self.CLICK_SLOP and axes is not None:
+                with self.holding():
+                    self.click(axes, self.data_point(axes, x, y))
+        elif kind == "double":
+            handle = self.handle_at(x, y)
+            if handle is not None:
+                with self.holding():
+                    self.double_click(handle.name)
+
+    def _on_message(self, widget: Any, content: dict, buffers: Any) -> None:
+        try:
+            self.pointer(
+                content.get("kind", ""), content.get("x", np.nan), content.get("y", np.nan)
+            )
+        except ValueError as error:
+            self.status.value = f"Ignored a pointer message: {error}"
+        finally:
+            self.view.image.send({"kind": "drawn"})
+
+    def data_point(self, axes: Axes, x: float, y: float) -> np.ndarray:
+        """Picture pixel (x, y), y down, in ``axes``' data coordinates."""
+        display = (x, self.figure.bbox.height - y)
+        return np.asarray(axes.transData.inverted().transform(display), dtype=float)
+
+    def picture_point(self, axes: Axes, point: Any) -> np.ndarray:
+        """Data ``point`` of ``axes`` as a picture pixel (x, y), y down: where to press."""
+        x, y = axes.transData.transform(np.asarray(point, dtype=float))
+        return np.array([x, self.figure.bbox.height - y])
+
+    def axes_at(self, x: float, y: float) -> Axes | None:
+        """The axes whose box holds picture pixel (x, y), if any."""
+        display = (x, self.figure.bbox.height - y)
+        for axes in self.figure.axes:
+            if axes.get_window_extent().contains(*display):
+                return axes
+        return None
+
+    def handle_named(self, name: str) -> Handle:
+        """The first handle called ``name``; KeyError naming the ones there are."""
+        for handle in self.handles():
+            if handle.name == name:
+                return handle
+        names = sorted({handle.name for handle in self.handles()})
+        raise KeyError(f"name: expected one of the handles {names}; got {name!r}")
+
+    def press_point(self, name: str) -> np.ndarray:
+        """Where to press to grab handle ``name``: its point, or its box's middle (pixels)."""
+        handle = self.handle_named(name)
+        if handle.box is None:
+            return self.picture_point(handle.axes, handle.at)
+        left, top, right, bottom = self._box_pixels(handle)
+        return np.array([(left + right) / 2, (top + bottom) / 2])
+
+    def drag_along(self, name: str, path: Any) -> np.ndarray:
+        """Press handle ``name``, move by each offset of ``path`` (pixels), release at the last.
+
+        What a browser test does with the mouse, in plain Python. Returns the
+        press point.
+        """
+        start = self.press_point(name)
+        self.pointer("down", *start)
+        offsets = np.asarray(path, dtype=float).reshape(-1, 2)
+        for offset in offsets:
+            self.pointer("move", *(start + offset))
+        self.pointer("up", *(start + offsets[-1]))
+        return start
+
+    def handle_at(self, x: float, y: float) -> Handle | None:
+        """The point nearest (x, y) within the grab radius, else a box that holds it."""
+        best, nearest = None, self.GRAB_RADIUS
+        boxes = []
+        for handle in self.handles():
+            if handle.box is not None:
+                boxes.append(handle)
+                continue
+            distance = float(np.hypot(*(self.picture_point(handle.axes, handle.at) - (x, y))))
+            if distance <= nearest:
+                best, nearest = handle, distance
+        if best is not None:
+            return best
+        for handle in boxes:
+            left, top, right, bottom = self._box_pixels(handle)
+            if left <= x <= right and top <= y <= bottom:
+                return handle
+        return None
+
+    def _box_pixels(self, handle: Handle) -> tuple[float, float, float, float]:
+        x0, y0, x1, y1 = handle.box
+        corners = np.array([self.picture_point(handle.axes, c) for c in ((x0, y0), (x1, y1))])
+        (left, top), (right, bottom) = corners.min(axis=0), corners.max(axis=0)
+        return float(left), float(top), float(right), float(bottom)
+
+    def highlight_ring(self, axes: Axes) -> tuple[Line2D, Rectangle]:
+        """The ring (for a point) and outline (for a box) that mark a grabbed handle in ``axes``."""
+        if axes not in self._rings:
+            (ring,) = axes.plot(
+                [],
+                [],
+                "o",
+                markersize=17,
+                markerfacecolor="none",
+                markeredgecolor=HIGHLIGHT,
+                markeredgewidth=2.5,
+                zorder=10,
+            )
+            outline = Rectangle((0, 0), 0, 0, fill=False, edgecolor=HIGHLIGHT, linewidth=3)
+            outline.set_visible(False)
+            axes.add_patch(outline)
+            self._rings[axes] = (ring, outline)
+            if self.BLIT:
+                self.animate(ring, outline)
+        return self._rings[axes]
+
+    def _place_highlight(self) -> None:
+        for ring, outline in self._rings.values():
+            ring.set_data([], [])
+            outline.set_visible(False)
+        if self._grab is None:
+            return
+        grabbed = self._grab.handle
+        held = next(
+            (h for h in self.handles() if (h.name, h.axes) == (grabbed.name, grabbed.axes)), None
+        )
+        if held is None:
+            return
+        ring, outline = self.highlight_ring(held.axes)
+        if held.box is None:
+            ring.set_data([held.at[0]], [held.at[1]])
+        else:
+            x0, y0, x1, y1 = held.box
+            outline.set_bounds(x0, y0, x1 - x0, y1 - y0)
+            outline.set_visible(True)
+
+    def _publish_handles(self) -> None:
+        listed = []
+        for handle in self.handles():
+            if handle.box is None:
+                x, y = self.picture_point(handle.axes, handle.at)
+                listed.append(
+                    [round(float(x), 1), round(float(y), 1), self.GRAB_RADIUS, 0, 0, 0, 0]
+                )
+            else:
+                listed.append([0, 0, 0, *(round(v, 1) for v in self._box_pixels(handle))])
+        if listed != self.view.image.handles:
+            self.view.image.handles = listed
+
+    # --- text -----------------------------------------------------------------
 
     def describe(self) -> str:
         """A stable one-line summary: the app's name and its controls' values."""
@@ -144,7 +547,8 @@ class SliderApp:
             self.refresh()
         bundle = self.widget._repr_mimebundle_(**kwargs)
         bundle["text/plain"] = self.describe()
-        bundle["image/png"] = base64.b64encode(bytes(self.view.image.value)).decode("ascii")
+        picture = base64.b64encode(bytes(self.view.image.value)).decode("ascii")
+        bundle[f"image/{self.view.image.format}"] = picture
         return bundle
 
 

@@ -1,58 +1,56 @@
 """Lesson 01's app: de Casteljau's construction, level by level, as t moves.
 
 The control polygon and every intermediate level are drawn in their own
-colours, with the point B(t) and the curve traced from B(0) up to B(t).
-Control points are edited as text (``x, y; x, y; ...``, image space, y
-down), and the number of points goes from 2 to 12; seed 000's four points
-are the default.
+colours and markers, with the point B(t) and the curve traced from B(0) up to
+B(t). Drag a control point to move it; click on empty space to add one (up to
+12); double-click a point to remove it (down to 2). The points can also be
+typed (``x, y; x, y; ...``, image space, y down), and the number of points
+set with a slider; text, slider and picture stay in step.
 """
 
 from __future__ import annotations
 
-import re
-
 import ipywidgets as widgets
-import matplotlib
 import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.lines import Line2D
 
 from course.bezier import de_casteljau, de_casteljau_levels
 from course.images import EXAMPLE_POINTS
-from course.widgets.base import SliderApp
+from course.widgets.base import Handle, SliderApp, format_points, parse_points
 
-__all__ = ["DeCasteljauApp", "format_points", "parse_points"]
+__all__ = ["DeCasteljauApp"]
 
 MIN_POINTS, MAX_POINTS = 2, len(EXAMPLE_POINTS)
-_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 _CURVE_SAMPLES = 201
+# The handouts' 700 x 700 window: the view, unless typed points lie outside it.
+_WINDOW = (0.0, 700.0)
+_MARKERS = ("s", "^", "D", "v", "p", "h", "<", "*", ">", "P")
+# Paul Tol's muted palette: told apart with any colour vision, and none of it
+# crimson (B(t)) or orange (what the student holds).
+_LEVEL_COLORS = (
+    "#332288",
+    "#44AA99",
+    "#AA4499",
+    "#117733",
+    "#88CCEE",
+    "#999933",
+    "#882255",
+    "#DDCC77",
+)
 
 
-def parse_points(text: str) -> np.ndarray:
-    """Read ``"x, y; x, y; ..."`` (any separators) into an (N, 2) array.
-
-    Examples
-    --------
-    >>> parse_points("10, 10; 690, 10.5; (3, 4)")
-    array([[ 10. ,  10. ],
-           [690. ,  10.5],
-           [  3. ,   4. ]])
-    """
-    numbers = [float(value) for value in _NUMBER.findall(text)]
-    if len(numbers) % 2:
-        raise ValueError(f"points need an x and a y each; got {len(numbers)} numbers")
-    if len(numbers) < 2 * MIN_POINTS:
-        raise ValueError(f"at least {MIN_POINTS} points are needed; got {len(numbers) // 2}")
-    return np.array(numbers).reshape(-1, 2)
-
-
-def format_points(points: np.ndarray) -> str:
-    """The text form :func:`parse_points` reads.
-
-    Examples
-    --------
-    >>> format_points(np.array([[10.0, 10.0], [2.5, 3.0]]))
-    '10, 10; 2.5, 3'
-    """
-    return "; ".join(f"{x:g}, {y:g}" for x, y in points)
+def _level_style(level: int) -> dict:
+    """Level 0 is the control polygon; each later level has its own colour and marker."""
+    if level == 0:
+        return {"color": "0.35", "marker": "o", "markersize": 7, "linewidth": 1.5}
+    return {
+        "color": _LEVEL_COLORS[(level - 1) % len(_LEVEL_COLORS)],
+        "marker": _MARKERS[(level - 1) % len(_MARKERS)],
+        "markersize": 5,
+        "linewidth": 1.2,
+        "linestyle": "-" if level % 2 else "--",
+    }
 
 
 class DeCasteljauApp(SliderApp):
@@ -60,8 +58,11 @@ class DeCasteljauApp(SliderApp):
 
     Controls: ``t`` (0 to 1), ``count`` (number of control points, 2 to 12)
     and ``points`` (the control points as text). Changing ``count`` cuts the
-    list or extends it with :data:`EXAMPLE_POINTS`.
+    list or extends it with :data:`course.images.EXAMPLE_POINTS`. On the
+    picture, each control point ``P0`` ... ``Pn`` can be dragged.
     """
+
+    BLIT = True
 
     def __init__(self, points: np.ndarray | None = None, t: float = 0.5, size: int = 500) -> None:
         start = EXAMPLE_POINTS[:4] if points is None else parse_points(format_points(points))
@@ -75,73 +76,83 @@ class DeCasteljauApp(SliderApp):
             ),
         }
         super().__init__(controls, shape=(size, size))
-        self.status = widgets.Label()
-        self.widget.children[1].children += (self.status,)
+        self.view.image.clickable = True
         self._syncing = False
         self._count_changed = False
-        self.points = start
+        self.points = np.array(start, dtype=float)
         self._drawn_points: np.ndarray | None = None
+        self._legend_count = 0
 
         axes = self.figure.add_axes((0.08, 0.06, 0.9, 0.88))
-        axes.invert_yaxis()  # image space: y down
         axes.tick_params(labelsize=8)
+        axes.set_aspect("equal", adjustable="box")
         self.axes = axes
-        colors = matplotlib.colormaps["tab10"](np.arange(MAX_POINTS - 1) % 10)
-        (self.full_curve,) = axes.plot([], [], color="0.8", linewidth=1)
-        self.level_lines = []
+        (self.full_curve,) = axes.plot([], [], color="0.75", linewidth=1, label="the whole curve")
+        self.level_lines: list[Line2D] = []
         for level in range(MAX_POINTS - 1):
-            (line,) = axes.plot(
-                [],
-                [],
-                color="0.35" if level == 0 else colors[level - 1],
-                marker="o",
-                markersize=6 if level == 0 else 4,
-                linewidth=1.5 if level == 0 else 1,
-            )
+            (line,) = axes.plot([], [], **_level_style(level))
             self.level_lines.append(line)
-        (self.traced,) = axes.plot([], [], color="crimson", linewidth=2.5)
-        (self.point_marker,) = axes.plot([], [], "o", color="crimson", markersize=9)
+        (self.traced,) = axes.plot([], [], color="crimson", linewidth=2.5, label="B(s), s <= t")
+        (self.point_marker,) = axes.plot(
+            [], [], "o", color="crimson", markersize=9, label="B(t)", zorder=5
+        )
+        self.labels = [
+            axes.annotate(
+                f"P{i}",
+                (0, 0),
+                xytext=(7, 7),
+                textcoords="offset points",
+                fontsize=9,
+                color="0.2",
+                visible=False,
+            )
+            for i in range(MAX_POINTS)
+        ]
         self.title = axes.set_title("", fontsize=10)
-        # Everything that moves with t is drawn over a cached background
-        # (blitting): the axes, ticks and the faint full curve are drawn only
-        # when the control points change.
-        self._moving = [*self.level_lines, self.traced, self.point_marker, self.title]
-        for artist in self._moving:
-            artist.set_animated(True)
-
-    def refresh(self) -> bytes:
-        """Update the artists and render the picture, redrawing only what moved."""
-        self.update()
-        self.renders += 1
-        return self.view.render_moving(self._moving)
+        # Everything that moves is drawn over a cached background (blitting):
+        # the axes, the ticks and the legend are drawn only when they change.
+        self.animate(
+            self.full_curve,
+            *self.level_lines,
+            self.traced,
+            self.point_marker,
+            *self.labels,
+            self.title,
+        )
+        self.highlight_ring(axes)
 
     def _on_change(self, change: dict) -> None:
         if self._syncing:  # our own write-back of count and text
             return
         self._count_changed = change["owner"] is self.controls["count"]
+        self.status.value = ""
         super()._on_change(change)
 
     def _read_points(self) -> np.ndarray:
         """The control points the controls describe; keeps the text and count in step."""
         try:
             points = parse_points(self.value("points"))
+            if len(points) < MIN_POINTS:
+                raise ValueError(f"at least {MIN_POINTS} points are needed; got {len(points)}")
         except ValueError as error:
             self.status.value = f"Kept the last points: {error}"
-            points = self.points
-        else:
-            self.status.value = ""
+            points = self.points  # the typed text stays, for the student to fix
         count = self.value("count")
         if self._count_changed:
             points = np.vstack([points, EXAMPLE_POINTS[len(points) : count]])[:count]
         points = points[:MAX_POINTS]
         if len(points) != count or self._count_changed:
-            self._syncing = True
-            try:
-                self.controls["count"].value = len(points)
-                self.controls["points"].value = format_points(points)
-            finally:
-                self._syncing = False
+            self._write_points(points)
+        self._count_changed = False
         return points
+
+    def _write_points(self, points: np.ndarray) -> None:
+        self._syncing = True
+        try:
+            self.controls["count"].value = len(points)
+            self.controls["points"].value = format_points(points)
+        finally:
+            self._syncing = False
 
     def update(self) -> None:
         points = self._read_points()
@@ -162,14 +173,79 @@ class DeCasteljauApp(SliderApp):
         )
 
     def _set_points(self, points: np.ndarray) -> None:
-        """New control points: refit the view and redraw the whole curve faintly."""
-        self.points = points
-        self._drawn_points = points
-        self.view.invalidate()
+        """New control points: the whole curve, the labels, and the view if they left it."""
+        self.points = np.array(points, dtype=float)
+        self._drawn_points = self.points.copy()
         curve = de_casteljau(points, np.linspace(0.0, 1.0, _CURVE_SAMPLES))
         self.full_curve.set_data(curve[:, 0], curve[:, 1])
-        low = np.minimum(points.min(axis=0), curve.min(axis=0))
-        high = np.maximum(points.max(axis=0), curve.max(axis=0))
-        centre, half = (low + high) / 2, max(float((high - low).max()) * 0.55, 1.0)
-        self.axes.set_xlim(centre[0] - half, centre[0] + half)
-        self.axes.set_ylim(centre[1] + half, centre[1] - half)
+        for index, label in enumerate(self.labels):
+            label.set_visible(index < len(points))
+            if index < len(points):
+                label.xy = tuple(points[index])
+        if self.grabbed is None:  # never rescale under a dragging hand
+            self._fit_view(np.vstack([points, curve]))
+        if len(points) != self._legend_count:
+            self._legend(len(points))
+
+    def _fit_view(self, shown: np.ndarray) -> None:
+        low = np.minimum(shown.min(axis=0), _WINDOW[0])
+        high = np.maximum(shown.max(axis=0), _WINDOW[1])
+        centre, half = (low + high) / 2, float((high - low).max()) * 0.52
+        limits = (centre[0] - half, centre[0] + half, centre[1] + half, centre[1] - half)
+        if limits != (*self.axes.get_xlim(), *self.axes.get_ylim()):
+            self.axes.set_xlim(limits[0], limits[1])
+            self.axes.set_ylim(limits[2], limits[3])  # image space: y down
+            self.view.invalidate()
+
+    def _legend(self, count: int) -> None:
+        """A legend for the levels this many points have; it lives in the background."""
+        for level, line in enumerate(self.level_lines):
+            line.set_label(
+                "control polygon P" if level == 0 else f"level {level}" if level < count else ""
+            )
+        shown = [self.level_lines[0], *self.level_lines[1 : count - 1], self.traced]
+        shown.append(self.point_marker)
+        legend = self.axes.legend(
+            handles=shown,
+            loc="lower right",
+            fontsize=7,
+            ncols=2 if count > 6 else 1,
+            framealpha=0.85,
+        )
+        legend.set_animated(False)
+        self._legend_count = count
+        self.view.invalidate()
+
+    # --- dragging ---------------------------------------------------------------
+
+    def handles(self) -> list[Handle]:
+        return [Handle(f"P{i}", self.axes, tuple(p)) for i, p in enumerate(self.points)]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        index = int(name[1:])
+        points = self.points.copy()
+        points[index] = self._inside_view(point)
+        self._write_points(points)
+
+    def click(self, axes: Axes, point: np.ndarray) -> bool:
+        """A click on empty space adds a point there, at the end of the list."""
+        if len(self.points) >= MAX_POINTS:
+            self.status.value = f"At most {MAX_POINTS} points: double-click one to remove it."
+            return False
+        self._write_points(np.vstack([self.points, self._inside_view(point)]))
+        return True
+
+    def double_click(self, name: str) -> bool:
+        """A double click on a point removes it, down to two points."""
+        if len(self.points) <= MIN_POINTS:
+            self.status.value = f"At least {MIN_POINTS} points: a curve needs two ends."
+            return False
+        self._write_points(np.delete(self.points, int(name[1:]), axis=0))
+        return True
+
+    def _inside_view(self, point: np.ndarray) -> np.ndarray:
+        """The point, kept inside the view (a drag past the edge stops at it), rounded to 0.1."""
+        (x0, x1), (y1, y0) = self.axes.get_xlim(), self.axes.get_ylim()
+        x = min(max(float(point[0]), min(x0, x1)), max(x0, x1))
+        y = min(max(float(point[1]), min(y0, y1)), max(y0, y1))
+        return np.round([x, y], 1)

@@ -26,7 +26,13 @@ from course._validate import as_gray, as_image, as_int
 from course.blue_noise import blue_noise_mask, cluster_energy, radial_power_spectrum
 from course.blue_noise import void_and_cluster as rank_pixels
 from course.canvas import crop
-from course.widgets.base import GRAY_PIXELS, SliderApp, bare_axes
+from course.widgets.base import (
+    GRAY_PIXELS,
+    Handle,
+    SliderApp,
+    bare_axes,
+    format_points,
+)
 
 __all__ = ["DitherComparisonApp", "GrayLevelApp", "VoidAndClusterApp", "side_by_side"]
 
@@ -88,7 +94,10 @@ def side_by_side(
 
 
 class DitherComparisonApp(SliderApp):
-    """Every dithering method on one gray image; sliders move the zoomed window.
+    """Every dithering method on one gray image; drag the window to zoom elsewhere.
+
+    The red window on the original is the part every other panel shows,
+    zoomed; drag it, or type its centre pixel in ``window`` (``x, y``).
 
     Parameters
     ----------
@@ -97,37 +106,61 @@ class DitherComparisonApp(SliderApp):
         Side of the zoomed window, in input pixels.
     """
 
+    BLIT = True
+
     def __init__(self, gray: Any, size: int = 40) -> None:
         self.gray = as_gray(gray, "gray")
         self.size = as_int(size, "size", minimum=4)
         height, width = self.gray.shape
         self.results = {"original": self.gray, **dither.all_methods(self.gray)}
+        self.at = np.array([width // 2, height // 2])
         controls = {
-            "x": widgets.IntSlider(value=width // 2, min=0, max=width - 1, description="x"),
-            "y": widgets.IntSlider(value=height // 2, min=0, max=height - 1, description="y"),
+            "window": widgets.Text(
+                value=format_points([self.at]), description="x, y", continuous_update=False
+            )
         }
         super().__init__(controls, shape=(560, 1000))
         grid = self.figure.add_gridspec(3, 4, left=0.01, right=0.99, top=0.95, bottom=0.01)
         overview = bare_axes(self.figure.add_subplot(grid[0, 0]))
         overview.imshow(self.gray, **{**GRAY_PIXELS, "interpolation": "antialiased"})
-        overview.set_title("original (red: the window)", fontsize=9)
+        overview.set_title("original (drag the red window)", fontsize=9)
         self.window = Rectangle((0, 0), 1, 1, fill=False, color="red", lw=1.5)
         overview.add_patch(self.window)
+        self.overview = overview
         self.crops = {}
         for index, name in enumerate(self.results, start=1):
             axes = bare_axes(self.figure.add_subplot(grid[divmod(index, 4)]))
             axes.set_title(name, fontsize=9)
             self.crops[name] = axes.imshow(np.zeros((self.size, self.size)), **GRAY_PIXELS)
-        self.update()
+        self.animate(self.window, *self.crops.values())
+        self.highlight_ring(overview)
+
+    def centre(self) -> tuple[float, float]:
+        """The window's centre: the middle of the pixel the text names."""
+        height, width = self.gray.shape
+        (at,) = self.typed_points("window", [self.at], 1, 0, (width - 1, height - 1), whole=True)
+        self.at = at.astype(int)
+        return (self.at[0] + 0.5, self.at[1] + 0.5)
 
     def update(self) -> None:
-        centre = (self.value("x") + 0.5, self.value("y") + 0.5)
+        centre = self.centre()
         for name, result in self.results.items():
             scale = result.shape[0] // self.gray.shape[0]
             window, _ = _zoom_window(result, scale, centre, self.size)
             self.crops[name].set_data(window)
         _, (left, right, bottom, top) = crop(self.gray, centre, self.size)
         self.window.set_bounds(left, top, right - left, bottom - top)
+
+    def handles(self) -> list[Handle]:
+        _, (left, right, bottom, top) = crop(self.gray, self.centre(), self.size)
+        return [
+            Handle("window", self.overview, tuple(self.at + 0.5), box=(left, top, right, bottom))
+        ]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        height, width = self.gray.shape
+        at = np.clip(np.floor(point), 0, (width - 1, height - 1))
+        self.controls["window"].value = format_points([at])
 
 
 class GrayLevelApp(SliderApp):

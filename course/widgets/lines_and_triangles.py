@@ -1,10 +1,12 @@
 """Lesson 03's apps: Bresenham against the report's staircase, and filled triangles.
 
 :class:`LineApp` draws one line three ways on a zoomed 32 x 32 grid, with
-the ideal line (from pixel centre to pixel centre) on top. :class:`TriangleApp`
-fills two triangles that share an edge, marks the pixel centres that fall
-inside, counts the pixels painted twice (or not at all) when the top-left
-rule is turned off, and shows the supersampled coverage at a chosen rate.
+the ideal line (from pixel centre to pixel centre) on top; drag either end,
+in any panel. :class:`TriangleApp` fills two triangles that share an edge,
+marks the pixel centres that fall inside, counts the pixels painted twice
+(or not at all) when the top-left rule is turned off, and shows the
+supersampled coverage at a chosen rate; drag any vertex. The points can be
+typed too (``x, y; x, y``).
 """
 
 from __future__ import annotations
@@ -12,31 +14,51 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 from matplotlib.axes import Axes
+from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
 
+from course.bezier import de_casteljau
+from course.bezier_handouts import bresenham_curve, segments_report
 from course.canvas import blank, paint
+from course.images import EXAMPLE_POINTS
 from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
 from course.triangles import EDGE_RULES
-from course.widgets.base import SliderApp
+from course.widgets.base import Handle, SliderApp, format_points
 
-__all__ = ["LineApp", "TriangleApp", "octant", "pixel_grid", "shared_edge_centres"]
+__all__ = [
+    "LINE_GRID",
+    "OWNER_COLORS",
+    "TRIANGLE_GRID",
+    "CurveSegmentsApp",
+    "LineApp",
+    "TriangleApp",
+    "octant",
+    "pixel_grid",
+    "shared_edge_centres",
+]
 
 LINE_GRID = 32
 TRIANGLE_GRID = 16
 
 
-def pixel_grid(axes: Axes, size: int, title: str = "") -> None:
-    """Set up axes as a zoomed size x size pixel grid in image space (y down)."""
+def pixel_grid(axes: Axes, size: int, title: str = "") -> LineCollection:
+    """Set up axes as a zoomed size x size pixel grid in image space (y down).
+
+    Returns the grid lines, to be drawn over the pixels: a moving picture
+    redraws them after its image, as they are not part of its background.
+    """
     axes.set_xlim(0, size)
     axes.set_ylim(size, 0)
     axes.set_aspect("equal")
     axes.set_xticks(np.arange(0, size + 1, 4))
     axes.set_yticks(np.arange(0, size + 1, 4))
-    axes.set_xticks(np.arange(size + 1), minor=True)
-    axes.set_yticks(np.arange(size + 1), minor=True)
-    axes.grid(which="minor", color="0.85", linewidth=0.5)
     axes.tick_params(which="both", labelsize=7, length=0)
     axes.set_title(title, fontsize=9)
+    lines = [[(k, 0), (k, size)] for k in range(size + 1)]
+    lines += [[(0, k), (size, k)] for k in range(size + 1)]
+    grid = LineCollection(lines, colors="0.85", linewidths=0.5)
+    axes.add_collection(grid)
+    return grid
 
 
 def octant(dx: int, dy: int) -> int:
@@ -60,23 +82,28 @@ def octant(dx: int, dy: int) -> int:
 class LineApp(SliderApp):
     """One line, three rasterizers: Bresenham, the report's 4-connected loop, Wu.
 
-    Controls ``x0, y0, x1, y1``: the endpoints, integer pixels on a 32 x 32
-    grid; every direction (all eight octants) is reachable. The red segment
-    is the ideal line between the two pixel centres.
+    Drag an end of the line in any panel, or type the two pixels in
+    ``endpoints`` (``x0, y0; x1, y1``, integers on the 32 x 32 grid); every
+    direction (all eight octants) is reachable. The red segment is the ideal
+    line between the two pixel centres.
     """
 
+    BLIT = True
+
     def __init__(self, p0: tuple[int, int] = (3, 6), p1: tuple[int, int] = (27, 17)) -> None:
-        limit = LINE_GRID - 1
+        self.ends = np.array([p0, p1], dtype=np.int64)
         controls = {
-            name: widgets.IntSlider(value=value, min=0, max=limit, description=name)
-            for name, value in zip(("x0", "y0", "x1", "y1"), (*p0, *p1), strict=True)
+            "endpoints": widgets.Text(
+                value=format_points(self.ends), description="x, y", continuous_update=False
+            )
         }
         super().__init__(controls, shape=(380, 960))
         self.panels = {}
         self.ideal = {}
+        grids = []
         for index, name in enumerate(("bresenham", "report", "wu")):
             axes = self.figure.add_axes((0.03 + index * 0.33, 0.06, 0.29, 0.78))
-            pixel_grid(axes, LINE_GRID)
+            grids.append(pixel_grid(axes, LINE_GRID))
             self.panels[name] = axes.imshow(
                 np.zeros((LINE_GRID, LINE_GRID)),
                 cmap="Greys",
@@ -85,11 +112,36 @@ class LineApp(SliderApp):
                 interpolation="nearest",
                 extent=(0, LINE_GRID, LINE_GRID, 0),
             )
-            (self.ideal[name],) = axes.plot([], [], color="crimson", linewidth=1.2)
+            (self.ideal[name],) = axes.plot(
+                [], [], color="crimson", linewidth=1.2, marker="o", markersize=4
+            )
         self.heading = self.figure.suptitle("", fontsize=10)
+        self.animate(
+            *self.panels.values(),
+            *grids,
+            *self.ideal.values(),
+            *(panel.axes.title for panel in self.panels.values()),
+            self.heading,
+        )
 
     def endpoints(self) -> tuple[tuple[int, int], tuple[int, int]]:
-        return (self.value("x0"), self.value("y0")), (self.value("x1"), self.value("y1"))
+        """The two pixels the line runs between, as the text describes them."""
+        typed = self.typed_points("endpoints", self.ends, 2, 0, LINE_GRID - 1, whole=True)
+        self.ends = typed.astype(np.int64)
+        (x0, y0), (x1, y1) = self.ends.tolist()
+        return (x0, y0), (x1, y1)
+
+    def handles(self) -> list[Handle]:
+        return [
+            Handle(f"p{end}", panel.axes, tuple(self.ends[end] + 0.5))
+            for end in (0, 1)
+            for panel in self.panels.values()
+        ]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        ends = self.ends.copy()
+        ends[int(name[1])] = np.clip(np.floor(point), 0, LINE_GRID - 1)
+        self.controls["endpoints"].value = format_points(ends)
 
     def update(self) -> None:
         p0, p1 = self.endpoints()
@@ -118,8 +170,9 @@ class LineApp(SliderApp):
         )
 
 
-# Colours of a pixel by who paints it: nobody, the first triangle, the second, both.
-_OWNERS = ListedColormap(["white", "#9ecae1", "#fdd0a2", "crimson"])
+#: Colours of a pixel by who paints it: nobody, the first triangle, the second, both.
+OWNER_COLORS = ("white", "#9ecae1", "#fdd0a2", "crimson")
+_OWNERS = ListedColormap(OWNER_COLORS)
 
 
 def shared_edge_centres(a: np.ndarray, c: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
@@ -145,12 +198,15 @@ def shared_edge_centres(a: np.ndarray, c: np.ndarray, shape: tuple[int, int]) ->
 class TriangleApp(SliderApp):
     """Two triangles sharing the edge AC: ABC and ACD, filled pixel by pixel.
 
-    Controls: the vertices ``ax, ay, ..., dx, dy`` on a 16 x 16 grid (steps
-    of 0.25, so vertices and edges can sit exactly on pixel centres), the
-    edge ``rule`` (:data:`course.triangles.EDGE_RULES`) and the SSAA
-    ``rate``. Left: who paints each pixel, red where both do; dots mark the
-    centres inside. Right: the supersampled coverage of both triangles.
+    Drag a vertex A, B, C or D in either panel (it snaps to quarter pixels,
+    so vertices and edges can sit exactly on pixel centres), or type them in
+    ``vertices``; pick the edge ``rule`` (:data:`course.triangles.EDGE_RULES`)
+    and the SSAA ``rate``. Left: who paints each pixel, red where both do;
+    dots mark the centres inside. Right: the supersampled coverage of both.
     """
+
+    NAMES = "ABCD"
+    BLIT = True
 
     def __init__(
         self,
@@ -163,22 +219,21 @@ class TriangleApp(SliderApp):
         rule: str = "top-left",
         rate: int = 4,
     ) -> None:
-        controls: dict[str, widgets.ValueWidget] = {}
-        for label, (x, y) in zip("abcd", vertices, strict=True):
-            for axis, value in (("x", x), ("y", y)):
-                controls[f"{label}{axis}"] = widgets.FloatSlider(
-                    value=value, min=0, max=TRIANGLE_GRID, step=0.25, description=f"{label}{axis}"
-                )
-        controls["rule"] = widgets.ToggleButtons(
-            options=EDGE_RULES, value=rule, description="rule", style={"button_width": "70px"}
-        )
-        controls["rate"] = widgets.IntSlider(value=rate, min=1, max=8, description="SSAA rate")
+        self.corners = np.array(vertices, dtype=float)
+        controls: dict[str, widgets.ValueWidget] = {
+            "vertices": widgets.Textarea(
+                value=format_points(self.corners), description="x, y", continuous_update=False
+            ),
+            "rule": widgets.ToggleButtons(
+                options=EDGE_RULES, value=rule, description="rule", style={"button_width": "70px"}
+            ),
+            "rate": widgets.IntSlider(value=rate, min=1, max=8, description="SSAA rate"),
+        }
         super().__init__(controls, shape=(460, 860))
         size = TRIANGLE_GRID
         left = self.figure.add_axes((0.04, 0.05, 0.44, 0.8))
         right = self.figure.add_axes((0.53, 0.05, 0.44, 0.8))
-        pixel_grid(left, size)
-        pixel_grid(right, size)
+        grids = (pixel_grid(left, size), pixel_grid(right, size))
         extent = (0, size, size, 0)
         self.owners = left.imshow(
             np.zeros((size, size)),
@@ -190,7 +245,7 @@ class TriangleApp(SliderApp):
         )
         centres = np.arange(size) + 0.5
         grid_x, grid_y = np.meshgrid(centres, centres)
-        left.plot(grid_x.ravel(), grid_y.ravel(), ".", color="0.75", markersize=2)
+        (all_centres,) = left.plot(grid_x.ravel(), grid_y.ravel(), ".", color="0.75", markersize=2)
         (self.inside_centres,) = left.plot([], [], "o", color="black", markersize=3)
         self.coverage = right.imshow(
             np.zeros((size, size)),
@@ -203,11 +258,40 @@ class TriangleApp(SliderApp):
         self.outlines = [axes.plot([], [], color="navy", linewidth=1)[0] for axes in (left, right)]
         self.shared = [axes.plot([], [], color="navy", linewidth=2)[0] for axes in (left, right)]
         self.left, self.right = left, right
+        self.labels = [
+            left.annotate(name, (0, 0), xytext=(5, 5), textcoords="offset points", fontsize=10)
+            for name in self.NAMES
+        ]
         self.counts = np.zeros((size, size), dtype=np.int64)
+        self.animate(
+            self.owners,
+            self.coverage,
+            *grids,
+            all_centres,
+            self.inside_centres,
+            *self.outlines,
+            *self.shared,
+            *self.labels,
+            left.title,
+            right.title,
+        )
 
     def vertices(self) -> np.ndarray:
-        """A, B, C, D as a (4, 2) array."""
-        return np.array([[self.value(f"{label}x"), self.value(f"{label}y")] for label in "abcd"])
+        """A, B, C, D as a (4, 2) array, as the text describes them."""
+        self.corners = self.typed_points("vertices", self.corners, 4, 0, TRIANGLE_GRID)
+        return self.corners.copy()
+
+    def handles(self) -> list[Handle]:
+        return [
+            Handle(name, axes, tuple(corner))
+            for name, corner in zip(self.NAMES, self.corners, strict=True)
+            for axes in (self.left, self.right)
+        ]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        corners = self.corners.copy()
+        corners[self.NAMES.index(name)] = np.clip(np.round(point * 4) / 4, 0, TRIANGLE_GRID)
+        self.controls["vertices"].value = format_points(corners)
 
     def update(self) -> None:
         a, b, c, d = self.vertices()
@@ -234,7 +318,136 @@ class TriangleApp(SliderApp):
             paint(image, pixels, 1.0, weight=weights)
         self.coverage.set_data(image)
         self.right.set_title(f"SSAA coverage, {rate} x {rate} samples per pixel", fontsize=9)
+        for label, corner in zip(self.labels, (a, b, c, d), strict=True):
+            label.xy = tuple(corner)
         quad = np.array([a, b, c, d, a])
         for outline, shared in zip(self.outlines, self.shared, strict=True):
             outline.set_data(quad[:, 0], quad[:, 1])
             shared.set_data([a[0], c[0]], [a[1], c[1]])
+
+
+CURVE_GRID = 40
+_SEGMENT_COUNTS = (1, 2, 4, 8, 16, 32, 64)
+# Who draws a pixel: nobody, the segments on the curve, the segments off it,
+# or nobody although the curve is more than a pixel from every drawn one.
+_DRAWN = ListedColormap(["white", "black", "#D55E00", "#56B4E9"])
+
+
+class CurveSegmentsApp(SliderApp):
+    """The lab's Task 7: a cubic drawn as ``segments`` Bresenham lines, against the curve.
+
+    Left, the pixels on a 40 x 40 grid, ten screen pixels each: black where
+    a line pixel lies on the curve, vermillion where the lines stray off it,
+    sky blue where the curve is more than a pixel from every drawn pixel; a
+    white dot marks a pixel drawn twice (the joints). The blue line is the
+    true curve; drag its control points. Right, those counts for 1 to 64
+    segments (:func:`course.bezier_handouts.segments_report`).
+    """
+
+    BLIT = True
+    ZOOM = 10
+
+    def __init__(self, points: np.ndarray | None = None, segments: int = 4) -> None:
+        start = EXAMPLE_POINTS[:4] * (CURVE_GRID / 700) if points is None else points
+        self.control = np.round(np.asarray(start, dtype=float), 1)
+        controls = {
+            "segments": widgets.IntSlider(
+                value=segments, min=1, max=max(_SEGMENT_COUNTS), description="segments"
+            ),
+            "points": widgets.Textarea(
+                value=format_points(self.control), description="x, y", continuous_update=False
+            ),
+        }
+        super().__init__(controls, shape=(470, 900))
+        side = CURVE_GRID * self.ZOOM  # the grid at an integer zoom: 10 screen pixels each
+        width, height = 900, 470
+        grid_axes = self.figure.add_axes((40 / width, 30 / height, side / width, side / height))
+        grid_lines = pixel_grid(grid_axes, CURVE_GRID)
+        grid_axes.set_xticks(np.arange(0, CURVE_GRID + 1, 8))
+        grid_axes.set_yticks(np.arange(0, CURVE_GRID + 1, 8))
+        self.grid_axes = grid_axes
+        self.pixels = grid_axes.imshow(
+            np.zeros((CURVE_GRID, CURVE_GRID)),
+            cmap=_DRAWN,
+            vmin=0,
+            vmax=3,
+            interpolation="nearest",
+            extent=(0, CURVE_GRID, CURVE_GRID, 0),
+        )
+        (self.twice,) = grid_axes.plot([], [], "o", color="white", markersize=3)
+        (self.polygon,) = grid_axes.plot([], [], "o--", color="0.45", markersize=6, linewidth=1)
+        (self.curve,) = grid_axes.plot([], [], color="#0072B2", linewidth=1.5)
+        self.labels = [
+            grid_axes.annotate(f"P{i}", (0, 0), xytext=(6, 6), textcoords="offset points")
+            for i in range(len(self.control))
+        ]
+        chart = self.figure.add_axes((520 / width, 60 / height, 350 / width, 370 / height))
+        chart.set_xscale("log", base=2)
+        chart.set_xticks(_SEGMENT_COUNTS, [str(n) for n in _SEGMENT_COUNTS])
+        chart.set_xlabel("segments", fontsize=9)
+        chart.set_ylabel("pixels", fontsize=9)
+        chart.tick_params(labelsize=8)
+        self.counts = {
+            "off": chart.plot([], [], "s-", color="#D55E00", label="off the curve")[0],
+            "missed": chart.plot([], [], "^--", color="#56B4E9", label="curve missed")[0],
+            "twice": chart.plot([], [], "o:", color="0.2", label="drawn twice")[0],
+        }
+        self.now = chart.axvline(segments, color="0.6", linewidth=1)
+        chart.legend(fontsize=8, loc="upper center")
+        self.chart = chart
+        self.animate(
+            self.pixels,
+            grid_lines,
+            self.twice,
+            self.polygon,
+            self.curve,
+            *self.labels,
+            grid_axes.title,
+            *self.counts.values(),
+            self.now,
+        )
+        self.highlight_ring(grid_axes)
+
+    def read_control(self) -> np.ndarray:
+        """The control points, as the text describes them."""
+        self.control = self.typed_points("points", self.control, len(self.control), 0, CURVE_GRID)
+        return self.control
+
+    def update(self) -> None:
+        control = self.read_control()
+        segments = int(self.value("segments"))
+        report = segments_report(control, segments)
+        picture = np.zeros((CURVE_GRID, CURVE_GRID))
+        drawn = bresenham_curve(control, segments)
+        painted, counts = np.unique(drawn, axis=0, return_counts=True)
+        for pixels, code in ((painted, 1), (report["off_pixels"], 2), (report["missed_pixels"], 3)):
+            inside = (pixels >= 0).all(axis=1) & (pixels < CURVE_GRID).all(axis=1)
+            picture[pixels[inside, 1], pixels[inside, 0]] = code
+        self.pixels.set_data(picture)
+        doubled = painted[counts > 1] + 0.5
+        self.twice.set_data(doubled[:, 0], doubled[:, 1])
+        self.polygon.set_data(control[:, 0], control[:, 1])
+        curve = de_casteljau(control, np.linspace(0.0, 1.0, 200))
+        self.curve.set_data(curve[:, 0], curve[:, 1])
+        for label, point in zip(self.labels, control, strict=True):
+            label.xy = tuple(point)
+        self.grid_axes.set_title(
+            f"{segments} segments: {report['pixels']} pixels, {report['twice']} drawn twice\n"
+            f"{report['off']} off the curve, {report['missed']} of its {report['curve']} missed",
+            fontsize=9,
+        )
+        sweep = [segments_report(control, n) for n in _SEGMENT_COUNTS]
+        for key, plotted in self.counts.items():
+            plotted.set_data(_SEGMENT_COUNTS, [row[key] for row in sweep])
+        self.chart.set_ylim(
+            0, max(max(row["twice"], row["off"], row["missed"]) for row in sweep) + 4
+        )
+        self.now.set_xdata([segments, segments])
+
+    def handles(self) -> list[Handle]:
+        return [Handle(f"P{i}", self.grid_axes, tuple(p)) for i, p in enumerate(self.control)]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        control = self.control.copy()
+        control[int(name[1:])] = np.clip(np.round(point, 1), 0, CURVE_GRID)
+        self.controls["points"].value = format_points(control)

@@ -1,6 +1,8 @@
-"""Lesson 08's slider app: an iterative Poisson solve, sweep by sweep.
+"""Lesson 08's apps: where to paste, and an iterative Poisson solve, sweep by sweep.
 
-The region starts as the pasted foreground (the lab's ``g = 0``); each sweep
+:class:`CloneApp`: drag the foreground over the background, and the seamless
+clone follows, solved exactly at every step. :class:`PoissonIterationApp`:
+the region starts as the pasted foreground (the lab's ``g = 0``); each sweep
 lets the boundary's values seep further in. Beside the picture, the error
 against the exact solution, in grey levels, on a fixed colour scale, so one
 sees how slowly Jacobi's error leaves the middle of the region.
@@ -16,9 +18,10 @@ from matplotlib.figure import Figure
 
 from course import images, poisson
 from course._validate import as_image, as_int
-from course.widgets.base import SliderApp
+from course.poisson_problem import build_clone_problem
+from course.widgets.base import Handle, SliderApp, format_points
 
-__all__ = ["PoissonIterationApp", "show_images"]
+__all__ = ["CloneApp", "PoissonIterationApp", "half_size", "show_images"]
 
 # Sweeps the slider stops at, roughly three per decade up to the lab's 8000.
 SWEEP_STOPS = (0, 1, 3, 10, 30, 100, 300, 1000, 3000, 8000)
@@ -176,3 +179,118 @@ def show_images(
         axes.set_title(name, fontsize=10)
         axes.set_axis_off()
     return figure
+
+
+class CloneApp(SliderApp):
+    """Drag the pasted foreground over the background: the naive paste and the clone follow.
+
+    Left, the foreground's pixels copied in (a seam all around); right, the
+    seamless clone, solved exactly at each step (:func:`course.poisson.solve`:
+    the discrete sine transform for a rectangle). Both are shown at half
+    size, each screen pixel the mean of 2 x 2 image pixels. Drag the
+    foreground in either panel, or type its top-left pixel in ``offset``.
+    """
+
+    BLIT = True
+
+    def __init__(
+        self, background: Any = None, foreground: Any = None, offset: Any = (500, 300)
+    ) -> None:
+        self.background = as_image(images.lake() if background is None else background)
+        self.foreground = as_image(images.plane() if foreground is None else foreground)
+        if self.background.ndim != self.foreground.ndim:
+            raise ValueError(
+                "foreground: expected a gray foreground for a gray background and RGB for RGB; "
+                f"got shapes {self.foreground.shape} and {self.background.shape}"
+            )
+        self.half_background = half_size(self.background)
+        self.offset = np.array(offset, dtype=int)
+        controls = {
+            "offset": widgets.Text(
+                value=format_points([self.offset]), description="x, y", continuous_update=False
+            )
+        }
+        height, width = self.half_background.shape[:2]
+        gap, top = 20, 26
+        columns, rows = 2 * width + 3 * gap, height + top + 10
+        super().__init__(controls, shape=(rows, columns), format="jpeg")
+        self.panels = {}
+        for index, name in enumerate(("naive paste", "seamless clone")):
+            left = gap + index * (width + gap)
+            axes = self.figure.add_axes((left / columns, 10 / rows, width / columns, height / rows))
+            axes.set_axis_off()
+            # Data coordinates are the full image's pixels: 0 .. 2 W across.
+            self.panels[name] = axes.imshow(
+                self.half_background,
+                interpolation="nearest",
+                extent=(0, 2 * width, 2 * height, 0),
+            )
+        self.titles = {
+            name: picture.axes.set_title("", fontsize=10) for name, picture in self.panels.items()
+        }
+        self.animate(*self.panels.values(), *self.titles.values())
+        for picture in self.panels.values():
+            self.highlight_ring(picture.axes)
+
+    def read_offset(self) -> np.ndarray:
+        """The foreground's top-left pixel, as the text says, if it fits."""
+        limit = np.array(self.background.shape[1::-1]) - self.foreground.shape[1::-1]
+        (offset,) = self.typed_points("offset", [self.offset], 1, 0, limit, whole=True)
+        self.offset = offset.astype(int)
+        return self.offset
+
+    def update(self) -> None:
+        x, y = self.read_offset()
+        # The inputs were checked once, in __init__: build and solve directly.
+        problem = build_clone_problem(self.background, self.foreground, (x, y), None, "plain")
+        solution = np.clip(poisson.solve(problem), 0.0, 1.0)
+        # Both change the region: the foreground inside its outer ring of pixels
+        # (course.poisson.naive_paste and seamless_clone).
+        for name, region in (
+            ("naive paste", self.foreground[1:-1, 1:-1]),
+            ("seamless clone", solution[1:-1, 1:-1]),
+        ):
+            self.panels[name].set_data(self._pasted(x + 1, y + 1, region))
+        self.titles["naive paste"].set_text(f"naive paste at ({x}, {y})")
+        self.titles["seamless clone"].set_text(f"seamless clone at ({x}, {y})")
+
+    def _pasted(self, x: int, y: int, patch: np.ndarray) -> np.ndarray:
+        """The half-size background with ``patch`` pasted at (x, y).
+
+        Only the 2 x 2 blocks the patch touches are averaged again.
+        """
+        height, width = patch.shape[:2]
+        left, top = x // 2 * 2, y // 2 * 2
+        right, bottom = -(-(x + width) // 2) * 2, -(-(y + height) // 2) * 2
+        window = self.background[top:bottom, left:right].copy()
+        window[y - top : y - top + height, x - left : x - left + width] = patch
+        shown = self.half_background.copy()
+        shown[top // 2 : bottom // 2, left // 2 : right // 2] = half_size(window)
+        return shown
+
+    def handles(self) -> list[Handle]:
+        x, y = self.offset
+        height, width = self.foreground.shape[:2]
+        return [
+            Handle("foreground", picture.axes, (x, y), box=(x, y, x + width, y + height))
+            for picture in self.panels.values()
+        ]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        limit = np.array(self.background.shape[1::-1]) - self.foreground.shape[1::-1]
+        offset = np.clip(np.round(point), 0, limit)
+        self.controls["offset"].value = format_points([offset])
+
+
+def half_size(image: np.ndarray) -> np.ndarray:
+    """Each 2 x 2 block of pixels replaced by its mean (a last odd row or column dropped).
+
+    Examples
+    --------
+    >>> half_size(np.arange(16.0).reshape(4, 4))
+    array([[ 2.5,  4.5],
+           [10.5, 12.5]])
+    """
+    height, width = (side // 2 * 2 for side in image.shape[:2])
+    blocks = image[:height, :width].reshape(height // 2, 2, width // 2, 2, *image.shape[2:])
+    return blocks.mean(axis=(1, 3))

@@ -1,0 +1,116 @@
+// The picture of a course app: a PNG drawn by the kernel, and the pointer on it.
+//
+// The kernel (course.widgets.base) draws every picture; this file only shows
+// it and reports where the student presses, drags and releases, in picture
+// pixels (the PNG's own pixels, whatever the zoom of the page). A drag never
+// queues more than one redraw: while the kernel draws, only the latest
+// position is kept, and it is sent when the kernel says the picture is done.
+// The cursor shows what a press would do, from the grabbable places the
+// kernel lists in `handles`.
+
+function pictureUrl(value, format) {
+  const bytes = value instanceof DataView ? value : new Uint8Array(value ?? []);
+  return URL.createObjectURL(new Blob([bytes], { type: `image/${format}` }));
+}
+
+function render({ model, el }) {
+  const image = document.createElement("img");
+  image.className = "widget-image course-picture";
+  image.draggable = false;
+  el.appendChild(image);
+
+  let url = null;
+  function show() {
+    const next = pictureUrl(model.get("value"), model.get("format"));
+    image.src = next;
+    if (url) URL.revokeObjectURL(url);
+    url = next;
+    image.width = model.get("width");
+    image.height = model.get("height");
+  }
+  show();
+  model.on("change:value", show);
+
+  // Where the pointer is, in the PNG's pixels (the page may scale the image).
+  function position(event) {
+    const box = image.getBoundingClientRect();
+    const scaleX = (image.naturalWidth || box.width) / box.width;
+    const scaleY = (image.naturalHeight || box.height) / box.height;
+    return [(event.clientX - box.left) * scaleX, (event.clientY - box.top) * scaleY];
+  }
+
+  function over([x, y]) {
+    for (const [hx, hy, radius, left, top, right, bottom] of model.get("handles")) {
+      if (radius > 0 && Math.hypot(x - hx, y - hy) <= radius) return true;
+      if (radius === 0 && x >= left && x <= right && y >= top && y <= bottom) return true;
+    }
+    return false;
+  }
+
+  let dragging = false;
+  let waiting = false; // a move has been sent and its picture is not back yet
+  let latest = null; // the newest position not yet sent
+
+  function send(kind, [x, y]) {
+    model.send({ kind, x, y });
+  }
+
+  function flush() {
+    if (latest && !waiting) {
+      waiting = true;
+      send("move", latest);
+      latest = null;
+    }
+  }
+
+  model.on("msg:custom", (message) => {
+    if (message.kind === "drawn") {
+      waiting = false;
+      flush();
+    }
+  });
+
+  image.addEventListener("pointerdown", (event) => {
+    if (event.button !== 0) return;
+    event.preventDefault();
+    dragging = true;
+    latest = null;
+    waiting = true;
+    image.setPointerCapture(event.pointerId);
+    image.style.cursor = "grabbing";
+    send("down", position(event));
+  });
+
+  image.addEventListener("pointermove", (event) => {
+    const where = position(event);
+    if (dragging) {
+      latest = where;
+      flush();
+    } else {
+      image.style.cursor = over(where) ? "grab" : model.get("clickable") ? "crosshair" : "default";
+    }
+  });
+
+  function release(event) {
+    if (!dragging) return;
+    dragging = false;
+    latest = null; // the release carries the final position, sent even while waiting
+    waiting = true;
+    image.style.cursor = over(position(event)) ? "grab" : "default";
+    send("up", position(event));
+  }
+  image.addEventListener("pointerup", release);
+  image.addEventListener("pointercancel", release);
+
+  image.addEventListener("dblclick", (event) => {
+    event.preventDefault();
+    waiting = true;
+    send("double", position(event));
+  });
+
+  return () => {
+    if (url) URL.revokeObjectURL(url);
+  };
+}
+
+export default { render };

@@ -7,10 +7,12 @@ SOURCES := $(wildcard course tests tests_browser benchmarks notebooks)
 APP_PORT ?= 8866
 # JupyterLab refuses to start as root without this flag (containers run as root).
 ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
+# Kernel messages sent at once, not held back by Nagle's algorithm (course.classroom.serving).
+PROMPT := course.classroom.serving.PromptConnection
 
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
-.PHONY: lab app student test test-browser lint format notebooks bench clean
+.PHONY: lab app student test test-browser lint format notebooks bench bench-browser clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -22,11 +24,12 @@ $(VENV)/.%-installed: pyproject.toml | $(BIN)/python
 	touch $@
 
 lab: $(VENV)/.lab-installed $(VENV)/.test-installed
-	$(BIN)/jupyter lab notebooks/ $(ROOT_FLAG)
+	$(BIN)/jupyter lab notebooks/ $(ROOT_FLAG) --ServerApp.kernel_websocket_connection_class=$(PROMPT)
 
 # The lessons as apps for a lecture hall: Voila, code hidden, sliders live.
 app: $(VENV)/.lab-installed $(VENV)/.test-installed
-	$(BIN)/voila notebooks/ --no-browser --Voila.ip=127.0.0.1 --port=$(APP_PORT)
+	$(BIN)/voila notebooks/ --no-browser --Voila.ip=127.0.0.1 --port=$(APP_PORT) \
+		--Voila.kernel_websocket_connection_class=$(PROMPT)
 
 # The student edition: solutions replaced by stubs, outputs cleared, in student/.
 student: $(VENV)/.test-installed
@@ -49,6 +52,9 @@ test: lint
 test-browser: $(VENV)/.browser-installed $(VENV)/.test-installed
 	$(BIN)/python -m pytest -p no:cacheprovider --timeout=900 --durations=0 -v tests_browser
 
+# The README's picture: lesson 01's app as the notebook first shows it.
+README_PICTURE := 01_de_casteljau_degree3_t0.50
+
 notebooks: $(VENV)/.test-installed
 	for notebook in $(NOTEBOOKS); do \
 		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
@@ -56,12 +62,20 @@ notebooks: $(VENV)/.test-installed
 	done
 	$(BIN)/nbstripout --keep-output --keep-count $(NOTEBOOKS)
 	$(BIN)/python -m course map --readme README.md
+	$(BIN)/python -m course gallery --out docs --force --only $(README_PICTURE)
 
 # One BLAS thread: every anchor runs on one core, so the ratios compare like with
 # like, and a busy machine cannot stall a multithreaded matrix product.
 bench: $(VENV)/.bench-installed $(VENV)/.test-installed
 	export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1; \
-	for script in benchmarks/bench_*.py; do $(BIN)/python "$$script" || exit 1; done
+	for script in $(filter-out benchmarks/bench_browser_latency.py,$(wildcard benchmarks/bench_*.py)); do \
+		$(BIN)/python "$$script" || exit 1; \
+	done
+
+# The time from a mouse move or a key press to the new picture, in JupyterLab in
+# Debian's Chromium, against an echo app's floor. Not part of `make test`.
+bench-browser: $(VENV)/.browser-installed $(VENV)/.test-installed
+	$(BIN)/python benchmarks/bench_browser_latency.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache .ruff_cache

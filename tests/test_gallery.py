@@ -126,3 +126,12 @@ def test_every_registered_picture_is_a_png_named_for_its_lesson():
     assert all(
         picture.caption and picture.name[:3] in {f"{n}_" for n in LESSONS} for picture in pictures
     )
+
+
+def test_only_renders_the_named_pictures_and_names_an_unknown_one(tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr("course.classroom.gallery.gallery_pictures", lambda folder: TINY)
+    assert main(["gallery", "--out", str(tmp_path), "--only", "b"]) == 0
+    assert [path.name for path in tmp_path.iterdir()] == ["b.png"]
+    assert main(["gallery", "--out", str(tmp_path / "x"), "--only", "c"]) == 2
+    assert "no picture named 'c'; the pictures are: a, b" in capsys.readouterr().err
+    assert not (tmp_path / "x").exists()

@@ -71,13 +71,19 @@ def test_the_clone_app_follows_a_drag_with_the_library_s_paste_and_clone():
     start = app.drag_along("foreground", [(5, 5), (3.0, 2.0)])
     x, y = app.offset
     # Grabbed at the patch's middle, (4 + 6, 6 + 5); a screen pixel is 2 image pixels.
-    pointer = app.data_point(app.panels["naive paste"].axes, *np.add(start, (3, 2)))
+    pointer = app.data_point(app.panels["naive paste"], *np.add(start, (3, 2)))
     np.testing.assert_allclose(pointer, (10 + 6, 11 + 4))
     assert (x, y) == (10, 10) and app.value("offset") == "10, 10"
     clone = half_size(poisson.seamless_clone(background, foreground, (x, y)))
     naive = half_size(poisson.naive_paste(background, foreground, (x, y)))
-    np.testing.assert_allclose(app.panels["seamless clone"].get_array(), clone, atol=1e-12)
-    np.testing.assert_array_equal(app.panels["naive paste"].get_array(), naive)
+    np.testing.assert_allclose(app.shown["seamless clone"], clone, atol=1e-12)
+    np.testing.assert_array_equal(app.shown["naive paste"], naive)
+    # Pixel for pixel in the picture, where the panel is, as imshow would draw it.
+    box = app.panels["naive paste"].get_window_extent()
+    left, top = round(box.x0), round(app.figure.bbox.height - box.y1)
+    drawn = app.view.pixels()[top : top + 15, left : left + 20, :3]
+    expected = np.repeat((np.clip(naive, 0, 1) * 255).astype(np.uint8)[..., None], 3, axis=2)
+    np.testing.assert_array_equal(drawn, expected)
     app.drag_along("foreground", [(-10_000, 10_000)])  # beyond the image: the corner it fits
     assert tuple(app.offset) == (0, 30 - 10)
     app.controls["offset"].value = "35, 0"

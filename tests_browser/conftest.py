@@ -30,6 +30,8 @@ matplotlib.use("Agg")
 
 from playwright.sync_api import Browser, Page, sync_playwright
 
+from course.classroom.serving import CONNECTION_CLASS
+
 REPOSITORY = Path(__file__).resolve().parent.parent
 CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
 # What this machine's Chromium needs: no sandbox as root, no GPU, and no
@@ -133,10 +135,13 @@ def jupyter_environment(root: Path) -> dict[str, str]:
     return environment
 
 
-@pytest.fixture(scope="session")
-def lab(served: Path) -> Iterator[str]:
-    """A JupyterLab server on 127.0.0.1, token disabled; its base URL."""
-    port = free_port()
+def lab_command(root_dir: Path, port: int, nagle: bool = False) -> list[str]:
+    """JupyterLab on 127.0.0.1:``port`` serving ``root_dir``, no token, no news, no updates.
+
+    The kernel's websocket sends at once (:mod:`course.classroom.serving`), as
+    ``make lab`` has it, unless ``nagle``: jupyter_server's own, which holds
+    small messages back for up to 40 ms.
+    """
     command = [
         str(BIN / "jupyter"),
         "lab",
@@ -146,14 +151,24 @@ def lab(served: Path) -> Iterator[str]:
         "--ServerApp.port_retries=0",
         "--IdentityProvider.token=",
         "--ServerApp.password=",
-        # The test shuts kernels down over the REST API between notebooks.
-        "--ServerApp.disable_check_xsrf=True",
-        f"--ServerApp.root_dir={served / 'notebooks'}",
+        f"--ServerApp.root_dir={root_dir}",
         "--LabApp.news_url=None",
         "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
     ]
+    if not nagle:
+        command.append(f"--ServerApp.kernel_websocket_connection_class={CONNECTION_CLASS}")
     if os.geteuid() == 0:
         command.append("--allow-root")
+    return command
+
+
+@pytest.fixture(scope="session")
+def lab(served: Path) -> Iterator[str]:
+    """A JupyterLab server on 127.0.0.1, token disabled; its base URL."""
+    port = free_port()
+    command = lab_command(served / "notebooks", port)
+    # The test shuts kernels down over the REST API between notebooks.
+    command.append("--ServerApp.disable_check_xsrf=True")
     with server(command, served, "lab", port, "/api/status") as base:
         yield base
 
@@ -170,6 +185,7 @@ def voila(served: Path) -> Iterator[str]:
         f"--port={port}",
         "--Voila.port_retries=0",
         "--show_tracebacks=True",
+        f"--Voila.kernel_websocket_connection_class={CONNECTION_CLASS}",
     ]
     with server(command, served, "voila", port, "/") as base:
         yield base

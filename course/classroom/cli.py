@@ -35,6 +35,12 @@ def main(argv: list[str] | None = None) -> int:
         command.add_argument(
             "--notebooks", type=Path, default=NOTEBOOKS, help="the lessons' folder"
         )
+    gallery_command.add_argument(
+        "--only",
+        action="append",
+        metavar="NAME",
+        help="render only the picture of this name (repeatable), e.g. the README's",
+    )
     map_command = commands.add_parser(
         "map", help="print the course map: a Markdown table of the lessons (the README's)"
     )
@@ -62,6 +68,8 @@ def main(argv: list[str] | None = None) -> int:
             return 0
         if args.command == "gallery":
             pictures = gallery.gallery_pictures(args.notebooks)
+            if args.only:
+                pictures = gallery.named_pictures(pictures, args.only)
             written = gallery.write_gallery(args.out, args.force, pictures)
         else:
             written = edition.write_student_edition(args.out, args.notebooks, args.force)

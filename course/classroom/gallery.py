@@ -17,7 +17,7 @@ from course.classroom.folders import check_output_folder
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 from course.classroom.registry import Picture, lessons
 
-__all__ = ["ProgressBar", "gallery_pictures", "write_gallery"]
+__all__ = ["ProgressBar", "gallery_pictures", "named_pictures", "write_gallery"]
 
 
 class ProgressBar:
@@ -61,6 +61,26 @@ def gallery_pictures(folder: str | Path = NOTEBOOKS) -> list[Picture]:
         if book.number in registered
         for picture in registered[book.number].pictures
     ]
+
+
+def named_pictures(pictures: list[Picture], names: list[str]) -> list[Picture]:
+    """The pictures of these names, in the order asked; ValueError names an unknown one.
+
+    Examples
+    --------
+    >>> shown = [Picture("a", "first", bytes), Picture("b", "second", bytes)]
+    >>> [picture.name for picture in named_pictures(shown, ["b"])]
+    ['b']
+    >>> named_pictures(shown, ["c"])
+    Traceback (most recent call last):
+    ...
+    ValueError: no picture named 'c'; the pictures are: a, b
+    """
+    by_name = {picture.name: picture for picture in pictures}
+    for name in names:
+        if name not in by_name:
+            raise ValueError(f"no picture named {name!r}; the pictures are: {', '.join(by_name)}")
+    return [by_name[name] for name in names]
 
 
 def write_gallery(

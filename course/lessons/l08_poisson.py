@@ -81,7 +81,7 @@ def clone_landmarks(app: SliderApp) -> list[Landmark]:
     rows = [y + 2 + round(k * (height - 5) / 4) for k in range(5)] + [y - 3, y + height + 2]
     landmarks = []
     for name, shown in pictures.items():
-        axes = app.panels[name].axes
+        axes = app.panels[name]
         for column in columns:
             for row in rows:
                 half_row, half_column = row // 2, column // 2

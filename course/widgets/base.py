@@ -1,7 +1,8 @@
 """What every app shares: a matplotlib figure shown as a picture the student can grab.
 
-The picture is a :class:`Picture` widget holding a PNG that a matplotlib
-``Figure`` renders on the Agg canvas. An app builds its figure and artists
+The picture is a :class:`~course.widgets.picture.Picture` widget holding a PNG
+that a matplotlib ``Figure`` renders on the Agg canvas
+(:class:`~course.widgets.picture.FigureView`). An app builds its figure and artists
 once; a control's change calls ``update``, which only changes artist data,
 and then the figure is rendered again. No pyplot, no figure rebuilt per step,
 no frontend backend: it passes nbval, runs in JupyterLab and Voila, and the
@@ -19,50 +20,26 @@ Every point also has a text box, for the keyboard; the two stay in step.
 from __future__ import annotations
 
 import base64
-import io
 import re
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
-import anywidget
 import ipywidgets as widgets
 import numpy as np
-import traitlets
 from matplotlib.axes import Axes
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
-from PIL import Image as PILImage
 
-__all__ = [
-    "GRAY_PIXELS",
-    "HIGHLIGHT",
-    "FigureView",
-    "Handle",
-    "Picture",
-    "SliderApp",
-    "bare_axes",
-    "format_points",
-    "parse_points",
-]
+from course.widgets.picture import FigureView
 
-#: imshow settings for a gray image in [0, 1], pixels drawn as flat squares.
-GRAY_PIXELS = {"cmap": "gray", "vmin": 0.0, "vmax": 1.0, "interpolation": "nearest"}
+__all__ = ["HIGHLIGHT", "Handle", "SliderApp", "format_points", "parse_points"]
+
 #: The colour of what the student holds (Okabe and Ito's orange, colour-blind safe).
 HIGHLIGHT = "#E69F00"
 
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
-
-
-def bare_axes(axes: Any) -> Any:
-    """The axes without ticks, for a picture: returned, so it can wrap ``add_subplot``."""
-    axes.set_xticks([])
-    axes.set_yticks([])
-    return axes
 
 
 def parse_points(text: str) -> np.ndarray:
@@ -93,92 +70,6 @@ def format_points(points: Any) -> str:
     '10, 10; 2.5, 3'
     """
     return "; ".join(f"{x:g}, {y:g}" for x, y in np.asarray(points, dtype=float))
-
-
-class Picture(anywidget.AnyWidget):
-    """An app's picture: the PNG the kernel draws, and the student's pointer on it.
-
-    ``value`` holds the PNG. ``handles`` lists what a press would grab, in
-    picture pixels (row 0 at the top), so that the browser shows a grabbing
-    hand over it: ``[x, y, radius, 0, 0, 0, 0]`` for a point and ``[0, 0, 0,
-    left, top, right, bottom]`` for a box. Presses, moves and releases come
-    back as messages ``{"kind", "x", "y"}`` in picture pixels; the kernel
-    answers each with ``{"kind": "drawn"}`` once its picture is published.
-    """
-
-    _esm = (Path(__file__).parent / "picture.js").read_text(encoding="utf-8")
-    value = traitlets.Bytes(b"").tag(sync=True)
-    format = traitlets.Unicode("png").tag(sync=True)
-    width = traitlets.Int(0).tag(sync=True)
-    height = traitlets.Int(0).tag(sync=True)
-    handles = traitlets.List([]).tag(sync=True)
-    clickable = traitlets.Bool(False).tag(sync=True)
-
-
-class FigureView:
-    """A matplotlib ``Figure`` of ``shape = (H, W)`` pixels, rendered into a :class:`Picture`.
-
-    ``format`` is ``"png"`` (lossless: line art, pixels to count) or ``"jpeg"``
-    (photographs: on lesson 08's lake, 2.0 ms to encode against PNG's 12 ms,
-    74 kB against 212 kB; at quality :data:`JPEG_QUALITY` with full-resolution
-    colour no channel moves by more than 19 of 255).
-    """
-
-    #: JPEG quality of the photographic apps (colour kept at full resolution).
-    JPEG_QUALITY = 95
-
-    def __init__(
-        self, shape: tuple[int, int] = (500, 500), dpi: int = 100, format: str = "png"
-    ) -> None:
-        rows, columns = shape
-        if format not in ("png", "jpeg"):
-            raise ValueError(f"format must be one of 'png', 'jpeg'; got {format!r}")
-        self.figure = Figure(figsize=(columns / dpi, rows / dpi), dpi=dpi)
-        self.canvas = FigureCanvasAgg(self.figure)
-        self.image = Picture(width=columns, height=rows, format=format)
-        self._background = None
-
-    def pixels(self) -> np.ndarray:
-        """The picture as last rendered, RGBA pixels (height, width, 4) uint8, before encoding."""
-        return np.asarray(self.canvas.buffer_rgba()).copy()
-
-    def render(self) -> bytes:
-        """Draw the whole figure into the picture and return the PNG bytes."""
-        self.canvas.draw()
-        return self.publish()
-
-    def render_moving(self, artists: list) -> bytes:
-        """Redraw only ``artists`` (made ``set_animated(True)``) over a cached background.
-
-        Blitting: the first call draws everything else once and keeps it;
-        later calls restore it and draw just the moving artists. Call
-        :meth:`invalidate` when something in the background changes.
-        """
-        if self._background is None:
-            self.canvas.draw()  # skips animated artists
-            self._background = self.canvas.copy_from_bbox(self.figure.bbox)
-        else:
-            self.canvas.restore_region(self._background)
-        for artist in artists:
-            self.figure.draw_artist(artist)
-        return self.publish()
-
-    def invalidate(self) -> None:
-        """Forget the cached background; the next :meth:`render_moving` redraws it."""
-        self._background = None
-
-    def publish(self) -> bytes:
-        """Encode the canvas as it stands into the picture; return the encoded bytes."""
-        buffer = io.BytesIO()
-        pixels = np.asarray(self.canvas.buffer_rgba())
-        if self.image.format == "jpeg":
-            PILImage.fromarray(pixels[..., :3]).save(
-                buffer, format="jpeg", quality=self.JPEG_QUALITY, subsampling=0
-            )
-        else:  # fast PNG: level-1 compression, the picture is redrawn on every step
-            PILImage.fromarray(pixels).save(buffer, format="png", compress_level=1)
-        self.image.value = buffer.getvalue()
-        return buffer.getvalue()
 
 
 @dataclass(frozen=True)
@@ -242,6 +133,11 @@ class SliderApp:
         self._held = False
         self._rings: dict[Axes, tuple[Line2D, Rectangle]] = {}
         self.moving: list[Any] = []
+        # Artists that move with one handle only (its label): while another is
+        # dragged they join the cached background, as text is slow to draw.
+        self.handle_artists: dict[str, list[Any]] = {}
+        # Pictures shown pixel for pixel, by axes: pasted, not drawn (BLIT apps).
+        self.pixel_images: dict[Axes, np.ndarray] = {}
         for control in controls.values():
             control.observe(self._on_change, names="value")
         self.view.image.on_msg(self._on_message)
@@ -273,7 +169,9 @@ class SliderApp:
 
     def render(self) -> bytes:
         """Draw the figure, or only what moves over the cached rest when the app blits."""
-        return self.view.render_moving(self.moving) if self.BLIT else self.view.render()
+        if self.BLIT:
+            return self.view.render_moving(self.moving, self.pixel_images)
+        return self.view.render()
 
     def animate(self, *artists: Any) -> None:
         """Mark artists as moving: with :attr:`BLIT`, only these are redrawn each step."""
@@ -347,6 +245,27 @@ class SliderApp:
         """A click on no handle, at ``point`` in ``axes``; True if it changed something."""
         return False
 
+    def grab_started(self, name: str) -> None:
+        """Handle ``name`` is held: the other handles' own artists join the background."""
+        if not self.BLIT:
+            return
+        for other, artists in self.handle_artists.items():
+            for artist in artists if other != name else ():
+                if artist in self.moving:
+                    artist.set_animated(False)
+                    self.moving.remove(artist)
+        self.view.invalidate()
+
+    def grab_ended(self, name: str) -> None:
+        """Handle ``name`` is let go: every handle's artists move again."""
+        if not self.BLIT:
+            return
+        for artists in self.handle_artists.values():
+            for artist in artists:
+                if artist not in self.moving:
+                    self.animate(artist)
+        self.view.invalidate()
+
     def double_click(self, name: str) -> bool:
         """A double click on handle ``name``; True if it changed something."""
         return False
@@ -373,12 +292,14 @@ class SliderApp:
                 offset = self.data_point(handle.axes, x, y) - np.asarray(handle.at, dtype=float)
                 self._grab = _Grab(handle, offset, (x, y))
                 self.grabbed = handle.name
+                self.grab_started(handle.name)
                 self.refresh()  # the highlight
         elif kind in ("move", "up") and self._grab is not None:
             grab = self._grab
             point = self.data_point(grab.handle.axes, x, y) - grab.offset
             if kind == "up":
                 self._grab, self.grabbed = None, None
+                self.grab_ended(grab.handle.name)
             with self.holding():
                 self.drag(grab.handle.name, point)
         elif kind == "up" and self._press is not None:

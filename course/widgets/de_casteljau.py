@@ -120,6 +120,7 @@ class DeCasteljauApp(SliderApp):
             self.title,
         )
         self.highlight_ring(axes)
+        self.handle_artists = {f"P{i}": [label] for i, label in enumerate(self.labels)}
 
     def _on_change(self, change: dict) -> None:
         if self._syncing:  # our own write-back of count and text

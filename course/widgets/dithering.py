@@ -26,13 +26,8 @@ from course._validate import as_gray, as_image, as_int
 from course.blue_noise import blue_noise_mask, cluster_energy, radial_power_spectrum
 from course.blue_noise import void_and_cluster as rank_pixels
 from course.canvas import crop
-from course.widgets.base import (
-    GRAY_PIXELS,
-    Handle,
-    SliderApp,
-    bare_axes,
-    format_points,
-)
+from course.widgets.base import Handle, SliderApp, format_points
+from course.widgets.picture import GRAY_PIXELS, bare_axes
 
 __all__ = ["DitherComparisonApp", "GrayLevelApp", "VoidAndClusterApp", "side_by_side"]
 

@@ -15,7 +15,8 @@ import numpy as np
 
 from course import filters
 from course._validate import as_image, as_int
-from course.widgets.base import GRAY_PIXELS, SliderApp, bare_axes
+from course.widgets.base import SliderApp
+from course.widgets.picture import GRAY_PIXELS, bare_axes
 
 __all__ = ["RepeatedBlurApp", "border_ring_mean"]
 

@@ -24,6 +24,7 @@ from course.images import EXAMPLE_POINTS
 from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
 from course.triangles import EDGE_RULES
 from course.widgets.base import Handle, SliderApp, format_points
+from course.widgets.picture import PixelPanel, pixel_axes
 
 __all__ = [
     "LINE_GRID",
@@ -89,6 +90,7 @@ class LineApp(SliderApp):
     """
 
     BLIT = True
+    ZOOM = 9  # screen pixels per grid pixel
 
     def __init__(self, p0: tuple[int, int] = (3, 6), p1: tuple[int, int] = (27, 17)) -> None:
         self.ends = np.array([p0, p1], dtype=np.int64)
@@ -101,23 +103,16 @@ class LineApp(SliderApp):
         self.panels = {}
         self.ideal = {}
         grids = []
+        side = LINE_GRID * self.ZOOM
         for index, name in enumerate(("bresenham", "report", "wu")):
-            axes = self.figure.add_axes((0.03 + index * 0.33, 0.06, 0.29, 0.78))
+            axes = pixel_axes(self.figure, 24 + index * (side + 24), 30, side, side)
             grids.append(pixel_grid(axes, LINE_GRID))
-            self.panels[name] = axes.imshow(
-                np.zeros((LINE_GRID, LINE_GRID)),
-                cmap="Greys",
-                vmin=0,
-                vmax=1,
-                interpolation="nearest",
-                extent=(0, LINE_GRID, LINE_GRID, 0),
-            )
+            self.panels[name] = PixelPanel(self, axes, (LINE_GRID, LINE_GRID), self.ZOOM, "Greys")
             (self.ideal[name],) = axes.plot(
                 [], [], color="crimson", linewidth=1.2, marker="o", markersize=4
             )
         self.heading = self.figure.suptitle("", fontsize=10)
         self.animate(
-            *self.panels.values(),
             *grids,
             *self.ideal.values(),
             *(panel.axes.title for panel in self.panels.values()),
@@ -207,6 +202,7 @@ class TriangleApp(SliderApp):
 
     NAMES = "ABCD"
     BLIT = True
+    ZOOM = 20  # screen pixels per grid pixel
 
     def __init__(
         self,
@@ -229,32 +225,17 @@ class TriangleApp(SliderApp):
             ),
             "rate": widgets.IntSlider(value=rate, min=1, max=8, description="SSAA rate"),
         }
-        super().__init__(controls, shape=(460, 860))
-        size = TRIANGLE_GRID
-        left = self.figure.add_axes((0.04, 0.05, 0.44, 0.8))
-        right = self.figure.add_axes((0.53, 0.05, 0.44, 0.8))
+        super().__init__(controls, shape=(400, 830))
+        size, zoom = TRIANGLE_GRID, self.ZOOM
+        left = pixel_axes(self.figure, 40, 30, size * zoom, size * zoom)
+        right = pixel_axes(self.figure, 470, 30, size * zoom, size * zoom)
         grids = (pixel_grid(left, size), pixel_grid(right, size))
-        extent = (0, size, size, 0)
-        self.owners = left.imshow(
-            np.zeros((size, size)),
-            cmap=_OWNERS,
-            vmin=0,
-            vmax=3,
-            interpolation="nearest",
-            extent=extent,
-        )
+        self.owners = PixelPanel(self, left, (size, size), zoom, _OWNERS, vmin=0, vmax=3)
         centres = np.arange(size) + 0.5
         grid_x, grid_y = np.meshgrid(centres, centres)
         (all_centres,) = left.plot(grid_x.ravel(), grid_y.ravel(), ".", color="0.75", markersize=2)
         (self.inside_centres,) = left.plot([], [], "o", color="black", markersize=3)
-        self.coverage = right.imshow(
-            np.zeros((size, size)),
-            cmap="Greys",
-            vmin=0,
-            vmax=1,
-            interpolation="nearest",
-            extent=extent,
-        )
+        self.coverage = PixelPanel(self, right, (size, size), zoom, "Greys")
         self.outlines = [axes.plot([], [], color="navy", linewidth=1)[0] for axes in (left, right)]
         self.shared = [axes.plot([], [], color="navy", linewidth=2)[0] for axes in (left, right)]
         self.left, self.right = left, right
@@ -264,8 +245,6 @@ class TriangleApp(SliderApp):
         ]
         self.counts = np.zeros((size, size), dtype=np.int64)
         self.animate(
-            self.owners,
-            self.coverage,
             *grids,
             all_centres,
             self.inside_centres,
@@ -275,6 +254,9 @@ class TriangleApp(SliderApp):
             left.title,
             right.title,
         )
+        self.handle_artists = {
+            name: [label] for name, label in zip(self.NAMES, self.labels, strict=True)
+        }
 
     def vertices(self) -> np.ndarray:
         """A, B, C, D as a (4, 2) array, as the text describes them."""
@@ -360,19 +342,13 @@ class CurveSegmentsApp(SliderApp):
         }
         super().__init__(controls, shape=(470, 900))
         side = CURVE_GRID * self.ZOOM  # the grid at an integer zoom: 10 screen pixels each
-        width, height = 900, 470
-        grid_axes = self.figure.add_axes((40 / width, 30 / height, side / width, side / height))
+        grid_axes = pixel_axes(self.figure, 40, 30, side, side)
         grid_lines = pixel_grid(grid_axes, CURVE_GRID)
         grid_axes.set_xticks(np.arange(0, CURVE_GRID + 1, 8))
         grid_axes.set_yticks(np.arange(0, CURVE_GRID + 1, 8))
         self.grid_axes = grid_axes
-        self.pixels = grid_axes.imshow(
-            np.zeros((CURVE_GRID, CURVE_GRID)),
-            cmap=_DRAWN,
-            vmin=0,
-            vmax=3,
-            interpolation="nearest",
-            extent=(0, CURVE_GRID, CURVE_GRID, 0),
+        self.pixels = PixelPanel(
+            self, grid_axes, (CURVE_GRID, CURVE_GRID), self.ZOOM, _DRAWN, vmin=0, vmax=3
         )
         (self.twice,) = grid_axes.plot([], [], "o", color="white", markersize=3)
         (self.polygon,) = grid_axes.plot([], [], "o--", color="0.45", markersize=6, linewidth=1)
@@ -381,7 +357,7 @@ class CurveSegmentsApp(SliderApp):
             grid_axes.annotate(f"P{i}", (0, 0), xytext=(6, 6), textcoords="offset points")
             for i in range(len(self.control))
         ]
-        chart = self.figure.add_axes((520 / width, 60 / height, 350 / width, 370 / height))
+        chart = pixel_axes(self.figure, 520, 60, 350, 370)
         chart.set_xscale("log", base=2)
         chart.set_xticks(_SEGMENT_COUNTS, [str(n) for n in _SEGMENT_COUNTS])
         chart.set_xlabel("segments", fontsize=9)
@@ -396,7 +372,6 @@ class CurveSegmentsApp(SliderApp):
         chart.legend(fontsize=8, loc="upper center")
         self.chart = chart
         self.animate(
-            self.pixels,
             grid_lines,
             self.twice,
             self.polygon,
@@ -407,6 +382,7 @@ class CurveSegmentsApp(SliderApp):
             self.now,
         )
         self.highlight_ring(grid_axes)
+        self.handle_artists = {f"P{i}": [label] for i, label in enumerate(self.labels)}
 
     def read_control(self) -> np.ndarray:
         """The control points, as the text describes them."""

@@ -14,6 +14,7 @@ from typing import Any
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from course import images, poisson
@@ -21,7 +22,13 @@ from course._validate import as_image, as_int
 from course.poisson_problem import build_clone_problem
 from course.widgets.base import Handle, SliderApp, format_points
 
-__all__ = ["CloneApp", "PoissonIterationApp", "half_size", "show_images"]
+__all__ = [
+    "CloneApp",
+    "PoissonIterationApp",
+    "as_pixels_uint8",
+    "half_size",
+    "show_images",
+]
 
 # Sweeps the slider stops at, roughly three per decade up to the lab's 8000.
 SWEEP_STOPS = (0, 1, 3, 10, 30, 100, 300, 1000, 3000, 8000)
@@ -214,23 +221,21 @@ class CloneApp(SliderApp):
         gap, top = 20, 26
         columns, rows = 2 * width + 3 * gap, height + top + 10
         super().__init__(controls, shape=(rows, columns), format="jpeg")
-        self.panels = {}
+        self.panels: dict[str, Axes] = {}
         for index, name in enumerate(("naive paste", "seamless clone")):
             left = gap + index * (width + gap)
             axes = self.figure.add_axes((left / columns, 10 / rows, width / columns, height / rows))
             axes.set_axis_off()
-            # Data coordinates are the full image's pixels: 0 .. 2 W across.
-            self.panels[name] = axes.imshow(
-                self.half_background,
-                interpolation="nearest",
-                extent=(0, 2 * width, 2 * height, 0),
-            )
-        self.titles = {
-            name: picture.axes.set_title("", fontsize=10) for name, picture in self.panels.items()
-        }
-        self.animate(*self.panels.values(), *self.titles.values())
-        for picture in self.panels.values():
-            self.highlight_ring(picture.axes)
+            # Data coordinates are the full image's pixels, 0 .. 2 W across; each
+            # screen pixel is one half-size pixel, pasted into the picture as is.
+            axes.set_xlim(0, 2 * width)
+            axes.set_ylim(2 * height, 0)
+            self.panels[name] = axes
+        self.shown: dict[str, np.ndarray] = {}
+        self.titles = {name: axes.set_title("", fontsize=10) for name, axes in self.panels.items()}
+        self.animate(*self.titles.values())
+        for axes in self.panels.values():
+            self.highlight_ring(axes)
 
     def read_offset(self) -> np.ndarray:
         """The foreground's top-left pixel, as the text says, if it fits."""
@@ -250,7 +255,9 @@ class CloneApp(SliderApp):
             ("naive paste", self.foreground[1:-1, 1:-1]),
             ("seamless clone", solution[1:-1, 1:-1]),
         ):
-            self.panels[name].set_data(self._pasted(x + 1, y + 1, region))
+            self.shown[name] = self._pasted(x + 1, y + 1, region)
+            # As imshow shows an RGB image in [0, 1]: 255 times, truncated.
+            self.pixel_images[self.panels[name]] = as_pixels_uint8(self.shown[name])
         self.titles["naive paste"].set_text(f"naive paste at ({x}, {y})")
         self.titles["seamless clone"].set_text(f"seamless clone at ({x}, {y})")
 
@@ -272,14 +279,26 @@ class CloneApp(SliderApp):
         x, y = self.offset
         height, width = self.foreground.shape[:2]
         return [
-            Handle("foreground", picture.axes, (x, y), box=(x, y, x + width, y + height))
-            for picture in self.panels.values()
+            Handle("foreground", axes, (x, y), box=(x, y, x + width, y + height))
+            for axes in self.panels.values()
         ]
 
     def drag(self, name: str, point: np.ndarray) -> None:
         limit = np.array(self.background.shape[1::-1]) - self.foreground.shape[1::-1]
         offset = np.clip(np.round(point), 0, limit)
         self.controls["offset"].value = format_points([offset])
+
+
+def as_pixels_uint8(image: np.ndarray) -> np.ndarray:
+    """An image in [0, 1] as 8-bit RGB, as imshow draws it: 255 times, truncated; gray repeated.
+
+    Examples
+    --------
+    >>> as_pixels_uint8(np.array([[0.5, 1.0]])).tolist()
+    [[[127, 127, 127], [255, 255, 255]]]
+    """
+    pixels = (np.clip(image, 0.0, 1.0) * 255).astype(np.uint8)
+    return np.repeat(pixels[..., None], 3, axis=2) if pixels.ndim == 2 else pixels
 
 
 def half_size(image: np.ndarray) -> np.ndarray:

@@ -1,0 +1,245 @@
+"""The picture an app draws into, and the pixels it writes into it as they are.
+
+:class:`Picture` is the widget: the encoded picture the kernel draws, and the
+student's pointer on it (its browser half is ``picture.js``). :class:`FigureView`
+renders a matplotlib ``Figure`` on the Agg canvas into it, the whole figure or,
+while something is dragged, only what moves over a cached background
+(blitting). :class:`PixelPanel` shows an image at a whole zoom by writing its
+pixels into the canvas, without matplotlib's resampling. :func:`png_bytes` is
+the fast PNG encoder a picture redrawn at every step of a drag needs.
+"""
+
+from __future__ import annotations
+
+import io
+import struct
+import zlib
+from pathlib import Path
+from typing import Any
+
+import anywidget
+import matplotlib
+import numpy as np
+import traitlets
+from matplotlib.axes import Axes
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from PIL import Image as PILImage
+
+from course._validate import describe
+
+__all__ = [
+    "GRAY_PIXELS",
+    "FigureView",
+    "Picture",
+    "PixelPanel",
+    "bare_axes",
+    "pixel_axes",
+    "png_bytes",
+]
+
+#: imshow settings for a gray image in [0, 1], pixels drawn as flat squares.
+GRAY_PIXELS = {"cmap": "gray", "vmin": 0.0, "vmax": 1.0, "interpolation": "nearest"}
+
+
+def png_bytes(pixels: np.ndarray) -> bytes:
+    """An (H, W, 3) uint8 RGB image as PNG: no filter, zlib level 1.
+
+    What a picture redrawn at every step of a drag needs: Pillow's encoder
+    tries an adaptive filter on every row, and on the course's line art
+    that costs three times as long (5.5 against 1.6 ms for lesson 01's
+    500 x 500 picture) for a file no smaller (41 against 33 kB).
+
+    Examples
+    --------
+    >>> png = png_bytes(np.zeros((2, 3, 3), dtype=np.uint8))
+    >>> PILImage.open(io.BytesIO(png)).size
+    (3, 2)
+    """
+    if not (
+        isinstance(pixels, np.ndarray)
+        and pixels.dtype == np.uint8
+        and pixels.ndim == 3
+        and pixels.shape[2] == 3
+    ):
+        raise ValueError(f"pixels must be an (H, W, 3) uint8 array; got {describe(pixels)}")
+    height, width, _ = pixels.shape
+    rows = np.zeros((height, 1 + 3 * width), dtype=np.uint8)  # filter byte 0: none
+    rows[:, 1:] = pixels.reshape(height, -1)
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return (
+            struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+        )
+
+    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8-bit RGB
+    return (
+        b"\x89PNG\r\n\x1a\n"
+        + chunk(b"IHDR", header)
+        + chunk(b"IDAT", zlib.compress(rows.tobytes(), 1))
+        + chunk(b"IEND", b"")
+    )
+
+
+def bare_axes(axes: Any) -> Any:
+    """The axes without ticks, for a picture: returned, so it can wrap ``add_subplot``."""
+    axes.set_xticks([])
+    axes.set_yticks([])
+    return axes
+
+
+class Picture(anywidget.AnyWidget):
+    """An app's picture: the PNG the kernel draws, and the student's pointer on it.
+
+    ``value`` holds the PNG. ``handles`` lists what a press would grab, in
+    picture pixels (row 0 at the top), so that the browser shows a grabbing
+    hand over it: ``[x, y, radius, 0, 0, 0, 0]`` for a point and ``[0, 0, 0,
+    left, top, right, bottom]`` for a box. Presses, moves and releases come
+    back as messages ``{"kind", "x", "y"}`` in picture pixels; the kernel
+    answers each with ``{"kind": "drawn"}`` once its picture is published.
+    """
+
+    _esm = (Path(__file__).parent / "picture.js").read_text(encoding="utf-8")
+    value = traitlets.Bytes(b"").tag(sync=True)
+    format = traitlets.Unicode("png").tag(sync=True)
+    width = traitlets.Int(0).tag(sync=True)
+    height = traitlets.Int(0).tag(sync=True)
+    handles = traitlets.List([]).tag(sync=True)
+    clickable = traitlets.Bool(False).tag(sync=True)
+
+
+class FigureView:
+    """A matplotlib ``Figure`` of ``shape = (H, W)`` pixels, rendered into a :class:`Picture`.
+
+    ``format`` is ``"png"`` (lossless: line art, pixels to count) or ``"jpeg"``
+    (photographs: on lesson 08's lake, 2.0 ms to encode against PNG's 12 ms,
+    74 kB against 212 kB; at quality :data:`JPEG_QUALITY` with full-resolution
+    colour no channel moves by more than 19 of 255).
+    """
+
+    #: JPEG quality of the photographic apps (colour kept at full resolution).
+    JPEG_QUALITY = 95
+
+    def __init__(
+        self, shape: tuple[int, int] = (500, 500), dpi: int = 100, format: str = "png"
+    ) -> None:
+        rows, columns = shape
+        if format not in ("png", "jpeg"):
+            raise ValueError(f"format must be one of 'png', 'jpeg'; got {format!r}")
+        self.figure = Figure(figsize=(columns / dpi, rows / dpi), dpi=dpi)
+        self.canvas = FigureCanvasAgg(self.figure)
+        self.image = Picture(width=columns, height=rows, format=format)
+        self._background = None
+
+    def pixels(self) -> np.ndarray:
+        """The picture as last rendered, RGBA pixels (height, width, 4) uint8, before encoding."""
+        return np.asarray(self.canvas.buffer_rgba()).copy()
+
+    def render(self) -> bytes:
+        """Draw the whole figure into the picture and return the PNG bytes."""
+        self.canvas.draw()
+        return self.publish()
+
+    def render_moving(self, artists: list, images: dict | None = None) -> bytes:
+        """Redraw only ``artists`` (made ``set_animated(True)``) over a cached background.
+
+        Blitting: the first call draws everything else once and keeps it;
+        later calls restore it and draw just the moving artists. Call
+        :meth:`invalidate` when something in the background changes.
+        ``images`` maps axes to (h, w, 3) uint8 pictures the size of the axes
+        in pixels: written into the picture as they are, under the artists,
+        without matplotlib's resampling (for images shown pixel for pixel).
+        """
+        if self._background is None:
+            self.canvas.draw()  # skips animated artists
+            self._background = self.canvas.copy_from_bbox(self.figure.bbox)
+        else:
+            self.canvas.restore_region(self._background)
+        for axes, image in (images or {}).items():
+            self.paste(axes, image)
+        for artist in artists:
+            self.figure.draw_artist(artist)
+        return self.publish()
+
+    def paste(self, axes: Axes, image: np.ndarray) -> None:
+        """Write ``image``, (h, w, 3) uint8, into the canvas where ``axes`` is: h x w pixels."""
+        box = axes.get_window_extent()
+        left, top = round(box.x0), round(self.figure.bbox.height - box.y1)
+        height, width = image.shape[:2]
+        if (round(box.width), round(box.height)) != (width, height):
+            raise ValueError(
+                f"image: expected the axes' {round(box.height)} x {round(box.width)} pixels; "
+                f"got {height} x {width}"
+            )
+        canvas = np.asarray(self.canvas.buffer_rgba())
+        canvas[top : top + height, left : left + width, :3] = image
+        canvas[top : top + height, left : left + width, 3] = 255
+
+    def invalidate(self) -> None:
+        """Forget the cached background; the next :meth:`render_moving` redraws it."""
+        self._background = None
+
+    def publish(self) -> bytes:
+        """Encode the canvas as it stands into the picture; return the encoded bytes."""
+        # The figure is opaque: its alpha channel is 255 everywhere, and is dropped.
+        pixels = np.asarray(self.canvas.buffer_rgba())[..., :3]
+        if self.image.format == "jpeg":
+            buffer = io.BytesIO()
+            PILImage.fromarray(pixels).save(
+                buffer, format="jpeg", quality=self.JPEG_QUALITY, subsampling=0
+            )
+            encoded = buffer.getvalue()
+        else:
+            encoded = png_bytes(pixels)
+        self.image.value = encoded
+        return encoded
+
+
+def pixel_axes(figure: Figure, left: int, bottom: int, width: int, height: int) -> Axes:
+    """Axes placed in whole picture pixels: ``left``, ``bottom`` from the figure's corner."""
+    columns, rows = figure.bbox.width, figure.bbox.height
+    return figure.add_axes((left / columns, bottom / rows, width / columns, height / rows))
+
+
+class PixelPanel:
+    """An image shown at a whole zoom, ``zoom`` x ``zoom`` screen pixels per image pixel.
+
+    Like ``imshow(values, cmap, vmin, vmax, interpolation="nearest")`` in
+    ``axes``, but the coloured pixels are written into the picture as they
+    are (:meth:`FigureView.render_moving`), which costs a tenth of
+    matplotlib's resampling; artists drawn in ``axes`` (grid lines, curves)
+    come on top. The axes' data coordinates are the image's, y down.
+    ``cmap`` is a colormap name or a ``Colormap``; an (H, W, 3) image in
+    [0, 1] is shown as RGB.
+    """
+
+    def __init__(
+        self,
+        app: Any,
+        axes: Axes,
+        shape: tuple[int, int],
+        zoom: int,
+        cmap: Any = "gray",
+        vmin: float = 0.0,
+        vmax: float = 1.0,
+    ) -> None:
+        height, width = shape
+        self.app, self.axes, self.zoom = app, axes, zoom
+        self.colormap = matplotlib.colormaps[cmap] if isinstance(cmap, str) else cmap
+        self.vmin, self.vmax = vmin, vmax
+        axes.set_xlim(0, width)
+        axes.set_ylim(height, 0)
+        self.values = np.zeros(shape)
+
+    def set_data(self, values: Any) -> None:
+        self.values = np.asarray(values)
+        if self.values.ndim == 3:  # RGB in [0, 1], as imshow shows it: 255 times, truncated
+            pixels = (np.clip(self.values, 0.0, 1.0) * 255).astype(np.uint8)
+        else:
+            scaled = (self.values - self.vmin) / (self.vmax - self.vmin)
+            pixels = self.colormap(scaled, bytes=True)[..., :3]
+        zoomed = np.repeat(np.repeat(pixels, self.zoom, axis=0), self.zoom, axis=1)
+        self.app.pixel_images[self.axes] = zoomed
+
+    def get_array(self) -> np.ndarray:
+        return self.values

@@ -1,0 +1,120 @@
+"""course.widgets.picture: the encoders, blitting and pixels written as they are."""
+
+import io
+
+import numpy as np
+import pytest
+from matplotlib.figure import Figure
+from PIL import Image
+
+from course.widgets.picture import FigureView, PixelPanel, pixel_axes, png_bytes
+
+
+def decoded(data: bytes) -> np.ndarray:
+    return np.asarray(Image.open(io.BytesIO(data)).convert("RGB"))
+
+
+def test_png_bytes_decode_to_the_pixels_they_encode():
+    rng = np.random.default_rng(3)
+    pixels = rng.integers(0, 256, size=(37, 53, 3), dtype=np.uint8)
+    data = png_bytes(pixels)
+    assert data.startswith(b"\x89PNG\r\n\x1a\n")
+    np.testing.assert_array_equal(decoded(data), pixels)
+
+
+def test_png_bytes_refuses_anything_but_rgb_bytes():
+    with pytest.raises(
+        ValueError,
+        match=r"pixels must be an \(H, W, 3\) uint8 array; got an array of shape \(4, 4\) and "
+        r"dtype float64",
+    ):
+        png_bytes(np.zeros((4, 4)))
+    with pytest.raises(ValueError, match=r"got an array of shape \(2, 2, 3\) and dtype int64"):
+        png_bytes(np.zeros((2, 2, 3), dtype=np.int64))
+
+
+class Blank:
+    """What PixelPanel needs of an app: where to leave the pixels it writes."""
+
+    def __init__(self) -> None:
+        self.pixel_images: dict = {}
+
+
+def test_a_pixel_panel_shows_what_imshow_nearest_shows_at_a_whole_zoom():
+    values = np.array([[0.0, 0.25, 1.0], [0.5, 0.75, 0.1]])
+    zoom = 7
+    pictures = []
+    for pasted in (False, True):
+        view = FigureView(shape=(40, 60))
+        axes = pixel_axes(view.figure, 10, 12, 3 * zoom, 2 * zoom)
+        axes.set_axis_off()
+        if pasted:
+            app = Blank()
+            PixelPanel(app, axes, values.shape, zoom).set_data(values)
+            view.render_moving([], app.pixel_images)
+        else:
+            axes.imshow(values, cmap="gray", vmin=0, vmax=1, interpolation="nearest")
+            view.render()
+        pictures.append(view.pixels()[..., :3])
+    np.testing.assert_array_equal(pictures[0], pictures[1])
+    # The top-left image pixel is black, at the axes' top-left corner: 40 - 12 - 14 = 14.
+    assert (pictures[1][14 : 14 + zoom, 10 : 10 + zoom] == 0).all()
+
+
+def test_pasting_an_image_of_the_wrong_size_names_both_sizes():
+    view = FigureView(shape=(40, 60))
+    axes = pixel_axes(view.figure, 0, 0, 20, 10)
+    view.render_moving([])
+    with pytest.raises(ValueError, match=r"image: expected the axes' 10 x 20 pixels; got 5 x 20"):
+        view.paste(axes, np.zeros((5, 20, 3), dtype=np.uint8))
+
+
+def test_blitting_redraws_only_the_moving_artists_over_the_still_rest():
+    view = FigureView(shape=(50, 50))
+    axes = view.figure.add_axes((0, 0, 1, 1))
+    axes.set_xlim(0, 1)
+    axes.set_ylim(0, 1)
+    axes.set_axis_off()
+    still = axes.axvline(0.2, color="blue", linewidth=3)
+    (moving,) = axes.plot([0.5, 0.5], [0, 1], color="red", linewidth=3, animated=True)
+    view.render_moving([moving])
+    moving.set_xdata([0.8, 0.8])
+    view.render_moving([moving])
+    assert columns_of(view, "red") == pytest.approx(40, abs=1.5)  # the old red is gone
+    assert columns_of(view, "blue") == pytest.approx(10, abs=1.5)
+    still.set_xdata([0.6, 0.6])  # a change to the background shows only once invalidated
+    view.render_moving([moving])
+    assert columns_of(view, "blue") == pytest.approx(10, abs=1.5)
+    view.invalidate()
+    view.render_moving([moving])
+    assert columns_of(view, "blue") == pytest.approx(30, abs=1.5)
+
+
+def columns_of(view: FigureView, colour: str) -> float:
+    """The mean column of the pure red or pure blue pixels across the middle row."""
+    red, _, blue = view.pixels()[25, :, :3].astype(int).T
+    strong, weak = (red, blue) if colour == "red" else (blue, red)
+    return float(np.flatnonzero((strong > 200) & (weak < 80)).mean())
+
+
+def test_jpeg_pictures_stay_close_to_the_canvas_and_formats_are_checked():
+    view = FigureView(shape=(64, 64), format="jpeg")
+    axes = view.figure.add_axes((0, 0, 1, 1))
+    axes.set_axis_off()
+    rng = np.random.default_rng(0)
+    photo = np.cumsum(np.cumsum(rng.normal(size=(64, 64, 3)), axis=0), axis=1)
+    axes.imshow((photo - photo.min()) / np.ptp(photo), interpolation="nearest")
+    data = view.render()
+    assert data.startswith(b"\xff\xd8") and view.image.format == "jpeg"
+    difference = np.abs(decoded(data).astype(int) - view.pixels()[..., :3].astype(int))
+    assert difference.mean() < 2 and difference.max() <= 40
+    with pytest.raises(ValueError, match=r"format must be one of 'png', 'jpeg'; got 'gif'"):
+        FigureView(format="gif")
+
+
+def test_a_figure_view_is_the_size_it_is_asked_for():
+    view = FigureView(shape=(123, 45))
+    assert isinstance(view.figure, Figure)
+    view.render()
+    assert view.pixels().shape == (123, 45, 4)
+    assert (view.image.height, view.image.width) == (123, 45)

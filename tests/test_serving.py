@@ -1,5 +1,7 @@
 """course.classroom.serving: the kernel's websocket sends each message at once."""
 
+from pathlib import Path
+
 from jupyter_server.services.kernels.connection.channels import ZMQChannelsWebsocketConnection
 from traitlets.utils.importstring import import_item
 
@@ -25,3 +27,10 @@ def test_nagle_is_turned_off_before_the_kernel_is_connected(monkeypatch):
     monkeypatch.setattr(PromptConnection, "websocket_handler", Handler())
     PromptConnection.__new__(PromptConnection).connect()
     assert events == [("nodelay", True), "connect"]
+
+
+def test_make_lab_and_make_app_start_their_servers_with_it():
+    makefile = (Path(__file__).resolve().parent.parent / "Makefile").read_text()
+    assert f"PROMPT := {CONNECTION_CLASS}\n" in makefile
+    assert "--ServerApp.kernel_websocket_connection_class=$(PROMPT)" in makefile
+    assert "--Voila.kernel_websocket_connection_class=$(PROMPT)" in makefile

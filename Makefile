@@ -23,8 +23,14 @@ $(VENV)/.%-installed: pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e ".[$*]"
 	touch $@
 
+# The lessons in JupyterLab, opened at the course map, with student/ beside notebooks/ so a
+# teacher can open the student edition in the same session. It is written only if missing:
+# work a student saved there is never overwritten (`make student` rewrites it).
 lab: $(VENV)/.lab-installed $(VENV)/.test-installed
-	$(BIN)/jupyter lab notebooks/ $(ROOT_FLAG) --ServerApp.kernel_websocket_connection_class=$(PROMPT)
+	test -d student || $(BIN)/python -m course student --out student
+	$(BIN)/jupyter lab --ServerApp.root_dir=. \
+		--LabApp.default_url=/lab/tree/notebooks/00_index.ipynb \
+		$(ROOT_FLAG) --ServerApp.kernel_websocket_connection_class=$(PROMPT)
 
 # The lessons as apps for a lecture hall: Voila, code hidden, sliders live.
 app: $(VENV)/.lab-installed $(VENV)/.test-installed

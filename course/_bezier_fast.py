@@ -18,13 +18,28 @@ from __future__ import annotations
 import numpy as np
 
 # About 1 MiB of float64 per working array, measured best on a 1 MiB L2 cache
-# (smaller chunks pay more per-call overhead than they gain in locality).
+# and again on a 2 MiB one (smaller chunks pay more per-call overhead than they
+# gain in locality, larger ones spill out of the cache).
 _CACHE_ELEMENTS = 1 << 17
 _MIN_CHUNK, _MAX_CHUNK = 256, 8192
+# A cache line. With chunks a multiple of 8 floats and buffers that start on a
+# line, every row of a level starts on one too: rows that start mid-line make
+# vector loads straddle two lines, which cost 15-20% of de_casteljau_chunked's
+# time at degrees 3 and 9 (10^5 and 10^6 t, 2 coordinates).
+_LINE_BYTES = 64
+_LINE_FLOATS = _LINE_BYTES // 8
 
 
 def _chunk_size(rows: int, dimension: int) -> int:
-    return int(np.clip(_CACHE_ELEMENTS // max(rows * dimension, 1), _MIN_CHUNK, _MAX_CHUNK))
+    chunk = min(max(_CACHE_ELEMENTS // max(rows * dimension, 1), _MIN_CHUNK), _MAX_CHUNK)
+    return chunk - chunk % _LINE_FLOATS
+
+
+def _line_aligned_empty(size: int) -> np.ndarray:
+    """An uninitialized float64 array of ``size`` whose data starts on a cache line."""
+    raw = np.empty(size + _LINE_FLOATS)
+    skip = (-raw.__array_interface__["data"][0] % _LINE_BYTES) // raw.itemsize
+    return raw[skip : skip + size]
 
 
 def de_casteljau_chunked(control: np.ndarray, t: np.ndarray) -> np.ndarray:
@@ -40,16 +55,21 @@ def de_casteljau_chunked(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     if count == 1:
         curve[:] = control[0]
         return curve
-    chunk = _chunk_size(count, dimension)
+    # No bigger than the input: flatten evaluates a few thousand t at a time.
+    chunk = min(_chunk_size(count, dimension), max(len(t), 1))
     column = control[:, :, None]
-    level_buffer = np.empty((count - 1, dimension, chunk))
-    work_buffer = np.empty((count - 1, dimension, chunk))
+    pairs = (count - 1) * dimension  # (row, coordinate) pairs of a level
+    level_buffer = _line_aligned_empty(pairs * chunk)
+    work_buffer = _line_aligned_empty(pairs * chunk)
     for start in range(0, len(t), chunk):
         t_chunk = t[start : start + chunk]
         s_chunk = 1.0 - t_chunk
         size = len(t_chunk)
-        level = level_buffer[:, :, :size]
-        work = work_buffer[:, :, :size]
+        # Contiguous views of the flat buffers, the last short chunk included,
+        # so that each ufunc call runs over one block of memory.
+        shape = (count - 1, dimension, size)
+        level = level_buffer[: pairs * size].reshape(shape)
+        work = work_buffer[: pairs * size].reshape(shape)
         # Level 1 straight from the control points, then level m from m + 1 rows.
         np.multiply(column[:-1], s_chunk, out=level)
         np.multiply(column[1:], t_chunk, out=work)
@@ -58,7 +78,10 @@ def de_casteljau_chunked(control: np.ndarray, t: np.ndarray) -> np.ndarray:
             np.multiply(level[1 : rows + 1], t_chunk, out=work[:rows])
             level[:rows] *= s_chunk
             level[:rows] += work[:rows]
-        curve[start : start + size] = level[0].T
+        # One coordinate at a time: a transposing copy of the (d, size) block
+        # runs its inner loop over d, 3% (degree 9) to 15% (degree 3) slower.
+        for axis in range(dimension):
+            curve[start : start + size, axis] = level[0, axis]
     return curve
 
 

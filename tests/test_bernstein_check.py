@@ -1,39 +1,151 @@
-"""course.check.bernstein.naive_bezier: right answers pass, mistakes fail by name."""
+"""course.check.bernstein: Pascal's rule, exactly and without help; naive_bezier of any degree."""
 
+import functools
+import itertools
 import math
 
 import numpy as np
+import pytest
 
 from course.check import bernstein as check
 
 
+def pascal(m, n):
+    row = [1]
+    for _ in range(m):
+        row = [1] + [a + b for a, b in itertools.pairwise(row)] + [1]
+    return row[n] if n <= m else 0
+
+
+def handout_recursion(m, n):  # seed 002's comb
+    if m < n:
+        return 0
+    if m == n or n == 0:
+        return 1
+    if n == 1:
+        return m
+    return handout_recursion(m - 1, n) + handout_recursion(m - 1, n - 1)
+
+
+@functools.cache
+def remembered(m, n):
+    if m < n:
+        return 0
+    if m == n or n == 0:
+        return 1
+    return remembered(m - 1, n) + remembered(m - 1, n - 1)
+
+
+def numpy_row(dtype):
+    def comb(m, n):
+        row = np.ones(1, dtype=dtype)
+        for _ in range(m):
+            row = np.concatenate([row[:1], row[:-1] + row[1:], row[-1:]])
+        return row[n] if n <= m else 0
+
+    return comb
+
+
+def float_row(m, n):
+    row = [1.0]
+    for _ in range(m):
+        row = [1.0] + [a + b for a, b in itertools.pairwise(row)] + [1.0]
+    return row[n] if n <= m else 0
+
+
+def one_row_short(m, n):
+    row = [1]
+    for _ in range(m - 1):
+        row = [1] + [a + b for a, b in itertools.pairwise(row)] + [1]
+    return row[n] if n < len(row) else 0
+
+
+def test_pascal_rule_passes_in_one_line_by_rows_or_remembered_recursion():
+    assert str(check.comb(pascal)) == "PASS comb: all 13 cases pass"
+    assert check.comb(remembered)
+
+
+@pytest.mark.parametrize(
+    ("solution", "mistake", "case"),
+    [
+        (handout_recursion, "the exponential recursion", 9),
+        (numpy_row(np.int32), "32-bit integers", 10),
+        (numpy_row(np.int64), "64-bit integers", 12),
+        (float_row, "floating point", 12),
+        (one_row_short, "off by one row", 3),
+    ],
+)
+def test_each_known_mistake_of_comb_is_named(solution, mistake, case):
+    result = check.comb(solution)
+    assert not result and result.mistake == mistake
+    assert str(result).startswith(f"FAIL comb: case {case} ")
+    assert str(result).splitlines()[-1].startswith("Hint: start from row 0")
+
+
+def test_the_exponential_recursion_is_stopped_quickly_and_counted():
+    message = str(check.comb(handout_recursion))
+    assert "case 9 was stopped: more than 20,000 Python function calls" in message
+    assert "inputs: m=20, n=7" in message and "would make 1.4e+11 calls" in message
+
+
+@pytest.mark.parametrize(
+    ("solution", "called"),
+    [
+        (lambda m, n: math.comb(m, n), "math.comb"),
+        (
+            lambda m, n: math.factorial(m) // (math.factorial(n) * math.factorial(m - n)),
+            "math.factorial",
+        ),
+    ],
+)
+def test_the_library_answers_are_refused(solution, called):
+    result = check.comb(solution)
+    assert not result and f"case 1 was stopped: {called} was called" in str(result)
+
+
+def test_a_refused_import_is_caught_however_it_was_imported():
+    from math import comb as imported
+
+    assert "math.comb was called" in str(check.comb(lambda m, n: imported(m, n)))
+
+
 def naive_solution(points, t):
     n = len(points) - 1
-    return sum(math.comb(n, i) * t**i * (1 - t) ** (n - i) * p for i, p in enumerate(points))
+    return sum(pascal(n, i) * t**i * (1 - t) ** (n - i) * p for i, p in enumerate(points))
 
 
-def test_a_correct_solution_passes_whatever_it_returns_a_point_in():
-    assert check.naive_bezier(naive_solution)
+def test_naive_bezier_passes_in_one_line_whatever_it_returns_a_point_in():
+    assert str(check.naive_bezier(naive_solution)) == "PASS naive_bezier: all 55 cases pass"
     assert check.naive_bezier(lambda p, t: tuple(naive_solution(p, t)))
-    try:
+    with pytest.raises(TypeError, match="naive_bezier"):
         check.naive_bezier(np.zeros(2))
-    except TypeError as error:
-        assert "naive_bezier" in str(error)
-    else:
-        raise AssertionError("a non-function must raise TypeError")
 
 
-def test_naive_bezier_with_the_points_count_as_the_degree_fails():
-    def off_by_one(points, t):
-        n = len(points)
-        return sum(math.comb(n, i) * t**i * (1 - t) ** (n - i) * p for i, p in enumerate(points))
+@pytest.mark.parametrize(
+    ("solution", "mistake"),
+    [
+        (
+            lambda p, t: sum(
+                pascal(len(p) - 1, i) * t ** (len(p) - 1 - i) * (1 - t) ** i * q
+                for i, q in enumerate(p)
+            ),
+            "the reversed weights",
+        ),
+        (
+            lambda p, t: sum(
+                pascal(len(p), i) * t**i * (1 - t) ** (len(p) - i) * q for i, q in enumerate(p)
+            ),
+            "the degree off by one",
+        ),
+        (lambda p, t: naive_solution(p, t)[::-1], "x and y swapped"),
+    ],
+)
+def test_each_known_mistake_of_naive_bezier_is_named_with_its_picture(solution, mistake):
+    result = check.naive_bezier(solution)
+    assert not result and result.mistake == mistake and result.picture is not None
 
-    result = check.naive_bezier(off_by_one)
-    # At t = 1/2 and t = 0 the line happens to come out right; t = 1 does not.
-    assert not result and "case 3 is wrong" in str(result) and "t=1" in str(result)
 
-
-def test_int32_binomials_fail_only_at_high_degree():
+def test_int32_binomials_pass_at_the_degrees_checked():
     def int32_comb(n, k):
         value = math.comb(n, k) % 2**32
         return value - 2**32 if value >= 2**31 else value

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from course import bezier
+from course import _flatten, bezier
 from course.bezier import (
     bernstein_basis,
     bezier_bernstein,
@@ -222,6 +222,21 @@ def test_fast_kernels_agree_with_the_readable_forms_across_chunks(degree):
     assert np.all(np.abs(de_casteljau(points, t) - naive) <= 1e-13 * scale[:, None])
 
 
+@pytest.mark.parametrize(
+    ("degree", "dimension", "count"), [(3, 2, 20_003), (9, 2, 10_001), (4, 3, 8_197), (1, 1, 3)]
+)
+def test_de_casteljau_is_the_textbook_step_bit_for_bit_across_chunks(degree, dimension, count):
+    # Several chunks and a short last one: every value is still exactly
+    # (1 - t) * P[i] + t * P[i + 1], level after level.
+    rng = np.random.default_rng(degree)
+    points = rng.uniform(-500, 500, (degree + 1, dimension))
+    t = rng.uniform(-0.25, 1.25, count)
+    level, s = points[:, None, :], (1 - t)[:, None]
+    while len(level) > 1:
+        level = level[:-1] * s + level[1:] * t[:, None]
+    np.testing.assert_array_equal(de_casteljau(points, t), level[0])
+
+
 @pytest.mark.parametrize("degree", [100, 300])
 def test_high_degree_de_casteljau_matches_exact_arithmetic(degree):
     rng = np.random.default_rng(degree)
@@ -331,6 +346,149 @@ def test_flatten_max_step_bounds_the_gap_between_neighbours(points, max_step):
 def test_flatten_degree_zero_and_straight_lines():
     np.testing.assert_array_equal(flatten([[1.0, 2.0]], 0.1), [[1.0, 2.0]])
     np.testing.assert_array_equal(flatten([[0, 0], [1, 1], [2, 2], [3, 3]], 0.01), [[0, 0], [3, 3]])
+
+
+# Control points on a grid of exact binary fractions (k / 16), degrees 1 to 6.
+grid_coordinate = st.integers(-256, 256).map(lambda k: k / 16)
+
+
+@st.composite
+def grid_curves(draw, dimension=2):
+    count = draw(st.integers(2, 7))
+    d = dimension or draw(st.integers(1, 3))
+    values = draw(st.lists(grid_coordinate, min_size=count * d, max_size=count * d))
+    return np.array(values).reshape(count, d)
+
+
+def piece_errors(points, t, vertices, samples=65):
+    """Largest distance from each piece of the curve (sampled in t) to its chord."""
+    fraction = np.linspace(0, 1, samples)
+    dense_t = (t[:-1, None] + np.diff(t)[:, None] * fraction).ravel()
+    dense = de_casteljau(points, dense_t).reshape(len(t) - 1, samples, -1)
+    start, chord = vertices[:-1, None], np.diff(vertices, axis=0)[:, None]
+    length2 = np.maximum((chord**2).sum(axis=2), 1e-300)
+    along = np.clip(((dense - start) * chord).sum(axis=2) / length2, 0, 1)
+    return np.sqrt(((dense - start - along[..., None] * chord) ** 2).sum(axis=2)).max(axis=1)
+
+
+@given(
+    grid_curves(dimension=None),
+    st.sampled_from([0.01, 0.1, 0.5]),
+    st.sampled_from([None, 0.25, 1.0]),
+)
+def test_flatten_is_a_polyline_on_the_curve_within_tolerance(points, tolerance, max_step):
+    original = points.copy()
+    vertices, t = flatten(points, tolerance, max_step=max_step, return_parameters=True)
+    np.testing.assert_array_equal(points, original)
+    assert t[0] == 0 and t[-1] == 1 and np.all(np.diff(t) > 0)
+    np.testing.assert_array_equal(vertices[[0, -1]], points[[0, -1]])
+    np.testing.assert_allclose(vertices, de_casteljau(points, t), rtol=0, atol=1e-13 * size(points))
+    assert piece_errors(points, t, vertices).max() <= tolerance * (1 + 1e-9)
+    if max_step is not None:
+        assert np.sqrt((np.diff(vertices, axis=0) ** 2).sum(axis=1)).max() <= max_step
+
+
+def piece_control(points, a, b):
+    """Control points of the curve over [a, b] (0 <= a < b <= 1), as a cubic."""
+    _, right = split(points, a)
+    piece, _ = split(right, (b - a) / (1 - a))
+    while len(piece) < 4:
+        piece = elevate(piece)
+    return piece
+
+
+@given(grid_curves(), st.lists(parameter, min_size=1, max_size=6, unique=True))
+def test_segment_errors_are_exact_for_plane_curves_up_to_degree_3(points, cuts):
+    # The check flatten relies on: each piece's distance to its chord, never
+    # below the sampled distance, and equal to it when the piece's middle
+    # control points project inside the chord (so the piece stays beside it).
+    points = points[:4]
+    t = np.array(sorted({0.0, 1.0, *cuts}))
+    errors = _flatten.chord_errors(points, t)
+    sampled = piece_errors(points, t, de_casteljau(points, t), samples=4001)
+    assert np.all(errors >= sampled - 1e-12 * size(points))
+    for error, exact, a, b in zip(errors, sampled, t[:-1], t[1:], strict=True):
+        c0, c1, c2, c3 = piece_control(points, a, b)
+        chord = c3 - c0
+        along = [np.dot(c - c0, chord) / max(np.dot(chord, chord), 1e-300) for c in (c1, c2)]
+        if np.dot(chord, chord) > 1e-9 and all(0.001 <= u <= 0.999 for u in along):
+            assert error == pytest.approx(exact, rel=1e-6, abs=1e-9 * size(points))
+
+
+def levien_count(points, tolerance):
+    """Levien's segment count for a quadratic, from his post (kurbo's estimate_subdiv)."""
+
+    def integral(x):
+        return x / (0.33 + math.sqrt(math.sqrt(0.67**4 + 0.25 * x * x)))
+
+    p0, p1, p2 = np.asarray(points, float)
+    dd = (p1 - p0) - (p2 - p1)
+    cross = (p2 - p0)[0] * dd[1] - (p2 - p0)[1] * dd[0]
+    x0, x2 = np.dot(p1 - p0, dd) / cross, np.dot(p2 - p1, dd) / cross
+    scale = abs(cross / (math.hypot(*dd) * (x2 - x0)))
+    sqrt_tol = math.sqrt(tolerance)
+    da = abs(integral(x2) - integral(x0))
+    if math.copysign(1, x0) == math.copysign(1, x2):
+        value = da * math.sqrt(scale)
+    else:  # the parabola's vertex inside the curve
+        value = sqrt_tol * da / integral(sqrt_tol / math.sqrt(scale))
+    return max(1, math.ceil(0.5 * value / sqrt_tol))
+
+
+def fewest_uniform_segments(points, tolerance):
+    """The smallest n whose polyline through B(k / n) is within tolerance (n from 1 up)."""
+    count = 1
+    while True:
+        t = np.linspace(0, 1, count + 1)
+        if piece_errors(points, t, de_casteljau(points, t), samples=257).max() <= tolerance:
+            return count
+        count += 1
+
+
+@pytest.mark.parametrize(
+    ("points", "tolerance", "expected"),
+    [
+        ([[0, 0], [100, 0], [100, 100]], 0.25, 12),
+        ([[0, 0], [30, 80], [100, 0]], 0.25, 12),
+        ([[0, 0], [64, 8], [16, 48]], 0.1, 15),
+        ([[0, 0], [200, 10], [0, 20]], 0.1, 13),  # a hairpin: the vertex inside
+        ([[37.875, -23.03125], [42.0, -19.53125], [46.96875, -6.4375]], 0.1, 4),  # a glyph's
+    ],
+)
+def test_flatten_counts_quadratics_as_levien_does(points, tolerance, expected):
+    polyline = flatten(points, tolerance)
+    assert len(polyline) - 1 == levien_count(points, tolerance) == expected
+    assert expected <= fewest_uniform_segments(np.array(points, float), tolerance)
+
+
+@pytest.mark.parametrize(
+    ("points", "tolerance", "levien", "fewest"),
+    [
+        # A glyph curve of DejaVu Sans: Levien's estimate, 1.03 rounded up,
+        # asks for two segments; the chord alone is 0.94 of the tolerance away.
+        ([[90.8125, 70.8125], [88.375, 67.96875], [75.28125, 54.4375]], 0.1, 2, 1),
+        # A hairpin: with three segments one straddles the tip, two meet there.
+        ([[0, 0], [20, 1], [0, 2]], 0.25, 4, 2),
+        ([[0, 0], [50, 100], [100, 0]], 0.25, 13, 12),
+    ],
+)
+def test_flatten_takes_fewer_than_levien_when_his_spacing_passes(points, tolerance, levien, fewest):
+    points = np.array(points, float)
+    assert levien_count(points, tolerance) == levien
+    vertices, t = flatten(points, tolerance, return_parameters=True)
+    assert len(vertices) - 1 == fewest <= fewest_uniform_segments(points, tolerance)
+    assert 0.5 < piece_errors(points, t, vertices).max() / tolerance <= 1
+
+
+def test_flatten_splits_kurbos_cubic_segments_that_miss_the_tolerance():
+    # Near the seed cubic's inflection the placement through quadratics falls
+    # short (up to 2x the tolerance); those segments are split.
+    points = np.asarray(SEED_000_CUBIC, float)
+    count, place = _flatten.cubic_plan(points, 0.01)
+    assert _flatten.chord_errors(points, place(count)).max() > 1.5 * 0.01
+    vertices, t = flatten(points, 0.01, return_parameters=True)
+    assert len(vertices) - 1 > count
+    assert piece_errors(points, t, vertices, samples=257).max() <= 0.01
 
 
 def loop_parameters(step, dtype):

@@ -8,13 +8,16 @@ import pytest
 
 from course.bezier import bezier_bernstein, de_casteljau, sample_uniform, uniform_parameters
 from course.bezier_handouts import (
+    HANDOUT_LOOPS,
     comb_recursive,
     comb_recursive_calls,
     de_casteljau_reversed,
+    loop_pixels,
     pascal_row_int32,
     step_report,
     trace_iterative,
     trace_recursive,
+    yellow_check,
 )
 from course.canvas import blank, paint, yellow_fraction
 from course.images import SEED_000_CUBIC
@@ -116,3 +119,20 @@ def test_step_report_counts_gaps_and_overdraw_by_their_definition():
     assert report["overdraw"] == 1001 / len(set(pixels))
     fine = step_report(SEED_000, 0.0001)
     assert fine["gaps"] == 0 and fine["overdraw"] > 5
+
+
+def test_the_yellow_check_agrees_with_painting_both_curves_by_hand():
+    for loop in HANDOUT_LOOPS.values():
+        image = np.zeros((700, 700, 3))
+        red_t = uniform_parameters(0.001, "float64")
+        red = nearest_pixels(bezier_bernstein(SEED_000_CUBIC, red_t), rounding="trunc")
+        paint(image, red, (1.0, 0.0, 0.0))
+        green_t = uniform_parameters(0.001, loop.accumulate)
+        curve = de_casteljau(SEED_000_CUBIC, 1 - green_t if loop.reversed else green_t)
+        paint(image, nearest_pixels(curve, rounding=loop.rounding), (0.0, 1.0, 0.0))
+        check = yellow_check(SEED_000_CUBIC, loop)
+        assert check.fraction == pytest.approx(yellow_fraction(image), abs=0.002)
+        assert len(loop_pixels(SEED_000_CUBIC, loop)) == len(green_t)
+    # The float loops stop short of t = 1; the double one stops a whole step short.
+    assert yellow_check(SEED_000_CUBIC, HANDOUT_LOOPS["003"]).fraction == 1.0
+    assert yellow_check(SEED_000_CUBIC, HANDOUT_LOOPS["000"]).fraction < 0.5

@@ -17,17 +17,26 @@ def test_one_row_per_lesson_with_its_registry_entry_or_its_summary(tmp_path):
     write_notebook(tmp_path / "01_de_casteljau.ipynb", "# Lesson 01 · de Casteljau")
     write_notebook(tmp_path / "42_unregistered.ipynb", "# Later\n\nIt does | this.")
     table = course_map(tmp_path).splitlines()
-    assert table[0] == "| lesson | what it teaches | handout task it answers |"
+    assert table[0] == "| lesson | after it you can | handout task it answers | time |"
     assert len(table) == 2 + 2
     entry = lessons()["01"]
+    assert entry.outcomes and entry.minutes
     assert table[2] == (
-        f"| [Lesson 01 · de Casteljau](01_de_casteljau.ipynb) | {entry.teaches} | {entry.handout} |"
+        f"| [Lesson 01 · de Casteljau](01_de_casteljau.ipynb) | {'; '.join(entry.outcomes)} "
+        f"| {entry.handout} | {entry.minutes} min |"
     )
     # A notebook without a module still has its row: its summary, and what to add.
     assert table[3] == (
         "| [Later](42_unregistered.ipynb) | It does \\| this. "
-        "| (no module course/lessons/l42_unregistered.py) |"
+        "| (no module course/lessons/l42_unregistered.py) |  |"
     )
+
+
+def test_every_lesson_says_what_a_student_can_do_after_it_how_long_and_shows_one_panel():
+    for number, lesson in lessons().items():
+        assert 2 <= len(lesson.outcomes) <= 3, number
+        assert 20 <= lesson.minutes <= 120, number
+        assert lesson.preview is not None and lesson.preview.name.startswith(f"{number}_")
 
 
 def test_the_readme_lesson_table_is_the_course_map(capsys):

@@ -1,10 +1,12 @@
-"""course.check.de_casteljau.recursive_bezier: right answers pass, mistakes fail by name."""
+"""course.check.de_casteljau: right answers pass in one line; each handout mistake is named."""
 
+import io
 import itertools
 
 import numpy as np
+import pytest
+from PIL import Image
 
-from course.bezier_handouts import de_casteljau_reversed
 from course.check import de_casteljau as check
 
 
@@ -14,28 +16,183 @@ def recursive_solution(points, t):
     return recursive_solution([(1 - t) * a + t * b for a, b in itertools.pairwise(points)], t)
 
 
-def test_correct_solutions_pass_whatever_they_name_their_arguments():
+# Wrong solutions, written the way students write them.
+def reversed_step(points, t):
+    if len(points) == 1:
+        return points[0]
+    return reversed_step([t * a + (1 - t) * b for a, b in itertools.pairwise(points)], t)
+
+
+def one_level_short(points, t):
+    if len(points) == 2:
+        return points[0]
+    return one_level_short([(1 - t) * a + t * b for a, b in itertools.pairwise(points)], t)
+
+
+def swapped(points, t):
+    x, y = recursive_solution(points, t)
+    return y, x
+
+
+def picture_size(result):
+    return Image.open(io.BytesIO(result.picture)).size
+
+
+def test_correct_solutions_pass_in_one_line_whatever_they_name_their_arguments():
     result = check.recursive_bezier(recursive_solution)
-    assert result and "all 45 cases pass" in str(result)
+    assert result and str(result) == "PASS recursive_bezier: all 45 cases pass"
     assert check.recursive_bezier(lambda p, t: tuple(recursive_solution(p, t)))
+    assert result.picture is None and result.mistake is None
 
 
-def test_the_reversed_convention_fails_and_names_the_case():
-    result = check.recursive_bezier(lambda points, t: de_casteljau_reversed(points, t))
-    assert not result
+@pytest.mark.parametrize(
+    ("solution", "mistake", "words"),
+    [
+        (reversed_step, "the reversed step", "your curve runs backwards"),
+        (one_level_short, "one level short", "you stopped when two points were left"),
+        (swapped, "x and y swapped", "your point is (y, x)"),
+    ],
+)
+def test_each_known_mistake_of_recursive_bezier_is_named_with_its_picture(solution, mistake, words):
+    result = check.recursive_bezier(solution)
+    assert not result and result.mistake == mistake
     message = str(result)
-    # t = 1/2 on the symmetric first cases agrees; t = 0 gives the last point.
-    assert message.startswith("FAIL recursive_bezier: case 2 is wrong")
-    assert "t=0" in message and "[[0., 0.],\n [4., 2.]]" in message
-    assert "expected: [0., 0.]" in message and "given:    [4., 2.]" in message
+    assert message.startswith("FAIL recursive_bezier: case 1 is wrong\n")
+    assert f"This is a known mistake, {mistake}: {words}" in message
+    assert "first wrong value: [0]" in message or "first wrong value: [1]" in message
+    assert message.splitlines()[-1].startswith("Hint: ")
+    assert picture_size(result)[0] > 300
+
+
+def test_an_unknown_mistake_gets_the_first_wrong_value_the_picture_and_the_hint():
+    result = check.recursive_bezier(lambda points, t: recursive_solution(points, t) + 0.5)
+    assert not result and result.mistake is None
+    message = str(result)
+    assert "first wrong value: [0] expected 0.625, given 1.125" in message
+    assert "known mistake" not in message and "Hint: " in message
+    assert result.picture is not None
 
 
 def test_exceptions_and_non_functions_are_reported():
     result = check.recursive_bezier(lambda points, t: points[5])
-    assert not result and "raised IndexError" in str(result) and "case 1" in str(result)
-    try:
+    assert not result and "case 1 raised IndexError" in str(result) and "Hint: " in str(result)
+    with pytest.raises(TypeError, match="recursive_bezier: expected a function"):
         check.recursive_bezier(np.zeros(2))
-    except TypeError as error:
-        assert "recursive_bezier" in str(error)
-    else:
-        raise AssertionError("a non-function must raise TypeError")
+
+
+def next_level_solution(points, t):
+    return [(1 - t) * points[i] + t * points[i + 1] for i in range(len(points) - 1)]
+
+
+@pytest.mark.parametrize(
+    ("solution", "mistake"),
+    [
+        (
+            lambda p, t: [t * p[i] + (1 - t) * p[i + 1] for i in range(len(p) - 1)],
+            "the reversed step",
+        ),
+        (
+            lambda p, t: [(1 - t) * p[i] + t * p[i + 1] for i in range(len(p) - 2)],
+            "one point short",
+        ),
+        (
+            lambda p, t: (1 - t) * p + t * np.roll(p, -1, axis=0),
+            "an edge from the last point back to the first",
+        ),
+        (lambda p, t: np.array(next_level_solution(p, t))[:, ::-1], "x and y swapped"),
+    ],
+)
+def test_next_level_passes_and_names_each_mistake(solution, mistake):
+    assert str(check.next_level(next_level_solution)) == "PASS next_level: all 45 cases pass"
+    result = check.next_level(solution)
+    assert not result and result.mistake == mistake
+
+
+def bezier_solution(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = recursive_solution(control_points, k / 1000)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x)] = (0, 1, 0)
+
+
+def float_loop(control_points, window):
+    height, width = window.shape[:2]
+    t = 0.0
+    while t <= 1:
+        x, y = recursive_solution(control_points, t)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x)] = (0, 1, 0)
+        t += 0.001
+
+
+def rounded(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = np.round(recursive_solution(control_points, k / 1000)).astype(int)
+        if 0 <= x < width and 0 <= y < height:
+            window[y, x] = (0, 1, 0)
+
+
+def swapped_axes(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = recursive_solution(control_points, k / 1000)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(x), int(y)] = (0, 1, 0)
+
+
+def unguarded_below(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = recursive_solution(control_points, k / 1000)
+        if x < width and y < height:
+            window[int(np.floor(y)), int(np.floor(x))] = (0, 1, 0)
+
+
+def coarse(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(101):
+        x, y = recursive_solution(control_points, k / 100)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x)] = (0, 1, 0)
+
+
+def test_the_drawing_loop_passes_in_one_line():
+    result = check.bezier(bezier_solution)
+    assert str(result) == "PASS bezier: all 2 cases pass"
+
+
+@pytest.mark.parametrize(
+    ("solution", "mistake", "case"),
+    [
+        (float_loop, "the float loop that stops short of t = 1", 1),
+        (rounded, "rounding to the nearest pixel", 1),
+        (swapped_axes, "x and y swapped", 1),
+        (unguarded_below, "a negative index wraps around", 2),
+        (coarse, "a step of 0.01", 1),
+    ],
+)
+def test_each_known_mistake_of_the_drawing_loop_is_named_with_a_pixel_picture(
+    solution, mistake, case
+):
+    result = check.bezier(solution)
+    assert not result and result.mistake == mistake
+    assert str(result).startswith(f"FAIL bezier: case {case} is wrong")
+    assert picture_size(result) == (458, 343)  # 16 x 16 pixels at 18 x 18, and the legend
+
+
+def test_the_float_loop_report_names_the_missing_end_pixel():
+    message = str(check.bezier(float_loop))
+    assert "1 pixel missing, first (690, 690)" in message
+
+
+def test_a_loop_that_writes_off_the_window_is_told_where():
+    def unguarded(control_points, window):
+        for k in range(1001):
+            x, y = recursive_solution(control_points, k / 1000)
+            window[int(y), int(x)] = (0, 1, 0)
+
+    message = str(check.bezier(unguarded))
+    assert message.startswith("FAIL bezier: case 2 raised IndexError")
+    assert "skip the points off the window" in message

@@ -2,6 +2,7 @@
 
 import ast
 import copy
+import difflib
 import json
 
 import nbformat
@@ -10,8 +11,12 @@ from nbclient import NotebookClient
 
 from course.classroom.cli import main
 from course.classroom.edition import (
+    BEGIN_SOLUTION,
+    END_SOLUTION,
+    HIDDEN_NOTE,
     STUB_LINE,
     exercise_stub,
+    reveals,
     solution_cells,
     student_notebook,
     write_student_edition,
@@ -61,22 +66,65 @@ def test_stub_refuses_cells_without_a_function_or_with_a_one_line_body():
         exercise_stub("def f(x): return x\n")
 
 
-def test_student_notebook_replaces_solutions_clears_outputs_and_leaves_the_input_alone():
-    book = notebooks()[0]
-    original = json.loads(book.path.read_text(encoding="utf-8"))
-    untouched = copy.deepcopy(original)
-    student = student_notebook(original)
-    assert original == untouched
-    assert solution_cells(student) == []
-    assert len(student["cells"]) == len(original["cells"])
-    for before, after in zip(original["cells"], student["cells"], strict=True):
-        if after["cell_type"] == "code":
-            assert after["outputs"] == [] and after["execution_count"] is None
-        if "solution" in before["metadata"].get("tags", []):
-            assert "exercise" in after["metadata"]["tags"]
-            assert after["source"] == exercise_stub("".join(before["source"]))
-        else:
-            assert after["source"] == before["source"]
+def test_a_scaffold_keeps_the_cell_and_stubs_only_what_is_marked():
+    scaffold = (
+        "def bezier(control_points, window):\n"
+        "    height, width = window.shape[:2]\n"
+        "    for k in range(1001):\n"
+        f"        {BEGIN_SOLUTION}\n"
+        "        x, y = recursive_bezier(control_points, k / 1000)\n"
+        "        window[int(y), int(x)] = (0, 1, 0)\n"
+        f"        {END_SOLUTION}\n"
+        "\n\ncheck.bezier(bezier)"
+    )
+    assert exercise_stub(scaffold) == (
+        "def bezier(control_points, window):\n"
+        "    height, width = window.shape[:2]\n"
+        "    for k in range(1001):\n"
+        f"        {STUB_LINE}\n"
+        "\n\ncheck.bezier(bezier)"
+    )
+    with pytest.raises(ValueError, match="without"):
+        exercise_stub(f"def f():\n    {BEGIN_SOLUTION}\n    return 1")
+    with pytest.raises(ValueError, match="never opened"):
+        exercise_stub(f"def f():\n    return 1\n    {END_SOLUTION}")
+
+
+def code_cell(source, tags=()):
+    return {"cell_type": "code", "metadata": {"tags": list(tags)}, "source": source}
+
+
+def test_cells_that_print_source_or_solve_a_variant_reveal_a_solution():
+    assert reveals(code_cell("print(source_of(de_casteljau_recursive))"))
+    assert reveals(code_cell("import inspect\ninspect.getsource(f)"))
+    assert reveals(code_cell("de_casteljau??"))
+    assert reveals(code_cell("def wrong(p, t): ...", tags=["reveals"]))
+    assert not reveals(code_cell("check.f(f)  # source_of( in a solution cell", ["solution"]))
+    assert not reveals(code_cell("de_casteljau(points, 0.5)"))
+    assert not reveals({"cell_type": "markdown", "metadata": {}, "source": "source_of(f)"})
+
+
+def test_student_notebook_replaces_solutions_hides_reveals_and_leaves_the_input_alone():
+    for book in notebooks(index=True):
+        original = json.loads(book.path.read_text(encoding="utf-8"))
+        untouched = copy.deepcopy(original)
+        student = student_notebook(original)
+        assert original == untouched
+        assert solution_cells(student) == []
+        assert len(student["cells"]) == len(original["cells"])
+        for before, after in zip(original["cells"], student["cells"], strict=True):
+            if reveals(before):
+                assert after["cell_type"] == "markdown" and after["source"] == HIDDEN_NOTE
+            elif after["cell_type"] == "code":
+                assert after["outputs"] == [] and after["execution_count"] is None
+                if "solution" in before["metadata"].get("tags", []):
+                    assert "exercise" in after["metadata"]["tags"]
+                    assert after["source"] == exercise_stub("".join(before["source"]))
+                else:
+                    assert after["source"] == before["source"]
+            else:
+                assert after == before
+        nbformat.validate(nbformat.from_dict(student))
 
 
 def test_write_student_edition_refuses_a_non_empty_folder_unless_forced(tmp_path):
@@ -92,9 +140,14 @@ def test_write_student_edition_refuses_a_non_empty_folder_unless_forced(tmp_path
 
 
 def result_text(cell) -> str:
-    results = [out for out in cell.outputs if out.output_type == "execute_result"]
-    assert results, f"the exercise cell must end with its checker call; got {cell.outputs}"
-    return results[-1]["data"]["text/plain"]
+    """The checker's report: the exercise cell's last output with text (its picture follows)."""
+    texts = [
+        out["data"]["text/plain"]
+        for out in cell.outputs
+        if out.output_type in ("execute_result", "display_data") and "text/plain" in out["data"]
+    ]
+    assert texts, f"the exercise cell must end with its checker call; got {cell.outputs}"
+    return texts[-1]
 
 
 EXERCISE_BOOKS = [
@@ -104,11 +157,40 @@ EXERCISE_BOOKS = [
 ]
 
 
+def solution_triples(original_source: str) -> set[tuple[str, ...]]:
+    """Every three consecutive non-blank lines of what the stub removes from a solution cell."""
+    before = original_source.splitlines()
+    after = exercise_stub(original_source).splitlines()
+    triples = set()
+    matcher = difflib.SequenceMatcher(a=before, b=after, autojunk=False)
+    for kind, start, end, _, _ in matcher.get_opcodes():
+        if kind in ("replace", "delete"):
+            removed = [line.strip() for line in before[start:end] if line.strip()]
+            triples |= {tuple(removed[i : i + 3]) for i in range(len(removed) - 2)}
+    return triples
+
+
+def text_triples(text: str) -> set[tuple[str, ...]]:
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    return {tuple(lines[i : i + 3]) for i in range(len(lines) - 2)}
+
+
+def output_text(cell) -> str:
+    parts = []
+    for out in cell.get("outputs", []):
+        parts.append("".join(out.get("text", "")))
+        for kind, value in out.get("data", {}).items():
+            if kind.startswith("text/"):
+                parts.append("".join(value))
+    return "\n".join(parts)
+
+
 @pytest.mark.parametrize("book", EXERCISE_BOOKS, ids=lambda book: book.path.stem)
-def test_every_exercise_fails_as_shipped_and_passes_with_the_solution_restored(book):
+def test_every_exercise_fails_as_shipped_passes_restored_and_nothing_gives_it_away(book):
     original = nbformat.read(book.path, as_version=4)
     student = nbformat.from_dict(student_notebook(original))
     solutions = solution_cells(original)
+    answers = set().union(*(solution_triples(original.cells[i].source) for i in solutions))
     client = NotebookClient(
         student,
         timeout=300,
@@ -116,6 +198,7 @@ def test_every_exercise_fails_as_shipped_and_passes_with_the_solution_restored(b
         resources={"metadata": {"path": str(book.path.parent)}},
     )
     checked = 0
+    shipped_cells = {}
     with client.setup_kernel():
         for index, cell in enumerate(student.cells):
             if cell.cell_type != "code":
@@ -124,6 +207,7 @@ def test_every_exercise_fails_as_shipped_and_passes_with_the_solution_restored(b
             if index not in solutions:
                 continue
             shipped = result_text(cell)
+            shipped_cells[index] = copy.deepcopy(cell)  # executing the solution replaces it
             assert shipped.startswith("FAIL "), shipped
             assert "NotImplementedError: your code here" in shipped
             restored = copy.deepcopy(original.cells[index])
@@ -132,3 +216,8 @@ def test_every_exercise_fails_as_shipped_and_passes_with_the_solution_restored(b
             assert result_text(restored).startswith("PASS "), result_text(restored)
             checked += 1
     assert checked == len(solutions) > 0
+    # The edition as run, sources and outputs, holds no three lines of any solution.
+    cells = [shipped_cells.get(index, cell) for index, cell in enumerate(student.cells)]
+    shown = "\n".join(cell.source + "\n" + output_text(cell) for cell in cells)
+    leaked = answers & text_triples(shown)
+    assert not leaked, f"{book.path.name} shows solution lines: {sorted(leaked)[:3]}"

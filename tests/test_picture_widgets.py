@@ -7,7 +7,14 @@ import pytest
 from matplotlib.figure import Figure
 from PIL import Image
 
-from course.widgets.picture import FigureView, PixelPanel, pixel_axes, png_bytes
+from course.widgets.picture import (
+    FigureView,
+    PixelPanel,
+    Still,
+    pixel_axes,
+    pixel_figure,
+    png_bytes,
+)
 
 
 def decoded(data: bytes) -> np.ndarray:
@@ -118,3 +125,41 @@ def test_a_figure_view_is_the_size_it_is_asked_for():
     view.render()
     assert view.pixels().shape == (123, 45, 4)
     assert (view.image.height, view.image.width) == (123, 45)
+
+
+def test_a_still_shows_as_its_image_and_reads_as_its_caption():
+    figure = Figure(figsize=(1.2, 0.8), dpi=100)
+    still = Still.of(figure, "a caption with numbers 1.5")
+    assert repr(still) == "a caption with numbers 1.5"
+    assert still._repr_png_().startswith(b"\x89PNG") and still._repr_jpeg_() is None
+    assert Image.open(io.BytesIO(still.png)).size == (120, 80)
+    jpeg = Still(b"\xff\xd8\xff\xe0 jpeg", "photo")
+    assert jpeg._repr_png_() is None and jpeg._repr_jpeg_() == b"\xff\xd8\xff\xe0 jpeg"
+
+
+def test_pixel_figures_draw_every_pixel_as_a_whole_square():
+    rng = np.random.default_rng(5)
+    windows = [
+        (rng.uniform(size=(5, 7, 3)), (10, 17, 25, 20), "a"),
+        (rng.uniform(size=(5, 7)), (0, 7, 5, 0), "b"),
+    ]
+    zoom = 9
+    figure, axes_list = pixel_figure(windows, zoom=zoom, legend=[("red", "red")])
+    still = Still.of(figure, "x")
+    shown = np.asarray(Image.open(io.BytesIO(still.png)).convert("RGB")).astype(int)
+    height = shown.shape[0]
+    for (window, _, _), axes in zip(windows, axes_list, strict=True):
+        box = axes.get_window_extent()
+        assert (round(box.width), round(box.height)) == (7 * zoom, 5 * zoom)
+        left, top = round(box.x0), round(height - box.y1)
+        # The centre of each zoomed pixel holds the window's value (gray: as imshow maps it).
+        centres = shown[
+            top + zoom // 2 : top + 5 * zoom : zoom, left + zoom // 2 : left + 7 * zoom : zoom
+        ]
+        expected = window if window.ndim == 3 else np.repeat(window[..., None], 3, axis=2)
+        assert np.abs(centres - np.round(expected * 255)).max() <= 2  # a colormap has 256 steps
+        # A whole square is one colour: the pixel next to the centre matches it.
+        beside = shown[
+            top + zoom // 2 : top + 5 * zoom : zoom, left + zoom // 2 + 2 : left + 7 * zoom : zoom
+        ]
+        assert np.array_equal(beside, centres)

@@ -86,7 +86,7 @@ def test_a_new_lesson_is_new_files_only(throwaway_lesson, tmp_path):
     table = course_map(throwaway_lesson).splitlines()
     assert table[-1] == (
         "| [Lesson 09 · Polygon clipping](09_polygon_clipping.ipynb) | clipping a polygon "
-        "against a window, edge by edge | Lab 2, Task 1: Sutherland-Hodgman |"
+        "against a window, edge by edge | Lab 2, Task 1: Sutherland-Hodgman |  |"
     )
     pictures = gallery_pictures(throwaway_lesson)
     assert [picture.name for picture in pictures][-1] == "09_clipped_square"

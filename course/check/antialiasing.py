@@ -89,4 +89,7 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
         reference=_reference,
         compare=close(atol=1e-9, rtol=0.0),
         convert=lambda answer: splat_table(*answer),
+        hint="the four pixels whose centres (c + 0.5, r + 0.5) surround the point; measure the "
+        "point's offset (dx, dy) from the top-left of those centres, and give each pixel the "
+        "area of the opposite rectangle.",
     )

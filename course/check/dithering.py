@@ -51,4 +51,7 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
         reference=lambda gray: error_diffusion(gray, method="loop"),
         compare=close(atol=0, rtol=0),
         convert=lambda value: np.asarray(value, dtype=float),
+        hint="visit the pixels row by row, left to right; threshold each at 0.5, and pass its "
+        "error (value - output) on to the four neighbours not yet visited, 7/16 to the right, "
+        "3/16, 5/16, 1/16 below.",
     )

@@ -44,7 +44,16 @@ def blur(student: Callable[..., Any]) -> CheckResult:
     >>> blur(library_blur)
     PASS Blur: all 6 cases pass
     """
-    return run_cases("Blur", student, _cases(), reference_blur, close(1e-9), _as_float)
+    return run_cases(
+        "Blur",
+        student,
+        _cases(),
+        reference_blur,
+        close(1e-9),
+        _as_float,
+        hint="each output pixel is the mean of the 3 x 3 neighbours that lie inside the image: "
+        "9 inside, 6 on an edge, 4 at a corner.",
+    )
 
 
 def edge(student: Callable[..., Any]) -> CheckResult:
@@ -69,4 +78,6 @@ def edge(student: Callable[..., Any]) -> CheckResult:
         lambda image: sobel(image, border="replicate"),
         close(1e-9),
         _as_float,
+        hint="read outside pixels from the nearest pixel inside (clamp the index); Gx and Gy "
+        "are two 3 x 3 weighted sums, and the answer is sqrt(Gx^2 + Gy^2).",
     )

@@ -62,7 +62,16 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
     Where two pixels are equally near, either is accepted.
     """
     cases = [{"p0": p0, "p1": p1} for p0, p1 in _LINE_CASES]
-    return run_cases("DrawLine", student, cases, line, _is_bresenham_line, _as_pixel_array)
+    return run_cases(
+        "DrawLine",
+        student,
+        cases,
+        line,
+        _is_bresenham_line,
+        _as_pixel_array,
+        hint="step one pixel at a time along the longer axis; carry an error term that says "
+        "when to step along the shorter one too (diagonally), never both separately.",
+    )
 
 
 def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
@@ -75,7 +84,15 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
     """
     cases = [{"p0": p0, "p1": p1, "p2": p2} for p0, p1, p2 in _TRIANGLE_CASES]
     return run_cases(
-        "DrawTriangleFilled", student, cases, triangle, _same_pixel_set, _as_pixel_array
+        "DrawTriangleFilled",
+        student,
+        cases,
+        triangle,
+        _same_pixel_set,
+        _as_pixel_array,
+        hint="test each pixel's centre (x + 0.5, y + 0.5) in the triangle's bounding box with "
+        "the three edge functions; a centre exactly on an edge counts only for a top or a "
+        "left edge.",
     )
 
 

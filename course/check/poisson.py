@@ -61,4 +61,6 @@ def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
         poisson.correction_boundary,
         close(atol=1e-12, rtol=0),
         convert=lambda g: np.asarray(g, dtype=float),
+        hint="the correction is zero inside and, on the region's border, the difference "
+        "between the background and the pasted image there.",
     )

@@ -39,4 +39,13 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
     enlarging (which samples beyond the outer pixel centres, where the image
     is clamped). Values must agree within 1e-9.
     """
-    return run_cases("Supersampling", student, _cases(), supersample, close(atol=1e-9), np.asarray)
+    return run_cases(
+        "Supersampling",
+        student,
+        _cases(),
+        supersample,
+        close(atol=1e-9),
+        np.asarray,
+        hint="each output pixel averages rate x rate bilinear samples, spread evenly over the "
+        "pixel's square: their positions are the pixel's corner plus (i + 0.5) / rate.",
+    )

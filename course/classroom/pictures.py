@@ -11,6 +11,7 @@ colour a colormap shows, and the share of pixels that two pictures disagree on.
 from __future__ import annotations
 
 import io
+from collections.abc import Callable
 from typing import Any
 
 import matplotlib
@@ -22,6 +23,7 @@ from PIL import Image as PILImage
 from course.classroom.registry import Landmark, Picture
 from course.coverage import segment_distance
 from course.widgets.base import SliderApp
+from course.widgets.picture import Still
 
 __all__ = [
     "BLACK",
@@ -65,6 +67,47 @@ def app_picture(app: SliderApp) -> bytes:
         return shown
     buffer = io.BytesIO()
     PILImage.fromarray(np.asarray(app.view.canvas.buffer_rgba())).save(buffer, format="png")
+    return buffer.getvalue()
+
+
+def still_picture(name: str, caption: str, draw: Callable[..., Still], *arguments: Any) -> Picture:
+    """A registry picture drawn by a lesson's figure function, ``draw(*arguments)``."""
+    return Picture(name, caption, lambda: draw(*arguments).data)
+
+
+def panel_picture(app: SliderApp, axes: Any, pad: int = 6) -> bytes:
+    """One panel of an app's picture, at full size, with its title and labels: a PNG.
+
+    For the course map's previews: a single legible panel rather than the
+    whole app shrunk. The panel is the axes' tight box (ticks, labels and
+    title included) on the picture the app shows for its current values.
+    """
+    app.refresh()
+    pixels = np.asarray(app.view.canvas.buffer_rgba())[..., :3]
+    renderer = app.view.canvas.get_renderer()
+    box = axes.get_tightbbox(renderer)
+    height, width = pixels.shape[:2]
+    left, right = max(0, int(box.x0) - pad), min(width, int(np.ceil(box.x1)) + pad)
+    top, bottom = (
+        max(0, int(height - box.y1) - pad),
+        min(height, int(np.ceil(height - box.y0)) + pad),
+    )
+    buffer = io.BytesIO()
+    PILImage.fromarray(np.ascontiguousarray(pixels[top:bottom, left:right])).save(buffer, "png")
+    return buffer.getvalue()
+
+
+def png_of_gray(image: Any) -> bytes:
+    """A gray image in [0, 1] as a PNG, one pixel per pixel.
+
+    Examples
+    --------
+    >>> PILImage.open(io.BytesIO(png_of_gray(np.zeros((3, 5))))).size
+    (5, 3)
+    """
+    levels = np.round(np.clip(np.asarray(image, dtype=float), 0.0, 1.0) * 255).astype(np.uint8)
+    buffer = io.BytesIO()
+    PILImage.fromarray(levels).save(buffer, "png")
     return buffer.getvalue()
 
 
@@ -125,9 +168,14 @@ def thumbnail(png: bytes, columns: int) -> bytes:
     return buffer.getvalue()
 
 
-def preview(picture: Picture, columns: int = 420) -> bytes:
-    """A registered picture ``columns`` pixels across, as a small PNG (for the course map)."""
-    return thumbnail(picture.render(), columns)
+def preview(picture: Picture, columns: int | None = None) -> bytes:
+    """A registered picture as a compact PNG (256 colours) for the course map.
+
+    At its own width unless ``columns`` is given: a single-panel preview is
+    legible only at full size.
+    """
+    png = picture.render()
+    return thumbnail(png, columns or PILImage.open(io.BytesIO(png)).width)
 
 
 def gray_color(value: float) -> tuple[int, int, int]:

@@ -126,13 +126,21 @@ class Picture:
 
 @dataclass(frozen=True)
 class Lesson:
-    """A lesson's registry entry: what its notebook cannot say about itself."""
+    """A lesson's registry entry: what its notebook cannot say about itself.
+
+    ``outcomes`` says what a student will be able to do after the lesson,
+    ``minutes`` about how long it takes, and ``preview`` is one legible,
+    single-panel picture for the course map.
+    """
 
     handout: str
     teaches: str
     pictures: tuple[Picture, ...] = ()
     sliders: tuple[SliderMove, ...] = ()
     drags: tuple[DragMove, ...] = ()
+    outcomes: tuple[str, ...] = ()
+    minutes: int = 0
+    preview: Picture | None = None
 
 
 def lesson_modules() -> dict[str, str]:

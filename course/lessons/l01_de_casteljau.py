@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from course.bezier import de_casteljau
-from course.classroom.pictures import CRIMSON, app_picture, landmark_at
+from course.classroom.pictures import CRIMSON, app_picture, landmark_at, still_picture
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
-from course.images import EXAMPLE_POINTS
+from course.images import EXAMPLE_POINTS, SEED_000_CUBIC
+from course.widgets import de_casteljau_figures as figures
 from course.widgets.base import SliderApp, parse_points
 from course.widgets.de_casteljau import DeCasteljauApp
 
@@ -26,16 +27,52 @@ def de_casteljau_picture(t: float, count: int = 4) -> Picture:
     )
 
 
+#: The lesson's tiny example: three points with exact binary-fraction levels at t = 1/4.
+THREE_POINTS = ((0.0, 0.0), (2.0, 4.0), (8.0, 0.0))
+
+
+def preview() -> bytes:
+    """The course map's preview: the construction at t = 0.5."""
+    return app_picture(DeCasteljauApp())
+
+
 LESSON = Lesson(
+    outcomes=(
+        "find a point of a Bézier curve by hand, by repeated linear interpolation",
+        "write the GAMES101 handout's recursive_bezier and the loop that draws the curve",
+        "measure the handouts' pitfalls: a curve run backwards, a loop short of t = 1, gaps",
+    ),
+    minutes=60,
+    preview=Picture("01_preview", "de Casteljau's construction of a cubic at t = 0.5", preview),
     handout="GAMES101 homework 4, basic part (seed 000): recursive_bezier and the bezier "
     "loop; seeds 002-004's reversed step and float loop",
-    teaches="a Bézier curve by repeated linear interpolation, every level under a t "
-    "slider; recursion vs iteration; the handouts' pitfalls measured",
+    teaches="a Bézier curve by repeated linear interpolation: by hand on three points, "
+    "recursive_bezier and the drawing loop written and checked, every level under a t slider "
+    "and draggable points; the handouts' pitfalls as pictures and numbers",
     pictures=(
         de_casteljau_picture(0.5),
         de_casteljau_picture(0.25),
-        de_casteljau_picture(0.75),
         de_casteljau_picture(0.3, count=10),
+        still_picture(
+            "01_three_points",
+            "de Casteljau by hand on three points at t = 1/4",
+            figures.three_points_figure,
+            THREE_POINTS,
+            0.25,
+        ),
+        still_picture(
+            "01_end_of_curve",
+            "the last pixels two handout loops paint, beside B(1)",
+            figures.end_of_curve_figure,
+            SEED_000_CUBIC,
+        ),
+        still_picture(
+            "01_yellow_check_games101",
+            "the GAMES101 report's yellow check: rounding against truncation",
+            figures.yellow_check_figure,
+            SEED_000_CUBIC,
+            "000",
+        ),
     ),
     sliders=(
         SliderMove(

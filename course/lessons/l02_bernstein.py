@@ -5,8 +5,16 @@ from __future__ import annotations
 from dataclasses import replace
 
 from course.bezier import bernstein_basis
-from course.classroom.pictures import CRIMSON, app_picture, landmark_at
+from course.classroom.pictures import (
+    CRIMSON,
+    app_picture,
+    landmark_at,
+    panel_picture,
+    still_picture,
+)
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.images import EXAMPLE_POINTS
+from course.widgets import bernstein_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.bernstein import BernsteinBasisApp
 
@@ -36,12 +44,51 @@ def bernstein_picture(degree: int, t: float) -> Picture:
     )
 
 
+def preview() -> bytes:
+    """The course map's preview: the cubic Bernstein basis at t = 0.3."""
+    app = BernsteinBasisApp(degree=3, t=0.3)
+    return panel_picture(app, app.axes)
+
+
 LESSON = Lesson(
+    outcomes=(
+        "write a Bézier curve as its control points weighted by Bernstein polynomials",
+        "compute binomials exactly by Pascal's rule and write naive_bezier for any degree",
+        "read a curve's end tangents and derivative off its control polygon",
+    ),
+    minutes=50,
+    preview=Picture(
+        "02_preview", "the four cubic Bernstein polynomials, and their values at t = 0.3", preview
+    ),
     handout="GAMES101 homework 4's naive_bezier (seed 000), generalised to any degree "
     "with the recursive binomial (seed 002)",
-    teaches="the Bernstein basis under a degree slider; binomials three ways; "
-    "from Bernstein to de Casteljau; accuracy against the degree",
-    pictures=(bernstein_picture(3, 0.3), bernstein_picture(9, 0.5)),
+    teaches="the Bernstein basis under a degree slider; binomials by Pascal's rule, written "
+    "and checked, against the handout's exponential recursion and 32-bit int; naive_bezier of "
+    "any degree; end tangents and the hodograph; accuracy against the degree",
+    pictures=(
+        bernstein_picture(3, 0.3),
+        bernstein_picture(9, 0.5),
+        still_picture(
+            "02_pascal_triangle",
+            "Pascal's triangle: each entry the sum of two",
+            figures.pascal_figure,
+        ),
+        still_picture(
+            "02_end_tangents",
+            "the end tangents along the polygon's edges",
+            figures.tangents_figure,
+            EXAMPLE_POINTS[:4],
+        ),
+        still_picture(
+            "02_hodograph",
+            "velocities along a cubic and its hodograph",
+            figures.hodograph_figure,
+            EXAMPLE_POINTS[:4],
+        ),
+        still_picture(
+            "02_accuracy_by_degree", "four evaluations' error by degree", figures.accuracy_figure
+        ),
+    ),
     sliders=(
         SliderMove(
             build=bernstein_app,

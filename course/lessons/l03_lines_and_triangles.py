@@ -14,6 +14,7 @@ from course.classroom.pictures import (
     clear_point,
     colormap_color,
     landmark_at,
+    panel_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
 from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
@@ -119,7 +120,22 @@ def triangle_picture(rule: str) -> bytes:
     return app_picture(app)
 
 
+def preview() -> bytes:
+    """The course map's preview: two triangles sharing an edge, filled by the top-left rule."""
+    app = TriangleApp()
+    return panel_picture(app, app.left)
+
+
 LESSON = Lesson(
+    outcomes=(
+        "draw a line with Bresenham's algorithm in all eight octants",
+        "fill triangles by their edge functions, watertight by the top-left rule",
+        "tell a 4-connected staircase and a one-pixel gap from a correct rasterization",
+    ),
+    minutes=60,
+    preview=Picture(
+        "03_preview", "two triangles sharing an edge, filled by the top-left rule", preview
+    ),
     handout="Lab 1 report (seed 001), Task 4 (Bresenham's line in every octant), Task 5 "
     "(scanline triangle filling) and Task 7 (the Bézier curve drawn with lines)",
     teaches="Bresenham's line in all eight octants against the report's 4-connected "

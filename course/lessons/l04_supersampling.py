@@ -12,6 +12,7 @@ from course.classroom.pictures import (
     colormap_color,
     gray_color,
     landmark_at,
+    panel_picture,
     read_only,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
@@ -68,7 +69,20 @@ def supersample_landmarks(app: SliderApp) -> list[Landmark]:
     return landmarks
 
 
+def preview() -> bytes:
+    """The course map's preview: the zone plate shrunk with supersampling."""
+    app = SupersampleApp()
+    return panel_picture(app, app.result_axes)
+
+
 LESSON = Lesson(
+    outcomes=(
+        "shrink an image by supersampling, and say what each sample estimates",
+        "see aliasing as high frequencies folding back, on a zone plate",
+        "measure how the error falls as the sampling rate grows",
+    ),
+    minutes=45,
+    preview=Picture("04_preview", "a zone plate shrunk by supersampling", preview),
     handout="Lab 1 report (seed 001), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
     "by supersampling",
     teaches="supersampling as an estimate of the box filter, measured against a zone "

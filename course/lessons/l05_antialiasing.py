@@ -13,6 +13,7 @@ from course.classroom.pictures import (
     figure_picture,
     gray_color,
     landmark_in_box,
+    panel_picture,
     read_only,
     segments_of,
 )
@@ -96,7 +97,22 @@ def step_app_picture(weighting: str) -> bytes:
     return app_picture(app)
 
 
+def preview() -> bytes:
+    """The course map's preview: one zoomed window of an anti-aliased curve."""
+    app = zoom_app()
+    return panel_picture(app, app.panels[2].axes)
+
+
 LESSON = Lesson(
+    outcomes=(
+        "draw a curve's pixels as the coverage of a stroke",
+        "compare the handouts' anti-aliasing splats with the exact coverage, pixel by pixel",
+        "fix a splat's offset and its brightness along the curve",
+    ),
+    minutes=60,
+    preview=Picture(
+        "05_preview", "an anti-aliased curve, zoomed until each pixel is a square", preview
+    ),
     handout="GAMES101 homework 4, improvement part (seeds 000, 002, 003): anti-aliasing "
     "the curve with seed 000's three addColor splats, seed 002's sub-sample falloff and "
     "seed 003's normalised splat",

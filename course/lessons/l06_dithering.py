@@ -12,6 +12,7 @@ from course.classroom.pictures import (
     figure_picture,
     gray_color,
     landmark_at,
+    png_of_gray,
     read_only,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
@@ -88,7 +89,23 @@ def void_and_cluster_picture() -> bytes:
     return app_picture(VoidAndClusterApp(size=32, dots=120))
 
 
+def preview() -> bytes:
+    """The course map's preview: the photograph in black and white dots, at 1:1."""
+    gray = images.to_gray(images.photograph())[:240, :320]
+    dots = dither.error_diffusion(gray)
+    return png_of_gray(dots)
+
+
 LESSON = Lesson(
+    outcomes=(
+        "turn gray levels into black and white dots five ways",
+        "write Floyd-Steinberg error diffusion and explain its order of visits",
+        "tell the methods apart by their noise's look and its spectrum",
+    ),
+    minutes=45,
+    preview=Picture(
+        "06_preview", "a photograph in black and white dots, by error diffusion", preview
+    ),
     handout="Lab 1 report (seed 001), Task 1: threshold, uniform random, blue noise, "
     "ordered 3 x 3 and Floyd-Steinberg error diffusion",
     teaches="gray levels from black and white dots: the lab's five methods and the "

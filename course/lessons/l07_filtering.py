@@ -11,6 +11,7 @@ from course.classroom.pictures import (
     app_picture,
     figure_picture,
     landmark_at,
+    panel_picture,
     read_only,
     rgb_color,
 )
@@ -64,7 +65,22 @@ def blur_and_edges() -> bytes:
     return figure_picture(side_by_side(pictures, centre=(150, 80), size=40, figure_width=1000))
 
 
+def preview() -> bytes:
+    """The course map's preview: a photograph blurred eight times."""
+    app = repeated_blur_app()
+    return panel_picture(app, app.figure.axes[0])
+
+
 LESSON = Lesson(
+    outcomes=(
+        "blur and find edges with 3 x 3 kernels, as a loop and separably",
+        "choose a border rule and see what each does to the image's edge",
+        "explain why repeated blurring spreads like a Gaussian",
+    ),
+    minutes=35,
+    preview=Picture(
+        "07_preview", "a photograph blurred eight times with the report's border rule", preview
+    ),
     handout="Lab 1 report (seed 001), Task 2: 3 x 3 blur with the report's border rule "
     "and Sobel edges",
     teaches="blur and Sobel edges with 3 x 3 kernels, separable and fast; the four "

@@ -12,6 +12,7 @@ from course.classroom.pictures import (
     colormap_color,
     figure_picture,
     landmark_at,
+    panel_picture,
     read_only,
     rgb_color,
 )
@@ -114,7 +115,20 @@ def inpainting() -> bytes:
     return figure_picture(show_images(pictures, window=(slice(120, 420), slice(60, 460))))
 
 
+def preview() -> bytes:
+    """The course map's preview: the plane cloned seamlessly into the lake."""
+    app = CloneApp()
+    return panel_picture(app, app.panels["seamless clone"])
+
+
 LESSON = Lesson(
+    outcomes=(
+        "paste an image seamlessly by solving a Poisson equation",
+        "fill a hole by the membrane through its border",
+        "compare iterative solvers with an exact one, by their error after each sweep",
+    ),
+    minutes=60,
+    preview=Picture("08_preview", "a plane cloned seamlessly into a lake", preview),
     handout="Lab 1 report (seed 001), Task 3: Poisson image editing, the plane pasted "
     "into the lake with the lab's 8000 'Jacobi' sweeps",
     teaches="seamless cloning and inpainting as a Poisson equation, solved exactly "

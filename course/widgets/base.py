@@ -32,7 +32,7 @@ from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
-from course.widgets.picture import FigureView
+from course.widgets.picture import FigureView, Still
 
 __all__ = ["HIGHLIGHT", "Handle", "SliderApp", "format_points", "parse_points"]
 
@@ -172,6 +172,13 @@ class SliderApp:
         if self.BLIT:
             return self.view.render_moving(self.moving, self.pixel_images)
         return self.view.render()
+
+    def still(self, caption: str | None = None) -> Still:
+        """The app's picture as it stands, as a :class:`~course.widgets.picture.Still`.
+
+        For a lesson's opening picture: what the app shows, without the controls.
+        """
+        return Still(self.refresh(), caption or self.describe())
 
     def animate(self, *artists: Any) -> None:
         """Mark artists as moving: with :attr:`BLIT`, only these are redrawn each step."""

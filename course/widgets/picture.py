@@ -24,6 +24,7 @@ import traitlets
 from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.patches import Patch
 from PIL import Image as PILImage
 
 from course._validate import describe
@@ -33,8 +34,10 @@ __all__ = [
     "FigureView",
     "Picture",
     "PixelPanel",
+    "Still",
     "bare_axes",
     "pixel_axes",
+    "pixel_figure",
     "png_bytes",
 ]
 
@@ -243,3 +246,90 @@ class PixelPanel:
 
     def get_array(self) -> np.ndarray:
         return self.values
+
+
+class Still:
+    """A finished picture for a notebook: shown as an image, its text form is its caption.
+
+    What the lessons' figure functions return: the picture is drawn once, by
+    the library, so a notebook needs no plotting code; the caption is stable
+    text for the notebook's checks (nbval compares it, not the pixels).
+    ``data`` is PNG, or JPEG for a photograph.
+    """
+
+    def __init__(self, data: bytes, caption: str) -> None:
+        self.data = data
+        self.caption = caption
+
+    @property
+    def png(self) -> bytes | None:
+        """The PNG bytes, or None for a JPEG still."""
+        return self.data if self.data.startswith(b"\x89PNG") else None
+
+    @classmethod
+    def of(cls, figure: Figure, caption: str) -> Still:
+        """Render ``figure`` on the Agg canvas as it is sized, without trimming."""
+        buffer = io.BytesIO()
+        FigureCanvasAgg(figure).print_png(buffer)
+        return cls(buffer.getvalue(), caption)
+
+    def _repr_png_(self) -> bytes | None:
+        return self.png
+
+    def _repr_jpeg_(self) -> bytes | None:
+        return None if self.png is not None else self.data
+
+    def __repr__(self) -> str:
+        return self.caption
+
+
+def pixel_figure(
+    windows: list[tuple[np.ndarray, tuple[int, int, int, int], str]],
+    zoom: int,
+    legend: list[tuple[str, str]] | None = None,
+    gap: int = 18,
+    title_height: int = 34,
+    legend_height: int = 26,
+    reserve_left: int = 0,
+) -> tuple[Figure, list[Axes]]:
+    """Side-by-side pixel views at a whole zoom: each image pixel is ``zoom`` x ``zoom``.
+
+    ``windows`` holds (image, extent, title) per panel: an (h, w, 3) RGB or
+    (h, w) gray crop in [0, 1] with its extent ``(left, right, bottom,
+    top)`` in image coordinates (:func:`course.canvas.crop`). Every axes is
+    placed in whole picture pixels and exactly ``zoom`` times its crop, so
+    nearest sampling draws each pixel as a flat square with nothing
+    resampled. ``legend`` adds (colour, label) patches above the panels;
+    ``reserve_left`` leaves that many picture pixels free on the left, for
+    another panel. Returns the figure and the axes, in data coordinates of
+    the image (y down), to draw marks on.
+    """
+    widths = [window.shape[1] * zoom for window, _, _ in windows]
+    heights = [window.shape[0] * zoom for window, _, _ in windows]
+    top = title_height + (legend_height if legend else 0)
+    columns = reserve_left + sum(widths) + gap * (len(windows) + 1)
+    rows = max(heights) + top + gap // 2
+    figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
+    axes_list = []
+    left = reserve_left + gap
+    for (window, extent, title), width, height in zip(windows, widths, heights, strict=True):
+        axes = pixel_axes(figure, left, rows - top - height, width, height)
+        cmap = "gray" if window.ndim == 2 else None
+        axes.imshow(window, extent=extent, interpolation="nearest", cmap=cmap, vmin=0, vmax=1)
+        axes.set_xlim(extent[0], extent[1])
+        axes.set_ylim(extent[2], extent[3])
+        bare_axes(axes)
+        axes.set_title(title, fontsize=9)
+        axes_list.append(axes)
+        left += width + gap
+    if legend:
+        figure.legend(
+            handles=[
+                Patch(facecolor=colour, edgecolor="0.5", label=label) for colour, label in legend
+            ],
+            loc="upper center",
+            ncols=len(legend),
+            fontsize=8,
+            frameon=False,
+        )
+    return figure, axes_list

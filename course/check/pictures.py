@@ -1,0 +1,121 @@
+"""Pictures of a wrong answer, for the checkers' reports.
+
+Two kinds: a curve (the expected curve and the student's points along it,
+each from its t = 0 end) and a set of pixels (the pixels both have in gray,
+the missing ones in one colour and the extra ones in another, each pixel a
+flat square at a whole zoom). Colours are Okabe and Ito's, safe for
+colour-blind readers, and every one has a legend entry.
+"""
+
+from __future__ import annotations
+
+import io
+from typing import Any
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.collections import LineCollection
+from matplotlib.colors import ListedColormap
+from matplotlib.figure import Figure
+from matplotlib.patches import Patch
+
+__all__ = ["EXPECTED", "EXTRA", "GIVEN", "MISSING", "curve_picture", "pixel_picture"]
+
+#: Okabe and Ito's blue, for what was expected (a curve, or the pixels missing from the answer).
+EXPECTED = MISSING = "#0072B2"
+#: Okabe and Ito's vermillion, for what was given (a curve, or the extra pixels).
+GIVEN = EXTRA = "#D55E00"
+_BOTH = "#999999"
+
+
+def _png(figure: Figure) -> bytes:
+    buffer = io.BytesIO()
+    FigureCanvasAgg(figure).print_png(buffer)
+    return buffer.getvalue()
+
+
+def curve_picture(
+    control: Any, expected: Any, given: Any, title: str = "", width_inches: float = 4.2
+) -> bytes:
+    """The control polygon, the expected curve and the student's points, as a PNG.
+
+    ``expected`` and ``given`` are (M, 2) points at the same parameters, from
+    t = 0 to t = 1; the first of each is ringed and labelled t = 0, so a
+    curve run backwards shows at a glance. Image space: y points down.
+    """
+    control = np.asarray(control, dtype=float)
+    expected = np.asarray(expected, dtype=float).reshape(-1, 2)
+    given = np.asarray(given, dtype=float).reshape(-1, 2)
+    figure = Figure(figsize=(width_inches, width_inches), dpi=100)
+    axes = figure.add_subplot()
+    axes.plot(*control.T, "o--", color="0.6", linewidth=1, markersize=5, label="control polygon")
+    for index, point in enumerate(control):
+        axes.annotate(f"P{index}", point, xytext=(5, 5), textcoords="offset points", fontsize=8)
+    axes.plot(*expected.T, "-", color=EXPECTED, linewidth=2, label="expected curve")
+    axes.plot(*given.T, "o", color=GIVEN, markersize=3.5, label="your points")
+    for points, colour in ((expected, EXPECTED), (given, GIVEN)):
+        if np.isfinite(points[0]).all():
+            axes.plot(*points[0], "o", markersize=11, fillstyle="none", color=colour)
+            axes.annotate(
+                "t = 0", points[0], xytext=(6, -12), textcoords="offset points", color=colour
+            )
+    axes.set_aspect("equal", adjustable="datalim")
+    axes.invert_yaxis()
+    axes.tick_params(labelsize=7)
+    axes.legend(fontsize=7, loc="best")
+    axes.set_title(title, fontsize=9)
+    figure.tight_layout()
+    return _png(figure)
+
+
+def pixel_picture(
+    expected: Any, given: Any, window: int = 16, zoom: int = 18, title: str = ""
+) -> bytes:
+    """Pixels around the first difference, as a PNG: both in gray, missing and extra in colour.
+
+    ``expected`` and ``given`` are (K, 2) integer (x, y) pixels. The view is
+    ``window`` x ``window`` pixels centred on the first missing pixel in
+    reading order (else the first extra one), each ``zoom`` x ``zoom``
+    screen pixels, so nothing is resampled.
+    """
+    want = {tuple(int(v) for v in p) for p in np.asarray(expected).reshape(-1, 2)}
+    have = {tuple(int(v) for v in p) for p in np.asarray(given, dtype=float).reshape(-1, 2)}
+    differing = sorted((want ^ have), key=lambda pixel: (pixel[1], pixel[0]))
+    missing = sorted(want - have, key=lambda pixel: (pixel[1], pixel[0]))
+    centre = (missing or differing or sorted(want | have) or [(0, 0)])[0]
+    left, top = centre[0] - window // 2, centre[1] - window // 2
+    codes = np.zeros((window, window), dtype=int)
+    for pixels, code in ((want & have, 1), (want - have, 2), (have - want, 3)):
+        for x, y in pixels:
+            if 0 <= x - left < window and 0 <= y - top < window:
+                codes[y - top, x - left] = code
+    side = window * zoom / 100  # inches at 100 dpi: one image pixel is zoom screen pixels
+    margin, legend_width, title_height = 0.1, 1.5, 0.35
+    width, height = side + 2 * margin + legend_width, side + 2 * margin + title_height
+    figure = Figure(figsize=(width, height), dpi=100)
+    axes = figure.add_axes((margin / width, margin / height, side / width, side / height))
+    colours = ListedColormap(["white", _BOTH, MISSING, EXTRA])
+    extent = (left, left + window, top + window, top)
+    axes.imshow(codes, cmap=colours, vmin=0, vmax=3, interpolation="nearest", extent=extent)
+    edges = np.arange(window + 1)
+    grid = [[(left + e, top), (left + e, top + window)] for e in edges]
+    grid += [[(left, top + e), (left + window, top + e)] for e in edges]
+    axes.add_collection(LineCollection(grid, colors="0.85", linewidths=0.5))
+    axes.set_xticks([])
+    axes.set_yticks([])
+    counts = (len(want & have), len(want - have), len(have - want))
+    labels = (f"in both ({counts[0]})", f"missing ({counts[1]})", f"extra ({counts[2]})")
+    figure.legend(
+        handles=[
+            Patch(color=colour, label=label)
+            for colour, label in zip((_BOTH, MISSING, EXTRA), labels, strict=True)
+        ],
+        loc="center left",
+        bbox_to_anchor=((side + 2 * margin) / width, 0.5),
+        fontsize=8,
+        frameon=False,
+    )
+    axes.set_title(
+        title or f"pixels ({left}..{left + window - 1}, {top}..{top + window - 1})", fontsize=8
+    )
+    return _png(figure)

@@ -1,0 +1,321 @@
+"""Lesson 01's still pictures: the construction by hand, and each handout pitfall.
+
+Each function draws one picture of the lesson and returns it as a
+:class:`~course.widgets.picture.Still` (shown as PNG in a notebook), so the
+notebook holds no plotting code. Pixel views are drawn at a whole zoom
+(:func:`~course.widgets.picture.pixel_figure`); colours are Okabe and Ito's,
+and every colour has a legend entry or a label.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from course._validate import as_curve
+from course.bezier import (
+    de_casteljau,
+    de_casteljau_levels,
+    derivative,
+    flatten,
+    uniform_parameters,
+)
+from course.bezier_handouts import (
+    HANDOUT_LOOPS,
+    de_casteljau_reversed,
+    loop_pixels,
+    trace_iterative,
+    trace_recursive,
+    yellow_check,
+)
+from course.canvas import crop, paint
+from course.raster import nearest_pixels
+from course.widgets.picture import Still, pixel_axes, pixel_figure
+
+__all__ = [
+    "end_of_curve_figure",
+    "gaps_figure",
+    "points_held_figure",
+    "reversed_figure",
+    "three_points_figure",
+    "yellow_check_figure",
+]
+
+BLUE, VERMILLION, GREEN, ORANGE = "#0072B2", "#D55E00", "#009E73", "#E69F00"
+_CANVAS = (700, 700)
+
+
+def _fraction(value: float) -> str:
+    """A coordinate as the student computes it by hand: 9/4 rather than 2.25 when short."""
+    exact = Fraction(value).limit_denominator(64)
+    if float(exact) == value and exact.denominator > 1:
+        return f"{exact.numerator}/{exact.denominator}"
+    return f"{value:g}"
+
+
+def three_points_figure(points: Any, t: float) -> Still:
+    """De Casteljau by hand on three points: both levels, each point labelled with its value.
+
+    Examples
+    --------
+    >>> three_points_figure([[0, 0], [2, 4], [8, 0]], 0.25)
+    de Casteljau on three points at t = 0.25: B(t) = (5/4, 3/2)
+    """
+    control = as_curve(points)
+    levels = de_casteljau_levels(control, t)
+    curve = de_casteljau(control, np.linspace(0.0, 1.0, 101))
+    figure = Figure(figsize=(5.2, 3.6), dpi=100)
+    axes = figure.add_subplot()
+    axes.plot(*curve.T, color="0.8", linewidth=1, label="the curve")
+    names = [["P"], ["Q"], ["B(t)"]]
+    styles = [("o-", "0.35"), ("s--", BLUE), ("D", VERMILLION)]
+    for level, (points_at, (style, colour)) in enumerate(zip(levels, styles, strict=False)):
+        label = ("control polygon", "level 1", "level 2: B(t)")[min(level, 2)]
+        axes.plot(*points_at.T, style, color=colour, markersize=7, label=label)
+        for index, point in enumerate(points_at):
+            name = names[min(level, 2)][0]
+            text = name if name == "B(t)" else f"{name}{index}"
+            coordinates = ", ".join(_fraction(float(v)) for v in point)
+            # Level 1 labelled outside the triangle, B(t) beside its point: nothing overlaps.
+            first = level == 1 and index == 0
+            axes.annotate(
+                f"{text} = ({coordinates})",
+                point,
+                xytext=(-9, 0) if first else (9, -3) if level == 1 else (7, 7),
+                textcoords="offset points",
+                ha="right" if first else "left",
+                va="center" if level == 1 else "bottom",
+                fontsize=8,
+                color=colour,
+            )
+    axes.set_aspect("equal")
+    axes.invert_yaxis()
+    axes.margins(x=0.3, y=0.18)
+    axes.legend(fontsize=7, loc="lower right")
+    axes.set_title(f"t = {_fraction(t)}: a quarter of the way along each segment", fontsize=9)
+    figure.tight_layout()
+    point = levels[-1][0]
+    value = ", ".join(_fraction(float(v)) for v in point)
+    return Still.of(figure, f"de Casteljau on three points at t = {t:g}: B(t) = ({value})")
+
+
+def points_held_figure(counts: Sequence[int] = (4, 10, 20, 50, 100, 200)) -> Still:
+    """Points held at once by the recursion and by the loop, counted by running both.
+
+    Examples
+    --------
+    >>> points_held_figure((4, 10))
+    points held at N = 10: recursion 55, loop 19
+    """
+    rng = np.random.default_rng(1)
+    recursive, iterative = [], []
+    for count in counts:
+        points = rng.uniform(0, 700, (count, 2))
+        recursive.append(trace_recursive(points, 0.3).peak_points_held)
+        iterative.append(trace_iterative(points, 0.3).peak_points_held)
+    figure = Figure(figsize=(4.6, 3.2), dpi=100)
+    axes = figure.add_subplot()
+    axes.loglog(counts, recursive, "o-", color=VERMILLION, label="recursion: N(N+1)/2")
+    axes.loglog(counts, iterative, "s--", color=BLUE, label="loop: 2N - 1")
+    axes.set_xlabel("control points N")
+    axes.set_ylabel("points held at once")
+    axes.legend(fontsize=8)
+    figure.tight_layout()
+    caption = f"points held at N = {counts[-1]}: recursion {recursive[-1]}, loop {iterative[-1]}"
+    return Still.of(figure, caption)
+
+
+def reversed_figure(points: Any, t: float = 0.25) -> Still:
+    """The textbook step and the handouts' reversed step: one curve, run opposite ways.
+
+    Examples
+    --------
+    >>> reversed_figure([[10, 10], [690, 10], [10, 690], [690, 690]])
+    at t = 0.25: textbook (307.5, 116.25), reversed (392.5, 583.75) = textbook at t = 0.75
+    """
+    control = as_curve(points)
+    ts = np.linspace(0.0, 1.0, 21)
+    figure = Figure(figsize=(8.4, 4.4), dpi=100)
+    pairs = (
+        ("textbook: (1 - t) P[i] + t P[i+1]", de_casteljau),
+        ("two reports: t P[i] + (1 - t) P[i+1]", de_casteljau_reversed),
+    )
+    centre = control.mean(axis=0)
+    marks = []
+    for index, (title, curve_of) in enumerate(pairs):
+        axes = figure.add_subplot(1, 2, index + 1)
+        curve = curve_of(control, ts)
+        axes.plot(*control.T, "o--", color="0.6", linewidth=1, markersize=5)
+        for number, point in enumerate(control):
+            axes.annotate(
+                f"P{number}", point, xytext=(5, 5), textcoords="offset points", fontsize=8
+            )
+        dots = axes.scatter(*curve.T, c=ts, cmap="viridis", s=18, zorder=3)
+        mark = curve_of(control, t)
+        marks.append(mark)
+        axes.plot(*mark, "D", color=VERMILLION, markersize=8, zorder=4)
+        axes.annotate(
+            f"t = {t:g}",
+            mark,
+            xytext=(10, -4) if mark[0] <= centre[0] else (-10, 10),
+            ha="left" if mark[0] <= centre[0] else "right",
+            textcoords="offset points",
+            color=VERMILLION,
+        )
+        # "t = 0" towards the polygon's middle, clear of the point labels at the corners.
+        inward = np.sign(centre - curve[0]) * (1, -1)  # y down in data, up in offsets
+        axes.annotate(
+            "t = 0",
+            curve[0],
+            xytext=tuple(28 * inward + (-12, 0)),
+            textcoords="offset points",
+            fontsize=9,
+            arrowprops={"arrowstyle": "-", "color": "0.3"},
+        )
+        axes.set_title(title, fontsize=9, pad=12)
+        axes.set_aspect("equal")
+        axes.invert_yaxis()
+        axes.margins(0.08)
+        axes.tick_params(labelsize=7)
+    figure.colorbar(dots, ax=figure.axes, shrink=0.6, fraction=0.03, label="t")
+    textbook, backwards = ((f"{v:g}" for v in mark) for mark in marks)
+    caption = (
+        f"at t = {t:g}: textbook ({', '.join(textbook)}), reversed ({', '.join(backwards)}) "
+        f"= textbook at t = {1 - t:g}"
+    )
+    return Still.of(figure, caption)
+
+
+def _painted(pixels: np.ndarray, colour: Any, shape: tuple[int, int] = _CANVAS) -> np.ndarray:
+    image = np.ones((*shape, 3))
+    paint(image, pixels, colour, mode="over")
+    return image
+
+
+def end_of_curve_figure(
+    points: Any, seeds: Sequence[str] = ("000", "003"), size: int = 10
+) -> Still:
+    """The last pixels each handout loop paints, beside the pixel that holds B(1).
+
+    Examples
+    --------
+    >>> still = end_of_curve_figure([[10, 10], [690, 10], [10, 690], [690, 690]])
+    >>> print(still.caption.replace("; ", "\\n"))
+    B(1) = (690, 690) in pixel (690, 690)
+    the GAMES101 report paints it (last t 0.9999907)
+    the VS2022 report does not (last t 0.999)
+    """
+    control = as_curve(points)
+    end = de_casteljau(control, 1.0)
+    home = tuple(int(v) for v in np.floor(end))
+    windows, verdicts = [], []
+    for seed in seeds:
+        loop = HANDOUT_LOOPS[seed]
+        pixels = loop_pixels(control, loop)
+        last_t = uniform_parameters(0.001, loop.accumulate)[-1]
+        lit = bool((pixels == home).all(axis=1).any())
+        window, extent = crop(_painted(pixels, (0.0, 0.62, 0.45)), end, size)
+        rounding = "rounded" if loop.rounding == "round" else "truncated"
+        windows.append((window, extent, f"{loop.name}\nlast t {last_t:.7g}, {rounding}"))
+        verdicts.append(f"{loop.name} {'paints it' if lit else 'does not'} (last t {last_t:.7g})")
+    figure, axes_list = pixel_figure(
+        windows, zoom=18, legend=[(GREEN, "painted"), ("white", "not painted")], title_height=44
+    )
+    for axes in axes_list:
+        axes.plot(*end, "+", color=VERMILLION, markersize=16, markeredgewidth=2.5)
+        axes.annotate("B(1)", end, xytext=(-36, 12), textcoords="offset points", color=VERMILLION)
+    caption = f"B(1) = ({end[0]:g}, {end[1]:g}) in pixel {home}; " + "; ".join(verdicts)
+    return Still.of(figure, caption)
+
+
+def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
+    """Near the curve's fastest part: a 0.001 step, a 0.0001 step, and ``flatten(max_step=1)``.
+
+    Examples
+    --------
+    >>> still = gaps_figure([[10, 10], [690, 10], [10, 690], [690, 690]])
+    >>> print(still.caption.replace("; ", "\\n"))
+    speed 2040 px per unit of t at t = 0, 1020 at t = 0.5
+    whole curve: step 0.001 leaves 147 gaps, 1.05 points per painted pixel
+    step 0.0001 0 gaps, 7.55
+    flatten 0 gaps, 1.21
+    """
+    control = as_curve(points)
+    centre = de_casteljau(control, near_t)
+    polyline = flatten(control, 0.25, max_step=1.0)
+    drawings = [
+        (
+            "step 0.001 (the handouts)",
+            nearest_pixels(de_casteljau(control, uniform_parameters(0.001, "float32"))),
+        ),
+        (
+            "step 0.0001",
+            nearest_pixels(de_casteljau(control, uniform_parameters(0.0001, "float32"))),
+        ),
+        ("flatten(max_step=1)", nearest_pixels(polyline)),
+    ]
+    windows, gaps, overdraw = [], [], []
+    for title, pixels in drawings:
+        jumps = np.abs(np.diff(pixels, axis=0)).max(axis=1)
+        gaps.append(int(np.count_nonzero(jumps > 1)))
+        overdraw.append(len(pixels) / len(np.unique(pixels, axis=0)))
+        window, extent = crop(_painted(pixels, (0.0, 0.45, 0.7)), centre, size)
+        windows.append((window, extent, title))
+    figure, _ = pixel_figure(windows, zoom=12, legend=[(BLUE, "painted")])
+    speed = np.hypot(*de_casteljau(derivative(control), [0.0, 0.5]).T)
+    caption = (
+        f"speed {speed[0]:g} px per unit of t at t = 0, {speed[1]:g} at t = 0.5; "
+        f"whole curve: step 0.001 leaves {gaps[0]} gaps, {overdraw[0]:.2f} points per painted "
+        f"pixel; step 0.0001 {gaps[1]} gaps, {overdraw[1]:.2f}; flatten {gaps[2]} gaps, "
+        f"{overdraw[2]:.2f}"
+    )
+    return Still.of(figure, caption)
+
+
+def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
+    """The GAMES101 check for one handout loop: where the red and green curves part.
+
+    Left, the whole curve with every pixel that is not yellow circled; right,
+    the pixels around the first of them at a whole zoom.
+
+    Examples
+    --------
+    >>> yellow_check_figure([[10, 10], [690, 10], [10, 690], [690, 690]], "002")
+    the any-degree report against naive_bezier: 99.2% yellow, 4 pixels only red, 4 only green
+    """
+    control = as_curve(points)
+    check = yellow_check(control, HANDOUT_LOOPS[seed])
+    odd = np.vstack([check.red_only, check.green_only])
+    curve = de_casteljau(control, np.linspace(0.0, 1.0, 401))
+    first = odd[np.lexsort((odd[:, 0], odd[:, 1]))][0] if len(odd) else np.floor(curve[0])
+    yellow = check.image[..., 0] * check.image[..., 1]
+    # Red, green and yellow on white: unpainted pixels white, as in the zoom panels.
+    shown = np.where((check.image.sum(axis=2) > 0)[..., None], check.image, 1.0)
+    shown[yellow > 0] = (0.95, 0.85, 0.0)
+    window, extent = crop(shown, first + 0.5, size)
+    side = size * 16  # the overview is as tall as the zoomed panel
+    figure, _ = pixel_figure(
+        [(window, extent, f"around pixel {tuple(int(v) for v in first)}")],
+        zoom=16,
+        legend=[((0.95, 0.85, 0.0), "both"), ((1, 0, 0), "only red"), ((0, 1, 0), "only green")],
+        reserve_left=side + 18,
+    )
+    overview = pixel_axes(figure, 18, 9, side, side)
+    overview.plot(*curve.T, color="0.7", linewidth=1)
+    if len(odd):
+        overview.plot(*(odd + 0.5).T, "o", markersize=9, fillstyle="none", color=VERMILLION)
+    overview.set_xlim(0, _CANVAS[1])
+    overview.set_ylim(_CANVAS[0], 0)
+    overview.set_aspect("equal")
+    overview.set_xticks([])
+    overview.set_yticks([])
+    overview.set_title("not yellow (circled)", fontsize=9)
+    caption = (
+        f"{HANDOUT_LOOPS[seed].name} against naive_bezier: {check.fraction:.1%} yellow, "
+        f"{len(check.red_only)} pixels only red, {len(check.green_only)} only green"
+    )
+    return Still.of(figure, caption)

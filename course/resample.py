@@ -42,6 +42,7 @@ __all__ = [
     "bilinear",
     "measure_shift",
     "supersample",
+    "supersample_shifted",
     "supersample_without_offset",
 ]
 
@@ -189,6 +190,7 @@ def supersample_without_offset(image: Any, out_shape: Any, rate: int) -> np.ndar
     ``1 / (2 s)`` output pixels (s = W / w), down and right. What remains is
     ``(1 / s - 1 / rate) / 2`` output pixels, -0.44 px at rate 1 when
     shrinking 2500 to 320, shrinking but not vanishing as the rate grows.
+    :func:`supersample_shifted` with both offsets 0.
 
     Examples
     --------
@@ -196,11 +198,40 @@ def supersample_without_offset(image: Any, out_shape: Any, rate: int) -> np.ndar
     >>> supersample_without_offset(image, (1, 2), rate=1)  # samples at x = 0.5, 2.5
     array([[0., 0.]])
     """
+    return supersample_shifted(image, out_shape, rate, sample_offset=0.0, pixel_centre=0.0)
+
+
+def supersample_shifted(
+    image: Any, out_shape: Any, rate: int, sample_offset: float = 0.5, pixel_centre: float = 0.5
+) -> np.ndarray:
+    """Supersampling with the sample positions and the pixel centres where you put them.
+
+    Sample i of output pixel c sits at ``(c + (i + sample_offset) / rate) *
+    W / w`` along each axis, and the bilinear lookup takes input pixel k to
+    sit at ``k + pixel_centre``. The defaults, 0.5 and 0.5, are
+    :func:`supersample`; the lab report's formula has 0 and 0
+    (:func:`supersample_without_offset`), and each half of its mistake alone
+    is one of the two set to 0.
+
+    Examples
+    --------
+    >>> image = np.array([[0.0, 1.0, 0.0, 1.0]])
+    >>> supersample_shifted(image, (1, 2), 1).tolist(), supersample(image, (1, 2), 1).tolist()
+    ([[0.5, 0.5]], [[0.5, 0.5]])
+    >>> supersample_shifted(image, (1, 2), 1, pixel_centre=0.0)  # samples at 1, 3: pixels 1, 3
+    array([[1., 1.]])
+    """
     pixels = as_image(image, "image", copy=False)
     height, width = as_shape(out_shape, "out_shape")
     rate = as_int(rate, "rate", minimum=1)
-    rows = _resampling_matrix(pixels.shape[0], height, rate, sample_offset=0.0, centre=0.0)
-    columns = _resampling_matrix(pixels.shape[1], width, rate, sample_offset=0.0, centre=0.0)
+    offsets = []
+    for value, name in ((sample_offset, "sample_offset"), (pixel_centre, "pixel_centre")):
+        number = float(as_float_array(value, name))
+        require_finite(np.asarray(number), name)
+        offsets.append(number)
+    sample_offset, pixel_centre = offsets
+    rows = _resampling_matrix(pixels.shape[0], height, rate, sample_offset, pixel_centre)
+    columns = _resampling_matrix(pixels.shape[1], width, rate, sample_offset, pixel_centre)
     return _separable(pixels, rows, columns)
 
 

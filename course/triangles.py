@@ -34,14 +34,24 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_choice, as_int, as_pixels, as_point, as_shape
+from course._validate import (
+    as_choice,
+    as_int,
+    as_pixels,
+    as_point,
+    as_points,
+    as_shape,
+    describe,
+)
 from course.canvas import inside
 
 __all__ = [
     "EDGE_RULES",
     "SUBPIXEL",
     "TRIANGLE_METHODS",
+    "barycentric",
     "hit_counts",
+    "interpolate",
     "triangle",
     "triangle_coverage",
 ]
@@ -326,3 +336,72 @@ def hit_counts(pixel_sets: Iterable[Any], shape: Any) -> np.ndarray:
         array = array[inside(array, (height, width))]
         counts += np.bincount(array[:, 1] * width + array[:, 0], minlength=height * width)
     return counts.reshape(height, width)
+
+
+def barycentric(p0: Any, p1: Any, p2: Any, points: Any) -> np.ndarray:
+    """The barycentric coordinates of ``points`` in the triangle p0 p1 p2: (K, 3).
+
+    Row k holds the weights (w0, w1, w2) with ``w0 + w1 + w2 = 1`` and
+    ``w0 p0 + w1 p1 + w2 p2 = points[k]``: each weight is the area of the
+    triangle the point makes with the opposite edge, over the whole area
+    (edge functions, as :func:`triangle` uses, divided by twice the area).
+    All three are in [0, 1] exactly when the point is inside.
+
+    Examples
+    --------
+    >>> barycentric((0, 0), (4, 0), (0, 4), [[1.0, 1.0], [0.0, 0.0], [2.0, 2.0]])
+    array([[0.5 , 0.25, 0.25],
+           [1.  , 0.  , 0.  ],
+           [0.  , 0.5 , 0.5 ]])
+    """
+    a, b, c = (as_point(p, name, dim=2) for p, name in ((p0, "p0"), (p1, "p1"), (p2, "p2")))
+    if np.size(points) == 0:  # no point: no weights (a triangle with no pixel centre inside)
+        at = np.zeros((0, 2))
+    else:
+        at = as_points(points, "points")
+    if at.shape[1] != 2:
+        raise ValueError(f"points must have shape (K, 2); got shape {at.shape}")
+    twice_area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    if twice_area == 0:
+        raise ValueError(
+            f"p0, p1, p2 must span a triangle of non-zero area; got {tuple(a)}, {tuple(b)}, "
+            f"{tuple(c)} on one line"
+        )
+
+    def edge(start: np.ndarray, end: np.ndarray) -> np.ndarray:
+        """Twice the signed area of (start, end, point): zero on the line start -> end."""
+        offset = at - start
+        return (end[0] - start[0]) * offset[:, 1] - (end[1] - start[1]) * offset[:, 0]
+
+    return np.column_stack([edge(b, c), edge(c, a), edge(a, b)]) / twice_area
+
+
+def interpolate(
+    p0: Any, p1: Any, p2: Any, values: Any, shape: Any = None, rule: str = "top-left"
+) -> tuple[np.ndarray, np.ndarray]:
+    """Values given at the vertices, interpolated at the centres of the triangle's pixels.
+
+    The step every rasterizer takes after deciding which pixels a triangle
+    covers: a colour, a depth or a texture coordinate at each pixel centre,
+    as the barycentric mix of its values at p0, p1, p2. ``values`` is (3,)
+    or (3, C), one row per vertex. Returns the pixels of
+    :func:`triangle` ``(p0, p1, p2, shape, rule)`` and the (K,) or (K, C)
+    values at their centres.
+
+    Examples
+    --------
+    >>> pixels, red = interpolate((0, 0), (4, 0), (0, 4), [1.0, 0.0, 0.0])
+    >>> pixels[:3].tolist(), red[:3].round(3).tolist()
+    ([[0, 0], [1, 0], [2, 0]], [0.75, 0.5, 0.25])
+    """
+    table = np.asarray(values, dtype=float)
+    if table.ndim not in (1, 2) or table.shape[0] != 3 or not np.isfinite(table).all():
+        raise ValueError(
+            f"values must be finite numbers, one row per vertex: shape (3,) or (3, C); "
+            f"got {describe(values)}"
+        )
+    pixels = triangle(p0, p1, p2, shape=shape, rule=rule)
+    if len(pixels) == 0:
+        return pixels, np.zeros((0, *table.shape[1:]))
+    weights = barycentric(p0, p1, p2, pixels + 0.5)
+    return pixels, weights @ table

@@ -2,6 +2,9 @@
 
 import math
 
+import numpy as np
+import pytest
+
 from course.check import lines_and_triangles as check
 from course.raster import line_4connected, triangle
 
@@ -111,3 +114,69 @@ def test_draw_triangle_filled_reports_the_handouts_division_by_zero():
 
     result = check.draw_triangle_filled(scanline_without_special_cases)
     assert not result and "case 3 raised ZeroDivisionError" in result.message
+
+
+def the_reports_loop(p0, p1):
+    """The lab report's Task 4 loop, with its `else`: a step moves x or y, never both."""
+    (x, y), (x1, y1) = p0, p1
+    dx, dy = abs(x1 - x), abs(y1 - y)
+    sx, sy = (1 if x < x1 else -1), (1 if y < y1 else -1)
+    err, pixels = dx - dy, [(x, y)]
+    while (x, y) != (x1, y1):
+        if 2 * err > -dy:
+            err, x = err - dy, x + sx
+        else:
+            err, y = err + dx, y + sy
+        pixels.append((x, y))
+    return pixels
+
+
+@pytest.mark.parametrize(
+    ("solution", "mistake"),
+    [
+        (the_reports_loop, "the report's staircase"),
+        (lambda p0, p1: bresenham_ties_toward_the_end(p1, p0), "drawn backwards"),
+        (lambda p0, p1: bresenham_ties_toward_the_end(p0, p1)[:-1], "the last pixel missing"),
+        (lambda p0, p1: bresenham_ties_toward_the_end(p0, p1)[1:], "the first pixel missing"),
+    ],
+)
+def test_draw_line_names_each_known_mistake_and_draws_the_difference(solution, mistake):
+    result = check.draw_line(solution)
+    assert not result and result.mistake == mistake
+    assert result.picture.startswith(b"\x89PNG")
+    assert "missing" in str(result) or "extra" in str(result) or "same pixels" in str(result)
+
+
+def scanline(p0, p1, p2, closed=False):
+    """A scanline fill, as the lab asks; ``closed`` takes the right edge and bottom row too."""
+    top, middle, bottom = sorted([p0, p1, p2], key=lambda p: p[1])
+    first, last = math.ceil(top[1] - 0.5), math.ceil(bottom[1] - 0.5) + (1 if closed else 0)
+    pixels = set()
+    for row in range(first, last):
+        y = row + 0.5
+        if not top[1] <= y <= bottom[1] or bottom[1] == top[1]:
+            continue
+        x_long = top[0] + (y - top[1]) * (bottom[0] - top[0]) / (bottom[1] - top[1])
+        a, b = (top, middle) if y < middle[1] else (middle, bottom)
+        if b[1] == a[1]:
+            continue
+        x_short = a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+        left, right = min(x_long, x_short), max(x_long, x_short)
+        end = math.floor(right - 0.5) + 1 if closed else math.ceil(right - 0.5)
+        pixels.update((column, row) for column in range(math.ceil(left - 0.5), end))
+    return sorted(pixels)
+
+
+def test_a_scanline_fill_with_half_open_spans_is_the_top_left_rule():
+    assert check.draw_triangle_filled(scanline)
+
+
+def test_draw_triangle_filled_names_each_known_mistake_with_a_pixel_picture():
+    closed = check.draw_triangle_filled(lambda p0, p1, p2: scanline(p0, p1, p2, closed=True))
+    assert not closed and closed.mistake == "every edge closed"
+    corners = check.draw_triangle_filled(
+        lambda p0, p1, p2: triangle(*(np.subtract(p, 0.5) for p in (p0, p1, p2)))
+    )
+    assert corners.mistake == "pixel corners for centres" and corners.picture is not None
+    opened = check.draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2, rule="open"))
+    assert opened.mistake == "every edge open"

@@ -10,6 +10,7 @@ from course.resample import (
     bilinear,
     measure_shift,
     supersample,
+    supersample_shifted,
     supersample_without_offset,
 )
 
@@ -213,3 +214,25 @@ def test_inputs_are_not_modified():
 
 
 # --- the exercise checker --------------------------------------------------------
+
+
+@pytest.mark.parametrize("rate", [1, 3, 8])
+def test_each_half_of_the_reports_mistake_shifts_the_picture_by_its_own_half(rate):
+    image = np.random.default_rng(rate).random((23, 31))
+    np.testing.assert_array_equal(
+        supersample_shifted(image, (5, 7), rate), supersample(image, (5, 7), rate)
+    )
+    size, out = 2500, 320
+
+    def corners(ramp, shape, r):
+        return supersample_shifted(ramp, shape, r, sample_offset=0.0)
+
+    def integer_centres(ramp, shape, r):
+        return supersample_shifted(ramp, shape, r, pixel_centre=0.0)
+
+    assert measure_shift(corners, size, out, rate) == pytest.approx(-1 / (2 * rate), abs=1e-9)
+    assert measure_shift(integer_centres, size, out, rate) == pytest.approx(
+        out / size / 2, abs=1e-9
+    )
+    with pytest.raises(ValueError, match="sample_offset"):
+        supersample_shifted(image, (5, 7), rate, sample_offset=float("inf"))

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 from scipy.spatial import Delaunay
 
 from course.raster import hit_counts, triangle, triangle_coverage
-from course.triangles import EDGE_RULES, TRIANGLE_METHODS
+from course.triangles import EDGE_RULES, TRIANGLE_METHODS, barycentric, interpolate
 
 
 def reference_pixels(p0, p1, p2, rule):
@@ -275,3 +275,47 @@ def test_coverage_converges_to_the_area():
 def test_bad_input_is_named(call, error, words):
     with pytest.raises(error, match=words):
         call()
+
+
+grid = st.integers(-64, 64).map(lambda n: n / 8)
+corners = st.tuples(grid, grid)
+
+
+@given(p0=corners, p1=corners, p2=corners, point=corners)
+def test_barycentric_weights_sum_to_one_and_rebuild_the_point(p0, p1, p2, point):
+    twice_area = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0])
+    assume(abs(twice_area) > 1)
+    weights = barycentric(p0, p1, p2, [point])[0]
+    assert weights.sum() == pytest.approx(1.0, abs=1e-12)
+    rebuilt = weights @ np.array([p0, p1, p2], dtype=float)
+    np.testing.assert_allclose(rebuilt, point, atol=1e-9)
+    np.testing.assert_allclose(barycentric(p0, p1, p2, [p0, p1, p2]), np.eye(3), atol=1e-12)
+
+
+@given(p0=corners, p1=corners, p2=corners)
+def test_interpolation_reproduces_an_affine_function_at_every_centre_inside(p0, p1, p2):
+    twice_area = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0])
+    assume(abs(twice_area) > 1)
+
+    def affine(x, y):
+        return np.stack([2.0 * x - 3.0 * y + 1.0, 0.5 * x + 0.25 * y], axis=-1)
+
+    vertices = np.array([p0, p1, p2], dtype=float)
+    pixels, values = interpolate(p0, p1, p2, affine(vertices[:, 0], vertices[:, 1]))
+    np.testing.assert_array_equal(pixels, triangle(p0, p1, p2))
+    centres = pixels + 0.5
+    np.testing.assert_allclose(values, affine(centres[:, 0], centres[:, 1]), atol=1e-9)
+    # Centres inside have weights in [0, 1] (to rounding): the triangle's own test.
+    weights = barycentric(p0, p1, p2, centres)
+    assert (weights > -1e-12).all() and (weights < 1 + 1e-12).all()
+
+
+def test_barycentric_and_interpolate_refuse_bad_input_by_name():
+    with pytest.raises(ValueError, match=r"p0, p1, p2 must span a triangle of non-zero area"):
+        barycentric((0, 0), (1, 1), (2, 2), [[0, 0]])
+    with pytest.raises(ValueError, match=r"values must be finite numbers, one row per vertex"):
+        interpolate((0, 0), (4, 0), (0, 4), [1.0, 2.0])
+    with pytest.raises(ValueError, match=r"points must have shape \(K, 2\)"):
+        barycentric((0, 0), (4, 0), (0, 4), [[0, 0, 0]])
+    empty_pixels, empty_values = interpolate((0, 0), (0.2, 0), (0, 0.2), np.eye(3))
+    assert empty_pixels.shape == (0, 2) and empty_values.shape == (0, 3)

@@ -3,7 +3,12 @@
 The student's functions return pixels, as :mod:`course.raster` does:
 ``draw_line(p0, p1)`` the (x, y) pixels of the line from p0 to p1, in
 order; ``draw_triangle_filled(p0, p1, p2)`` the pixels whose centres lie
-inside, each once, in any order.
+inside, each once, in any order (the lab fills them by scanline; any method
+that takes the same pixels passes). A failure shows the missing and extra
+pixels as a picture and names the handouts' mistakes: the report's
+4-connected staircase, a line drawn backwards or short of an end, and for
+triangles the closed and open edge rules and pixel corners taken for
+centres.
 """
 
 from __future__ import annotations
@@ -13,8 +18,9 @@ from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, run_cases
-from course.raster import line, triangle
+from course.check.base import CheckResult, Mistake, pixel_difference, run_cases
+from course.check.pictures import pixel_picture
+from course.raster import line, line_4connected, triangle
 
 __all__ = ["draw_line", "draw_triangle_filled"]
 
@@ -53,6 +59,15 @@ _TRIANGLE_CASES = [
 ]
 
 
+def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
+    return pixel_picture(expected, given, title="around the first difference")
+
+
+def _ordered_same(expected: Any, given: Any) -> bool:
+    expected, given = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+    return expected.shape == given.shape and bool(np.array_equal(expected, given))
+
+
 def draw_line(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(p0, p1)`` -> the Bresenham pixels from p0 to p1, in order.
 
@@ -60,8 +75,43 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
     starts at p0, ends at p1, steps to an 8-neighbour each time, and every
     pixel is within half a pixel of the ideal line along the shorter axis.
     Where two pixels are equally near, either is accepted.
+
+    Examples
+    --------
+    >>> draw_line(lambda p0, p1: line(p0, p1))
+    PASS DrawLine: all 15 cases pass
+    >>> draw_line(lambda p0, p1: line_4connected(p0, p1)).mistake
+    "the report's staircase"
     """
     cases = [{"p0": p0, "p1": p1} for p0, p1 in _LINE_CASES]
+    mistakes = [
+        Mistake(
+            "the report's staircase",
+            "every step of your line moves in x or in y, never both: the lab report's `else` "
+            "between the two tests. A line steps diagonally whenever both errors call for it, "
+            "so it has max(|dx|, |dy|) + 1 pixels, not |dx| + |dy| + 1.",
+            lambda p0, p1: line_4connected(p0, p1),
+            matches=_ordered_same,
+        ),
+        Mistake(
+            "drawn backwards",
+            "your pixels run from p1 to p0: the lab's DrawLine starts at p0.",
+            lambda p0, p1: line(p0, p1)[::-1],
+            matches=_ordered_same,
+        ),
+        Mistake(
+            "the last pixel missing",
+            "your loop stops one pixel before p1: a line includes both end pixels.",
+            lambda p0, p1: line(p0, p1)[:-1],
+            matches=_ordered_same,
+        ),
+        Mistake(
+            "the first pixel missing",
+            "your line starts one pixel after p0: paint p0 before the first step.",
+            lambda p0, p1: line(p0, p1)[1:],
+            matches=_ordered_same,
+        ),
+    ]
     return run_cases(
         "DrawLine",
         student,
@@ -71,7 +121,16 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
         _as_pixel_array,
         hint="step one pixel at a time along the longer axis; carry an error term that says "
         "when to step along the shorter one too (diagonally), never both separately.",
+        mistakes=mistakes,
+        difference=pixel_difference,
+        picture=_picture,
     )
+
+
+def _corners_inside(p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    """The pixels whose top-left corner (x, y), not centre, is inside: a half-pixel shift."""
+    shifted = [np.subtract(p, 0.5) for p in (p0, p1, p2)]
+    return triangle(*shifted)
 
 
 def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
@@ -80,9 +139,40 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
     The pixels must be exactly those of :func:`course.raster.triangle`: each
     pixel whose centre (x + 0.5, y + 0.5) is inside, centres on an edge
     decided by the top-left rule, each pixel once, in any order. A triangle
-    of zero area has no pixels.
+    of zero area has no pixels. A scanline fill takes exactly these pixels
+    when each row of centres is filled over ``[x_left, x_right)`` and the
+    rows over ``[y_top, y_bottom)``.
+
+    Examples
+    --------
+    >>> draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2))
+    PASS DrawTriangleFilled: all 11 cases pass
+    >>> draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed")).mistake
+    'every edge closed'
     """
     cases = [{"p0": p0, "p1": p1, "p2": p2} for p0, p1, p2 in _TRIANGLE_CASES]
+    mistakes = [
+        Mistake(
+            "every edge closed",
+            "you count a centre on any edge as inside: x_left <= x <= x_right, or <= on the "
+            "last row. Two triangles sharing that edge would both paint it. Take each row's "
+            "centres over [x_left, x_right) and the rows over [y_top, y_bottom).",
+            lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed"),
+        ),
+        Mistake(
+            "every edge open",
+            "you leave out every centre that lies on an edge, so two triangles sharing that "
+            "edge would both skip it: a crack. Include the left and the top ones: "
+            "[x_left, x_right), rows over [y_top, y_bottom).",
+            lambda p0, p1, p2: triangle(p0, p1, p2, rule="open"),
+        ),
+        Mistake(
+            "pixel corners for centres",
+            "you tested the pixel's corner (x, y), not its centre (x + 0.5, y + 0.5): the whole "
+            "triangle is off by half a pixel.",
+            _corners_inside,
+        ),
+    ]
     return run_cases(
         "DrawTriangleFilled",
         student,
@@ -90,9 +180,12 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
         triangle,
         _same_pixel_set,
         _as_pixel_array,
-        hint="test each pixel's centre (x + 0.5, y + 0.5) in the triangle's bounding box with "
-        "the three edge functions; a centre exactly on an edge counts only for a top or a "
-        "left edge.",
+        hint="sort the vertices by y and fill the rows of pixel centres between the top and "
+        "the bottom; on each row, the centres between the two edges' x, the left edge in and "
+        "the right edge out. Split at the middle vertex so that no edge is horizontal.",
+        mistakes=mistakes,
+        difference=pixel_difference,
+        picture=_picture,
     )
 
 

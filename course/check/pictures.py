@@ -19,7 +19,15 @@ from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 
-__all__ = ["EXPECTED", "EXTRA", "GIVEN", "MISSING", "curve_picture", "pixel_picture"]
+__all__ = [
+    "EXPECTED",
+    "EXTRA",
+    "GIVEN",
+    "MISSING",
+    "curve_picture",
+    "image_picture",
+    "pixel_picture",
+]
 
 #: Okabe and Ito's blue, for what was expected (a curve, or the pixels missing from the answer).
 EXPECTED = MISSING = "#0072B2"
@@ -118,4 +126,52 @@ def pixel_picture(
     axes.set_title(
         title or f"pixels ({left}..{left + window - 1}, {top}..{top + window - 1})", fontsize=8
     )
+    return _png(figure)
+
+
+def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
+    """Expected and given images and their difference, each pixel a square at a whole zoom.
+
+    The difference (given minus expected, the mean over colour channels) is
+    drawn red where the answer is too bright and blue where it is too dark,
+    with a colour bar in image units, so the place and the size of the error
+    show at a glance.
+    """
+    want = np.asarray(expected, dtype=float)
+    have = np.asarray(given, dtype=float)
+    if have.shape != want.shape:
+        have = np.zeros_like(want)  # the report names the shapes; draw what can be drawn
+    height, width = want.shape[:2]
+    zoom = max(1, min(24, 192 // max(height, width)))
+    side_w, side_h = width * zoom, height * zoom
+    margin, bar, gap, top = 12, 14, 16, 40
+    columns = margin + 3 * side_w + 2 * gap + 8 + bar + 36
+    rows = top + side_h + margin
+    figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
+    difference = have - want
+    if difference.ndim == 3:
+        difference = difference.mean(axis=2)
+    limit = max(float(np.abs(difference).max()), 1e-12)
+    panels = (
+        (want, "expected", {"cmap": "gray", "vmin": 0, "vmax": 1}),
+        (have, "yours", {"cmap": "gray", "vmin": 0, "vmax": 1}),
+        (difference, "yours minus expected", {"cmap": "RdBu_r", "vmin": -limit, "vmax": limit}),
+    )
+    shown = None
+    for index, (picture, name, style) in enumerate(panels):
+        left = margin + index * (side_w + gap)
+        axes = figure.add_axes((left / columns, margin / rows, side_w / columns, side_h / rows))
+        if picture.ndim == 3:
+            style = {}
+            picture = np.clip(picture, 0, 1)
+        shown = axes.imshow(picture, interpolation="nearest", **style)
+        axes.set_xticks([])
+        axes.set_yticks([])
+        axes.set_title(name, fontsize=8)
+    bar_left = margin + 3 * side_w + 2 * gap + 8
+    colour_bar = figure.add_axes((bar_left / columns, margin / rows, bar / columns, side_h / rows))
+    figure.colorbar(shown, cax=colour_bar)
+    colour_bar.tick_params(labelsize=7)
+    if title:
+        figure.suptitle(title, fontsize=9, y=1 - 6 / rows, va="top")
     return _png(figure)

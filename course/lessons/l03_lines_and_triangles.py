@@ -15,9 +15,11 @@ from course.classroom.pictures import (
     colormap_color,
     landmark_at,
     panel_picture,
+    still_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
 from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
+from course.widgets import lines_and_triangles_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.lines_and_triangles import (
     OWNER_COLORS,
@@ -128,9 +130,9 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "draw a line with Bresenham's algorithm in all eight octants",
-        "fill triangles by their edge functions, watertight by the top-left rule",
-        "tell a 4-connected staircase and a one-pixel gap from a correct rasterization",
+        "draw a line with Bresenham's algorithm in all eight directions (the lab's DrawLine)",
+        "fill a triangle row by row, taking each shared edge's pixels once (DrawTriangleFilled)",
+        "interpolate a colour across a triangle with barycentric weights",
     ),
     minutes=60,
     preview=Picture(
@@ -138,10 +140,25 @@ LESSON = Lesson(
     ),
     handout="Lab 1 report (seed 001), Task 4 (Bresenham's line in every octant), Task 5 "
     "(scanline triangle filling) and Task 7 (the Bézier curve drawn with lines)",
-    teaches="Bresenham's line in all eight octants against the report's 4-connected "
-    "staircase; a curve as connected segments; filled triangles with the top-left rule, "
-    "no cracks and no double paint",
+    teaches="Bresenham's line in all eight octants, written and checked, against the report's "
+    "4-connected staircase; the scanline fill in flat-top and flat-bottom halves, written and "
+    "checked; the top-left rule on shared edges; barycentric colour; a curve as segments",
     pictures=(
+        still_picture(
+            "03_scanline_fill",
+            "a triangle filled row by row, in a flat-bottom and a flat-top half",
+            figures.scanline_figure,
+        ),
+        still_picture(
+            "03_edge_rules",
+            "two triangles sharing a diagonal through pixel centres, with each edge rule",
+            figures.edge_rules_figure,
+        ),
+        still_picture(
+            "03_barycentric_colour",
+            "red, green and blue at the corners, mixed at every pixel centre",
+            figures.colour_figure,
+        ),
         Picture(
             "03_line_bresenham_report_wu",
             "the line from (3, 6) to (27, 17): Bresenham, the report's staircase "
@@ -174,7 +191,7 @@ LESSON = Lesson(
             control="rate",
             moves=(("ArrowLeft", "ArrowLeft"), ("Home",), ("End",)),
             landmarks=coverage_landmarks,
-            app=2,
+            app=1,
         ),
     ),
     drags=(
@@ -189,7 +206,7 @@ LESSON = Lesson(
             handle="B",
             path=((-20, 10), (-50, 40), (-70, 55)),
             landmarks=triangle_landmarks,
-            app=2,
+            app=1,
         ),
     ),
 )

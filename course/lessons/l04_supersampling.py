@@ -14,9 +14,11 @@ from course.classroom.pictures import (
     landmark_at,
     panel_picture,
     read_only,
+    still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.resample import supersample, supersample_without_offset
+from course.widgets import supersampling_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.supersampling import SupersampleApp
 
@@ -77,17 +79,33 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "shrink an image by supersampling, and say what each sample estimates",
-        "see aliasing as high frequencies folding back, on a zone plate",
-        "measure how the error falls as the sampling rate grows",
+        "explain aliasing as detail folding back at half the sampling rate",
+        "write a bilinear lookup and the lab's supersampling loop",
+        "measure the error at every rate, and the lab report's half-sample shift",
     ),
     minutes=45,
     preview=Picture("04_preview", "a zone plate shrunk by supersampling", preview),
     handout="Lab 1 report (seed 001), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
     "by supersampling",
-    teaches="supersampling as an estimate of the box filter, measured against a zone "
-    "plate's exact downsample; the report's half-sample shift found and measured",
+    teaches="aliasing as folding, in one dimension and on a zone plate; the box filter's "
+    "response; bilinear lookup and the supersampling loop, written and checked; the error at "
+    "every rate against the exact box mean; the report's half-sample shift measured",
     pictures=(
+        still_picture(
+            "04_folding",
+            "a cosine of 0.8 cycles per sample seen as 0.2: the spectrum folds at rate / 2",
+            figures.folding_figure,
+        ),
+        still_picture(
+            "04_box_response",
+            "how much of each frequency a one-pixel box keeps",
+            figures.box_response_figure,
+        ),
+        still_picture(
+            "04_report_shift",
+            "the report's half-sample shift at rate 4, against the exact box mean",
+            figures.shift_figure,
+        ),
         Picture(
             "04_zone_plate_rate1",
             "the zone plate shrunk to 320 x 320 with one sample per pixel: false rings, "

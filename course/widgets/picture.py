@@ -291,6 +291,7 @@ def pixel_figure(
     title_height: int = 34,
     legend_height: int = 26,
     reserve_left: int = 0,
+    reserve_right: int = 0,
 ) -> tuple[Figure, list[Axes]]:
     """Side-by-side pixel views at a whole zoom: each image pixel is ``zoom`` x ``zoom``.
 
@@ -300,14 +301,15 @@ def pixel_figure(
     placed in whole picture pixels and exactly ``zoom`` times its crop, so
     nearest sampling draws each pixel as a flat square with nothing
     resampled. ``legend`` adds (colour, label) patches above the panels;
-    ``reserve_left`` leaves that many picture pixels free on the left, for
-    another panel. Returns the figure and the axes, in data coordinates of
-    the image (y down), to draw marks on.
+    ``reserve_left`` and ``reserve_right`` leave that many picture pixels
+    free at either side, for another panel or a colour bar. Returns the
+    figure and the axes, in data coordinates of the image (y down), to draw
+    marks on.
     """
     widths = [window.shape[1] * zoom for window, _, _ in windows]
     heights = [window.shape[0] * zoom for window, _, _ in windows]
     top = title_height + (legend_height if legend else 0)
-    columns = reserve_left + sum(widths) + gap * (len(windows) + 1)
+    columns = reserve_left + sum(widths) + gap * (len(windows) + 1) + reserve_right
     rows = max(heights) + top + gap // 2
     figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
     axes_list = []

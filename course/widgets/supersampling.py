@@ -75,7 +75,7 @@ class SupersampleApp(SliderApp):
 
         self.result_axes = self.figure.add_axes(box(20, 40, _PANEL, _PANEL))
         self.difference_axes = self.figure.add_axes(box(370, 40, _PANEL, _PANEL))
-        self.curve_axes = self.figure.add_axes(box(770, 60, 290, 300))
+        self.curve_axes = self.figure.add_axes(box(830, 60, 235, 300))
         for axes in (self.result_axes, self.difference_axes):
             axes.set_axis_off()
         self.result = self.result_axes.imshow(
@@ -88,6 +88,10 @@ class SupersampleApp(SliderApp):
             vmax=0.5,
             interpolation="nearest",
         )
+        bar = self.figure.add_axes(box(696, 40, 10, _PANEL))
+        self.figure.colorbar(self.difference, cax=bar)
+        bar.set_ylabel("too bright (+), too dark (−)", fontsize=7, labelpad=1)
+        bar.tick_params(labelsize=7)
         rates = np.arange(1, max_rate + 1)
         self.curves = {
             version: self.curve_axes.semilogy(
@@ -150,7 +154,5 @@ class SupersampleApp(SliderApp):
         high = max(values.max() for values in curves.values())
         self.curve_axes.set_ylim(low / 1.5, high * 1.5)
         self.current.set_data([rate], [curves[version][rate - 1]])
-        self.curve_axes.set_title(
-            f"{image}: error against the {self.reference_names[image]}", fontsize=9
-        )
+        self.curve_axes.set_title(f"{image}: error at each rate", fontsize=9)
         self.heading.set_text(f"{rate} x {rate} = {rate * rate} bilinear samples per output pixel")

@@ -1,0 +1,300 @@
+"""Lesson 04's still pictures: folding in one dimension, the box filter's response, the
+zone plate shrunk, the error at every rate, the report's shift and the photograph.
+
+Each function returns a :class:`~course.widgets.picture.Still` whose caption
+states the numbers it shows; pixel views are at 1:1 or a whole zoom
+(:func:`~course.widgets.picture.pixel_figure`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from functools import cache
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from course.images import photograph, zone_plate, zone_plate_box
+from course.metrics import rmse
+from course.resample import bilinear, supersample, supersample_without_offset
+from course.sampling import alias_frequency, box_response, cosine_samples
+from course.widgets.picture import Still, pixel_axes, pixel_figure
+
+__all__ = [
+    "bilinear_figure",
+    "box_response_figure",
+    "error_by_rate_figure",
+    "folding_figure",
+    "photograph_figure",
+    "shift_figure",
+    "zone_plate_figure",
+]
+
+BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
+LAB_SIZE, LAB_OUT = 2500, 320
+
+
+def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) -> Still:
+    """A cosine sampled below its Nyquist rate, the coarser cosine its samples also fit,
+    and the spectrum folding at ``rate / 2``.
+
+    Examples
+    --------
+    >>> folding_figure()
+    0.8 cycles per sample is seen as 0.2: the two cosines' samples differ by at most 4e-15
+    """
+    alias = alias_frequency(frequency, rate)
+    fine_x = np.linspace(0, length, 2000)
+    samples_x = np.arange(length + 1) / rate
+    samples = cosine_samples(frequency, rate, len(samples_x))
+    gap = np.abs(samples - cosine_samples(alias, rate, len(samples_x))).max()
+    figure = Figure(figsize=(8.0, 4.6), dpi=100)
+    signal, spectrum = figure.add_subplot(2, 1, 1), figure.add_subplot(2, 1, 2)
+    signal.plot(
+        fine_x,
+        np.cos(2 * np.pi * frequency * fine_x),
+        color=BLUE,
+        lw=1.2,
+        label=f"cos(2π {frequency:g} x)",
+    )
+    signal.plot(
+        fine_x,
+        np.cos(2 * np.pi * alias * fine_x),
+        "--",
+        color=VERMILLION,
+        lw=1.5,
+        label=f"cos(2π {alias:g} x): the same samples",
+    )
+    signal.plot(samples_x, samples, "o", color="0.1", ms=6, label=f"{rate:g} sample per unit")
+    signal.set_xlabel("x (samples)", fontsize=8)
+    signal.legend(fontsize=7, loc="upper right", ncols=3)
+    signal.set_ylim(-1.25, 1.6)
+    nyquist = rate / 2
+    spectrum.axvspan(0, nyquist, color="0.93")
+    spectrum.axvline(nyquist, color="0.3", lw=1, ls=":")
+    spectrum.annotate(
+        "Nyquist: rate / 2", (nyquist, 1.05), xytext=(4, 0), textcoords="offset points", fontsize=8
+    )
+    spectrum.vlines(frequency, 0, 1, color=BLUE, lw=3, label="the signal")
+    spectrum.vlines(alias, 0, 1, color=VERMILLION, lw=3, label="where the samples put it")
+    spectrum.annotate(
+        "",
+        xy=(alias, 0.6),
+        xytext=(frequency, 0.6),
+        arrowprops={"arrowstyle": "->", "color": "0.3", "connectionstyle": "arc3,rad=0.4"},
+    )
+    spectrum.set_xlim(0, max(1.5 * rate, frequency + 0.2))
+    spectrum.set_ylim(0, 1.3)
+    spectrum.set_yticks([])
+    spectrum.set_xlabel("frequency (cycles per unit)", fontsize=8)
+    spectrum.legend(fontsize=7, loc="upper right")
+    figure.tight_layout()
+    caption = (
+        f"{frequency:g} cycles per sample is seen as {alias:g}: the two cosines' samples differ "
+        f"by at most {max(gap, 1e-15):.0e}"
+    )
+    return Still.of(figure, caption)
+
+
+def box_response_figure(width: float = 1.0) -> Still:
+    """How much of each frequency survives averaging over one pixel (a box of ``width``).
+
+    Examples
+    --------
+    >>> box_response_figure()
+    at the Nyquist frequency 0.5 the box keeps 0.637; zero at 1, 2 and 3 cycles per pixel
+    """
+    frequencies = np.linspace(0, 3.2, 800)
+    response = box_response(frequencies, width)
+    figure = Figure(figsize=(6.4, 3.0), dpi=100)
+    axes = figure.add_subplot()
+    axes.axhline(0, color="0.6", lw=0.8)
+    axes.plot(frequencies, response, color=BLUE, lw=1.5, label="box of one pixel: sinc(f)")
+    nyquist = 0.5 / width
+    axes.axvline(nyquist, color="0.3", lw=1, ls=":", label="Nyquist frequency of the pixel grid")
+    axes.plot([nyquist], [box_response(nyquist, width)], "o", color=VERMILLION)
+    axes.set_xlabel("frequency (cycles per pixel)", fontsize=8)
+    axes.set_ylabel("kept", fontsize=8)
+    axes.legend(fontsize=7)
+    figure.tight_layout()
+    zeros = ", ".join(f"{k / width:g}" for k in (1, 2)) + f" and {3 / width:g}"
+    caption = (
+        f"at the Nyquist frequency {nyquist:g} the box keeps {box_response(nyquist, width):.3f}; "
+        f"zero at {zeros} cycles per pixel"
+    )
+    return Still.of(figure, caption)
+
+
+def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
+    """A bilinear lookup at one point: the four nearest pixel centres and their weights.
+
+    Examples
+    --------
+    >>> bilinear_figure()
+    (1.3, 0.9) reads 0.2000: weights 0.12 (0, 0), 0.48 (1, 0), 0.08 (0, 1), 0.32 (1, 1)
+    """
+    image = np.array([[0.0, 0.25, 1.0, 0.5], [1.0, 0.0, 0.75, 0.25], [0.5, 0.5, 0.0, 1.0]])
+    height, width = image.shape
+    figure, (axes,) = pixel_figure(
+        [(np.clip(image, 0.15, 0.85), (0, width, height, 0), "pixels, and their centres")],
+        zoom=90,
+    )
+    centres = np.array([(c + 0.5, r + 0.5) for r in range(height) for c in range(width)])
+    axes.plot(*centres.T, "o", color=BLUE, ms=5)
+    left, top = int(np.floor(x - 0.5)), int(np.floor(y - 0.5))
+    fx, fy = x - 0.5 - left, y - 0.5 - top
+    weights = {
+        (left, top): (1 - fx) * (1 - fy),
+        (left + 1, top): fx * (1 - fy),
+        (left, top + 1): (1 - fx) * fy,
+        (left + 1, top + 1): fx * fy,
+    }
+    for (column, row), weight in weights.items():
+        centre = (column + 0.5, row + 0.5)
+        axes.plot([x, centre[0]], [y, centre[1]], color=VERMILLION, lw=1)
+        axes.annotate(
+            f"{weight:.2f}",
+            centre,
+            xytext=(6, -14),
+            textcoords="offset points",
+            color=VERMILLION,
+            fontsize=10,
+            weight="bold",
+        )
+    axes.plot([x], [y], "X", color=VERMILLION, ms=10)
+    value = float(bilinear(image, x, y))
+    parts = ", ".join(f"{w:.2f} ({c}, {r})" for (c, r), w in weights.items())
+    return Still.of(figure, f"({x:g}, {y:g}) reads {value:.4f}: weights {parts}")
+
+
+@cache
+def _lab_zone_plate() -> tuple[np.ndarray, np.ndarray]:
+    """The lab's 2500 x 2500 zone plate and its exact 320 x 320 box downsample."""
+    plate = zone_plate((LAB_SIZE, LAB_SIZE))
+    exact = zone_plate_box((LAB_SIZE, LAB_SIZE), (LAB_OUT, LAB_OUT))
+    plate.flags.writeable = exact.flags.writeable = False
+    return plate, exact
+
+
+def zone_plate_figure() -> Still:
+    """The zone plate's corner at 1:1, shrunk at rate 1 (false rings), and its exact box mean.
+
+    Examples
+    --------
+    >>> zone_plate_figure()
+    320 x 320 at rate 1: RMS 0.2998 against the exact box filter
+    """
+    plate, exact = _lab_zone_plate()
+    rate_one = supersample(plate, (LAB_OUT, LAB_OUT), 1)
+    windows = [
+        (plate[:LAB_OUT, :LAB_OUT], (0, LAB_OUT, LAB_OUT, 0), "the input's top-left corner, 1:1"),
+        (rate_one, (0, LAB_OUT, LAB_OUT, 0), "shrunk to 320, rate 1"),
+        (exact, (0, LAB_OUT, LAB_OUT, 0), "shrunk to 320, exact box filter"),
+    ]
+    figure, _ = pixel_figure(windows, zoom=1)
+    caption = f"320 x 320 at rate 1: RMS {rmse(rate_one, exact):.4f} against the exact box filter"
+    return Still.of(figure, caption)
+
+
+def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13))) -> Still:
+    """RMS error against the exact box filter at each rate, centred samples and the report's.
+
+    Examples
+    --------
+    >>> error_by_rate_figure((1, 2, 3))
+    RMS at rates 1, 2, 3: centred 0.2998, 0.1015, 0.0155; the report's 0.3300, 0.1471, 0.0503
+    """
+    plate, exact = _lab_zone_plate()
+    errors = {
+        "centred": [rmse(supersample(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates],
+        "the report's": [
+            rmse(supersample_without_offset(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates
+        ],
+    }
+    figure = Figure(figsize=(5.6, 3.4), dpi=100)
+    axes = figure.add_subplot()
+    for (name, values), (style, colour) in zip(
+        errors.items(), (("o-", BLUE), ("s--", VERMILLION)), strict=True
+    ):
+        axes.semilogy(rates, values, style, color=colour, ms=4, label=name)
+    axes.set_xticks(list(rates))
+    axes.set_xlabel("rate (samples per output pixel along each axis)", fontsize=8)
+    axes.set_ylabel("RMS error", fontsize=8)
+    axes.grid(True, which="both", color="0.92")
+    axes.legend(fontsize=8)
+    figure.tight_layout()
+    shown = list(rates)[:3]
+    caption = (
+        f"RMS at rates {', '.join(map(str, shown))}: centred "
+        + ", ".join(f"{v:.4f}" for v in errors["centred"][:3])
+        + "; the report's "
+        + ", ".join(f"{v:.4f}" for v in errors["the report's"][:3])
+    )
+    return Still.of(figure, caption)
+
+
+def shift_figure(rate: int = 4, corner: int = 40, zoom: int = 6) -> Still:
+    """Near the rings' centre at ``rate``: the exact mean, and each version minus it.
+
+    Examples
+    --------
+    >>> shift_figure()
+    rate 4, top-left 40 x 40: RMS centred 0.0008, the report's 0.0326
+    """
+    plate, exact = _lab_zone_plate()
+    window = (slice(0, corner), slice(0, corner))
+    centred = supersample(plate, (LAB_OUT, LAB_OUT), rate)[window]
+    shifted = supersample_without_offset(plate, (LAB_OUT, LAB_OUT), rate)[window]
+    truth = exact[window]
+    limit = 0.1
+    extent = (0, corner, corner, 0)
+    figure, axes_list = pixel_figure(
+        [
+            (truth, extent, "exact box mean"),
+            (np.zeros_like(truth), extent, "centred minus exact"),
+            (np.zeros_like(truth), extent, "the report's minus exact"),
+        ],
+        zoom=zoom,
+        reserve_right=70,
+    )
+    shown = None
+    for axes, difference in zip(axes_list[1:], (centred - truth, shifted - truth), strict=True):
+        axes.images[0].remove()
+        shown = axes.imshow(
+            difference,
+            cmap="RdBu_r",
+            vmin=-limit,
+            vmax=limit,
+            interpolation="nearest",
+            extent=extent,
+        )
+    last = axes_list[-1].get_window_extent()
+    bar = pixel_axes(figure, round(last.x1) + 8, round(last.y0), 12, round(last.height))
+    figure.colorbar(shown, cax=bar)
+    bar.set_ylabel("too bright (+) / too dark (−)", fontsize=7)
+    bar.tick_params(labelsize=7)
+    caption = (
+        f"rate {rate}, top-left {corner} x {corner}: RMS centred {rmse(centred, truth):.4f}, "
+        f"the report's {rmse(shifted, truth):.4f}"
+    )
+    return Still.of(figure, caption)
+
+
+def photograph_figure(rates: Sequence[int] = (1, 2, 3, 12), reference_rate: int = 32) -> Still:
+    """A 500 x 500 crop of the photograph shrunk to 64 x 64 at several rates, 3 x zoomed.
+
+    Examples
+    --------
+    >>> photograph_figure((1, 3))
+    RMS against rate 32: rate 1 0.0674, rate 3 0.0084
+    """
+    photo = photograph()[50:550, 6:506]
+    reference = supersample(photo, (64, 64), reference_rate)
+    windows, parts = [], []
+    for rate in rates:
+        image = supersample(photo, (64, 64), rate)
+        error = rmse(image, reference)
+        windows.append((image, (0, 64, 64, 0), f"rate {rate}: RMS {error:.4f}"))
+        parts.append(f"rate {rate} {error:.4f}")
+    figure, _ = pixel_figure(windows, zoom=3)
+    return Still.of(figure, f"RMS against rate {reference_rate}: " + ", ".join(parts))

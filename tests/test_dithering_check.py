@@ -30,3 +30,57 @@ def test_checker_passes_a_correct_loop_and_fails_the_wraparound_slip_naming_the_
     assert not result and "case 4 is wrong" in result.message and "inputs: gray=" in result.message
     result = check.dithering_error_diffuse(lambda gray: (gray >= 0.5).astype(float))
     assert not result and "case 1 is wrong" in result.message
+
+
+M = [[6, 8, 4], [1, 0, 3], [5, 2, 7]]
+
+
+def nine_ifs(gray, transposed=False, at_least=False):
+    """The lab's ordered dithering as a student writes it, with the slips it invites."""
+    height, width = gray.shape
+    output = np.zeros((3 * height, 3 * width))
+    for y in range(height):
+        for x in range(width):
+            for i in range(3):
+                for j in range(3):
+                    level = (M[j][i] if transposed else M[i][j]) / 9
+                    lit = gray[y, x] >= level if at_least else gray[y, x] > level
+                    output[3 * y + i, 3 * x + j] = 1.0 if lit else 0.0
+    return output
+
+
+def test_ordered_dithering_passes_and_its_slips_are_named():
+    assert str(check.dithering_ordered(nine_ifs)) == "PASS DitheringOrdered: all 3 cases pass"
+    transposed = check.dithering_ordered(lambda gray: nine_ifs(gray, transposed=True))
+    assert transposed.mistake == "the matrix transposed" and transposed.picture is not None
+    assert check.dithering_ordered(lambda gray: nine_ifs(gray, at_least=True)).mistake == ">= for >"
+
+
+def floyd_steinberg(gray, guard_left=True, serpentine=False, read_errors=True):
+    height, width = gray.shape
+    buffer, output = gray.copy(), np.zeros_like(gray)
+    for y in range(height):
+        columns = range(width - 1, -1, -1) if serpentine and y % 2 else range(width)
+        step = -1 if serpentine and y % 2 else 1
+        for x in columns:
+            value = buffer[y, x] if read_errors else gray[y, x]
+            output[y, x] = 1.0 if value > 0.5 else 0.0
+            error = value - output[y, x]
+            for dx, dy, weight in ((step, 0, 7), (-step, 1, 3), (0, 1, 5), (step, 1, 1)):
+                inside = 0 <= x + dx < width if guard_left else x + dx < width
+                if inside and y + dy < height:
+                    buffer[y + dy, x + dx] += error * weight / 16
+    return output
+
+
+def test_error_diffusion_names_its_slips_and_what_reached_the_first_wrong_pixel():
+    assert check.dithering_error_diffuse(floyd_steinberg)
+    wrapped = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, guard_left=False))
+    assert wrapped.mistake == "the left edge wraps around"
+    assert "first wrong pixel (x=" in str(wrapped) and "plus the error carried into it" in str(
+        wrapped
+    )
+    serpentine = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, serpentine=True))
+    assert serpentine.mistake == "a serpentine scan"
+    unread = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, read_errors=False))
+    assert unread.mistake == "the errors are never read" and unread.picture is not None

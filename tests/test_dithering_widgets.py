@@ -62,7 +62,7 @@ def test_gray_level_app_shows_each_method_on_the_flat_patch(lit):
     assert np.array_equal(app.panels["Bayer 8x8"].get_array(), dither.bayer(patch, 8))
     cells = np.asarray(app.panels["ordered 3x3"].get_array()).reshape(12, 3, 12, 3)
     assert np.all(cells.sum(axis=(1, 3)) == lit)
-    assert app.highlight.get_x() == pytest.approx(4 * lit - 0.6)
+    assert app.highlight.get_x() == pytest.approx(4 * lit - 0.1)
     assert f"lit {lit / 9 if lit else 0:.3f}" in app.titles["ordered 3x3"].get_text()
 
 

@@ -60,8 +60,8 @@ def test_writes_every_registered_picture_of_the_lessons_present(tmp_path):
     app = spec.build()
     app.refresh()
     assert_landmarks(out / "08_drag_the_plane.png", spec.landmarks(app))
-    # A still figure is the width its notebook asks for (900 px), cropped to its content.
-    assert abs(Image.open(out / "06_dithering_table.png").size[0] - 900) < 45
+    # A still is its figure's own size: six columns of 144-pixel windows and their gaps.
+    assert Image.open(out / "06_dithering_table.png").size[0] == 14 + 6 * (144 + 14)
 
 
 def assert_landmarks(path, landmarks):

@@ -191,7 +191,7 @@ def test_after_a_registered_drag_the_landmarks_hold_and_the_picture_before_fails
 
 def test_gray_level_landmarks_frame_the_pattern_dither_ordered_picks():
     (spec,) = LESSONS["06"].sliders
-    assert spec.app == 1  # the notebook's second app: the flat patch
+    assert spec.app == 0  # the notebook's first app: the flat patch
     app = spec.build()
     for level, k in ((0.0, 0), (0.3, 3), (1 / 9 + 1 / 72, 2), (1.0, 9)):
         app.controls["level"].value = level

@@ -238,6 +238,7 @@ def run_cases(
     difference: Callable[[Any, Any], str] = first_difference,
     picture: Callable[[Case, Any, Any], bytes | None] | None = None,
     watch: Callable[[], AbstractContextManager[Any]] | None = None,
+    explain: Callable[[Case, Any, Any], str] | None = None,
 ) -> CheckResult:
     """Call ``student(**case)`` and ``reference(**case)`` for every case.
 
@@ -249,6 +250,9 @@ def run_cases(
     answer the student's matches (by ``compare``), ``picture(case, expected,
     given)`` and ``hint``. ``watch()``, if given, makes a context manager
     the student's code runs under, each case anew (:func:`call_budget`).
+    ``explain(case, expected, given)``, if given, adds a line about the
+    first difference that needs the case's inputs (what was carried into
+    the first wrong pixel, say).
     """
     if not callable(student):
         raise TypeError(f"{exercise}: expected a function to check; got {type(student).__name__}")
@@ -295,6 +299,8 @@ def run_cases(
         where = difference(expected, given)
         if where:
             lines.append(f"  {where}")
+        if explain is not None:
+            lines.append(f"  {explain(case, expected, given)}")
         known = _recognise(mistakes, case, given, compare)
         if known is not None:
             lines.append(f"This is a known mistake, {known.name}: {known.explanation}")

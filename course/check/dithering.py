@@ -1,4 +1,12 @@
-"""Lesson 06 exercise: the lab's ``DitheringErrorDiffuse``."""
+"""Lesson 06 exercises: the lab's ``DitheringOrdered`` and ``DitheringErrorDiffuse``.
+
+A failure shows the expected and given outputs and their difference, names
+the first wrong pixel (for error diffusion, with the value and the error
+carried into it), and recognises the slips the lab's reports make or invite:
+the matrix read transposed, ``>=`` for ``>``, one comparison per pixel
+without the 3 x 3 enlargement; a left edge that wraps around, a serpentine
+scan, errors that are never read.
+"""
 
 from __future__ import annotations
 
@@ -7,14 +15,112 @@ from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, close, run_cases
-from course.error_diffusion import error_diffusion
+from course.check.base import CheckResult, Mistake, close, run_cases
+from course.check.pictures import image_picture
+from course.dither import ORDERED_MATRIX, ordered, threshold
+from course.error_diffusion import (
+    error_diffusion,
+    error_diffusion_values,
+    error_diffusion_wraparound,
+)
 from course.images import ramp
 
-__all__ = ["dithering_error_diffuse"]
+__all__ = ["dithering_error_diffuse", "dithering_ordered"]
 
 
-def _cases() -> list[dict[str, Any]]:
+def _as_output(value: Any) -> np.ndarray:
+    return np.asarray(value, dtype=float)
+
+
+def _first_wrong(expected: Any, given: Any) -> tuple[int, int] | None:
+    """The first pixel, in the lab's raster order, where the outputs differ: (x, y)."""
+    want, have = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+    if want.shape != have.shape:
+        return None
+    wrong = np.argwhere(want != have)
+    return None if len(wrong) == 0 else (int(wrong[0][1]), int(wrong[0][0]))
+
+
+def _ordered_cases() -> list[dict[str, Any]]:
+    rng = np.random.default_rng(9)
+    levels = np.arange(10).reshape(2, 5) / 9  # exactly on M / 9: > and >= differ
+    return [
+        {"gray": levels},
+        {"gray": np.array([[0.3, 0.75, 0.05], [0.55, 0.95, 0.45]])},
+        {"gray": rng.random((4, 7))},
+    ]
+
+
+def _ordered_with(matrix: np.ndarray, compare: Callable[..., Any]) -> Callable[..., np.ndarray]:
+    def halftone(gray: Any) -> np.ndarray:
+        values = np.asarray(gray, dtype=float)
+        cells = np.kron(values, np.ones((3, 3)))
+        levels = np.tile(matrix / 9, values.shape)
+        return compare(cells, levels).astype(float)
+
+    return halftone
+
+
+def _one_per_pixel(gray: Any) -> np.ndarray:
+    values = np.asarray(gray, dtype=float)
+    height, width = values.shape
+    levels = np.tile(ORDERED_MATRIX / 9, (-(-height // 3), -(-width // 3)))[:height, :width]
+    return (values > levels).astype(float)
+
+
+def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
+    return image_picture(expected, given, title="first case that differs")
+
+
+def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
+    """Check ``student(gray)``: each pixel a 3 x 3 cell, sub-pixel (i, j) lit where v > M[i, j] / 9.
+
+    ``M = [[6, 8, 4], [1, 0, 3], [5, 2, 7]]`` as on the slide: row i of the
+    cell is row i of M. The output is 3 times larger in each direction.
+
+    Examples
+    --------
+    >>> dithering_ordered(ordered)
+    PASS DitheringOrdered: all 3 cases pass
+    >>> dithering_ordered(_ordered_with(ORDERED_MATRIX.T, np.greater)).mistake
+    'the matrix transposed'
+    """
+    mistakes = [
+        Mistake(
+            "the matrix transposed",
+            "your cells are the slide's patterns mirrored on the diagonal: you indexed "
+            "output[3 x + i, 3 y + j] (or read M[j][i]). Row i of a cell is row i of M: "
+            "output[3 y + i, 3 x + j] compares with M[i][j].",
+            _ordered_with(ORDERED_MATRIX.T, np.greater),
+        ),
+        Mistake(
+            ">= for >",
+            "you lit a sub-pixel where the value equals M[i][j] / 9: the lab's rule is "
+            "strictly greater, so a level of exactly k / 9 lights k sub-pixels, not k + 1.",
+            _ordered_with(ORDERED_MATRIX, np.greater_equal),
+        ),
+        Mistake(
+            "one comparison per pixel",
+            "your output is the size of the input: you compared each pixel with one entry of "
+            "M. Ordered dithering here makes every pixel a 3 x 3 cell of nine comparisons.",
+            _one_per_pixel,
+        ),
+    ]
+    return run_cases(
+        "DitheringOrdered",
+        student,
+        _ordered_cases(),
+        reference=ordered,
+        compare=close(atol=0, rtol=0),
+        convert=_as_output,
+        hint="make an output three times larger; for each input pixel (x, y) and each i, j in "
+        "0, 1, 2, set output[3 y + i, 3 x + j] to 1 where the value is > M[i][j] / 9.",
+        mistakes=mistakes,
+        picture=_picture,
+    )
+
+
+def _diffusion_cases() -> list[dict[str, Any]]:
     rng = np.random.default_rng(6)
     return [
         {"gray": np.full((4, 6), 0.5)},
@@ -26,6 +132,21 @@ def _cases() -> list[dict[str, Any]]:
     ]
 
 
+def _carried(case: dict[str, Any], expected: Any, given: Any) -> str:
+    """What the first wrong pixel held when the right loop thresholded it."""
+    where = _first_wrong(expected, given)
+    if where is None:
+        return "the output must have the input's shape, one value per pixel"
+    x, y = where
+    gray = np.asarray(case["gray"], dtype=float)
+    value = float(error_diffusion_values(gray, method="loop")[y, x])
+    verdict = "lit, since it is > 0.5" if value > 0.5 else "dark, since it is not > 0.5"
+    return (
+        f"first wrong pixel (x={x}, y={y}): its value {gray[y, x]:.4f} plus the error carried "
+        f"into it, {value - gray[y, x]:+.4f}, is {value:.4f}: {verdict}"
+    )
+
+
 def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(gray)`` against Floyd-Steinberg as the lab specifies it.
 
@@ -34,24 +155,48 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
     row, left to right), each 1 where its value plus the errors received is
     > 0.5, the error pushed 7/16 right, 3/16 below left, 5/16 below, 1/16
     below right, pushes off the image dropped. Compared exactly with
-    ``course.dither.error_diffusion(gray, method="loop")``.
+    ``course.dither.error_diffusion(gray, method="loop")``; a failure names
+    the first wrong pixel and the error that should have reached it.
 
     Examples
     --------
-    >>> from course.dither import error_diffusion
     >>> dithering_error_diffuse(lambda gray: error_diffusion(gray, method="loop"))
     PASS DitheringErrorDiffuse: all 6 cases pass
-    >>> dithering_error_diffuse(lambda gray: (gray > 0.5).astype(float)).passed
-    False
+    >>> dithering_error_diffuse(error_diffusion_wraparound).mistake
+    'the left edge wraps around'
     """
+    mistakes = [
+        Mistake(
+            "the left edge wraps around",
+            "at x = 0 your push to (x - 1, y + 1) went to buffer[y + 1, -1], the last pixel of "
+            "the next row: Python reads a negative index from the end. Check x - 1 >= 0, as the "
+            "lab report's unsigned x could not.",
+            error_diffusion_wraparound,
+        ),
+        Mistake(
+            "a serpentine scan",
+            "you ran every other row right to left: a fine variant, but the lab's loop runs "
+            "every row left to right, and the checker compares with it exactly.",
+            lambda gray: error_diffusion(gray, serpentine=True, method="loop"),
+        ),
+        Mistake(
+            "the errors are never read",
+            "you thresholded the input itself: the errors must go into a copy of the image "
+            "(the report's inputcopy), and each pixel is thresholded with what it received.",
+            threshold,
+        ),
+    ]
     return run_cases(
         "DitheringErrorDiffuse",
         student,
-        _cases(),
+        _diffusion_cases(),
         reference=lambda gray: error_diffusion(gray, method="loop"),
         compare=close(atol=0, rtol=0),
-        convert=lambda value: np.asarray(value, dtype=float),
+        convert=_as_output,
         hint="visit the pixels row by row, left to right; threshold each at 0.5, and pass its "
         "error (value - output) on to the four neighbours not yet visited, 7/16 to the right, "
         "3/16, 5/16, 1/16 below.",
+        mistakes=mistakes,
+        picture=_picture,
+        explain=_carried,
     )

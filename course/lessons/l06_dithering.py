@@ -9,15 +9,15 @@ import numpy as np
 from course import dither, images
 from course.classroom.pictures import (
     app_picture,
-    figure_picture,
     gray_color,
     landmark_at,
     png_of_gray,
     read_only,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.widgets import dithering_figures as figures
 from course.widgets.base import SliderApp
-from course.widgets.dithering import GrayLevelApp, VoidAndClusterApp, side_by_side
+from course.widgets.dithering import GrayLevelApp, VoidAndClusterApp
 
 
 @functools.cache
@@ -60,29 +60,27 @@ def gray_level_landmarks(app: SliderApp) -> list[Landmark]:
         inner[scale:-scale, scale:-scale] = True
         for row, column in zip(*np.nonzero(inner), strict=True):
             value = float(output[row, column])
-            centre = ((column + 0.5) / scale - 0.5, (row + 0.5) / scale - 0.5)
+            centre = (column + 0.5, row + 0.5)  # the panel counts in its own pixels
             what = f"{name} of a flat {level:.3f} patch: pixel ({column}, {row}) = {value:g}"
             landmarks.append(landmark_at(app, axes, centre, gray_color(value), what, 24))
     lit = int(dither.ordered([[level]]).sum())
     # The frame's left side, or its right side for pattern 0 (at the strip's edge).
-    side = 4 * lit - 0.6 if lit > 0 else 2.6
+    side = 4 * lit - 0.1 if lit > 0 else 3.1
     what = f"red frame around pattern k = {lit} (dither.ordered lights {lit} of 9 at {level:.3f})"
-    landmarks.append(landmark_at(app, app.highlight.axes, (side, 1.0), (255, 0, 0), what))
+    landmarks.append(landmark_at(app, app.highlight.axes, (side, 1.5), (255, 0, 0), what))
     return landmarks
 
 
 def dithering_table() -> bytes:
     gray = half_size_gray_photograph()
     table = {"original": gray, **dither.all_methods(gray)}
-    return figure_picture(
-        side_by_side(table, centre=(150, 80), size=32, figure_width=900, columns=6)
-    )
+    return figures.methods_figure(table, centre=(150, 80)).data
 
 
 def dithering_ramp() -> bytes:
     gradient = images.ramp((32, 256))
     table = {"ramp": gradient, **dither.all_methods(gradient)}
-    return figure_picture(side_by_side(table, centre=(64, 16), size=24, columns=6))
+    return figures.methods_figure(table, centre=(64, 16), size=24, shrink=1, columns=4).data
 
 
 def void_and_cluster_picture() -> bytes:
@@ -98,9 +96,9 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "turn gray levels into black and white dots five ways",
-        "write Floyd-Steinberg error diffusion and explain its order of visits",
-        "tell the methods apart by their noise's look and its spectrum",
+        "turn gray levels into black and white dots five ways (the lab's Task 1)",
+        "write ordered dithering with the lab's 3 x 3 matrix and Floyd-Steinberg error diffusion",
+        "tell the methods apart by the tone they keep and how visible their dots are",
     ),
     minutes=45,
     preview=Picture(
@@ -108,9 +106,9 @@ LESSON = Lesson(
     ),
     handout="Lab 1 report (seed 001), Task 1: threshold, uniform random, blue noise, "
     "ordered 3 x 3 and Floyd-Steinberg error diffusion",
-    teaches="gray levels from black and white dots: the lab's five methods and the "
-    "classics beside them, error diffusion bit for bit fast, blue noise by "
-    "void-and-cluster, the ordered matrix's bias and the x - 1 slip measured",
+    teaches="gray levels from black and white dots: the lab's five methods side by side, "
+    "ordered dithering and Floyd-Steinberg written and checked, blue noise by "
+    "void-and-cluster, tone and visible error measured, the ordered bias and the x - 1 slip",
     pictures=(
         Picture(
             "06_dithering_table",
@@ -142,7 +140,6 @@ LESSON = Lesson(
             control="level",
             moves=(("ArrowLeft",), ("ArrowRight",) * 5, ("End",)),
             landmarks=gray_level_landmarks,
-            app=1,
         ),
     ),
 )

@@ -27,7 +27,7 @@ from course.blue_noise import blue_noise_mask, cluster_energy, radial_power_spec
 from course.blue_noise import void_and_cluster as rank_pixels
 from course.canvas import crop
 from course.widgets.base import Handle, SliderApp, format_points
-from course.widgets.picture import GRAY_PIXELS, bare_axes
+from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
 __all__ = ["DitherComparisonApp", "GrayLevelApp", "VoidAndClusterApp", "side_by_side"]
 
@@ -91,21 +91,30 @@ def side_by_side(
 class DitherComparisonApp(SliderApp):
     """Every dithering method on one gray image; drag the window to zoom elsewhere.
 
-    The red window on the original is the part every other panel shows,
-    zoomed; drag it, or type its centre pixel in ``window`` (``x, y``).
+    The red window on the original (shown 1:1) is the part every other panel
+    shows, each pixel a ``zoom`` x ``zoom`` square (ordered dithering's
+    three times larger output at a third of the zoom), so the dots are drawn
+    as they are, with nothing resampled. Drag the window, or type its centre
+    pixel in ``window`` (``x, y``).
 
     Parameters
     ----------
     gray : array_like, (H, W), values in [0, 1]
     size : int
         Side of the zoomed window, in input pixels.
+    zoom : int
+        Screen pixels per input pixel in the zoomed panels; a multiple of 3.
     """
 
     BLIT = True
+    COLUMNS = 4
 
-    def __init__(self, gray: Any, size: int = 40) -> None:
+    def __init__(self, gray: Any, size: int = 24, zoom: int = 6) -> None:
         self.gray = as_gray(gray, "gray")
         self.size = as_int(size, "size", minimum=4)
+        self.zoom = as_int(zoom, "zoom", minimum=3)
+        if self.zoom % 3:
+            raise ValueError(f"zoom must be a multiple of 3 (ordered dithering is 3x); got {zoom}")
         height, width = self.gray.shape
         self.results = {"original": self.gray, **dither.all_methods(self.gray)}
         self.at = np.array([width // 2, height // 2])
@@ -114,20 +123,28 @@ class DitherComparisonApp(SliderApp):
                 value=format_points([self.at]), description="x, y", continuous_update=False
             )
         }
-        super().__init__(controls, shape=(560, 1000))
-        grid = self.figure.add_gridspec(3, 4, left=0.01, right=0.99, top=0.95, bottom=0.01)
-        overview = bare_axes(self.figure.add_subplot(grid[0, 0]))
-        overview.imshow(self.gray, **{**GRAY_PIXELS, "interpolation": "antialiased"})
-        overview.set_title("original (drag the red window)", fontsize=9)
+        side, gap, title = self.size * self.zoom, 12, 24
+        rows = -(-len(self.results) // self.COLUMNS)
+        figure_height = max(height + title + 10, rows * (side + title) + 10)
+        figure_width = 12 + width + 24 + self.COLUMNS * (side + gap)
+        super().__init__(controls, shape=(figure_height, figure_width))
+        overview = pixel_axes(self.figure, 12, figure_height - title - height, width, height)
+        bare_axes(overview).imshow(self.gray, extent=(0, width, height, 0), **GRAY_PIXELS)
+        overview.set_title("original, 1:1 (drag the red window)", fontsize=9)
         self.window = Rectangle((0, 0), 1, 1, fill=False, color="red", lw=1.5)
         overview.add_patch(self.window)
         self.overview = overview
         self.crops = {}
-        for index, name in enumerate(self.results, start=1):
-            axes = bare_axes(self.figure.add_subplot(grid[divmod(index, 4)]))
+        for index, (name, result) in enumerate(self.results.items()):
+            row, column = divmod(index, self.COLUMNS)
+            left = 12 + width + 24 + column * (side + gap)
+            bottom = figure_height - (row + 1) * (side + title)
+            axes = bare_axes(pixel_axes(self.figure, left, bottom, side, side))
             axes.set_title(name, fontsize=9)
-            self.crops[name] = axes.imshow(np.zeros((self.size, self.size)), **GRAY_PIXELS)
-        self.animate(self.window, *self.crops.values())
+            scale = result.shape[0] // height
+            shape = (self.size * scale, self.size * scale)
+            self.crops[name] = PixelPanel(self, axes, shape, self.zoom // scale)
+        self.animate(self.window)
         self.highlight_ring(overview)
 
     def centre(self) -> tuple[float, float]:
@@ -142,7 +159,7 @@ class DitherComparisonApp(SliderApp):
         for name, result in self.results.items():
             scale = result.shape[0] // self.gray.shape[0]
             window, _ = _zoom_window(result, scale, centre, self.size)
-            self.crops[name].set_data(window)
+            self.crops[name].set_data(_padded(window, self.size * scale))
         _, (left, right, bottom, top) = crop(self.gray, centre, self.size)
         self.window.set_bounds(left, top, right - left, bottom - top)
 
@@ -158,8 +175,20 @@ class DitherComparisonApp(SliderApp):
         self.controls["window"].value = format_points([at])
 
 
+def _padded(window: np.ndarray, side: int) -> np.ndarray:
+    """A crop made square by gray: near the image's edge a window has fewer pixels."""
+    if window.shape == (side, side):
+        return window
+    square = np.full((side, side), 0.5)
+    square[: window.shape[0], : window.shape[1]] = window
+    return square
+
+
 class GrayLevelApp(SliderApp):
     """A flat patch at one gray level: the lab's ten ordered patterns and each method.
+
+    Every panel draws each pixel as a whole square (the patch at ``zoom``,
+    ordered dithering's three times larger output at a third of it).
 
     Parameters
     ----------
@@ -170,7 +199,9 @@ class GrayLevelApp(SliderApp):
         Side of the flat patch in pixels (ordered dithering shows 3 times more).
     """
 
+    BLIT = True
     STEP = 1 / 72
+    ZOOM = 6
     # The methods side by side under the strip, in the order of :meth:`outputs`.
     PANELS = (
         "threshold",
@@ -194,23 +225,30 @@ class GrayLevelApp(SliderApp):
                 readout_format=".3f",
             )
         }
-        super().__init__(controls, shape=(420, 1000))
-        strip = bare_axes(self.figure.add_axes((0.02, 0.66, 0.96, 0.26)))
-        strip.imshow(self.ordered_patterns(), **GRAY_PIXELS)
+        side, gap = self.size * self.ZOOM, 14
+        strip_zoom = 20
+        width = 16 + len(self.PANELS) * (side + gap)
+        height = 10 + side + 60 + 3 * strip_zoom + 40
+        super().__init__(controls, shape=(height, width))
+        strip = bare_axes(pixel_axes(self.figure, 16, side + 80, 39 * strip_zoom, 3 * strip_zoom))
+        strip.imshow(self.ordered_patterns(), extent=(0, 39, 3, 0), **GRAY_PIXELS)
         strip.set_title(
             "the ten patterns of M = [[6, 8, 4], [1, 0, 3], [5, 2, 7]]: k sub-pixels "
             "lit for levels in ((k - 1)/9, k/9]",
             fontsize=9,
         )
         for k in range(10):
-            strip.text(4 * k + 1, 3.6, f"k={k}", ha="center", va="top", fontsize=8)
-        self.highlight = Rectangle((-0.6, -0.6), 3.2, 3.2, fill=False, color="red", lw=2)
+            strip.text(4 * k + 1.5, 3.15, f"k={k}", ha="center", va="top", fontsize=8)
+        self.highlight = Rectangle((-0.1, -0.1), 3.2, 3.2, fill=False, color="red", lw=2)
         strip.add_patch(self.highlight)
         self.panels, self.titles = {}, {}
         for index, name in enumerate(self.PANELS):
-            axes = bare_axes(self.figure.add_axes((0.02 + index * 0.163, 0.03, 0.145, 0.5)))
-            self.panels[name] = axes.imshow(np.zeros((self.size, self.size)), **GRAY_PIXELS)
+            axes = bare_axes(pixel_axes(self.figure, 16 + index * (side + gap), 10, side, side))
+            scale = 3 if name == "ordered 3x3" else 1
+            shape = (self.size * scale, self.size * scale)
+            self.panels[name] = PixelPanel(self, axes, shape, self.ZOOM // scale)
             self.titles[name] = axes.set_title(name, fontsize=9)
+        self.animate(self.highlight, *self.titles.values())
         self.update()
 
     @staticmethod
@@ -237,10 +275,9 @@ class GrayLevelApp(SliderApp):
         level = float(self.value("level"))
         for name, result in self.outputs(level).items():
             self.panels[name].set_data(result)
-            self.panels[name].set_extent((-0.5, self.size - 0.5, self.size - 0.5, -0.5))
             self.titles[name].set_text(f"{name}\nlit {result.mean():.3f} (level {level:.3f})")
         lit = int(dither.ordered([[level]]).sum())
-        self.highlight.set_x(4 * lit - 0.6)
+        self.highlight.set_x(4 * lit - 0.1)
 
 
 class VoidAndClusterApp(SliderApp):
@@ -269,8 +306,8 @@ class VoidAndClusterApp(SliderApp):
             "dots": widgets.IntSlider(value=dots, min=1, max=self.size**2 - 1, description="dots")
         }
         super().__init__(controls, shape=(460, 1000))
-        left = self.figure.add_axes((0.02, 0.05, 0.42, 0.82))
-        bare_axes(left)
+        zoom = 380 // self.size  # each pixel of the mask a whole square
+        left = bare_axes(pixel_axes(self.figure, 20, 20, zoom * self.size, zoom * self.size))
         self.energy = left.imshow(
             np.zeros((self.size, self.size)), cmap="viridis", interpolation="nearest"
         )
@@ -284,7 +321,9 @@ class VoidAndClusterApp(SliderApp):
         right.set_xlim(0, 0.72)
         right.set_ylim(0, 3)
         right.set_xlabel("frequency (cycles per pixel)")
-        right.set_ylabel("power / (p (1 - p))")
+        # A pattern with a share p of dots has variance p (1 - p): dividing by it puts white
+        # noise at 1 on average, whatever the number of dots.
+        right.set_ylabel("power (white noise = 1)")
         right.legend(loc="upper left", fontsize=9)
         self.ratio = right.set_title("", fontsize=9)
         self.update()
@@ -305,10 +344,10 @@ class VoidAndClusterApp(SliderApp):
         y, x = np.unravel_index(int(np.flatnonzero(self.ranks.ravel() == count)[0]), pattern.shape)
         self.next_dot.set_data([x], [y])
         if count < self.initial:
-            phase = "phase 1: the initial pattern thinned, tightest cluster first"
+            phase = "phase 1: thinning, tightest cluster first"
         else:
-            phase = "phase 2: each new dot goes to the largest void (lowest energy)"
-        self.heading.set_text(f"{count} dots, next circled\n{phase}")
+            phase = "phase 2: into the largest void (lowest energy)"
+        self.heading.set_text(f"{count} dots, the next circled\n{phase}")
         white = np.zeros(self.size**2, dtype=bool)
         white[self.white_order[:count]] = True
         share = count / self.size**2

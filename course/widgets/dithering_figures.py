@@ -1,0 +1,251 @@
+"""Lesson 06's still pictures: every method side by side, the blue-noise mask and its
+spectrum, the wavefront order, and the left-edge slip.
+
+Each function returns a :class:`~course.widgets.picture.Still` whose caption
+states the numbers it shows. Dots are drawn as whole squares: zoomed crops at
+a whole zoom, and overviews at 1:1 after a block mean (what an eye at a
+distance sees), never resampled by the display.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Rectangle
+
+from course import dither
+from course._validate import as_gray, as_int
+from course.blue_noise import blue_noise_mask, low_frequency_fraction, radial_power_spectrum
+from course.canvas import crop
+from course.widgets.picture import GRAY_PIXELS, Still, bare_axes, pixel_axes, pixel_figure
+
+__all__ = [
+    "block_mean",
+    "diffusion_figure",
+    "mask_figure",
+    "methods_figure",
+    "wavefront_figure",
+    "wraparound_figure",
+]
+
+BLUE, VERMILLION = "#0072B2", "#D55E00"
+
+
+def block_mean(image: np.ndarray, factor: int) -> np.ndarray:
+    """The image shrunk by a whole ``factor``: each output pixel the mean of a factor^2 block.
+
+    Examples
+    --------
+    >>> block_mean(np.array([[0.0, 1.0, 1.0, 1.0], [0.0, 1.0, 0.0, 0.0]]), 2)
+    array([[0.5, 0.5]])
+    """
+    height, width = (np.array(image.shape[:2]) // factor) * factor
+    trimmed = image[:height, :width]
+    return trimmed.reshape(height // factor, factor, width // factor, factor).mean(axis=(1, 3))
+
+
+def methods_figure(
+    images: Mapping[str, np.ndarray],
+    centre: tuple[float, float],
+    size: int = 24,
+    zoom: int = 6,
+    shrink: int = 2,
+    columns: int = 6,
+) -> Still:
+    """Each image as a whole (a block mean, 1:1) above a zoomed window, every dot a square.
+
+    The first image sets the scale; an image three times larger (ordered
+    dithering) is shrunk and zoomed three times less, so every panel shows
+    the same part of the picture at the same size. ``zoom`` must be a
+    multiple of 3.
+
+    Examples
+    --------
+    >>> gray = np.linspace(0, 1, 48 * 36).reshape(36, 48)
+    >>> methods_figure({"ramp": gray, "ordered": dither.ordered(gray)}, (24, 18), 12, 6, 2)
+    2 images; the window 12 x 12 around (24, 18), each pixel 6 x 6 screen pixels
+    """
+    size, zoom, shrink = (
+        as_int(v, n, minimum=1) for v, n in ((size, "size"), (zoom, "zoom"), (shrink, "shrink"))
+    )
+    if zoom % 3:
+        raise ValueError(f"zoom must be a multiple of 3 (ordered dithering is 3x); got {zoom}")
+    arrays = {name: as_gray(image, f"images[{name!r}]") for name, image in images.items()}
+    reference = next(iter(arrays.values()))
+    height, width = reference.shape
+    over_h, over_w = height // shrink, width // shrink
+    side = size * zoom
+    panel_w = max(over_w, side)
+    gap, title = 14, 22
+    rows = -(-len(arrays) // columns)
+    row_height = title + over_h + 8 + side + 6
+    figure_w = gap + min(columns, len(arrays)) * (panel_w + gap)
+    figure_h = rows * row_height + 8
+    figure = Figure(figsize=(figure_w / 100, figure_h / 100), dpi=100)
+    for index, (name, image) in enumerate(arrays.items()):
+        row, column = divmod(index, columns)
+        scale = image.shape[0] // height
+        left = gap + column * (panel_w + gap)
+        top = figure_h - row * row_height - title
+        overview = bare_axes(pixel_axes(figure, left, top - over_h, over_w, over_h))
+        small = block_mean(image, shrink * scale)
+        overview.imshow(small, extent=(0, small.shape[1], small.shape[0], 0), **GRAY_PIXELS)
+        overview.set_title(name, fontsize=9)
+        window, (x0, x1, y1, y0) = crop(image, np.multiply(centre, scale), size * scale)
+        box = Rectangle(
+            (x0 / (shrink * scale), y0 / (shrink * scale)),
+            (x1 - x0) / (shrink * scale),
+            (y1 - y0) / (shrink * scale),
+            fill=False,
+            color="red",
+            lw=1,
+        )
+        overview.add_patch(box)
+        zoomed = bare_axes(pixel_axes(figure, left, top - over_h - 8 - side, side, side))
+        full = np.full((size * scale, size * scale), 0.5)
+        full[: window.shape[0], : window.shape[1]] = window
+        zoomed.imshow(full, extent=(0, size * scale, size * scale, 0), **GRAY_PIXELS)
+    caption = (
+        f"{len(arrays)} images; the window {size} x {size} around ({centre[0]:g}, "
+        f"{centre[1]:g}), each pixel {zoom} x {zoom} screen pixels"
+    )
+    return Still.of(figure, caption)
+
+
+def mask_figure(size: int = 64, seed: int = 0) -> Still:
+    """The void-and-cluster mask and white noise, each tiled 2 x 2, and their spectra.
+
+    Examples
+    --------
+    >>> mask_figure(32)
+    power below 0.125 cycles per pixel: mask 1.67e-05, white noise 0.042 (2.5e+03 times less)
+    """
+    mask = blue_noise_mask(size, np.random.default_rng(seed))
+    white = np.random.default_rng(seed + 1).random((size, size))
+    zoom = max(1, 256 // (2 * size))
+    side = 2 * size * zoom
+    figure = Figure(figsize=((2 * side + 400) / 100, (side + 60) / 100), dpi=100)
+    for index, (picture, name) in enumerate(((mask, "void-and-cluster"), (white, "white noise"))):
+        axes = bare_axes(pixel_axes(figure, 16 + index * (side + 16), 16, side, side))
+        tiled = np.tile(picture, (2, 2))
+        axes.imshow(tiled, extent=(0, 2 * size, 2 * size, 0), **GRAY_PIXELS)
+        axes.set_title(f"{name}, tiled 2 x 2", fontsize=9)
+    chart = figure.add_axes(
+        ((2 * side + 90) / figure.bbox.width, 0.18, 280 / figure.bbox.width, 0.68)
+    )
+    frequency, blue_power = radial_power_spectrum(mask)
+    _, white_power = radial_power_spectrum(white)
+    chart.plot(frequency, blue_power, color=BLUE, label="void-and-cluster")
+    chart.plot(frequency, white_power, color=VERMILLION, ls="--", label="white noise")
+    chart.axvline(0.125, color="0.5", lw=0.8, ls=":")
+    chart.set_xlabel("frequency (cycles per pixel)", fontsize=8)
+    chart.set_ylabel("power", fontsize=8)
+    chart.tick_params(labelsize=7)
+    chart.legend(fontsize=7)
+    blue_low, white_low = low_frequency_fraction(mask), low_frequency_fraction(white)
+    caption = (
+        f"power below 0.125 cycles per pixel: mask {blue_low:.2e}, white noise {white_low:.3f} "
+        f"({white_low / blue_low:.1e} times less)"
+    )
+    return Still.of(figure, caption)
+
+
+def diffusion_figure() -> Still:
+    """Where Floyd-Steinberg sends a pixel's error, on the pixels not yet visited.
+
+    Examples
+    --------
+    >>> diffusion_figure()
+    the error goes 7/16 right, 3/16 below left, 5/16 below, 1/16 below right: 16/16 in all
+    """
+    shades = np.array([[0.55, 0.55, 1.0, 1.0, 1.0], [1.0, 1.0, 1.0, 1.0, 1.0]])
+    shades[0, 2] = 0.8
+    figure, (axes,) = pixel_figure(
+        [(shades, (0, 5, 2, 0), "visited (gray), this pixel (x), the four that get its error")],
+        zoom=70,
+    )
+    shares = {(3, 0): 7, (1, 1): 3, (2, 1): 5, (3, 1): 1}
+    axes.text(2.5, 0.5, "x", ha="center", va="center", fontsize=16, weight="bold")
+    for (column, row), share in shares.items():
+        axes.text(
+            column + 0.5,
+            row + 0.5,
+            f"{share}/16",
+            ha="center",
+            va="center",
+            fontsize=13,
+            color=BLUE,
+        )
+    for k in range(6):
+        axes.axvline(k, color="0.7", lw=0.8)
+    axes.axhline(1, color="0.7", lw=0.8)
+    caption = (
+        "the error goes 7/16 right, 3/16 below left, 5/16 below, 1/16 below right: "
+        f"{sum(shares.values())}/16 in all"
+    )
+    return Still.of(figure, caption)
+
+
+def wavefront_figure(height: int = 6, width: int = 10, pixel: tuple[int, int] = (5, 3)) -> Still:
+    """Pixels numbered t = x + 2 y: error diffusion's pixels of one number run together.
+
+    Examples
+    --------
+    >>> wavefront_figure()
+    pixel (5, 3) is number 11 and waits for 4 pixels, all numbered below 11
+    """
+    t = np.add.outer(2 * np.arange(height), np.arange(width))
+    x, y = pixel
+    needs = [(x - 1, y), (x - 1, y - 1), (x, y - 1), (x + 1, y - 1)]
+    shade = np.where(t == t[y, x], 0.6, 0.0)
+    for nx, ny in needs:
+        shade[ny, nx] = 0.3
+    figure, (axes,) = pixel_figure(
+        [
+            (
+                1 - shade,
+                (0, width, height, 0),
+                f"t = x + 2y: the pixels numbered {t[y, x]} run together",
+            )
+        ],
+        zoom=44,
+    )
+    for (row, column), value in np.ndenumerate(t):
+        axes.text(column + 0.5, row + 0.5, str(value), ha="center", va="center", fontsize=9)
+    waits = [t[ny, nx] for nx, ny in needs]
+    caption = (
+        f"pixel {pixel} is number {t[y, x]} and waits for {len(needs)} pixels, all numbered "
+        f"below {t[y, x]}"
+        if max(waits) < t[y, x]
+        else "the numbering is wrong"
+    )
+    return Still.of(figure, caption)
+
+
+def wraparound_figure(
+    gray: np.ndarray, centre: tuple[float, float], size: int = 32, zoom: int = 6
+) -> Still:
+    """Floyd-Steinberg, the same with the left-edge slip, and where they differ.
+
+    Examples
+    --------
+    >>> flat = np.full((40, 40), 0.3)
+    >>> wraparound_figure(flat, (30, 20), 16)
+    the slip changes 122 pixels (7.6%), all in columns 30 to 39
+    """
+    good = dither.error_diffusion(gray)
+    bad = dither.error_diffusion_wraparound(gray)
+    difference = 0.5 + 0.5 * (bad - good)  # gray: equal; white: lit only with the slip
+    windows = []
+    for picture, name in ((good, "correct"), (bad, "with the slip"), (difference, "difference")):
+        window, extent = crop(picture, centre, size)
+        windows.append((window, extent, name))
+    figure, _ = pixel_figure(windows, zoom=zoom)
+    changed = good != bad
+    columns = np.flatnonzero(changed.any(axis=0))
+    where = f"all in columns {columns.min()} to {columns.max()}" if len(columns) else "none"
+    return Still.of(
+        figure, f"the slip changes {changed.sum()} pixels ({changed.mean():.1%}), {where}"
+    )

@@ -2,6 +2,7 @@
 
 import math
 
+import numpy as np
 import pytest
 
 from course.check import antialiasing as check
@@ -72,3 +73,99 @@ def test_splat_table_merges_repeats_and_rejects_mismatches():
         splat_table([[0, 0], [1, 1], [2, 2]], [1.0, 0.0])
     with pytest.raises(ValueError, match="whole numbers"):
         splat_table([[0.5, 0]], [1.0])
+
+
+def zero_offset(x, y):
+    # The GAMES101 report's left addColor: corners built from the point itself, dx = 0.
+    pixel = (round(x), round(y))
+    return [pixel], [1.0]
+
+
+def nearest_only(x, y):
+    return [(round(x), round(y))], [1.0]
+
+
+def swapped_xy(x, y):
+    pixels, weights = correct(x, y)
+    return [(row, column) for column, row in pixels], weights
+
+
+@pytest.mark.parametrize(
+    ("student", "mistake"),
+    [
+        (corners_at_integers, "pixels at their corners"),
+        (weights_swapped, "each pixel its own rectangle"),
+        (zero_offset, "the corners are the point itself"),
+        (swapped_xy, "x and y swapped"),
+    ],
+)
+def test_the_handouts_splat_mistakes_are_named_and_pictured(student, mistake):
+    result = check.bilinear_splat(student)
+    assert not result
+    assert result.mistake == mistake
+    assert result.picture is not None and result.picture.startswith(b"\x89PNG")
+    assert "first wrong pixel:" in result.message
+    assert "dx = " in result.message  # where the point lies, in the case's numbers
+
+
+def test_the_nearest_pixel_alone_is_recognised_where_it_differs_from_zero_offset():
+    # nearest_round and the zero-offset splat light the same pixel, so either name is right.
+    result = check.bilinear_splat(nearest_only)
+    assert not result
+    assert result.mistake in {"the nearest pixel only", "the corners are the point itself"}
+
+
+def test_the_first_wrong_pixel_is_named_with_both_weights():
+    result = check.bilinear_splat(corners_at_integers)
+    # Case 1, (2.5, 1.5), is pixel (2, 1)'s centre: weight 1 there; corners give (2, 1) 0.25.
+    assert "first wrong pixel: (2, 1) should get 1, yours gets 0.25" in result.message
+
+
+def correct_weights(samples):
+    points = np.asarray(samples, dtype=float)
+    chords = np.hypot(*np.diff(points, axis=0).T)
+    padded = np.concatenate([[0.0], chords, [0.0]])
+    return (padded[:-1] + padded[1:]) / 2
+
+
+def chord_after(samples):
+    points = np.asarray(samples, dtype=float)
+    return np.append(np.hypot(*np.diff(points, axis=0).T), 0.0)
+
+
+def chord_before(samples):
+    points = np.asarray(samples, dtype=float)
+    return np.insert(np.hypot(*np.diff(points, axis=0).T), 0, 0.0)
+
+
+def test_arc_length_weights_pass_as_a_list_or_an_array():
+    assert check.arc_length_weights(correct_weights)
+    assert check.arc_length_weights(lambda samples: list(correct_weights(samples)))
+
+
+@pytest.mark.parametrize(
+    ("student", "mistake"),
+    [
+        (lambda samples: np.ones(len(samples)), "counting"),
+        (chord_after, "the chord after each sample"),
+        (chord_before, "the chord before each sample"),
+        (lambda samples: 2 * correct_weights(samples), "whole chords on both sides"),
+    ],
+)
+def test_arc_length_mistakes_are_named_and_plotted(student, mistake):
+    result = check.arc_length_weights(student)
+    assert not result
+    assert result.mistake == mistake
+    assert result.picture is not None and result.picture.startswith(b"\x89PNG")
+    assert "first wrong value" in result.message
+
+
+def test_weights_summing_to_the_length_but_misplaced_fail():
+    def all_at_the_ends(samples):
+        weights = np.zeros(len(samples))
+        total = correct_weights(samples).sum()
+        weights[0] = weights[-1] = total / 2
+        return weights if len(samples) > 1 else np.array([0.0])
+
+    result = check.arc_length_weights(all_at_the_ends)
+    assert not result and result.mistake is None

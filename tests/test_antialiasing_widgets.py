@@ -8,7 +8,7 @@ from course.canvas import crop
 from course.coverage import reference
 from course.curve_quality import intensity_along
 from course.images import SEED_000_CUBIC
-from course.widgets.antialiasing import CurveWalk, StepApp, ZoomApp, zoom_figure
+from course.widgets.antialiasing import CurveWalk, StepApp, ZoomApp, label_of, zoom_figure
 
 CURVE = SEED_000_CUBIC / 5
 SHAPE = (140, 140)
@@ -55,7 +55,7 @@ def test_zoom_app_picks_variants_and_sizes(images):
     app.controls["middle"].value = "bilinear_centres"
     window, _ = crop(images["bilinear_centres"], app.centre(), 16)
     np.testing.assert_allclose(app.windows[1], window, atol=1e-9)
-    assert "bilinear_centres" in app.panels[1].title.get_text()
+    assert app.panels[1].title.get_text() == label_of("bilinear_centres")
     app.controls["size"].value = 32
     assert app.windows[1].shape == (32, 32)
     # The grid has one line per pixel edge: 33 columns and 33 rows.
@@ -85,7 +85,8 @@ def test_dragging_a_control_point_redraws_every_window_for_the_new_curve():
         np.testing.assert_allclose(app.windows[index], crop(whole, centre, 16)[0], atol=1e-9)
     exact = reference(moved, SHAPE, 1.0, 16)
     np.testing.assert_allclose(app.windows[3], crop(exact, centre, 16)[0], atol=1e-9)
-    assert app.panels[3].title.get_text() == "exact reference"
+    assert app.panels[3].title.get_text() == "exact coverage"
+    assert [panel.title.get_text() for panel in app.panels[:3]] == [label_of(p) for p in PICKS]
     assert dragging_note == app.panels[3].note.get_text() == "16 x 16 samples a pixel"
 
 
@@ -157,4 +158,4 @@ def test_zoom_windows_are_shown_pixel_for_pixel_and_new_titles_reach_the_picture
     app.controls["middle"].value = "bilinear_centres"
     after = app.view.pixels()[title_rows, left : left + ZoomApp.PANEL]
     assert not np.array_equal(before, after)
-    assert app.panels[1].title.get_text() == "bilinear_centres"
+    assert app.panels[1].title.get_text() == label_of("bilinear_centres")

@@ -116,6 +116,7 @@ def test_de_casteljau_landmark_is_b_of_t_and_bernstein_landmarks_are_the_weights
 
 def test_zoom_landmarks_are_the_crop_of_each_rendering_around_the_curve_point():
     (spec,) = LESSONS["05"].sliders
+    assert spec.app == 1  # the notebook's second app: StepApp comes first
     app = spec.build()
     app.controls["position"].value = 0.5  # the middle of the S, by arc length
     renderings, exact = seed_000_renderings()

@@ -1,24 +1,42 @@
-"""Lesson 05's exercise: write the bilinear splat about pixel centres.
+"""Lesson 05's exercises: the bilinear splat about pixel centres, and the arc-length weights.
 
-The GAMES101 optional task: for a curve point, do not light one pixel but
-share it among the pixels around it, by distance to their centres. The
-student writes ``splat(x, y)`` for one point and returns ``(pixels,
-weights)``: the (x, y) pixels it touches and how much of the point each
-receives. The checker compares it with :func:`course.antialias.bilinear_centres`,
-pixel by pixel, ignoring order and pixels of weight 0.
+``splat(x, y)`` returns the pixels one curve point lights and their weights;
+a failure names the first pixel whose weight is wrong, shows both splats as
+pixels around the point, and recognises the GAMES101 report's variants
+(corners made of the point itself, pixels taken to sit at their corners)
+and the usual slips (the rectangles' areas given to the wrong pixels, x and
+y swapped, the nearest pixel only).
+
+``arc_length_weights(samples)`` returns the length of curve each sample
+stands for; a failure plots both sets of weights along the curve and
+recognises counting (every weight 1), a whole chord on one side only, and
+whole chords on both sides.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
+from matplotlib.figure import Figure
 
-from course.antialias import bilinear_centres
-from course.check.base import CheckResult, close, run_cases
+from course.antialias import (
+    arc_length_weights as reference_weights,
+)
+from course.antialias import (
+    bilinear_centres,
+    bilinear_corners,
+    bilinear_zero_offset,
+    curve_samples,
+    nearest_round,
+)
+from course.check.base import CheckResult, Mistake, close, first_difference, run_cases
+from course.check.pictures import EXPECTED, GIVEN, _png, image_picture
+from course.images import SEED_000_CUBIC
 
-__all__ = ["bilinear_splat", "splat_table"]
+__all__ = ["arc_length_weights", "bilinear_splat", "splat_table"]
 
 # Points that tell the common mistakes apart: a pixel centre (one pixel gets
 # everything), a pixel corner (four equal shares), generic points, points
@@ -32,6 +50,10 @@ CASES = (
     {"x": 5.75, "y": 5.75},
     {"x": -0.25, "y": 1.625},
 )
+# The picture shows at least this many pixels on each side of the point's own pixel.
+_AROUND = 2
+# ... and at most this many pixels across, however far a wrong splat strays.
+_LARGEST_WINDOW = 16
 
 
 def splat_table(pixels: Any, weights: Any) -> np.ndarray:
@@ -64,8 +86,140 @@ def splat_table(pixels: Any, weights: Any) -> np.ndarray:
     return np.column_stack([unique[keep], totals[keep]]).astype(float)
 
 
-def _reference(x: float, y: float) -> np.ndarray:
-    return splat_table(*bilinear_centres([[x, y]]))
+def _table_of(splat: Callable[..., Any]) -> Callable[[float, float], np.ndarray]:
+    return lambda x, y: splat_table(*splat([[x, y]]))
+
+
+def _same_splat(expected: np.ndarray, given: np.ndarray) -> bool:
+    return expected.shape == given.shape and bool(np.allclose(given, expected, atol=1e-9, rtol=0.0))
+
+
+def _weights_by_pixel(table: np.ndarray) -> dict[tuple[int, int], float]:
+    return {(int(x), int(y)): float(w) for x, y, w in table}
+
+
+def splat_difference(expected: np.ndarray, given: np.ndarray) -> str:
+    """The first pixel, by (y, x), whose weight differs, in words.
+
+    Examples
+    --------
+    >>> splat_difference(np.array([[0, 0, 0.5], [1, 0, 0.5]]), np.array([[0, 0, 1.0]]))
+    'first wrong pixel: (0, 0) should get 0.5, yours gets 1'
+    """
+    want, have = _weights_by_pixel(expected), _weights_by_pixel(given)
+    for pixel in sorted(set(want) | set(have), key=lambda p: (p[1], p[0])):
+        should, gets = want.get(pixel, 0.0), have.get(pixel, 0.0)
+        if not math.isclose(should, gets, abs_tol=1e-9):
+            if should == 0.0:
+                return f"first wrong pixel: {pixel} should not be lit, yours gets {gets:.4g}"
+            return f"first wrong pixel: {pixel} should get {should:.4g}, yours gets {gets:.4g}"
+    return "the same pixels and weights"
+
+
+def show_splat(table: np.ndarray) -> str:
+    """A splat table in words: each lit pixel and its weight.
+
+    Examples
+    --------
+    >>> show_splat(np.array([[2, 1, 0.75], [3, 1, 0.25]]))
+    'pixel (2, 1) gets 0.75, pixel (3, 1) gets 0.25'
+    """
+    if len(table) == 0:
+        return "no pixel lit"
+    return ", ".join(f"pixel ({int(x)}, {int(y)}) gets {w:.4g}" for x, y, w in table)
+
+
+def _window(case: dict[str, Any], tables: list[np.ndarray]) -> tuple[int, int, int, int]:
+    """(left, top, width, height): the point's pixel and every lit pixel, within limits."""
+    px, py = math.floor(case["x"]), math.floor(case["y"])
+    xs = [px - _AROUND, px + _AROUND] + [int(x) for t in tables for x in t[:, 0]]
+    ys = [py - _AROUND, py + _AROUND] + [int(y) for t in tables for y in t[:, 1]]
+    left = max(min(xs), px - _LARGEST_WINDOW // 2)
+    top = max(min(ys), py - _LARGEST_WINDOW // 2)
+    right = min(max(xs), left + _LARGEST_WINDOW - 1)
+    bottom = min(max(ys), top + _LARGEST_WINDOW - 1)
+    return left, top, right - left + 1, bottom - top + 1
+
+
+def _painted(table: np.ndarray, window: tuple[int, int, int, int]) -> np.ndarray:
+    left, top, width, height = window
+    image = np.zeros((height, width))
+    for x, y, weight in table:
+        column, row = int(x) - left, int(y) - top
+        if 0 <= row < height and 0 <= column < width:
+            image[row, column] += weight
+    return image
+
+
+def _splat_picture(case: dict[str, Any], expected: np.ndarray, given: np.ndarray) -> bytes:
+    window = _window(case, [expected, given])
+    left, top, width, height = window
+    return image_picture(
+        _painted(expected, window),
+        _painted(given, window),
+        title=f"the splat of ({case['x']}, {case['y']}): pixels x {left}..{left + width - 1}, "
+        f"y {top}..{top + height - 1}",
+    )
+
+
+def _splat_explain(case: dict[str, Any], expected: np.ndarray, given: np.ndarray) -> str:
+    x, y = case["x"], case["y"]
+    left, top = math.floor(x - 0.5), math.floor(y - 0.5)
+    dx, dy = x - (left + 0.5), y - (top + 0.5)
+    return (
+        f"the point ({x}, {y}) lies between the centres of pixels x {left}..{left + 1}, "
+        f"y {top}..{top + 1}; from the top-left centre ({left + 0.5}, {top + 0.5}) "
+        f"dx = {dx:g}, dy = {dy:g}"
+    )
+
+
+def _swapped(x: float, y: float) -> np.ndarray:
+    table = splat_table(*bilinear_centres([[x, y]]))
+    return splat_table(table[:, [1, 0]], table[:, 2])
+
+
+def _own_rectangles(x: float, y: float) -> np.ndarray:
+    left, top = math.floor(x - 0.5), math.floor(y - 0.5)
+    dx, dy = x - (left + 0.5), y - (top + 0.5)
+    pixels = [(left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)]
+    return splat_table(pixels, [dx * dy, (1 - dx) * dy, dx * (1 - dy), (1 - dx) * (1 - dy)])
+
+
+SPLAT_MISTAKES = (
+    Mistake(
+        "the corners are the point itself",
+        "your splat gives the whole point to one pixel: the GAMES101 report's left addColor, "
+        "whose corners p1..p4 are built from the point itself (cv::Point2f p1(point.x, "
+        "point.y)), so dx = point.x - p1.x is always 0. Measure dx and dy from a pixel centre.",
+        _table_of(bilinear_zero_offset),
+    ),
+    Mistake(
+        "pixels at their corners",
+        "your four pixels are those around the point's integer corner: the GAMES101 report's "
+        "middle addColor (cv::Point truncates), which treats pixel (c, r) as if it sat at "
+        "(c, r). Its centre is (c + 0.5, r + 0.5): the curve moves half a pixel right and down.",
+        _table_of(bilinear_corners),
+    ),
+    Mistake(
+        "the nearest pixel only",
+        "your splat lights only the pixel nearest the point, with weight 1: that is the "
+        "handout's plain loop, no anti-aliasing. Share the point among the four pixels whose "
+        "centres surround it.",
+        _table_of(nearest_round),
+    ),
+    Mistake(
+        "each pixel its own rectangle",
+        "each of your four pixels gets the rectangle between the point and its own centre: "
+        "the nearest pixel gets the least. A pixel's weight is the area of the rectangle "
+        "opposite it: (1 - dx)(1 - dy) for the top-left one.",
+        _own_rectangles,
+    ),
+    Mistake(
+        "x and y swapped",
+        "your pixels are (row, column): give each as (x, y), the column first.",
+        _swapped,
+    ),
+)
 
 
 def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
@@ -74,7 +228,8 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
     The correct splat lights the four pixels whose centres (c + 0.5,
     r + 0.5) surround the point, with weights ``(1 - dx)(1 - dy)``,
     ``dx (1 - dy)``, ``(1 - dx) dy``, ``dx dy``, where (dx, dy) is the
-    point's offset from the top-left one of those centres.
+    point's offset from the top-left one of those centres. Pixels may come
+    in any order; pixels of weight 0 may be left out.
 
     Examples
     --------
@@ -86,10 +241,106 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
         "bilinear_splat",
         student,
         CASES,
-        reference=_reference,
-        compare=close(atol=1e-9, rtol=0.0),
+        reference=_table_of(bilinear_centres),
+        compare=_same_splat,
         convert=lambda answer: splat_table(*answer),
         hint="the four pixels whose centres (c + 0.5, r + 0.5) surround the point; measure the "
         "point's offset (dx, dy) from the top-left of those centres, and give each pixel the "
         "area of the opposite rectangle.",
+        mistakes=SPLAT_MISTAKES,
+        difference=splat_difference,
+        picture=_splat_picture,
+        explain=_splat_explain,
+        show=show_splat,
+    )
+
+
+def _weight_cases() -> list[dict[str, Any]]:
+    rng = np.random.default_rng(11)
+    # Lesson 05's cubic at t = 0, 1/8, ..., 1: far apart at the ends, close in the middle.
+    curve = curve_samples(SEED_000_CUBIC, 0.125)
+    return [
+        {"samples": np.array([[0.0, 0.0], [3.0, 4.0], [3.0, 5.0]])},
+        {"samples": np.array([[1.0, 1.0], [2.0, 1.0]])},
+        {"samples": curve},
+        {"samples": np.cumsum(rng.uniform(-2, 2, size=(12, 2)), axis=0)},
+        {"samples": np.array([[4.0, 4.0]])},
+    ]
+
+
+def _weights_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:
+    want, have = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+    if have.shape != want.shape:
+        return None
+    figure = Figure(figsize=(4.6, 2.4), dpi=100)
+    axes = figure.add_subplot()
+    index = np.arange(len(want))
+    axes.plot(index, want, "o-", color=EXPECTED, label="expected", markersize=5)
+    axes.plot(index, have, "x--", color=GIVEN, label="yours", markersize=6)
+    axes.set_xlabel("sample", fontsize=8)
+    axes.set_ylabel("weight (px of curve)", fontsize=8)
+    axes.tick_params(labelsize=7)
+    axes.legend(fontsize=7)
+    axes.set_title("the weight of each sample along the curve", fontsize=9)
+    figure.tight_layout()
+    return _png(figure)
+
+
+def _chords(samples: Any) -> np.ndarray:
+    return np.hypot(*np.diff(np.asarray(samples, dtype=float), axis=0).T)
+
+
+WEIGHT_MISTAKES = (
+    Mistake(
+        "counting",
+        "every sample weighs 1, as in the handouts' loop: a pixel's brightness then counts "
+        "the samples in it, and follows the curve's speed. Weigh each by the length of curve "
+        "it stands for.",
+        lambda samples: np.ones(len(samples)),
+    ),
+    Mistake(
+        "the chord after each sample",
+        "each sample has the whole chord to the next one (and the last none): the curve "
+        "shifts its ink backwards by half a chord. Give each sample half the chord on each side.",
+        lambda samples: np.append(_chords(samples), 0.0),
+    ),
+    Mistake(
+        "the chord before each sample",
+        "each sample has the whole chord from the previous one (and the first none). Give "
+        "each sample half the chord on each side.",
+        lambda samples: np.insert(_chords(samples), 0, 0.0),
+    ),
+    Mistake(
+        "whole chords on both sides",
+        "each sample has both chords beside it in full: every piece of curve is counted twice. "
+        "Halve them.",
+        lambda samples: 2 * reference_weights(samples),
+    ),
+)
+
+
+def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
+    """Check ``student(samples)``: the length of curve each of the (N, 2) samples stands for.
+
+    ``w[i] = (|p[i] - p[i-1]| + |p[i+1] - p[i]|) / 2``, the missing chord at
+    either end counted as 0; the weights add up to the polyline's length.
+
+    Examples
+    --------
+    >>> from course.antialias import arc_length_weights as weights
+    >>> arc_length_weights(weights)
+    PASS arc_length_weights: all 5 cases pass
+    """
+    return run_cases(
+        "arc_length_weights",
+        student,
+        _weight_cases(),
+        reference=reference_weights,
+        compare=close(atol=1e-9, rtol=1e-9),
+        convert=lambda answer: np.asarray(answer, dtype=float),
+        hint="half the distance to the previous sample plus half the distance to the next; "
+        "the first and the last sample have only one neighbour.",
+        mistakes=WEIGHT_MISTAKES,
+        difference=first_difference,
+        picture=_weights_picture,
     )

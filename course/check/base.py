@@ -239,6 +239,7 @@ def run_cases(
     picture: Callable[[Case, Any, Any], bytes | None] | None = None,
     watch: Callable[[], AbstractContextManager[Any]] | None = None,
     explain: Callable[[Case, Any, Any], str] | None = None,
+    show: Callable[[Any], str] | None = None,
 ) -> CheckResult:
     """Call ``student(**case)`` and ``reference(**case)`` for every case.
 
@@ -252,7 +253,8 @@ def run_cases(
     the student's code runs under, each case anew (:func:`call_budget`).
     ``explain(case, expected, given)``, if given, adds a line about the
     first difference that needs the case's inputs (what was carried into
-    the first wrong pixel, say).
+    the first wrong pixel, say). ``show(answer)``, if given, writes an
+    answer for the report in the exercise's own terms.
     """
     if not callable(student):
         raise TypeError(f"{exercise}: expected a function to check; got {type(student).__name__}")
@@ -293,8 +295,8 @@ def run_cases(
         lines = [
             f"case {count} is wrong",
             f"  inputs: {inputs}",
-            f"  expected: {_show(expected)}",
-            f"  given:    {_show(given)}",
+            f"  expected: {(show or _show)(expected)}",
+            f"  given:    {(show or _show)(given)}",
         ]
         where = difference(expected, given)
         if where:

@@ -2,52 +2,27 @@
 
 from __future__ import annotations
 
-import functools
-
 import numpy as np
 
-from course.bezier import de_casteljau
 from course.classroom.pictures import (
     app_picture,
     clear_point,
-    figure_picture,
     gray_color,
     landmark_in_box,
     panel_picture,
-    read_only,
     segments_of,
+    still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.coverage import curve_polyline, reference
-from course.curve_quality import REFERENCE, render_window, variants
+from course.coverage import curve_polyline
+from course.curve_quality import REFERENCE, render_window
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
-from course.widgets.antialiasing import ZOOM_PICKS, CurveWalk, StepApp, ZoomApp, zoom_figure
+from course.widgets import antialiasing_figures as figures
+from course.widgets.antialiasing import ZOOM_PICKS, CurveWalk, StepApp, ZoomApp
 from course.widgets.base import SliderApp
 
-# The variants the notebook zooms into, in its order (its "Every variant" cell).
-ZOOMED_VARIANTS = (
-    "nearest_round",
-    "bilinear_zero_offset",
-    "bilinear_corners",
-    "bilinear_centres",
-    "subsample_falloff",
-    "normalised_centres",
-    "stroke_linear",
-    "stroke_area",
-    "bilinear_centres + arc length",
-    "nearest_truncate + arc length",
-    "Agg (matplotlib)",
-)
-
-
-@functools.cache
-def seed_000_renderings() -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """Every variant of seed 000's test and the exact reference (k = 64), computed once."""
-    renderings = {
-        name: read_only(image) for name, image in variants(SEED_000_CUBIC, SEED_000_SHAPE).items()
-    }
-    exact = reference(SEED_000_CUBIC, SEED_000_SHAPE, width=1.0, k=64)
-    return renderings, read_only(exact)
+# Computed once for the lesson, its pictures and the tests that read them.
+seed_000_renderings = figures.seed_000_renderings
 
 
 def zoom_app() -> ZoomApp:
@@ -82,15 +57,6 @@ def zoom_landmarks(app: SliderApp) -> list[Landmark]:
     return landmarks
 
 
-def zoom_every_variant() -> bytes:
-    """The notebook's still grid: every variant zoomed where the curve leaves P0."""
-    renderings, exact = seed_000_renderings()
-    panels = {name: renderings[name] for name in ZOOMED_VARIANTS} | {"exact reference": exact}
-    centre = de_casteljau(SEED_000_CUBIC, 0.08)
-    figure = zoom_figure(panels, SEED_000_CUBIC, centre=centre, size=14, columns=4)
-    return figure_picture(figure)
-
-
 def step_app_picture(weighting: str) -> bytes:
     app = StepApp(SEED_000_CUBIC, SEED_000_SHAPE)
     app.controls["weighting"].value = weighting
@@ -105,50 +71,60 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "draw a curve's pixels as the coverage of a stroke",
-        "compare the handouts' anti-aliasing splats with the exact coverage, pixel by pixel",
-        "fix a splat's offset and its brightness along the curve",
+        "say what a pixel of a drawn curve should hold: the area of it the stroke covers",
+        "write the handout's bilinear splat and weight it by the length of curve it stands for",
+        "measure the handouts' splats for error and even brightness against the exact coverage",
     ),
     minutes=60,
     preview=Picture(
         "05_preview", "an anti-aliased curve, zoomed until each pixel is a square", preview
     ),
-    handout="GAMES101 homework 4, improvement part (seeds 000, 002, 003): anti-aliasing "
-    "the curve with seed 000's three addColor splats, seed 002's sub-sample falloff and "
-    "seed 003's normalised splat",
-    teaches="a curve's pixels as the coverage of a stroke: every handout splat measured "
-    "against an exact reference and Agg, the t-step pitfall and the arc-length fix",
+    handout="GAMES101 homework 4, improvement part (the GAMES101, any-degree and VS2022 "
+    "reports): anti-aliasing the curve with the GAMES101 report's three addColor splats, the "
+    "any-degree report's sub-sample falloff and the VS2022 report's normalised splat",
+    teaches="a curve's pixels as the coverage of a stroke: the bilinear splat, the t-step "
+    "pitfall and the arc-length fix, every handout splat measured against the exact coverage",
     pictures=(
-        Picture(
-            "05_every_variant_zoomed",
-            "seed 000's curve near its first control point, every variant as 14 x 14 "
-            "flat pixels under the true curve (red), beside the exact reference",
-            zoom_every_variant,
+        still_picture(
+            "05_aliased_and_antialiased",
+            "the handouts' curve near t = 0.06, one pixel per sample beside each pixel's "
+            "coverage by a stroke of width 1, each pixel 12 x 12",
+            figures.opening_figure,
+        ),
+        still_picture(
+            "05_pixel_area",
+            "a stroke of width 1 across six pixels, each shaded and labelled by the area it covers",
+            figures.pixel_area_figure,
+        ),
+        still_picture(
+            "05_one_splat",
+            "the point (3.3, 2.8) shared among the four pixels whose centres surround it",
+            figures.splat_figure,
+        ),
+        still_picture(
+            "05_brightness_along_the_curve",
+            "ink per px of length along the curve at four t steps, counted and weighted by "
+            "arc length",
+            figures.brightness_figure,
         ),
         Picture(
             "05_seed000_three_splats_position0.10",
-            "seed 000's curve whole, and its left, middle and right addColor beside the "
-            "exact reference, 10% of the way along the curve, with each window's RMSE",
+            "the handouts' curve whole, and the GAMES101 report's left, middle and right "
+            "addColor beside the exact coverage, 10% of the way along the curve, with each "
+            "window's RMSE",
             lambda: app_picture(zoom_app()),
         ),
         Picture(
             "05_t_step_0.001_count",
-            "bilinear_centres at the handouts' t step 0.001, splats counted as the "
-            "handouts do: the brightness per unit length follows the curve's speed, "
-            "about half at the fast ends",
+            "the GAMES101 report's right splat at the handouts' t step 0.001, splats counted "
+            "as the handouts do: the brightness follows the curve's speed",
             lambda: step_app_picture("count"),
-        ),
-        Picture(
-            "05_t_step_0.001_arc_length",
-            "the same splats weighted by arc length: brightness 1 per unit length "
-            "along the curve, dipping only near the fast ends, where samples 0.001 "
-            "apart leave gaps",
-            lambda: step_app_picture("arc_length"),
         ),
     ),
     sliders=(
         SliderMove(
             build=zoom_app,
+            app=1,  # the notebook's second app: StepApp comes first
             control="position",
             moves=(("ArrowRight", "ArrowRight"), ("ArrowRight",) * 4, ("End",), ("Home",)),
             landmarks=zoom_landmarks,

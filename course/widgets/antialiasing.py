@@ -25,17 +25,62 @@ from course._validate import as_curve
 from course.antialias import SPLATS, WEIGHTINGS, render
 from course.canvas import crop
 from course.coverage import curve_polyline
-from course.curve_quality import REFERENCE, VARIANTS, intensity_along, render_window, uniformity
+from course.curve_quality import (
+    AGG,
+    ARC_LENGTH,
+    REFERENCE,
+    VARIANTS,
+    intensity_along,
+    render_window,
+    uniformity,
+)
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.metrics import rmse
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import bare_axes
 
-__all__ = ["ZOOM_PICKS", "CurveWalk", "StepApp", "ZoomApp", "ZoomPanel", "zoom_figure"]
+__all__ = [
+    "VARIANT_LABELS",
+    "ZOOM_PICKS",
+    "CurveWalk",
+    "StepApp",
+    "ZoomApp",
+    "ZoomPanel",
+    "label_of",
+    "zoom_figure",
+]
 
 
 #: The three variants the lesson's zoom app starts with: seed 000's three splats.
 ZOOM_PICKS = ("bilinear_zero_offset", "bilinear_corners", "bilinear_centres")
+
+#: Short names by role, for drop-downs and panel titles (the library's names are identifiers).
+VARIANT_LABELS = {
+    "nearest_truncate": "plain loop, truncated",
+    "nearest_round": "plain loop, rounded",
+    "bilinear_zero_offset": "GAMES101 left",
+    "bilinear_corners": "GAMES101 middle",
+    "bilinear_centres": "GAMES101 right",
+    "subsample_falloff": "any-degree falloff",
+    "normalised_centres": "VS2022 splat",
+    "stroke_linear": "stroke distance",
+    "stroke_area": "stroke area",
+    AGG: "Agg (matplotlib)",
+    REFERENCE: "exact coverage",
+}
+
+
+def label_of(name: str) -> str:
+    """The short name of a variant by role: ``label_of("bilinear_centres + arc length")``.
+
+    Examples
+    --------
+    >>> label_of("bilinear_centres"), label_of("bilinear_centres + arc length")
+    ('GAMES101 right', 'GAMES101 right, by length')
+    """
+    if name.endswith(ARC_LENGTH):
+        return VARIANT_LABELS[name[: -len(ARC_LENGTH)]] + ", by length"
+    return VARIANT_LABELS[name]
 
 
 class CurveWalk:
@@ -192,7 +237,11 @@ class ZoomApp(SliderApp):
             "size": widgets.SelectionSlider(options=self.SIZES, value=16, description="window px"),
         }
         for slot, name in zip(("left", "middle", "right"), picks, strict=True):
-            controls[slot] = widgets.Dropdown(options=VARIANTS, value=name, description=slot)
+            controls[slot] = widgets.Dropdown(
+                options=[(label_of(variant), variant) for variant in VARIANTS],
+                value=name,
+                description=slot,
+            )
         controls["points"] = widgets.Textarea(
             value=format_points(self.points), description="x, y", continuous_update=False
         )
@@ -268,10 +317,10 @@ class ZoomApp(SliderApp):
             window, _ = render_window(name, points, self.shape, centre, size, self.stroke_width)
             zoom.curve.set_data(near[:, 0], near[:, 1])
             note = f"RMSE here {rmse(window, truth):.3f}"
-            self.windows.append(zoom.show_window(window, extent, name, note))
+            self.windows.append(zoom.show_window(window, extent, label_of(name), note))
         self.panels[3].curve.set_data(near[:, 0], near[:, 1])
         note = f"{k} x {k} samples a pixel"
-        self.windows.append(self.panels[3].show_window(truth, extent, "exact reference", note))
+        self.windows.append(self.panels[3].show_window(truth, extent, label_of(REFERENCE), note))
         if [panel.title.get_text() for panel in self.panels] != self._titles:
             self._titles = [panel.title.get_text() for panel in self.panels]
             self.view.invalidate()  # the titles are part of the still background
@@ -326,7 +375,9 @@ class StepApp(SliderApp):
                 readout_format=".2g",
             ),
             "method": widgets.Dropdown(
-                options=SPLATS, value="bilinear_centres", description="method"
+                options=[(label_of(splat), splat) for splat in SPLATS],
+                value="bilinear_centres",
+                description="splat",
             ),
             "weighting": widgets.ToggleButtons(options=WEIGHTINGS, value="count"),
             "position": widgets.FloatSlider(
@@ -340,8 +391,8 @@ class StepApp(SliderApp):
         (self.profile,) = self.profile_axes.plot([], [], color="#2a6f97", linewidth=1.2)
         self.profile_axes.axhline(1.0, color="#e8502f", linewidth=0.8, linestyle="--")
         self.marker = self.profile_axes.axvline(0.0, color="gray", linewidth=0.8)
-        self.profile_axes.set_xlabel("arc length (px)")
-        self.profile_axes.set_ylabel("intensity per unit length")
+        self.profile_axes.set_xlabel("distance along the curve (px)")
+        self.profile_axes.set_ylabel("ink per px of length")
         self.profile_axes.set_xlim(0, self.walk.lengths[-1])
         self.profile_axes.set_ylim(0, 1.6)
         self.profile_title = self.profile_axes.set_title("", fontsize=9)
@@ -360,6 +411,7 @@ class StepApp(SliderApp):
         self.marker.set_xdata([fraction * self.walk.lengths[-1]] * 2)
         cv = uniformity(self.image, self.points)
         self.profile_title.set_text(
-            f"{method}, {weighting}: CV {100 * cv:.1f}%, mean {self.density.mean():.2f}"
+            f"{label_of(method)}, {weighting.replace('_', ' ')}: CV {100 * cv:.1f}%, "
+            f"mean {self.density.mean():.2f}"
         )
         self.panel.show(self.image, self.walk.at(fraction), 24, f"t step {self.value('step'):.2g}")

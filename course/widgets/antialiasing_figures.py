@@ -1,0 +1,348 @@
+"""Lesson 05's still pictures and tables: a curve with and without anti-aliasing, a pixel
+as a small area, one splat, the brightness along the curve, the handouts' splats measured.
+
+Each picture is a :class:`~course.widgets.picture.Still` whose caption states
+the numbers it shows; pixel views are at a whole zoom
+(:func:`~course.widgets.picture.pixel_figure`). The handouts' variants are
+named by role (:data:`ROLES`), not by the library's identifiers.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+from matplotlib.collections import LineCollection
+from matplotlib.figure import Figure
+from matplotlib.patches import Polygon
+
+from course.antialias import bilinear_centres, render
+from course.bezier import de_casteljau
+from course.canvas import crop
+from course.coverage import curve_polyline, reference
+from course.curve_quality import (
+    AGG,
+    ARC_LENGTH,
+    intensity_along,
+    position_error,
+    quality_table,
+    variants,
+)
+from course.images import SEED_000_CUBIC, SEED_000_SHAPE
+from course.metrics import rmse
+from course.widgets.picture import Still, pixel_figure
+
+__all__ = [
+    "ROLES",
+    "brightness_figure",
+    "claims",
+    "opening_figure",
+    "pixel_area_figure",
+    "seed_000_renderings",
+    "splat_figure",
+    "variants_figure",
+    "variants_table",
+]
+
+BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
+
+#: The variants of lesson 05 by role: (who draws the curve this way, what the splat does).
+ROLES = {
+    "nearest_round": ("the handout's plain loop", "the pixel under each sample, weight 1"),
+    "bilinear_zero_offset": (
+        "GAMES101 report, left addColor",
+        "corners made of the point: dx = dy = 0",
+    ),
+    "bilinear_corners": ("GAMES101 report, middle addColor", "bilinear, pixels at their corners"),
+    "bilinear_centres": ("GAMES101 report, right addColor", "bilinear about pixel centres"),
+    "subsample_falloff": ("any-degree report's falloff", "its own pixel, dimmed by distance"),
+    "normalised_centres": ("VS2022 report's splat", "four centres, weights sqrt(2) - d"),
+    "stroke_area": ("the stroke's area (library)", "each pixel's covered area, once"),
+    AGG: ("Agg (matplotlib)", "its outline's area, scanline by scanline"),
+}
+
+
+@functools.cache
+def seed_000_renderings() -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """Every variant of the GAMES101 test (700 x 700) and the exact reference (k = 64), once."""
+    renderings = variants(SEED_000_CUBIC, SEED_000_SHAPE)
+    exact = reference(SEED_000_CUBIC, SEED_000_SHAPE, width=1.0, k=64)
+    for image in (*renderings.values(), exact):
+        image.flags.writeable = False
+    return renderings, exact
+
+
+def _curve_overlay(axes, points: np.ndarray, offset: tuple[float, float] = (0.0, 0.0)) -> None:
+    line = curve_polyline(points, 1e-3) - offset
+    axes.plot(line[:, 0], line[:, 1], color=VERMILLION, lw=1.0)
+
+
+def opening_figure(t: float = 0.06, size: int = 24, zoom: int = 12) -> Still:
+    """The handouts' curve near ``t``: one pixel per sample, beside each pixel's coverage.
+
+    Examples
+    --------
+    >>> opening_figure()  # doctest: +NORMALIZE_WHITESPACE
+    24 x 24 pixels around t = 0.06, each 12 x 12: left 15 pixels are lit, all at 1;
+    right 50 are lit, from 0.01 to 0.97
+    """
+    renderings, exact = seed_000_renderings()
+    centre = de_casteljau(SEED_000_CUBIC, t)
+    aliased, extent = crop(renderings["nearest_round"], centre, size)
+    smooth, _ = crop(exact, centre, size)
+    figure, axes = pixel_figure(
+        [
+            (aliased, extent, "one pixel per sample"),
+            (smooth, extent, "each pixel: the area the stroke covers"),
+        ],
+        zoom,
+        legend=[(VERMILLION, "the true curve")],
+    )
+    for panel in axes:
+        _curve_overlay(panel, np.asarray(SEED_000_CUBIC, dtype=float))
+    caption = (
+        f"{size} x {size} pixels around t = {t:g}, each {zoom} x {zoom}: left "
+        f"{np.count_nonzero(aliased)} pixels are lit, all at 1; right "
+        f"{np.count_nonzero(smooth > 0.01)} are lit, from 0.01 to {smooth.max():.2f}"
+    )
+    return Still.of(figure, caption)
+
+
+def pixel_area_figure(zoom: int = 64) -> Still:
+    """A stroke of width 1 across a 6 x 4 patch of pixels, each shaded by the area it covers.
+
+    Examples
+    --------
+    >>> pixel_area_figure()
+    pixel (2, 1) is 0.34 covered: the mean of the stroke over its square, lesson 04's box filter
+    """
+    line = np.array([[-0.5, 3.4], [6.5, 0.6]])
+    shape = (4, 6)
+    coverage = reference(line, shape, width=1.0, k=64)
+    figure, (axes,) = pixel_figure([(coverage, (0, 6, 4, 0), "")], zoom, title_height=8)
+    direction = (line[1] - line[0]) / np.linalg.norm(line[1] - line[0])
+    normal = np.array([-direction[1], direction[0]]) * 0.5
+    band = [line[0] + normal, line[1] + normal, line[1] - normal, line[0] - normal]
+    axes.add_patch(Polygon(band, closed=True, fill=False, edgecolor=VERMILLION, lw=1.5))
+    grid = [[(x, 0), (x, 4)] for x in range(7)] + [[(0, y), (6, y)] for y in range(5)]
+    axes.add_collection(LineCollection(grid, colors=BLUE, linewidths=0.6, alpha=0.7))
+    for row, column in np.ndindex(*shape):
+        value = coverage[row, column]
+        axes.text(
+            column + 0.5,
+            row + 0.5,
+            f"{value:.2f}",
+            ha="center",
+            va="center",
+            fontsize=9,
+            color="black" if value > 0.5 else "white",
+        )
+    caption = (
+        f"pixel (2, 1) is {coverage[1, 2]:.2f} covered: the mean of the stroke over its "
+        "square, lesson 04's box filter"
+    )
+    return Still.of(figure, caption)
+
+
+def splat_figure(x: float = 3.3, y: float = 2.8, zoom: int = 96) -> Still:
+    """One curve point shared among the four pixels whose centres surround it.
+
+    Examples
+    --------
+    >>> splat_figure()  # doctest: +NORMALIZE_WHITESPACE
+    (3.3, 2.8) lies 0.8 right of and 0.3 below the centre (2.5, 2.5):
+    weights 0.14, 0.56, 0.06 and 0.24
+    """
+    pixels, weights = bilinear_centres([[x, y]])
+    left, top = int(pixels[:, 0].min()) - 1, int(pixels[:, 1].min()) - 1
+    image = np.zeros((4, 4))
+    for (column, row), weight in zip(pixels, weights, strict=True):
+        image[row - top, column - left] = weight
+    extent = (left, left + 4, top + 4, top)
+    figure, (axes,) = pixel_figure([(image, extent, "")], zoom, title_height=8)
+    grid = [[(c, top), (c, top + 4)] for c in range(left, left + 5)]
+    grid += [[(left, r), (left + 4, r)] for r in range(top, top + 5)]
+    axes.add_collection(LineCollection(grid, colors=BLUE, linewidths=0.6, alpha=0.7))
+    first = np.array([math.floor(x - 0.5) + 0.5, math.floor(y - 0.5) + 0.5])
+    centres = first + np.array([[0, 0], [1, 0], [0, 1], [1, 1]])
+    axes.plot(*centres.T, "+", color=BLUE, ms=10, mew=1.5)
+    axes.plot([first[0], x, x], [first[1], first[1], y], ":", color=GREEN, lw=1.5)
+    axes.plot([x], [y], "o", color=VERMILLION, ms=7)
+    dx, dy = x - first[0], y - first[1]
+    label = {"color": GREEN, "fontsize": 9, "bbox": {"facecolor": "white", "lw": 0, "pad": 1}}
+    axes.text(first[0] + dx / 2, first[1] - 0.12, f"dx = {dx:.1f}", ha="center", **label)
+    axes.text(x - 0.06, first[1] + dy / 2 + 0.1, f"dy = {dy:.1f}", ha="right", **label)
+    order = np.lexsort((pixels[:, 0], pixels[:, 1]))
+    for (column, row), weight in zip(pixels[order], weights[order], strict=True):
+        axes.text(
+            column + 0.08,
+            row + 0.9,
+            f"{weight:.2f}",
+            ha="left",
+            fontsize=10,
+            color="black" if weight > 0.5 else "white",
+        )
+    shares = ", ".join(f"{w:.2f}" for w in weights[order][:-1]) + f" and {weights[order][-1]:.2f}"
+    caption = (
+        f"({x:g}, {y:g}) lies {dx:.1f} right of and {dy:.1f} below the centre "
+        f"({first[0]:g}, {first[1]:g}): weights {shares}"
+    )
+    return Still.of(figure, caption)
+
+
+def brightness_figure(
+    method: str = "bilinear_centres", steps: tuple[float, ...] = (0.02, 0.005, 0.001, 0.0002)
+) -> Still:
+    """Ink per unit length along the curve at several t steps: counted, and weighted by length.
+
+    Examples
+    --------
+    >>> brightness_figure()  # doctest: +NORMALIZE_WHITESPACE
+    ink per px of length, step 0.001: counted 0.50..1.09, by length 0.75..1.00;
+    step 0.0002: counted 1.24..2.00, by length 1.00..1.00
+    """
+    figure = Figure(figsize=(9.0, 3.0), dpi=100)
+    panels = figure.subplots(1, 2, sharey=True)
+    ranges = {}
+    for axes, weighting, title in zip(
+        panels,
+        ("count", "arc_length"),
+        ("counted, as the handouts do", "weighted by the length each sample stands for"),
+        strict=True,
+    ):
+        for step in steps:
+            image = render(SEED_000_CUBIC, SEED_000_SHAPE, method, step=step, weighting=weighting)
+            positions, density = intensity_along(image, SEED_000_CUBIC)
+            axes.plot(positions, density, lw=1.2, label=f"step {step:g}")
+            ranges[weighting, step] = (density.min(), density.max())
+        axes.axhline(1.0, color="black", lw=0.6, ls="--")
+        axes.set_title(title, fontsize=9)
+        axes.set_xlabel("distance along the curve (px)", fontsize=8)
+        axes.tick_params(labelsize=7)
+    panels[0].set_ylabel("ink per px of length", fontsize=8)
+    panels[1].legend(fontsize=7)
+    figure.tight_layout()
+    parts = []
+    for step in steps[-2:]:
+        (c0, c1), (a0, a1) = ranges["count", step], ranges["arc_length", step]
+        parts.append(f"step {step:g}: counted {c0:.2f}..{c1:.2f}, by length {a0:.2f}..{a1:.2f}")
+    return Still.of(figure, "ink per px of length, " + "; ".join(parts))
+
+
+class Table(str):
+    """Text that a notebook shows as it is (a ``str`` whose repr is itself)."""
+
+    def __repr__(self) -> str:
+        return str(self)
+
+
+def variants_table() -> Table:
+    """The handouts' splats against the exact coverage: error, and brightness along the curve.
+
+    RMSE is over the whole 700 x 700 image; CV is the coefficient of
+    variation of the ink per unit length, over pieces of 8 px along the
+    curve (0 for an evenly bright curve). Counted at the handouts' step
+    0.001, and weighted by arc length.
+    """
+    renderings, exact = seed_000_renderings()
+    names = [name for name in ROLES if name not in ("stroke_area", AGG)]
+    counted = quality_table({n: renderings[n] for n in names}, SEED_000_CUBIC, exact)
+    by_length = quality_table({n: renderings[n + ARC_LENGTH] for n in names}, SEED_000_CUBIC, exact)
+    others = quality_table({n: renderings[n] for n in ("stroke_area", AGG)}, SEED_000_CUBIC, exact)
+    lines = [
+        f"{'variant':34s} {'what it does':40s} {'counted':>15s} {'by length':>15s}",
+        f"{'':34s} {'':40s} {'RMSE':>7s} {'CV':>7s} {'RMSE':>7s} {'CV':>7s}",
+    ]
+    for name, count, length in zip(names, counted, by_length, strict=True):
+        who, what = ROLES[name]
+        lines.append(
+            f"{who:34s} {what:40s} {count['rmse']:7.4f} {100 * count['cv']:6.1f}% "
+            f"{length['rmse']:7.4f} {100 * length['cv']:6.1f}%"
+        )
+    for row in others:
+        who, what = ROLES[row["name"]]
+        lines.append(f"{who:34s} {what:40s} {row['rmse']:7.4f} {100 * row['cv']:6.1f}% {'':>15s}")
+    return Table("\n".join(lines))
+
+
+def variants_figure() -> Still:
+    """The handouts' splats' error and brightness variation, counted and weighted by length.
+
+    Examples
+    --------
+    >>> variants_figure()  # doctest: +NORMALIZE_WHITESPACE
+    weighted by length, the CV falls from 20.9-24.1% to 0.1-6.5%;
+    the least error: the stroke's area (library), 0.0002
+    """
+    renderings, exact = seed_000_renderings()
+    names = [name for name in ROLES if name not in ("stroke_area", AGG)]
+    counted = quality_table({n: renderings[n] for n in names}, SEED_000_CUBIC, exact)
+    by_length = quality_table({n: renderings[n + ARC_LENGTH] for n in names}, SEED_000_CUBIC, exact)
+    others = quality_table({n: renderings[n] for n in ("stroke_area", AGG)}, SEED_000_CUBIC, exact)
+    labels = [ROLES[n][0] for n in names] + [ROLES[row["name"]][0] for row in others]
+    figure = Figure(figsize=(9.0, 3.4), dpi=100)
+    error_axes, cv_axes = figure.subplots(1, 2, sharey=True)
+    rows = np.arange(len(labels))[::-1]
+    height = 0.38
+    for axes, key, scale in ((error_axes, "rmse", 1.0), (cv_axes, "cv", 100.0)):
+        axes.barh(
+            rows[: len(names)] + height / 2,
+            [scale * row[key] for row in counted],
+            height,
+            color="0.7",
+            label="counted (the handouts)",
+        )
+        axes.barh(
+            rows[: len(names)] - height / 2,
+            [scale * row[key] for row in by_length],
+            height,
+            color=BLUE,
+            label="weighted by length",
+        )
+        axes.barh(rows[len(names) :], [scale * row[key] for row in others], height, color=GREEN)
+        axes.tick_params(labelsize=7)
+    error_axes.set_xscale("log")
+    error_axes.set_xlabel("RMSE against the exact coverage (log scale)", fontsize=8)
+    cv_axes.set_xlabel("brightness variation along the curve, CV (%)", fontsize=8)
+    error_axes.set_yticks(rows, labels, fontsize=8)
+    cv_axes.legend(fontsize=7, loc="lower right")
+    figure.tight_layout()
+    low = min(row["cv"] for row in counted)
+    high = max(row["cv"] for row in counted)
+    fixed_low = min(row["cv"] for row in by_length)
+    fixed_high = max(row["cv"] for row in by_length)
+    best = min(counted + by_length + others, key=lambda row: row["rmse"])
+    best_name = ROLES.get(best["name"], (best["name"],))[0]
+    caption = (
+        f"weighted by length, the CV falls from {100 * low:.1f}-{100 * high:.1f}% to "
+        f"{100 * fixed_low:.1f}-{100 * fixed_high:.1f}%; the least error: {best_name}, "
+        f"{best['rmse']:.4f}"
+    )
+    return Still.of(figure, caption)
+
+
+def claims() -> Table:
+    """The GAMES101 report's three conclusions about its three splats, measured.
+
+    Examples
+    --------
+    >>> print(claims().splitlines()[0])
+    no anti-aliasing    pixels differing from it:     0  RMSE 0.0327  position error 0.390 px
+    """
+    renderings, exact = seed_000_renderings()
+    plain = renderings["nearest_round"]
+    shown = (
+        ("no anti-aliasing", plain),
+        ("left (Point2f)", renderings["bilinear_zero_offset"]),
+        ("middle (Point)", renderings["bilinear_corners"]),
+        ("right (rounded)", renderings["bilinear_centres"]),
+    )
+    return Table(
+        "\n".join(
+            f"{name:19s} pixels differing from it: {np.count_nonzero(image != plain):5d}  "
+            f"RMSE {rmse(image, exact):.4f}  position error "
+            f"{position_error(image, SEED_000_CUBIC):.3f} px"
+            for name, image in shown
+        )
+    )

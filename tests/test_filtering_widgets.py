@@ -1,9 +1,18 @@
-"""Lesson 07's app: repeated blurs under each border rule, as course.filters computes them."""
+"""Lesson 07's apps: any kernel, and repeated blurs under each border rule, as course.filters
+computes them."""
 
 import numpy as np
+import pytest
 
 from course import filters
-from course.widgets.filtering import RepeatedBlurApp, border_ring_mean
+from course.widgets.filtering import (
+    KERNELS,
+    KernelApp,
+    RepeatedBlurApp,
+    border_ring_mean,
+    format_kernel,
+    parse_kernel,
+)
 
 
 def test_repeated_blur_app_applies_each_border_rule_n_times():
@@ -34,3 +43,77 @@ def test_repeated_blur_app_measures_the_dark_frame_of_zero_padding():
     assert "at 1.00 x" in app.titles["reflect"].get_text()
     ratio = border_ring_mean(app.wholes["zero"].get_array()) / 0.5
     assert ratio < 0.8 and f"at {ratio:.2f} x" in app.titles["zero"].get_text()
+
+
+def test_kernel_app_applies_the_lab_dot_product_under_the_chosen_border():
+    rng = np.random.default_rng(3)
+    image = rng.random((30, 24))
+    app = KernelApp(image, window=(5, 20))
+    app.refresh()
+    np.testing.assert_allclose(app.result, filters.convolve(image, filters.BOX, "replicate"))
+    app.controls["border"].value = "handout"
+    np.testing.assert_allclose(app.result, filters.blur(image), atol=1e-12)
+    app.controls["preset"].value = "Sobel x"
+    assert app.value("kernel") == KERNELS["Sobel x"]
+    # The lab's dot product: a rising edge gives a positive Gx, not the convolution's negative.
+    step = np.zeros((5, 6))
+    step[:, 3:] = 1.0
+    edge_app = KernelApp(step, kernel="Sobel x", window=(0, 0))
+    edge_app.refresh()
+    assert edge_app.result[2, 3] == 4.0
+    # The zoomed window is the filtered image's 16 x 16 there, clamped into the image.
+    np.testing.assert_array_equal(app.panels["corner"].values, app.result[5:21, 8:24])
+
+
+def test_kernel_app_preset_and_typed_kernel_follow_each_other():
+    app = KernelApp(np.full((20, 20), 0.5))
+    app.refresh()
+    app.controls["preset"].value = "Gaussian"
+    assert app.value("kernel") == KERNELS["Gaussian"]
+    np.testing.assert_allclose(app.kernel, np.array([[1, 2, 1], [2, 4, 2], [1, 2, 1]]) / 16)
+    app.controls["kernel"].value = "0 0 0; 0 2 0; 0 0 0"
+    assert app.value("preset") == "typed"
+    np.testing.assert_allclose(app.result, 1.0)
+    app.controls["preset"].value = "identity"
+    np.testing.assert_allclose(app.result, 0.5)
+
+
+def test_kernel_app_keeps_the_last_kernel_when_the_text_is_wrong_and_says_why():
+    app = KernelApp(np.full((20, 20), 0.5))
+    app.refresh()
+    app.controls["kernel"].value = "1 2; 3 4"
+    assert "expected 3 rows of 3 numbers" in app.status.value
+    np.testing.assert_allclose(app.kernel, filters.BOX)
+    app.controls["kernel"].value = "1/0 0 0; 0 0 0; 0 0 0"
+    assert "every entry must be a number" in app.status.value
+
+
+def test_kernel_app_shows_signed_results_around_zero_and_warns_on_the_handout_rule():
+    app = KernelApp(np.random.default_rng(0).random((20, 20)), kernel="Sobel y")
+    app.refresh()
+    panel = app.panels["filtered"]
+    assert panel.vmin == -panel.vmax and panel.vmax == np.abs(app.result).max()
+    app.controls["border"].value = "handout"
+    assert "read as zero padding" in app.status.value
+    np.testing.assert_allclose(
+        app.result, filters.convolve(app.image, filters.SOBEL_Y[::-1, ::-1], "zero")
+    )
+    # Every pixel of the filtered panel is pasted at the app's whole zoom.
+    pasted = app.pixel_images[panel.axes]
+    assert pasted.shape == (20 * KernelApp.ZOOM, 20 * KernelApp.ZOOM, 3)
+
+
+def test_parse_kernel_reads_fractions_commas_and_lines():
+    np.testing.assert_allclose(
+        parse_kernel("1, 2, 3\n4 5 6; 7 8 -9/2"), [[1, 2, 3], [4, 5, 6], [7, 8, -4.5]]
+    )
+    with pytest.raises(ValueError, match="kernel: expected 3 rows"):
+        parse_kernel("")
+    with pytest.raises(ValueError, match="kernel: every entry"):
+        parse_kernel("a b c; 1 2 3; 4 5 6")
+    assert format_kernel(parse_kernel(KERNELS["sharpen"])) == KERNELS["sharpen"]
+
+
+def test_kernel_app_rejects_a_colour_image_by_name():
+    with pytest.raises(ValueError, match="image: expected a gray"):
+        KernelApp(np.zeros((10, 10, 3)))

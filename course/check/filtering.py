@@ -1,4 +1,12 @@
-"""Lesson 07 exercises: the lab's ``Blur`` and ``Edge``."""
+"""Lesson 07 exercises: the lab's ``Blur`` and ``Edge``.
+
+A failure names the first wrong pixel as (x, y) with its window (how many of
+its nine neighbours lie inside the image), draws a map of where the output
+differs, and recognises the usual border slips: zero padding (dividing by 9
+everywhere), the frame skipped or copied, the nearest pixel repeated where
+the report averages only the pixels inside; for Sobel also a clipped
+magnitude and Gx alone.
+"""
 
 from __future__ import annotations
 
@@ -7,16 +15,20 @@ from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, close, run_cases
+from course.check.base import CheckResult, Mistake, close, run_cases
+from course.check.pictures import image_picture
+from course.filters import BOX, SOBEL_X, convolve, sobel
 from course.filters import blur as reference_blur
-from course.filters import sobel
 
 __all__ = ["blur", "edge"]
 
 
 def _cases() -> list[dict[str, Any]]:
     rng = np.random.default_rng(7)
+    square = np.full((8, 10), 0.2)
+    square[2:6, 3:8] = 0.9  # a bright square: its edges and the frame show in the map
     return [
+        {"image": square},
         {"image": rng.random((5, 7))},
         {"image": rng.random((1, 1))},
         {"image": rng.random((1, 6))},
@@ -28,6 +40,103 @@ def _cases() -> list[dict[str, Any]]:
 
 def _as_float(value: Any) -> np.ndarray:
     return np.asarray(value, dtype=float)
+
+
+def _summary(value: Any) -> str:
+    """An output image in one line; the picture shows it pixel for pixel."""
+    array = _as_float(value)
+    if array.size == 0:
+        return f"an empty array of shape {array.shape}"
+    return f"shape {array.shape}, values {array.min():.4g} to {array.max():.4g} (see the map)"
+
+
+def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
+    return image_picture(expected, given, title="the first case that differs, pixel for pixel")
+
+
+def _explain(case: dict[str, Any], expected: Any, given: Any) -> str:
+    """The first wrong pixel as (x, y), and how much of its window lies inside the image."""
+    want, have = _as_float(expected), _as_float(given)
+    if want.shape != have.shape:
+        return f"your output has shape {have.shape}; the image has shape {want.shape}"
+    wrong = np.argwhere(~np.isclose(want, have, atol=1e-9, rtol=1e-9))
+    row, column = int(wrong[0][0]), int(wrong[0][1])
+    height, width = want.shape[:2]
+    inside = (min(row + 1, height - 1) - max(row - 1, 0) + 1) * (
+        min(column + 1, width - 1) - max(column - 1, 0) + 1
+    )
+    where = "inside the image" if inside == 9 else f"on the border: {inside} of 9 inside"
+    count = len({(int(r), int(c)) for r, c, *_ in wrong})
+    differ = "1 pixel differs" if count == 1 else f"{count} pixels differ"
+    return f"the first wrong pixel is (x, y) = ({column}, {row}), {where}; {differ}"
+
+
+def _frame_from(image: np.ndarray, inner: np.ndarray, fill: np.ndarray | None) -> np.ndarray:
+    """``inner`` inside the one-pixel frame, ``fill`` (or 0) on it: a loop from 1 to size - 2."""
+    output = np.zeros_like(image) if fill is None else fill.copy()
+    output[1:-1, 1:-1] = inner[1:-1, 1:-1]
+    return output
+
+
+def _correlate(image: Any, kernel: np.ndarray, border: str) -> np.ndarray:
+    # The lab's dot product of kernel and window: a convolution with the flipped kernel.
+    return convolve(image, kernel[::-1, ::-1], border)
+
+
+BLUR_MISTAKES = (
+    Mistake(
+        "zero padding",
+        "you divide by 9 everywhere, as if the pixels outside the image were black: the frame "
+        "darkens. The report averages only the neighbours inside the image (6 on an edge, 4 at "
+        "a corner).",
+        lambda image: convolve(image, BOX, "zero"),
+    ),
+    Mistake(
+        "the frame skipped",
+        "your loops run from 1 to size - 2 and leave the frame at 0. Blur every pixel, "
+        "averaging the neighbours that exist.",
+        lambda image: _frame_from(image, reference_blur(image), None),
+    ),
+    Mistake(
+        "the frame copied",
+        "your loops skip the one-pixel frame and copy it from the input. Blur every pixel, "
+        "averaging the neighbours that exist.",
+        lambda image: _frame_from(image, reference_blur(image), np.asarray(image, dtype=float)),
+    ),
+    Mistake(
+        "the edge pixel repeated",
+        "outside the image you read the nearest pixel inside (replicate), so the edge row "
+        "counts twice. The report's rule averages only the pixels inside.",
+        lambda image: convolve(image, BOX, "replicate"),
+    ),
+)
+
+EDGE_MISTAKES = (
+    Mistake(
+        "zero padding",
+        "you read the pixels outside the image as 0: the frame lights up as a false edge. "
+        "Read the nearest pixel inside (clamp the index).",
+        lambda image: sobel(image, border="zero"),
+    ),
+    Mistake(
+        "clipped to 1",
+        "your magnitude stops at 1, as writing it into an 8-bit image would: Sobel's runs up "
+        "to 4 sqrt(2). Return sqrt(Gx^2 + Gy^2) as it is.",
+        lambda image: np.clip(sobel(image, border="replicate"), 0.0, 1.0),
+    ),
+    Mistake(
+        "Gx alone",
+        "your output is |Gx|: horizontal changes only. Add Gy, the same sum with the "
+        "transposed kernel, and take sqrt(Gx^2 + Gy^2).",
+        lambda image: np.abs(_correlate(image, SOBEL_X, "replicate")),
+    ),
+    Mistake(
+        "the frame skipped",
+        "your loops run from 1 to size - 2 and leave the frame at 0. Compute every pixel, "
+        "reading outside pixels from the nearest one inside.",
+        lambda image: _frame_from(image, sobel(image, border="replicate"), None),
+    ),
+)
 
 
 def blur(student: Callable[..., Any]) -> CheckResult:
@@ -42,7 +151,7 @@ def blur(student: Callable[..., Any]) -> CheckResult:
     --------
     >>> from course.filters import blur as library_blur
     >>> blur(library_blur)
-    PASS Blur: all 6 cases pass
+    PASS Blur: all 7 cases pass
     """
     return run_cases(
         "Blur",
@@ -53,6 +162,10 @@ def blur(student: Callable[..., Any]) -> CheckResult:
         _as_float,
         hint="each output pixel is the mean of the 3 x 3 neighbours that lie inside the image: "
         "9 inside, 6 on an edge, 4 at a corner.",
+        mistakes=BLUR_MISTAKES,
+        picture=_picture,
+        explain=_explain,
+        show=_summary,
     )
 
 
@@ -69,7 +182,7 @@ def edge(student: Callable[..., Any]) -> CheckResult:
     --------
     >>> from course.filters import sobel
     >>> edge(sobel)
-    PASS Edge: all 6 cases pass
+    PASS Edge: all 7 cases pass
     """
     return run_cases(
         "Edge",
@@ -80,4 +193,8 @@ def edge(student: Callable[..., Any]) -> CheckResult:
         _as_float,
         hint="read outside pixels from the nearest pixel inside (clamp the index); Gx and Gy "
         "are two 3 x 3 weighted sums, and the answer is sqrt(Gx^2 + Gy^2).",
+        mistakes=EDGE_MISTAKES,
+        picture=_picture,
+        explain=_explain,
+        show=_summary,
     )

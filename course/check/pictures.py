@@ -152,9 +152,12 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     if difference.ndim == 3:
         difference = difference.mean(axis=2)
     limit = max(float(np.abs(difference).max()), 1e-12)
+    # Values past 1 (a gradient magnitude) get a gray scale that reaches them, named in the title.
+    top = max(1.0, float(np.max(want, initial=0.0)))
+    scale = "" if top == 1.0 else f", 0 to {top:.3g}"
     panels = (
-        (want, "expected", {"cmap": "gray", "vmin": 0, "vmax": 1}),
-        (have, "yours", {"cmap": "gray", "vmin": 0, "vmax": 1}),
+        (want, f"expected{scale}", {"cmap": "gray", "vmin": 0, "vmax": top}),
+        (have, f"yours{scale}", {"cmap": "gray", "vmin": 0, "vmax": top}),
         (difference, "yours minus expected", {"cmap": "RdBu_r", "vmin": -limit, "vmax": limit}),
     )
     shown = None

@@ -9,16 +9,16 @@ import numpy as np
 from course import filters, images
 from course.classroom.pictures import (
     app_picture,
-    figure_picture,
     landmark_at,
     panel_picture,
     read_only,
     rgb_color,
+    still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.widgets import filtering_figures as figures
 from course.widgets.base import SliderApp
-from course.widgets.dithering import side_by_side
-from course.widgets.filtering import RepeatedBlurApp, blurred
+from course.widgets.filtering import KernelApp, RepeatedBlurApp, blurred
 
 
 @functools.cache
@@ -49,20 +49,10 @@ def repeated_blur_landmarks(app: SliderApp) -> list[Landmark]:
     return landmarks
 
 
-def blur_and_edges() -> bytes:
-    rgb = half_size_photograph()
-    gray = images.to_gray(rgb)
-    five_blurs = rgb
-    for _ in range(5):
-        five_blurs = filters.blur(five_blurs)
-    pictures = {
-        "original": rgb,
-        "blur": filters.blur(rgb),
-        "blur 5 times": five_blurs,
-        "Sobel (gray), clipped": np.clip(filters.sobel(gray), 0, 1),
-        "Sobel per channel, clipped": np.clip(filters.sobel(rgb), 0, 1),
-    }
-    return figure_picture(side_by_side(pictures, centre=(150, 80), size=40, figure_width=1000))
+def kernel_app_picture() -> bytes:
+    app = KernelApp()
+    app.controls["preset"].value = "Sobel x"
+    return app_picture(app)
 
 
 def preview() -> bytes:
@@ -73,9 +63,9 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "blur and find edges with 3 x 3 kernels, as a loop and separably",
-        "choose a border rule and see what each does to the image's edge",
-        "explain why repeated blurring spreads like a Gaussian",
+        "compute a 3 x 3 filter by hand and as a loop: a weighted sum of each pixel's window",
+        "write the lab's Blur and Sobel Edge",
+        "choose what a window reads past the image's edge, and see what each rule does",
     ),
     minutes=35,
     preview=Picture(
@@ -83,14 +73,32 @@ LESSON = Lesson(
     ),
     handout="Lab 1 report (seed 001), Task 2: 3 x 3 blur with the report's border rule "
     "and Sobel edges",
-    teaches="blur and Sobel edges with 3 x 3 kernels, separable and fast; the four "
-    "border rules and zero padding's dark frame, measured; scipy.ndimage agrees inside",
+    teaches="3 x 3 kernels as weighted sums of a window (the box is lesson 04's box filter), "
+    "blur and Sobel edges, any kernel on a photograph; the four border rules and zero "
+    "padding's dark frame and false edges, measured",
     pictures=(
-        Picture(
+        still_picture(
             "07_blur_and_edges",
-            "the photograph blurred once and five times, and its Sobel magnitude (gray "
-            "and per channel, clipped to 1), each above a zoomed window",
-            blur_and_edges,
+            "the face blurred once and five times, and its Sobel magnitude clipped at 1, "
+            "each pixel 2 x 2",
+            figures.filters_figure,
+        ),
+        still_picture(
+            "07_one_window",
+            "one output pixel of the box blur: the mean of its 3 x 3 window, numbers shown",
+            figures.window_figure,
+        ),
+        Picture(
+            "07_kernel_app_sobel_x",
+            "Sobel x typed into the kernel app: red where the face gets brighter to the "
+            "right, blue where darker, the window at the image's edge zoomed",
+            kernel_app_picture,
+        ),
+        still_picture(
+            "07_border_after_20_blurs",
+            "the face's right edge after 20 blurs under each border rule: zero padding's "
+            "dark frame",
+            figures.border_figure,
         ),
         Picture(
             "07_repeated_blur_8",
@@ -102,6 +110,7 @@ LESSON = Lesson(
     sliders=(
         SliderMove(
             build=repeated_blur_app,
+            app=1,  # the notebook's second app: the kernel app comes first
             control="repeats",
             moves=(("ArrowRight", "ArrowRight"), ("Home",), ("End",)),
             landmarks=repeated_blur_landmarks,

@@ -1,4 +1,10 @@
-"""Lesson 07 app: repeated 3 x 3 blurs under the four border rules, side by side.
+"""Lesson 07's apps: any 3 x 3 kernel on the photograph, and repeated blurs at the border.
+
+:class:`KernelApp` runs a 3 x 3 kernel the student types (or a preset: box,
+Gaussian, sharpen, Sobel x and y) over the photograph, as the lab's loop
+does (the dot product of the kernel with each pixel's window), and shows
+the result pixel for pixel beside the original, with the top-left corner
+zoomed, where the border rule decides what the window reads.
 
 :class:`RepeatedBlurApp` blurs an image n times (the slider) with each border
 rule of :mod:`course.filters` and shows the whole image above a zoomed crop
@@ -8,17 +14,75 @@ that grows with every pass; the other three keep the edge's brightness.
 
 from __future__ import annotations
 
+import re
+from fractions import Fraction
 from typing import Any
 
 import ipywidgets as widgets
+import matplotlib
 import numpy as np
+from matplotlib.patches import Rectangle
 
 from course import filters
 from course._validate import as_image, as_int
+from course.images import photograph, to_gray
 from course.widgets.base import SliderApp
-from course.widgets.picture import GRAY_PIXELS, bare_axes
+from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
-__all__ = ["RepeatedBlurApp", "border_ring_mean"]
+__all__ = [
+    "KERNELS",
+    "KernelApp",
+    "RepeatedBlurApp",
+    "border_ring_mean",
+    "format_kernel",
+    "parse_kernel",
+]
+
+#: The presets of :class:`KernelApp`, as the student would type them.
+KERNELS = {
+    "box": "1/9 1/9 1/9; 1/9 1/9 1/9; 1/9 1/9 1/9",
+    "Gaussian": "1/16 2/16 1/16; 2/16 4/16 2/16; 1/16 2/16 1/16",
+    "sharpen": "0 -1 0; -1 5 -1; 0 -1 0",
+    "Sobel x": "-1 0 1; -2 0 2; -1 0 1",
+    "Sobel y": "-1 -2 -1; 0 0 0; 1 2 1",
+    "identity": "0 0 0; 0 1 0; 0 0 0",
+}
+
+
+def parse_kernel(text: str) -> np.ndarray:
+    """Three rows of three numbers (fractions allowed), rows split by ``;`` or new lines.
+
+    Examples
+    --------
+    >>> parse_kernel("1/16 2/16 1/16; 2/16 4/16 2/16; 1/16 2/16 1/16").sum()
+    np.float64(1.0)
+    >>> parse_kernel("1 2; 3 4")
+    Traceback (most recent call last):
+    ...
+    ValueError: kernel: expected 3 rows of 3 numbers; got rows of 2, 2
+    """
+    rows = [row.split() for row in re.split(r"[;\n]+", text.replace(",", " ")) if row.strip()]
+    if len(rows) != 3 or any(len(row) != 3 for row in rows):
+        lengths = ", ".join(str(len(row)) for row in rows) or "nothing"
+        raise ValueError(f"kernel: expected 3 rows of 3 numbers; got rows of {lengths}")
+    try:
+        values = [[float(Fraction(token)) for token in row] for row in rows]
+    except (ValueError, ZeroDivisionError) as error:
+        raise ValueError(
+            f"kernel: every entry must be a number like 2, -0.5 or 1/9 ({error})"
+        ) from None
+    return np.array(values)
+
+
+def format_kernel(kernel: np.ndarray) -> str:
+    """The kernel as the app shows it: three rows of three numbers.
+
+    Examples
+    --------
+    >>> format_kernel(filters.SOBEL_X)
+    '-1 0 1; -2 0 2; -1 0 1'
+    """
+    return "; ".join(" ".join(f"{value:g}" for value in row) for row in np.asarray(kernel))
 
 
 def border_ring_mean(image: Any, thickness: int = 1) -> float:
@@ -102,3 +166,150 @@ class RepeatedBlurApp(SliderApp):
             self.titles[border].set_text(
                 f"{border!r}, {repeats} blurs\nedge pixels at {ratio:.2f} x the original"
             )
+
+
+class KernelApp(SliderApp):
+    """A 3 x 3 kernel over the photograph: the original, the result, and the corner zoomed.
+
+    Each output pixel is the dot product of the kernel with the pixel's 3 x 3
+    window, as the lab's loop computes it (a correlation), with the border
+    rule picked. A kernel whose weights sum to 0 (an edge detector) gives
+    values of both signs: they are shown on a blue-white-red scale around 0,
+    and anything else in gray from 0 to 1. Type a kernel in the text box, or
+    pick a preset to fill it in. ``window`` is the (row, column) of the
+    zoomed 16 x 16 window's top-left pixel.
+    """
+
+    BLIT = True
+    ZOOM = 2
+    CORNER, CORNER_ZOOM = 16, 12
+
+    def __init__(
+        self,
+        image: Any = None,
+        kernel: str = "box",
+        border: str = "replicate",
+        window: tuple[int, int] = (40, 112),
+    ) -> None:
+        if image is None:
+            # The face, 150 x 128: its right edge is the light wall, where the border shows.
+            image = to_gray(photograph())[150:450:2, 128:384:2]
+        self.image = as_image(image, "image")
+        if self.image.ndim != 2:
+            raise ValueError(f"image: expected a gray (H, W) image; got shape {self.image.shape}")
+        controls = {
+            "preset": widgets.Dropdown(
+                options=[*KERNELS, "typed"], value=kernel, description="preset"
+            ),
+            "kernel": widgets.Textarea(
+                value=KERNELS[kernel], description="kernel", continuous_update=False
+            ),
+            "border": widgets.Dropdown(options=filters.BORDERS, value=border, description="border"),
+        }
+        height, width = self.image.shape
+        side_h, side_w = height * self.ZOOM, width * self.ZOOM
+        # The zoomed window: 16 x 16 pixels, or the whole of a smaller image, 192 px wide.
+        self.corner = min(self.CORNER, height, width)
+        corner_zoom = self.CORNER * self.CORNER_ZOOM // self.corner
+        corner = self.corner * corner_zoom
+        gap, margin, top = 16, 12, 48
+        columns = margin + 2 * side_w + corner + 2 * gap + margin
+        tallest = max(side_h, corner)
+        rows = top + tallest + margin
+        super().__init__(controls, shape=(rows, columns))
+        self.kernel = parse_kernel(KERNELS[kernel])
+        self.result = self.image
+        self.panels: dict[str, PixelPanel] = {}
+        self.titles = {}
+        for index, (name, size, zoom, (h, w)) in enumerate(
+            (
+                ("original", side_w, self.ZOOM, (height, width)),
+                ("filtered", side_w, self.ZOOM, (height, width)),
+            )
+        ):
+            axes = bare_axes(
+                pixel_axes(
+                    self.figure,
+                    margin + index * (side_w + gap),
+                    margin + tallest - side_h,  # the panels' tops in line
+                    size,
+                    side_h,
+                )
+            )
+            self.panels[name] = PixelPanel(self, axes, (h, w), zoom)
+            self.titles[name] = axes.set_title(name, fontsize=9)
+        axes = bare_axes(
+            pixel_axes(
+                self.figure, margin + 2 * (side_w + gap), margin + tallest - corner, corner, corner
+            )
+        )
+        self.panels["corner"] = PixelPanel(self, axes, (self.corner, self.corner), corner_zoom)
+        self.titles["corner"] = axes.set_title("", fontsize=9)
+        self.panels["original"].set_data(self.image)
+        top = min(max(0, int(window[0])), height - self.corner)
+        left = min(max(0, int(window[1])), width - self.corner)
+        self.window = (slice(top, top + self.corner), slice(left, left + self.corner))
+        # Drawn over the pasted pixels each time, so they are moving artists.
+        self.marks = [
+            self.panels[name].axes.add_patch(
+                Rectangle(
+                    (left, top), self.corner, self.corner, fill=False, color="#D55E00", lw=1.2
+                )
+            )
+            for name in ("original", "filtered")
+        ]
+        self.preset = kernel
+        self.animate(*self.titles.values(), *self.marks)
+
+    def _set_quietly(self, name: str, value: Any) -> None:
+        """Set a control from ``update`` without a second redraw."""
+        held, self._held = self._held, True
+        try:
+            self.controls[name].value = value
+        finally:
+            self._held = held
+
+    def _follow_preset(self) -> None:
+        """A preset just picked fills in the kernel; a kernel typed over it is no preset."""
+        preset = self.value("preset")
+        if preset != self.preset and preset in KERNELS:
+            self._set_quietly("kernel", KERNELS[preset])
+        elif preset in KERNELS and self.value("kernel") != KERNELS[preset]:
+            self._set_quietly("preset", "typed")
+        self.preset = self.value("preset")
+
+    def filtered(self, kernel: np.ndarray, border: str) -> np.ndarray:
+        """The lab's dot product of ``kernel`` with each window, under ``border``."""
+        return filters.convolve(self.image, kernel[::-1, ::-1], border)
+
+    def update(self) -> None:
+        self._follow_preset()
+        try:
+            kernel = parse_kernel(self.value("kernel"))
+        except ValueError as error:
+            self.status.value = f"Kept the last kernel: {error}"
+            kernel = self.kernel
+        else:
+            self.status.value = ""
+        border = self.value("border")
+        if border == "handout" and abs(kernel.sum()) < 1e-12:
+            self.status.value = (
+                "The report's border rule averages the pixels inside; a kernel whose "
+                "weights sum to 0 has nothing to average, so it is read as zero padding."
+            )
+            border = "zero"
+        self.kernel = kernel
+        self.result = self.filtered(kernel, border)
+        signed = abs(kernel.sum()) < 1e-12
+        limit = max(float(np.abs(self.result).max()), 1e-12) if signed else 1.0
+        for name in ("filtered", "corner"):
+            panel = self.panels[name]
+            panel.colormap = (
+                matplotlib.colormaps["RdBu_r"] if signed else matplotlib.colormaps["gray"]
+            )
+            panel.vmin, panel.vmax = (-limit, limit) if signed else (0.0, 1.0)
+        self.panels["filtered"].set_data(self.result)
+        self.panels["corner"].set_data(self.result[self.window])
+        scale = f"blue -{limit:.2g} to red +{limit:.2g}" if signed else "gray 0 to 1, clipped"
+        self.titles["filtered"].set_text(f"filtered ({scale})")
+        self.titles["corner"].set_text(f"the red window, {border!r} border")

@@ -1,0 +1,164 @@
+"""Lesson 07's still pictures: blur and edges on the photograph, one output pixel's window,
+the border after many blurs, and the false edges zero padding draws.
+
+Each function returns a :class:`~course.widgets.picture.Still` whose caption
+states the numbers it shows; pixel views are at a whole zoom
+(:func:`~course.widgets.picture.pixel_figure`).
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+from matplotlib.collections import LineCollection
+from matplotlib.patches import Rectangle
+
+from course import filters
+from course.images import photograph, to_gray
+from course.widgets.filtering import blurred, border_ring_mean
+from course.widgets.picture import Still, pixel_figure
+
+__all__ = ["border_figure", "face", "false_edges_figure", "filters_figure", "window_figure"]
+
+BLUE, VERMILLION = "#0072B2", "#D55E00"
+
+
+@functools.cache
+def face() -> np.ndarray:
+    """The photograph's face, gray, 150 x 128 (every other pixel of rows 150-449, columns
+    128-383): its right edge is the light wall, where border rules show."""
+    image = to_gray(photograph())[150:450:2, 128:384:2]
+    image.flags.writeable = False
+    return image
+
+
+def filters_figure(zoom: int = 2) -> Still:
+    """The face, blurred once and five times, and its Sobel magnitude (clipped at 1).
+
+    Examples
+    --------
+    >>> filters_figure()
+    Sobel magnitude: max 4.06, 13.1% of the pixels above 1 (drawn white); each pixel 2 x 2
+    """
+    image = face()
+    five = image
+    for _ in range(5):
+        five = filters.blur(five)
+    edges = filters.sobel(image)
+    extent = (0, image.shape[1], image.shape[0], 0)
+    figure, _ = pixel_figure(
+        [
+            (image, extent, "original"),
+            (filters.blur(image), extent, "box blur"),
+            (five, extent, "box blur, 5 times"),
+            (np.clip(edges, 0, 1), extent, "Sobel magnitude"),
+        ],
+        zoom,
+    )
+    caption = (
+        f"Sobel magnitude: max {edges.max():.2f}, {(edges > 1).mean():.1%} of the pixels "
+        f"above 1 (drawn white); each pixel {zoom} x {zoom}"
+    )
+    return Still.of(figure, caption)
+
+
+def window_figure(row: int = 2, column: int = 2, zoom: int = 56) -> Still:
+    """One output pixel of the box blur: the mean of its 3 x 3 window, numbers shown.
+
+    Examples
+    --------
+    >>> window_figure()
+    the window around (x, y) = (2, 2) holds 0.19 ... 0.66; their mean, 0.418, is the output
+    """
+    patch = np.round(face()[44:49, 54:59], 2)
+    out = filters.blur(patch)
+    extent = (0, 5, 5, 0)
+    figure, axes = pixel_figure(
+        [(patch, extent, "input: the 3 x 3 window"), (out, extent, "output: its mean")],
+        zoom,
+        gap=40,
+    )
+    for panel, values in zip(axes, (patch, out), strict=True):
+        grid = [[(x, 0), (x, 5)] for x in range(6)] + [[(0, y), (5, y)] for y in range(6)]
+        panel.add_collection(LineCollection(grid, colors="0.5", linewidths=0.6))
+        for r, c in np.ndindex(*values.shape):
+            panel.text(
+                c + 0.5,
+                r + 0.5,
+                f"{values[r, c]:.2f}",
+                ha="center",
+                va="center",
+                fontsize=8,
+                color="black" if values[r, c] > 0.5 else "white",
+            )
+    axes[0].add_patch(
+        Rectangle((column - 1, row - 1), 3, 3, fill=False, edgecolor=VERMILLION, lw=2.5)
+    )
+    axes[1].add_patch(Rectangle((column, row), 1, 1, fill=False, edgecolor=VERMILLION, lw=2.5))
+    window = patch[row - 1 : row + 2, column - 1 : column + 2]
+    caption = (
+        f"the window around (x, y) = ({column}, {row}) holds {window.min():.2f} ... "
+        f"{window.max():.2f}; their mean, {out[row, column]:.3f}, is the output"
+    )
+    return Still.of(figure, caption)
+
+
+def border_figure(passes: int = 20, size: int = 16, zoom: int = 8) -> Still:
+    """The face's right edge after ``passes`` blurs under each border rule, zoomed.
+
+    Examples
+    --------
+    >>> border_figure()  # doctest: +NORMALIZE_WHITESPACE
+    after 20 blurs the outermost pixels are at 0.97 (handout), 0.20 (zero),
+    0.98 (replicate), 0.97 (reflect) times their first brightness
+    """
+    image = face()
+    results = dict.fromkeys(filters.BORDERS, image)
+    for _ in range(passes):
+        results = {border: blurred(result, border) for border, result in results.items()}
+    top = 40
+    left = image.shape[1] - size
+    extent = (left, left + size, top + size, top)
+    window = (slice(top, top + size), slice(left, left + size))
+    figure, _ = pixel_figure(
+        [(result[window], extent, f"{border!r}") for border, result in results.items()], zoom
+    )
+    original = border_ring_mean(image)
+    ratios = ", ".join(
+        f"{border_ring_mean(result) / original:.2f} ({border})"
+        for border, result in results.items()
+    )
+    caption = (
+        f"after {passes} blurs the outermost pixels are at {ratios} times their first brightness"
+    )
+    return Still.of(figure, caption)
+
+
+def false_edges_figure(zoom: int = 24) -> Still:
+    """Sobel on a flat gray image: zero padding draws an edge all around it.
+
+    Examples
+    --------
+    >>> false_edges_figure()
+    a flat 0.5 image has no edge; zero padding gives its frame 2.00 to 2.12, replicate 0.00
+    """
+    flat = np.full((8, 10), 0.5)
+    zero, replicate = filters.sobel(flat, "zero"), filters.sobel(flat, "replicate")
+    limit = float(zero.max())
+    extent = (0, 10, 8, 0)
+    figure, _ = pixel_figure(
+        [
+            (flat, extent, "flat 0.5"),
+            (zero / limit, extent, "Sobel, 'zero' border"),
+            (replicate / limit, extent, "Sobel, 'replicate'"),
+        ],
+        zoom,
+    )
+    frame = np.ones(flat.shape, dtype=bool)
+    frame[1:-1, 1:-1] = False
+    caption = (
+        f"a flat 0.5 image has no edge; zero padding gives its frame {zero[frame].min():.2f} "
+        f"to {zero[frame].max():.2f}, replicate {replicate.max():.2f}"
+    )
+    return Still.of(figure, caption)

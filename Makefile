@@ -71,12 +71,15 @@ notebooks: $(VENV)/.test-installed
 	$(BIN)/python -m course gallery --out docs --force --only $(README_PICTURE)
 
 # One BLAS thread: every anchor runs on one core, so the ratios compare like with
-# like, and a busy machine cannot stall a multithreaded matrix product.
+# like, and a busy machine cannot stall a multithreaded matrix product. Except the
+# Poisson benchmark: course.poisson limits its own threads, as it must on a student's
+# laptop, and the benchmark measures that quiet and under load, which pinning would hide.
+UNPINNED_BENCH := benchmarks/bench_poisson.py
 bench: $(VENV)/.bench-installed $(VENV)/.test-installed
-	export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1; \
-	for script in $(filter-out benchmarks/bench_browser_latency.py,$(wildcard benchmarks/bench_*.py)); do \
-		$(BIN)/python "$$script" || exit 1; \
+	for script in $(filter-out benchmarks/bench_browser_latency.py $(UNPINNED_BENCH),$(wildcard benchmarks/bench_*.py)); do \
+		OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 $(BIN)/python "$$script" || exit 1; \
 	done
+	for script in $(UNPINNED_BENCH); do $(BIN)/python "$$script" || exit 1; done
 
 # The time from a mouse move or a key press to the new picture, in JupyterLab in
 # Debian's Chromium, against an echo app's floor. Not part of `make test`.

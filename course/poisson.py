@@ -42,12 +42,7 @@ import numpy as np
 
 from course import poisson_capacitance as capacitance
 from course import poisson_solvers as solvers
-from course._validate import (
-    as_choice,
-    as_image,
-    as_int,
-    as_positive_float,
-)
+from course._validate import as_choice, as_image, as_int, as_positive_float
 from course.poisson_problem import (
     GUIDANCE,
     PoissonProblem,
@@ -56,6 +51,7 @@ from course.poisson_problem import (
     clone_problem,
     image_of,
     inpaint_problem,
+    paste_window,
     planes_of,
     window_in,
 )
@@ -180,7 +176,7 @@ def seamless_clone(
     solution = solve(problem, method, iterations, tolerance, omega)
     if clip:
         solution = np.clip(solution, 0.0, 1.0)
-    return problem.paste(background, solution)
+    return paste_window(problem, background, solution)
 
 
 def inpaint(
@@ -223,7 +219,7 @@ def inpaint(
     """
     problem = inpaint_problem(image, mask)
     solution = solve(problem, method, iterations, tolerance, omega)
-    return problem.paste(as_image(image), solution)
+    return paste_window(problem, as_image(image), solution)
 
 
 def solve(
@@ -384,7 +380,7 @@ def naive_paste(background: Any, foreground: Any, offset: Any, mask: Any = None)
     background, foreground, corner, mask = clone_inputs(background, foreground, offset, mask)
     problem = build_clone_problem(background, foreground, corner, mask, "plain")
     window = window_in(problem, foreground, corner)
-    return problem.paste(background, window)
+    return paste_window(problem, background, window)
 
 
 def correction_boundary(background: Any, foreground: Any, offset: Any) -> np.ndarray:

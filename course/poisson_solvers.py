@@ -26,6 +26,9 @@ Two exact solvers (a sparse factorisation for any region, the discrete sine
 transform for a rectangle) and three iterations (Jacobi, Gauss-Seidel and
 successive over-relaxation) for the convergence lesson. The iterations have a
 readable per-pixel form beside the vectorised one; the tests prove they agree.
+The solvers run with their BLAS and FFT threads limited to the idle cores
+(:func:`course._threads.limited_threads`): on a busy machine, a thread per core
+made them several times slower.
 
 References
 ----------
@@ -43,8 +46,9 @@ import numpy as np
 import scipy.sparse
 import scipy.sparse.linalg
 
+from course._threads import with_limited_threads
 from course._validate import as_choice
-from course.sine_transform import laplacian_eigenvalues, sine_transform
+from course.sine_transform import box_solve
 
 __all__ = [
     "JACOBI_SWEEPS_METHODS",
@@ -242,6 +246,7 @@ def _sor_sweeps_loop(
         yield u
 
 
+@with_limited_threads
 def iterate(
     values: np.ndarray,
     region: np.ndarray,
@@ -400,6 +405,7 @@ class PixelSystem:
         return (scipy.sparse.identity(self.size) * 4.0 - links).tocsc()
 
 
+@with_limited_threads
 def solve_direct(values: np.ndarray, region: np.ndarray, source: np.ndarray) -> np.ndarray:
     """The exact solution for any region: a sparse factorisation (SuperLU).
 
@@ -440,6 +446,7 @@ def solve_direct(values: np.ndarray, region: np.ndarray, source: np.ndarray) -> 
     return system.scatter(x, values.copy())
 
 
+@with_limited_threads
 def solve_dst(values: np.ndarray, region: np.ndarray, source: np.ndarray) -> np.ndarray:
     """The exact solution for a rectangle: diagonalise the Laplacian with sine transforms.
 
@@ -447,9 +454,11 @@ def solve_dst(values: np.ndarray, region: np.ndarray, source: np.ndarray) -> np.
     rectangle with fixed values around it, the five-point Laplacian's
     eigenvectors are products of sines, ``sin(pi j k / (m + 1)) sin(pi i l /
     (n + 1))``, with eigenvalues ``4 - 2 cos(pi k / (m + 1)) - 2 cos(pi l /
-    (n + 1))``. So the solve is a type-I discrete sine transform (DST) of the
-    right-hand side, a division by the eigenvalues, and the inverse transform:
-    ``O(m n log(m n))``, no matrix, no iterations.
+    (n + 1))``. The known values around the rectangle move to the right-hand
+    side; then the solve is a type-I discrete sine transform (DST) of it, a
+    division by the eigenvalues, and the inverse transform
+    (:func:`course.sine_transform.box_solve`): ``O(m n log(m n))``, no
+    matrix, no iterations.
 
     Examples
     --------
@@ -458,16 +467,11 @@ def solve_dst(values: np.ndarray, region: np.ndarray, source: np.ndarray) -> np.
     >>> solve_dst(values, region, np.zeros((1, 3, 4)))[0, 1] * 15
     array([15.,  4.,  1.,  0.])
     """
-    u = values.copy()
     rhs = source[:, 1:-1, 1:-1].copy()
     rhs[:, 0, :] += values[:, 0, 1:-1]
     rhs[:, -1, :] += values[:, -1, 1:-1]
     rhs[:, :, 0] += values[:, 1:-1, 0]
     rhs[:, :, -1] += values[:, 1:-1, -1]
-    m, n = rhs.shape[1:]
-    eigenvalues = laplacian_eigenvalues(m)[:, None] + laplacian_eigenvalues(n)[None, :]
-    spectrum = sine_transform(sine_transform(rhs, axis=1), axis=2) / eigenvalues
-    # The sine transform is its own inverse up to the factor (size + 1) / 2.
-    solution = sine_transform(sine_transform(spectrum, axis=1), axis=2)
-    u[:, 1:-1, 1:-1] = solution * (4.0 / ((m + 1) * (n + 1)))
+    u = values.copy()
+    u[:, 1:-1, 1:-1] = box_solve(rhs)
     return u

@@ -461,6 +461,39 @@ def test_bad_input_is_rejected_with_a_message_naming_the_parameter(call, error, 
     assert words in str(raised.value)
 
 
+@pytest.mark.parametrize(
+    ("value", "words"),
+    [
+        (np.nan, "background must be finite; got nan at index (3, 4, 1)"),
+        (np.inf, "background must be finite; got inf at index (3, 4, 1)"),
+        (-np.inf, "background must be finite; got -inf at index (3, 4, 1)"),
+        (1.5, "background values must lie in [0, 1]; got values from 0 to 1.5"),
+        (-0.25, "background values must lie in [0, 1]; got values from -0.25 to 1"),
+    ],
+)
+def test_one_bad_pixel_of_a_float64_image_is_found_without_a_copy(value, words):
+    # Float64 images are checked where they lie (min and max); one bad value
+    # among good ones still gets the general check's message.
+    background = BACKGROUND.copy()
+    background[0, 0] = 0.0
+    background[-1, -1] = 1.0
+    background[3, 4, 1] = value
+    with pytest.raises(ValueError) as raised:
+        poisson.seamless_clone(background, FOREGROUND, (0, 0))
+    assert words in str(raised.value)
+
+
+def test_the_result_is_a_new_image_for_any_input_kind():
+    for kind in (np.float64, np.float32):
+        background, foreground = BACKGROUND.astype(kind), FOREGROUND.astype(kind)
+        result = poisson.seamless_clone(background, foreground, (2, 3))
+        assert result.dtype == np.float64
+        assert not np.shares_memory(result, background)
+        assert np.array_equal(result[:3], background[:3].astype(float))  # above the patch
+    listed = poisson.seamless_clone(BACKGROUND.tolist(), FOREGROUND.tolist(), (2, 3))
+    assert np.array_equal(listed, poisson.seamless_clone(BACKGROUND, FOREGROUND, (2, 3)))
+
+
 # --- the exercise -------------------------------------------------------------------
 
 

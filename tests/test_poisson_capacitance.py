@@ -44,6 +44,21 @@ def test_box_green_is_the_inverse_of_the_box_matrix(shape):
     assert np.abs(green - inverse[np.ix_(order, order)]).max() < 1e-13 * np.abs(inverse).max()
 
 
+@pytest.mark.parametrize("shape", [(30, 20), (20, 30), (300, 3), (3, 300)])
+def test_green_upper_is_the_upper_triangle_for_pixels_sorted_along_the_long_side(shape):
+    # 600 and 900 pixels: several runs of RUN_PIXELS; 300 rows: two bands of BLOCK_ROWS.
+    inverse = np.linalg.inv(box_matrix(*shape).toarray())
+    rows, columns = np.divmod(np.arange(shape[0] * shape[1]), shape[1])
+    shuffled = np.random.default_rng(5).permutation(rows.size)
+    order = shuffled[capacitance.sorted_along_long_side(rows[shuffled], columns[shuffled], shape)]
+    long_side = rows if shape[0] >= shape[1] else columns
+    assert (np.diff(long_side[order]) >= 0).all()
+    upper = np.triu(capacitance.green_upper(rows[order], columns[order], shape))
+    assert np.isfinite(upper).all()
+    expected = np.triu(inverse[np.ix_(order, order)])
+    assert np.abs(upper - expected).max() < 1e-13 * np.abs(inverse).max()
+
+
 @pytest.mark.parametrize("shape", [(1, 1), (4, 6), (31, 17), (161, 191)])
 def test_box_solve_solves_the_box_equation(shape):
     rhs = np.random.default_rng(1).random((2, *shape))

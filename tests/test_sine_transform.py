@@ -4,6 +4,8 @@ import numpy as np
 import pytest
 
 from course.sine_transform import (
+    box_solve,
+    fast_transform,
     laplacian_eigenvalues,
     largest_prime_factor,
     sine_matrix,
@@ -43,3 +45,32 @@ def test_the_sines_diagonalise_the_one_dimensional_laplacian():
 
 def test_largest_prime_factor():
     assert [largest_prime_factor(n) for n in (1, 2, 200, 199, 2 * 3 * 97)] == [1, 2, 5, 199, 97]
+
+
+def box_matrix(height: int, width: int) -> np.ndarray:
+    laplacian = lambda size: 2 * np.eye(size) - np.eye(size, k=1) - np.eye(size, k=-1)  # noqa: E731
+    return np.kron(laplacian(height), np.eye(width)) + np.kron(np.eye(height), laplacian(width))
+
+
+@pytest.mark.parametrize(
+    "shape",
+    [(1, 1), (3, 4), (198, 3), (3, 198), (40, 52), (52, 58)],  # 199, 53 and 59 are prime
+)
+def test_box_solve_solves_the_box_equation_by_fft_by_matrix_or_both(shape):
+    rhs = np.random.default_rng(3).normal(size=(2, *shape))
+    solution = box_solve(rhs)
+    matrix = box_matrix(*shape)
+    expected = np.linalg.solve(matrix, rhs.reshape(2, -1).T).T.reshape(rhs.shape)
+    np.testing.assert_allclose(solution, expected, rtol=0, atol=1e-12 * np.abs(expected).max())
+
+
+def test_box_solve_leaves_its_input_alone():
+    rhs = np.random.default_rng(4).normal(size=(1, 15, 23))  # both FFT-friendly: dstn
+    before = rhs.copy()
+    box_solve(rhs)
+    assert np.array_equal(rhs, before)
+
+
+def test_fast_transform_follows_the_largest_prime_factor_of_size_plus_one():
+    sizes = (1, 15, 160, 190, 198, 52, 1025)  # + 1: 2, 16, 7 x 23, 191, 199, 53, 1026
+    assert [fast_transform(n) for n in sizes] == [True, True, True, False, False, False, True]

@@ -33,7 +33,7 @@ from course.antialias import (
     nearest_round,
 )
 from course.check.base import CheckResult, Mistake, close, first_difference, run_cases
-from course.check.pictures import EXPECTED, GIVEN, _png, image_picture
+from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture
 from course.images import SEED_000_CUBIC
 
 __all__ = ["arc_length_weights", "bilinear_splat", "splat_table"]
@@ -283,7 +283,7 @@ def _weights_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes |
     axes.legend(fontsize=7)
     axes.set_title("the weight of each sample along the curve", fontsize=9)
     figure.tight_layout()
-    return _png(figure)
+    return figure_png(figure)
 
 
 def _chords(samples: Any) -> np.ndarray:

@@ -25,6 +25,7 @@ __all__ = [
     "GIVEN",
     "MISSING",
     "curve_picture",
+    "figure_png",
     "image_picture",
     "pixel_picture",
 ]
@@ -36,7 +37,8 @@ GIVEN = EXTRA = "#D55E00"
 _BOTH = "#999999"
 
 
-def _png(figure: Figure) -> bytes:
+def figure_png(figure: Figure) -> bytes:
+    """A matplotlib figure as PNG bytes, drawn with Agg."""
     buffer = io.BytesIO()
     FigureCanvasAgg(figure).print_png(buffer)
     return buffer.getvalue()
@@ -73,7 +75,7 @@ def curve_picture(
     axes.legend(fontsize=7, loc="best")
     axes.set_title(title, fontsize=9)
     figure.tight_layout()
-    return _png(figure)
+    return figure_png(figure)
 
 
 def pixel_picture(
@@ -126,7 +128,7 @@ def pixel_picture(
     axes.set_title(
         title or f"pixels ({left}..{left + window - 1}, {top}..{top + window - 1})", fontsize=8
     )
-    return _png(figure)
+    return figure_png(figure)
 
 
 def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
@@ -177,4 +179,4 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     colour_bar.tick_params(labelsize=7)
     if title:
         figure.suptitle(title, fontsize=9, y=1 - 6 / rows, va="top")
-    return _png(figure)
+    return figure_png(figure)

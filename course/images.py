@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 from matplotlib import cbook
 
-from course._validate import as_image, as_int, as_positive_float, as_shape
+from course._validate import as_choice, as_image, as_int, as_positive_float, as_shape
 
 __all__ = [
     "EXAMPLE_POINTS",
@@ -256,12 +256,19 @@ def lake(shape: Any = LAKE_SHAPE, rng: np.random.Generator | None = None) -> np.
     return np.clip(image, 0.0, 1.0)
 
 
-def plane(shape: Any = PLANE_SHAPE, rng: np.random.Generator | None = None) -> np.ndarray:
-    """A white seaplane in an orange evening sky, side view, facing right; RGB.
+def plane(
+    shape: Any = PLANE_SHAPE, rng: np.random.Generator | None = None, sky: str = "evening"
+) -> np.ndarray:
+    """A white seaplane in the sky, side view, facing right; RGB.
 
-    The sky is nothing like :func:`lake`'s water, so pasting the plane's
-    rectangle as it is leaves a visible seam. The default 111 x 280 is the size
-    of the lab's photograph. Deterministic unless another ``rng`` is given.
+    ``sky="evening"`` (the lab's photograph) is orange, nothing like
+    :func:`lake`'s water or sky: pasting the rectangle leaves a visible seam,
+    and a seamless clone must shift the plane's colours as far as the sky's.
+    ``sky="day"`` is a hazy pale blue, paler than the lake's sky and lit the
+    other way (brightest at the top): the rectangle still shows when pasted
+    as it is, but only its brightness, not its colour, has to change. The
+    default 111 x 280 is the size of the lab's photograph. Deterministic
+    unless another ``rng`` is given.
 
     Examples
     --------
@@ -270,12 +277,18 @@ def plane(shape: Any = PLANE_SHAPE, rng: np.random.Generator | None = None) -> n
     (111, 280, 3)
     >>> bool(image[5, 5, 0] > image[5, 5, 2])   # orange sky: more red than blue
     True
+    >>> bool(plane(sky="day")[5, 5, 2] > plane(sky="day")[5, 5, 0])   # a blue sky
+    True
     """
     height, width = as_shape(shape)
+    sky = as_choice(sky, "sky", ("evening", "day"))
     rng = np.random.default_rng(80) if rng is None else rng
     rows = np.arange(height)[:, None] / height
-    sky = _mix((0.93, 0.55, 0.25), (0.98, 0.80, 0.52), np.broadcast_to(rows, (height, width)))
-    sky = sky + 0.05 * _smooth_noise((height, width), (4, 20), rng)[..., None]
+    top, bottom = ((0.93, 0.55, 0.25), (0.98, 0.80, 0.52))
+    if sky == "day":
+        top, bottom = ((0.80, 0.87, 0.96), (0.55, 0.68, 0.88))
+    colour = _mix(top, bottom, np.broadcast_to(rows, (height, width)))
+    sky_pixels = colour + 0.05 * _smooth_noise((height, width), (4, 20), rng)[..., None]
     body = _plane_coverage((height, width))
     # Light from above: the fuselage darkens towards its belly.
     paint = _mix((0.96, 0.96, 0.97), (0.62, 0.64, 0.70), np.broadcast_to(rows, (height, width)))
@@ -283,7 +296,8 @@ def plane(shape: Any = PLANE_SHAPE, rng: np.random.Generator | None = None) -> n
     paint = np.where(stripe[..., None] > 0, (0.75, 0.10, 0.12), paint)
     dark = _plane_parts((height, width), "windows")
     paint = _mix(paint, (0.15, 0.18, 0.25), dark[..., None])
-    image = _mix(sky, paint, body[..., None]) + 0.008 * rng.standard_normal((height, width, 3))
+    image = _mix(sky_pixels, paint, body[..., None])
+    image = image + 0.008 * rng.standard_normal((height, width, 3))
     return np.clip(image, 0.0, 1.0)
 
 

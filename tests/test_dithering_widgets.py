@@ -10,7 +10,6 @@ from course.widgets.dithering import (
     DitherComparisonApp,
     GrayLevelApp,
     VoidAndClusterApp,
-    side_by_side,
 )
 
 
@@ -89,11 +88,3 @@ def test_void_and_cluster_app_shows_the_first_dots_and_the_next_at_the_largest_v
     app.controls["dots"].value = 5
     assert "phase 1" in app.heading.get_text()
     assert "x white noise" in app.ratio.get_text()
-
-
-def test_side_by_side_crops_the_same_window_of_a_three_times_larger_image():
-    small = np.random.default_rng(0).random((10, 12))
-    large = np.repeat(np.repeat(small, 3, axis=0), 3, axis=1)
-    figure = side_by_side({"small": small, "large": large}, (4, 5), 4)
-    crops = [axes.images[0].get_array() for axes in figure.axes[1::2]]
-    assert np.array_equal(np.repeat(np.repeat(crops[0], 3, axis=0), 3, axis=1), crops[1])

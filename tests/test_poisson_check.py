@@ -1,9 +1,12 @@
-"""course.check.poisson: the lab's boundary ring, right and wrong."""
+"""course.check.poisson: the lab's boundary ring and its Jacobi sweep, right and wrong."""
+
+import itertools
 
 import numpy as np
 import pytest
 
 from course.check import poisson as check
+from course.poisson import correction_boundary
 
 
 def lab_style_boundary(background, foreground, offset):
@@ -50,3 +53,111 @@ def test_the_checker_names_the_case_a_typical_mistake_fails(wrong, case):
     result = check.poisson_boundary(wrong)
     assert not result
     assert case in result.message
+
+
+def jacobi(g, tolerance):
+    g = np.array(g, dtype=float)
+    for sweeps in itertools.count():
+        neighbours = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+        if np.abs(neighbours - 4 * g[1:-1, 1:-1]).max() < tolerance:
+            return g, sweeps
+        g[1:-1, 1:-1] = neighbours / 4
+
+
+def in_place(g, tolerance):
+    g = np.array(g, dtype=float)
+    height, width = g.shape[:2]
+    for sweeps in itertools.count():
+        neighbours = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+        if np.abs(neighbours - 4 * g[1:-1, 1:-1]).max() < tolerance:
+            return g, sweeps
+        for y in range(1, height - 1):
+            for x in range(1, width - 1):
+                g[y, x] = (g[y - 1, x] + g[y + 1, x] + g[y, x - 1] + g[y, x + 1]) / 4
+
+
+def sweep_first(g, tolerance):
+    g = np.array(g, dtype=float)
+    sweeps = 0
+    while True:
+        neighbours = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+        g[1:-1, 1:-1] = neighbours / 4
+        sweeps += 1
+        neighbours = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+        if np.abs(neighbours - 4 * g[1:-1, 1:-1]).max() < tolerance:
+            return g, sweeps
+
+
+def test_jacobi_sweep_passes_the_slices_and_a_loop_over_a_copy():
+    assert check.jacobi_sweep(jacobi)
+
+    def loop_over_a_copy(g, tolerance):
+        g = np.array(g, dtype=float)
+        height, width = g.shape[:2]
+        for sweeps in itertools.count():
+            old = g.copy()
+            inside = old[:-2, 1:-1] + old[2:, 1:-1] + old[1:-1, :-2] + old[1:-1, 2:]
+            if np.abs(inside - 4 * old[1:-1, 1:-1]).max() < tolerance:
+                return g, sweeps
+            for y in range(1, height - 1):
+                for x in range(1, width - 1):
+                    g[y, x] = (old[y - 1, x] + old[y + 1, x] + old[y, x - 1] + old[y, x + 1]) / 4
+
+    assert check.jacobi_sweep(loop_over_a_copy)
+
+
+@pytest.mark.parametrize(
+    ("student", "mistake"), [(in_place, "in place: Gauss-Seidel"), (sweep_first, "one sweep late")]
+)
+def test_jacobi_sweep_recognises_the_labs_loop_and_a_late_stop(student, mistake):
+    result = check.jacobi_sweep(student)
+    assert not result
+    assert result.mistake == mistake
+    assert "sweeps: expected" in result.message
+    assert result.picture is not None
+
+
+def test_jacobi_sweep_reports_a_ring_that_moves_and_a_missing_count():
+    def ring_swept_too(g, tolerance):
+        g = np.array(g, dtype=float)
+        for sweeps in itertools.count():
+            neighbours = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+            if np.abs(neighbours - 4 * g[1:-1, 1:-1]).max() < tolerance or sweeps > 500:
+                return g, sweeps
+            rolled = sum(np.roll(g, shift, axis) for shift in (1, -1) for axis in (0, 1))
+            g = rolled / 4  # wraps around and moves the fixed ring
+
+    result = check.jacobi_sweep(ring_swept_too)
+    assert not result and result.mistake is None
+    result = check.jacobi_sweep(lambda g, tolerance: jacobi(g, tolerance)[0])
+    assert not result and "return two things" in result.message
+
+
+@pytest.mark.parametrize(
+    ("student", "mistake"),
+    [
+        (
+            lambda background, foreground, offset: (
+                -correction_boundary(background, foreground, offset)
+            ),
+            "the sign flipped",
+        ),
+        (
+            lambda background, foreground, offset: correction_boundary(
+                background, foreground * 0, offset
+            ),
+            "the background alone",
+        ),
+        (
+            lambda background, foreground, offset: correction_boundary(
+                background, foreground, offset[::-1]
+            ),
+            "x and y swapped",
+        ),
+    ],
+)
+def test_boundary_mistakes_are_named_with_a_picture(student, mistake):
+    result = check.poisson_boundary(student)
+    assert not result
+    assert result.mistake == mistake
+    assert result.picture is not None

@@ -10,18 +10,18 @@ from course import images, poisson
 from course.classroom.pictures import (
     app_picture,
     colormap_color,
-    figure_picture,
     landmark_at,
     panel_picture,
     read_only,
     rgb_color,
+    still_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
+from course.widgets import poisson_figures as figures
 from course.widgets.base import SliderApp
-from course.widgets.poisson import MARGIN, CloneApp, PoissonIterationApp, half_size, show_images
+from course.widgets.poisson import MARGIN, CloneApp, PoissonIterationApp, half_size
 
 PLANE_OFFSET = (500, 300)
-AROUND_THE_PLANE = (slice(280, 430), slice(470, 800))
 
 
 @functools.cache
@@ -96,55 +96,41 @@ def clone_landmarks(app: SliderApp) -> list[Landmark]:
     return landmarks
 
 
-def clone_comparison() -> bytes:
-    lake, plane = lake_and_plane()
-    pictures = {
-        "naive paste": poisson.naive_paste(lake, plane, PLANE_OFFSET),
-        "seamless clone": poisson.seamless_clone(lake, plane, PLANE_OFFSET),
-    }
-    return figure_picture(show_images(pictures, window=AROUND_THE_PLANE))
-
-
-def inpainting() -> bytes:
-    scratched, scratches = images.scratched_photograph()
-    pictures = {
-        "scratched": scratched,
-        "inpainted": poisson.inpaint(scratched, scratches),
-        "original": images.photograph(),
-    }
-    return figure_picture(show_images(pictures, window=(slice(120, 420), slice(60, 460))))
+def day_clone_app() -> CloneApp:
+    """Lesson 08's second app, as its notebook builds it: the day plane in the lake's sky."""
+    return CloneApp(foreground=images.plane(sky="day"), offset=figures.DAY_OFFSET)
 
 
 def preview() -> bytes:
     """The course map's preview: the plane cloned seamlessly into the lake."""
-    app = CloneApp()
+    app = day_clone_app()
     return panel_picture(app, app.panels["seamless clone"])
 
 
 LESSON = Lesson(
     outcomes=(
-        "paste an image seamlessly by solving a Poisson equation",
-        "fill a hole by the membrane through its border",
-        "compare iterative solvers with an exact one, by their error after each sweep",
+        "paste one image into another with no seam, by solving a Poisson equation",
+        "write the lab's boundary ring and its sweep, stopping on the residual",
+        "say why 8000 sweeps are not enough, and when cloning cannot keep the colours",
     ),
     minutes=60,
-    preview=Picture("08_preview", "a plane cloned seamlessly into a lake", preview),
+    preview=Picture("08_preview", "a plane cloned seamlessly into a lake's sky", preview),
     handout="Lab 1 report (seed 001), Task 3: Poisson image editing, the plane pasted "
     "into the lake with the lab's 8000 'Jacobi' sweeps",
-    teaches="seamless cloning and inpainting as a Poisson equation, solved exactly "
-    "(DST, sparse) and by Jacobi, Gauss-Seidel and SOR; why 8000 sweeps are not enough",
+    teaches="seamless cloning as a Poisson equation: the correction g over the ring's "
+    "mismatch, the lab's sweep with a stop on the residual, why 8000 sweeps (Gauss-Seidel, "
+    "not Jacobi) are not enough, and the colours a clone cannot keep",
     pictures=(
-        Picture(
-            "08_drag_the_plane",
-            "the plane dragged over the lake: the copied pixels leave a frame, the "
-            "seamless clone, solved again at every step, has none",
-            lambda: app_picture(CloneApp()),
-        ),
-        Picture(
+        still_picture(
             "08_naive_paste_and_seamless_clone",
-            "the plane pasted into the lake: copied pixels leave a frame, the seamless "
-            "clone has none",
-            clone_comparison,
+            "the day plane pasted into the lake's sky: copied pixels leave a frame, the "
+            "seamless clone has none",
+            figures.headline_figure,
+        ),
+        still_picture(
+            "08_correction",
+            "the plane, the correction g stretched over the ring's mismatch, and their sum",
+            figures.correction_figure,
         ),
         Picture(
             "08_jacobi_1000_sweeps",
@@ -152,11 +138,23 @@ LESSON = Lesson(
             "still large in the middle of the region",
             lambda: app_picture(poisson_app()),
         ),
+        still_picture(
+            "08_sweeps_to_the_solution",
+            "the largest error after each sweep for Jacobi, Gauss-Seidel and SOR on the lab's "
+            "scene: neither of the first two is done after 8000",
+            figures.convergence_figure,
+        ),
         Picture(
-            "08_inpainting",
-            "seven scratches across the photograph, filled by solving Laplace's "
-            "equation, beside the original",
-            inpainting,
+            "08_drag_the_plane",
+            "the day plane dragged over the lake: the copied pixels leave a frame, the "
+            "seamless clone, solved again at every step, has none",
+            lambda: app_picture(day_clone_app()),
+        ),
+        still_picture(
+            "08_colours_it_cannot_keep",
+            "the lab's evening plane over the water: the clone has no seam, but the white "
+            "plane turns blue",
+            figures.colour_figure,
         ),
     ),
     sliders=(
@@ -165,15 +163,16 @@ LESSON = Lesson(
             control="sweeps",
             moves=(("ArrowRight",), ("ArrowLeft", "ArrowLeft"), ("End",)),
             landmarks=poisson_landmarks,
-            app=1,
+            app=0,
         ),
     ),
     drags=(
         DragMove(
-            build=CloneApp,
+            build=day_clone_app,
             handle="foreground",
-            path=((-20, -10), (-60, -35), (-100, -55)),
+            path=((-20, 10), (-60, 35), (-100, 55)),
             landmarks=clone_landmarks,
+            app=1,
         ),
     ),
 )

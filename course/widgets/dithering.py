@@ -7,29 +7,26 @@
 - :class:`VoidAndClusterApp`: the blue-noise mask being built, dot by dot,
   over the energy that chooses each dot, with the pattern's spectrum.
 
-:func:`side_by_side` is the static figure the lessons reuse: images in a row,
-each above a zoomed crop of the same window.
+The lesson's still pictures are in :mod:`course.widgets.dithering_figures`.
 """
 
 from __future__ import annotations
 
-import textwrap
 from typing import Any
 
 import ipywidgets as widgets
 import numpy as np
-from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
 from course import dither
-from course._validate import as_gray, as_image, as_int
+from course._validate import as_gray, as_int
 from course.blue_noise import blue_noise_mask, cluster_energy, radial_power_spectrum
 from course.blue_noise import void_and_cluster as rank_pixels
 from course.canvas import crop
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
-__all__ = ["DitherComparisonApp", "GrayLevelApp", "VoidAndClusterApp", "side_by_side"]
+__all__ = ["DitherComparisonApp", "GrayLevelApp", "VoidAndClusterApp"]
 
 
 def _zoom_window(image: np.ndarray, scale: int, centre: tuple[float, float], size: int) -> Any:
@@ -37,55 +34,6 @@ def _zoom_window(image: np.ndarray, scale: int, centre: tuple[float, float], siz
     _, (left, right, bottom, top) = crop(image[::scale, ::scale], centre, size)
     window = image[scale * top : scale * bottom, scale * left : scale * right]
     return window, (scale * left, scale * right, scale * bottom, scale * top)
-
-
-def side_by_side(
-    images: dict[str, np.ndarray],
-    centre: tuple[float, float],
-    size: int = 32,
-    figure_width: int = 1000,
-    columns: int | None = None,
-) -> Figure:
-    """Images in a grid, each with a zoomed crop (nearest) of the same window below it.
-
-    The figure is ``figure_width`` pixels wide, the grid ``columns`` images across.
-
-    An image k times larger than the first (ordered dithering) is cropped at
-    k times the window, so every crop shows the same part of the scene.
-
-    Examples
-    --------
-    >>> figure = side_by_side({"a": np.zeros((8, 8)), "b": np.ones((24, 24))}, (4, 4), 4)
-    >>> len(figure.axes)
-    4
-    """
-    arrays = {name: as_image(image, f"images[{name!r}]") for name, image in images.items()}
-    size = as_int(size, "size", minimum=1)
-    height, width = next(iter(arrays.values())).shape[:2]
-    reference = height
-    columns = columns or len(arrays)
-    rows = -(-len(arrays) // columns)
-    # Row heights in inches: the whole image at its aspect ratio, then a
-    # square crop; constrained layout makes room for the titles.
-    column_inches = figure_width / 100 / columns
-    whole, zoom = column_inches * height / width, column_inches * 0.8
-    figure = Figure(
-        figsize=(figure_width / 100, rows * (whole + zoom + 0.5)), dpi=100, layout="constrained"
-    )
-    grid = figure.add_gridspec(2 * rows, columns, height_ratios=[whole, zoom] * rows)
-    for index, (name, image) in enumerate(arrays.items()):
-        row, column = divmod(index, columns)
-        scale = image.shape[0] // reference
-        overview = bare_axes(figure.add_subplot(grid[2 * row, column]))
-        overview.imshow(image, **{**GRAY_PIXELS, "interpolation": "antialiased"})
-        overview.set_title(textwrap.fill(name, 18), fontsize=9)
-        window, extent = _zoom_window(image, scale, centre, size)
-        left, right, bottom, top = extent
-        overview.add_patch(
-            Rectangle((left, top), right - left, bottom - top, fill=False, color="red", lw=1)
-        )
-        bare_axes(figure.add_subplot(grid[2 * row + 1, column])).imshow(window, **GRAY_PIXELS)
-    return figure
 
 
 class DitherComparisonApp(SliderApp):

@@ -15,10 +15,9 @@ from typing import Any
 import ipywidgets as widgets
 import numpy as np
 from matplotlib.axes import Axes
-from matplotlib.figure import Figure
 
 from course import images, poisson
-from course._validate import as_image, as_int
+from course._validate import as_image
 from course.poisson_problem import build_clone_problem
 from course.widgets.base import Handle, SliderApp, format_points
 
@@ -27,7 +26,6 @@ __all__ = [
     "PoissonIterationApp",
     "as_pixels_uint8",
     "half_size",
-    "show_images",
 ]
 
 # Sweeps the slider stops at, roughly three per decade up to the lab's 8000.
@@ -147,45 +145,6 @@ class PoissonIterationApp(SliderApp):
 
     def _error(self, solution: np.ndarray) -> float:
         return float(np.abs(solution - self.exact)[self.problem.region].max() * 255)
-
-
-def show_images(
-    pictures: dict[str, Any],
-    window: tuple[slice, slice] | None = None,
-    columns: int | None = None,
-    figure_width: int = 1000,
-) -> Figure:
-    """Images side by side with their titles; ``window`` crops every one alike.
-
-    The figure is ``figure_width`` pixels wide, the grid ``columns`` images across.
-
-    Gray images are shown on a fixed 0-1 grey scale, so equal values look
-    equal across panels.
-
-    Examples
-    --------
-    >>> figure = show_images({"a": np.zeros((4, 6)), "b": np.ones((4, 6, 3))}, columns=1)
-    >>> len(figure.axes), [axes.get_title() for axes in figure.axes]
-    (2, ['a', 'b'])
-    """
-    arrays = {name: as_image(image, f"pictures[{name!r}]") for name, image in pictures.items()}
-    if window is not None:
-        arrays = {name: image[window] for name, image in arrays.items()}
-    columns = as_int(columns or len(arrays), "columns", minimum=1)
-    rows = -(-len(arrays) // columns)
-    height, width = next(iter(arrays.values())).shape[:2]
-    panel = figure_width / 100 / columns
-    figure = Figure(
-        figsize=(figure_width / 100, rows * (panel * height / width + 0.35)),
-        dpi=100,
-        layout="constrained",
-    )
-    for index, (name, image) in enumerate(arrays.items()):
-        axes = figure.add_subplot(rows, columns, index + 1)
-        axes.imshow(image, cmap="gray", vmin=0, vmax=1, interpolation="antialiased")
-        axes.set_title(name, fontsize=10)
-        axes.set_axis_off()
-    return figure
 
 
 class CloneApp(SliderApp):

@@ -1,0 +1,324 @@
+"""Lesson 08's still pictures: a clone that works, its correction, a clone that cannot keep
+the colours, how far the lab's sweeps get, masks and mixed gradients, inpainting.
+
+Each function returns a :class:`~course.widgets.picture.Still` whose caption
+states the numbers it shows; photographs are drawn pixel for pixel
+(:func:`~course.widgets.picture.pixel_figure`).
+
+The lab's 8000 Gauss-Seidel sweeps take about nine seconds, too long for a
+lesson that runs in fifteen, so their record (residual and error every 50
+sweeps, for Jacobi, Gauss-Seidel and SOR) is stored in
+``course/lessons/data/lab_sweeps.json``; :func:`compute_lab_sweeps` makes it
+again, and a test compares the two.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from course import images, poisson
+from course import poisson_solvers as solvers
+from course.widgets.picture import Still, pixel_figure
+
+__all__ = [
+    "DAY_OFFSET",
+    "LAB_OFFSET",
+    "LAB_SWEEPS_FILE",
+    "colour_figure",
+    "compute_lab_sweeps",
+    "convergence_figure",
+    "correction_figure",
+    "day_scene",
+    "headline_figure",
+    "inpainting_figure",
+    "lab_sweeps",
+    "mask_and_mixed_figure",
+]
+
+#: Where the day plane sits in the lake's sky (x, y): the headline clone.
+DAY_OFFSET = (420, 50)
+#: The lab's offset: the evening plane over the water.
+LAB_OFFSET = (500, 300)
+LAB_SWEEPS_FILE = Path(__file__).resolve().parent.parent / "lessons" / "data" / "lab_sweeps.json"
+_MARGIN = 30
+BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
+
+
+@functools.cache
+def day_scene() -> tuple[np.ndarray, np.ndarray]:
+    """The lake and the plane photographed against a pale day sky."""
+    return images.lake(), images.plane(sky="day")
+
+
+@functools.cache
+def lab_scene() -> tuple[np.ndarray, np.ndarray]:
+    """The lake and the lab's plane in its orange evening sky."""
+    return images.lake(), images.plane()
+
+
+def _around(offset: tuple[int, int], shape: tuple[int, int], image: np.ndarray) -> tuple:
+    """The window of ``image`` around a pasted ``shape`` at ``offset``, with its extent."""
+    x, y = offset
+    top, left = max(y - _MARGIN, 0), max(x - _MARGIN, 0)
+    bottom = min(y + shape[0] + _MARGIN, image.shape[0])
+    right = min(x + shape[1] + _MARGIN, image.shape[1])
+    return (slice(top, bottom), slice(left, right)), (left, right, bottom, top)
+
+
+def _grey(value: float) -> str:
+    return f"{value * 255:.1f}"
+
+
+def headline_figure() -> Still:
+    """The day plane pasted into the lake's sky: copied pixels, and the seamless clone.
+
+    Examples
+    --------
+    >>> headline_figure()  # doctest: +NORMALIZE_WHITESPACE
+    the step across the region's border: 54.7 grey levels pasted, 2.7 cloned
+    (the sky's own steps there: 3.5)
+    """
+    lake, plane = day_scene()
+    naive = poisson.naive_paste(lake, plane, DAY_OFFSET)
+    cloned = poisson.seamless_clone(lake, plane, DAY_OFFSET)
+    window, extent = _around(DAY_OFFSET, plane.shape[:2], lake)
+    figure, _ = pixel_figure(
+        [
+            (naive[window], extent, "pasted: the pixels copied"),
+            (cloned[window], extent, "seamless clone"),
+        ],
+        1,
+    )
+    problem = poisson.clone_problem(lake, plane, DAY_OFFSET)
+    caption = (
+        f"the step across the region's border: {_grey(problem.seam(naive))} grey levels "
+        f"pasted, {_grey(problem.seam(cloned))} cloned (the sky's own steps there: "
+        f"{_grey(problem.seam(lake))})"
+    )
+    return Still.of(figure, caption)
+
+
+def correction_figure() -> Still:
+    """The headline's correction g = u - f: smooth, from the ring's mismatch inwards.
+
+    Examples
+    --------
+    >>> correction_figure()  # doctest: +NORMALIZE_WHITESPACE
+    g's mean over the region (R, G, B): -0.22, -0.19, -0.11;
+    from -0.59 to 0.19 on the ring
+    """
+    lake, plane = day_scene()
+    ring = poisson.correction_boundary(lake, plane, DAY_OFFSET)
+    problem = poisson.clone_problem(lake, plane, DAY_OFFSET)
+    membrane = poisson.PoissonProblem(ring, problem.region, np.zeros_like(ring), problem.corner)
+    g = poisson.solve(membrane)
+    extent = (0, plane.shape[1], plane.shape[0], 0)
+    figure, _ = pixel_figure(
+        [
+            (plane, extent, "the plane, f"),
+            (np.clip((g + 1) / 2, 0, 1), extent, "g, shown as (g + 1) / 2"),
+            (np.clip(plane + g, 0, 1), extent, "f + g"),
+        ],
+        1,
+    )
+    edge = ~problem.region
+    means = ", ".join(f"{value:.2f}" for value in g[problem.region].mean(axis=0))
+    caption = (
+        f"g's mean over the region (R, G, B): {means}; from {ring[edge].min():.2f} to "
+        f"{ring[edge].max():.2f} on the ring"
+    )
+    return Still.of(figure, caption)
+
+
+def colour_figure() -> Still:
+    """The lab's scene: the evening plane over the water, pasted and cloned.
+
+    Examples
+    --------
+    >>> colour_figure()  # doctest: +NORMALIZE_WHITESPACE
+    cloned, the plane's white shifts by -0.77, -0.35, +0.05 (R, G, B) on average;
+    5.5% of the region's values fall outside [0, 1] and are clipped
+    """
+    lake, plane = lab_scene()
+    naive = poisson.naive_paste(lake, plane, LAB_OFFSET)
+    cloned = poisson.seamless_clone(lake, plane, LAB_OFFSET)
+    window, extent = _around(LAB_OFFSET, plane.shape[:2], lake)
+    figure, _ = pixel_figure(
+        [(naive[window], extent, "pasted"), (cloned[window], extent, "seamless clone")], 1
+    )
+    problem = poisson.clone_problem(lake, plane, LAB_OFFSET)
+    exact = poisson.solve(problem)
+    shift = (exact - plane)[problem.region].mean(axis=0)
+    outside = ((exact < 0) | (exact > 1))[problem.region].mean()
+    shifts = ", ".join(f"{value:+.2f}" for value in shift)
+    caption = (
+        f"cloned, the plane's white shifts by {shifts} (R, G, B) on average; "
+        f"{outside:.1%} of the region's values fall outside [0, 1] and are clipped"
+    )
+    return Still.of(figure, caption)
+
+
+def compute_lab_sweeps() -> dict[str, Any]:
+    """Residual and error of Jacobi and Gauss-Seidel (8000 sweeps) and SOR (600) on the lab's
+    scene, every 50 (SOR: 5) sweeps, and how far the lab's result is from the exact one.
+
+    About nine seconds: the lesson reads :func:`lab_sweeps` instead.
+    """
+    lake, plane = lab_scene()
+    problem = poisson.clone_problem(lake, plane, LAB_OFFSET)
+    exact = poisson.solve(problem)
+    record: dict[str, Any] = {"region": list(problem.region.shape)}
+    for method, sweeps, every in (
+        ("jacobi", 8000, 50),
+        ("gauss_seidel", 8000, 50),
+        ("sor", 600, 5),
+    ):
+        history = poisson.convergence(problem, method, sweeps, exact=exact, every=every)
+        record[method] = {
+            "sweeps": history.sweeps.tolist(),
+            "residuals": history.residuals.tolist(),
+            "errors": history.errors.tolist(),
+        }
+        if method == "gauss_seidel":
+            error = np.abs(history.solution - exact).max(axis=2)[problem.region] * 255
+            record["lab_result"] = {
+                "mean_error": float(error.mean()),
+                "share_above_one_grey_level": float((error > 1).mean()),
+            }
+    return record
+
+
+def lab_sweeps() -> dict[str, Any]:
+    """The stored record of :func:`compute_lab_sweeps`."""
+    return json.loads(LAB_SWEEPS_FILE.read_text())
+
+
+def write_lab_sweeps(path: Path = LAB_SWEEPS_FILE) -> None:
+    """Compute the record again and store it (the maintainers' step; a test compares)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(compute_lab_sweeps(), indent=1) + "\n")
+
+
+_NAMES = {"jacobi": "Jacobi", "gauss_seidel": "Gauss-Seidel (the lab's loop)", "sor": "SOR"}
+
+
+def convergence_figure() -> Still:
+    """Error against the exact solution after each sweep, on the lab's scene.
+
+    Examples
+    --------
+    >>> convergence_figure()  # doctest: +NORMALIZE_WHITESPACE
+    rho = 0.99976 per Jacobi sweep; after the lab's 8000 sweeps: Jacobi 46 grey levels off, Gauss-Seidel 7.3;
+    SOR 7.5e-07 after 600; the lab's result is 3.0 grey levels off on average,
+    77% of its pixels by more than one
+    """
+    record = lab_sweeps()
+    figure = Figure(figsize=(8.0, 3.0), dpi=100)
+    axes = figure.add_subplot()
+    for method, colour in (("jacobi", BLUE), ("gauss_seidel", VERMILLION), ("sor", GREEN)):
+        history = record[method]
+        errors = np.maximum(np.array(history["errors"]) * 255, 1e-9)
+        axes.semilogy(history["sweeps"], errors, color=colour, lw=1.5, label=_NAMES[method])
+    axes.axvline(8000, color="0.3", ls=":", lw=1)
+    axes.annotate(
+        "the lab's 8000",
+        (8000, 1e2),
+        xytext=(-4, 0),
+        textcoords="offset points",
+        ha="right",
+        fontsize=8,
+    )
+    axes.axhline(1.0, color="0.5", lw=0.8, ls="--")
+    axes.annotate(
+        "one grey level", (100, 1.0), xytext=(0, 3), textcoords="offset points", fontsize=8
+    )
+    axes.set_xlabel("sweeps", fontsize=8)
+    axes.set_ylabel("largest error (grey levels)", fontsize=8)
+    axes.tick_params(labelsize=7)
+    axes.legend(fontsize=7, loc="lower left")
+    figure.tight_layout()
+    final = {method: record[method]["errors"][-1] * 255 for method in _NAMES}
+    lab = record["lab_result"]
+    height, width = record["region"]
+    rho = solvers.jacobi_rate((height - 2, width - 2))  # the unknowns: inside the ring
+    caption = (
+        f"rho = {rho:.5f} per Jacobi sweep; "
+        f"after the lab's 8000 sweeps: Jacobi {final['jacobi']:.2g} grey levels off, "
+        f"Gauss-Seidel {final['gauss_seidel']:.2g}; SOR {final['sor']:.2g} after "
+        f"{record['sor']['sweeps'][-1]}; the lab's result is {lab['mean_error']:.1f} grey "
+        f"levels off on average, {lab['share_above_one_grey_level']:.0%} of its pixels by "
+        "more than one"
+    )
+    return Still.of(figure, caption)
+
+
+def mask_and_mixed_figure() -> Still:
+    """The headline clone three ways: the rectangle, a mask around the plane, mixed gradients.
+
+    Examples
+    --------
+    >>> mask_and_mixed_figure()  # doctest: +NORMALIZE_WHITESPACE
+    mean step between neighbours inside the rectangle: the sky 3.49 grey levels,
+    rectangle 3.94, mask 4.63, mixed 5.37
+    """
+    lake, plane = day_scene()
+    shown = {
+        "rectangle": poisson.seamless_clone(lake, plane, DAY_OFFSET),
+        "mask": poisson.seamless_clone(lake, plane, DAY_OFFSET, images.plane_mask()),
+        "mixed": poisson.seamless_clone(lake, plane, DAY_OFFSET, guidance="mixed"),
+    }
+    window, extent = _around(DAY_OFFSET, plane.shape[:2], lake)
+    figure, _ = pixel_figure([(image[window], extent, name) for name, image in shown.items()], 1)
+    problem = poisson.clone_problem(lake, plane, DAY_OFFSET)
+    steps = ", ".join(f"{name} {problem.texture(image) * 255:.2f}" for name, image in shown.items())
+    caption = (
+        f"mean step between neighbours inside the rectangle: the sky "
+        f"{problem.texture(lake) * 255:.2f} grey levels, {steps}"
+    )
+    return Still.of(figure, caption)
+
+
+def inpainting_figure() -> Still:
+    """Seven scratches across the photograph, filled by Laplace's equation.
+
+    Examples
+    --------
+    >>> inpainting_figure()  # doctest: +NORMALIZE_WHITESPACE
+    8214 scratched pixels: mean error 154 grey levels scratched, 9.1 inpainted
+    (95% within 36)
+    """
+    original = images.photograph()
+    scratched, scratches = images.scratched_photograph()
+    filled = poisson.inpaint(scratched, scratches)
+    window = (slice(120, 420), slice(60, 460))
+    extent = (60, 460, 420, 120)
+    figure, _ = pixel_figure(
+        [(scratched[window], extent, "scratched"), (filled[window], extent, "inpainted")], 1
+    )
+    error = np.abs(filled - original)[scratches] * 255
+    before = np.abs(scratched - original)[scratches].mean() * 255
+    caption = (
+        f"{scratches.sum()} scratched pixels: mean error {before:.0f} grey levels scratched, "
+        f"{error.mean():.1f} inpainted (95% within {np.percentile(error, 95):.0f})"
+    )
+    return Still.of(figure, caption)
+
+
+def strip_and_square() -> str:
+    """Jacobi's slowest decay per sweep on a 3 x 3 square and on ever longer 3-wide strips.
+
+    Examples
+    --------
+    >>> print(strip_and_square())
+    3 x 3 square: 0.7071; 3 x 30 strip: 0.8510; 3 x 300 strip: 0.8535; 3 x infinity: 0.8536
+    """
+    parts = [f"3 x 3 square: {solvers.jacobi_rate((3, 3)):.4f}"]
+    parts += [f"3 x {n} strip: {solvers.jacobi_rate((3, n)):.4f}" for n in (30, 300)]
+    parts.append(f"3 x infinity: {(np.cos(np.pi / 4) + 1) / 2:.4f}")
+    return "; ".join(parts)

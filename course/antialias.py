@@ -8,11 +8,16 @@ depends on the t step and on how fast the curve moves there. The fix
 sample stands for, so a pixel receives the length of curve passing through it.
 
 What a graphics engineer would do instead is compute each pixel's *coverage*
-by a stroke of width w around the curve, once (:func:`stroke_linear`,
-:func:`stroke_area`); :mod:`course.coverage` holds the exact reference and
-Agg's rendering, re-exported here.
+by a stroke of width w around the curve, once: :func:`stroke_linear` from the
+distance to the curve, :func:`stroke_area` exactly, by filling the stroke's
+outline (:mod:`course.stroke`), round joins and caps, sharp corners and cusps
+included. :mod:`course.coverage` holds the exact reference and Agg's
+rendering, re-exported here.
 
-:func:`render` draws a curve with any of :data:`RENDER_METHODS`.
+:func:`render` draws a curve, or a whole path (a list of curves, a
+``matplotlib.path.Path``, a line of text from :func:`text_curves`), with any
+of :data:`RENDER_METHODS`. A path is one stroke: where its curves join, the
+stroke methods count the overlap once.
 
 References
 ----------
@@ -29,19 +34,19 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_choice, as_curve, as_points, as_positive_float, as_shape
+from course._validate import (
+    as_choice,
+    as_curve,
+    as_points,
+    as_positive_float,
+    as_shape,
+    describe,
+)
 from course.bezier import bezier_bernstein, de_casteljau, uniform_parameters
 from course.canvas import paint
-from course.coverage import (
-    HALF_DIAGONAL,
-    NearPixels,
-    agg_render,
-    band_coverage,
-    first_of_runs,
-    pixels_near,
-    reference,
-    supersample,
-)
+from course.coverage import agg_render, reference
+from course.near_pixels import first_of_runs, pixels_near
+from course.paths import as_path, flatten_uniform, text_curves
 from course.splats import (
     ONE_SAMPLE,
     PIXELS_PER_SAMPLE,
@@ -57,6 +62,7 @@ from course.splats import (
     splat,
     subsample_falloff,
 )
+from course.stroke import stroke_coverage
 
 __all__ = [
     "DEFAULT_STEP",
@@ -83,6 +89,7 @@ __all__ = [
     "stroke_linear",
     "stroke_polyline",
     "subsample_falloff",
+    "text_curves",
     "wang_segments",
 ]
 
@@ -133,44 +140,46 @@ def stroke_polyline(points: Any, tolerance: float = STROKE_TOLERANCE) -> np.ndar
     return _evaluate(control, np.linspace(0.0, 1.0, count + 1))
 
 
-def _nearest_pairs(
+def _canvas(
     polyline: np.ndarray, shape: Any, reach: float
-) -> tuple[np.ndarray, NearPixels, np.ndarray]:
-    """pixels_near, reduced to the nearest segment of each pixel."""
-    if shape is None:
-        # No canvas: one just large enough, its origin wherever the curve is.
-        low = np.floor(polyline.min(axis=0) - reach - 2)
-        extent = np.ceil(polyline.max(axis=0) + reach + 2) - low
-        origin = (int(low[0]), int(low[1]))
-        near = pixels_near(polyline, (int(extent[1]), int(extent[0])), reach, origin)
-    else:
-        near = pixels_near(polyline, as_shape(shape), reach)
-    # Pairs are sorted by pixel, nearest segment first.
-    first = first_of_runs(near.flat)
-    pixels = np.stack([near.x[first], near.y[first]], axis=1)
-    return pixels, near, first
+) -> tuple[tuple[int, int], tuple[int, int]]:
+    """The canvas (H, W) and its origin (x, y): the image's, or one around the curve."""
+    if shape is not None:
+        return as_shape(shape), (0, 0)
+    # No canvas: one just large enough, its origin wherever the curve is.
+    low = np.floor(polyline.min(axis=0) - reach - 2)
+    extent = np.ceil(polyline.max(axis=0) + reach + 2) - low
+    return (int(extent[1]), int(extent[0])), (int(low[0]), int(low[1]))
 
 
-def _as_polyline(polyline: Any) -> np.ndarray:
+def _as_polyline(polyline: Any, gaps: Any) -> tuple[np.ndarray, np.ndarray]:
     line = as_points(polyline, "polyline")
     if line.shape[1] != 2:
         raise ValueError(f"polyline must have shape (K, 2); got shape {line.shape}")
     if len(line) == 1:
         line = np.vstack([line, line])
-    return line
+    if gaps is None:
+        return line, np.zeros(len(line) - 1, dtype=bool)
+    mask = np.asarray(gaps)
+    if mask.dtype != bool or mask.shape != (len(line) - 1,):
+        raise ValueError(
+            f"gaps must be a bool array of shape ({len(line) - 1},), one per segment; "
+            f"got {describe(gaps)}"
+        )
+    return line, mask
 
 
 def stroke_linear(
-    polyline: Any, width: float = 1.0, shape: Any = None
+    polyline: Any, width: float = 1.0, shape: Any = None, gaps: Any = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """Coverage from the distance d of each pixel centre: ``clamp(w/2 + 0.5 - d, 0, 1)``.
 
-    The distance is to the polyline (the flattened curve); only pixels within
-    ``w/2 + 0.5`` of it are visited. The formula is exact for an
-    axis-aligned stroke: a pixel whose centre is d from its middle line
-    overlaps it by ``w/2 + 1/2 - d``. At 45 degrees it overestimates the
-    pixel on the line (1 instead of 0.91 for w = 1) and misses the corners
-    reaching out further.
+    The distance is to the polyline (the flattened curve or path: the
+    nearest of its segments); only pixels within ``w/2 + 0.5`` of it are
+    visited. The formula is exact for an axis-aligned stroke: a pixel whose
+    centre is d from its middle line overlaps it by ``w/2 + 1/2 - d``. At
+    45 degrees it overestimates the pixel on the line (1 instead of 0.91 for
+    w = 1) and misses the corners reaching out further.
 
     Parameters
     ----------
@@ -180,6 +189,9 @@ def stroke_linear(
         Stroke width in pixels, > 0.
     shape : (H, W), optional
         Keep only pixels on this canvas.
+    gaps : bool array_like, shape (K - 1,), optional
+        True for segments not drawn: the pen moving between the subpaths
+        of a path (:func:`course.paths.flatten_uniform`).
 
     Returns
     -------
@@ -192,27 +204,35 @@ def stroke_linear(
     >>> pixels.tolist(), weights.tolist()
     ([[0, 0], [1, 0], [2, 0], [0, 1], [1, 1], [2, 1]], [0.25, 0.25, 0.25, 0.75, 0.75, 0.75])
     """
-    line = _as_polyline(polyline)
+    line, gaps = _as_polyline(polyline, gaps)
     width = as_positive_float(width, "width")
     reach = 0.5 * width + 0.5
-    pixels, near, first = _nearest_pairs(line, shape, reach)
+    canvas, origin = _canvas(line, shape, reach)
+    near = pixels_near(line, canvas, reach, origin, gaps=gaps)
+    # Pairs are sorted by pixel, nearest segment first.
+    first = first_of_runs(near.flat)
+    pixels = np.stack([near.x[first], near.y[first]], axis=1)
     weights = np.clip(reach - near.distance[first], 0.0, 1.0)
     keep = weights > 0
     return pixels[keep], weights[keep]
 
 
 def stroke_area(
-    polyline: Any, width: float = 1.0, shape: Any = None
+    polyline: Any, width: float = 1.0, shape: Any = None, gaps: Any = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Coverage as the exact area of the pixel inside the nearest segment's band.
+    """The exact area of each pixel inside the stroke, round joins and caps.
 
-    For each pixel near the curve, take the polyline segment nearest its
-    centre and the straight band of width w along that segment's line: the
-    area of the pixel square inside that band is
-    :func:`course.coverage.slab_coverage`, exact for any direction. Where the
-    curve bends little over a pixel this is the exact coverage. Near the
-    curve's two ends the stroke is a half disc (round cap), not a band:
-    the few pixels there are sampled 16 x 16, as the reference does.
+    The stroke is the set of points within w / 2 of the polyline: the
+    union of the *stadiums* of its segments. Its outline is drawn (offset
+    edges, cut where they cross on the inside of a turn, arcs on the outside
+    and at the ends) and filled by signed area, as a font rasterizer fills a
+    glyph (:mod:`course.stroke`): exact at any bend, corner or cusp, up to
+    the chords of the arcs (0.002 px for w = 1). Where parts of the path
+    that are not neighbours come within w of each other (a loop, two
+    subpaths, a hairpin), and at cusps, the few pixels near them are
+    integrated instead: 16 rows each, the length of each row inside the
+    stroke exact (error at most 1/32 where an edge runs horizontally
+    through the pixel, of order 1/256 elsewhere).
 
     Parameters and returns as :func:`stroke_linear`.
 
@@ -222,31 +242,20 @@ def stroke_area(
     >>> pixels, weights = stroke_area(line, shape=(4, 4))
     >>> round(float(weights[(pixels == [1, 1]).all(axis=1)][0]), 4)
     0.9142
+
+    Past a sharp corner nothing is covered (the join is round, not mitred):
+
+    >>> pixels, weights = stroke_area([[10.5, 10.5], [20.5, 10.5], [10.5, 12.5]], 1.0, (30, 30))
+    >>> [[21, 10]] in pixels.tolist()
+    False
     """
-    line = _as_polyline(polyline)
+    line, gaps = _as_polyline(polyline, gaps)
     width = as_positive_float(width, "width")
-    half = 0.5 * width
-    pixels, near, first = _nearest_pairs(line, shape, half + HALF_DIAGONAL)
-    line = near.polyline
-    segment = near.segment[first]
-    run_x, run_y = np.abs(line[segment + 1] - line[segment]).T
-    length = np.hypot(run_x, run_y)
-    safe = np.where(length > 0, length, 1.0)
-    # The normal's components are the direction's, swapped: same larger, smaller.
-    wide, narrow = np.maximum(run_x, run_y) / safe, np.minimum(run_x, run_y) / safe
-    weights = band_coverage(near.across[first], wide, narrow, width)
-    weights[length == 0] = 0.0  # a zero-length segment has no band; the caps cover it
-    # Near the ends the stroke is a half disc, not a band: sample those pixels.
-    x, y = near.x[first] + 0.5, near.y[first] + 0.5
-    reach2 = (half + HALF_DIAGONAL) ** 2
-    (x0, y0), (x1, y1) = line[0], line[-1]
-    at_cap = ((x - x0) ** 2 + (y - y0) ** 2 <= reach2) | ((x - x1) ** 2 + (y - y1) ** 2 <= reach2)
-    if at_cap.any():
-        run = np.cumsum(first) - 1  # the pixel (run) each pair belongs to
-        firsts, cap = supersample(near, at_cap[run], half, CAP_SAMPLES)
-        weights[run[firsts]] = cap
-    keep = weights > 0
-    return pixels[keep], weights[keep]
+    canvas, origin = _canvas(line, shape, 0.5 * width)
+    image = stroke_coverage(line - np.array(origin, dtype=float), gaps, 0.5 * width, canvas)
+    y, x = np.nonzero(image)
+    pixels = np.stack([x + origin[0], y + origin[1]], axis=1)
+    return pixels, image[y, x]
 
 
 _STROKES = {"stroke_linear": stroke_linear, "stroke_area": stroke_area}
@@ -263,12 +272,16 @@ def render(
     step: float | None = None,
     weighting: str = "count",
 ) -> np.ndarray:
-    """Draw the Bézier curve with one anti-aliasing method; intensity in [0, 1].
+    """Draw a Bézier curve or a whole path with one anti-aliasing method; [0, 1].
 
     Parameters
     ----------
-    points : array_like, shape (N, 2)
-        Control points in image space (x right, y down).
+    points : array_like (N, 2), list of them, or matplotlib.path.Path
+        Control points in image space (x right, y down); or a whole path:
+        a list of curves (each (N_i, 2)) or a ``matplotlib.path.Path`` with
+        its codes (see :func:`course.paths.as_path`; :func:`course.paths.text_curves`
+        gives a line of text). A path is one stroke: where its curves join,
+        the stroke methods count the overlap once.
     shape : (H, W)
         Canvas size; pixels off it are dropped, never wrapped.
     method : str
@@ -303,28 +316,48 @@ def render(
            [0.25, 0.25, 0.25, 0.25]])
     >>> render([[0.5, 0.5], [3.5, 0.5]], (1, 4), "nearest_truncate", step=0.25)
     array([[1., 1., 1., 1.]])
+
+    A path of two lines meeting at a right angle covers its corner once,
+    round: pixel (2, 1) holds 3/4 of a square and a quarter disc of radius 1/2:
+
+    >>> corner = [[[0.0, 1.5], [2.5, 1.5]], [[2.5, 1.5], [2.5, 4.0]]]
+    >>> render(corner, (4, 4), "stroke_area")[1:3, 1:4].round(4)
+    array([[1.    , 0.9463, 0.    ],
+           [0.    , 1.    , 0.    ]])
     """
-    control = as_curve(points)
+    path = as_path(points)
     height, canvas_width = as_shape(shape)
     method = as_choice(method, "method", RENDER_METHODS)
     width = as_positive_float(width, "width")
     weighting = as_choice(weighting, "weighting", WEIGHTINGS)
     if step is not None:
         step = as_positive_float(step, "step")
+    if method == "stroke_area":
+        # The fast path: the exact coverage straight into a new canvas.
+        line, gaps = flatten_uniform(path, STROKE_TOLERANCE)
+        return stroke_coverage(line, gaps, 0.5 * width, (height, canvas_width))
     image = np.zeros((height, canvas_width))
-    if method in _STROKES:
-        pixels, weights = _STROKES[method](stroke_polyline(control), width, (height, canvas_width))
+    if method == "stroke_linear":
+        line, gaps = flatten_uniform(path, STROKE_TOLERANCE)
+        pixels, weights = stroke_linear(line, width, (height, canvas_width), gaps)
         # Each pixel comes once: "max" writes it without a saturating sum.
         return paint(image, pixels, 1.0, weights, mode="max")
-    if step is None:
-        step = DEFAULT_STEP if weighting == "count" else arc_length_step(control)
-    samples = curve_samples(control, step)
-    pixels, weights = splat(samples, method)
-    if weighting == "arc_length":
-        weights = np.minimum(
-            weights * np.repeat(arc_length_weights(samples) * width, PIXELS_PER_SAMPLE[method]), 1
-        )
-    return paint(image, pixels, 1.0, weights)
+    # The handouts' loop, curve after curve; every splat adds, with saturation.
+    all_pixels, all_weights = [], []
+    for control in path.split() if len(path.sizes) > 1 else [path.points]:
+        own_step = step
+        if own_step is None:
+            own_step = DEFAULT_STEP if weighting == "count" else arc_length_step(control)
+        samples = curve_samples(control, own_step)
+        pixels, weights = splat(samples, method)
+        if weighting == "arc_length":
+            spread = np.repeat(arc_length_weights(samples) * width, PIXELS_PER_SAMPLE[method])
+            weights = np.minimum(weights * spread, 1)
+        all_pixels.append(pixels)
+        all_weights.append(weights)
+    if len(all_pixels) > 1:
+        all_pixels, all_weights = [np.concatenate(all_pixels)], [np.concatenate(all_weights)]
+    return paint(image, all_pixels[0], 1.0, all_weights[0])
 
 
 def curve_samples(points: Any, step: float) -> np.ndarray:

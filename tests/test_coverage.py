@@ -9,6 +9,7 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from matplotlib.path import Path
 
+from course.bezier import de_casteljau
 from course.coverage import (
     agg_draw,
     agg_render,
@@ -244,3 +245,110 @@ def test_segment_distance_is_the_distance_to_the_nearest_point(point, a, b):
     nearest = a + along[0] * (b - a)
     assert np.hypot(*(nearest - point)) == pytest.approx(distance[0], abs=1e-9)
     assert abs(across[0]) <= distance[0] + 1e-9
+
+
+# --- whole paths ---------------------------------------------------------------------
+
+coarse = st.integers(0, 96).map(lambda n: n / 8)
+curve_lists = st.lists(
+    st.lists(st.tuples(coarse, coarse), min_size=1, max_size=4).map(np.array),
+    min_size=1,
+    max_size=4,
+)
+
+
+def dense_distance(samples_x, samples_y, curves, per_curve=4000):
+    """Distance from the samples to the curves, each drawn as 4000 chords of t.
+
+    Independent of the reference's flattening: de Casteljau at uniform t,
+    then the exact distance to every chord.
+    """
+    nearest = np.full(samples_x.shape, np.inf)
+    for curve in curves:
+        points = de_casteljau(np.asarray(curve, dtype=float), np.linspace(0, 1, per_curve + 1))
+        start, end = points[:-1], points[1:]
+        for a, b in zip(start, end, strict=True):
+            distance, _, _ = segment_distance(samples_x, samples_y, a, b)
+            nearest = np.minimum(nearest, distance)
+    return nearest
+
+
+@settings(max_examples=15, deadline=None)
+@given(curves=curve_lists, width=st.sampled_from([0.5, 1.0, 2.0]))
+def test_a_path_reference_is_dense_sampling_of_the_union_of_its_curves(curves, width):
+    # Brute force on the reference's own sample grid (k = 3): a sample is in
+    # the stroke when it lies within width / 2 of any curve of the path.
+    k, shape = 3, (13, 13)
+    image = reference(curves, shape, width, k=k)
+    grid = (np.arange(k) + 0.5) / k
+    ys, xs = np.mgrid[0 : shape[0], 0 : shape[1]]
+    size = (*shape, k, k)
+    samples_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(*shape, -1)
+    samples_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(*shape, -1)
+    nearest = dense_distance(samples_x, samples_y, [c for c in curves if len(c) > 1], 400)
+    for dot in (c for c in curves if len(c) == 1):
+        nearest = np.minimum(nearest, np.hypot(samples_x - dot[0, 0], samples_y - dot[0, 1]))
+    # 400 chords per curve stray by at most ~1e-3 px here: a sample that
+    # close to the edge may fall either way.
+    surely = np.mean(nearest <= width / 2 - 2e-3, axis=-1)
+    maybe = np.mean(nearest <= width / 2 + 2e-3, axis=-1)
+    assert np.all(surely - 1e-12 <= image) and np.all(image <= maybe + 1e-12)
+
+
+@settings(max_examples=25, deadline=None)
+@given(curves=curve_lists, width=st.sampled_from([0.5, 1.0, 2.0]))
+def test_a_path_covers_at_least_each_piece_and_at_most_their_sum(curves, width):
+    shape = (13, 13)
+    whole = reference(curves, shape, width, k=4)
+    pieces = [reference(curve, shape, width, k=4) for curve in curves]
+    assert np.all((whole >= 0) & (whole <= 1))
+    # Same samples: a sample is in the union iff it is in some piece.
+    assert np.all(whole >= np.max(pieces, axis=0))
+    assert np.all(whole <= np.sum(pieces, axis=0) + 1e-12)
+
+
+def test_a_path_reference_accepts_a_matplotlib_path_and_closes_it():
+    square = Path([[2.5, 2.5], [8.5, 2.5], [8.5, 8.5], [2.5, 8.5], [0, 0]], [1, 2, 2, 2, 79])
+    lines = [[[2.5, 2.5], [8.5, 2.5]], [[8.5, 2.5], [8.5, 8.5]]]
+    lines += [[[8.5, 8.5], [2.5, 8.5]], [[2.5, 8.5], [2.5, 2.5]]]
+    image = reference(square, (12, 12), 1.0, k=8)
+    np.testing.assert_array_equal(image, reference(lines, (12, 12), 1.0, k=8))
+    # Pixel (2, 2) holds the corner's quarter disc and three quarter squares.
+    assert image[2, 2] == pytest.approx(0.75 + math.pi / 16, abs=0.02)
+    assert image[5, 5] == 0.0 and image[2, 5] == 1.0
+
+
+def test_agg_render_draws_a_whole_path():
+    corner = [[[1.0, 1.5], [6.5, 1.5]], [[6.5, 1.5], [6.5, 7.0]]]
+    agg = agg_render(corner, (9, 9))
+    exact = reference(corner, (9, 9), k=32)
+    # Agg's round join is a coarse polygon: 0.07 off at the corner pixel.
+    assert np.abs(agg - exact).max() <= 0.1
+    assert np.abs(agg - exact).mean() <= 0.01
+
+
+@pytest.mark.parametrize(
+    ("points", "error", "words"),
+    [
+        ([np.zeros((2, 2)), np.zeros((2, 3))], ValueError, r"points\[1\] must have shape \(N, 2\)"),
+        ([[[0, 0], [1, 1]], [[0, 0], [np.nan, 1]]], ValueError, r"points\[1\] must be finite"),
+        ([], ValueError, "points must be a 2-D array"),
+        (Path([[0, 0], [1, 1]], [1, 7]), ValueError, "points.codes must hold only MOVETO"),
+        (Path([[0, 0], [np.inf, 1]]), ValueError, "points.vertices must be finite"),
+    ],
+)
+def test_reference_rejects_bad_paths_by_name(points, error, words):
+    with pytest.raises(error, match=words):
+        reference(points, (4, 4))
+
+
+def test_reference_does_not_modify_its_input():
+    curves = [np.array([[0.0, 0.0], [3.0, 3.0]]), np.array([[3.0, 3.0], [5.0, 1.0], [6.0, 4.0]])]
+    copies = [curve.copy() for curve in curves]
+    path = Path(np.array([[0.0, 0.0], [3.0, 3.0], [5.0, 1.0]]), [1, 3, 3])
+    vertices = path.vertices.copy()
+    reference(curves, (6, 6))
+    reference(path, (6, 6))
+    for curve, copy in zip(curves, copies, strict=True):
+        np.testing.assert_array_equal(curve, copy)
+    np.testing.assert_array_equal(path.vertices, vertices)

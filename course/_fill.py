@@ -1,0 +1,177 @@
+"""Filling a closed outline by signed area: the exact area of each pixel inside it.
+
+Each directed edge of the outline is cut at every pixel boundary; each piece
+adds to its pixel the signed area between it and the pixel's right side, and
+its height to every pixel to the right of it (a running sum along the row)
+[1]_. For closed loops, that gives each pixel the integral over its square
+of the winding number: its exact area inside the outline where the winding
+number is 0 or 1. The running sums only run through the blocks of a row that
+the outline touches, so a long thin shape on a large canvas costs what its
+outline costs.
+
+References
+----------
+.. [1] R. Levien, "Inside the fastest font renderer in the world" (font-rs),
+   2016, https://medium.com/@raphlinus/inside-the-fastest-font-renderer-in-the-world-75ae5270c445;
+   the same accumulation as M. Shemanarev's Anti-Grain Geometry scanline
+   rasterizer.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["accumulate"]
+
+# Columns per block of the running sums: 2 ** _BLOCK_BITS.
+_BLOCK_BITS = 5
+_BLOCK = 1 << _BLOCK_BITS
+# Canvas cells per value below which the running sums cover the whole canvas.
+_DENSE = 16
+
+
+def accumulate(
+    starts: np.ndarray, ends: np.ndarray, shape: tuple[int, int], clip: bool = False
+) -> np.ndarray:
+    """The signed area each pixel of the canvas holds inside the closed outline.
+
+    ``starts``, ``ends`` (E, 2): the directed edges of closed loops (in any
+    order). Each pixel gets the integral over its square of the winding
+    number, with the sign of the loops' orientation. With ``clip``, values
+    are clipped to [0, 1] and the rounding the running sums leave (below
+    1e-9) set to 0, only where the outline passes: a large canvas is never
+    swept whole.
+    """
+    height, width = shape
+    x0, y0, x1, y1 = _clip(starts, ends, height, width)
+    # Every edge now spans at most one pixel boundary each way: at most three pieces.
+    sx, sy = x1 - x0, y1 - y0
+    column, row = np.floor(np.minimum(x0, x1)), np.floor(np.minimum(y0, y1))
+    # A nearly flat piece divides by a tiny step: inf, then 1 by the where.
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        tx = np.where(np.maximum(x0, x1) > column + 1, (column + 1 - x0) / sx, 1.0)
+        ty = np.where(np.maximum(y0, y1) > row + 1, (row + 1 - y0) / sy, 1.0)
+    t = np.stack([np.zeros_like(tx), np.minimum(tx, ty), np.maximum(tx, ty), np.ones_like(tx)])
+    xs, ys = x0 + t * sx, y0 + t * sy
+    rise = ys[1:] - ys[:-1]
+    middle_x = 0.5 * (xs[1:] + xs[:-1])
+    cell_x = np.floor(middle_x)
+    cell_y = np.clip(np.floor(0.5 * (ys[1:] + ys[:-1])), 0, height - 1).astype(np.int64)
+    area = rise * (cell_x + 1 - middle_x)  # between the piece and the pixel's right side
+    moving = rise != 0  # pieces of no height (a t repeated) add nothing
+    left = moving & (cell_x < 0)  # left of the canvas: only the rise, into column 0
+    inside = moving & (cell_x >= 0) & (cell_x < width)
+    column = np.clip(cell_x, 0, width).astype(np.int64)
+    rows = np.concatenate([cell_y[inside], cell_y[inside], cell_y[left]])
+    columns = np.concatenate([column[inside], column[inside] + 1, column[left]])
+    value = np.concatenate([area[inside], (rise - area)[inside], rise[left]])
+    return _running_sums(rows, columns, value, (height, width), clip)
+
+
+def _clip(starts: np.ndarray, ends: np.ndarray, height: int, width: int) -> tuple[np.ndarray, ...]:
+    """Edges within the canvas's rows, none longer than a pixel either way.
+
+    Parts above or below the canvas and right of it add nothing to it and are
+    dropped; a part left of it adds only its rise to every pixel of its rows,
+    so it is moved to x = -0.5 (one vertical edge).
+    """
+    x0, y0 = starts[:, 0], starts[:, 1]
+    x1, y1 = ends[:, 0], ends[:, 1]
+    moving = y0 != y1  # a horizontal edge adds nothing
+    x0, y0, x1, y1 = x0[moving], y0[moving], x1[moving], y1[moving]
+    outside = (
+        min(x0.min(initial=0), x1.min(initial=0), y0.min(initial=0), y1.min(initial=0)) < 0
+        or max(x0.max(initial=0), x1.max(initial=0)) > width
+        or max(y0.max(initial=0), y1.max(initial=0)) > height
+    )
+    if outside:
+        x0, y0, x1, y1 = _clip_to(x0, y0, x1, y1, height, width)
+    # Split edges longer than a pixel in x or y into equal parts.
+    parts = np.maximum(np.ceil(np.maximum(np.abs(x1 - x0), np.abs(y1 - y0))), 1).astype(np.int64)
+    if (parts > 1).any():
+        edge = np.repeat(np.arange(len(parts)), parts)
+        step = np.arange(len(edge)) - np.repeat(np.cumsum(parts) - parts, parts)
+        dx, dy = (x1 - x0)[edge], (y1 - y0)[edge]
+        begin, end = step / parts[edge], (step + 1) / parts[edge]
+        last = step == parts[edge] - 1
+        # The last part ends exactly where the edge does, so the loops stay closed.
+        x1 = np.where(last, x1[edge], x0[edge] + end * dx)
+        y1 = np.where(last, y1[edge], y0[edge] + end * dy)
+        x0, y0 = x0[edge] + begin * dx, y0[edge] + begin * dy
+    return x0, y0, x1, y1
+
+
+def _clip_to(x0, y0, x1, y1, height, width):
+    """Cut edges to rows [0, height] and columns up to width; move the part left of 0."""
+    # Rows: keep the parameter range with 0 <= y <= height.
+    dy = y1 - y0  # never 0 here (flat edges are gone), but may be tiny
+    with np.errstate(over="ignore"):
+        t_top, t_bottom = (0 - y0) / dy, (height - y0) / dy
+    t_low = np.clip(np.minimum(t_top, t_bottom), 0, 1)
+    t_high = np.clip(np.maximum(t_top, t_bottom), 0, 1)
+    keep = t_high > t_low
+    x0, y0, x1, y1, t_low, t_high = (v[keep] for v in (x0, y0, x1, y1, t_low, t_high))
+    dx, dy = x1 - x0, y1 - y0
+    x0, y0, x1, y1 = x0 + t_low * dx, y0 + t_low * dy, x0 + t_high * dx, y0 + t_high * dy
+    # Columns: cut at x = 0 and x = width; drop what lies right of the canvas.
+    pieces = [(x0, y0, x1, y1)]
+    for bound in (0.0, float(width)):
+        x0, y0, x1, y1 = (np.concatenate(v) for v in zip(*pieces, strict=True))
+        dx = x1 - x0
+        crosses = (np.minimum(x0, x1) < bound) & (np.maximum(x0, x1) > bound)
+        t = np.where(crosses, (bound - x0) / np.where(crosses, dx, 1.0), 1.0)
+        xm, ym = x0 + t * dx, y0 + t * (y1 - y0)
+        xm = np.where(t < 1.0, bound, xm)
+        pieces = [(x0, y0, xm, ym), (xm, ym, x1, y1)]
+    x0, y0, x1, y1 = (np.concatenate(v) for v in zip(*pieces, strict=True))
+    keep = (y0 != y1) & (np.maximum(x0, x1) <= width)
+    x0, y0, x1, y1 = x0[keep], y0[keep], x1[keep], y1[keep]
+    x0 = np.where(x0 < 0, -0.5, x0)
+    x1 = np.where(x1 < 0, -0.5, x1)
+    return x0, y0, x1, y1
+
+
+def _running_sums(
+    row: np.ndarray, column: np.ndarray, value: np.ndarray, shape: tuple[int, int], clip: bool
+) -> np.ndarray:
+    """Row-wise running sums of the values added at (row, column), column <= width.
+
+    Only the blocks of ``_BLOCK`` columns that hold a value, or that a value
+    on their left leaves non-zero, are summed; the rest of the canvas is 0.
+    A canvas no larger than ``_DENSE`` cells per value is summed whole: the
+    bookkeeping of the blocks would cost more than it saves.
+    """
+    height, width = shape
+    stride = width + 1
+    if len(value) == 0:  # nothing on the canvas (bincount would return ints)
+        return np.zeros((height, width))
+    if height * stride <= _DENSE * len(value):
+        cells = np.bincount(row * stride + column, value, height * stride)
+        sums = np.cumsum(cells.reshape(height, stride), axis=1)
+        return _clipped(np.ascontiguousarray(sums[:, :width]), clip)
+    blocks = (stride + _BLOCK - 1) >> _BLOCK_BITS
+    block = row * blocks + (column >> _BLOCK_BITS)
+    total = np.bincount(block, value, height * blocks).reshape(height, blocks)
+    carry = (np.cumsum(total, axis=1) - total).ravel()  # what enters each block from the left
+    has = np.bincount(block, minlength=height * blocks) > 0
+    busy = np.flatnonzero(has | (np.abs(carry) > 1e-12))
+    rank = np.full(height * blocks, -1)
+    rank[busy] = np.arange(len(busy))
+    cell = rank[block] * _BLOCK + (column & (_BLOCK - 1))
+    local = np.bincount(cell, value, len(busy) * _BLOCK).reshape(len(busy), _BLOCK)
+    sums = _clipped(np.cumsum(local, axis=1) + carry[busy][:, None], clip)
+    busy_row, busy_block = np.divmod(busy, blocks)
+    columns = busy_block[:, None] * _BLOCK + np.arange(_BLOCK)
+    flat = (busy_row * width)[:, None] + columns
+    image = np.zeros((height, width))
+    on_canvas = columns < width  # the last block of a row reaches past the canvas
+    image.ravel()[flat[on_canvas]] = sums[on_canvas]
+    return image
+
+
+def _clipped(values: np.ndarray, clip: bool) -> np.ndarray:
+    """``values`` clipped to [0, 1] with rounding noise set to 0, in place (if ``clip``)."""
+    if clip:
+        np.clip(values, 0.0, 1.0, out=values)
+        values[values < 1e-9] = 0.0
+    return values

@@ -1,67 +1,136 @@
-# Every target bootstraps .venv from nothing but python3.
+# Every target bootstraps .venv from nothing but python3 (3.10 or newer) and its venv module,
+# and installs the exact versions in requirements/ (see `make lock`). Plain `make` prints help.
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
+LOCK := requirements
 NOTEBOOKS := $(sort $(wildcard notebooks/[0-9]*.ipynb))
-SOURCES := $(wildcard course tests tests_browser benchmarks notebooks)
+SOURCES := $(wildcard course tests tests_browser benchmarks notebooks site)
 APP_PORT ?= 8866
 # JupyterLab refuses to start as root without this flag (containers run as root).
 ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 # Kernel messages sent at once, not held back by Nagle's algorithm (course.classroom.serving).
 PROMPT := course.classroom.serving.PromptConnection
+# Where `make site` writes the course's website.
+SITE := build/site
 
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
-.PHONY: lab app student test test-browser lint format notebooks bench bench-browser clean
+.DEFAULT_GOAL := help
+.PHONY: help lab app student test test-latest test-browser fuzz lint format notebooks site \
+	bench bench-browser lock clean
 
+## help: this list of targets
+help:
+	@echo "Usage: make TARGET   (each target creates .venv and installs what it needs)"
+	@echo
+	@sed -n 's/^## \([a-z-]*\): \(.*\)/  \1|\2/p' $(MAKEFILE_LIST) | awk -F'|' '{ printf "%-16s %s\n", $$1, $$2 }'
+	@echo
+	@echo "Python 3.10 or newer is needed: make lab PYTHON=python3.12 picks another one."
+
+# The install sets: pyproject.toml's name for each (for `make lock` and `make test-latest`),
+# and the lock pip installs from by default. Students get `lab`; `test` is the developer's set.
+UV_lab := --extra lab
+UV_app := --extra app
+UV_test := --group pyproject.toml:dev
+UV_browser := --extra browser
+UV_bench := --extra bench
+UV_site := --group pyproject.toml:site
+PIP_lab := -e ".[lab]"
+PIP_app := -e ".[app]"
+PIP_test := -e . --group dev
+PIP_browser := -e ".[browser]"
+PIP_bench := -e ".[bench]"
+PIP_site := -e . --group site
+SETS := lab app test browser bench site
+
+# Checks before anything is installed: the Python version, then the venv module.
 $(BIN)/python:
-	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
+	@version=$$($(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null); \
+	if ! $(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 10))' 2>/dev/null; then \
+		echo "make: the course needs Python 3.10 or newer; '$(PYTHON)' is $${version:-missing}." >&2; \
+		echo "  Install Python 3.10 or newer (python.org, or on macOS 'brew install python@3.12')," >&2; \
+		echo "  then run for example: make lab PYTHON=python3.12" >&2; \
+		exit 1; \
+	fi
+	@if ! $(PYTHON) -c 'import ensurepip, venv' 2>/dev/null; then \
+		echo "make: '$(PYTHON)' has no working venv module (ensurepip is missing)." >&2; \
+		echo "  On Debian/Ubuntu: sudo apt install python3-venv   (then run make again)" >&2; \
+		exit 1; \
+	fi
+	@echo "make: creating $(VENV) and installing the course; the first time takes a few minutes."
+	$(PYTHON) -m venv $(VENV) || { rm -rf $(VENV); exit 1; }
+	$(BIN)/python -m pip install --progress-bar on --upgrade "pip>=25.1"
 
-# One stamp per extra, redone when pyproject.toml changes.
-$(VENV)/.%-installed: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e ".[$*]"
+# One stamp per install set, redone when its lock or pyproject.toml changes. LATEST=1 (as
+# `make test-latest` sets it) installs the newest releases instead of the lock.
+$(VENV)/.%-installed: $(LOCK)/%.txt pyproject.toml | $(BIN)/python
+	@echo "make: installing the '$*' set into $(VENV) $(if $(LATEST),(newest releases),from $(LOCK)/$*.txt)"
+	$(BIN)/python -m pip install --progress-bar on \
+		$(if $(LATEST),--upgrade --upgrade-strategy eager $(PIP_$*),-r $(LOCK)/$*.txt -e .)
 	touch $@
 
-# The lessons in JupyterLab, opened at the course map, with student/ beside notebooks/ so a
-# teacher can open the student edition in the same session. It is written only if missing:
-# work a student saved there is never overwritten (`make student` rewrites it).
-lab: $(VENV)/.lab-installed $(VENV)/.test-installed
+## lab: install the lessons, then open them in JupyterLab at the course map
+# With student/ beside notebooks/ so a teacher can open the student edition in the same
+# session. It is written only if missing: work a student saved there is never overwritten.
+lab: $(VENV)/.lab-installed
 	test -d student || $(BIN)/python -m course student --out student
+	@echo "make: JupyterLab opens at the course map; its address is printed below, under" \
+		"'Or copy and paste one of these URLs'. Stop it with Ctrl-C, twice."
 	$(BIN)/jupyter lab --ServerApp.root_dir=. \
 		--LabApp.default_url=/lab/tree/notebooks/00_index.ipynb \
 		$(ROOT_FLAG) --ServerApp.kernel_websocket_connection_class=$(PROMPT)
 
-# The lessons as apps for a lecture hall: Voila, code hidden, sliders live.
-app: $(VENV)/.lab-installed $(VENV)/.test-installed
+## app: the lessons as apps for a projector: Voila, code hidden, sliders live
+app: $(VENV)/.app-installed
 	$(BIN)/voila notebooks/ --no-browser --Voila.ip=127.0.0.1 --port=$(APP_PORT) \
 		--Voila.kernel_websocket_connection_class=$(PROMPT)
 
-# The student edition: solutions replaced by stubs, outputs cleared, in student/.
-student: $(VENV)/.test-installed
+## student: (re)write the student edition in student/: solutions stubbed, outputs cleared
+student: $(VENV)/.lab-installed
 	$(BIN)/python -m course student --out student --force
 
+## lint: ruff's format check and lint, on the pinned ruff
 lint: $(VENV)/.test-installed
 	$(BIN)/ruff format --check $(SOURCES)
 	$(BIN)/ruff check $(SOURCES)
 
+## format: ruff format and ruff check --fix
 format: $(VENV)/.test-installed
 	$(BIN)/ruff format $(SOURCES)
 	$(BIN)/ruff check --fix $(SOURCES)
 
+## test: ruff, unit and property tests, doctests, and every notebook with nbval
 test: lint
 	$(BIN)/python -m pytest -n 2 --dist loadfile course tests \
 		--nbval --nbval-current-env --nbval-cell-timeout=300 $(NOTEBOOKS)
 
-# Every notebook run in JupyterLab and one through Voila, in Debian's Chromium
-# (/usr/bin/chromium); screenshots in build/screenshots/. Not part of `make test`.
-test-browser: $(VENV)/.browser-installed $(VENV)/.test-installed
-	$(BIN)/python -m pytest -p no:cacheprovider --timeout=900 --durations=0 -v tests_browser
+## test-latest: make test on the newest releases (in .venv-latest), to find drift first
+test-latest:
+	$(MAKE) test VENV=.venv-latest LATEST=1
+
+## fuzz: a longer fuzz campaign over every public function, with counts by outcome
+fuzz: $(VENV)/.test-installed
+	COURSE_FUZZ=long $(BIN)/python -m pytest tests/test_fuzz.py -q -s -n 0 -p no:cacheprovider
+
+## site: build the course's website in build/site/ from the committed notebooks
+# The notebooks are not re-executed: their committed outputs are the pages' pictures.
+site: $(VENV)/.site-installed
+	$(BIN)/python site/stage.py build/site-source
+	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site build/site-source $(SITE)
+	@echo "make: the website is in $(SITE)/; open $(SITE)/index.html"
+
+## test-browser: build the website, then check its pages and run every lesson in Chromium
+# Debian's Chromium (/usr/bin/chromium); screenshots in build/screenshots/. Not in `make test`.
+test-browser: site $(VENV)/.browser-installed $(VENV)/.test-installed
+	SITE=$(SITE) $(BIN)/python -m pytest -p no:cacheprovider --timeout=900 --durations=0 -v \
+		tests_browser
 
 # The README's picture: lesson 01's app as the notebook first shows it.
 README_PICTURE := 01_de_casteljau_degree3_t0.50
 
-notebooks: $(VENV)/.test-installed
+## notebooks: re-execute and normalise the lessons, then the README's table and picture
+notebooks: $(VENV)/.lab-installed $(VENV)/.test-installed
 	for notebook in $(NOTEBOOKS); do \
 		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
 			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
@@ -75,16 +144,34 @@ notebooks: $(VENV)/.test-installed
 # Poisson benchmark: course.poisson limits its own threads, as it must on a student's
 # laptop, and the benchmark measures that quiet and under load, which pinning would hide.
 UNPINNED_BENCH := benchmarks/bench_poisson.py
+## bench: the performance ratios against the reference implementations
 bench: $(VENV)/.bench-installed $(VENV)/.test-installed
 	for script in $(filter-out benchmarks/bench_browser_latency.py $(UNPINNED_BENCH),$(wildcard benchmarks/bench_*.py)); do \
 		OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 $(BIN)/python "$$script" || exit 1; \
 	done
 	for script in $(UNPINNED_BENCH); do $(BIN)/python "$$script" || exit 1; done
 
-# The time from a mouse move or a key press to the new picture, in JupyterLab in
-# Debian's Chromium, against an echo app's floor. Not part of `make test`.
+## bench-browser: the time from a mouse move or a key press to the new picture, in Chromium
 bench-browser: $(VENV)/.browser-installed $(VENV)/.test-installed
 	$(BIN)/python benchmarks/bench_browser_latency.py
 
+# uv's `pip compile`, pinned, in the venv. The versions already in the lock are kept unless
+# pyproject.toml no longer allows them: `make lock UPGRADE=1` moves every set to the newest.
+UV_VERSION := 0.13.9
+UV_COMPILE = $(BIN)/uv pip compile --universal --python-version 3.10 --quiet \
+	--custom-compile-command "make lock" $(if $(UPGRADE),--upgrade)
+$(BIN)/uv: | $(BIN)/python
+	$(BIN)/python -m pip install "uv==$(UV_VERSION)"
+
+## lock: regenerate requirements/*.txt (for Python 3.10+ on Linux, macOS and Windows)
+# all.txt holds every set at once; each set's lock is resolved within it, so that the sets
+# installed into one venv always agree.
+lock: $(BIN)/uv
+	mkdir -p $(LOCK)
+	$(UV_COMPILE) pyproject.toml --all-extras $(UV_test) $(UV_site) -o $(LOCK)/all.txt
+	$(foreach set,$(SETS),$(UV_COMPILE) pyproject.toml $(UV_$(set)) -c $(LOCK)/all.txt \
+		--annotation-style line -o $(LOCK)/$(set).txt && ) true
+
+## clean: remove the venvs and the caches
 clean:
-	rm -rf $(VENV) .pytest_cache .ruff_cache
+	rm -rf $(VENV) .venv-latest .pytest_cache .ruff_cache

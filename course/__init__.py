@@ -3,4 +3,10 @@
 One module per concept; the notebooks in ``notebooks/`` import them.
 """
 
-__version__ = "0.1.0"
+from importlib.metadata import PackageNotFoundError, version
+
+try:
+    #: Written once, in pyproject.toml.
+    __version__ = version("course")
+except PackageNotFoundError:  # the package imported from a folder, not installed
+    __version__ = "0+unknown"

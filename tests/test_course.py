@@ -325,8 +325,13 @@ def test_the_private_name_checks_can_fail():
 
 
 def test_test_files_are_named_for_what_they_test():
-    """``test_<module>.py``, ``test_<topic>_check.py``, ``test_<topic>_widgets.py``."""
-    stems = {name.rsplit(".", 1)[-1] for name in MODULES} | {"course"}
+    """``test_<module>.py``, ``test_<topic>_check.py``, ``test_<topic>_widgets.py``.
+
+    Three test the whole package: ``test_course.py`` (its layout), ``test_fuzz.py``
+    (every public callable, given bad input) and ``test_install.py`` (make, the locks,
+    the README's commands).
+    """
+    stems = {name.rsplit(".", 1)[-1] for name in MODULES} | {"course", "fuzz", "install"}
     checks = {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.check.")}
     apps = {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.widgets.")}
     named = [path.stem[len("test_") :] for path in Path(__file__).parent.glob("test_*.py")]

@@ -2,6 +2,11 @@
 
 Standard library only: ``student`` is a JSON transform and runs without numpy,
 matplotlib or ipywidgets; ``gallery`` loads them when the lesson modules draw.
+
+The lessons' notebooks are found beside the package in the course's repository (or in
+``$COURSE_NOTEBOOKS``, or ``./notebooks``; ``--notebooks DIR`` says where). An installed
+package without them still draws the gallery, every registered lesson's pictures; the
+student edition and the map need the notebooks, and say so.
 """
 
 from __future__ import annotations
@@ -12,7 +17,14 @@ from pathlib import Path
 
 from course.classroom import edition, gallery
 from course.classroom.course_map import course_map, update_readme
-from course.classroom.notebooks import NOTEBOOKS
+from course.classroom.notebooks import NOTEBOOKS_VARIABLE, find_notebooks
+from course.classroom.registry import lessons
+
+NOT_FOUND = (
+    "the lessons' notebooks are not beside the installed package, nor in ./notebooks: "
+    "pass --notebooks DIR, the notebooks/ folder of the course's repository "
+    f"(or set {NOTEBOOKS_VARIABLE}=DIR)"
+)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -33,7 +45,9 @@ def main(argv: list[str] | None = None) -> int:
             "nothing is deleted)",
         )
         command.add_argument(
-            "--notebooks", type=Path, default=NOTEBOOKS, help="the lessons' folder"
+            "--notebooks",
+            type=Path,
+            help="the lessons' folder (default: the repository's notebooks/)",
         )
     gallery_command.add_argument(
         "--only",
@@ -45,7 +59,7 @@ def main(argv: list[str] | None = None) -> int:
         "map", help="print the course map: a Markdown table of the lessons (the README's)"
     )
     map_command.add_argument(
-        "--notebooks", type=Path, default=NOTEBOOKS, help="the lessons' folder"
+        "--notebooks", type=Path, help="the lessons' folder (default: the repository's notebooks/)"
     )
     map_command.add_argument(
         "--link-prefix",
@@ -58,6 +72,10 @@ def main(argv: list[str] | None = None) -> int:
         help="rewrite the lesson table between this README's markers instead of printing it",
     )
     args = parser.parse_args(argv)
+    args.notebooks = args.notebooks or find_notebooks()
+    if args.notebooks is None and args.command != "gallery":
+        print(f"python -m course {args.command}: {NOT_FOUND}", file=sys.stderr)
+        return 2
     try:
         if args.command == "map" and args.readme:
             changed = update_readme(args.readme, args.notebooks)
@@ -67,7 +85,10 @@ def main(argv: list[str] | None = None) -> int:
             print(course_map(args.notebooks, args.link_prefix))
             return 0
         if args.command == "gallery":
-            pictures = gallery.gallery_pictures(args.notebooks)
+            if args.notebooks is None:  # an installed package: every registered picture
+                pictures = [p for lesson in lessons().values() for p in lesson.pictures]
+            else:
+                pictures = gallery.gallery_pictures(args.notebooks)
             if args.only:
                 pictures = gallery.named_pictures(pictures, args.only)
             written = gallery.write_gallery(args.out, args.force, pictures)

@@ -8,14 +8,18 @@ summary the paragraph after it. Standard library only.
 from __future__ import annotations
 
 import json
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["NOTEBOOKS", "Notebook", "notebooks"]
+__all__ = ["NOTEBOOKS", "Notebook", "find_notebooks", "notebooks"]
 
 #: The lessons' folder when the package is used from its repository (``pip install -e``).
+#: An installed package (``pip install .``) has no such folder: see :func:`find_notebooks`.
 NOTEBOOKS = Path(__file__).resolve().parent.parent.parent / "notebooks"
+#: An environment variable naming the lessons' folder, for an installed package.
+NOTEBOOKS_VARIABLE = "COURSE_NOTEBOOKS"
 LESSON_FILE = re.compile(r"^(\d\d)_(\w+)\.ipynb$")
 _HEADING = re.compile(r"^#\s+(.+?)\s*$", re.MULTILINE)
 
@@ -29,6 +33,22 @@ class Notebook:
     path: Path
     title: str
     summary: str
+
+
+def find_notebooks() -> Path | None:
+    """The lessons' folder, or None when there is none to be found.
+
+    In order: ``$COURSE_NOTEBOOKS``; the repository's ``notebooks/`` beside the package
+    (an editable install, or the package used from its clone); ``./notebooks`` when it
+    holds lessons (an installed package run from a clone's folder).
+    """
+    named = os.environ.get(NOTEBOOKS_VARIABLE)
+    if named:
+        return Path(named)
+    for folder in (NOTEBOOKS, Path.cwd() / "notebooks"):
+        if folder.is_dir() and any(LESSON_FILE.match(path.name) for path in folder.iterdir()):
+            return folder
+    return None
 
 
 def notebooks(folder: str | Path = NOTEBOOKS, index: bool = False) -> list[Notebook]:

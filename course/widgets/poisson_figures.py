@@ -214,8 +214,8 @@ def convergence_figure() -> Still:
     Examples
     --------
     >>> convergence_figure()  # doctest: +NORMALIZE_WHITESPACE
-    rho = 0.99976 per Jacobi sweep; after the lab's 8000 sweeps: Jacobi 46 grey levels off, Gauss-Seidel 7.3;
-    SOR 7.5e-07 after 600; the lab's result is 3.0 grey levels off on average,
+    rho = 0.99976 per Jacobi sweep; after the lab's 8000 sweeps: Jacobi 46 grey levels off,
+    Gauss-Seidel 7.3; SOR 7.5e-07 after 600; the lab's result is 3.0 grey levels off on average,
     77% of its pixels by more than one
     """
     record = lab_sweeps()

@@ -1,0 +1,49 @@
+"""Sphinx configuration of the course's website: ``make site``.
+
+The source is ``build/site-source/``, written by ``site/stage.py`` from the committed
+notebooks; myst-nb renders their outputs as committed (nothing is executed), and the
+build needs no network.
+"""
+
+from __future__ import annotations
+
+import json
+from importlib import metadata
+from pathlib import Path
+
+project = "course"
+author = "the course's authors"
+copyright = "the course's authors. Code: MIT licence; lesson text and pictures: CC BY 4.0"
+release = version = metadata.version("course")
+html_title = "Computer graphics: Bézier curves, pixels and the 2D lab"
+
+extensions = ["myst_nb"]
+root_doc = "index"
+exclude_patterns = ["_build", "**.ipynb_checkpoints", "alt.json"]
+
+# The committed outputs are the pages' pictures: never re-execute.
+nb_execution_mode = "off"
+# No widget JavaScript from a CDN: the apps show their still picture.
+nb_ipywidgets_js: dict = {}
+myst_enable_extensions = ["dollarmath", "amsmath"]
+myst_heading_anchors = 3
+# Markdown outputs (the course map's table) are MyST, as cells are: tables and page links.
+nb_render_markdown_format = "myst"
+
+html_theme = "furo"
+html_show_sourcelink = False
+html_copy_source = False
+
+
+def _set_alt_text(app, doctree) -> None:
+    """Each picture's alt text, from site/stage.py's alt.json (by the file's SHA-256)."""
+    alt = json.loads((Path(app.srcdir) / "alt.json").read_text(encoding="utf-8"))
+    for node in doctree.findall(lambda node: node.tagname == "image"):
+        described = alt.get(Path(node["uri"]).stem)
+        if described and not node.get("alt"):
+            node["alt"] = described
+
+
+def setup(app):
+    app.connect("doctree-read", _set_alt_text)
+    return {"parallel_read_safe": True}

@@ -1,0 +1,142 @@
+"""Stage the committed notebooks as the website's source: ``python site/stage.py OUT``.
+
+Nothing is executed: the pages show the outputs committed in ``notebooks/``. Staging
+
+- copies every ``NN_topic.ipynb``, the course map ``00_index.ipynb`` as ``index.ipynb``
+  (the landing page), its links rewritten, and a hidden table of contents added to it;
+- drops each app's live-widget output, so that the app's still picture shows, as on GitHub;
+- writes ``alt.json``: for each picture (by the SHA-256 of its bytes, which names the file
+  myst-nb writes) its alt text: the gallery's caption when the picture is one of the gallery's
+  (``python -m course gallery``, same pixels), else the output's own text, else a description
+  from the lesson's title. ``site/conf.py`` sets it on the page's ``<img>``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import base64
+import hashlib
+import io
+import json
+import re
+import shutil
+import sys
+from pathlib import Path
+
+REPOSITORY = Path(__file__).resolve().parent.parent
+NOTEBOOKS = REPOSITORY / "notebooks"
+LESSON_FILE = re.compile(r"^(\d\d)_\w+\.ipynb$")
+WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+IMAGES = ("image/png", "image/jpeg")
+HEADING = re.compile(r"^#+\s+(.+?)\s*$", re.MULTILINE)
+# A repr that says nothing about the picture: IPython's, or an app's constructor call.
+UNINFORMATIVE = re.compile(r"^<.*object>$|^\w+App\(")
+
+
+def text(value: str | list[str]) -> str:
+    return value if isinstance(value, str) else "".join(value)
+
+
+def pixels_key(data: bytes) -> str:
+    """A picture's identity by its pixels, whatever its encoding."""
+    from PIL import Image
+
+    with Image.open(io.BytesIO(data)) as image:
+        rgb = image.convert("RGB")
+        return hashlib.sha256(repr(rgb.size).encode() + rgb.tobytes()).hexdigest()
+
+
+def gallery_captions() -> dict[str, str]:
+    """The gallery's captions, by the pixels of the picture each one describes."""
+    from course.classroom.registry import lessons
+
+    captions = {}
+    for lesson in lessons().values():
+        for picture in lesson.pictures:
+            captions[pixels_key(picture.render())] = picture.caption
+    return captions
+
+
+def plain_heading(markdown: str) -> str | None:
+    """A markdown heading's text without its link syntax."""
+    found = HEADING.search(markdown)
+    return re.sub(r"\[([^]]*)\]\([^)]*\)", r"\1", found.group(1)) if found else None
+
+
+def stage(out: Path, notebooks: Path = NOTEBOOKS, captions: dict[str, str] | None = None) -> int:
+    """Write the website's source to ``out``; return the number of pictures."""
+    captions = gallery_captions() if captions is None else captions
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    books = sorted(path for path in notebooks.iterdir() if LESSON_FILE.match(path.name))
+    alt: dict[str, str] = {}
+    for path in books:
+        notebook = json.loads(path.read_text(encoding="utf-8"))
+        title = next(
+            (
+                plain_heading(text(cell["source"]))
+                for cell in notebook["cells"]
+                if cell["cell_type"] == "markdown" and plain_heading(text(cell["source"]))
+            ),
+            path.stem,
+        )
+        count = 0
+        # nbformat 4.5 cells carry ids; the committed ones are normalised without.
+        notebook["nbformat_minor"] = max(notebook.get("nbformat_minor", 0), 5)
+        for number, cell in enumerate(notebook["cells"]):
+            cell.setdefault("id", f"cell-{number}")
+            if cell["cell_type"] == "markdown":
+                cell["source"] = text(cell["source"]).replace("00_index.ipynb", "index.ipynb")
+            described = title
+            for output in cell.get("outputs", []):
+                data = output.get("data", {})
+                data.pop(WIDGET_VIEW, None)
+                if "text/markdown" in data:
+                    markdown = text(data["text/markdown"])
+                    markdown = markdown.replace("](00_index.ipynb", "](index.ipynb")
+                    data["text/markdown"] = markdown
+                    described = plain_heading(markdown) or described
+                for mime in IMAGES:
+                    if mime not in data:
+                        continue
+                    count += 1
+                    raw = base64.b64decode(text(data[mime]))
+                    said = text(data.get("text/plain", "")).strip().strip("'\"")
+                    if pixels_key(raw) in captions:
+                        description = captions[pixels_key(raw)]
+                    elif said and not UNINFORMATIVE.match(said):
+                        description = said
+                    elif described != title:
+                        description = f"{described}: one panel of the lesson"
+                    else:
+                        description = f"{title}, picture {count}"
+                    alt[hashlib.sha256(raw).hexdigest()] = description
+        name = "index.ipynb" if path.name.startswith("00_") else path.name
+        if name == "index.ipynb":
+            pages = "\n".join(book.stem for book in books if not book.name.startswith("00_"))
+            notebook["cells"].append(
+                {
+                    "cell_type": "markdown",
+                    "id": "table-of-contents",
+                    "metadata": {},
+                    "source": f"```{{toctree}}\n:hidden:\n\n{pages}\n```\n",
+                }
+            )
+        (out / name).write_text(json.dumps(notebook, ensure_ascii=False, indent=1), "utf-8")
+    (out / "alt.json").write_text(json.dumps(alt, ensure_ascii=False, indent=1), "utf-8")
+    return len(alt)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("out", type=Path, help="the folder to write (replaced)")
+    parser.add_argument("--notebooks", type=Path, default=NOTEBOOKS)
+    args = parser.parse_args(argv)
+    pictures = stage(args.out, args.notebooks)
+    print(f"site/stage.py: {pictures} pictures staged in {args.out}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,146 @@
+"""The course's website (``make site``) in Chromium: every page, picture and internal link.
+
+The built site (``build/site/``, or ``$SITE``) is served over HTTP on 127.0.0.1, and the
+browser may fetch nothing else: a request that leaves the site is aborted, so the test
+sees what a reader offline would. Every HTML page of the build must load, every picture
+on it decode, and every link that stays inside the site reach a file, and an anchor the
+element it names. The landing page must be the course map, linking every lesson. A
+screenshot of the landing page and of lesson 01 goes to ``docs/browser/``.
+"""
+
+from __future__ import annotations
+
+import functools
+import http.server
+import os
+import threading
+from collections.abc import Iterator
+from pathlib import Path
+from urllib.parse import urldefrag, urlparse
+
+import pytest
+from playwright.sync_api import Browser, Page
+
+from tests_browser.conftest import REPOSITORY, free_port
+
+SITE = Path(os.environ.get("SITE", REPOSITORY / "build" / "site")).resolve()
+DOCS = REPOSITORY / "docs" / "browser"
+LESSON_PAGES = sorted(SITE.glob("[0-9][0-9]_*.html"))
+
+# For every <img>: whether it decoded, and its natural size.
+IMAGES = """async () => Promise.all([...document.images].map(async (image) => {
+    try { await image.decode(); } catch (error) { return [image.src, false, 0]; }
+    return [image.src, image.complete, image.naturalWidth * image.naturalHeight];
+}))"""
+LINKS = "() => [...document.querySelectorAll('a[href]')].map((link) => link.href)"
+
+
+class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args) -> None:
+        pass
+
+
+@pytest.fixture(scope="module")
+def site() -> Iterator[str]:
+    if not (SITE / "index.html").is_file():
+        pytest.fail(f"{SITE}/index.html is missing: build the website first with `make site`")
+    port = free_port()
+    handler = functools.partial(QuietHandler, directory=str(SITE))
+    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", port), handler)
+    thread = threading.Thread(target=httpd.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{port}/"
+    finally:
+        httpd.shutdown()
+        httpd.server_close()
+
+
+@pytest.fixture
+def offline_page(browser: Browser, site: str) -> Iterator[Page]:
+    context = browser.new_context(viewport={"width": 1280, "height": 900})
+    context.set_default_timeout(60_000)
+    context.route(
+        "**/*",
+        lambda route: route.continue_() if route.request.url.startswith(site) else route.abort(),
+    )
+    page = context.new_page()
+    yield page
+    context.close()
+
+
+def visit(page: Page, url: str) -> tuple[list, list[str]]:
+    """Load ``url``; its pictures (src, decoded, pixels) and its links."""
+    response = page.goto(url, wait_until="load")
+    assert response is not None and response.ok, f"{url}: {response and response.status}"
+    return page.evaluate(IMAGES), page.evaluate(LINKS)
+
+
+def test_the_site_has_the_course_map_and_every_lesson():
+    assert (SITE / "index.html").is_file()
+    lessons = sorted(path.stem for path in (REPOSITORY / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+    assert [page.stem for page in LESSON_PAGES] == [name for name in lessons if name[:2] != "00"]
+
+
+def test_every_page_loads_every_picture_decodes_and_no_internal_link_is_broken(
+    offline_page: Page, site: str
+):
+    pages = sorted(SITE.glob("*.html"))
+    links: set[str] = set()
+    pictures = 0
+    for path in pages:
+        images, found = visit(offline_page, site + path.name)
+        broken = [src for src, decoded, size in images if not (decoded and size > 0)]
+        assert not broken, f"{path.name}: pictures that do not decode: {broken}"
+        pictures += len(images)
+        links.update(link for link in found if link.startswith(site))
+    assert pictures >= len(LESSON_PAGES) * 3, f"only {pictures} pictures on the whole site"
+
+    anchors: dict[str, set[str]] = {}
+    missing = []
+    for link in sorted(links):
+        address, fragment = urldefrag(link)
+        relative = urlparse(address).path.lstrip("/") or "index.html"
+        target = SITE / relative
+        if relative.endswith("/"):
+            target = target / "index.html"
+        if not target.is_file():
+            missing.append(link)
+            continue
+        if fragment and target.suffix == ".html":
+            if address not in anchors:
+                offline_page.goto(address, wait_until="load")
+                anchors[address] = set(
+                    offline_page.evaluate(
+                        "() => [...document.querySelectorAll('[id]')].map(e => e.id)"
+                    )
+                )
+            if fragment not in anchors[address]:
+                missing.append(link)
+    assert not missing, f"internal links to nothing: {missing}"
+
+
+def test_the_landing_page_is_the_course_map_and_links_every_lesson(offline_page: Page, site: str):
+    images, links = visit(offline_page, site)
+    assert offline_page.locator("h1").first.inner_text().startswith("Course map")
+    for lesson in LESSON_PAGES:
+        assert site + lesson.name in links, f"the course map does not link {lesson.name}"
+    assert len(images) >= len(LESSON_PAGES), "the course map shows one picture per lesson"
+    DOCS.mkdir(parents=True, exist_ok=True)
+    offline_page.screenshot(path=str(DOCS / "site_course_map.png"))
+
+
+def test_a_lesson_page_shows_its_apps_still_pictures_with_the_gallerys_captions(
+    offline_page: Page, site: str
+):
+    images, _ = visit(offline_page, site + "01_de_casteljau.html")
+    assert images, "lesson 01 shows its pictures"
+    alts = offline_page.evaluate("() => [...document.images].map((image) => image.alt)")
+    assert all(alts), "every picture has alt text"
+    # The app's still picture, captioned as the gallery captions it (docs/ shows the same).
+    assert "de Casteljau's levels for 4 control points at t = 0.50" in alts
+    assert (
+        offline_page.locator("script[type='application/vnd.jupyter.widget-view+json']").count() == 0
+    )
+    offline_page.locator("img").first.scroll_into_view_if_needed()
+    offline_page.screenshot(path=str(DOCS / "site_lesson01.png"))

@@ -13,6 +13,8 @@ segments' stadiums, averaged (the midpoint rule in y, exact in x).
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 from scipy.spatial import cKDTree
 
@@ -75,9 +77,12 @@ def crowded_dots(segments: Segments, half: float) -> np.ndarray:
         # Pieces of the segments no longer than 2: their middles lie within
         # 2 half + 1 of a point the segment passes within 2 half of.
         owner, middle = _pieces(s.start, s.end, 2.0)
-        distance, which = tree.query(middle, distance_upper_bound=2 * half + 1.0 + 1e-9)
-        found = np.isfinite(distance)
-        dot, segment = which[found], owner[found]
+        # Every point near a piece, not only the nearest: a segment can have
+        # one point close by and another just within 2 half farther along.
+        near = tree.query_ball_point(middle, 2 * half + 1.0 + 1e-9, return_sorted=False)
+        counts = np.fromiter(map(len, near), dtype=np.int64, count=len(near))
+        dot = np.fromiter(itertools.chain.from_iterable(near), dtype=np.int64, count=counts.sum())
+        segment = np.repeat(owner, counts)
         gap = distance_to(s.dots[dot], s.start[segment], s.end[segment])
         crowded[dot[gap <= 2 * half * (1 + 1e-9)]] = True
     return crowded

@@ -244,3 +244,18 @@ def test_accumulate_sums_by_blocks_as_it_sums_whole_rows(corners, width):
     finally:
         fill._DENSE = dense
     np.testing.assert_allclose(blocks, rows, atol=1e-9)
+
+
+def test_a_point_crowding_a_segment_is_found_past_a_nearer_point():
+    # The segment's nearest point lies 1.13 away, a second one 2.69 away, both
+    # within the width 3: the second's overlap must be integrated too (it was
+    # missed when only the nearest point was asked for: pixel (2, 0) got 1.0).
+    curves = [
+        np.array([(1.0, 2.125)]),
+        np.array([(3.875, 1.125)]),
+        np.array([(1.0, 1.0), (1.1875, 1.0)]),
+    ]
+    image = render(curves, (6, 8), "stroke_area", 3.0)
+    exact = reference(curves, (6, 8), 3.0, k=K)
+    assert image[0, 2] == pytest.approx(0.898, abs=0.01)
+    assert np.abs(image - exact).max() <= TOLERANCE

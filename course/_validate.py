@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
+
 
 def describe(value: Any) -> str:
     """A short description of a value for an error message."""
@@ -50,9 +52,17 @@ def require_finite(array: np.ndarray, name: str) -> None:
         raise ValueError(f"{name} must be finite; got {array[bad].flat[0]}{where}")
 
 
-def as_points(points: Any, name: str = "points") -> np.ndarray:
+def require_within(array: np.ndarray, name: str, bound: float, what: str = "coordinates") -> None:
+    """ValueError unless every entry of ``array`` lies within ``[-bound, bound]``."""
+    if array.size and np.abs(array).max() > bound:
+        worst = array.flat[int(np.abs(array).argmax())]
+        raise ValueError(f"{name} {what} must lie within +-{bound:g}; got {worst:g}")
+
+
+def as_points(points: Any, name: str = "points", bound: float | None = None) -> np.ndarray:
     """Validate a point list: a finite float ``(N, d)`` array, N >= 1, d >= 1.
 
+    With ``bound``, every coordinate must also lie within ``[-bound, bound]``.
     Returns a new float64 array, so callers may work on it freely.
     """
     array = as_float_array(points, name)
@@ -74,12 +84,19 @@ def as_points(points: Any, name: str = "points") -> np.ndarray:
             f"{name} must have at least one coordinate per point (d >= 1); got shape {array.shape}"
         )
     require_finite(array, name)
+    if array.shape[0] > limits.MAX_SAMPLES:
+        raise ValueError(f"{name} must hold at most {limits.MAX_SAMPLES} points; got {len(array)}")
+    if bound is not None:
+        require_within(array, name, bound)
     return array
 
 
 def as_curve(points: Any, name: str = "points") -> np.ndarray:
-    """Validate control points of a curve in image space: finite, shape (N, 2)."""
-    control = as_points(points, name)
+    """Validate control points of a curve in image space: finite, shape (N, 2).
+
+    Coordinates must lie within ``limits.MAX_COORDINATE`` of the origin.
+    """
+    control = as_points(points, name, bound=limits.MAX_COORDINATE)
     if control.shape[1] != 2:
         raise ValueError(
             f"{name} must have shape (N, 2): (x, y) control points in image space; "
@@ -88,18 +105,22 @@ def as_curve(points: Any, name: str = "points") -> np.ndarray:
     return control
 
 
-def as_point(point: Any, name: str, dim: int | None = None) -> np.ndarray:
-    """Validate one point: a finite float ``(d,)`` array."""
+def as_point(
+    point: Any, name: str, dim: int | None = None, bound: float | None = None
+) -> np.ndarray:
+    """Validate one point: a finite float ``(d,)`` array, within ``bound`` if given."""
     array = as_float_array(point, name)
     if array.ndim != 1 or array.size == 0 or (dim is not None and array.size != dim):
         expected = f"({dim},)" if dim is not None else "(d,)"
         raise ValueError(f"{name} must be one point of shape {expected}; got shape {array.shape}")
     require_finite(array, name)
+    if bound is not None:
+        require_within(array, name, bound)
     return array
 
 
 def as_parameter(t: Any, name: str = "t") -> tuple[np.ndarray, bool]:
-    """Validate a curve parameter: a finite scalar or 1-D array.
+    """Validate a curve parameter: a finite scalar or 1-D array within ``+-MAX_PARAMETER``.
 
     Returns ``(values, is_scalar)`` with ``values`` a 1-D float64 array.
     """
@@ -107,6 +128,9 @@ def as_parameter(t: Any, name: str = "t") -> tuple[np.ndarray, bool]:
     if array.ndim > 1:
         raise ValueError(f"{name} must be a scalar or a 1-D array; got shape {array.shape}")
     require_finite(array, name)
+    require_within(array, name, limits.MAX_PARAMETER, "values")
+    if array.size > limits.MAX_SAMPLES:
+        raise ValueError(f"{name} must hold at most {limits.MAX_SAMPLES} values; got {array.size}")
     return np.atleast_1d(array), array.ndim == 0
 
 
@@ -118,8 +142,19 @@ def as_scalar_parameter(t: Any, name: str = "t") -> float:
     return float(values[0])
 
 
-def as_positive_float(value: Any, name: str, allow_zero: bool = False) -> float:
-    """A finite real number > 0 (or >= 0 with ``allow_zero``)."""
+def as_positive_float(
+    value: Any,
+    name: str,
+    allow_zero: bool = False,
+    smallest: float = limits.SMALLEST,
+    largest: float = limits.LARGEST,
+) -> float:
+    """A finite real number > 0 (or >= 0 with ``allow_zero``), within a usable range.
+
+    A non-zero value must lie in ``[smallest, largest]`` (by default
+    ``limits.SMALLEST`` and ``limits.LARGEST``): beyond them no tolerance, step
+    or width can work.
+    """
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise TypeError(f"{name} must be a real number; got {describe(value)}")
     number = float(value)
@@ -128,27 +163,43 @@ def as_positive_float(value: Any, name: str, allow_zero: bool = False) -> float:
     if number < 0 or (number == 0 and not allow_zero):
         bound = ">= 0" if allow_zero else "> 0"
         raise ValueError(f"{name} must be {bound}; got {number}")
+    if number != 0 and not smallest <= number <= largest:
+        raise ValueError(f"{name} must lie between {smallest:g} and {largest:g}; got {number:g}")
     return number
 
 
-def as_int(value: Any, name: str, minimum: int | None = None) -> int:
-    """An integer (not a bool, not a float), optionally at least ``minimum``."""
+def as_int(
+    value: Any, name: str, minimum: int | None = None, maximum: int = limits.MAX_COUNT
+) -> int:
+    """An integer (not a bool, not a float), at least ``minimum`` and at most ``maximum``.
+
+    Without ``minimum``, it must also be at least ``-maximum``.
+    """
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise TypeError(f"{name} must be an integer; got {describe(value)}")
     number = int(value)
     if minimum is not None and number < minimum:
         raise ValueError(f"{name} must be >= {minimum}; got {number}")
+    if number > maximum or (minimum is None and number < -maximum):
+        low = minimum if minimum is not None else -maximum
+        raise ValueError(f"{name} must be between {low} and {maximum}; got {number}")
     return number
 
 
-def as_shape(shape: Any, name: str = "shape") -> tuple[int, int]:
-    """A canvas shape ``(H, W)`` of positive integers."""
+def as_shape(
+    shape: Any, name: str = "shape", max_pixels: int = limits.MAX_PIXELS
+) -> tuple[int, int]:
+    """A canvas shape ``(H, W)`` of positive integers, at most ``max_pixels`` pixels."""
     if not isinstance(shape, (tuple, list)) or len(shape) != 2:
         raise ValueError(
             f"{name} must be a pair (H, W) of positive integers; got {describe(shape)}"
         )
-    height = as_int(shape[0], f"{name}[0] (height)", minimum=1)
-    width = as_int(shape[1], f"{name}[1] (width)", minimum=1)
+    height = as_int(shape[0], f"{name}[0] (height)", minimum=1, maximum=max_pixels)
+    width = as_int(shape[1], f"{name}[1] (width)", minimum=1, maximum=max_pixels)
+    if height * width > max_pixels:
+        raise ValueError(
+            f"{name} must have at most {max_pixels} pixels (H * W); got {height} x {width}"
+        )
     return height, width
 
 
@@ -170,13 +221,18 @@ def as_pixels(pixels: Any, name: str = "pixels") -> np.ndarray:
 
 def as_image(image: Any, name: str = "image", copy: bool = True) -> np.ndarray:
     """A float image ``(H, W)`` or ``(H, W, 3)`` with finite values in [0, 1]."""
-    array = as_float_array(image, name) if copy or not isinstance(image, np.ndarray) else image
+    keep = not copy and isinstance(image, np.ndarray) and image.dtype.kind == "f"
+    array = image if keep else as_float_array(image, name)
     if not (array.ndim == 2 or (array.ndim == 3 and array.shape[2] == 3)):
         raise ValueError(
             f"{name} must be a gray (H, W) or RGB (H, W, 3) image; got shape {array.shape}"
         )
     if array.shape[0] == 0 or array.shape[1] == 0:
         raise ValueError(f"{name} must not be empty; got shape {array.shape}")
+    if array.shape[0] * array.shape[1] > limits.MAX_PIXELS:
+        raise ValueError(
+            f"{name} must have at most {limits.MAX_PIXELS} pixels; got shape {array.shape}"
+        )
     require_finite(array, name)
     if array.min() < 0 or array.max() > 1:
         raise ValueError(
@@ -215,3 +271,81 @@ def as_rng(rng: Any, name: str = "rng") -> np.random.Generator:
             f"got {describe(rng)}"
         )
     return rng
+
+
+def as_app_points(
+    value: Any,
+    name: str,
+    count: int | None = None,
+    low: float = -limits.MAX_COORDINATE,
+    high: float = limits.MAX_COORDINATE,
+    whole: bool = False,
+) -> np.ndarray:
+    """Validate points given to an app's constructor: the bounds its text box enforces.
+
+    Examples
+    --------
+    >>> as_app_points([(1, 2), (3, 4)], "p", count=2, low=0, high=9).tolist()
+    [[1.0, 2.0], [3.0, 4.0]]
+    """
+    points = as_points(value, name)
+    if points.shape[1] != 2 or (count is not None and len(points) != count):
+        expected = f"({count}, 2)" if count is not None else "(N, 2)"
+        raise ValueError(f"{name} must have shape {expected}, (x, y) rows; got {points.shape}")
+    if whole and (points != np.round(points)).any():
+        raise ValueError(f"{name} must be whole pixels; got {points.tolist()}")
+    if points.min() < low or points.max() > high:
+        raise ValueError(f"{name} must lie from {low:g} to {high:g}; got {points.tolist()}")
+    return points
+
+
+def as_unit(value: Any, name: str) -> float:
+    """A real number in [0, 1], as a slider from 0 to 1 takes it.
+
+    Examples
+    --------
+    >>> as_unit(0.25, "t")
+    0.25
+    """
+    number = as_positive_float(value, name, allow_zero=True, smallest=0.0)
+    if number > 1:
+        raise ValueError(f"{name} must lie in [0, 1]; got {number:g}")
+    return number
+
+
+def as_option(value: Any, name: str, options: Any) -> Any:
+    """One of a control's options (a dropdown's, buttons' or selection slider's).
+
+    Examples
+    --------
+    >>> as_option("box", "kernel", ("box", "sobel"))
+    'box'
+    """
+    for option in options:
+        if type(option) is type(value) and option == value:
+            return value
+    listed = ", ".join(repr(option) for option in options)
+    raise ValueError(f"{name} must be one of {listed}; got {value!r}")
+
+
+def require_bounded_flattening(control: np.ndarray, tolerance: float, max_step: float) -> None:
+    """ValueError unless flattening needs at most ``limits.MAX_SAMPLES`` vertices.
+
+    Wang's formula bounds the segments needed for ``tolerance``; the control
+    polygon's length over ``max_step`` bounds those needed for ``max_step``.
+    """
+    degree = len(control) - 1
+    with np.errstate(over="ignore", invalid="ignore"):
+        needed = 1.0
+        if degree >= 2:
+            second = np.linalg.norm(np.diff(control, n=2, axis=0), axis=1).max()
+            needed = max(needed, np.sqrt(degree * (degree - 1) * second / (8 * tolerance)))
+        if degree >= 1 and np.isfinite(max_step):
+            length = np.linalg.norm(np.diff(control, axis=0), axis=1).sum()
+            needed = max(needed, length / max_step)
+    if not needed <= limits.MAX_SAMPLES:
+        raise ValueError(
+            f"points, tolerance and max_step would need about {needed:.3g} vertices, more "
+            f"than the {limits.MAX_SAMPLES} allowed; raise tolerance (or max_step), or "
+            "bring the control points closer together"
+        )

@@ -20,7 +20,8 @@ from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.path import Path
 from matplotlib.transforms import Affine2D
 
-from course._validate import as_positive_float, as_shape
+from course import limits
+from course._validate import as_curve, as_points, as_positive_float, as_shape, describe
 from course.paths import as_path, matplotlib_path
 
 __all__ = ["agg_draw", "agg_path", "agg_render"]
@@ -57,7 +58,7 @@ def agg_render(points: Any, shape: Any, width: float = 1.0) -> np.ndarray:
     """
     path = as_path(points)
     height, canvas_width = as_shape(shape)
-    width = as_positive_float(width, "width")
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     renderer = agg_draw(matplotlib_path(path), (height, canvas_width), width)
     return np.asarray(renderer.buffer_rgba())[..., 3] / 255.0
 
@@ -70,6 +71,7 @@ def agg_path(control: np.ndarray) -> Path:
     >>> agg_path(np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 2.0], [3.0, 0.0]])).codes
     array([1, 4, 4, 4], dtype=uint8)
     """
+    control = as_curve(control, "control")
     codes = {2: Path.LINETO, 3: Path.CURVE3, 4: Path.CURVE4}
     if len(control) not in codes:
         raise ValueError(
@@ -86,7 +88,13 @@ def agg_draw(path: Path, shape: tuple[int, int], width: float) -> RendererAgg:
     of ``width`` pixels, no snapping, y flipped to Agg's upward axis. The
     caller reads ``renderer.buffer_rgba()``; its alpha channel is coverage.
     """
-    height, canvas_width = shape
+    if not isinstance(path, Path):
+        raise TypeError(f"path must be a matplotlib.path.Path; got {describe(path)}")
+    vertices = as_points(path.vertices, "path.vertices", bound=limits.MAX_COORDINATE)
+    if vertices.shape[1] != 2:
+        raise ValueError(f"path.vertices must have shape (N, 2); got {vertices.shape}")
+    height, canvas_width = as_shape(shape)
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     renderer = RendererAgg(canvas_width, height, 72)
     context = renderer.new_gc()
     context.set_linewidth(width)

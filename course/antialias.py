@@ -34,6 +34,7 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course._validate import (
     as_choice,
     as_curve,
@@ -149,11 +150,16 @@ def _canvas(
     # No canvas: one just large enough, its origin wherever the curve is.
     low = np.floor(polyline.min(axis=0) - reach - 2)
     extent = np.ceil(polyline.max(axis=0) + reach + 2) - low
+    if extent[0] * extent[1] > limits.MAX_PIXELS:
+        raise ValueError(
+            f"polyline and width span {int(extent[1])} x {int(extent[0])} pixels; without shape "
+            f"at most {limits.MAX_PIXELS}: pass shape=(H, W) to clip the stroke to a canvas"
+        )
     return (int(extent[1]), int(extent[0])), (int(low[0]), int(low[1]))
 
 
 def _as_polyline(polyline: Any, gaps: Any) -> tuple[np.ndarray, np.ndarray]:
-    line = as_points(polyline, "polyline")
+    line = as_points(polyline, "polyline", bound=limits.MAX_COORDINATE)
     if line.shape[1] != 2:
         raise ValueError(f"polyline must have shape (K, 2); got shape {line.shape}")
     if len(line) == 1:
@@ -205,7 +211,7 @@ def stroke_linear(
     ([[0, 0], [1, 0], [2, 0], [0, 1], [1, 1], [2, 1]], [0.25, 0.25, 0.25, 0.75, 0.75, 0.75])
     """
     line, gaps = _as_polyline(polyline, gaps)
-    width = as_positive_float(width, "width")
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     reach = 0.5 * width + 0.5
     canvas, origin = _canvas(line, shape, reach)
     near = pixels_near(line, canvas, reach, origin, gaps=gaps)
@@ -250,7 +256,7 @@ def stroke_area(
     False
     """
     line, gaps = _as_polyline(polyline, gaps)
-    width = as_positive_float(width, "width")
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     canvas, origin = _canvas(line, shape, 0.5 * width)
     image = stroke_coverage(line - np.array(origin, dtype=float), gaps, 0.5 * width, canvas)
     y, x = np.nonzero(image)
@@ -328,7 +334,7 @@ def render(
     path = as_path(points)
     height, canvas_width = as_shape(shape)
     method = as_choice(method, "method", RENDER_METHODS)
-    width = as_positive_float(width, "width")
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     weighting = as_choice(weighting, "weighting", WEIGHTINGS)
     if step is not None:
         step = as_positive_float(step, "step")

@@ -26,6 +26,7 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course._bezier_fast import bernstein_horner, de_casteljau_chunked
 from course._flatten import flatten_curve
 from course._validate import (
@@ -35,6 +36,7 @@ from course._validate import (
     as_points,
     as_positive_float,
     as_scalar_parameter,
+    require_bounded_flattening,
 )
 
 __all__ = [
@@ -200,7 +202,7 @@ def pascal_row(n: int) -> tuple[int, ...]:
     >>> pascal_row(4)
     (1, 4, 6, 4, 1)
     """
-    return _pascal_row(as_int(n, "n", minimum=0))
+    return _pascal_row(as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE))
 
 
 def clear_pascal_cache() -> None:
@@ -230,7 +232,7 @@ def binomial(n: int, k: int) -> int:
     >>> binomial(100, 50)
     100891344545564193334812497256
     """
-    n = as_int(n, "n", minimum=0)
+    n = as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE)
     k = as_int(k, "k")
     if k < 0 or k > n:
         return 0
@@ -487,7 +489,9 @@ def flatten(
     ----------
     points : array_like, shape (N, d)
     tolerance : float
-        Largest allowed distance from the curve to the polyline, > 0.
+        Largest allowed distance from the curve to the polyline, > 0. Points
+        and tolerance needing more than :data:`course.limits.MAX_SAMPLES`
+        vertices are rejected (Wang's bound), before any is computed.
     max_step : float, optional
         Also split until consecutive vertices are at most this far apart
         (1.0 on pixel coordinates: their pixels leave no gap).
@@ -515,5 +519,6 @@ def flatten(
     control = as_points(points)
     tolerance = as_positive_float(tolerance, "tolerance")
     limit = np.inf if max_step is None else as_positive_float(max_step, "max_step")
+    require_bounded_flattening(control, tolerance, limit)
     vertices, parameters = flatten_curve(control, tolerance, limit)
     return (vertices, parameters) if return_parameters else vertices

@@ -22,7 +22,15 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_int, as_parameter, as_points
+from course import limits
+from course._validate import (
+    as_float_array,
+    as_int,
+    as_parameter,
+    as_points,
+    as_rng,
+    require_finite,
+)
 from course.bezier import bezier_bernstein, de_casteljau, pascal_row
 
 __all__ = [
@@ -136,8 +144,15 @@ def relative_errors(points: Any, t: Any, computed: Any) -> np.ndarray:
     rounded once.
     """
     control = as_points(points)
-    exact = bezier_exact(control, np.atleast_1d(np.asarray(t, dtype=float)))
-    values = np.asarray(computed, dtype=float).reshape(exact.shape)
+    values_t, _ = as_parameter(t)
+    exact = bezier_exact(control, values_t)
+    values = as_float_array(computed, "computed")
+    if values.size != exact.size:
+        raise ValueError(
+            f"computed must hold one point per t, shape {exact.shape}; got shape {values.shape}"
+        )
+    require_finite(values, "computed")
+    values = values.reshape(exact.shape)
     size = Fraction(float(np.abs(control).max()) or 1.0)
     errors = [
         max(abs(Fraction(float(v)) - e) for v, e in zip(row, exact_row, strict=True)) / size
@@ -171,7 +186,7 @@ def accuracy_by_degree(
     >>> bool(errors["de_casteljau"][0] < 1e-15)
     True
     """
-    generator = np.random.default_rng(0) if rng is None else rng
+    generator = as_rng(rng)
     samples = as_int(samples, "samples", minimum=1)
     evaluate = {
         "de_casteljau": de_casteljau,
@@ -182,7 +197,17 @@ def accuracy_by_degree(
     unknown = [m for m in methods if m not in evaluate]
     if unknown:
         raise ValueError(f"methods must be among {ACCURACY_BY_DEGREE_METHODS}; got {unknown}")
-    degree_list = [as_int(n, "degrees", minimum=0) for n in np.atleast_1d(degrees).tolist()]
+    degree_list = [
+        as_int(n, "degrees", minimum=0, maximum=limits.MAX_DEGREE)
+        for n in np.atleast_1d(np.asarray(degrees, dtype=object)).tolist()
+    ]
+    work = samples * sum((degree + 1) ** 2 for degree in degree_list)
+    if work > limits.MAX_CALLS:
+        raise ValueError(
+            f"degrees and samples ask for {work} exact operations (samples * sum of "
+            f"(degree + 1)**2); at most {limits.MAX_CALLS}: ask for fewer or lower degrees, "
+            "or fewer samples"
+        )
     results: dict[str, list[float]] = {method: [] for method in methods}
     for degree in degree_list:
         control = generator.uniform(-1, 1, (degree + 1, 2))

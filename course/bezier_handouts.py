@@ -20,7 +20,8 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_int, as_parameter, as_points, as_scalar_parameter
+from course import limits
+from course._validate import as_int, as_parameter, as_points, as_scalar_parameter, as_shape
 from course.bezier import bezier_bernstein, de_casteljau, flatten, uniform_parameters
 from course.raster import line, nearest_pixels
 
@@ -66,6 +67,14 @@ def comb_recursive(m: int, n: int) -> tuple[int, int]:
     """
     m = as_int(m, "m", minimum=0)
     n = as_int(n, "n", minimum=0)
+    if m > sys.getrecursionlimit() // 2:
+        raise ValueError(f"m must be <= {sys.getrecursionlimit() // 2}; got {m}")
+    if _calls(m, n) > limits.MAX_CALLS:
+        raise ValueError(
+            f"m and n must ask for at most {limits.MAX_CALLS} recursive calls; "
+            f"comb_recursive({m}, {n}) would make {_calls(m, n)} "
+            "(count them with comb_recursive_calls)"
+        )
     calls = 0
 
     def comb(m: int, n: int) -> int:
@@ -122,7 +131,7 @@ def pascal_row_int32(n: int) -> np.ndarray:
     >>> int(pascal_row_int32(34)[17])
     -1961361076
     """
-    n = as_int(n, "n", minimum=0)
+    n = as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE)
     row = np.ones(1, dtype=np.int32)
     for _ in range(n):
         # numpy arrays wrap like C ints (numpy scalars would warn instead).
@@ -329,13 +338,22 @@ def loop_pixels(points: Any, loop: HandoutLoop, shape: Any = None) -> np.ndarray
     >>> loop_pixels([[0.5, 0.5], [4.5, 0.5]], HANDOUT_LOOPS["003"])[[0, -1]].tolist()
     [[0, 0], [4, 0]]
     """
-    control = as_points(points)
+    control = as_points(points, bound=limits.MAX_COORDINATE)
+    _require_loop(loop)
     t = uniform_parameters(0.001, loop.accumulate)
     if loop is NAIVE_LOOP:
         curve = bezier_bernstein(control, t, method="loop")
     else:
         curve = de_casteljau_reversed(control, t) if loop.reversed else de_casteljau(control, t)
     return nearest_pixels(curve, rounding=loop.rounding, shape=shape)
+
+
+def _require_loop(loop: Any) -> None:
+    if not isinstance(loop, HandoutLoop):
+        raise TypeError(
+            "loop must be a HandoutLoop, e.g. HANDOUT_LOOPS['003'] or NAIVE_LOOP; "
+            f"got {type(loop).__name__} {loop!r:.60}"
+        )
 
 
 @dataclass(frozen=True)
@@ -362,7 +380,8 @@ def yellow_check(points: Any, loop: HandoutLoop, shape: Any = (700, 700)) -> Yel
     >>> check.fraction, len(check.red_only), len(check.green_only)
     (1.0, 0, 0)
     """
-    height, width = shape
+    height, width = as_shape(shape)
+    _require_loop(loop)
     red = np.zeros((height, width), dtype=bool)
     green = np.zeros((height, width), dtype=bool)
     for mask, pixels in (
@@ -403,7 +422,7 @@ def bresenham_curve(points: Any, segments: int) -> np.ndarray:
     >>> bresenham_curve([[0.5, 0.5], [4.5, 0.5], [4.5, 4.5]], 2).tolist()
     [[0, 0], [1, 0], [2, 1], [3, 1], [3, 1], [3, 2], [4, 3], [4, 4]]
     """
-    control = as_points(points)
+    control = as_points(points, bound=limits.MAX_COORDINATE)
     if control.shape[1] != 2:
         raise ValueError(f"points must have shape (N, 2) for image space; got {control.shape}")
     segments = as_int(segments, "segments", minimum=1)
@@ -427,7 +446,7 @@ def curve_pixels(points: Any) -> np.ndarray:
     >>> curve_pixels([[0.5, 0.5], [4.5, 0.5]]).tolist()
     [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0]]
     """
-    control = as_points(points)
+    control = as_points(points, bound=limits.MAX_COORDINATE)
     if control.shape[1] != 2:
         raise ValueError(f"points must have shape (N, 2) for image space; got {control.shape}")
     pixels = nearest_pixels(flatten(control, 0.01, max_step=0.5))

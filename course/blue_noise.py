@@ -20,12 +20,14 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course._validate import (
     as_float_array,
     as_int,
     as_positive_float,
     as_rng,
     require_finite,
+    require_within,
 )
 
 __all__ = [
@@ -46,7 +48,7 @@ def torus_gaussian(size: int, sigma: float = 1.5) -> np.ndarray:
     >>> np.round(torus_gaussian(4, 1.0)[0], 3)
     array([1.   , 0.607, 0.135, 0.607])
     """
-    size = as_int(size, "size", minimum=1)
+    size = as_int(size, "size", minimum=1, maximum=int(limits.MAX_PIXELS**0.5))
     sigma = as_positive_float(sigma, "sigma")
     index = np.arange(size)
     distance = np.minimum(index, size - index).astype(float)
@@ -77,6 +79,9 @@ def _as_dots(value: Any, name: str) -> np.ndarray:
         value = value.astype(float)
     array = as_float_array(value, name)
     require_finite(array, name)
+    require_within(array, name, limits.LARGEST, "values")
+    if array.size > limits.MAX_PIXELS:
+        raise ValueError(f"{name} must have at most {limits.MAX_PIXELS} entries; got {array.size}")
     return array
 
 
@@ -98,6 +103,7 @@ def void_and_cluster(
     Parameters
     ----------
     size : int
+        From 2 to :data:`course.limits.MAX_MASK_SIZE` (128): the cost grows as size**4.
     rng : numpy.random.Generator, optional
         Places the initial random dots; ``default_rng(0)`` if omitted.
     sigma : float
@@ -128,7 +134,7 @@ def void_and_cluster(
     >>> sorted(ranks.ravel().tolist()) == list(range(16))
     True
     """
-    size = as_int(size, "size", minimum=2)
+    size = as_int(size, "size", minimum=2, maximum=limits.MAX_MASK_SIZE)
     generator = as_rng(rng)
     sigma = as_positive_float(sigma, "sigma")
     fraction = as_positive_float(initial_fraction, "initial_fraction")

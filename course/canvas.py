@@ -19,8 +19,10 @@ from course._validate import (
     as_image,
     as_int,
     as_pixels,
+    as_point,
     as_shape,
     describe,
+    require_finite,
 )
 
 __all__ = [
@@ -74,8 +76,11 @@ def inside(pixels: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
     >>> inside(np.array([[0, 0], [-1, 0], [2, 1], [1, 2]]), (2, 3))
     array([ True, False,  True, False])
     """
-    height, width = shape[:2]
-    x, y = pixels[:, 0], pixels[:, 1]
+    coordinates = as_pixels(pixels)
+    if not isinstance(shape, (tuple, list)) or len(shape) not in (2, 3):
+        raise ValueError(f"shape must be (H, W) or (H, W, C); got {describe(shape)}")
+    height, width = as_shape(tuple(shape[:2]))
+    x, y = coordinates[:, 0], coordinates[:, 1]
     return (x >= 0) & (x < width) & (y >= 0) & (y < height)
 
 
@@ -122,6 +127,7 @@ def paint(
         )
     if not (image.ndim == 2 or (image.ndim == 3 and image.shape[2] == 3)):
         raise ValueError(f"image must have shape (H, W) or (H, W, 3); got {image.shape}")
+    require_finite(image, "image")
     coordinates = as_pixels(pixels)
     value = _as_color(color, "color", channels=1 if image.ndim == 2 else 3)
     strength = as_float_array(weight, "weight")
@@ -189,7 +195,7 @@ def crop_extent(shape: Any, centre: Any, size: int) -> tuple[int, int, int, int]
     """
     height, width = as_shape(shape)
     size = as_int(size, "size", minimum=1)
-    x, y = as_float_array(centre, "centre")
+    x, y = as_point(centre, "centre", dim=2)
     size_x, size_y = min(size, width), min(size, height)
     x0 = int(np.clip(np.floor(x) - size_x // 2, 0, width - size_x))
     y0 = int(np.clip(np.floor(y) - size_y // 2, 0, height - size_y))

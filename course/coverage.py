@@ -30,7 +30,8 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_curve, as_int, as_positive_float, as_shape
+from course import limits
+from course._validate import as_curve, as_int, as_positive_float, as_shape, describe
 from course.agg import agg_draw, agg_path, agg_render
 from course.bezier import flatten
 from course.near_pixels import (
@@ -147,8 +148,8 @@ def reference(points: Any, shape: Any, width: float = 1.0, k: int = 16) -> np.nd
     """
     path = as_path(points)
     height, canvas_width = as_shape(shape)
-    width = as_positive_float(width, "width")
-    k = as_int(k, "k", minimum=1)
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
+    k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
     half = 0.5 * width
     line, gaps = path_polyline(path, REFERENCE_TOLERANCE)
     near = pixels_near(line, (height, canvas_width), half + HALF_DIAGONAL, gaps=gaps)
@@ -189,6 +190,16 @@ def supersample(
     coverage : float ndarray
         The fraction of its k x k samples inside.
     """
+    if not isinstance(near, NearPixels):
+        raise TypeError(f"near must be NearPixels, from pixels_near; got {describe(near)}")
+    pairs = np.asarray(pairs)
+    if pairs.dtype != bool or pairs.shape != near.flat.shape:
+        raise ValueError(
+            f"pairs must be a boolean mask of shape {near.flat.shape}, one per pair of near; "
+            f"got {describe(pairs)}"
+        )
+    half = as_positive_float(half, "half")
+    k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
     index = np.flatnonzero(pairs)
     if len(index) == 0:
         return index, np.zeros(0)

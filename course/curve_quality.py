@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course._validate import as_choice, as_curve, as_gray, as_positive_float, as_shape
 from course.antialias import RENDER_METHODS, SPLATS, render
 from course.canvas import crop_extent
@@ -185,7 +186,7 @@ def centroid_offsets(image: Any, points: Any, width: float = 1.0) -> CentroidOff
     """
     gray = as_gray(image, "image")
     control = as_curve(points)
-    width = as_positive_float(width, "width")
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     line = curve_polyline(control, METRIC_TOLERANCE, max_step=0.5)
     window = 0.5 * width + 1.5
     results = [
@@ -325,6 +326,8 @@ def quality_table(
     """
     control = as_curve(points)
     truth = as_gray(reference, "reference")
+    if not isinstance(images, dict) or not all(isinstance(name, str) for name in images):
+        raise TypeError(f"images must map variant names to images; got {type(images).__name__}")
     rows = []
     for name, image in images.items():
         rows.append(

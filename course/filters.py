@@ -26,7 +26,14 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_choice, as_float_array, as_image, require_finite
+from course import limits
+from course._validate import (
+    as_choice,
+    as_float_array,
+    as_image,
+    require_finite,
+    require_within,
+)
 
 __all__ = [
     "BLUR_METHODS",
@@ -137,6 +144,7 @@ def _as_kernel(kernel: Any) -> np.ndarray:
     if array.shape != (3, 3):
         raise ValueError(f"kernel must be a 3 x 3 array; got shape {array.shape}")
     require_finite(array, "kernel")
+    require_within(array, "kernel", limits.LARGEST, "values")
     return array
 
 

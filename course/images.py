@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 from matplotlib import cbook
 
-from course._validate import as_choice, as_image, as_int, as_positive_float, as_shape
+from course._validate import as_choice, as_image, as_int, as_positive_float, as_rng, as_shape
 
 __all__ = [
     "EXAMPLE_POINTS",
@@ -225,7 +225,7 @@ def lake(shape: Any = LAKE_SHAPE, rng: np.random.Generator | None = None) -> np.
     True
     """
     height, width = as_shape(shape)
-    rng = np.random.default_rng(8) if rng is None else rng
+    rng = np.random.default_rng(8) if rng is None else as_rng(rng)
     rows = np.arange(height)[:, None] / height
     columns = np.arange(width)[None, :] / width
     horizon = 0.42 + 0.03 * np.sin(2 * np.pi * columns * 1.3 + 0.4)
@@ -282,7 +282,7 @@ def plane(
     """
     height, width = as_shape(shape)
     sky = as_choice(sky, "sky", ("evening", "day"))
-    rng = np.random.default_rng(80) if rng is None else rng
+    rng = np.random.default_rng(80) if rng is None else as_rng(rng)
     rows = np.arange(height)[:, None] / height
     top, bottom = ((0.93, 0.55, 0.25), (0.98, 0.80, 0.52))
     if sky == "day":
@@ -347,9 +347,9 @@ def scratched_photograph(
 
     from course.bezier import de_casteljau
 
-    scratches = as_int(scratches, "scratches", minimum=0)
-    width = as_int(width, "width", minimum=1)
-    rng = np.random.default_rng(88) if rng is None else rng
+    scratches = as_int(scratches, "scratches", minimum=0, maximum=1000)
+    width = as_int(width, "width", minimum=1, maximum=100)
+    rng = np.random.default_rng(88) if rng is None else as_rng(rng)
     image = photograph()
     height, columns = image.shape[:2]
     border = 10 + width

@@ -5,6 +5,11 @@ centre lies within some reach of the curve: :func:`pixels_near` finds them
 segment by segment, in time proportional to the curve's length, never to the
 canvas. A polyline may have *gaps*, segments that are the pen moving between
 the subpaths of a path, not part of it; they are skipped.
+
+Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
+caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
+Its public callers (:mod:`course.antialias`, :mod:`course.coverage`) validate
+once, at their boundary.
 """
 
 from __future__ import annotations
@@ -21,6 +26,8 @@ __all__ = [
     "segment_distance",
     "subdivide",
 ]
+
+UNCHECKED = True  # kernels for checked callers; see the module docstring
 
 #: Distance from a pixel's centre to its farthest corner.
 HALF_DIAGONAL = float(np.sqrt(0.5))

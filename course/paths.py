@@ -31,6 +31,7 @@ from matplotlib.font_manager import FontProperties
 from matplotlib.path import Path
 from matplotlib.textpath import TextPath
 
+from course import limits
 from course._validate import (
     as_curve,
     as_float_array,
@@ -185,6 +186,10 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
     >>> [curve.tolist() for curve in curves_of_path(square).split()]
     [[[0.0, 0.0], [2.0, 0.0]], [[2.0, 0.0], [2.0, 2.0]], [[2.0, 2.0], [0.0, 0.0]]]
     """
+    if not isinstance(path, Path):
+        raise TypeError(f"{name} must be a matplotlib.path.Path; got {describe(path)}")
+    if height is not None:
+        height = as_positive_float(height, "height", allow_zero=True)
     vertices = as_float_array(path.vertices, f"{name}.vertices")
     if vertices.ndim != 2 or vertices.shape[1] != 2:
         raise ValueError(
@@ -213,6 +218,7 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
         )
     if codes[0] != Path.MOVETO:
         raise ValueError(f"{name}.codes must start with MOVETO (1); got code {codes[0]}")
+    require_finite(vertices[codes != Path.CLOSEPOLY], f"{name}.vertices")
     # CLOSEPOLY's vertex is ignored, whatever it holds (often 0 or NaN).
     require_finite(np.where((codes == Path.CLOSEPOLY)[:, None], 0.0, vertices), f"{name}.vertices")
     if height is not None:
@@ -269,7 +275,7 @@ def matplotlib_path(curves: Curves) -> Path:
     >>> path.codes.tolist()
     [1, 2, 3, 3, 79]
     """
-    sizes = curves.sizes
+    sizes = _as_curves(curves).sizes
     drawable = (sizes >= 2) & (sizes <= 4)
     if not drawable.all():
         bad = int(np.flatnonzero(~drawable)[0])
@@ -301,6 +307,11 @@ def wang_counts(control: np.ndarray, tolerance: float) -> np.ndarray:
     on an interval of width h the chord strays at most ``h^2 / 8 max |B''|``
     and ``|B''| <= n (n - 1) max_i |P[i] - 2 P[i+1] + P[i+2]|``.
     """
+    control = as_float_array(control, "control")
+    if control.ndim != 3 or control.shape[1] == 0 or control.shape[2] != 2:
+        raise ValueError(f"control must be a stack (M, N, 2) of curves; got shape {control.shape}")
+    require_finite(control, "control")
+    tolerance = as_positive_float(tolerance, "tolerance")
     degree = control.shape[1] - 1
     if degree < 2:
         return np.ones(len(control), dtype=np.int64)
@@ -316,6 +327,8 @@ def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.nd
     de Casteljau beyond), so a glyph's hundreds of curves cost a few array
     operations, not a Python call each.
     """
+    curves = _as_curves(curves)
+    tolerance = as_positive_float(tolerance, "tolerance")
     counts = np.zeros(len(curves.sizes), dtype=np.int64)
     pieces: dict[int, tuple[np.ndarray, np.ndarray]] = {}
     for size in np.unique(curves.sizes).tolist():
@@ -324,6 +337,11 @@ def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.nd
         count = (
             np.zeros(len(which), dtype=np.int64) if size == 1 else wang_counts(control, tolerance)
         )
+        if count.sum() > limits.MAX_SAMPLES:
+            raise ValueError(
+                f"tolerance {tolerance:g} would need {count.sum()} vertices, more than the "
+                f"{limits.MAX_SAMPLES} allowed: raise it"
+            )
         counts[which] = count
         pieces[size] = (which, _uniform_points(control, count))
     return _assemble(curves, counts + 1, pieces)
@@ -362,6 +380,11 @@ def flatten_each(
     curves: Curves, flatten_one: Callable[[np.ndarray], np.ndarray]
 ) -> tuple[np.ndarray, np.ndarray]:
     """Every curve flattened by ``flatten_one(control) -> (K, 2) vertices``: polyline, gaps."""
+    curves = _as_curves(curves)
+    if not callable(flatten_one):
+        raise TypeError(
+            f"flatten_one must be a function of the control points; got {describe(flatten_one)}"
+        )
     parts = [flatten_one(control) for control in curves.split()]
     counts = np.array([len(part) for part in parts], dtype=np.int64)
     order = np.arange(len(parts))
@@ -461,3 +484,9 @@ def canvas_for(curves: Any, margin: float = 2.0) -> tuple[int, int]:
     margin = as_positive_float(margin, "margin", allow_zero=True)
     high = np.ceil(path.points.max(axis=0) + margin).astype(int)
     return max(int(high[1]), 1), max(int(high[0]), 1)
+
+
+def _as_curves(curves: Any) -> Curves:
+    if not isinstance(curves, Curves):
+        raise TypeError(f"curves must be Curves, e.g. from as_path(points); got {describe(curves)}")
+    return curves

@@ -40,12 +40,14 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course import poisson_capacitance as capacitance
 from course import poisson_solvers as solvers
 from course._validate import as_choice, as_image, as_int, as_positive_float
 from course.poisson_problem import (
     GUIDANCE,
     PoissonProblem,
+    as_problem,
     build_clone_problem,
     clone_inputs,
     clone_problem,
@@ -242,6 +244,7 @@ def solve(
            [0., 0., 0.],
            [0., 0., 0.]])
     """
+    problem = as_problem(problem)
     planes, _ = _solve_planes(problem, method, iterations, tolerance, omega)
     return image_of(planes, problem.values)
 
@@ -263,6 +266,7 @@ def exact_method(problem: PoissonProblem) -> str:
     ...  for mask in (None, disc, ring)]
     ['dst', 'capacitance', 'direct']
     """
+    problem = as_problem(problem)
     if problem.rectangular:
         return "dst"
     return "capacitance" if capacitance.faster_than_direct(problem.region) else "direct"
@@ -285,7 +289,11 @@ def sweeps_to_residual(
     >>> [sweeps_to_residual(problem, m) for m in ("jacobi", "gauss_seidel", "sor")]
     [39, 21, 11]
     """
+    problem = as_problem(problem)
     tolerance = as_positive_float(tolerance, "tolerance")
+    max_iterations = as_int(
+        max_iterations, "max_iterations", minimum=0, maximum=limits.MAX_ITERATIONS
+    )
     planes, done = _solve_planes(problem, method, max_iterations, tolerance, omega)
     if solvers.residual(planes, *problem.planes()[1:]) > tolerance:
         return None
@@ -309,8 +317,9 @@ def convergence(
     >>> history.sweeps, np.round(history.residuals, 3)
     (array([0, 2, 4]), array([1.  , 0.5 , 0.25]))
     """
+    problem = as_problem(problem)
     method = as_choice(method, "method", ITERATIVE_METHODS)
-    iterations = as_int(iterations, "iterations", minimum=0)
+    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
     every = as_int(every, "every", minimum=1)
     omega = _as_omega(omega, method, problem.region)
     reference = None if exact is None else planes_of(problem._as_solution(exact))
@@ -350,8 +359,13 @@ def iterates(
     >>> next(sweeps)[1]   # each unknown: three neighbours at 0, one at 0.5
     array([0.   , 0.125, 0.125, 0.   ])
     """
+    problem = as_problem(problem)
     method = as_choice(method, "method", ITERATIVE_METHODS)
     omega = _as_omega(omega, method, problem.region)
+    return _iterates(problem, method, omega)
+
+
+def _iterates(problem: PoissonProblem, method: str, omega: float) -> Iterator[np.ndarray]:
     for planes in _sweeps(problem, method, omega):
         yield planes[0] if problem.values.ndim == 2 else np.moveaxis(planes, 0, -1)
 
@@ -424,7 +438,7 @@ def lab_clone(
     array([0.  , 0.25, 0.5 , 0.75, 1.  ])
     """
     background, foreground, (x0, y0), _ = clone_inputs(background, foreground, offset, None)
-    iterations = as_int(iterations, "iterations", minimum=0)
+    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
     g = correction_boundary(background, foreground, (x0, y0))
     height, width = foreground.shape[:2]
     for _ in range(iterations):
@@ -475,7 +489,9 @@ def _solve_planes(
                 )
             return capacitance.solve_capacitance(values, region, source), 0
         return solvers.solve_direct(values, region, source), 0
-    iterations = LAB_ITERATIONS if iterations is None else as_int(iterations, "iterations", 0)
+    if iterations is None:
+        iterations = LAB_ITERATIONS
+    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
     if tolerance is not None:
         tolerance = as_positive_float(tolerance, "tolerance")
     omega = _as_omega(omega, method, region)

@@ -42,6 +42,11 @@ References
 .. [2] D. P. O'Leary and O. Widlund, "Capacitance matrix methods for the
    Helmholtz equation on general three-dimensional regions", Mathematics of
    Computation 33(147), 849-879, 1979.
+
+Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
+caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
+Its public callers (:mod:`course.poisson`, :class:`course.poisson_problem.PoissonProblem`)
+validate once, at their boundary.
 """
 
 from __future__ import annotations
@@ -70,6 +75,8 @@ __all__ = [
     "solve_capacitance",
     "sorted_along_long_side",
 ]
+
+UNCHECKED = True  # kernels for checked callers; see the module docstring
 
 # The capacitance method is expected faster than the sparse factorisation when
 # dense_work(region) < BREAK_EVEN * |region|^1.5 (measured; see faster_than_direct).

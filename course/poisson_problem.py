@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course import poisson_solvers as solvers
 from course._validate import (
     as_choice,
@@ -24,7 +25,13 @@ from course._validate import (
     require_finite,
 )
 
-__all__ = ["GUIDANCE", "PoissonProblem", "clone_problem", "inpaint_problem"]
+__all__ = [
+    "GUIDANCE",
+    "PoissonProblem",
+    "as_problem",
+    "clone_problem",
+    "inpaint_problem",
+]
 
 GUIDANCE = ("plain", "mixed")
 
@@ -50,6 +57,45 @@ class PoissonProblem:
     region: np.ndarray
     source: np.ndarray
     corner: tuple[int, int]
+
+    def __post_init__(self) -> None:
+        """Check the four fields once, so that the unchecked solvers get what they need."""
+        for name in ("values", "source"):
+            array = getattr(self, name)
+            if not isinstance(array, np.ndarray) or array.dtype.kind not in "fiu":
+                raise TypeError(
+                    f"{name} must be a numpy array of real numbers; got {describe(array)}"
+                )
+            require_finite(array, name)
+        values, region, source = self.values, self.region, self.source
+        if not (values.ndim == 2 or (values.ndim == 3 and values.shape[2] == 3)):
+            raise ValueError(f"values must have shape (h, w) or (h, w, 3); got {values.shape}")
+        if min(values.shape[:2]) < 3 or values.size > limits.MAX_PIXELS * 3:
+            raise ValueError(
+                f"values must be at least 3 x 3 and at most {limits.MAX_PIXELS} pixels; "
+                f"got shape {values.shape}"
+            )
+        if source.shape != values.shape:
+            raise ValueError(
+                f"source must have the shape of values, {values.shape}; got {source.shape}"
+            )
+        if not isinstance(region, np.ndarray) or region.dtype != bool:
+            raise TypeError(f"region must be a boolean numpy array; got {describe(region)}")
+        if region.shape != values.shape[:2]:
+            raise ValueError(f"region must have shape {values.shape[:2]}; got {region.shape}")
+        ring = np.concatenate([region[0], region[-1], region[:, 0], region[:, -1]])
+        if ring.any():
+            raise ValueError(
+                "region must be False on the outer ring, so each pixel has 4 neighbours"
+            )
+        if not region.any():
+            raise ValueError("region selects no pixel: there is nothing to solve")
+        if not isinstance(self.corner, tuple) or len(self.corner) != 2:
+            raise ValueError(
+                f"corner must be a pair (x, y) of integers; got {describe(self.corner)}"
+            )
+        as_int(self.corner[0], "corner[0] (x)")
+        as_int(self.corner[1], "corner[1] (y)")
 
     @property
     def rectangular(self) -> bool:
@@ -269,6 +315,16 @@ def image_of(planes: np.ndarray, like: np.ndarray) -> np.ndarray:
     if like.ndim == 2:
         return planes[0].copy()
     return np.ascontiguousarray(np.moveaxis(planes, 0, -1))
+
+
+def as_problem(problem: Any) -> PoissonProblem:
+    """``problem`` itself, if it is a :class:`PoissonProblem`; else TypeError."""
+    if not isinstance(problem, PoissonProblem):
+        raise TypeError(
+            "problem must be a PoissonProblem, e.g. from clone_problem or inpaint_problem; "
+            f"got {describe(problem)}"
+        )
+    return problem
 
 
 # --- input checks -------------------------------------------------------------

@@ -36,6 +36,11 @@ References
    ACM Transactions on Graphics 22(3), 313-318, 2003.
 .. [2] Y. Saad, *Iterative Methods for Sparse Linear Systems*, 2nd ed., SIAM,
    2003, section 4.1 (Jacobi, Gauss-Seidel, SOR).
+
+Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
+caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
+Its public callers (:mod:`course.poisson`, :class:`course.poisson_problem.PoissonProblem`)
+validate once, at their boundary.
 """
 
 from __future__ import annotations
@@ -64,6 +69,8 @@ __all__ = [
     "solve_dst",
     "sor_sweeps",
 ]
+
+UNCHECKED = True  # kernels for checked callers; see the module docstring
 
 # The four neighbours as (dy, dx), in the order every sum below adds them:
 # up, down, left, right. The loop form and the vectorised form add in the same

@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course._validate import as_choice, as_point, as_points, as_shape
 from course.canvas import inside
 from course.triangles import hit_counts, triangle, triangle_coverage
@@ -64,7 +65,7 @@ def nearest_pixels(points: Any, rounding: str = "floor", shape: Any = None) -> n
     >>> nearest_pixels([[0.4, 0.6], [1.5, 2.5], [-0.5, 1.0]], shape=(2, 2))
     array([[0, 0]])
     """
-    samples = as_points(points)
+    samples = as_points(points, bound=limits.MAX_COORDINATE)
     if samples.shape[1] != 2:
         raise ValueError(f"points must have shape (K, 2) for image space; got {samples.shape}")
     rounding = as_choice(rounding, "rounding", ROUNDING)
@@ -85,8 +86,8 @@ def nearest_pixels(points: Any, rounding: str = "floor", shape: Any = None) -> n
 
 LINE_METHODS = ("closed_form", "loop")
 
-# Beyond this, 2 * n * |minor delta| in the closed form could overflow int64.
-_MAX_PIXEL_COORDINATE = 2**24
+# Within this, 2 * n * |minor delta| in the closed form cannot overflow int64.
+_MAX_PIXEL_COORDINATE = int(limits.MAX_COORDINATE)
 
 
 def _as_pixel(point: Any, name: str) -> tuple[int, int]:
@@ -308,8 +309,8 @@ def wu_line(p0: Any, p1: Any, shape: Any = None) -> tuple[np.ndarray, np.ndarray
     3 1 0.75
     4 1 0.5
     """
-    start = as_point(p0, "p0", dim=2)
-    end = as_point(p1, "p1", dim=2)
+    start = as_point(p0, "p0", dim=2, bound=limits.MAX_COORDINATE)
+    end = as_point(p1, "p1", dim=2, bound=limits.MAX_COORDINATE)
     steep = abs(end[1] - start[1]) > abs(end[0] - start[0])
     if steep:  # work with x as the major axis, swap back at the end
         start, end = start[::-1], end[::-1]

@@ -28,12 +28,14 @@ from typing import Any
 import numpy as np
 from scipy import sparse
 
+from course import limits
 from course._validate import (
     as_choice,
     as_float_array,
     as_image,
     as_int,
     as_shape,
+    describe,
     require_finite,
 )
 
@@ -147,7 +149,8 @@ def supersample(image: Any, out_shape: Any, rate: int, method: str = "separable"
     """
     pixels = as_image(image, "image", copy=False)
     height, width = as_shape(out_shape, "out_shape")
-    rate = as_int(rate, "rate", minimum=1)
+    rate = as_int(rate, "rate", minimum=1, maximum=limits.MAX_RATE)
+    _require_bounded_samples(height, width, rate)
     method = as_choice(method, "method", SUPERSAMPLE_METHODS)
     if method == "loop":
         return _supersample_loop(pixels, (height, width), rate)
@@ -223,7 +226,8 @@ def supersample_shifted(
     """
     pixels = as_image(image, "image", copy=False)
     height, width = as_shape(out_shape, "out_shape")
-    rate = as_int(rate, "rate", minimum=1)
+    rate = as_int(rate, "rate", minimum=1, maximum=limits.MAX_RATE)
+    _require_bounded_samples(height, width, rate)
     offsets = []
     for value, name in ((sample_offset, "sample_offset"), (pixel_centre, "pixel_centre")):
         number = float(as_float_array(value, name))
@@ -293,8 +297,11 @@ def measure_shift(
     >>> round(measure_shift(supersample_without_offset, 2500, 320, rate=1), 4)
     -0.436
     """
-    in_size = as_int(in_size, "in_size", minimum=2)
-    out_size = as_int(out_size, "out_size", minimum=3)
+    if not callable(resampler):
+        raise TypeError(f"resampler must be a function like supersample; got {describe(resampler)}")
+    in_size = as_int(in_size, "in_size", minimum=2, maximum=limits.MAX_SIDE)
+    out_size = as_int(out_size, "out_size", minimum=3, maximum=limits.MAX_SIDE)
+    rate = as_int(rate, "rate", minimum=1, maximum=limits.MAX_RATE)
     ramp = np.broadcast_to((np.arange(in_size) + 0.5) / in_size, (2, in_size))
     result = np.asarray(resampler(ramp, (1, out_size), rate))[0]
     scale = in_size / out_size
@@ -302,3 +309,11 @@ def measure_shift(
     # The first and last output pixels may have samples clamped at the border.
     interior = slice(1, out_size - 1)
     return float(np.mean(result[interior] * in_size / scale - centres[interior]))
+
+
+def _require_bounded_samples(height: int, width: int, rate: int) -> None:
+    if height * width * rate**2 > limits.MAX_SUPERSAMPLES:
+        raise ValueError(
+            f"out_shape and rate must ask for at most {limits.MAX_SUPERSAMPLES} samples "
+            f"(H * W * rate**2); got {height} x {width} x {rate}**2"
+        )

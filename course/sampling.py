@@ -24,7 +24,15 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_float_array, as_positive_float, require_finite
+from course import limits
+from course._validate import (
+    as_float_array,
+    as_int,
+    as_positive_float,
+    as_scalar_parameter,
+    require_finite,
+    require_within,
+)
 
 __all__ = ["alias_frequency", "box_response", "cosine_samples", "spectrum"]
 
@@ -44,6 +52,7 @@ def alias_frequency(frequency: Any, rate: float) -> np.ndarray | float:
     rate = as_positive_float(rate, "rate")
     values = as_float_array(frequency, "frequency")
     require_finite(values, "frequency")
+    require_within(values, "frequency", limits.MAX_PARAMETER, "values")
     folded = np.abs(values - rate * np.round(values / rate))
     return float(folded) if folded.ndim == 0 else folded
 
@@ -57,8 +66,10 @@ def cosine_samples(frequency: float, rate: float, count: int, phase: float = 0.0
     array([ 1.,  0., -1., -0.,  1.])
     """
     rate = as_positive_float(rate, "rate")
-    frequency = float(as_float_array(frequency, "frequency"))
-    x = np.arange(int(count)) / rate
+    frequency = as_scalar_parameter(frequency, "frequency")
+    phase = as_scalar_parameter(phase, "phase")
+    count = as_int(count, "count", minimum=0, maximum=limits.MAX_SAMPLES)
+    x = np.arange(count) / rate
     return np.cos(2 * np.pi * frequency * x + phase)
 
 
@@ -78,6 +89,7 @@ def spectrum(samples: Any, rate: float) -> tuple[np.ndarray, np.ndarray]:
     rate = as_positive_float(rate, "rate")
     values = as_float_array(samples, "samples")
     require_finite(values, "samples")
+    require_within(values, "samples", limits.LARGEST, "values")
     if values.ndim != 1 or len(values) < 2:
         raise ValueError(
             f"samples must be a 1-D array of at least 2 values; got shape {values.shape}"
@@ -106,6 +118,7 @@ def box_response(frequency: Any, width: float = 1.0) -> np.ndarray | float:
     width = as_positive_float(width, "width")
     values = as_float_array(frequency, "frequency")
     require_finite(values, "frequency")
+    require_within(values, "frequency", limits.MAX_PARAMETER, "values")
     response = np.sinc(values * width)
     response = np.where(np.abs(response) < 1e-15, 0.0, response)
     return float(response) if response.ndim == 0 else response

@@ -8,6 +8,11 @@ Green's function) share these. Like them, pure array functions with no input
 checks. They leave the thread count to the caller: the solvers run them inside
 :func:`course._threads.limited_threads`, which sets scipy.fft's workers and
 the BLAS threads.
+
+Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
+caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
+Its public callers (:mod:`course.poisson`, :class:`course.poisson_problem.PoissonProblem`)
+validate once, at their boundary.
 """
 
 from __future__ import annotations
@@ -25,6 +30,8 @@ __all__ = [
     "sine_matrix",
     "sine_transform",
 ]
+
+UNCHECKED = True  # kernels for checked callers; see the module docstring
 
 
 def laplacian_eigenvalues(size: int) -> np.ndarray:

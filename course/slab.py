@@ -5,6 +5,11 @@ between two parallel lines, and the area of a unit pixel inside it has a
 closed form (:func:`slab_coverage`). It is the building block of
 :func:`course.antialias.stroke_area` before joins were exact, and what the
 tests measure the reference's supersampling error against.
+
+Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
+caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
+Its public callers (:mod:`course.antialias`, :mod:`course.coverage`) validate
+once, at their boundary.
 """
 
 from __future__ import annotations
@@ -14,6 +19,8 @@ from typing import Any
 import numpy as np
 
 __all__ = ["band_coverage", "slab_coverage"]
+
+UNCHECKED = True  # kernels for checked callers; see the module docstring
 
 
 def slab_coverage(across: Any, normal: Any, width: float) -> np.ndarray:

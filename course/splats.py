@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course._validate import as_choice, as_points, as_shape
 from course.canvas import inside
 
@@ -53,7 +54,7 @@ SUBSAMPLE_MAX_DISTANCE = math.sqrt(1.125)
 
 
 def _as_samples(samples: Any) -> np.ndarray:
-    array = as_points(samples, "samples")
+    array = as_points(samples, "samples", bound=limits.MAX_COORDINATE)
     if array.shape[1] != 2:
         raise ValueError(
             f"samples must have shape (M, 2): (x, y) curve points in image space; "

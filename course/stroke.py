@@ -22,6 +22,11 @@ of the pixel inside that union. This module computes it in three steps:
    subpaths, a hairpin), and corners the cutting of step 1 cannot settle (a
    cusp, whose offset edges never cross), are found and the pixels near them
    are integrated directly (:mod:`course._overlaps`).
+
+Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
+caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
+Its public callers (:mod:`course.antialias`, :mod:`course.coverage`) validate
+once, at their boundary.
 """
 
 from __future__ import annotations
@@ -36,6 +41,8 @@ from course._segments import Segments
 from course._segments import segments as as_segments
 
 __all__ = ["ARC_STEP", "MITER_TURN", "stroke_coverage"]
+
+UNCHECKED = True  # kernels for checked callers; see the module docstring
 
 #: Largest angle one chord of a round join or cap spans: the chord is at most
 #: ``h (1 - cos(ARC_STEP / 2))`` inside the circle (0.00015 px for w = 1).

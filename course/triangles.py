@@ -34,6 +34,7 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course._validate import (
     as_choice,
     as_int,
@@ -62,7 +63,7 @@ EDGE_RULES = ("top-left", "closed", "open")
 
 _HALF = SUBPIXEL // 2
 # Snapped coordinates stay below 2**29, so edge functions stay below 2**61.
-_MAX_VERTEX_COORDINATE = 2**20
+_MAX_VERTEX_COORDINATE = int(limits.MAX_COORDINATE)
 # Pixel centres tested at once by the edge-function form (bounds its memory).
 _BLOCK = 1 << 18
 
@@ -125,10 +126,24 @@ def triangle(
     rule = as_choice(rule, "rule", EDGE_RULES)
     method = as_choice(method, "method", TRIANGLE_METHODS)
     canvas = None if shape is None else as_shape(shape)
+    if canvas is None:
+        _require_bounded_box(vertices)
     if method == "loop":
         pixels = np.array(_triangle_loop(vertices, canvas, rule), dtype=np.int64)
         return pixels.reshape(-1, 2)
     return _triangle_edge_functions(vertices, canvas, rule)
+
+
+def _require_bounded_box(vertices: list[tuple[int, int]]) -> None:
+    """Without a canvas to clip to, the triangle's bounding box must be a bounded picture."""
+    xs, ys = zip(*vertices, strict=True)
+    columns = (max(xs) - min(xs)) // SUBPIXEL + 2
+    rows = (max(ys) - min(ys)) // SUBPIXEL + 2
+    if rows * columns > limits.MAX_PIXELS:
+        raise ValueError(
+            f"p0, p1, p2 span about {rows} x {columns} pixels; without shape at most "
+            f"{limits.MAX_PIXELS}: pass shape=(H, W) to clip the triangle to a canvas"
+        )
 
 
 def _snap(p0: Any, p1: Any, p2: Any) -> list[tuple[int, int]]:
@@ -305,7 +320,12 @@ def triangle_coverage(
     ([[0, 0], [1, 0], [0, 1]], [1.0, 0.375, 0.375])
     """
     height, width = as_shape(shape)
-    rate = as_int(rate, "rate", minimum=1)
+    rate = as_int(rate, "rate", minimum=1, maximum=limits.MAX_RATE)
+    if height * width * rate**2 > limits.MAX_PIXELS:
+        raise ValueError(
+            f"shape and rate must give at most {limits.MAX_PIXELS} samples (H * W * rate**2); "
+            f"got {height} x {width} x {rate}**2"
+        )
     scaled = [
         rate * as_point(point, name, dim=2)
         for name, point in zip(("p0", "p1", "p2"), (p0, p1, p2), strict=True)
@@ -354,11 +374,14 @@ def barycentric(p0: Any, p1: Any, p2: Any, points: Any) -> np.ndarray:
            [1.  , 0.  , 0.  ],
            [0.  , 0.5 , 0.5 ]])
     """
-    a, b, c = (as_point(p, name, dim=2) for p, name in ((p0, "p0"), (p1, "p1"), (p2, "p2")))
+    a, b, c = (
+        as_point(p, name, dim=2, bound=limits.MAX_COORDINATE)
+        for p, name in ((p0, "p0"), (p1, "p1"), (p2, "p2"))
+    )
     if np.size(points) == 0:  # no point: no weights (a triangle with no pixel centre inside)
         at = np.zeros((0, 2))
     else:
-        at = as_points(points, "points")
+        at = as_points(points, "points", bound=limits.MAX_COORDINATE)
     if at.shape[1] != 2:
         raise ValueError(f"points must have shape (K, 2); got shape {at.shape}")
     twice_area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])

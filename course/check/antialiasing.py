@@ -22,6 +22,8 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
+from course import limits
+from course._validate import require_finite
 from course.antialias import (
     arc_length_weights as reference_weights,
 )
@@ -78,8 +80,11 @@ def splat_table(pixels: Any, weights: Any) -> np.ndarray:
         raise ValueError(
             f"pixels and weights must match: {len(coordinates)} pixels, {len(amounts)} weights"
         )
-    if not np.array_equal(coordinates, np.round(coordinates)):
+    require_finite(amounts, "weights")
+    if not np.isfinite(coordinates).all() or not np.array_equal(coordinates, np.round(coordinates)):
         raise ValueError("pixels must be whole numbers (x, y)")
+    if np.abs(coordinates).max() > limits.MAX_COORDINATE:
+        raise ValueError(f"pixels must lie within +-{limits.MAX_COORDINATE:g}")
     unique, index = np.unique(coordinates.astype(np.int64), axis=0, return_inverse=True)
     totals = np.bincount(index.ravel(), amounts, minlength=len(unique))
     keep = np.abs(totals) > 1e-12

@@ -23,6 +23,9 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
+from course._validate import as_float_array, require_finite
+
 __all__ = [
     "CallBudget",
     "CheckResult",
@@ -120,12 +123,19 @@ def close(atol: float = 1e-9, rtol: float = 1e-9) -> Callable[[Any, Any], bool]:
 
 def same_pixels(expected: Any, given: Any) -> bool:
     """A comparison of pixel sets: the same (x, y) pixels, in any order, repeats ignored."""
-    return _pixel_set(expected) == _pixel_set(given)
+    return _pixel_set(expected, "expected") == _pixel_set(given, "given")
 
 
-def _pixel_set(pixels: Any) -> set[tuple[int, int]]:
-    array = np.asarray(pixels, dtype=float).reshape(-1, 2)
-    return {(int(x), int(y)) for x, y in array}
+def _pixel_set(pixels: Any, name: str) -> set[tuple[int, int]]:
+    array = as_float_array(pixels, name)
+    if array.size % 2:
+        raise ValueError(f"{name} must hold (x, y) pairs; got {array.size} numbers")
+    require_finite(array, name)
+    if array.size > limits.MAX_SAMPLES:
+        raise ValueError(
+            f"{name} must hold at most {limits.MAX_SAMPLES} pixels; got {array.size // 2}"
+        )
+    return {(int(x), int(y)) for x, y in array.reshape(-1, 2)}
 
 
 def first_difference(expected: Any, given: Any, atol: float = 1e-9, rtol: float = 1e-9) -> str:
@@ -162,7 +172,7 @@ def pixel_difference(expected: Any, given: Any) -> str:
     >>> pixel_difference([[0, 0], [1, 0], [2, 1]], [[0, 0], [1, 1], [2, 1]])
     '1 pixel missing, first (1, 0); 1 extra, first (1, 1)'
     """
-    want, have = _pixel_set(expected), _pixel_set(given)
+    want, have = _pixel_set(expected, "expected"), _pixel_set(given, "given")
 
     def reading_order(pixel: tuple[int, int]) -> tuple[int, int]:
         return pixel[1], pixel[0]

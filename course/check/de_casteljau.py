@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from course._validate import as_int
 from course.bezier import de_casteljau, de_casteljau_levels, uniform_parameters
 from course.bezier_handouts import de_casteljau_reversed
 from course.check.base import CheckResult, Mistake, close, pixel_difference, run_cases, same_pixels
@@ -51,6 +52,7 @@ def curve_cases(max_points: int) -> list[dict[str, Any]]:
     once, and t = 0.25 comes first, so that every mistake shows at the first
     case rather than at an end where several agree.
     """
+    max_points = as_int(max_points, "max_points", minimum=2, maximum=100)
     rng = np.random.default_rng(2024)
     polygons = [
         np.array([[0.0, 0.0], [1.0, 2.0], [4.0, 0.5]]),

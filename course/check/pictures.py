@@ -19,6 +19,9 @@ from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 
+from course import limits
+from course._validate import as_float_array, as_int, as_points, as_positive_float, require_finite
+
 __all__ = [
     "EXPECTED",
     "EXTRA",
@@ -39,6 +42,8 @@ _BOTH = "#999999"
 
 def figure_png(figure: Figure) -> bytes:
     """A matplotlib figure as PNG bytes, drawn with Agg."""
+    if not isinstance(figure, Figure):
+        raise TypeError(f"figure must be a matplotlib Figure; got {type(figure).__name__}")
     buffer = io.BytesIO()
     FigureCanvasAgg(figure).print_png(buffer)
     return buffer.getvalue()
@@ -53,9 +58,11 @@ def curve_picture(
     t = 0 to t = 1; the first of each is ringed and labelled t = 0, so a
     curve run backwards shows at a glance. Image space: y points down.
     """
-    control = np.asarray(control, dtype=float)
-    expected = np.asarray(expected, dtype=float).reshape(-1, 2)
-    given = np.asarray(given, dtype=float).reshape(-1, 2)
+    control = as_points(control, "control", bound=limits.MAX_COORDINATE)
+    expected = _as_pairs(expected, "expected")
+    require_finite(expected, "expected")
+    given = _as_pairs(given, "given")  # a student's points: NaN shows as a gap
+    width_inches = as_positive_float(width_inches, "width_inches", smallest=1.0, largest=20.0)
     figure = Figure(figsize=(width_inches, width_inches), dpi=100)
     axes = figure.add_subplot()
     axes.plot(*control.T, "o--", color="0.6", linewidth=1, markersize=5, label="control polygon")
@@ -64,7 +71,7 @@ def curve_picture(
     axes.plot(*expected.T, "-", color=EXPECTED, linewidth=2, label="expected curve")
     axes.plot(*given.T, "o", color=GIVEN, markersize=3.5, label="your points")
     for points, colour in ((expected, EXPECTED), (given, GIVEN)):
-        if np.isfinite(points[0]).all():
+        if len(points) and np.isfinite(points[0]).all():
             axes.plot(*points[0], "o", markersize=11, fillstyle="none", color=colour)
             axes.annotate(
                 "t = 0", points[0], xytext=(6, -12), textcoords="offset points", color=colour
@@ -88,8 +95,10 @@ def pixel_picture(
     reading order (else the first extra one), each ``zoom`` x ``zoom``
     screen pixels, so nothing is resampled.
     """
-    want = {tuple(int(v) for v in p) for p in np.asarray(expected).reshape(-1, 2)}
-    have = {tuple(int(v) for v in p) for p in np.asarray(given, dtype=float).reshape(-1, 2)}
+    window = as_int(window, "window", minimum=1, maximum=256)
+    zoom = as_int(zoom, "zoom", minimum=1, maximum=64)
+    want = _pixels_of(expected, "expected")
+    have = _pixels_of(given, "given")
     differing = sorted((want ^ have), key=lambda pixel: (pixel[1], pixel[0]))
     missing = sorted(want - have, key=lambda pixel: (pixel[1], pixel[0]))
     centre = (missing or differing or sorted(want | have) or [(0, 0)])[0]
@@ -180,3 +189,21 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     if title:
         figure.suptitle(title, fontsize=9, y=1 - 6 / rows, va="top")
     return figure_png(figure)
+
+
+def _as_pairs(points: Any, name: str) -> np.ndarray:
+    """(M, 2) float points from any array of an even number of values."""
+    array = as_float_array(points, name)
+    if array.size % 2:
+        raise ValueError(f"{name} must hold (x, y) pairs; got {array.size} numbers")
+    if array.size > 2 * limits.MAX_SAMPLES:
+        raise ValueError(f"{name} must hold at most {limits.MAX_SAMPLES} points")
+    with np.errstate(invalid="ignore"):
+        array[np.abs(array) > limits.MAX_COORDINATE] = np.nan  # off any picture: not drawn
+    return array.reshape(-1, 2)
+
+
+def _pixels_of(pixels: Any, name: str) -> set[tuple[int, int]]:
+    array = _as_pairs(pixels, name)
+    require_finite(array, name)
+    return {(int(x), int(y)) for x, y in array}

@@ -220,14 +220,25 @@ def write_student_edition(
     ``force``, notebooks of the same names are replaced). Returns the paths
     written.
     """
-    out = Path(out)
     check_output_folder(out, force)
+    out = Path(out)
+    editions = []
+    for book in notebooks(folder, index=True):  # every notebook read before any is written
+        try:
+            notebook = json.loads(book.path.read_text(encoding="utf-8"))
+            edition = student_notebook(notebook)
+        except (json.JSONDecodeError, UnicodeDecodeError) as error:
+            raise ValueError(f"{book.path}: not a notebook file ({error})") from None
+        except (KeyError, TypeError, AttributeError) as error:
+            raise ValueError(
+                f"{book.path}: not a notebook, no {error} where one is needed"
+            ) from None
+        editions.append((book.path.name, edition))
     out.mkdir(parents=True, exist_ok=True)
     written = []
-    for book in notebooks(folder, index=True):
-        notebook = json.loads(book.path.read_text(encoding="utf-8"))
-        path = out / book.path.name
-        text = json.dumps(student_notebook(notebook), indent=1, ensure_ascii=False)
+    for name, edition in editions:
+        path = out / name
+        text = json.dumps(edition, indent=1, ensure_ascii=False)
         path.write_text(text + "\n", encoding="utf-8")
         written.append(path)
     return written

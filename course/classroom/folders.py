@@ -2,13 +2,44 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
-__all__ = ["check_output_folder"]
+__all__ = ["check_output_folder", "inside_folder"]
+
+# The longest file or folder name most file systems take (NAME_MAX).
+_NAME_MAX = 255
 
 
-def check_output_folder(out: Path, force: bool) -> None:
-    """Refuse a file, or a folder that holds anything unless ``force``: nothing is deleted."""
+def check_output_folder(out: str | Path, force: bool) -> None:
+    """Refuse a file, or a folder that holds anything unless ``force``: nothing is deleted.
+
+    Also refuses, with a ValueError naming ``out``, a name too long for the
+    file system and a folder (or the nearest existing parent of one to be
+    made) that cannot be written.
+    """
+    if isinstance(out, bool) or not isinstance(out, (str, os.PathLike)):
+        raise TypeError(f"out: expected a folder path; got {type(out).__name__} {out!r:.60}")
+    if not isinstance(force, bool):
+        raise TypeError(f"force: expected True or False; got {type(force).__name__} {force!r:.60}")
+    out = Path(out)
+    if not str(out) or "\0" in str(out):
+        raise ValueError(f"out: expected a folder path; got {str(out)!r}")
+    long = [part for part in out.parts if len(os.fsencode(part)) > _NAME_MAX]
+    if long:
+        raise ValueError(
+            f"out: the name {long[0][:40]!r}... has {len(long[0])} characters; "
+            f"folder names may have at most {_NAME_MAX}"
+        )
+    existing = out
+    while not existing.exists() and existing != existing.parent:
+        existing = existing.parent
+    if existing != out and not existing.is_dir():
+        raise NotADirectoryError(f"out: {existing}, a parent of {out}, is a file, not a folder")
+    if existing.is_dir() and not os.access(existing, os.W_OK | os.X_OK):
+        raise ValueError(
+            f"out: cannot write into {existing} (permission denied); choose another folder"
+        )
     if out.exists() and not out.is_dir():
         raise NotADirectoryError(f"out: expected a folder; got the file {out}")
     if out.is_dir() and any(out.iterdir()) and not force:
@@ -17,3 +48,28 @@ def check_output_folder(out: Path, force: bool) -> None:
             "(--force) to add these files to it (files of the same names are replaced, "
             "nothing is deleted)"
         )
+
+
+def inside_folder(folder: Path, name: str, suffix: str) -> Path:
+    """``folder / (name + suffix)``, refusing a name that would leave ``folder``.
+
+    Examples
+    --------
+    >>> inside_folder(Path("out"), "a", ".png").as_posix()
+    'out/a.png'
+    >>> inside_folder(Path("out"), "../x", ".png")
+    Traceback (most recent call last):
+    ...
+    ValueError: name: expected a plain file name inside out; got '../x'
+    """
+    if (
+        not isinstance(name, str)
+        or not name
+        or name in (".", "..")
+        or "/" in name
+        or "\\" in name
+        or "\0" in name
+        or len(os.fsencode(name + suffix)) > _NAME_MAX
+    ):
+        raise ValueError(f"name: expected a plain file name inside {folder}; got {name!r}")
+    return folder / f"{name}{suffix}"

@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 from typing import TextIO
 
-from course.classroom.folders import check_output_folder
+from course.classroom.folders import check_output_folder, inside_folder
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 from course.classroom.registry import Picture, lessons
 
@@ -34,6 +34,15 @@ class ProgressBar:
     """
 
     def __init__(self, total: int, stream: TextIO | None = None, length: int = 30) -> None:
+        for name, value, most in (("total", total, 10**6), ("length", length, 200)):
+            if isinstance(value, bool) or not isinstance(value, int):
+                raise TypeError(
+                    f"{name}: expected an integer; got {type(value).__name__} {value!r}"
+                )
+            if not 0 <= value <= most:
+                raise ValueError(f"{name}: expected an integer from 0 to {most}; got {value}")
+        if stream is not None and not callable(getattr(stream, "write", None)):
+            raise TypeError(f"stream: expected a text stream or None; got {type(stream).__name__}")
         self.total, self.done, self.length = total, 0, length
         self.stream = sys.stderr if stream is None else stream
         self._last_length = 0
@@ -76,7 +85,9 @@ def named_pictures(pictures: list[Picture], names: list[str]) -> list[Picture]:
     ...
     ValueError: no picture named 'c'; the pictures are: a, b
     """
-    by_name = {picture.name: picture for picture in pictures}
+    by_name = {picture.name: picture for picture in _as_pictures(pictures)}
+    if not isinstance(names, (list, tuple)) or not all(isinstance(name, str) for name in names):
+        raise TypeError(f"names: expected a list of picture names; got {names!r:.60}")
     for name in names:
         if name not in by_name:
             raise ValueError(f"no picture named {name!r}; the pictures are: {', '.join(by_name)}")
@@ -114,19 +125,27 @@ def write_gallery(
     NotADirectoryError
         If ``out`` exists and is not a folder.
     """
-    out = Path(out)
     check_output_folder(out, force)
-    pictures = gallery_pictures() if pictures is None else pictures
+    out = Path(out)
+    pictures = gallery_pictures() if pictures is None else _as_pictures(pictures)
     names = [picture.name for picture in pictures]
     if len(set(names)) != len(names):
         raise ValueError(f"pictures: expected distinct names; got {names}")
+    paths = [inside_folder(out, name, ".png") for name in names]  # all, before writing any
     out.mkdir(parents=True, exist_ok=True)
     bar = ProgressBar(len(pictures), stream)
     written = []
-    for picture in pictures:
-        path = out / f"{picture.name}.png"
+    for picture, path in zip(pictures, paths, strict=True):
         path.write_bytes(picture.render())
         written.append(path)
         bar.advance(path.name)
     bar.close()
     return written
+
+
+def _as_pictures(pictures: object) -> list[Picture]:
+    if not isinstance(pictures, (list, tuple)) or not all(
+        isinstance(picture, Picture) for picture in pictures
+    ):
+        raise TypeError(f"pictures: expected a list of registry Pictures; got {pictures!r:.60}")
+    return list(pictures)

@@ -21,7 +21,16 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
-from course._validate import as_curve
+from course import limits
+from course._validate import (
+    as_curve,
+    as_image,
+    as_int,
+    as_point,
+    as_positive_float,
+    as_shape,
+    describe,
+)
 from course.antialias import SPLATS, WEIGHTINGS, render
 from course.canvas import crop
 from course.coverage import curve_polyline
@@ -78,9 +87,16 @@ def label_of(name: str) -> str:
     >>> label_of("bilinear_centres"), label_of("bilinear_centres + arc length")
     ('GAMES101 right', 'GAMES101 right, by length')
     """
-    if name.endswith(ARC_LENGTH):
-        return VARIANT_LABELS[name[: -len(ARC_LENGTH)]] + ", by length"
-    return VARIANT_LABELS[name]
+    if isinstance(name, str) and name.endswith(ARC_LENGTH):
+        base = name[: -len(ARC_LENGTH)]
+        if base in VARIANT_LABELS:
+            return VARIANT_LABELS[base] + ", by length"
+    if isinstance(name, str) and name in VARIANT_LABELS:
+        return VARIANT_LABELS[name]
+    names = ", ".join(repr(key) for key in VARIANT_LABELS)
+    raise ValueError(
+        f"name must be one of {names}, or one of them followed by {ARC_LENGTH!r}; got {name!r}"
+    )
 
 
 class CurveWalk:
@@ -181,6 +197,15 @@ def zoom_figure(
     >>> len(figure.axes)
     1
     """
+    if not isinstance(images, Mapping) or not images:
+        raise TypeError(f"images must map names to images; got {describe(images)}")
+    images = {str(name): as_image(image, f"images[{name!r}]") for name, image in images.items()}
+    as_point(centre, "centre", dim=2, bound=limits.MAX_COORDINATE)
+    size = as_int(size, "size", minimum=1, maximum=1000)
+    columns = as_int(columns, "columns", minimum=1, maximum=100)
+    panel_inches = as_positive_float(panel_inches, "panel_inches", smallest=0.1, largest=20.0)
+    if figure is not None and not isinstance(figure, Figure):
+        raise TypeError(f"figure must be a matplotlib Figure or None; got {describe(figure)}")
     curve = CurveWalk(points).polyline
     rows = -(-len(images) // columns)
     inches = (panel_inches * columns, (panel_inches + 0.3) * rows)
@@ -220,15 +245,16 @@ class ZoomApp(SliderApp):
         width: float = 1.0,
         k: int = 32,
     ) -> None:
-        unknown = [name for name in picks if name not in VARIANTS]
-        if unknown or len(picks) != 3:
+        valid = isinstance(picks, (tuple, list)) and len(picks) == 3
+        unknown = [name for name in picks if name not in VARIANTS] if valid else [picks]
+        if unknown or not valid:
             raise ValueError(
                 f"picks must be three names from course.curve_quality.VARIANTS; got {picks!r}"
             )
         self.points = as_curve(points)
-        self.shape = shape
-        self.stroke_width = width
-        self.k = k
+        self.shape = as_shape(shape)
+        self.stroke_width = as_positive_float(width, "width", largest=100.0)
+        self.k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
         self.walk = CurveWalk(self.points)
         controls: dict[str, widgets.ValueWidget] = {
             "position": widgets.FloatSlider(
@@ -362,7 +388,7 @@ class StepApp(SliderApp):
         self, points: Any = SEED_000_CUBIC, shape: tuple[int, int] = SEED_000_SHAPE
     ) -> None:
         self.points = as_curve(points)
-        self.shape = shape
+        self.shape = as_shape(shape)
         self.walk = CurveWalk(self.points)
         controls = {
             "step": widgets.FloatLogSlider(

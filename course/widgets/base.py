@@ -32,9 +32,17 @@ from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
+from course import limits
+from course._validate import as_choice, as_int, as_shape, describe
 from course.widgets.picture import FigureView, Still
 
-__all__ = ["HIGHLIGHT", "Handle", "SliderApp", "format_points", "parse_points"]
+__all__ = [
+    "HIGHLIGHT",
+    "Handle",
+    "SliderApp",
+    "format_points",
+    "parse_points",
+]
 
 #: The colour of what the student holds (Okabe and Ito's orange, colour-blind safe).
 HIGHLIGHT = "#E69F00"
@@ -52,12 +60,16 @@ def parse_points(text: str) -> np.ndarray:
            [690. ,  10.5],
            [  3. ,   4. ]])
     """
+    if not isinstance(text, str):
+        raise TypeError(f"text must be a string such as '10, 10; 690, 10'; got {describe(text)}")
     numbers = [float(value) for value in _NUMBER.findall(text)]
     if not numbers or len(numbers) % 2:
         raise ValueError(f"points need an x and a y each; got {len(numbers)} numbers")
     points = np.array(numbers).reshape(-1, 2)
     if not np.isfinite(points).all():
         raise ValueError("points must be finite numbers")
+    if np.abs(points).max() > limits.MAX_COORDINATE:
+        raise ValueError(f"points must lie within +-{limits.MAX_COORDINATE:g}")
     return points
 
 
@@ -122,6 +134,15 @@ class SliderApp:
         dpi: int = 100,
         format: str = "png",
     ) -> None:
+        if not isinstance(controls, dict) or not all(
+            isinstance(control, widgets.ValueWidget) for control in controls.values()
+        ):
+            raise TypeError(
+                f"controls must map names to ipywidgets controls; got {describe(controls)}"
+            )
+        shape = as_shape(shape, max_pixels=limits.MAX_FIGURE_PIXELS)
+        dpi = as_int(dpi, "dpi", minimum=10, maximum=1000)
+        format = as_choice(format, "format", ("png", "jpeg"))
         self.controls = controls
         self.view = FigureView(shape, dpi, format)
         self.figure = self.view.figure

@@ -12,6 +12,8 @@ import ipywidgets as widgets
 import matplotlib
 import numpy as np
 
+from course import limits
+from course._validate import as_int, as_shape, as_unit
 from course.bezier import bernstein_basis
 from course.widgets.base import SliderApp
 
@@ -27,6 +29,9 @@ class BernsteinBasisApp(SliderApp):
     def __init__(
         self, degree: int = 3, t: float = 0.3, shape: tuple[int, int] = (350, 700)
     ) -> None:
+        degree = as_int(degree, "degree", minimum=0, maximum=MAX_DEGREE)
+        t = as_unit(t, "t")
+        shape = as_shape(shape, max_pixels=limits.MAX_FIGURE_PIXELS)
         controls = {
             "degree": widgets.IntSlider(
                 value=degree, min=0, max=MAX_DEGREE, description="degree n"

@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
-from course._validate import as_curve
+from course._validate import as_curve, as_int
 from course.bezier import binomial, de_casteljau, derivative
 from course.bezier_accuracy import accuracy_by_degree
 from course.bezier_handouts import comb_recursive_calls
@@ -146,9 +146,10 @@ def pascal_figure(rows: int = 7, entry: tuple[int, int] = (5, 2)) -> Still:
     >>> pascal_figure()
     C(5, 2) = 10 = C(4, 2) + C(4, 1) = 6 + 4
     """
+    rows = as_int(rows, "rows", minimum=0, maximum=30)
+    m, n = (as_int(v, f"entry[{i}]", minimum=0, maximum=rows) for i, v in enumerate(_pair(entry)))
     figure = Figure(figsize=(5.2, 0.42 * (rows + 1) + 0.3), dpi=100)
     axes = figure.add_axes((0.0, 0.0, 1.0, 1.0))
-    m, n = entry
     parents = {(m - 1, n), (m - 1, n - 1)}
     for row in range(rows + 1):
         for column in range(row + 1):
@@ -200,7 +201,7 @@ def comb_calls_figure(sizes: Sequence[int] = tuple(range(4, 41, 2))) -> Still:
     >>> comb_calls_figure((10, 20))
     comb(20, 10) makes 184,755 calls; 2^20 = 1,048,576
     """
-    sizes = list(sizes)
+    sizes = [as_int(m, "sizes", minimum=2, maximum=400) for m in _as_list(sizes, "sizes")]
     calls = [comb_recursive_calls(m, m // 2) for m in sizes]
     figure = Figure(figsize=(5.2, 3.4), dpi=100)
     axes = figure.add_subplot()
@@ -265,3 +266,19 @@ def accuracy_figure(degrees: Sequence[int] = tuple(range(1, 61)), samples: int =
     if (power > 1).any():
         parts.append(f"above 1 from degree {int(errors['degree'][np.argmax(power > 1)])}")
     return Still.of(figure, "; ".join(parts))
+
+
+def _as_list(values: Any, name: str) -> list[Any]:
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        raise TypeError(f"{name} must be a sequence of integers; got {type(values).__name__}")
+    listed = list(values)
+    if not listed:
+        raise ValueError(f"{name} must not be empty")
+    return listed
+
+
+def _pair(entry: Any) -> list[Any]:
+    listed = _as_list(entry, "entry")
+    if len(listed) != 2:
+        raise ValueError(f"entry must be a pair (row, column); got {entry!r}")
+    return listed

@@ -15,6 +15,7 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 
+from course._validate import as_app_points, as_int, as_unit
 from course.bezier import de_casteljau, de_casteljau_levels
 from course.images import EXAMPLE_POINTS
 from course.widgets.base import Handle, SliderApp, format_points, parse_points
@@ -65,7 +66,16 @@ class DeCasteljauApp(SliderApp):
     BLIT = True
 
     def __init__(self, points: np.ndarray | None = None, t: float = 0.5, size: int = 500) -> None:
-        start = EXAMPLE_POINTS[:4] if points is None else parse_points(format_points(points))
+        if points is None:
+            start = EXAMPLE_POINTS[:4]
+        else:
+            start = parse_points(format_points(as_app_points(points, "points")))
+            if not MIN_POINTS <= len(start) <= MAX_POINTS:
+                raise ValueError(
+                    f"points must hold {MIN_POINTS} to {MAX_POINTS} points; got {len(start)}"
+                )
+        t = as_unit(t, "t")
+        size = as_int(size, "size", minimum=100, maximum=4000)
         controls = {
             "t": widgets.FloatSlider(value=t, min=0.0, max=1.0, step=0.01, description="t"),
             "count": widgets.IntSlider(

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
-from course._validate import as_curve
+from course._validate import as_choice, as_curve, as_int
 from course.bezier import (
     de_casteljau,
     de_casteljau_levels,
@@ -111,6 +111,9 @@ def points_held_figure(counts: Sequence[int] = (4, 10, 20, 50, 100, 200)) -> Sti
     >>> points_held_figure((4, 10))
     points held at N = 10: recursion 55, loop 19
     """
+    counts = [as_int(count, "counts", minimum=1, maximum=300) for count in counts]
+    if not counts:
+        raise ValueError("counts must not be empty")
     rng = np.random.default_rng(1)
     recursive, iterative = [], []
     for count in counts:
@@ -210,6 +213,10 @@ def end_of_curve_figure(
     the VS2022 report does not (last t 0.999)
     """
     control = as_curve(points)
+    if isinstance(seeds, str) or not hasattr(seeds, "__iter__"):
+        raise TypeError(f"seeds must be a sequence of handout seeds; got {type(seeds).__name__}")
+    seeds = [as_choice(seed, "seeds", tuple(HANDOUT_LOOPS)) for seed in seeds]
+    size = as_int(size, "size", minimum=2, maximum=100)
     end = de_casteljau(control, 1.0)
     home = tuple(int(v) for v in np.floor(end))
     windows, verdicts = [], []
@@ -288,6 +295,8 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     the any-degree report against naive_bezier: 99.2% yellow, 4 pixels only red, 4 only green
     """
     control = as_curve(points)
+    seed = as_choice(seed, "seed", tuple(HANDOUT_LOOPS))
+    size = as_int(size, "size", minimum=2, maximum=100)
     check = yellow_check(control, HANDOUT_LOOPS[seed])
     odd = np.vstack([check.red_only, check.green_only])
     curve = de_casteljau(control, np.linspace(0.0, 1.0, 401))

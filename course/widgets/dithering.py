@@ -18,8 +18,8 @@ import ipywidgets as widgets
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from course import dither
-from course._validate import as_gray, as_int
+from course import dither, limits
+from course._validate import as_gray, as_int, as_positive_float, as_unit
 from course.blue_noise import blue_noise_mask, cluster_energy, radial_power_spectrum
 from course.blue_noise import void_and_cluster as rank_pixels
 from course.canvas import crop
@@ -59,8 +59,8 @@ class DitherComparisonApp(SliderApp):
 
     def __init__(self, gray: Any, size: int = 24, zoom: int = 6) -> None:
         self.gray = as_gray(gray, "gray")
-        self.size = as_int(size, "size", minimum=4)
-        self.zoom = as_int(zoom, "zoom", minimum=3)
+        self.size = as_int(size, "size", minimum=4, maximum=min(self.gray.shape))
+        self.zoom = as_int(zoom, "zoom", minimum=3, maximum=30)
         if self.zoom % 3:
             raise ValueError(f"zoom must be a multiple of 3 (ordered dithering is 3x); got {zoom}")
         height, width = self.gray.shape
@@ -161,7 +161,8 @@ class GrayLevelApp(SliderApp):
     )
 
     def __init__(self, level: float = 0.3, size: int = 24) -> None:
-        self.size = as_int(size, "size", minimum=3)
+        self.size = as_int(size, "size", minimum=3, maximum=64)
+        level = as_unit(level, "level")
         self.mask = blue_noise_mask(32, np.random.default_rng(0))
         controls = {
             "level": widgets.FloatSlider(
@@ -245,7 +246,9 @@ class VoidAndClusterApp(SliderApp):
     """
 
     def __init__(self, size: int = 32, sigma: float = 1.5, dots: int = 60) -> None:
-        self.size = as_int(size, "size", minimum=4)
+        self.size = as_int(size, "size", minimum=4, maximum=limits.MAX_MASK_SIZE)
+        sigma = as_positive_float(sigma, "sigma")
+        dots = as_int(dots, "dots", minimum=1, maximum=self.size**2 - 1)
         self.sigma = sigma
         self.ranks = rank_pixels(self.size, np.random.default_rng(0), sigma)
         self.initial = round(0.1 * self.size**2)

@@ -16,7 +16,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
 from course import dither
-from course._validate import as_gray, as_int
+from course._validate import as_gray, as_image, as_int, as_point
 from course.blue_noise import blue_noise_mask, low_frequency_fraction, radial_power_spectrum
 from course.canvas import crop
 from course.widgets.picture import GRAY_PIXELS, Still, bare_axes, pixel_axes, pixel_figure
@@ -41,6 +41,8 @@ def block_mean(image: np.ndarray, factor: int) -> np.ndarray:
     >>> block_mean(np.array([[0.0, 1.0, 1.0, 1.0], [0.0, 1.0, 0.0, 0.0]]), 2)
     array([[0.5, 0.5]])
     """
+    image = as_image(image, "image")
+    factor = as_int(factor, "factor", minimum=1, maximum=min(image.shape[:2]))
     height, width = (np.array(image.shape[:2]) // factor) * factor
     trimmed = image[:height, :width]
     return trimmed.reshape(height // factor, factor, width // factor, factor).mean(axis=(1, 3))
@@ -68,8 +70,13 @@ def methods_figure(
     2 images; the window 12 x 12 around (24, 18), each pixel 6 x 6 screen pixels
     """
     size, zoom, shrink = (
-        as_int(v, n, minimum=1) for v, n in ((size, "size"), (zoom, "zoom"), (shrink, "shrink"))
+        as_int(v, n, minimum=1, maximum=100)
+        for v, n in ((size, "size"), (zoom, "zoom"), (shrink, "shrink"))
     )
+    columns = as_int(columns, "columns", minimum=1, maximum=20)
+    as_point(centre, "centre", dim=2)
+    if not isinstance(images, Mapping) or not images:
+        raise TypeError(f"images must map names to gray images; got {type(images).__name__}")
     if zoom % 3:
         raise ValueError(f"zoom must be a multiple of 3 (ordered dithering is 3x); got {zoom}")
     arrays = {name: as_gray(image, f"images[{name!r}]") for name, image in images.items()}
@@ -196,8 +203,13 @@ def wavefront_figure(height: int = 6, width: int = 10, pixel: tuple[int, int] = 
     >>> wavefront_figure()
     pixel (5, 3) is number 11 and waits for 4 pixels, all numbered below 11
     """
+    height = as_int(height, "height", minimum=2, maximum=64)
+    width = as_int(width, "width", minimum=3, maximum=64)
+    if isinstance(pixel, (str, bytes)) or not hasattr(pixel, "__len__") or len(pixel) != 2:
+        raise ValueError(f"pixel must be a pair (x, y) of integers; got {pixel!r:.60}")
+    x = as_int(pixel[0], "pixel[0] (x)", minimum=1, maximum=width - 2)
+    y = as_int(pixel[1], "pixel[1] (y)", minimum=1, maximum=height - 1)
     t = np.add.outer(2 * np.arange(height), np.arange(width))
-    x, y = pixel
     needs = [(x - 1, y), (x - 1, y - 1), (x, y - 1), (x + 1, y - 1)]
     shade = np.where(t == t[y, x], 0.6, 0.0)
     for nx, ny in needs:

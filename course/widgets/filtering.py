@@ -23,8 +23,8 @@ import matplotlib
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from course import filters
-from course._validate import as_image, as_int
+from course import filters, limits
+from course._validate import as_choice, as_image, as_int, as_option, describe
 from course.images import photograph, to_gray
 from course.widgets.base import SliderApp
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
@@ -61,17 +61,24 @@ def parse_kernel(text: str) -> np.ndarray:
     ...
     ValueError: kernel: expected 3 rows of 3 numbers; got rows of 2, 2
     """
+    if not isinstance(text, str):
+        raise TypeError(
+            f"kernel: expected text such as '1 1 1; 1 1 1; 1 1 1'; got {describe(text)}"
+        )
     rows = [row.split() for row in re.split(r"[;\n]+", text.replace(",", " ")) if row.strip()]
     if len(rows) != 3 or any(len(row) != 3 for row in rows):
         lengths = ", ".join(str(len(row)) for row in rows) or "nothing"
         raise ValueError(f"kernel: expected 3 rows of 3 numbers; got rows of {lengths}")
     try:
         values = [[float(Fraction(token)) for token in row] for row in rows]
-    except (ValueError, ZeroDivisionError) as error:
+    except (ValueError, ZeroDivisionError, OverflowError) as error:
         raise ValueError(
             f"kernel: every entry must be a number like 2, -0.5 or 1/9 ({error})"
         ) from None
-    return np.array(values)
+    kernel = np.array(values)
+    if not np.isfinite(kernel).all() or np.abs(kernel).max() > limits.LARGEST:
+        raise ValueError(f"kernel: every entry must lie within +-{limits.LARGEST:g}")
+    return kernel
 
 
 def format_kernel(kernel: np.ndarray) -> str:
@@ -96,7 +103,7 @@ def border_ring_mean(image: Any, thickness: int = 1) -> float:
     1.0
     """
     array = as_image(image, "image")
-    thickness = as_int(thickness, "thickness", minimum=1)
+    thickness = as_int(thickness, "thickness", minimum=1, maximum=min(array.shape[:2]))
     ring = np.ones(array.shape[:2], dtype=bool)
     ring[thickness:-thickness, thickness:-thickness] = False
     return float(array[ring].mean())
@@ -104,6 +111,7 @@ def border_ring_mean(image: Any, thickness: int = 1) -> float:
 
 def blurred(image: np.ndarray, border: str) -> np.ndarray:
     """One 3 x 3 box blur with the given border rule (``blur`` for the handout's)."""
+    border = as_choice(border, "border", filters.BORDERS)
     if border == "handout":
         return filters.blur(image)
     return filters.convolve(image, filters.BOX, border)
@@ -124,6 +132,7 @@ class RepeatedBlurApp(SliderApp):
     def __init__(self, image: Any, repeats: int = 5, corner: int = 32) -> None:
         self.image = as_image(image, "image")
         self.corner = as_int(corner, "corner", minimum=2)
+        repeats = as_int(repeats, "repeats", minimum=0, maximum=30)
         self.original_ring = border_ring_mean(self.image)
         controls = {"repeats": widgets.IntSlider(value=repeats, min=0, max=30, description="blurs")}
         super().__init__(controls, shape=(560, 1000))
@@ -162,10 +171,12 @@ class RepeatedBlurApp(SliderApp):
         for border, result in self.blurred(repeats).items():
             self.wholes[border].set_data(result)
             self.crops[border].set_data(self.corner_of(result))
-            ratio = border_ring_mean(result) / self.original_ring
-            self.titles[border].set_text(
-                f"{border!r}, {repeats} blurs\nedge pixels at {ratio:.2f} x the original"
-            )
+            ring = border_ring_mean(result)
+            if self.original_ring > 0:
+                edge = f"edge pixels at {ring / self.original_ring:.2f} x the original"
+            else:  # a black frame: no ratio to show
+                edge = f"edge pixels' mean {ring:.2f} (the original's is 0)"
+            self.titles[border].set_text(f"{border!r}, {repeats} blurs\n{edge}")
 
 
 class KernelApp(SliderApp):
@@ -197,6 +208,13 @@ class KernelApp(SliderApp):
         self.image = as_image(image, "image")
         if self.image.ndim != 2:
             raise ValueError(f"image: expected a gray (H, W) image; got shape {self.image.shape}")
+        kernel = as_option(kernel, "kernel", tuple(KERNELS))
+        border = as_option(border, "border", filters.BORDERS)
+        if not isinstance(window, (tuple, list)) or len(window) != 2:
+            raise ValueError(
+                f"window must be a pair (row, column) of integers; got {describe(window)}"
+            )
+        window = (as_int(window[0], "window[0] (row)"), as_int(window[1], "window[1] (column)"))
         controls = {
             "preset": widgets.Dropdown(
                 options=[*KERNELS, "typed"], value=kernel, description="preset"

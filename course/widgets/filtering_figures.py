@@ -15,6 +15,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.patches import Rectangle
 
 from course import filters
+from course._validate import as_int
 from course.images import photograph, to_gray
 from course.widgets.filtering import blurred, border_ring_mean
 from course.widgets.picture import Still, pixel_figure
@@ -113,6 +114,9 @@ def border_figure(passes: int = 20, size: int = 16, zoom: int = 8) -> Still:
     after 20 blurs the outermost pixels are at 0.97 (handout), 0.20 (zero),
     0.98 (replicate), 0.97 (reflect) times their first brightness
     """
+    passes = as_int(passes, "passes", minimum=0, maximum=200)
+    size = as_int(size, "size", minimum=1, maximum=64)
+    zoom = as_int(zoom, "zoom", minimum=1, maximum=64)
     image = face()
     results = dict.fromkeys(filters.BORDERS, image)
     for _ in range(passes):

@@ -17,6 +17,8 @@ from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
 
+from course import limits
+from course._validate import as_app_points, as_choice, as_int, as_point, as_shape, describe
 from course.bezier import de_casteljau
 from course.bezier_handouts import bresenham_curve, segments_report
 from course.canvas import blank, paint
@@ -48,6 +50,9 @@ def pixel_grid(axes: Axes, size: int, title: str = "") -> LineCollection:
     Returns the grid lines, to be drawn over the pixels: a moving picture
     redraws them after its image, as they are not part of its background.
     """
+    if not isinstance(axes, Axes):
+        raise TypeError(f"axes must be matplotlib Axes; got {describe(axes)}")
+    size = as_int(size, "size", minimum=1, maximum=1000)
     axes.set_xlim(0, size)
     axes.set_ylim(size, 0)
     axes.set_aspect("equal")
@@ -75,6 +80,7 @@ def octant(dx: int, dy: int) -> int:
     >>> [octant(-5, -2), octant(-2, -5), octant(2, -5), octant(5, -2)]
     [4, 5, 6, 7]
     """
+    dx, dy = as_int(dx, "dx"), as_int(dy, "dy")
     angle = np.degrees(np.arctan2(dy, dx)) % 360
     # Half-open 45-degree sectors: a diagonal starts the next octant.
     return int(angle // 45) % 8
@@ -93,7 +99,11 @@ class LineApp(SliderApp):
     ZOOM = 9  # screen pixels per grid pixel
 
     def __init__(self, p0: tuple[int, int] = (3, 6), p1: tuple[int, int] = (27, 17)) -> None:
-        self.ends = np.array([p0, p1], dtype=np.int64)
+        ends = [
+            as_app_points([point], name, 1, low=0, high=LINE_GRID - 1, whole=True)[0]
+            for point, name in ((p0, "p0"), (p1, "p1"))
+        ]
+        self.ends = np.array(ends, dtype=np.int64)
         controls = {
             "endpoints": widgets.Text(
                 value=format_points(self.ends), description="x, y", continuous_update=False
@@ -183,6 +193,9 @@ def shared_edge_centres(a: np.ndarray, c: np.ndarray, shape: tuple[int, int]) ->
            [0, 0, 1, 0],
            [0, 0, 0, 0]])
     """
+    a = as_point(a, "a", dim=2, bound=limits.MAX_COORDINATE)
+    c = as_point(c, "c", dim=2, bound=limits.MAX_COORDINATE)
+    shape = as_shape(shape)
     y, x = np.mgrid[0 : shape[0], 0 : shape[1]] + 0.5
     edge = c - a
     along = (x - a[0]) * edge[0] + (y - a[1]) * edge[1]
@@ -215,7 +228,9 @@ class TriangleApp(SliderApp):
         rule: str = "top-left",
         rate: int = 4,
     ) -> None:
-        self.corners = np.array(vertices, dtype=float)
+        self.corners = as_app_points(vertices, "vertices", 4, low=0, high=TRIANGLE_GRID)
+        rule = as_choice(rule, "rule", EDGE_RULES)
+        rate = as_int(rate, "rate", minimum=1, maximum=8)
         controls: dict[str, widgets.ValueWidget] = {
             "vertices": widgets.Textarea(
                 value=format_points(self.corners), description="x, y", continuous_update=False
@@ -330,7 +345,13 @@ class CurveSegmentsApp(SliderApp):
     ZOOM = 10
 
     def __init__(self, points: np.ndarray | None = None, segments: int = 4) -> None:
-        start = EXAMPLE_POINTS[:4] * (CURVE_GRID / 700) if points is None else points
+        if points is None:
+            start = EXAMPLE_POINTS[:4] * (CURVE_GRID / 700)
+        else:
+            start = as_app_points(points, "points", low=0, high=CURVE_GRID)
+            if len(start) < 2:
+                raise ValueError(f"points must hold at least 2 points; got {len(start)}")
+        segments = as_int(segments, "segments", minimum=1, maximum=max(_SEGMENT_COUNTS))
         self.control = np.round(np.asarray(start, dtype=float), 1)
         controls = {
             "segments": widgets.IntSlider(

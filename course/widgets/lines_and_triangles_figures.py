@@ -14,6 +14,7 @@ import numpy as np
 from matplotlib.collections import LineCollection
 from scipy.spatial import Delaunay
 
+from course._validate import as_int, as_point, as_shape
 from course.canvas import blank, paint
 from course.raster import hit_counts, line, line_4connected, triangle
 from course.triangles import interpolate
@@ -50,6 +51,7 @@ def line_figure(p0: tuple[int, int] = (0, 0), p1: tuple[int, int] = (7, 3)) -> S
     >>> line_figure()
     (0, 0) to (7, 3): 8 pixels, one per column; the farthest centre is 0.429 px off in y
     """
+    p0, p1 = _small_pixel(p0, "p0"), _small_pixel(p1, "p1")
     pixels = line(p0, p1)
     left, top = min(p0[0], p1[0]), min(p0[1], p1[1])
     width, height = abs(p1[0] - p0[0]) + 1, abs(p1[1] - p0[1]) + 1
@@ -80,6 +82,7 @@ def staircase_figure(p0: tuple[int, int] = (0, 0), p1: tuple[int, int] = (14, 9)
     >>> staircase_figure()
     (0, 0) to (14, 9): Bresenham 15 pixels, the report's loop 24
     """
+    p0, p1 = _small_pixel(p0, "p0"), _small_pixel(p1, "p1")
     width, height = abs(p1[0] - p0[0]) + 1, abs(p1[1] - p0[1]) + 1
     left, top = min(p0[0], p1[0]), min(p0[1], p1[1])
     windows = []
@@ -134,7 +137,10 @@ def scanline_figure(
     >>> scanline_figure()
     10 rows: 3 in the upper half, 7 in the lower; 52 pixels, as the top-left rule takes them
     """
-    height, width = size
+    height, width = as_shape(size, "size", max_pixels=256 * 256)
+    p0, p1, p2 = (
+        as_point(p, name, dim=2, bound=256.0) for p, name in ((p0, "p0"), (p1, "p1"), (p2, "p2"))
+    )
     rows = _rows(p0, p1, p2)
     pixels = triangle(p0, p1, p2, shape=size)
     upper_rows = {int(y) for y, _, _, upper in rows if upper}
@@ -220,7 +226,9 @@ def mesh_figure(size: int = 64, points: int = 60, seed: int = 4) -> Still:
     closed 126 doubled
     open 126 cracks
     """
-    rng = np.random.default_rng(seed)
+    size = as_int(size, "size", minimum=2, maximum=256)
+    points = as_int(points, "points", minimum=0, maximum=1000)
+    rng = np.random.default_rng(as_int(seed, "seed", minimum=0))
     corners = [[-1, -1], [size + 1, -1], [size + 1, size + 1], [-1, size + 1]]
     vertices = np.unique(np.vstack([corners, rng.integers(0, size + 1, (points, 2))]), axis=0)
     mesh = Delaunay(vertices.astype(float)).simplices
@@ -258,6 +266,10 @@ def colour_figure(
     >>> colour_figure()
     131 pixels; at the centre (14.5, 7.5) the weights are (0.240, 0.515, 0.245)
     """
+    size = as_shape(size, "size", max_pixels=256 * 256)
+    p0, p1, p2 = (
+        as_point(p, name, dim=2, bound=256.0) for p, name in ((p0, "p0"), (p1, "p1"), (p2, "p2"))
+    )
     pixels, colours = interpolate(p0, p1, p2, np.eye(3), shape=size)
     image = blank(size, (1.0, 1.0, 1.0))
     image[pixels[:, 1], pixels[:, 0]] = colours
@@ -287,3 +299,11 @@ def colour_figure(
         f"weights are ({weights[0]:.3f}, {weights[1]:.3f}, {weights[2]:.3f})"
     )
     return Still.of(figure, caption)
+
+
+def _small_pixel(point: Any, name: str) -> tuple[int, int]:
+    """A whole pixel (x, y) within 64 of the origin: a figure draws every pixel between two."""
+    array = as_point(point, name, dim=2, bound=64.0)
+    if (array != np.round(array)).any():
+        raise ValueError(f"{name} must be a whole pixel (x, y); got {array.tolist()}")
+    return int(array[0]), int(array[1])

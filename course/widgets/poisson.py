@@ -16,8 +16,15 @@ import ipywidgets as widgets
 import numpy as np
 from matplotlib.axes import Axes
 
-from course import images, poisson
-from course._validate import as_image
+from course import images, limits, poisson
+from course._validate import (
+    as_app_points,
+    as_float_array,
+    as_image,
+    as_int,
+    describe,
+    require_finite,
+)
 from course.poisson_problem import build_clone_problem
 from course.widgets.base import Handle, SliderApp, format_points
 
@@ -62,7 +69,7 @@ class PoissonIterationApp(SliderApp):
         self.problem = poisson.clone_problem(background, foreground, offset, mask)
         self.background = np.asarray(background, dtype=float)
         self.exact = poisson.solve(self.problem)
-        self.stops = tuple(int(stop) for stop in stops)
+        self.stops = _as_stops(stops)
         self._iterates: dict[str, dict[int, np.ndarray]] = {}
         self._runs: dict[str, tuple[Any, int]] = {}
         controls = {
@@ -170,7 +177,7 @@ class CloneApp(SliderApp):
                 f"got shapes {self.foreground.shape} and {self.background.shape}"
             )
         self.half_background = half_size(self.background)
-        self.offset = np.array(offset, dtype=int)
+        self.offset = as_app_points([offset], "offset", 1, whole=True)[0].astype(int)
         controls = {
             "offset": widgets.Text(
                 value=format_points([self.offset]), description="x, y", continuous_update=False
@@ -256,6 +263,7 @@ def as_pixels_uint8(image: np.ndarray) -> np.ndarray:
     >>> as_pixels_uint8(np.array([[0.5, 1.0]])).tolist()
     [[[127, 127, 127], [255, 255, 255]]]
     """
+    image = _as_finite_image(image)
     pixels = (np.clip(image, 0.0, 1.0) * 255).astype(np.uint8)
     return np.repeat(pixels[..., None], 3, axis=2) if pixels.ndim == 2 else pixels
 
@@ -269,6 +277,30 @@ def half_size(image: np.ndarray) -> np.ndarray:
     array([[ 2.5,  4.5],
            [10.5, 12.5]])
     """
+    image = _as_finite_image(image)
+    if min(image.shape[:2]) < 2:
+        raise ValueError(f"image must be at least 2 x 2; got shape {image.shape}")
     height, width = (side // 2 * 2 for side in image.shape[:2])
     blocks = image[:height, :width].reshape(height // 2, 2, width // 2, 2, *image.shape[2:])
     return blocks.mean(axis=(1, 3))
+
+
+def _as_finite_image(image: Any) -> np.ndarray:
+    """A finite float (H, W) or (H, W, 3) array; values may stray from [0, 1]."""
+    array = as_float_array(image, "image")
+    if not (array.ndim == 2 or (array.ndim == 3 and array.shape[2] == 3)) or not array.size:
+        raise ValueError(f"image must be a gray (H, W) or RGB (H, W, 3) image; got {array.shape}")
+    require_finite(array, "image")
+    return array
+
+
+def _as_stops(stops: Any) -> tuple[int, ...]:
+    if not isinstance(stops, (tuple, list)) or not stops:
+        raise TypeError(f"stops must be a tuple of sweep counts; got {describe(stops)}")
+    counts = tuple(
+        as_int(stop, f"stops[{index}]", minimum=0, maximum=limits.MAX_ITERATIONS)
+        for index, stop in enumerate(stops)
+    )
+    if list(counts) != sorted(set(counts)):
+        raise ValueError(f"stops must be increasing sweep counts; got {counts}")
+    return counts

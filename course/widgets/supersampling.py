@@ -14,6 +14,8 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 
+from course import limits
+from course._validate import as_int
 from course.images import photograph, zone_plate, zone_plate_box
 from course.metrics import rmse
 from course.resample import supersample, supersample_without_offset
@@ -44,6 +46,18 @@ class SupersampleApp(SliderApp):
         max_rate: int = 12,
         reference_rate: int = 32,
     ) -> None:
+        size = as_int(size, "size", minimum=2, maximum=int(limits.MAX_PIXELS**0.5))
+        out_size = as_int(out_size, "out_size", minimum=1, maximum=size)
+        max_rate = as_int(max_rate, "max_rate", minimum=1, maximum=limits.MAX_RATE)
+        rate = as_int(rate, "rate", minimum=1, maximum=max_rate)
+        reference_rate = as_int(
+            reference_rate, "reference_rate", minimum=1, maximum=limits.MAX_RATE
+        )
+        if round(_PHOTO_SIDE * out_size / size) < 1:
+            raise ValueError(
+                f"out_size must be at least size / {2 * _PHOTO_SIDE} so the photograph keeps a "
+                f"pixel; got out_size={out_size} for size={size}"
+            )
         controls = {
             "rate": widgets.IntSlider(value=rate, min=1, max=max_rate, description="rate"),
             "image": widgets.ToggleButtons(options=IMAGES, description="image"),

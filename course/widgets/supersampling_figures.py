@@ -14,6 +14,7 @@ from functools import cache
 import numpy as np
 from matplotlib.figure import Figure
 
+from course._validate import as_int, as_point
 from course.images import photograph, zone_plate, zone_plate_box
 from course.metrics import rmse
 from course.resample import bilinear, supersample, supersample_without_offset
@@ -43,6 +44,7 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
     >>> folding_figure()
     0.8 cycles per sample is seen as 0.2: the two cosines' samples differ by at most 4e-15
     """
+    length = as_int(length, "length", minimum=1, maximum=1000)
     alias = alias_frequency(frequency, rate)
     fine_x = np.linspace(0, length, 2000)
     samples_x = np.arange(length + 1) / rate
@@ -135,6 +137,9 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
     """
     image = np.array([[0.0, 0.25, 1.0, 0.5], [1.0, 0.0, 0.75, 0.25], [0.5, 0.5, 0.0, 1.0]])
     height, width = image.shape
+    x, y = as_point((x, y), "(x, y)", dim=2)
+    if not (0 <= x <= width and 0 <= y <= height):
+        raise ValueError(f"x and y must lie on the {width} x {height} image; got ({x:g}, {y:g})")
     figure, (axes,) = pixel_figure(
         [(np.clip(image, 0.15, 0.85), (0, width, height, 0), "pixels, and their centres")],
         zoom=90,

@@ -1,0 +1,81 @@
+"""The course's limits: every bound on an input's size, coordinates or counts, in one place.
+
+A public function rejects input beyond these bounds with a ValueError naming
+the parameter, before it allocates or loops, so that no call runs unbounded
+and no far-away value wraps around to a pixel on the canvas. The validators of
+:mod:`course._validate` apply them.
+
+Examples
+--------
+>>> MAX_PIXELS
+8388608
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "LARGEST",
+    "MAX_CALLS",
+    "MAX_COORDINATE",
+    "MAX_COUNT",
+    "MAX_DEGREE",
+    "MAX_FIGURE_PIXELS",
+    "MAX_ITERATIONS",
+    "MAX_MASK_SIZE",
+    "MAX_PARAMETER",
+    "MAX_PIXELS",
+    "MAX_RATE",
+    "MAX_SAMPLES",
+    "MAX_SIDE",
+    "MAX_STROKE_WIDTH",
+    "MAX_SUPERSAMPLES",
+    "SMALLEST",
+]
+
+MAX_PIXELS = 2**23
+"""Pixels in one image, canvas or sample grid (H * W, times rate**2 when supersampled)."""
+
+MAX_SIDE = 2**16
+"""Largest side of an image, canvas or resampled row, in pixels."""
+
+MAX_STROKE_WIDTH = 1000.0
+"""Widest stroke, in pixels: every pixel within half of it of the curve is visited."""
+
+MAX_SUPERSAMPLES = 2**28
+"""Most samples one supersampling call may take (output pixels times rate**2)."""
+
+MAX_RATE = 256
+"""Largest supersampling rate (samples per pixel side)."""
+
+MAX_FIGURE_PIXELS = 4000 * 4000
+"""Most pixels of an app's or figure's picture."""
+
+MAX_SAMPLES = 2**25
+"""Points, samples or polyline vertices one call may generate."""
+
+MAX_COORDINATE = 2.0**20
+"""Largest |x| or |y| of an image-space point (a million pixels off any canvas)."""
+
+MAX_PARAMETER = 1e3
+"""Largest |t| of a curve parameter: extrapolating further overflows any but tiny degrees."""
+
+MAX_DEGREE = 2000
+"""Largest degree (or binomial row n): exact Pascal rows beyond it take seconds."""
+
+MAX_COUNT = 10**7
+"""Largest integer count or size of any other kind (sizes, rates, samples, margins)."""
+
+MAX_ITERATIONS = 100_000
+"""Largest number of iterations (sweeps) of an iterative solver."""
+
+MAX_MASK_SIZE = 128
+"""Largest side of a void-and-cluster mask: its cost grows as size**4 (128 takes a second)."""
+
+MAX_CALLS = 2_000_000
+"""Most calls a deliberately exponential handout recursion may make."""
+
+SMALLEST = 1e-15
+"""Smallest positive real accepted for a tolerance, step, width or scale."""
+
+LARGEST = 1e12
+"""Largest real accepted for a tolerance, step, width or scale."""

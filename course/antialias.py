@@ -44,7 +44,7 @@ from course._validate import (
     describe,
 )
 from course.bezier import bezier_bernstein, de_casteljau, uniform_parameters
-from course.canvas import paint
+from course.canvas import painted
 from course.coverage import agg_render, reference
 from course.near_pixels import first_of_runs, pixels_near
 from course.paths import as_path, flatten_uniform, text_curves
@@ -342,12 +342,11 @@ def render(
         # The fast path: the exact coverage straight into a new canvas.
         line, gaps = flatten_uniform(path, STROKE_TOLERANCE)
         return stroke_coverage(line, gaps, 0.5 * width, (height, canvas_width))
-    image = np.zeros((height, canvas_width))
     if method == "stroke_linear":
         line, gaps = flatten_uniform(path, STROKE_TOLERANCE)
         pixels, weights = stroke_linear(line, width, (height, canvas_width), gaps)
         # Each pixel comes once: "max" writes it without a saturating sum.
-        return paint(image, pixels, 1.0, weights, mode="max")
+        return painted((height, canvas_width), pixels, 1.0, weights, mode="max")
     # The handouts' loop, curve after curve; every splat adds, with saturation.
     all_pixels, all_weights = [], []
     for control in path.split() if len(path.sizes) > 1 else [path.points]:
@@ -363,7 +362,7 @@ def render(
         all_weights.append(weights)
     if len(all_pixels) > 1:
         all_pixels, all_weights = [np.concatenate(all_pixels)], [np.concatenate(all_weights)]
-    return paint(image, all_pixels[0], 1.0, all_weights[0])
+    return painted((height, canvas_width), all_pixels[0], 1.0, all_weights[0])
 
 
 def curve_samples(points: Any, step: float) -> np.ndarray:

@@ -32,6 +32,7 @@ __all__ = [
     "crop_extent",
     "inside",
     "paint",
+    "painted",
     "yellow_fraction",
 ]
 
@@ -128,8 +129,36 @@ def paint(
     if not (image.ndim == 2 or (image.ndim == 3 and image.shape[2] == 3)):
         raise ValueError(f"image must have shape (H, W) or (H, W, 3); got {image.shape}")
     require_finite(image, "image")
+    coordinates, value, strength, mode = _paint_arguments(
+        pixels, color, weight, mode, channels=1 if image.ndim == 2 else 3
+    )
+    return _paint_into(image, coordinates, value, strength, mode)
+
+
+def painted(
+    shape: Any, pixels: Any, color: Any = 1.0, weight: Any = 1.0, mode: str = "add"
+) -> np.ndarray:
+    """A new black canvas of ``shape = (H, W)`` with ``pixels`` painted: :func:`paint` on
+    :func:`blank`, without checking an image it has just made (a full pass over it).
+
+    Examples
+    --------
+    >>> painted((2, 3), np.array([[1, 0], [1, 0], [9, 9]]), 1.0, 0.75)
+    array([[0., 1., 0.],
+           [0., 0., 0.]])
+    """
+    height, width = as_shape(shape)
+    coordinates, value, strength, mode = _paint_arguments(pixels, color, weight, mode)
+    image = np.zeros((height, width, *value.shape))
+    return _paint_into(image, coordinates, value, strength, mode)
+
+
+def _paint_arguments(
+    pixels: Any, color: Any, weight: Any, mode: str, channels: int | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, str]:
+    """:func:`paint`'s checks of everything but the image."""
     coordinates = as_pixels(pixels)
-    value = _as_color(color, "color", channels=1 if image.ndim == 2 else 3)
+    value = _as_color(color, "color", channels=channels)
     strength = as_float_array(weight, "weight")
     if strength.ndim > 1 or (strength.ndim == 1 and strength.shape[0] != len(coordinates)):
         raise ValueError(
@@ -141,7 +170,13 @@ def paint(
     ):
         raise ValueError("weight values must be finite and in [0, 1]")
     mode = as_choice(mode, "mode", PAINT_MODES)
+    return coordinates, value, strength, mode
 
+
+def _paint_into(
+    image: np.ndarray, coordinates: np.ndarray, value: np.ndarray, strength: np.ndarray, mode: str
+) -> np.ndarray:
+    """Paint checked arguments into ``image``, in place; pixels off the canvas are dropped."""
     strength = np.broadcast_to(strength, (len(coordinates),))
     keep = inside(coordinates, image.shape)
     x, y = coordinates[keep, 0], coordinates[keep, 1]

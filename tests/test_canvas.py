@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from course.canvas import blank, crop, inside, paint, yellow_fraction
+from course.canvas import blank, crop, inside, paint, painted, yellow_fraction
 
 
 def test_paint_drops_pixels_off_the_canvas_instead_of_wrapping():
@@ -75,3 +75,19 @@ def test_inside_and_crop_stay_on_the_canvas():
     assert window.shape == (4, 4)
     assert extent == (6, 10, 4, 0)
     assert window[0, 0] == 0.06
+
+
+def test_painted_is_paint_on_a_blank_canvas_for_every_mode():
+    rng = np.random.default_rng(4)
+    pixels = rng.integers(-2, 12, size=(40, 2))
+    weights = rng.random(40)
+    for mode in ("add", "max", "over"):
+        for color in (0.7, (0.2, 0.5, 1.0)):
+            expected = paint(
+                blank((8, 10), 0.0 if np.ndim(color) == 0 else (0, 0, 0)),
+                pixels,
+                color,
+                weights,
+                mode,
+            )
+            np.testing.assert_array_equal(painted((8, 10), pixels, color, weights, mode), expected)

@@ -20,6 +20,7 @@ __all__ = [
     "EXAMPLE_POINTS",
     "SEED_000_CUBIC",
     "SEED_000_SHAPE",
+    "face",
     "photograph",
     "ramp",
     "to_gray",
@@ -80,6 +81,19 @@ def photograph() -> np.ndarray:
     with cbook.get_sample_data("grace_hopper.jpg") as file:
         pixels = matplotlib.image.imread(file, format="jpg")
     return pixels[..., :3].astype(float) / 255.0
+
+
+def face() -> np.ndarray:
+    """The photograph's face, gray, 150 x 128: every other pixel of rows 150-449, columns
+    128-383. Its right edge is the light wall, where lesson 07's border rules show.
+
+    Examples
+    --------
+    >>> image = face()
+    >>> image.shape, bool(image[20:70, -1].mean() > image.mean())   # the wall, beside the face
+    ((150, 128), True)
+    """
+    return to_gray(photograph())[150:450:2, 128:384:2]
 
 
 def to_gray(image: Any) -> np.ndarray:

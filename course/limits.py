@@ -29,6 +29,7 @@ __all__ = [
     "MAX_SIDE",
     "MAX_STROKE_WIDTH",
     "MAX_SUPERSAMPLES",
+    "MAX_ZOOM",
     "SMALLEST",
 ]
 
@@ -37,6 +38,9 @@ MAX_PIXELS = 2**23
 
 MAX_SIDE = 2**16
 """Largest side of an image, canvas or resampled row, in pixels."""
+
+MAX_ZOOM = 128
+"""Screen pixels per image pixel, on each side, in a figure's pixel view."""
 
 MAX_STROKE_WIDTH = 1000.0
 """Widest stroke, in pixels: every pixel within half of it of the curve is visited."""

@@ -163,3 +163,10 @@ def test_pixel_figures_draw_every_pixel_as_a_whole_square():
             top + zoom // 2 : top + 5 * zoom : zoom, left + zoom // 2 + 2 : left + 7 * zoom : zoom
         ]
         assert np.array_equal(beside, centres)
+
+
+@pytest.mark.parametrize(("zoom", "error"), [(0, ValueError), (129, ValueError), (2.5, TypeError)])
+def test_pixel_figure_refuses_a_zoom_by_name_for_every_figure_that_passes_one_on(zoom, error):
+    window = (np.zeros((2, 3)), (0, 3, 2, 0), "")
+    with pytest.raises(error, match="zoom"):
+        pixel_figure([window], zoom)

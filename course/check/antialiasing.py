@@ -95,10 +95,6 @@ def _table_of(splat: Callable[..., Any]) -> Callable[[float, float], np.ndarray]
     return lambda x, y: splat_table(*splat([[x, y]]))
 
 
-def _same_splat(expected: np.ndarray, given: np.ndarray) -> bool:
-    return expected.shape == given.shape and bool(np.allclose(given, expected, atol=1e-9, rtol=0.0))
-
-
 def _weights_by_pixel(table: np.ndarray) -> dict[tuple[int, int], float]:
     return {(int(x), int(y)): float(w) for x, y, w in table}
 
@@ -247,7 +243,7 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
         student,
         CASES,
         reference=_table_of(bilinear_centres),
-        compare=_same_splat,
+        compare=close(atol=1e-9, rtol=0.0),
         convert=lambda answer: splat_table(*answer),
         hint="the four pixels whose centres (c + 0.5, r + 0.5) surround the point; measure the "
         "point's offset (dx, dy) from the top-left of those centres, and give each pixel the "

@@ -8,8 +8,6 @@ build validate their own input.
 
 from __future__ import annotations
 
-import functools
-
 import numpy as np
 
 from course import images, poisson
@@ -18,7 +16,6 @@ from course.classroom.pictures import (
     colormap_color,
     landmark_at,
     panel_picture,
-    read_only,
     rgb_color,
     still_picture,
 )
@@ -32,11 +29,6 @@ UNCHECKED = True  # see the module docstring
 PLANE_OFFSET = (500, 300)
 
 
-@functools.cache
-def lake_and_plane() -> tuple[np.ndarray, np.ndarray]:
-    return read_only(images.lake()), read_only(images.plane())
-
-
 def poisson_app() -> PoissonIterationApp:
     """Lesson 08's app as the notebook shows it: 1000 sweeps of Jacobi."""
     app = PoissonIterationApp()
@@ -46,7 +38,7 @@ def poisson_app() -> PoissonIterationApp:
 
 def poisson_landmarks(app: SliderApp) -> list[Landmark]:
     """Region pixels of ``seamless_clone`` after n sweeps, and their error against ``solve``."""
-    lake, plane = lake_and_plane()
+    lake, plane = figures.lab_scene()
     method, sweeps = app.value("method"), int(app.value("sweeps"))
     problem = poisson.clone_problem(lake, plane, PLANE_OFFSET)
     exact = poisson.solve(problem)

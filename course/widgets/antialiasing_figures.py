@@ -239,6 +239,17 @@ class Table(str):
         return str(self)
 
 
+@functools.cache
+def _variant_rows() -> tuple[list[str], list[dict], list[dict], list[dict]]:
+    """The splats' names and their quality rows, counted and by length; the strokes' and Agg's."""
+    renderings, exact = seed_000_renderings()
+    names = [name for name in ROLES if name not in ("stroke_area", AGG)]
+    counted = quality_table({n: renderings[n] for n in names}, SEED_000_CUBIC, exact)
+    by_length = quality_table({n: renderings[n + ARC_LENGTH] for n in names}, SEED_000_CUBIC, exact)
+    others = quality_table({n: renderings[n] for n in ("stroke_area", AGG)}, SEED_000_CUBIC, exact)
+    return names, counted, by_length, others
+
+
 def variants_table() -> Table:
     """The handouts' splats against the exact coverage: error, and brightness along the curve.
 
@@ -247,11 +258,7 @@ def variants_table() -> Table:
     curve (0 for an evenly bright curve). Counted at the handouts' step
     0.001, and weighted by arc length.
     """
-    renderings, exact = seed_000_renderings()
-    names = [name for name in ROLES if name not in ("stroke_area", AGG)]
-    counted = quality_table({n: renderings[n] for n in names}, SEED_000_CUBIC, exact)
-    by_length = quality_table({n: renderings[n + ARC_LENGTH] for n in names}, SEED_000_CUBIC, exact)
-    others = quality_table({n: renderings[n] for n in ("stroke_area", AGG)}, SEED_000_CUBIC, exact)
+    names, counted, by_length, others = _variant_rows()
     lines = [
         f"{'variant':34s} {'what it does':40s} {'counted':>15s} {'by length':>15s}",
         f"{'':34s} {'':40s} {'RMSE':>7s} {'CV':>7s} {'RMSE':>7s} {'CV':>7s}",
@@ -277,11 +284,7 @@ def variants_figure() -> Still:
     weighted by length, the CV falls from 20.9-24.1% to 0.1-6.5%;
     the least error: the stroke's area (library), 0.0002
     """
-    renderings, exact = seed_000_renderings()
-    names = [name for name in ROLES if name not in ("stroke_area", AGG)]
-    counted = quality_table({n: renderings[n] for n in names}, SEED_000_CUBIC, exact)
-    by_length = quality_table({n: renderings[n + ARC_LENGTH] for n in names}, SEED_000_CUBIC, exact)
-    others = quality_table({n: renderings[n] for n in ("stroke_area", AGG)}, SEED_000_CUBIC, exact)
+    names, counted, by_length, others = _variant_rows()
     labels = [ROLES[n][0] for n in names] + [ROLES[row["name"]][0] for row in others]
     figure = Figure(figsize=(9.0, 3.4), dpi=100)
     error_axes, cv_axes = figure.subplots(1, 2, sharey=True)

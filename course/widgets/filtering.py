@@ -23,9 +23,8 @@ import matplotlib
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from course import filters, limits
+from course import filters, images, limits
 from course._validate import as_choice, as_image, as_int, as_option, describe
-from course.images import photograph, to_gray
 from course.widgets.base import SliderApp
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
@@ -203,8 +202,7 @@ class KernelApp(SliderApp):
         window: tuple[int, int] = (40, 112),
     ) -> None:
         if image is None:
-            # The face, 150 x 128: its right edge is the light wall, where the border shows.
-            image = to_gray(photograph())[150:450:2, 128:384:2]
+            image = images.face()  # its right edge is the light wall, where the border shows
         self.image = as_image(image, "image")
         if self.image.ndim != 2:
             raise ValueError(f"image: expected a gray (H, W) image; got shape {self.image.shape}")

@@ -14,22 +14,20 @@ import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.patches import Rectangle
 
-from course import filters
+from course import filters, images
 from course._validate import as_int
-from course.images import photograph, to_gray
 from course.widgets.filtering import blurred, border_ring_mean
 from course.widgets.picture import Still, pixel_figure
 
-__all__ = ["border_figure", "face", "false_edges_figure", "filters_figure", "window_figure"]
+__all__ = ["border_figure", "false_edges_figure", "filters_figure", "window_figure"]
 
 BLUE, VERMILLION = "#0072B2", "#D55E00"
 
 
 @functools.cache
-def face() -> np.ndarray:
-    """The photograph's face, gray, 150 x 128 (every other pixel of rows 150-449, columns
-    128-383): its right edge is the light wall, where border rules show."""
-    image = to_gray(photograph())[150:450:2, 128:384:2]
+def _face() -> np.ndarray:
+    """:func:`course.images.face`, read once for every figure."""
+    image = images.face()
     image.flags.writeable = False
     return image
 
@@ -42,7 +40,7 @@ def filters_figure(zoom: int = 2) -> Still:
     >>> filters_figure()
     Sobel magnitude: max 4.06, 13.1% of the pixels above 1 (drawn white); each pixel 2 x 2
     """
-    image = face()
+    image = _face()
     five = image
     for _ in range(5):
         five = filters.blur(five)
@@ -72,7 +70,7 @@ def window_figure(row: int = 2, column: int = 2, zoom: int = 56) -> Still:
     >>> window_figure()
     the window around (x, y) = (2, 2) holds 0.19 ... 0.66; their mean, 0.418, is the output
     """
-    patch = np.round(face()[44:49, 54:59], 2)
+    patch = np.round(_face()[44:49, 54:59], 2)
     out = filters.blur(patch)
     extent = (0, 5, 5, 0)
     figure, axes = pixel_figure(
@@ -116,8 +114,7 @@ def border_figure(passes: int = 20, size: int = 16, zoom: int = 8) -> Still:
     """
     passes = as_int(passes, "passes", minimum=0, maximum=200)
     size = as_int(size, "size", minimum=1, maximum=64)
-    zoom = as_int(zoom, "zoom", minimum=1, maximum=64)
-    image = face()
+    image = _face()
     results = dict.fromkeys(filters.BORDERS, image)
     for _ in range(passes):
         results = {border: blurred(result, border) for border, result in results.items()}

@@ -11,7 +11,8 @@ the fast PNG encoder a picture redrawn at every step of a drag needs.
 The building blocks of the apps (a picture widget, figure views, pixel
 panels): the apps, which validate their own arguments, are their only
 callers, so this module checks no input (``UNCHECKED = True``; the fuzz test
-skips it).
+skips it), but for :func:`pixel_figure`'s ``zoom``, which every lesson figure
+passes on from its own caller.
 """
 
 from __future__ import annotations
@@ -32,7 +33,8 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 from PIL import Image as PILImage
 
-from course._validate import describe
+from course import limits
+from course._validate import as_int, describe
 
 __all__ = [
     "GRAY_PIXELS",
@@ -313,6 +315,8 @@ def pixel_figure(
     figure and the axes, in data coordinates of the image (y down), to draw
     marks on.
     """
+    # The one check here: every lesson figure passes its caller's zoom straight on.
+    zoom = as_int(zoom, "zoom", minimum=1, maximum=limits.MAX_ZOOM)
     widths = [window.shape[1] * zoom for window, _, _ in windows]
     heights = [window.shape[0] * zoom for window, _, _ in windows]
     top = title_height + (legend_height if legend else 0)

@@ -37,6 +37,7 @@ __all__ = [
     "day_scene",
     "headline_figure",
     "inpainting_figure",
+    "lab_scene",
     "lab_sweeps",
     "mask_and_mixed_figure",
 ]
@@ -50,16 +51,22 @@ _MARGIN = 30
 BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
 
 
+def _read_only(*arrays: np.ndarray) -> tuple[np.ndarray, ...]:
+    for array in arrays:
+        array.flags.writeable = False  # cached: shared by every caller
+    return arrays
+
+
 @functools.cache
 def day_scene() -> tuple[np.ndarray, np.ndarray]:
-    """The lake and the plane photographed against a pale day sky."""
-    return images.lake(), images.plane(sky="day")
+    """The lake and the plane photographed against a pale day sky (read-only)."""
+    return _read_only(images.lake(), images.plane(sky="day"))
 
 
 @functools.cache
 def lab_scene() -> tuple[np.ndarray, np.ndarray]:
-    """The lake and the lab's plane in its orange evening sky."""
-    return images.lake(), images.plane()
+    """The lake and the lab's plane in its orange evening sky (read-only)."""
+    return _read_only(images.lake(), images.plane())
 
 
 def _around(offset: tuple[int, int], shape: tuple[int, int], image: np.ndarray) -> tuple:

@@ -108,3 +108,11 @@ def test_the_budget_reports_its_mistake_and_the_case():
 def test_pixel_sets_compare_in_any_order_without_repeats():
     assert same_pixels([[1, 2], [3, 4]], [[3, 4], [1, 2], [1, 2]])
     assert not same_pixels([[1, 2]], [[2, 1]])
+
+
+def test_assert_passed_raises_the_whole_report_for_a_grader_and_returns_a_pass():
+    failed = CheckResult("blur", False, 2, "case 2 is wrong\n  expected: 1, given: 2")
+    with pytest.raises(AssertionError, match="FAIL blur: case 2 is wrong\n  expected: 1, given: 2"):
+        failed.assert_passed()
+    passed = CheckResult("blur", True, 3, "all 3 cases pass")
+    assert passed.assert_passed() is passed

@@ -28,6 +28,7 @@ from course._validate import as_float_array, require_finite
 
 __all__ = [
     "CallBudget",
+    "CheckFailed",
     "CheckResult",
     "Mistake",
     "call_budget",
@@ -65,7 +66,8 @@ class CheckResult:
 
     ``picture`` is a PNG of the difference (or None); ``mistake`` the name of
     the known mistake recognised (or None). In a notebook the report shows
-    as text, then the picture.
+    as text, then the picture. A grader (nbgrader's test cells) calls
+    :meth:`assert_passed`, which raises on a failure with the same report.
     """
 
     exercise: str
@@ -77,6 +79,22 @@ class CheckResult:
 
     def __bool__(self) -> bool:
         return self.passed
+
+    def assert_passed(self) -> CheckResult:
+        """Return this result if it passed; otherwise raise :class:`CheckFailed` with the report.
+
+        Examples
+        --------
+        >>> CheckResult("f", True, 2, "all 2 cases pass").assert_passed()
+        PASS f: all 2 cases pass
+        >>> CheckResult("f", False, 1, "case 1 is wrong").assert_passed()
+        Traceback (most recent call last):
+        ...
+        course.check.base.CheckFailed: FAIL f: case 1 is wrong
+        """
+        if not self.passed:
+            raise CheckFailed(str(self))
+        return self
 
     def __str__(self) -> str:
         mark = "PASS" if self.passed else "FAIL"
@@ -90,6 +108,10 @@ class CheckResult:
         display({"text/plain": str(self)}, raw=True)
         if self.picture is not None:
             display({"image/png": self.picture}, raw=True)
+
+
+class CheckFailed(AssertionError):
+    """A failed check, raised for graders: its message is the checker's whole report."""
 
 
 class CallBudget(Exception):

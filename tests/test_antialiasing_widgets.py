@@ -2,13 +2,21 @@
 
 import numpy as np
 import pytest
+from matplotlib.figure import Figure
 
 from course.antialias import render
 from course.canvas import crop
 from course.coverage import reference
 from course.curve_quality import intensity_along
 from course.images import SEED_000_CUBIC
-from course.widgets.antialiasing import CurveWalk, StepApp, ZoomApp, label_of, zoom_figure
+from course.widgets.antialiasing import (
+    CurveWalk,
+    StepApp,
+    ZoomApp,
+    ZoomPanel,
+    label_of,
+    zoom_figure,
+)
 
 CURVE = SEED_000_CUBIC / 5
 SHAPE = (140, 140)
@@ -159,3 +167,46 @@ def test_zoom_windows_are_shown_pixel_for_pixel_and_new_titles_reach_the_picture
     after = app.view.pixels()[title_rows, left : left + ZoomApp.PANEL]
     assert not np.array_equal(before, after)
     assert app.panels[1].title.get_text() == label_of("bilinear_centres")
+
+
+def test_points_typed_far_off_the_canvas_are_drawn_clipped_to_it_and_the_app_says_so():
+    app = ZoomApp(CURVE, SHAPE, picks=PICKS, k=8)
+    app.refresh()
+    # Before, this curve millions of pixels long took 38 s and 3.4 GB to draw.
+    app.controls["points"].value = "-1e6, -1e6; 1e6, 1e6; 5, 5; 7, 7"
+    np.testing.assert_array_equal(app.points, [[0, 0], [140, 140], [5, 5], [7, 7]])
+    assert app.status.value == (
+        "Clipped P0, P1 to the 140 x 140 canvas (x from 0 to 140, y from 0 to 140), "
+        "where the app draws: 0, 0; 140, 140"
+    )
+    assert app.value("points") == "-1e6, -1e6; 1e6, 1e6; 5, 5; 7, 7"  # as typed
+    # The work is bounded by the canvas: the curve is no longer than its control polygon.
+    polygon = np.hypot(*np.diff(app.points, axis=0).T).sum()
+    assert app.walk.lengths[-1] <= polygon
+    assert len(app.walk.polyline) <= 2 * polygon + 2  # segments of at most one pixel
+    assert all(window.shape == (16, 16) for window in app.windows)
+    app.controls["points"].value = "10, 10; 130, 10; 10, 130; 130, 130"
+    assert app.status.value == ""
+    np.testing.assert_array_equal(app.points, [[10, 10], [130, 10], [10, 130], [130, 130]])
+
+
+def test_zoom_app_clips_points_given_off_its_canvas_too():
+    app = ZoomApp(CURVE * [1, -1], SHAPE, picks=PICKS, k=8)
+    assert app.status.value.startswith("Clipped P0, P1, P2, P3 to the 140 x 140 canvas")
+    assert (app.points[:, 1] == 0).all()
+
+
+def test_curve_walk_and_zoom_panel_refuse_what_they_cannot_draw():
+    walk = CurveWalk(CURVE)
+    np.testing.assert_array_equal(walk.at(1.5), walk.at(1.0))  # past the end: the end
+    with pytest.raises(TypeError, match="fraction must hold real numbers"):
+        walk.at("abc")
+    with pytest.raises(ValueError, match="fraction must be finite"):
+        walk.at(float("nan"))
+    axes = Figure().add_subplot()
+    with pytest.raises(TypeError, match="axes must be a matplotlib Axes"):
+        ZoomPanel(None, walk.polyline)
+    with pytest.raises(ValueError, match="curve must be a 2-D array"):
+        ZoomPanel(axes, np.zeros(0))
+    with pytest.raises(ValueError, match="curve must be finite"):
+        ZoomPanel(axes, [[0.0, 0.0], [np.nan, 1.0]])

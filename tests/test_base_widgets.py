@@ -165,9 +165,172 @@ def test_drag_along_presses_moves_and_releases_like_the_browser():
 
 
 def test_points_as_text_both_ways():
-    points = parse_points("(1, 2.5); 3,4 ; -5e-1 6")
-    np.testing.assert_array_equal(points, [[1, 2.5], [3, 4], [-0.5, 6]])
+    points = parse_points("(1, 2.5); 3,4 ; [-5e-1, 6]\n7, +8;")
+    np.testing.assert_array_equal(points, [[1, 2.5], [3, 4], [-0.5, 6], [7, 8]])
     assert parse_points(format_points(points)).tolist() == points.tolist()
-    for text in ("1, 2, 3", "", "nothing"):
-        with pytest.raises(ValueError, match="an x and a y each"):
-            parse_points(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "reason"),
+    [
+        ("90,5 610,5; 170 130", "decimal comma"),  # read as 3 points before
+        ("90,5, 610,5", "decimal comma"),
+        ("0x10, 0b1", "decimal"),  # read as (0, 10), (0, 1) before
+        ("0o7, 1", "decimal"),
+        ("1, 2, 3", "two numbers; got 3"),
+        ("3 4", "comma between them"),
+        ("1, 2; -5e-1 6", "point 2"),
+        ("nan, 1", "decimal numbers"),
+        ("1, 2; x", "point 2"),
+        ("(1, 2", "point 1"),
+        ("", "expected text such as"),
+        (" ; \n ", "expected text such as"),
+    ],
+)
+def test_points_text_that_could_be_read_two_ways_is_refused_with_a_reason(text, reason):
+    with pytest.raises(ValueError, match=reason):
+        parse_points(text)
+
+
+def test_points_text_must_be_finite_and_on_the_canvas_range():
+    with pytest.raises(ValueError, match="finite"):
+        parse_points("1e400, 0")
+    with pytest.raises(ValueError, match="within"):
+        parse_points("1e9, 0")
+    with pytest.raises(TypeError, match="text must be a string"):
+        parse_points(None)
+
+
+@pytest.mark.parametrize(
+    "message",
+    [
+        {"kind": "down", "x": None, "y": 10},  # a TypeError escaped before
+        {"kind": "down", "x": 10, "y": "10"},
+        {"kind": "move", "x": float("nan"), "y": 1},
+        {"kind": "down", "x": True, "y": 1},
+        {"kind": "down", "x": [1], "y": 1},
+        {"kind": None, "x": 1, "y": 1},
+        {"kind": ["down"], "x": 1, "y": 1},
+        {"kind": "jump", "x": 1, "y": 1},
+        {"x": 1, "y": 1},
+        {"kind": "down", "y": 1},
+        {},
+        None,
+        "down",
+    ],
+)
+def test_a_malformed_pointer_message_is_reported_never_raised(message):
+    app = BoxApp()
+    app.refresh()
+    sent = []
+    app.view.image.send = sent.append
+    app._on_message(app.view.image, message, [])
+    assert app.status.value.startswith("Ignored a pointer message: ")
+    assert sent == [{"kind": "drawn"}]  # the browser may send its next move
+    assert app.grabbed is None and app.renders == 1
+
+
+def test_a_slider_set_to_nan_from_code_is_refused_and_the_last_value_kept():
+    app = LineApp()
+    app.refresh()
+    app.controls["y"].value = 0.8
+    before = app.view.image.value
+    app.controls["y"].value = float("nan")  # ipywidgets lets NaN through
+    assert app.value("y") == 0.8
+    assert app.status.value == "Refused y = nan: expected a finite number; kept 0.8"
+    assert app.view.image.value == before  # the picture shows the value kept
+    app.controls["y"].value = 0.2
+    assert app.status.value == "Refused y = nan: expected a finite number; kept 0.8"
+    assert abs(dark_rows(app).mean() - 80) < 2
+
+
+class PickyApp(LineApp):
+    """An app whose update refuses some values its control can hold."""
+
+    def update(self) -> None:
+        if self.value("y") > 0.9:
+            raise ValueError("y above 0.9 is not drawn")
+        super().update()
+
+
+def test_a_value_the_update_refuses_is_put_back_with_the_reason():
+    app = PickyApp()
+    app.refresh()
+    app.controls["y"].value = 0.95
+    assert app.value("y") == 0.5
+    assert app.status.value == "Refused y = 0.95: y above 0.9 is not drawn; kept 0.5"
+    assert abs(dark_rows(app).mean() - 50) < 2
+
+
+def small_apps():
+    """Every app of the lessons, each built small: name -> a function that builds it."""
+    from course.images import SEED_000_CUBIC
+    from course.widgets import (
+        antialiasing,
+        bernstein,
+        de_casteljau,
+        dithering,
+        filtering,
+        lines_and_triangles,
+        poisson,
+        supersampling,
+    )
+
+    gray = np.linspace(0, 1, 48 * 48).reshape(48, 48)
+    background = np.full((40, 60, 3), 0.5)
+    foreground = np.full((12, 16, 3), 0.8)
+    curve = SEED_000_CUBIC / 5
+    return {
+        "ZoomApp": lambda: antialiasing.ZoomApp(curve, (140, 140), k=8),
+        "StepApp": lambda: antialiasing.StepApp(curve, (140, 140)),
+        "BernsteinBasisApp": bernstein.BernsteinBasisApp,
+        "DeCasteljauApp": de_casteljau.DeCasteljauApp,
+        "DitherComparisonApp": lambda: dithering.DitherComparisonApp(gray, size=8),
+        "GrayLevelApp": lambda: dithering.GrayLevelApp(size=12),
+        "VoidAndClusterApp": lambda: dithering.VoidAndClusterApp(size=16, dots=10),
+        "RepeatedBlurApp": lambda: filtering.RepeatedBlurApp(gray, repeats=1, corner=6),
+        "KernelApp": lambda: filtering.KernelApp(gray, window=(0, 0)),
+        "LineApp": lines_and_triangles.LineApp,
+        "TriangleApp": lines_and_triangles.TriangleApp,
+        "CurveSegmentsApp": lambda: lines_and_triangles.CurveSegmentsApp(segments=4),
+        "PoissonIterationApp": lambda: poisson.PoissonIterationApp(
+            background, foreground, (20, 10), stops=(0, 1)
+        ),
+        "CloneApp": lambda: poisson.CloneApp(background, foreground, (20, 10)),
+        "SupersampleApp": lambda: supersampling.SupersampleApp(
+            size=500, out_size=64, max_rate=6, reference_rate=8
+        ),
+    }
+
+
+def test_small_apps_lists_every_app_of_the_lessons():
+    import importlib
+    import inspect
+    import pkgutil
+
+    import course.widgets
+
+    found = set()
+    for module in pkgutil.iter_modules(course.widgets.__path__):
+        loaded = importlib.import_module(f"course.widgets.{module.name}")
+        for name, value in vars(loaded).items():
+            if inspect.isclass(value) and issubclass(value, SliderApp) and value is not SliderApp:
+                found.add(name)
+    assert found == set(small_apps())
+
+
+@pytest.mark.parametrize("name", sorted(small_apps()))
+def test_every_app_survives_malformed_pointer_messages_and_nan_sliders(name):
+    app = small_apps()[name]()
+    app.refresh()
+    app.view.image.send = lambda content: None
+    for message in ({"kind": "down", "x": None, "y": 3}, {"kind": "up"}, [1, 2], {"x": "1"}):
+        app.status.value = ""
+        app._on_message(app.view.image, message, [])
+        assert app.status.value.startswith("Ignored a pointer message: ")
+    numbers = [key for key, control in app.controls.items() if isinstance(control.value, float)]
+    for key in numbers:
+        before = app.value(key)
+        app.controls[key].value = float("nan")
+        assert app.value(key) == before
+        assert app.status.value.startswith(f"Refused {key} = nan: expected a finite number")

@@ -152,3 +152,24 @@ def test_the_picture_only_changes_where_things_move():
     app.controls["t"].value = 0.2
     # Blitting over the cached background gives exactly the same picture back.
     np.testing.assert_array_equal(picture(app), first)
+
+
+def test_points_typed_beyond_the_most_the_app_draws_are_cut_and_the_app_says_so():
+    app = DeCasteljauApp()
+    typed = [(10.0 * i, 5.0 * (i % 3)) for i in range(MAX_POINTS + 3)]
+    app.controls["points"].value = "; ".join(f"{x:g}, {y:g}" for x, y in typed)
+    assert app.status.value == (
+        f"Kept the first {MAX_POINTS} of the {MAX_POINTS + 3} points typed: "
+        f"the app draws at most {MAX_POINTS} (degree {MAX_POINTS - 1})."
+    )
+    assert app.value("count") == MAX_POINTS
+    np.testing.assert_array_equal(parse_points(app.value("points")), typed[:MAX_POINTS])
+    np.testing.assert_array_equal(app.points, typed[:MAX_POINTS])
+
+
+def test_decimal_commas_are_refused_not_read_as_more_points():
+    app = DeCasteljauApp()
+    app.controls["points"].value = "90,5 610,5; 170, 130"
+    assert "decimal comma" in app.status.value and "Kept the last points" in app.status.value
+    np.testing.assert_array_equal(app.points, EXAMPLE_POINTS[:4])
+    assert app.value("count") == 4

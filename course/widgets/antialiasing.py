@@ -28,6 +28,7 @@ from course._validate import (
     as_int,
     as_point,
     as_positive_float,
+    as_scalar_parameter,
     as_shape,
     describe,
 )
@@ -108,8 +109,19 @@ class CurveWalk:
         self.lengths = np.concatenate([[0.0], np.cumsum(pieces)])
 
     def at(self, fraction: float) -> np.ndarray:
-        """The (x, y) point ``fraction`` of the way along the curve."""
-        s = float(np.clip(fraction, 0.0, 1.0)) * self.lengths[-1]
+        """The (x, y) point ``fraction`` of the way along the curve (clipped to 0 to 1).
+
+        Examples
+        --------
+        >>> CurveWalk([[0, 0], [10, 0]]).at(0.25)
+        array([2.5, 0. ])
+        >>> CurveWalk([[0, 0], [10, 0]]).at(float("nan"))
+        Traceback (most recent call last):
+        ...
+        ValueError: fraction must be finite; got nan
+        """
+        fraction = as_scalar_parameter(fraction, "fraction")
+        s = min(max(fraction, 0.0), 1.0) * self.lengths[-1]
         return np.array(
             [np.interp(s, self.lengths, self.polyline[:, i]) for i in range(2)], dtype=float
         )
@@ -128,6 +140,11 @@ class ZoomPanel:
     """
 
     def __init__(self, axes: Axes, curve: np.ndarray, app: SliderApp | None = None) -> None:
+        if not isinstance(axes, Axes):
+            raise TypeError(f"axes must be a matplotlib Axes; got {describe(axes)}")
+        if app is not None and not isinstance(app, SliderApp):
+            raise TypeError(f"app must be a SliderApp or None; got {describe(app)}")
+        curve = as_curve(curve, "curve")  # the polyline drawn over the pixels
         self.axes = axes
         self.app = app
         self.picture = axes.imshow(
@@ -251,8 +268,8 @@ class ZoomApp(SliderApp):
             raise ValueError(
                 f"picks must be three names from course.curve_quality.VARIANTS; got {picks!r}"
             )
-        self.points = as_curve(points)
         self.shape = as_shape(shape)
+        self.points, clipped = self._on_canvas(as_curve(points))
         self.stroke_width = as_positive_float(width, "width", largest=100.0)
         self.k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
         self.walk = CurveWalk(self.points)
@@ -308,18 +325,44 @@ class ZoomApp(SliderApp):
         self.handle_artists = {f"P{i}": [label] for i, label in enumerate(self.labels)}
         self.windows: list[np.ndarray] = []
         self._titles: list[str] = []
+        self.status.value = clipped
 
     def centre(self) -> np.ndarray:
         """The window's centre: the curve point at the position slider."""
         return self.walk.at(self.value("position"))
 
     def read_points(self) -> np.ndarray:
-        """The control points, as the text describes them."""
-        points = self.typed_points("points", self.points, len(self.points))
+        """The control points, as the text describes them, kept on the canvas."""
+        points, clipped = self._on_canvas(
+            self.typed_points("points", self.points, len(self.points))
+        )
+        if clipped:
+            self.status.value = clipped
         if not np.array_equal(points, self.points):
             self.points = points
             self.walk = CurveWalk(points)
         return self.points
+
+    def _on_canvas(self, points: np.ndarray) -> tuple[np.ndarray, str]:
+        """The points clipped to the canvas, as a drag keeps them, and what was clipped.
+
+        Every picture the app draws lies on the canvas, and the work of
+        drawing a curve grows with its length: a control point typed a
+        million pixels away would make a curve millions of pixels long, whose
+        reference alone takes minutes and gigabytes. So the app draws the
+        points clipped to the canvas and says which it moved (the text keeps
+        what was typed, for the student to change).
+        """
+        height, width = self.shape
+        inside = np.clip(points, 0.0, (width, height))
+        moved = np.flatnonzero((inside != points).any(axis=1))
+        if not len(moved):
+            return inside, ""
+        names = ", ".join(f"P{i}" for i in moved)
+        return inside, (
+            f"Clipped {names} to the {width} x {height} canvas (x from 0 to {width}, "
+            f"y from 0 to {height}), where the app draws: {format_points(inside[moved])}"
+        )
 
     def update(self) -> None:
         points = self.read_points()

@@ -47,11 +47,38 @@ __all__ = [
 #: The colour of what the student holds (Okabe and Ito's orange, colour-blind safe).
 HIGHLIGHT = "#E69F00"
 
-_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+# One point: two decimal numbers and a comma between them, in brackets if the student likes.
+_POINT = re.compile(
+    rf"\s*(?:\(\s*({_NUMBER})\s*,\s*({_NUMBER})\s*\)"
+    rf"|\[\s*({_NUMBER})\s*,\s*({_NUMBER})\s*\]"
+    rf"|({_NUMBER})\s*,\s*({_NUMBER}))\s*"
+)
+_FORM = "write each point as x, y and separate points with ';' or a new line"
+
+
+def _why_not_a_point(piece: str) -> str:
+    """What keeps ``piece`` (one point's text) from reading as x, y, for the student to fix."""
+    numbers = re.findall(_NUMBER, piece)
+    if re.search(r"\b0[xXbBoO]", piece):
+        return "numbers must be decimal (0x10 and 0b1 are not read)"
+    if re.search(r"\d,\d", piece) and len(numbers) > 2:
+        return "a decimal comma is not read: write 90.5, not 90,5"
+    if len(numbers) > 2:
+        return f"a point is two numbers; got {len(numbers)}"
+    if "," not in piece:
+        return "the x and the y need a comma between them"
+    return "expected two decimal numbers such as 90.5, -3 or 1e2"
 
 
 def parse_points(text: str) -> np.ndarray:
-    """Read ``"x, y; x, y; ..."`` (any separators) into an (N, 2) array.
+    """Read ``"x, y; x, y; ..."`` into an (N, 2) array; ValueError on anything else.
+
+    Each point is two decimal numbers separated by a comma, optionally in
+    brackets; points are separated by ``;`` or new lines. Text that could be
+    read more than one way is refused, never guessed at: decimal commas
+    (``90,5``), hexadecimal or binary literals (``0x10``), a point without
+    its comma (``3 4``).
 
     Examples
     --------
@@ -59,12 +86,28 @@ def parse_points(text: str) -> np.ndarray:
     array([[ 10. ,  10. ],
            [690. ,  10.5],
            [  3. ,   4. ]])
+    >>> parse_points("90,5 610,5; 170, 130")
+    Traceback (most recent call last):
+    ...
+    ValueError: points: point 1, '90,5 610,5', is not x, y: a decimal comma is not read: \
+write 90.5, not 90,5 (write each point as x, y and separate points with ';' or a new line)
     """
     if not isinstance(text, str):
         raise TypeError(f"text must be a string such as '10, 10; 690, 10'; got {describe(text)}")
-    numbers = [float(value) for value in _NUMBER.findall(text)]
-    if not numbers or len(numbers) % 2:
-        raise ValueError(f"points need an x and a y each; got {len(numbers)} numbers")
+    pieces = [piece.strip() for piece in re.split(r"[;\n]", text)]
+    pieces = [piece for piece in pieces if piece]
+    if not pieces:
+        raise ValueError(f"points: expected text such as '10, 10; 690, 10'; got {text!r}")
+    numbers = []
+    for index, piece in enumerate(pieces, start=1):
+        match = _POINT.fullmatch(piece)
+        if match is None:
+            shown = piece if len(piece) <= 40 else piece[:37] + "..."
+            raise ValueError(
+                f"points: point {index}, {shown!r}, is not x, y: {_why_not_a_point(piece)} "
+                f"({_FORM})"
+            )
+        numbers.extend(float(value) for value in match.groups() if value is not None)
     points = np.array(numbers).reshape(-1, 2)
     if not np.isfinite(points).all():
         raise ValueError("points must be finite numbers")
@@ -152,6 +195,7 @@ class SliderApp:
         self._grab: _Grab | None = None
         self._press: tuple[float, float] | None = None
         self._held = False
+        self._restoring = False
         self._rings: dict[Axes, tuple[Line2D, Rectangle]] = {}
         self.moving: list[Any] = []
         # Artists that move with one handle only (its label): while another is
@@ -208,9 +252,39 @@ class SliderApp:
             self.moving.append(artist)
 
     def _on_change(self, change: dict) -> None:
+        if self._restoring:  # putting back a refused value: just draw it
+            self.refresh()
+            return
+        refused = _not_finite(change["new"])
+        if refused:
+            self._restore(change, refused)
+            return
         if self._held:
             return  # one redraw after the drag has set every control it moves
-        self.refresh()
+        try:
+            self.refresh()
+        except (ValueError, TypeError) as error:
+            self._restore(change, str(error))
+
+    def _restore(self, change: dict, reason: str) -> None:
+        """Put back a control's last good value and say why on the status line.
+
+        A browser's slider sends only values it can show, but a notebook cell
+        can set any (``app.controls["t"].value = float("nan")``; ipywidgets
+        clamps an infinite value but lets NaN through). The app keeps drawing
+        what it drew, and the student reads what was refused.
+        """
+        owner = change.get("owner")
+        name = next((key for key, control in self.controls.items() if control is owner), "?")
+        old = change.get("old")
+        self._restoring = True
+        try:
+            owner.value = old
+        finally:
+            self._restoring = False
+        self.status.value = (
+            f"Refused {name} = {_format(change['new'])}: {reason}; kept {_format(old)}"
+        )
 
     @contextmanager
     def holding(self) -> Iterator[None]:
@@ -307,8 +381,13 @@ class SliderApp:
         it may lie outside the picture (the browser keeps sending moves once
         a drag leaves it). Redraws when anything changed.
         """
-        if kind not in ("down", "move", "up", "double"):
+        if not isinstance(kind, str) or kind not in ("down", "move", "up", "double"):
             raise ValueError(f"kind must be one of 'down', 'move', 'up', 'double'; got {kind!r}")
+        for name, number in (("x", x), ("y", y)):
+            if isinstance(number, bool) or not isinstance(number, (int, float, np.number)):
+                raise TypeError(
+                    f"{name} must be a number of picture pixels; got {describe(number)}"
+                )
         x, y = float(x), float(y)
         if not (np.isfinite(x) and np.isfinite(y)):
             raise ValueError(f"x and y must be finite picture pixels; got ({x}, {y})")
@@ -342,12 +421,18 @@ class SliderApp:
                 with self.holding():
                     self.double_click(handle.name)
 
-    def _on_message(self, widget: Any, content: dict, buffers: Any) -> None:
+    def _on_message(self, widget: Any, content: Any, buffers: Any) -> None:
+        # A message comes from the browser, or from any code that sends to the
+        # widget: a malformed one (not a dict, a key missing, null, a string,
+        # NaN) is reported on the status line, never raised out of the observer.
         try:
-            self.pointer(
-                content.get("kind", ""), content.get("x", np.nan), content.get("y", np.nan)
-            )
-        except ValueError as error:
+            if not isinstance(content, dict):
+                raise TypeError(f"expected a dict with kind, x and y; got {describe(content)}")
+            missing = [key for key in ("kind", "x", "y") if key not in content]
+            if missing:
+                raise ValueError(f"missing {', '.join(missing)}")
+            self.pointer(content["kind"], content["x"], content["y"])
+        except (ValueError, TypeError) as error:
             self.status.value = f"Ignored a pointer message: {error}"
         finally:
             self.view.image.send({"kind": "drawn"})
@@ -499,6 +584,15 @@ class SliderApp:
         picture = base64.b64encode(bytes(self.view.image.value)).decode("ascii")
         bundle[f"image/{self.view.image.format}"] = picture
         return bundle
+
+
+def _not_finite(value: Any) -> str:
+    """Why a control's value is refused before drawing ("" when it is not): NaN or infinite."""
+    values = value if isinstance(value, tuple) else (value,)
+    for item in values:
+        if isinstance(item, (float, np.floating)) and not np.isfinite(item):
+            return "expected a finite number"
+    return ""
 
 
 def _format(value: Any) -> str:

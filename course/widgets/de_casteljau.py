@@ -151,8 +151,14 @@ class DeCasteljauApp(SliderApp):
         count = self.value("count")
         if self._count_changed:
             points = np.vstack([points, EXAMPLE_POINTS[len(points) : count]])[:count]
-        points = points[:MAX_POINTS]
-        if len(points) != count or self._count_changed:
+        cut = len(points) > MAX_POINTS
+        if cut:
+            self.status.value = (
+                f"Kept the first {MAX_POINTS} of the {len(points)} points typed: "
+                f"the app draws at most {MAX_POINTS} (degree {MAX_POINTS - 1})."
+            )
+            points = points[:MAX_POINTS]
+        if cut or len(points) != count or self._count_changed:
             self._write_points(points)
         self._count_changed = False
         return points

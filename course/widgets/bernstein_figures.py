@@ -17,7 +17,7 @@ from course._validate import as_curve, as_int
 from course.bezier import binomial, de_casteljau, derivative
 from course.bezier_accuracy import accuracy_by_degree
 from course.bezier_handouts import comb_recursive_calls
-from course.widgets.picture import Still
+from course.widgets.picture import Still, rounding_level
 
 __all__ = [
     "accuracy_figure",
@@ -258,7 +258,10 @@ def accuracy_figure(degrees: Sequence[int] = tuple(range(1, 61)), samples: int =
     figure.tight_layout()
     worst = {method: float(errors[method].max()) for method in _LABELS}
     power = errors["power"]
-    parts = [f"{_LABELS[m][0]} worst {worst[m]:.0e}" for m in ("de_casteljau", "bernstein_loop")]
+    parts = [
+        f"{_LABELS[m][0]} worst {rounding_level(worst[m], spec='.0e')}"
+        for m in ("de_casteljau", "bernstein_loop")
+    ]
     if (power > 1e-6).any():
         parts.append(
             f"power basis above 1e-6 from degree {int(errors['degree'][np.argmax(power > 1e-6)])}"

@@ -46,12 +46,33 @@ __all__ = [
     "pixel_axes",
     "pixel_figure",
     "png_bytes",
+    "rounding_level",
 ]
 
 UNCHECKED = True  # see the module docstring
 
 #: imshow settings for a gray image in [0, 1], pixels drawn as flat squares.
 GRAY_PIXELS = {"cmap": "gray", "vmin": 0.0, "vmax": 1.0, "interpolation": "nearest"}
+
+
+def rounding_level(value: float, bound: float = 1e-12, spec: str = ".1e") -> str:
+    """A difference or residual as a lesson prints it: "below 1e-12" when it is that small.
+
+    Results that agree "to rounding" differ in their last bits from one CPU,
+    BLAS build or thread count to the next (numpy and OpenBLAS pick their
+    SIMD paths by processor), so their digits are not printed: a printed
+    number must be the same on every machine. ``bound`` is chosen well above
+    what rounding can reach; a value at or above it is printed with ``spec``.
+
+    Examples
+    --------
+    >>> rounding_level(3.1e-15), rounding_level(2.5e-4), rounding_level(3e-13, bound=1e-10)
+    ('below 1e-12', '2.5e-04', 'below 1e-10')
+    """
+    value = float(value)
+    if abs(value) < bound:
+        return f"below {bound:.0e}".replace("e-0", "e-").replace("e+0", "e+")
+    return format(value, spec)
 
 
 def png_bytes(pixels: np.ndarray) -> bytes:

@@ -27,6 +27,7 @@ from course._validate import (
 )
 from course.poisson_problem import build_clone_problem
 from course.widgets.base import Handle, SliderApp, format_points
+from course.widgets.picture import rounding_level
 
 __all__ = [
     "CloneApp",
@@ -146,7 +147,8 @@ class PoissonIterationApp(SliderApp):
         residual = self.problem.residual(solution)
         names = {"jacobi": "Jacobi", "gauss_seidel": "Gauss-Seidel", "sor": "SOR"}
         self.caption.set_text(
-            f"{names[method]}, {sweeps} sweeps: residual {residual:.2g}, error up to "
+            f"{names[method]}, {sweeps} sweeps: residual {rounding_level(residual, spec='.2g')}, "
+            f"error up to "
             f"{self._error(solution):.1f} grey levels (from {self.initial_error:.1f})"
         )
 

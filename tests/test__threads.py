@@ -198,3 +198,30 @@ def test_the_solvers_agree_to_rounding_on_one_thread_and_on_two(monkeypatch, sol
     np.testing.assert_allclose(results[1], results[2], rtol=0, atol=1e-12)
     for result in results.values():
         assert solvers.residual(result, region, source) < 1e-9
+
+
+@needs_two
+def test_what_lesson_08_prints_is_the_same_on_one_thread_and_on_two(monkeypatch):
+    # The load chooses the thread count (threads_to_use), so the printed numbers must not
+    # depend on it: two threads change the last bits of a solve (the test above), and
+    # the captions round far above them.
+    from course import poisson
+    from course.widgets import poisson_figures as figures
+    from course.widgets.picture import rounding_level
+
+    lake, plane = figures.lab_scene()
+    problem = poisson.clone_problem(lake, plane, figures.LAB_OFFSET)
+    printed = {}
+    for threads in (1, 2):
+        monkeypatch.setattr(_threads, "threads_to_use", lambda threads=threads: threads)
+        with threadpool_limits(limits=2, user_api="blas"), scipy.fft.set_workers(2):
+            printed[threads] = [
+                figures.headline_figure().caption,
+                figures.correction_figure().caption,
+                figures.colour_figure().caption,
+                *(
+                    rounding_level(problem.residual(poisson.solve(problem, method)), 1e-10)
+                    for method in ("dst", "direct", "capacitance")
+                ),
+            ]
+    assert printed[1] == printed[2]

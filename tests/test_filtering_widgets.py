@@ -88,6 +88,26 @@ def test_kernel_app_keeps_the_last_kernel_when_the_text_is_wrong_and_says_why():
     assert "every entry must be a number" in app.status.value
 
 
+@pytest.mark.parametrize(
+    ("text", "reason"),
+    [
+        ("0,5 1; 0 0 0; 0 0 0", "mixes commas and spaces"),  # read as 0 5 1 before
+        ("0x10 0 0; 0 0 0; 0 0 0", "got '0x10'"),
+        ("1_0 0 0; 0 0 0; 0 0 0", "got '1_0'"),  # read as 10 before
+        ("inf 0 0; 0 0 0; 0 0 0", "got 'inf'"),
+    ],
+)
+def test_kernel_text_that_could_be_read_two_ways_is_refused(text, reason):
+    with pytest.raises(ValueError, match=reason):
+        parse_kernel(text)
+    assert parse_kernel("1,2,1; 2, 4, 2\n1 2 1").tolist() == [[1, 2, 1], [2, 4, 2], [1, 2, 1]]
+    app = KernelApp(np.full((20, 20), 0.5))
+    app.refresh()
+    app.controls["kernel"].value = text
+    assert reason in app.status.value
+    np.testing.assert_allclose(app.kernel, filters.BOX)
+
+
 def test_kernel_app_shows_signed_results_around_zero_and_warns_on_the_handout_rule():
     app = KernelApp(np.random.default_rng(0).random((20, 20)), kernel="Sobel y")
     app.refresh()

@@ -48,6 +48,28 @@ KERNELS = {
 }
 
 
+# A kernel entry: a decimal number or a fraction of two whole numbers. Nothing Python
+# alone would read (0x10, 1_0, inf): the student sees the number the app uses.
+_KERNEL_ENTRY = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?\d+/[-+]?\d+")
+
+
+def _kernel_row(row: str) -> list[str]:
+    """A row's entries: split by spaces, or by commas; refused when it could be either.
+
+    ``0,5 1`` is three entries with commas as separators but two with a decimal
+    comma: a row that uses commas must use them between every entry.
+    """
+    if "," not in row:
+        return row.split()
+    entries = [entry.strip() for entry in row.split(",")]
+    if any(len(entry.split()) != 1 for entry in entries):
+        raise ValueError(
+            f"kernel: the row {row.strip()!r} mixes commas and spaces: separate its numbers "
+            "by spaces or by commas, and write decimals with a point (0.5, not 0,5)"
+        )
+    return entries
+
+
 def parse_kernel(text: str) -> np.ndarray:
     """Three rows of three numbers (fractions allowed), rows split by ``;`` or new lines.
 
@@ -64,10 +86,15 @@ def parse_kernel(text: str) -> np.ndarray:
         raise TypeError(
             f"kernel: expected text such as '1 1 1; 1 1 1; 1 1 1'; got {describe(text)}"
         )
-    rows = [row.split() for row in re.split(r"[;\n]+", text.replace(",", " ")) if row.strip()]
+    rows = [_kernel_row(row) for row in re.split(r"[;\n]+", text) if row.strip()]
     if len(rows) != 3 or any(len(row) != 3 for row in rows):
         lengths = ", ".join(str(len(row)) for row in rows) or "nothing"
         raise ValueError(f"kernel: expected 3 rows of 3 numbers; got rows of {lengths}")
+    for token in (token for row in rows for token in row):
+        if not _KERNEL_ENTRY.fullmatch(token):
+            raise ValueError(
+                f"kernel: every entry must be a decimal number like 2, -0.5 or 1/9; got {token!r}"
+            )
     try:
         values = [[float(Fraction(token)) for token in row] for row in rows]
     except (ValueError, ZeroDivisionError, OverflowError) as error:

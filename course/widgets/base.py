@@ -261,6 +261,8 @@ class SliderApp:
             return
         if self._held:
             return  # one redraw after the drag has set every control it moves
+        if self.status.value.startswith("Refused "):
+            self.status.value = ""  # a good value follows a refused one
         try:
             self.refresh()
         except (ValueError, TypeError) as error:

@@ -22,6 +22,14 @@ limited blocks take turns: a second thread waits for the first to leave. An
 exact solve is a few milliseconds, and two at once would only compete for the
 same cores. A limit that another thread of the caller holds with threadpoolctl
 stays in force: threadpoolctl ignores ours then.
+
+The thread count changes how OpenBLAS splits a product, and so the order of
+some sums: a solve on two threads may differ from one on one thread in its
+last bits (at most 1e-12 on the lessons' problems, which
+``tests/test__threads.py`` checks). Nothing printed or stored may depend on
+those bits: the lessons print such differences and residuals as a bound
+(:func:`course.widgets.picture.rounding_level`), and the same test checks
+that what lesson 08 prints is the same on one thread and on two.
 """
 
 from __future__ import annotations

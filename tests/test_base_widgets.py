@@ -5,6 +5,8 @@ import base64
 import ipywidgets as widgets
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from course.widgets.base import Handle, SliderApp, format_points, parse_points
 
@@ -334,3 +336,23 @@ def test_every_app_survives_malformed_pointer_messages_and_nan_sliders(name):
         app.controls[key].value = float("nan")
         assert app.value(key) == before
         assert app.status.value.startswith(f"Refused {key} = nan: expected a finite number")
+
+
+tenths = st.integers(-99_999, 99_999).map(lambda n: n / 10)
+
+
+@given(st.lists(st.tuples(tenths, tenths), min_size=1, max_size=12))
+def test_points_read_back_what_format_points_wrote(points):
+    np.testing.assert_array_equal(parse_points(format_points(points)), points)
+
+
+@given(st.lists(st.tuples(tenths, tenths), min_size=1, max_size=6), st.data())
+def test_points_written_with_decimal_commas_are_refused_not_misread(points, data):
+    # A locale's way of writing them: decimal commas, points split by spaces or ';'.
+    def localised(value):
+        return f"{value:.1f}".replace(".", ",")
+
+    separator = data.draw(st.sampled_from([" ", "; ", "\n"]))
+    text = separator.join(f"{localised(x)} {localised(y)}" for x, y in points)
+    with pytest.raises(ValueError, match="point 1"):
+        parse_points(text)

@@ -19,6 +19,7 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
 from course import limits
@@ -430,7 +431,11 @@ class StepApp(SliderApp):
         self.profile_axes.set_ylabel("ink per px of length")
         self.profile_axes.set_xlim(0, self.walk.lengths[-1])
         self.profile_axes.set_ylim(0, self.FLOOR_TOP)
-        self.profile_axes.legend(fontsize=8, loc="lower center", ncols=3)
+        curve_key = Line2D([], [], color=self.panel.curve.get_color(), label="left: the true curve")
+        handles, _ = self.profile_axes.get_legend_handles_labels()
+        self.profile_axes.legend(
+            handles=[curve_key, *handles], fontsize=8, loc="lower center", ncols=2
+        )
         self.profile_title = self.profile_axes.set_title("", fontsize=9)
         self.figure.subplots_adjust(left=0.02, right=0.98, bottom=0.14, top=0.9, wspace=0.2)
         self.image = np.zeros(shape)

@@ -194,16 +194,21 @@ def false_edges_figure(zoom: int = 24) -> Still:
     zero, replicate = filters.sobel(flat, "zero"), filters.sobel(flat, "replicate")
     limit = float(zero.max())
     extent = (0, 10, 8, 0)
+    frame = np.ones(flat.shape, dtype=bool)
+    frame[1:-1, 1:-1] = False
     figure, _ = pixel_figure(
         [
             (flat, extent, "flat 0.5"),
-            (zero / limit, extent, "Sobel, 'zero' border"),
-            (replicate / limit, extent, "Sobel, 'replicate'"),
+            (
+                zero / limit,
+                extent,
+                f"Sobel, 'zero' border: frame {zero[frame].min():.2f}\nto {limit:.2f} (white)",
+            ),
+            (replicate / limit, extent, f"Sobel, 'replicate':\n{replicate.max():.2f} everywhere"),
         ],
         zoom,
+        title_height=44,
     )
-    frame = np.ones(flat.shape, dtype=bool)
-    frame[1:-1, 1:-1] = False
     caption = (
         f"a flat 0.5 image has no edge; zero padding gives its frame {zero[frame].min():.2f} "
         f"to {zero[frame].max():.2f}, replicate {replicate.max():.2f}"

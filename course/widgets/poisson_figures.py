@@ -159,14 +159,24 @@ def colour_figure() -> Still:
     naive = poisson.naive_paste(lake, plane, LAB_OFFSET)
     cloned = poisson.seamless_clone(lake, plane, LAB_OFFSET)
     window, extent = _around(LAB_OFFSET, plane.shape[:2], lake)
-    figure, _ = pixel_figure(
-        [(naive[window], extent, "pasted"), (cloned[window], extent, "seamless clone")], 1
-    )
     problem = poisson.clone_problem(lake, plane, LAB_OFFSET)
     exact = poisson.solve(problem)
     shift = (exact - plane)[problem.region].mean(axis=0)
     outside = ((exact < 0) | (exact > 1))[problem.region].mean()
     shifts = ", ".join(f"{value:+.2f}" for value in shift)
+    figure, _ = pixel_figure(
+        [
+            (naive[window], extent, "pasted"),
+            (
+                cloned[window],
+                extent,
+                f"clone: R, G, B moved by {shifts};\n"
+                f"{outside:.1%} of values outside [0, 1], clipped",
+            ),
+        ],
+        1,
+        title_height=44,
+    )
     caption = (
         f"cloned, the plane's white shifts by {shifts} (R, G, B) on average; "
         f"{outside:.1%} of the region's values fall outside [0, 1] and are clipped"

@@ -51,7 +51,7 @@ def gray_level_landmarks(app: SliderApp) -> list[Landmark]:
     under the panel's frame); and the red frame around pattern k = the
     number of sub-pixels ``dither.ordered`` lights for one pixel at this level.
     """
-    level, size = float(app.value("level")), 24
+    level, size = GrayLevelApp.snapped(float(app.value("level"))), 24
     patch = np.full((size, size), level)
     outputs = {
         "ordered 3x3": dither.ordered(patch),

@@ -19,6 +19,7 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
 from course import limits
@@ -424,8 +425,11 @@ class StepApp(SliderApp):
     into the same pixels, which the handouts' saturating sum clips at 1, so
     the brightness follows how fast the curve moves. With
     ``weighting="arc_length"`` the brightness per unit length stays at 1
-    for every step fine enough to leave no gaps.
+    for every step fine enough to leave no gaps. The profile's y-axis runs
+    from 0 to 1.6, or higher when the ink along the curve goes above it.
     """
+
+    FLOOR_TOP = 1.6
 
     def __init__(
         self, points: Any = SEED_000_CUBIC, shape: tuple[int, int] = SEED_000_SHAPE
@@ -457,13 +461,24 @@ class StepApp(SliderApp):
         grid = self.figure.add_gridspec(1, 2, width_ratios=(1, 1.6))
         self.panel = ZoomPanel(self.figure.add_subplot(grid[0]), self.walk.polyline)
         self.profile_axes = self.figure.add_subplot(grid[1])
-        (self.profile,) = self.profile_axes.plot([], [], color="#2a6f97", linewidth=1.2)
-        self.profile_axes.axhline(1.0, color="#e8502f", linewidth=0.8, linestyle="--")
-        self.marker = self.profile_axes.axvline(0.0, color="gray", linewidth=0.8)
+        (self.profile,) = self.profile_axes.plot(
+            [], [], color="#0072B2", linewidth=1.2, label="this splat"
+        )
+        self.profile_axes.axhline(
+            1.0, color="black", linewidth=0.8, linestyle="--", label="1: evenly bright"
+        )
+        self.marker = self.profile_axes.axvline(
+            0.0, color="gray", linewidth=0.8, linestyle=":", label="the zoomed window"
+        )
         self.profile_axes.set_xlabel("distance along the curve (px)")
         self.profile_axes.set_ylabel("ink per px of length")
         self.profile_axes.set_xlim(0, self.walk.lengths[-1])
-        self.profile_axes.set_ylim(0, 1.6)
+        self.profile_axes.set_ylim(0, self.FLOOR_TOP)
+        curve_key = Line2D([], [], color=self.panel.curve.get_color(), label="left: the true curve")
+        handles, _ = self.profile_axes.get_legend_handles_labels()
+        self.profile_axes.legend(
+            handles=[curve_key, *handles], fontsize=8, loc="lower center", ncols=2
+        )
         self.profile_title = self.profile_axes.set_title("", fontsize=9)
         self.figure.subplots_adjust(left=0.02, right=0.98, bottom=0.14, top=0.9, wspace=0.2)
         self.image = np.zeros(shape)
@@ -476,6 +491,9 @@ class StepApp(SliderApp):
         )
         positions, self.density = intensity_along(self.image, self.points)
         self.profile.set_data(positions, self.density)
+        # Fine steps pile ink up to 2 and beyond: the axis grows to show it, never below 0..1.6.
+        top = max(self.FLOOR_TOP, 1.15 * float(self.density.max(initial=0.0)))
+        self.profile_axes.set_ylim(0, top)
         fraction = self.value("position")
         self.marker.set_xdata([fraction * self.walk.lengths[-1]] * 2)
         cv = uniformity(self.image, self.points)

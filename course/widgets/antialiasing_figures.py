@@ -15,7 +15,8 @@ import math
 import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
-from matplotlib.patches import Polygon
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch, Polygon
 
 from course.antialias import bilinear_centres, render
 from course.bezier import de_casteljau
@@ -38,10 +39,13 @@ __all__ = [
     "ROLES",
     "brightness_figure",
     "claims",
+    "offset_figure",
     "opening_figure",
     "pixel_area_figure",
     "seed_000_renderings",
+    "speeds",
     "splat_figure",
+    "step_study",
     "text_figure",
     "variants_figure",
     "variants_table",
@@ -49,9 +53,29 @@ __all__ = [
 
 BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
 
+
+#: Line styles for up to four curves told apart by more than colour.
+_DASHES = ("-", (0, (6, 2)), (0, (1, 1.5)), (0, (6, 2, 1, 2)))
+_COLOURS = (BLUE, "#E69F00", GREEN, "#CC79A7")  # Okabe and Ito's colour-blind-safe set
+
+
+def _key(figure: Figure, handles: list, ncols: int | None = None) -> None:
+    """A legend above the panels, one entry per mark drawn (pixel_figure leaves room for it)."""
+    figure.legend(
+        handles=handles,
+        loc="upper center",
+        ncols=ncols or len(handles),
+        fontsize=8,
+        frameon=False,
+        handlelength=1.6,
+        columnspacing=1.0,
+    )
+
+
 #: The variants of lesson 05 by role: (who draws the curve this way, what the splat does).
 ROLES = {
-    "nearest_round": ("the handout's plain loop", "the pixel under each sample, weight 1"),
+    "nearest_truncate": ("plain loop, truncated", "the pixel under each sample, weight 1"),
+    "nearest_round": ("plain loop, rounded", "the nearest pixel corner, weight 1"),
     "bilinear_zero_offset": (
         "GAMES101 report, left addColor",
         "corners made of the point: dx = dy = 0",
@@ -91,11 +115,11 @@ def opening_figure(t: float = 0.06, size: int = 24, zoom: int = 12) -> Still:
     """
     renderings, exact = seed_000_renderings()
     centre = de_casteljau(SEED_000_CUBIC, t)
-    aliased, extent = crop(renderings["nearest_round"], centre, size)
+    aliased, extent = crop(renderings["nearest_truncate"], centre, size)
     smooth, _ = crop(exact, centre, size)
     figure, axes = pixel_figure(
         [
-            (aliased, extent, "one pixel per sample"),
+            (aliased, extent, "the pixel under each sample"),
             (smooth, extent, "each pixel: the area the stroke covers"),
         ],
         zoom,
@@ -122,7 +146,16 @@ def pixel_area_figure(zoom: int = 64) -> Still:
     line = np.array([[-0.5, 3.4], [6.5, 0.6]])
     shape = (4, 6)
     coverage = reference(line, shape, width=1.0, k=64)
-    figure, (axes,) = pixel_figure([(coverage, (0, 6, 4, 0), "")], zoom, title_height=8)
+    figure, (axes,) = pixel_figure([(coverage, (0, 6, 4, 0), "")], zoom, title_height=44)
+    _key(
+        figure,
+        [
+            Line2D([], [], color=VERMILLION, lw=1.5, label="the stroke's edges (width 1)"),
+            Line2D([], [], color=BLUE, lw=0.8, label="pixel edges"),
+            Patch(facecolor="0.6", edgecolor="0.5", label="grey: the area covered (written)"),
+        ],
+        ncols=2,
+    )
     direction = (line[1] - line[0]) / np.linalg.norm(line[1] - line[0])
     normal = np.array([-direction[1], direction[0]]) * 0.5
     band = [line[0] + normal, line[1] + normal, line[1] - normal, line[0] - normal]
@@ -162,7 +195,17 @@ def splat_figure(x: float = 3.3, y: float = 2.8, zoom: int = 96) -> Still:
     for (column, row), weight in zip(pixels, weights, strict=True):
         image[row - top, column - left] = weight
     extent = (left, left + 4, top + 4, top)
-    figure, (axes,) = pixel_figure([(image, extent, "")], zoom, title_height=8)
+    figure, (axes,) = pixel_figure([(image, extent, "")], zoom, title_height=44)
+    _key(
+        figure,
+        [
+            Line2D([], [], ls="", marker="o", color=VERMILLION, label="the curve point"),
+            Line2D([], [], ls="", marker="+", color=BLUE, mew=1.5, label="pixel centres"),
+            Line2D([], [], ls=":", color=GREEN, lw=1.5, label="its offset dx, dy"),
+            Patch(facecolor="0.6", edgecolor="0.5", label="grey: the weight (written)"),
+        ],
+        ncols=2,
+    )
     grid = [[(c, top), (c, top + 4)] for c in range(left, left + 5)]
     grid += [[(left, r), (left + 4, r)] for r in range(top, top + 5)]
     axes.add_collection(LineCollection(grid, colors=BLUE, linewidths=0.6, alpha=0.7))
@@ -213,12 +256,12 @@ def brightness_figure(
         ("counted, as the handouts do", "weighted by the length each sample stands for"),
         strict=True,
     ):
-        for step in steps:
+        for step, dashes, colour in zip(steps, _DASHES, _COLOURS, strict=False):
             image = render(SEED_000_CUBIC, SEED_000_SHAPE, method, step=step, weighting=weighting)
             positions, density = intensity_along(image, SEED_000_CUBIC)
-            axes.plot(positions, density, lw=1.2, label=f"step {step:g}")
+            axes.plot(positions, density, lw=1.4, ls=dashes, color=colour, label=f"step {step:g}")
             ranges[weighting, step] = (density.min(), density.max())
-        axes.axhline(1.0, color="black", lw=0.6, ls="--")
+        axes.axhline(1.0, color="black", lw=0.6, ls=(0, (1, 3)), label="1: evenly bright")
         axes.set_title(title, fontsize=9)
         axes.set_xlabel("distance along the curve (px)", fontsize=8)
         axes.tick_params(labelsize=7)
@@ -281,7 +324,7 @@ def variants_figure() -> Still:
     Examples
     --------
     >>> variants_figure()  # doctest: +NORMALIZE_WHITESPACE
-    weighted by length, the CV falls from 20.9-24.1% to 0.1-6.5%;
+    weighted by length, the CV falls from 20.4-24.1% to 0.1-6.5%;
     the least error: the stroke's area (library), 0.0002
     """
     names, counted, by_length, others = _variant_rows()
@@ -305,7 +348,13 @@ def variants_figure() -> Still:
             color=BLUE,
             label="weighted by length",
         )
-        axes.barh(rows[len(names) :], [scale * row[key] for row in others], height, color=GREEN)
+        axes.barh(
+            rows[len(names) :],
+            [scale * row[key] for row in others],
+            height,
+            color=GREEN,
+            label="not a splat: each pixel's area",
+        )
         axes.tick_params(labelsize=7)
     error_axes.set_xscale("log")
     error_axes.set_xlabel("RMSE against the exact coverage (log scale)", fontsize=8)
@@ -351,6 +400,97 @@ def claims() -> Table:
             for name, image in shown
         )
     )
+
+
+def speeds(step: float = 0.001) -> Table:
+    """How fast the handouts' curve moves, in px per unit t, and how far apart its samples fall.
+
+    Examples
+    --------
+    >>> print(speeds())  # doctest: +NORMALIZE_WHITESPACE
+    the curve moves 2040 px per unit t at its ends, 912 at its two bends (t = 0.276 and 0.724)
+    and 1020 in the middle: at step 0.001 its samples fall 2.04, 0.91 and 1.02 px apart
+    """
+    control = np.asarray(SEED_000_CUBIC, dtype=float)
+    t = np.linspace(0.0, 1.0, 100_001)[:, None]
+    legs = np.diff(control, axis=0)
+    velocity = 3 * ((1 - t) ** 2 * legs[0] + 2 * t * (1 - t) * legs[1] + t**2 * legs[2])
+    speed = np.hypot(*velocity.T)
+    bend = int(np.argmin(speed[: len(t) // 2]))
+    end, slowest, middle = speed[0], speed[bend], speed[len(t) // 2]
+    return Table(
+        f"the curve moves {end:.0f} px per unit t at its ends, {slowest:.0f} at its two bends "
+        f"(t = {t[bend, 0]:.3f} and {1 - t[bend, 0]:.3f}) and {middle:.0f} in the middle: at "
+        f"step {step:g} its samples fall {end * step:.2f}, {slowest * step:.2f} and "
+        f"{middle * step:.2f} px apart"
+    )
+
+
+def step_study(
+    steps: tuple[float, ...] = (0.002, 0.001, 0.0005, 0.0001), method: str = "bilinear_centres"
+) -> Table:
+    """The step app's three questions answered: dots at the ends, thickening, the fix.
+
+    For each step and weighting: the ink of the emptiest of the 48 columns
+    the curve crosses first (where it moves fastest), and the mean and CV of
+    the ink per px of length along the whole curve.
+
+    Examples
+    --------
+    >>> print(step_study(steps=(0.001,)).splitlines()[1])  # doctest: +NORMALIZE_WHITESPACE
+    0.001      count       0.10   0.88  22.4%   arc length   0.19   0.98   3.7%
+    """
+    lines = [
+        f"{'step':10s} {'weighting':11s} {'end':>5s} {'mean':>6s} {'CV':>6s}   "
+        f"{'weighting':12s} {'end':>5s} {'mean':>6s} {'CV':>6s}"
+    ]
+    for step in steps:
+        parts = [f"{step:<10g}"]
+        for weighting in ("count", "arc_length"):
+            image = render(SEED_000_CUBIC, SEED_000_SHAPE, method, step=step, weighting=weighting)
+            _, ink = intensity_along(image, SEED_000_CUBIC)
+            # The curve leaves (10, 10) level and fast: columns 12..59, rows 5..19 hold it.
+            emptiest = image[5:20, 12:60].sum(axis=0).min()
+            parts.append(
+                f"{weighting.replace('_', ' '):12s} {emptiest:5.2f} {ink.mean():6.2f} "
+                f"{100 * ink.std() / ink.mean():5.1f}%"
+            )
+        lines.append(" ".join(parts[:2]) + "   " + parts[2])
+    return Table("\n".join(lines))
+
+
+def offset_figure(t: float = 0.06, size: int = 16, zoom: int = 14) -> Still:
+    """The GAMES101 report's middle and right addColor near ``t``: half a pixel off, and on.
+
+    Both share each point among four pixels; the middle one takes them at
+    their corners, so its line sits half a pixel right of and below the
+    curve. Each title gives the position error over the whole curve.
+
+    Examples
+    --------
+    >>> offset_figure()  # doctest: +NORMALIZE_WHITESPACE
+    position error over the whole curve: middle addColor 0.365 px, right addColor 0.017 px,
+    exact coverage 0.005 px
+    """
+    renderings, exact = seed_000_renderings()
+    centre = de_casteljau(SEED_000_CUBIC, t)
+    shown = (
+        ("middle addColor", renderings["bilinear_corners"]),
+        ("right addColor", renderings["bilinear_centres"]),
+        ("exact coverage", exact),
+    )
+    errors = [position_error(image, SEED_000_CUBIC) for _, image in shown]
+    windows = []
+    for (name, image), error in zip(shown, errors, strict=True):
+        window, extent = crop(image, centre, size)
+        windows.append((window, extent, f"{name}\nposition error {error:.3f} px"))
+    figure, axes = pixel_figure(windows, zoom, legend=[(VERMILLION, "the true curve")])
+    for panel in axes:
+        _curve_overlay(panel, np.asarray(SEED_000_CUBIC, dtype=float))
+    caption = "position error over the whole curve: " + ", ".join(
+        f"{name} {error:.3f} px" for (name, _), error in zip(shown, errors, strict=True)
+    )
+    return Still.of(figure, caption)
 
 
 def text_figure(text: str = "Bé", size: float = 40.0, zoom: int = 6) -> Still:

@@ -12,7 +12,7 @@ The lesson's still pictures are in :mod:`course.widgets.dithering_figures`.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, ClassVar
 
 import ipywidgets as widgets
 import numpy as np
@@ -56,6 +56,8 @@ class DitherComparisonApp(SliderApp):
 
     BLIT = True
     COLUMNS = 4
+    # Titles wider than a panel, shortened so that nothing is cut off.
+    SHORT_TITLES: ClassVar[dict[str, str]] = {"Floyd-Steinberg serpentine": "F-S serpentine"}
 
     def __init__(self, gray: Any, size: int = 24, zoom: int = 6) -> None:
         self.gray = as_gray(gray, "gray")
@@ -88,7 +90,7 @@ class DitherComparisonApp(SliderApp):
             left = 12 + width + 24 + column * (side + gap)
             bottom = figure_height - (row + 1) * (side + title)
             axes = bare_axes(pixel_axes(self.figure, left, bottom, side, side))
-            axes.set_title(name, fontsize=9)
+            axes.set_title(self.SHORT_TITLES.get(name, name), fontsize=9)
             scale = result.shape[0] // height
             shape = (self.size * scale, self.size * scale)
             self.crops[name] = PixelPanel(self, axes, shape, self.zoom // scale)
@@ -148,7 +150,9 @@ class GrayLevelApp(SliderApp):
     """
 
     BLIT = True
-    STEP = 1 / 72
+    # 360 steps: both the tenths (0.1 = 36/360) and the ninths (1/9 = 40/360) can be set.
+    DIVISIONS = 360
+    STEP = 1 / DIVISIONS
     ZOOM = 6
     # The methods side by side under the strip, in the order of :meth:`outputs`.
     PANELS = (
@@ -166,7 +170,7 @@ class GrayLevelApp(SliderApp):
         self.mask = blue_noise_mask(32, np.random.default_rng(0))
         controls = {
             "level": widgets.FloatSlider(
-                value=round(float(level) / self.STEP) * self.STEP,
+                value=self.snapped(float(level)),
                 min=0.0,
                 max=1.0,
                 step=self.STEP,
@@ -200,6 +204,15 @@ class GrayLevelApp(SliderApp):
         self.animate(self.highlight, *self.titles.values())
         self.update()
 
+    @classmethod
+    def snapped(cls, level: float) -> float:
+        """``level`` on the slider's grid, as the nearest float to n / 360.
+
+        ``n * (1 / 360)`` can land just above a ninth, ``40 * (1 / 360) >
+        1 / 9``, which would light the next ordered pattern at the ninth itself.
+        """
+        return round(level * cls.DIVISIONS) / cls.DIVISIONS
+
     @staticmethod
     def ordered_patterns() -> np.ndarray:
         """The ten 3 x 3 patterns in a strip, one gray column between them."""
@@ -221,7 +234,7 @@ class GrayLevelApp(SliderApp):
         }
 
     def update(self) -> None:
-        level = float(self.value("level"))
+        level = self.snapped(float(self.value("level")))
         for name, result in self.outputs(level).items():
             self.panels[name].set_data(result)
             self.titles[name].set_text(f"{name}\nlit {result.mean():.3f} (level {level:.3f})")
@@ -262,10 +275,15 @@ class VoidAndClusterApp(SliderApp):
         self.energy = left.imshow(
             np.zeros((self.size, self.size)), cmap="viridis", interpolation="nearest"
         )
+        bar = pixel_axes(self.figure, 30 + zoom * self.size, 20, 12, zoom * self.size)
+        self.figure.colorbar(self.energy, cax=bar).set_label(
+            f"energy: the dots blurred by a Gaussian (sigma {sigma:g} px)", fontsize=8
+        )
+        bar.tick_params(labelsize=7)
         self.dots = left.imshow(np.zeros((self.size, self.size, 4)), interpolation="nearest")
         (self.next_dot,) = left.plot([], [], "o", ms=14, mfc="none", mec="red", mew=2)
         self.heading = left.set_title("", fontsize=9)
-        right = self.figure.add_axes((0.55, 0.12, 0.42, 0.72))
+        right = self.figure.add_axes((0.57, 0.12, 0.41, 0.72))
         frequency, _ = radial_power_spectrum(np.eye(self.size))
         (self.blue_line,) = right.plot(frequency, np.ones_like(frequency), label="void-and-cluster")
         (self.white_line,) = right.plot(frequency, np.ones_like(frequency), label="white noise")
@@ -295,10 +313,10 @@ class VoidAndClusterApp(SliderApp):
         y, x = np.unravel_index(int(np.flatnonzero(self.ranks.ravel() == count)[0]), pattern.shape)
         self.next_dot.set_data([x], [y])
         if count < self.initial:
-            phase = "phase 1: thinning, tightest cluster first"
+            phase = "phase 1: ranks a random start, tightest cluster out first"
         else:
-            phase = "phase 2: into the largest void (lowest energy)"
-        self.heading.set_text(f"{count} dots, the next circled\n{phase}")
+            phase = "phase 2: each new dot into the largest void (lowest energy)"
+        self.heading.set_text(f"{count} dots (white), the next circled\n{phase}")
         white = np.zeros(self.size**2, dtype=bool)
         white[self.white_order[:count]] = True
         share = count / self.size**2

@@ -13,16 +13,20 @@ from collections.abc import Mapping
 
 import numpy as np
 from matplotlib.figure import Figure
-from matplotlib.patches import Rectangle
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch, Rectangle
 
 from course import dither
 from course._validate import as_gray, as_image, as_int, as_point
 from course.blue_noise import blue_noise_mask, low_frequency_fraction, radial_power_spectrum
 from course.canvas import crop
+from course.error_diffusion import diffusion_offsets
 from course.widgets.picture import GRAY_PIXELS, Still, bare_axes, pixel_axes, pixel_figure
 
 __all__ = [
     "block_mean",
+    "by_hand_figure",
+    "clumps_and_holes",
     "diffusion_figure",
     "mask_figure",
     "methods_figure",
@@ -195,6 +199,148 @@ def diffusion_figure() -> Still:
     return Still.of(figure, caption)
 
 
+#: The 3 x 3 image lesson 06 diffuses by hand: a ramp from 0.2 to 1.
+BY_HAND = np.array([[0.2, 0.4, 0.6], [0.4, 0.6, 0.8], [0.6, 0.8, 1.0]])
+
+
+def diffusion_steps(gray: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Floyd-Steinberg one pixel at a time: (values so far, dots so far) after each pixel.
+
+    Values start as the image; after pixel k its dot is decided and its error
+    has reached the pixels not yet visited. Unvisited dots are NaN.
+
+    Examples
+    --------
+    >>> values, dots = diffusion_steps(BY_HAND)[0]
+    >>> values[0].round(4).tolist(), dots[0].tolist()
+    ([0.2, 0.4875, 0.6], [0.0, nan, nan])
+    """
+    gray = as_gray(gray, "gray")
+    height, width = gray.shape
+    values, dots = gray.copy(), np.full(gray.shape, np.nan)
+    steps = []
+    for y in range(height):
+        for x in range(width):
+            dots[y, x] = 1.0 if values[y, x] > 0.5 else 0.0
+            error = values[y, x] - dots[y, x]
+            for dx, dy, weight in diffusion_offsets("floyd-steinberg"):
+                if 0 <= x + dx < width and y + dy < height:
+                    values[y + dy, x + dx] += error * weight
+            steps.append((values.copy(), dots.copy()))
+    return steps
+
+
+def by_hand_figure(gray: np.ndarray = BY_HAND, zoom: int = 52) -> Still:
+    """Floyd-Steinberg on a 3 x 3 image, one panel per pixel visited, every value written.
+
+    Examples
+    --------
+    >>> by_hand_figure()  # doctest: +NORMALIZE_WHITESPACE
+    6 of 9 dots lit: mean 0.667 against the image's 0.600; the last pixel saw 0.709
+    """
+    gray = as_gray(gray, "gray")
+    height, width = gray.shape
+    steps = diffusion_steps(gray)
+    side, gap, title, top = width * zoom, 24, 40, 58
+    columns = width
+    rows = -(-len(steps) // columns)
+    figure = Figure(
+        figsize=(
+            (columns * (side + gap) + gap) / 100,
+            (top + rows * (height * zoom + title)) / 100,
+        ),
+        dpi=100,
+    )
+    figure_height = top + rows * (height * zoom + title)
+    for index, (values, dots) in enumerate(steps):
+        row, column = divmod(index, columns)
+        bottom = figure_height - top - (row + 1) * (height * zoom + title) + 6
+        axes = bare_axes(
+            pixel_axes(figure, gap + column * (side + gap), bottom, side, height * zoom)
+        )
+        shown = np.where(np.isnan(dots), 0.25 + 0.5 * np.clip(values, 0, 1), dots)
+        axes.imshow(shown, extent=(0, width, height, 0), **GRAY_PIXELS)
+        y, x = divmod(index, width)
+        seen = values[y, x] if index == 0 else steps[index - 1][0][y, x]
+        axes.add_patch(Rectangle((x, y), 1, 1, fill=False, edgecolor=VERMILLION, lw=3))
+        for (r, c), value in np.ndenumerate(values):
+            decided = not np.isnan(dots[r, c])
+            text = f"{dots[r, c]:.0f}" if decided else f"{value:.3f}"
+            dark = shown[r, c] < 0.5
+            axes.text(
+                c + 0.5,
+                r + 0.5,
+                text,
+                ha="center",
+                va="center",
+                fontsize=9,
+                color="white" if dark else "black",
+            )
+        error = seen - dots[y, x]
+        axes.set_title(
+            f"pixel ({x}, {y}): {seen:.3f} -> {dots[y, x]:.0f}\nerror {error:+.3f}", fontsize=8
+        )
+    figure.legend(
+        handles=[
+            Line2D([], [], color=VERMILLION, lw=3, label="the pixel visited"),
+            Patch(facecolor="white", edgecolor="0.5", label="its dot, 1 or 0"),
+            Patch(facecolor="0.55", edgecolor="0.5", label="grey: value so far"),
+        ],
+        loc="upper center",
+        ncols=3,
+        fontsize=8,
+        frameon=False,
+    )
+    final = steps[-1][1]
+    figure.text(
+        0.5,
+        1 - 30 / figure_height,
+        f"{int(final.sum())} of {final.size} dots lit: mean {final.mean():.3f} against the "
+        f"image's {gray.mean():.3f}",
+        ha="center",
+        va="top",
+        fontsize=9,
+    )
+    last = steps[-2][0][-1, -1]
+    caption = (
+        f"{int(final.sum())} of {final.size} dots lit: mean {final.mean():.3f} against the "
+        f"image's {gray.mean():.3f}; the last pixel saw {last:.3f}"
+    )
+    return Still.of(figure, caption)
+
+
+class Table(str):
+    """Text that a notebook shows as it is (a ``str`` whose repr is itself)."""
+
+    def __repr__(self) -> str:
+        return str(self)
+
+
+def clumps_and_holes(patterns: Mapping[str, np.ndarray], level: float) -> Table:
+    """Each method's flat patch at ``level``: share lit, dots touching a dot, largest hole.
+
+    A clump is a dot with another among its eight neighbours; the largest
+    hole is the radius of the largest disc of unlit pixels (in pixels).
+
+    Examples
+    --------
+    >>> dots = np.zeros((6, 6)); dots[0, 0] = dots[0, 1] = dots[5, 5] = 1
+    >>> print(clumps_and_holes({"three dots": dots}, 0.1))  # doctest: +NORMALIZE_WHITESPACE
+    level 0.100      lit   dots touching a dot   largest hole (px)
+    three dots      0.083                     2                5.00
+    """
+    from scipy import ndimage
+
+    lines = [f"level {level:.3f}      lit   dots touching a dot   largest hole (px)"]
+    for name, dots in patterns.items():
+        lit = np.asarray(dots) > 0.5
+        neighbours = ndimage.convolve(lit.astype(int), np.ones((3, 3), int), mode="constant")
+        touching = int(np.count_nonzero(lit & (neighbours > 1)))
+        hole = ndimage.distance_transform_edt(~lit).max() if lit.any() else float("inf")
+        lines.append(f"{name:15s}{lit.mean():6.3f}{touching:22d}{hole:20.2f}")
+    return Table("\n".join(lines))
+
+
 def wavefront_figure(height: int = 6, width: int = 10, pixel: tuple[int, int] = (5, 3)) -> Still:
     """Pixels numbered t = x + 2 y: error diffusion's pixels of one number run together.
 
@@ -241,21 +387,54 @@ def wraparound_figure(
 ) -> Still:
     """Floyd-Steinberg, the same with the left-edge slip, and where they differ.
 
+    Left, the whole image (every second pixel, 1:1) with the window marked;
+    then the window: correct, with the slip, and the difference, keyed.
+
     Examples
     --------
     >>> flat = np.full((40, 40), 0.3)
     >>> wraparound_figure(flat, (30, 20), 16)
     the slip changes 122 pixels (7.6%), all in columns 30 to 39
     """
+    gray = as_gray(gray, "gray")
     good = dither.error_diffusion(gray)
     bad = dither.error_diffusion_wraparound(gray)
     difference = 0.5 + 0.5 * (bad - good)  # gray: equal; white: lit only with the slip
+    changed = good != bad
     windows = []
-    for picture, name in ((good, "correct"), (bad, "with the slip"), (difference, "difference")):
+    for picture, name in (
+        (good, "correct"),
+        (bad, "with the slip"),
+        (difference, f"difference: {changed.sum()} pixels in all"),
+    ):
         window, extent = crop(picture, centre, size)
         windows.append((window, extent, name))
-    figure, _ = pixel_figure(windows, zoom=zoom)
-    changed = good != bad
+    overview = gray[::2, ::2]
+    reserve = overview.shape[1] + 18
+    figure, _ = pixel_figure(
+        windows,
+        zoom=zoom,
+        reserve_left=reserve,
+        legend=[
+            ("0.5", "same dot"),
+            ("white", "lit only with the slip"),
+            ("black", "lit only without it"),
+            ("red", "the window"),
+        ],
+    )
+    height, width = gray.shape
+    panel_top = size * zoom  # pixel_figure puts the panels' bottom at gap // 2
+    axes = bare_axes(
+        pixel_axes(
+            figure, 18, 9 + panel_top - overview.shape[0], overview.shape[1], overview.shape[0]
+        )
+    )
+    axes.imshow(overview, extent=(0, width, height, 0), **GRAY_PIXELS)
+    axes.set_title("the whole image", fontsize=9)
+    _, (left, right, bottom, top) = crop(gray, centre, size)
+    axes.add_patch(
+        Rectangle((left, top), right - left, bottom - top, fill=False, edgecolor="red", lw=1.5)
+    )
     columns = np.flatnonzero(changed.any(axis=0))
     where = f"all in columns {columns.min()} to {columns.max()}" if len(columns) else "none"
     return Still.of(

@@ -355,4 +355,4 @@ class KernelApp(SliderApp):
         self.panels["corner"].set_data(self.result[self.window])
         scale = f"blue -{limit:.2g} to red +{limit:.2g}" if signed else "gray 0 to 1, clipped"
         self.titles["filtered"].set_text(f"filtered ({scale})")
-        self.titles["corner"].set_text(f"the red window, {border!r} border")
+        self.titles["corner"].set_text(f"the orange window, {border!r}")

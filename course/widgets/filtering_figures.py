@@ -12,6 +12,7 @@ import functools
 
 import numpy as np
 from matplotlib.collections import LineCollection
+from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
 from course import filters, images
@@ -21,7 +22,7 @@ from course.widgets.picture import Still, pixel_figure
 
 __all__ = ["border_figure", "false_edges_figure", "filters_figure", "window_figure"]
 
-BLUE, VERMILLION = "#0072B2", "#D55E00"
+BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
 
 
 @functools.cache
@@ -103,8 +104,33 @@ def window_figure(row: int = 2, column: int = 2, zoom: int = 56) -> Still:
     return Still.of(figure, caption)
 
 
-def border_figure(passes: int = 20, size: int = 16, zoom: int = 8) -> Still:
-    """The face's right edge after ``passes`` blurs under each border rule, zoomed.
+def frame_depth(zero: np.ndarray, other: np.ndarray, share: float = 0.95) -> int:
+    """How many columns in from the right edge ``zero`` is below ``share`` of ``other``.
+
+    Examples
+    --------
+    >>> other = np.ones((2, 6))
+    >>> frame_depth(np.array([[1, 1, 1, 1, 0.9, 0.5]] * 2), other)
+    2
+    """
+    ratio = np.mean(zero, axis=(0, 2) if np.ndim(zero) == 3 else 0) / np.mean(
+        other, axis=(0, 2) if np.ndim(other) == 3 else 0
+    )
+    return int(np.argmax(np.append(ratio[::-1], 1.0) > share))
+
+
+def ratios_at_edge(results: dict[str, np.ndarray], image: np.ndarray) -> dict[str, float]:
+    """Each rule's outermost right column: its mean after the blurs over its mean before."""
+    before = float(np.mean(image[:, -1]))
+    return {border: float(np.mean(result[:, -1])) / before for border, result in results.items()}
+
+
+def border_figure(passes: int = 20, depth: int = 16) -> Still:
+    """The face's right edge after ``passes`` blurs under each border rule, as a profile.
+
+    For each of the last ``depth`` columns: its mean after the blurs divided
+    by its mean before, so 1 is "unchanged" and the dark frame of zero
+    padding shows as a dip towards the edge.
 
     Examples
     --------
@@ -113,18 +139,38 @@ def border_figure(passes: int = 20, size: int = 16, zoom: int = 8) -> Still:
     0.98 (replicate), 0.97 (reflect) times their first brightness
     """
     passes = as_int(passes, "passes", minimum=0, maximum=200)
-    size = as_int(size, "size", minimum=1, maximum=64)
+    depth = as_int(depth, "depth", minimum=2, maximum=64)
     image = _face()
     results = dict.fromkeys(filters.BORDERS, image)
     for _ in range(passes):
         results = {border: blurred(result, border) for border, result in results.items()}
-    top = 40
-    left = image.shape[1] - size
-    extent = (left, left + size, top + size, top)
-    window = (slice(top, top + size), slice(left, left + size))
-    figure, _ = pixel_figure(
-        [(result[window], extent, f"{border!r}") for border, result in results.items()], zoom
+    columns = np.arange(depth)[::-1]  # distance from the right edge, in pixels
+    before = image[:, -depth:].mean(axis=0)
+    figure = Figure(figsize=(7.0, 3.0), dpi=100)
+    axes = figure.subplots()
+    styles = {
+        "handout": ("-", "o", BLUE),
+        "zero": ("--", "s", VERMILLION),
+        "replicate": (":", "^", GREEN),
+        "reflect": ("-.", "v", "black"),
+    }
+    for border, result in results.items():
+        ratio = result[:, -depth:].mean(axis=0) / before
+        dashes, marker, colour = styles[border]
+        axes.plot(columns, ratio, ls=dashes, marker=marker, ms=4, color=colour, label=f"{border!r}")
+    axes.axhline(1.0, color="0.6", lw=0.6)
+    depth_of_frame = frame_depth(results["zero"], results["replicate"])
+    axes.set_title(
+        f"'zero': the outermost column at {ratios_at_edge(results, image)['zero']:.2f} of its "
+        f"brightness, the frame {depth_of_frame} px deep",
+        fontsize=9,
     )
+    axes.set_xlim(depth - 0.5, -0.5)  # the edge on the right, as in the image
+    axes.set_xlabel("distance from the image's right edge (px)", fontsize=8)
+    axes.set_ylabel(f"column brightness after {passes} blurs\n/ before", fontsize=8)
+    axes.tick_params(labelsize=7)
+    axes.legend(fontsize=8, title="border rule", title_fontsize=8, loc="lower left")
+    figure.tight_layout()
     original = border_ring_mean(image)
     ratios = ", ".join(
         f"{border_ring_mean(result) / original:.2f} ({border})"
@@ -148,16 +194,21 @@ def false_edges_figure(zoom: int = 24) -> Still:
     zero, replicate = filters.sobel(flat, "zero"), filters.sobel(flat, "replicate")
     limit = float(zero.max())
     extent = (0, 10, 8, 0)
+    frame = np.ones(flat.shape, dtype=bool)
+    frame[1:-1, 1:-1] = False
     figure, _ = pixel_figure(
         [
             (flat, extent, "flat 0.5"),
-            (zero / limit, extent, "Sobel, 'zero' border"),
-            (replicate / limit, extent, "Sobel, 'replicate'"),
+            (
+                zero / limit,
+                extent,
+                f"Sobel, 'zero' border: frame {zero[frame].min():.2f}\nto {limit:.2f} (white)",
+            ),
+            (replicate / limit, extent, f"Sobel, 'replicate':\n{replicate.max():.2f} everywhere"),
         ],
         zoom,
+        title_height=44,
     )
-    frame = np.ones(flat.shape, dtype=bool)
-    frame[1:-1, 1:-1] = False
     caption = (
         f"a flat 0.5 image has no edge; zero padding gives its frame {zero[frame].min():.2f} "
         f"to {zero[frame].max():.2f}, replicate {replicate.max():.2f}"

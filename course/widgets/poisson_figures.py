@@ -21,10 +21,11 @@ from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.patches import Rectangle
 
 from course import images, poisson
 from course import poisson_solvers as solvers
-from course.widgets.picture import Still, pixel_figure
+from course.widgets.picture import Still, bare_axes, pixel_axes, pixel_figure
 
 __all__ = [
     "DAY_OFFSET",
@@ -40,6 +41,8 @@ __all__ = [
     "lab_scene",
     "lab_sweeps",
     "mask_and_mixed_figure",
+    "residual_scale",
+    "tiny_clone_figure",
 ]
 
 #: Where the day plane sits in the lake's sky (x, y): the headline clone.
@@ -156,14 +159,24 @@ def colour_figure() -> Still:
     naive = poisson.naive_paste(lake, plane, LAB_OFFSET)
     cloned = poisson.seamless_clone(lake, plane, LAB_OFFSET)
     window, extent = _around(LAB_OFFSET, plane.shape[:2], lake)
-    figure, _ = pixel_figure(
-        [(naive[window], extent, "pasted"), (cloned[window], extent, "seamless clone")], 1
-    )
     problem = poisson.clone_problem(lake, plane, LAB_OFFSET)
     exact = poisson.solve(problem)
     shift = (exact - plane)[problem.region].mean(axis=0)
     outside = ((exact < 0) | (exact > 1))[problem.region].mean()
     shifts = ", ".join(f"{value:+.2f}" for value in shift)
+    figure, _ = pixel_figure(
+        [
+            (naive[window], extent, "pasted"),
+            (
+                cloned[window],
+                extent,
+                f"clone: R, G, B moved by {shifts};\n"
+                f"{outside:.1%} of values outside [0, 1], clipped",
+            ),
+        ],
+        1,
+        title_height=44,
+    )
     caption = (
         f"cloned, the plane's white shifts by {shifts} (R, G, B) on average; "
         f"{outside:.1%} of the region's values fall outside [0, 1] and are clipped"
@@ -228,10 +241,16 @@ def convergence_figure() -> Still:
     record = lab_sweeps()
     figure = Figure(figsize=(8.0, 3.0), dpi=100)
     axes = figure.add_subplot()
-    for method, colour in (("jacobi", BLUE), ("gauss_seidel", VERMILLION), ("sor", GREEN)):
+    for method, colour, dashes in (
+        ("jacobi", BLUE, "-"),
+        ("gauss_seidel", VERMILLION, "--"),
+        ("sor", GREEN, ":"),
+    ):
         history = record[method]
         errors = np.maximum(np.array(history["errors"]) * 255, 1e-9)
-        axes.semilogy(history["sweeps"], errors, color=colour, lw=1.5, label=_NAMES[method])
+        axes.semilogy(
+            history["sweeps"], errors, color=colour, ls=dashes, lw=1.8, label=_NAMES[method]
+        )
     axes.axvline(8000, color="0.3", ls=":", lw=1)
     axes.annotate(
         "the lab's 8000",
@@ -329,3 +348,166 @@ def strip_and_square() -> str:
     parts += [f"3 x {n} strip: {solvers.jacobi_rate((3, n)):.4f}" for n in (30, 300)]
     parts.append(f"3 x infinity: {(np.cos(np.pi / 4) + 1) / 2:.4f}")
     return "; ".join(parts)
+
+
+#: Lesson 08's tiny clone: a 6 x 7 sky brightening to the right, and a 4 x 5 patch of a white
+#: plane with one dark window, pasted at (1, 1). Its inside is 2 x 3: six unknowns.
+TINY_BACKGROUND = np.tile(np.round(np.linspace(0.1, 0.7, 7), 2), (6, 1))
+TINY_FOREGROUND = np.array(
+    [
+        [0.9, 0.9, 0.9, 0.9, 0.9],
+        [0.9, 1.0, 0.6, 1.0, 0.9],
+        [0.9, 1.0, 1.0, 1.0, 0.9],
+        [0.9, 0.9, 0.9, 0.9, 0.9],
+    ]
+)
+TINY_OFFSET = (1, 1)
+
+
+def _tiny_correction(boundary: Any, jacobi: Any) -> tuple[np.ndarray, int, str]:
+    """g for the tiny clone from the student's two functions, or the library's if they fail."""
+    ring = poisson.correction_boundary(TINY_BACKGROUND, TINY_FOREGROUND, TINY_OFFSET)
+    expected, sweeps = _jacobi_reference(ring, 1e-6)
+    try:
+        given_ring = np.asarray(
+            boundary(TINY_BACKGROUND.copy(), TINY_FOREGROUND.copy(), TINY_OFFSET), dtype=float
+        )
+        given, count = jacobi(given_ring, 1e-6)
+        given = np.asarray(given, dtype=float)
+        if given.shape == expected.shape and np.allclose(given, expected, atol=1e-5):
+            return given, int(count), "your boundary_exercise and jacobi_exercise"
+    except Exception:  # the student's code is not written yet, or fails: show the library's
+        pass
+    return expected, sweeps, "the library (yours are not done yet)"
+
+
+def _jacobi_reference(g: np.ndarray, tolerance: float) -> tuple[np.ndarray, int]:
+    """Jacobi sweeps on g's inside until the residual is below ``tolerance``."""
+    g = np.array(g, dtype=float)
+    sweeps = 0
+    while True:
+        around = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+        if np.abs(around - 4 * g[1:-1, 1:-1]).max() < tolerance:
+            return g, sweeps
+        g[1:-1, 1:-1] = around / 4
+        sweeps += 1
+
+
+def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) -> Still:
+    """A clone small enough to check by hand, solved by the student's own two functions.
+
+    ``boundary`` and ``jacobi`` are the lesson's exercises; if either is
+    missing or its answer is wrong, the library's is drawn and the title
+    says so. Every pixel's value is written.
+
+    Examples
+    --------
+    >>> tiny_clone_figure()  # doctest: +NORMALIZE_WHITESPACE
+    the library (yours are not done yet): 28 sweeps; the dark window stays 0.4 below the
+    pixel under it (0.100 against 0.500); the clone's ring equals the sky's
+    """
+    g, sweeps, who = _tiny_correction(boundary, jacobi)
+    height, width = TINY_FOREGROUND.shape
+    x, y = TINY_OFFSET
+    sky = TINY_BACKGROUND[y : y + height, x : x + width]
+    clone = TINY_FOREGROUND + g
+    panels = (
+        ("the sky b, under the patch", sky),
+        ("the plane f", TINY_FOREGROUND),
+        (f"g: b - f on the ring,\nJacobi inside ({sweeps} sweeps)", g),
+        ("the clone f + g", clone),
+    )
+    side, gap, title = width * zoom, 22, 44
+    figure = Figure(
+        figsize=((gap + len(panels) * (side + gap)) / 100, (height * zoom + title + 40) / 100)
+    )
+    for index, (name, values) in enumerate(panels):
+        axes = bare_axes(pixel_axes(figure, gap + index * (side + gap), 8, side, height * zoom))
+        shown = np.clip(values if values.min() >= 0 else 0.5 + values, 0.0, 1.0)
+        axes.imshow(
+            shown,
+            cmap="gray",
+            vmin=0,
+            vmax=1,
+            interpolation="nearest",
+            extent=(0, width, height, 0),
+        )
+        axes.add_patch(
+            Rectangle((1, 1), width - 2, height - 2, fill=False, edgecolor=VERMILLION, lw=2)
+        )
+        for (row, column), value in np.ndenumerate(values):
+            axes.text(
+                column + 0.5,
+                row + 0.5,
+                f"{value:.3f}".rstrip("0").rstrip("."),
+                ha="center",
+                va="center",
+                fontsize=8,
+                color="white" if shown[row, column] < 0.5 else "black",
+            )
+        axes.set_title(name, fontsize=9)
+    figure.text(
+        0.5,
+        0.98,
+        f"solved by {who}; orange: the inside, the six unknowns; g drawn as 0.5 + g",
+        ha="center",
+        va="top",
+        fontsize=9,
+    )
+    dark = clone[1, 2]
+    below = clone[2, 2]
+    caption = (
+        f"{who}: {sweeps} sweeps; the dark window stays "
+        f"{TINY_FOREGROUND[2, 2] - TINY_FOREGROUND[1, 2]:.1f} below the pixel under it "
+        f"({dark:.3f} against {below:.3f}); the clone's ring "
+        f"{'equals' if np.allclose(clone[0], sky[0]) else 'differs from'} the sky's"
+    )
+    return Still.of(figure, caption)
+
+
+def residual_scale(app: Any) -> str:
+    """How large an error a residual can hide, on the app's region, at the app's current sweep.
+
+    The error e of an iterate solves (the negative Laplacian) e = residual;
+    its smallest eigenvalue is 4 (1 - rho), so an error can be as large as
+    the residual divided by it.
+    """
+    height, width = app.problem.region.shape
+    rho = solvers.jacobi_rate((height - 2, width - 2))
+    method, sweeps = app.value("method"), app.value("sweeps")
+    solution = app.iterate(method, sweeps)
+    residual = app.problem.residual(solution)
+    factor = 1 / (4 * (1 - rho))
+    measured = float(np.abs(solution - app.exact)[app.problem.region].max() * 255)
+    return (
+        f"rho = {rho:.5f}, so a residual r can hide an error of about r / (4 (1 - rho)) = "
+        f"{factor:.0f} r. {_NAMES[method]} after {sweeps} sweeps: r = {residual:.2g}, an error "
+        f"of about {factor * residual * 255:.0f} grey levels; measured, up to {measured:.0f}"
+    )
+
+
+def sweep_study(app: Any) -> str:
+    """The sweeps app's two questions, answered on its own problem.
+
+    Where Jacobi's error is after 10, 100 and 1000 sweeps: its mean, in grey
+    levels, within 5 px of the ring and more than 40 px from it; and how
+    many sweeps SOR needs to be within one grey level everywhere.
+    """
+    from scipy import ndimage
+
+    region = app.problem.region
+    distance = ndimage.distance_transform_cdt(region, metric="chessboard")
+    near, far = region & (distance <= 5), region & (distance > 40)
+    lines = []
+    for sweeps in (10, 100, 1000):
+        error = np.abs(app.iterate("jacobi", sweeps) - app.exact).max(axis=2) * 255
+        lines.append(
+            f"Jacobi, {sweeps:4d} sweeps: mean error {error[near].mean():6.1f} grey levels "
+            f"near the ring, {error[far].mean():6.1f} more than 40 px from it"
+        )
+    for sweeps in app.stops:
+        error = np.abs(app.iterate("sor", sweeps) - app.exact).max(axis=2)[region] * 255
+        if error.max() < 1:
+            lines.append(f"SOR: within one grey level everywhere after {sweeps} sweeps")
+            break
+    return "\n".join(lines)

@@ -323,7 +323,9 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
         overdraw.append(len(pixels) / len(np.unique(pixels, axis=0)))
         window, extent = crop(_painted(pixels, (0.0, 0.45, 0.7)), centre, size)
         windows.append((window, extent, title))
-    figure, _ = pixel_figure(windows, zoom=12, legend=[(BLUE, "painted")])
+    figure, axes_list = pixel_figure(windows, zoom=12, legend=[(BLUE, "painted")])
+    for axes, (_, extent, _) in zip(axes_list, windows, strict=True):
+        _pixel_grid(axes, extent)
     speed = np.hypot(*de_casteljau(derivative(control), [0.0, 0.5]).T)
     caption = (
         f"speed {speed[0]:g} px per unit of t at t = 0, {speed[1]:g} at t = 0.5; "

@@ -6,7 +6,14 @@ from pathlib import Path
 from conftest import write_notebook
 
 from course.classroom.cli import main
-from course.classroom.course_map import README_MARKERS, course_map, update_readme
+from course.classroom.course_map import (
+    HANDOUTS,
+    README_MARKERS,
+    course_map,
+    handout_key,
+    readme_lessons,
+    update_readme,
+)
 from course.classroom.notebooks import notebooks
 from course.classroom.registry import lessons
 
@@ -45,12 +52,12 @@ def test_the_readme_lesson_table_is_the_course_map(capsys):
     assert main(["map", "--link-prefix", "notebooks/"]) == 0
     assert capsys.readouterr().out == expected + "\n"
     start, end = README_MARKERS
-    table = README.read_text(encoding="utf-8").split(start)[1].split(end)[0].strip()
-    assert table == expected, (
+    section = README.read_text(encoding="utf-8").split(start)[1].split(end)[0].strip()
+    assert section == readme_lessons(link_prefix="notebooks/"), (
         "README.md's lesson table is out of date: run `make notebooks`, or "
         "`python -m course map --readme README.md`"
     )
-    links = re.findall(r"\]\((notebooks/[^)]+)\)", table)
+    links = re.findall(r"\]\((notebooks/[^)]+)\)", section)
     assert links == [f"notebooks/{book.path.name}" for book in notebooks()]
     assert all((README.parent / link).is_file() for link in links)
 
@@ -73,3 +80,32 @@ def test_update_readme_rewrites_only_between_its_markers(tmp_path, capsys):
     readme.write_text("no markers\n")
     assert main(["map", "--readme", str(readme), "--notebooks", str(books)]) == 2
     assert "expected one line" in capsys.readouterr().err
+
+
+def test_the_handout_key_names_each_handout_once_by_role_and_own_title_and_no_file_name():
+    key = handout_key().splitlines()
+    assert len(key) == 2 + len(HANDOUTS)
+    roles = [handout.role for handout in HANDOUTS]
+    assert len(set(roles)) == len(roles)
+    for handout, row in zip(HANDOUTS, key[2:], strict=True):
+        assert row.startswith(f"| {handout.role} | {handout.title} |")
+    # A student never meets the handouts' file names ("seed 000").
+    assert "seed" not in handout_key()
+    for lesson in lessons().values():
+        assert "seed" not in lesson.handout, lesson.handout
+    # Each lesson a handout names exists.
+    numbers = set(lessons())
+    for handout in HANDOUTS:
+        assert set(handout.lessons.split(", ")) <= numbers, handout.role
+
+
+def test_every_lesson_links_to_the_handout_key_in_the_course_map():
+    map_text = (Path(__file__).resolve().parent.parent / "notebooks" / "00_index.ipynb").read_text(
+        encoding="utf-8"
+    )
+    assert "handout_key()" in map_text and "## The handouts" in map_text
+    # Lessons 05-08 are edited on another branch at the same time; widen this when they link.
+    for book in notebooks():
+        if book.number not in ("01", "02", "03", "04"):
+            continue
+        assert "00_index.ipynb#The-handouts" in book.path.read_text(encoding="utf-8"), book.path

@@ -2,12 +2,18 @@
 
 import numpy as np
 import pytest
+from matplotlib.colors import to_rgb
 
 from course.bezier_handouts import bresenham_curve, segments_report
 from course.canvas import blank, paint
 from course.raster import line, line_4connected, triangle, triangle_coverage
 from course.widgets.base import parse_points
-from course.widgets.lines_and_triangles import CurveSegmentsApp, LineApp, TriangleApp
+from course.widgets.lines_and_triangles import (
+    OWNER_COLORS,
+    CurveSegmentsApp,
+    LineApp,
+    TriangleApp,
+)
 
 
 def set_ends(app, p0, p1):
@@ -157,6 +163,33 @@ def test_dragging_a_control_point_of_the_segments_app_redraws_them():
     # Ten screen pixels per grid pixel: a whole zoom.
     box = app.grid_axes.get_window_extent()
     assert (round(box.width, 6), round(box.height, 6)) == (400, 400)
-    assert (round(box.x0, 6), round(box.y0, 6)) == (40, 30)
+    assert (round(box.x0, 6), round(box.y0, 6)) == (40, 60)
     report = segments_report(moved, 8)
     assert (np.asarray(app.pixels.get_array()) == 2).sum() == report["off"]
+
+
+def test_every_colour_and_mark_of_the_pixel_panels_has_a_legend_entry():
+    segments = CurveSegmentsApp()
+    labels = [text.get_text() for text in segments.grid_axes.get_legend().get_texts()]
+    assert labels == [
+        "drawn, on the curve",
+        "drawn, off the curve",
+        "curve missed (> 1 px away)",
+        "drawn twice",
+        "the curve",
+    ]
+    # One legend patch per colour the panel paints (white, the background, needs none).
+    patches = segments.grid_axes.get_legend().get_patches()
+    colours = [tuple(np.round(patch.get_facecolor()[:3], 3)) for patch in patches]
+    painted = [tuple(np.round(to_rgb(c), 3)) for c in segments.pixels.colormap.colors[1:]]
+    assert colours == painted
+    triangles = TriangleApp()
+    patches = triangles.left.get_legend().get_patches()
+    colours = [tuple(np.round(patch.get_facecolor()[:3], 3)) for patch in patches]
+    assert colours == [tuple(np.round(to_rgb(c), 3)) for c in OWNER_COLORS[1:]]
+    # The course map shows the left panel alone: its legend must be inside that picture.
+    triangles.refresh()
+    renderer = triangles.view.canvas.get_renderer()
+    panel = triangles.left.get_tightbbox(renderer)
+    legend = triangles.left.get_legend().get_window_extent(renderer)
+    assert panel.x0 <= legend.x0 and legend.x1 <= panel.x1 and panel.y0 <= legend.y0

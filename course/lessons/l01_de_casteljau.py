@@ -52,8 +52,8 @@ LESSON = Lesson(
     ),
     minutes=60,
     preview=Picture("01_preview", "de Casteljau's construction of a cubic at t = 0.5", preview),
-    handout="GAMES101 homework 4, basic part (seed 000): recursive_bezier and the bezier "
-    "loop; seeds 002-004's reversed step and float loop",
+    handout="the GAMES101 handout's basic part (基础部分): recursive_bezier and the bezier "
+    "loop; the reversed step and float loops of the any-degree, VS2022 and lab 6 reports",
     teaches="a Bézier curve by repeated linear interpolation: by hand on three points, "
     "recursive_bezier and the drawing loop written and checked, every level under a t slider "
     "and draggable points; the handouts' pitfalls as pictures and numbers",

@@ -68,8 +68,8 @@ LESSON = Lesson(
     preview=Picture(
         "02_preview", "the four cubic Bernstein polynomials, and their values at t = 0.3", preview
     ),
-    handout="GAMES101 homework 4's naive_bezier (seed 000), generalised to any degree "
-    "with the recursive binomial (seed 002)",
+    handout="the GAMES101 framework's naive_bezier, generalised to any degree with the "
+    "recursive comb of the any-degree report (任意多次的曲线绘制)",
     teaches="the Bernstein basis under a degree slider; binomials by Pascal's rule, written "
     "and checked, against the handout's exponential recursion and 32-bit int; naive_bezier of "
     "any degree; end tangents and the hodograph; accuracy against the degree",

@@ -149,7 +149,7 @@ LESSON = Lesson(
     preview=Picture(
         "03_preview", "two triangles sharing an edge, filled by the top-left rule", preview
     ),
-    handout="Lab 1 report (seed 001), Task 4 (Bresenham's line in every octant), Task 5 "
+    handout="the lab report (Lab01 Report), Task 4 (Bresenham's line in every octant), Task 5 "
     "(scanline triangle filling) and Task 7 (the Bézier curve drawn with lines)",
     teaches="Bresenham's line in all eight octants, written and checked, against the report's "
     "4-connected staircase; the scanline fill in flat-top and flat-bottom halves, written and "

@@ -95,7 +95,7 @@ LESSON = Lesson(
     ),
     minutes=45,
     preview=Picture("04_preview", "a zone plate shrunk by supersampling", preview),
-    handout="Lab 1 report (seed 001), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
+    handout="the lab report (Lab01 Report), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
     "by supersampling",
     teaches="aliasing as folding, in one dimension and on a zone plate; the box filter's "
     "response; bilinear lookup and the supersampling loop, written and checked; the error at "

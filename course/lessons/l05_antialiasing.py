@@ -90,9 +90,9 @@ LESSON = Lesson(
     preview=Picture(
         "05_preview", "an anti-aliased curve, zoomed until each pixel is a square", preview
     ),
-    handout="GAMES101 homework 4, improvement part (the GAMES101, any-degree and VS2022 "
-    "reports): anti-aliasing the curve with the GAMES101 report's three addColor splats, the "
-    "any-degree report's sub-sample falloff and the VS2022 report's normalised splat",
+    handout="the GAMES101 handout's improvement part (提高部分) in the GAMES101, any-degree "
+    "and VS2022 reports: anti-aliasing the curve with the GAMES101 report's three addColor "
+    "splats, the any-degree report's sub-sample falloff and the VS2022 report's normalised splat",
     teaches="a curve's pixels as the coverage of a stroke: the bilinear splat, the t-step "
     "pitfall and the arc-length fix, every handout splat measured against the exact coverage",
     pictures=(

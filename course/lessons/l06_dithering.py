@@ -112,7 +112,7 @@ LESSON = Lesson(
     preview=Picture(
         "06_preview", "a photograph in black and white dots, by error diffusion", preview
     ),
-    handout="Lab 1 report (seed 001), Task 1: threshold, uniform random, blue noise, "
+    handout="the lab report (Lab01 Report), Task 1: threshold, uniform random, blue noise, "
     "ordered 3 x 3 and Floyd-Steinberg error diffusion",
     teaches="gray levels from black and white dots: the lab's five methods side by side, "
     "ordered dithering and Floyd-Steinberg written and checked, blue noise by "

@@ -79,7 +79,7 @@ LESSON = Lesson(
     preview=Picture(
         "07_preview", "a photograph blurred eight times with the report's border rule", preview
     ),
-    handout="Lab 1 report (seed 001), Task 2: 3 x 3 blur with the report's border rule "
+    handout="the lab report (Lab01 Report), Task 2: 3 x 3 blur with the report's border rule "
     "and Sobel edges",
     teaches="3 x 3 kernels as weighted sums of a window (the box is lesson 04's box filter), "
     "blur and Sobel edges, any kernel on a photograph; the four border rules and zero "

@@ -115,7 +115,7 @@ LESSON = Lesson(
     ),
     minutes=60,
     preview=Picture("08_preview", "a plane cloned seamlessly into a lake's sky", preview),
-    handout="Lab 1 report (seed 001), Task 3: Poisson image editing, the plane pasted "
+    handout="the lab report (Lab01 Report), Task 3: Poisson image editing, the plane pasted "
     "into the lake with the lab's 8000 'Jacobi' sweeps",
     teaches="seamless cloning as a Poisson equation: the correction g over the ring's "
     "mismatch, the lab's sweep with a stop on the residual, why 8000 sweeps (Gauss-Seidel, "

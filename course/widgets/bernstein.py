@@ -1,7 +1,7 @@
 """Lesson 02's app: the Bernstein basis polynomials of one degree, and their values at t.
 
-Every B_{i,n} is drawn on [0, 1] in its own colour, with a marker at its
-value at t; the dashed line is their sum, which is 1 everywhere (partition of
+Every B_{i,n} is drawn on [0, 1] in its own colour and named at its peak,
+with a marker at its value at t; the dashed line is their sum, which is 1 everywhere (partition of
 unity). The bar chart beside shows the weights at t that the curve gives its
 control points.
 """
@@ -42,15 +42,29 @@ class BernsteinBasisApp(SliderApp):
         self.axes = self.figure.add_axes((0.07, 0.12, 0.6, 0.78))
         self.bars_axes = self.figure.add_axes((0.74, 0.12, 0.24, 0.78))
         self.axes.set_xlim(0, 1)
-        self.axes.set_ylim(-0.02, 1.08)
+        self.axes.set_ylim(-0.02, 1.22)
         self.axes.set_xlabel("t")
         self.bars_axes.set_ylim(0, 1.0)
         self.bars_axes.set_xlabel("i")
-        self.bars_axes.set_title("weights B_i,n(t)", fontsize=9)
+        self.bars_axes.set_title("weights $B_{i,n}(t)$ at t", fontsize=9)
         self.basis_lines = [self.axes.plot([], [], linewidth=1.5)[0] for _ in range(MAX_DEGREE + 1)]
-        (self.sum_line,) = self.axes.plot([], [], "k--", linewidth=1, label="sum")
+        # Each curve named at its peak, in its colour: the key to the colours, bars included.
+        self.curve_labels = [
+            self.axes.text(0, 0, "", ha="center", va="bottom", fontsize=9)
+            for _ in range(MAX_DEGREE + 1)
+        ]
+        (self.sum_line,) = self.axes.plot([], [], "k--", linewidth=1, label="sum of the weights")
         self.t_line = self.axes.axvline(t, color="crimson", linewidth=1)
-        (self.markers,) = self.axes.plot([], [], "o", color="crimson", markersize=4)
+        (self.markers,) = self.axes.plot(
+            [], [], "o", color="crimson", markersize=4, label="the weights at t"
+        )
+        self.axes.legend(
+            handles=[self.sum_line, self.markers],
+            loc="upper center",
+            ncols=2,
+            fontsize=8,
+            frameon=False,
+        )
         self.bars = self.bars_axes.bar(np.arange(MAX_DEGREE + 1), np.zeros(MAX_DEGREE + 1))
         self.title = self.axes.set_title("", fontsize=10)
 
@@ -64,6 +78,17 @@ class BernsteinBasisApp(SliderApp):
                 line.set_color(colors[i])
             else:
                 line.set_data([], [])
+        # Every curve named up to degree 8; beyond, the ends and every fifth, to stay legible.
+        named = set(range(degree + 1)) if degree <= 8 else {0, degree, *range(0, degree, 5)}
+        peaks = bernstein_basis(degree, np.arange(degree + 1) / max(degree, 1))
+        for i, label in enumerate(self.curve_labels):
+            if i in named:
+                peak = i / degree if degree else 0.0
+                label.set_position((min(max(peak, 0.03), 0.97), peaks[i, i] + 0.01))
+                label.set_text(f"$B_{{{i},{degree}}}$")
+                label.set_color(colors[i])
+            else:
+                label.set_text("")
         self.sum_line.set_data(_SAMPLES, curves.sum(axis=1))
         weights = bernstein_basis(degree, t)[0]
         self.t_line.set_xdata([t, t])
@@ -72,4 +97,6 @@ class BernsteinBasisApp(SliderApp):
             bar.set_height(weights[i] if i <= degree else 0.0)
             bar.set_color(colors[min(i, degree)])
         self.bars_axes.set_xlim(-0.6, degree + 0.6)
+        step = 1 if degree <= 8 else 2 if degree <= 12 else 5
+        self.bars_axes.set_xticks(range(0, degree + 1, step))
         self.title.set_text(f"n = {degree}, t = {t:.2f}: weights sum to {weights.sum():.12f}")

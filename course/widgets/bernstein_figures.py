@@ -96,10 +96,17 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
     fit); right, the derivative's own Bézier curve, of degree n - 1 with the
     control points ``n (P[i+1] - P[i])``, on which each velocity is a point.
 
+    The speed |B'(t)| is the hodograph's distance from the origin: the
+    caption names where the curve is slowest (the hodograph's point nearest
+    the origin, joined to it by a dotted line) and where it is fastest.
+
     Examples
     --------
-    >>> hodograph_figure([[90, 610], [170, 130], [540, 80], [620, 470]])
+    >>> still = hodograph_figure([[90, 610], [170, 130], [540, 80], [620, 470]])
+    >>> print(still.caption.replace("; ", "\\n"))
     the hodograph's control points n (P[i+1] - P[i]): (240, -1440), (1110, -150), (240, 1170)
+    slowest at t = 0.582, 667 px per unit of t
+    fastest at t = 0, 1460
     """
     control = as_curve(points)
     hodograph = derivative(control)
@@ -125,6 +132,21 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
     )
     _label_points(right, hodograph, "D")
     right.plot(0, 0, "+", color="0.2", markersize=12)
+    right.annotate(
+        "origin", (0, 0), xytext=(-3, -16), textcoords="offset points", fontsize=7, ha="left"
+    )
+    fine = np.linspace(0.0, 1.0, 1001)
+    speeds = np.hypot(*de_casteljau(hodograph, fine).T)
+    slowest, fastest = int(np.argmin(speeds)), int(np.argmax(speeds))
+    nearest = de_casteljau(hodograph, fine[slowest])
+    right.plot(
+        [0, nearest[0]],
+        [0, nearest[1]],
+        ":",
+        color="0.2",
+        linewidth=1.2,
+        label="nearest the origin: slowest",
+    )
     right.set_title(f"the hodograph: a Bézier curve of degree {len(hodograph) - 1}", fontsize=9)
     for axes in (left, right):
         axes.set_aspect("equal")
@@ -135,7 +157,12 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
     right.legend(fontsize=7, loc="lower left")
     figure.tight_layout()
     values = ", ".join("(" + ", ".join(f"{v:g}" for v in point) + ")" for point in hodograph)
-    return Still.of(figure, f"the hodograph's control points n (P[i+1] - P[i]): {values}")
+    caption = (
+        f"the hodograph's control points n (P[i+1] - P[i]): {values}; "
+        f"slowest at t = {fine[slowest]:g}, {speeds[slowest]:.0f} px per unit of t; "
+        f"fastest at t = {fine[fastest]:g}, {speeds[fastest]:.0f}"
+    )
+    return Still.of(figure, caption)
 
 
 def pascal_figure(rows: int = 7, entry: tuple[int, int] = (5, 2)) -> Still:

@@ -14,7 +14,11 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
+from matplotlib.legend_handler import HandlerTuple
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch, Rectangle
 
 from course._validate import as_choice, as_curve, as_int
 from course.bezier import (
@@ -46,6 +50,7 @@ __all__ = [
 ]
 
 BLUE, VERMILLION, GREEN, ORANGE = "#0072B2", "#D55E00", "#009E73", "#E69F00"
+YELLOW = (0.95, 0.85, 0.0)
 _CANVAS = (700, 700)
 
 
@@ -193,6 +198,29 @@ def reversed_figure(points: Any, t: float = 0.25) -> Still:
     return Still.of(figure, caption)
 
 
+def _pixel_grid(axes: Any, extent: tuple[int, ...]) -> None:
+    """Thin lines on the pixel edges of a crop, so that unpainted pixels show as squares."""
+    left, right, bottom, top = extent
+    lines = [[(x, top), (x, bottom)] for x in range(left, right + 1)]
+    lines += [[(left, y), (right, y)] for y in range(top, bottom + 1)]
+    axes.add_collection(LineCollection(lines, colors="0.8", linewidths=0.6))
+
+
+def _replace_legend(figure: Figure, handles: list, labels: list[str], ncols: int = 0) -> None:
+    """Swap :func:`pixel_figure`'s colour patches for handles that also show shape and dash."""
+    for legend in list(figure.legends):
+        legend.remove()
+    figure.legend(
+        handles=handles,
+        labels=labels,
+        loc="upper center",
+        ncols=ncols or len(handles),
+        fontsize=8,
+        frameon=False,
+        handler_map={tuple: HandlerTuple(ndivide=1)},
+    )
+
+
 def _painted(pixels: np.ndarray, colour: Any, shape: tuple[int, int] = _CANVAS) -> np.ndarray:
     image = np.ones((*shape, 3))
     paint(image, pixels, colour, mode="over")
@@ -229,12 +257,35 @@ def end_of_curve_figure(
         rounding = "rounded" if loop.rounding == "round" else "truncated"
         windows.append((window, extent, f"{loop.name}\nlast t {last_t:.7g}, {rounding}"))
         verdicts.append(f"{loop.name} {'paints it' if lit else 'does not'} (last t {last_t:.7g})")
-    figure, axes_list = pixel_figure(
-        windows, zoom=18, legend=[(GREEN, "painted"), ("white", "not painted")], title_height=44
-    )
-    for axes in axes_list:
+    legend = [
+        (GREEN, "painted"),
+        ("white", "not painted"),
+        ("white", "B(1)'s pixel"),
+        ("white", "B(1)"),
+    ]
+    figure, axes_list = pixel_figure(windows, zoom=18, legend=legend, title_height=44)
+    for axes, (_, extent, _) in zip(axes_list, windows, strict=True):
+        _pixel_grid(axes, extent)
+        axes.add_patch(
+            Rectangle(
+                home,
+                1,
+                1,
+                fill=False,
+                edgecolor=VERMILLION,
+                linewidth=2.5,
+                linestyle="--",
+                zorder=3,
+            )
+        )
         axes.plot(*end, "+", color=VERMILLION, markersize=16, markeredgewidth=2.5)
-        axes.annotate("B(1)", end, xytext=(-36, 12), textcoords="offset points", color=VERMILLION)
+    handles = [
+        Patch(facecolor=GREEN, edgecolor="0.5"),
+        Patch(facecolor="white", edgecolor="0.5"),
+        Patch(facecolor="white", edgecolor=VERMILLION, linestyle="--", linewidth=1.5),
+        Line2D([], [], marker="+", color=VERMILLION, linestyle="", markersize=10, mew=2),
+    ]
+    _replace_legend(figure, handles, [label for _, label in legend])
     caption = f"B(1) = ({end[0]:g}, {end[1]:g}) in pixel {home}; " + "; ".join(verdicts)
     return Still.of(figure, caption)
 
@@ -272,7 +323,9 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
         overdraw.append(len(pixels) / len(np.unique(pixels, axis=0)))
         window, extent = crop(_painted(pixels, (0.0, 0.45, 0.7)), centre, size)
         windows.append((window, extent, title))
-    figure, _ = pixel_figure(windows, zoom=12, legend=[(BLUE, "painted")])
+    figure, axes_list = pixel_figure(windows, zoom=12, legend=[(BLUE, "painted")])
+    for axes, (_, extent, _) in zip(axes_list, windows, strict=True):
+        _pixel_grid(axes, extent)
     speed = np.hypot(*de_casteljau(derivative(control), [0.0, 0.5]).T)
     caption = (
         f"speed {speed[0]:g} px per unit of t at t = 0, {speed[1]:g} at t = 0.5; "
@@ -286,8 +339,12 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
 def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     """The GAMES101 check for one handout loop: where the red and green curves part.
 
-    Left, the whole curve with every pixel that is not yellow circled; right,
-    the pixels around the first of them at a whole zoom.
+    Left, the whole curve with every pixel that is not yellow marked (circled
+    when there are a few, a dot each when there are many) and the zoomed
+    window boxed; right, the pixels around the first of them at a whole
+    zoom, on the pixel grid. Red-only and green-only pixels also carry a
+    mark of their own (a ring, a cross), so they are told apart without
+    colour.
 
     Examples
     --------
@@ -304,25 +361,72 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     yellow = check.image[..., 0] * check.image[..., 1]
     # Red, green and yellow on white: unpainted pixels white, as in the zoom panels.
     shown = np.where((check.image.sum(axis=2) > 0)[..., None], check.image, 1.0)
-    shown[yellow > 0] = (0.95, 0.85, 0.0)
+    shown[yellow > 0] = YELLOW
     window, extent = crop(shown, first + 0.5, size)
     side = size * 16  # the overview is as tall as the zoomed panel
-    figure, _ = pixel_figure(
+    colours = [(YELLOW, "both"), ((1, 0, 0), "only red (ring)"), ((0, 1, 0), "only green (cross)")]
+    figure, (zoomed,) = pixel_figure(
         [(window, extent, f"around pixel {tuple(int(v) for v in first)}")],
         zoom=16,
-        legend=[((0.95, 0.85, 0.0), "both"), ((1, 0, 0), "only red"), ((0, 1, 0), "only green")],
+        legend=[*colours, ("white", "not yellow")],
+        legend_height=44,
         reserve_left=side + 18,
     )
+    _pixel_grid(zoomed, extent)
+    left, right, bottom, top = extent
+    for listed, marker in ((check.red_only, "o"), (check.green_only, "x")):
+        inside = listed[
+            (listed[:, 0] >= left)
+            & (listed[:, 0] < right)
+            & (listed[:, 1] >= top)
+            & (listed[:, 1] < bottom)
+        ]
+        zoomed.plot(*(inside + 0.5).T, marker, color="black", markersize=6, fillstyle="none")
     overview = pixel_axes(figure, 18, 9, side, side)
     overview.plot(*curve.T, color="0.7", linewidth=1)
+    few = len(odd) <= 40
     if len(odd):
-        overview.plot(*(odd + 0.5).T, "o", markersize=9, fillstyle="none", color=VERMILLION)
+        overview.plot(
+            *(odd + 0.5).T,
+            "o" if few else ".",
+            markersize=9 if few else 2,
+            fillstyle="none" if few else "full",
+            color=VERMILLION,
+        )
+    overview.add_patch(
+        Rectangle(
+            (left, top), right - left, bottom - top, fill=False, edgecolor=BLUE, linewidth=1.5
+        )
+    )
     overview.set_xlim(0, _CANVAS[1])
     overview.set_ylim(_CANVAS[0], 0)
     overview.set_aspect("equal")
     overview.set_xticks([])
     overview.set_yticks([])
-    overview.set_title("not yellow (circled)", fontsize=9)
+    painted = np.count_nonzero(check.image.sum(axis=2) > 0)
+    overview.set_title(f"{len(odd)} of {painted} pixels not yellow", fontsize=9)
+    handles = [
+        Patch(facecolor=YELLOW, edgecolor="0.5"),
+        (
+            Patch(facecolor=(1, 0, 0), edgecolor="0.5"),
+            Line2D([], [], marker="o", color="black", fillstyle="none", linestyle=""),
+        ),
+        (
+            Patch(facecolor=(0, 1, 0), edgecolor="0.5"),
+            Line2D([], [], marker="x", color="black", linestyle=""),
+        ),
+        Line2D(
+            [],
+            [],
+            marker="o" if few else ".",
+            color=VERMILLION,
+            fillstyle="none" if few else "full",
+            linestyle="",
+        ),
+    ]
+    labels = [label for _, label in colours]
+    labels.append("not yellow (whole curve; box: the zoom)")
+    _replace_legend(figure, handles, labels, ncols=2)
     caption = (
         f"{HANDOUT_LOOPS[seed].name} against naive_bezier: {check.fraction:.1%} yellow, "
         f"{len(check.red_only)} pixels only red, {len(check.green_only)} only green"

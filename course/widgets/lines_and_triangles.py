@@ -16,6 +16,8 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
 
 from course import limits
 from course._validate import as_app_points, as_choice, as_int, as_point, as_shape, describe
@@ -240,16 +242,34 @@ class TriangleApp(SliderApp):
             ),
             "rate": widgets.IntSlider(value=rate, min=1, max=8, description="SSAA rate"),
         }
-        super().__init__(controls, shape=(400, 830))
+        super().__init__(controls, shape=(445, 830))
         size, zoom = TRIANGLE_GRID, self.ZOOM
-        left = pixel_axes(self.figure, 40, 30, size * zoom, size * zoom)
-        right = pixel_axes(self.figure, 470, 30, size * zoom, size * zoom)
+        left = pixel_axes(self.figure, 40, 75, size * zoom, size * zoom)
+        right = pixel_axes(self.figure, 470, 75, size * zoom, size * zoom)
         grids = (pixel_grid(left, size), pixel_grid(right, size))
         self.owners = PixelPanel(self, left, (size, size), zoom, _OWNERS, vmin=0, vmax=3)
         centres = np.arange(size) + 0.5
         grid_x, grid_y = np.meshgrid(centres, centres)
         (all_centres,) = left.plot(grid_x.ravel(), grid_y.ravel(), ".", color="0.75", markersize=2)
         (self.inside_centres,) = left.plot([], [], "o", color="black", markersize=3)
+        # Under the left panel, and part of its tight box: the course map shows that panel alone.
+        left.legend(
+            handles=[
+                Patch(facecolor=OWNER_COLORS[1], edgecolor="0.5", label="ABC only"),
+                Patch(facecolor=OWNER_COLORS[2], edgecolor="0.5", label="ACD only"),
+                Patch(facecolor=OWNER_COLORS[3], edgecolor="0.5", label="both: painted twice"),
+                Line2D([], [], marker="o", color="black", ls="", ms=3, label="centre inside"),
+                Line2D([], [], marker=".", color="0.6", ls="", ms=4, label="centre outside"),
+                Line2D([], [], color="navy", lw=2, label="shared edge AC"),
+            ],
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.07),
+            ncols=3,
+            fontsize=7,
+            frameon=False,
+            handlelength=1.4,
+            columnspacing=0.8,
+        )
         self.coverage = PixelPanel(self, right, (size, size), zoom, "Greys")
         self.outlines = [axes.plot([], [], color="navy", linewidth=1)[0] for axes in (left, right)]
         self.shared = [axes.plot([], [], color="navy", linewidth=2)[0] for axes in (left, right)]
@@ -361,9 +381,9 @@ class CurveSegmentsApp(SliderApp):
                 value=format_points(self.control), description="x, y", continuous_update=False
             ),
         }
-        super().__init__(controls, shape=(470, 900))
+        super().__init__(controls, shape=(500, 900))
         side = CURVE_GRID * self.ZOOM  # the grid at an integer zoom: 10 screen pixels each
-        grid_axes = pixel_axes(self.figure, 40, 30, side, side)
+        grid_axes = pixel_axes(self.figure, 40, 60, side, side)
         grid_lines = pixel_grid(grid_axes, CURVE_GRID)
         grid_axes.set_xticks(np.arange(0, CURVE_GRID + 1, 8))
         grid_axes.set_yticks(np.arange(0, CURVE_GRID + 1, 8))
@@ -371,14 +391,34 @@ class CurveSegmentsApp(SliderApp):
         self.pixels = PixelPanel(
             self, grid_axes, (CURVE_GRID, CURVE_GRID), self.ZOOM, _DRAWN, vmin=0, vmax=3
         )
-        (self.twice,) = grid_axes.plot([], [], "o", color="white", markersize=3)
+        (self.twice,) = grid_axes.plot(
+            [], [], "o", color="white", markeredgecolor="0.3", markersize=3.5
+        )
+        grid_axes.legend(
+            handles=[
+                Patch(facecolor=_DRAWN.colors[1], edgecolor="0.5", label="drawn, on the curve"),
+                Patch(facecolor=_DRAWN.colors[2], edgecolor="0.5", label="drawn, off the curve"),
+                Patch(
+                    facecolor=_DRAWN.colors[3], edgecolor="0.5", label="curve missed (> 1 px away)"
+                ),
+                Line2D(
+                    [], [], marker="o", color="white", mec="0.3", ls="", ms=4, label="drawn twice"
+                ),
+                Line2D([], [], color="#0072B2", lw=1.5, label="the curve"),
+            ],
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.05),
+            ncols=3,
+            fontsize=7,
+            frameon=False,
+        )
         (self.polygon,) = grid_axes.plot([], [], "o--", color="0.45", markersize=6, linewidth=1)
         (self.curve,) = grid_axes.plot([], [], color="#0072B2", linewidth=1.5)
         self.labels = [
             grid_axes.annotate(f"P{i}", (0, 0), xytext=(6, 6), textcoords="offset points")
             for i in range(len(self.control))
         ]
-        chart = pixel_axes(self.figure, 520, 60, 350, 370)
+        chart = pixel_axes(self.figure, 520, 90, 350, 370)
         chart.set_xscale("log", base=2)
         chart.set_xticks(_SEGMENT_COUNTS, [str(n) for n in _SEGMENT_COUNTS])
         chart.set_xlabel("segments", fontsize=9)

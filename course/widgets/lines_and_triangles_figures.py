@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 from matplotlib.collections import LineCollection
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
 from scipy.spatial import Delaunay
 
 from course._validate import as_int, as_point, as_shape
@@ -43,6 +45,15 @@ def _grid(axes: Any, left: int, right: int, top: int, bottom: int) -> None:
     axes.add_collection(LineCollection(lines, colors="0.8", linewidths=0.5))
 
 
+def _legend(figure: Any, handles: list) -> None:
+    """Replace :func:`pixel_figure`'s colour patches by handles that show lines and marks too."""
+    for legend in list(figure.legends):
+        legend.remove()
+    figure.legend(
+        handles=handles, loc="upper center", ncols=len(handles), fontsize=8, frameon=False
+    )
+
+
 def line_figure(p0: tuple[int, int] = (0, 0), p1: tuple[int, int] = (7, 3)) -> Still:
     """Bresenham's pixels for one line, with the ideal line between the two end centres.
 
@@ -58,9 +69,18 @@ def line_figure(p0: tuple[int, int] = (0, 0), p1: tuple[int, int] = (7, 3)) -> S
     image = blank((height, width), (1.0, 1.0, 1.0))
     paint(image, pixels - (left, top), _rgb(BLUE), mode="over")
     extent = (left, left + width, top + height, top)
-    figure, (axes,) = pixel_figure([(image, extent, f"line from {p0} to {p1}")], zoom=48)
+    figure, (axes,) = pixel_figure(
+        [(image, extent, f"line from {p0} to {p1}")], zoom=48, legend=[(BLUE, "")]
+    )
     _grid(axes, left, left + width, top, top + height)
     axes.plot([p0[0] + 0.5, p1[0] + 0.5], [p0[1] + 0.5, p1[1] + 0.5], color=VERMILLION, lw=2)
+    _legend(
+        figure,
+        [
+            Patch(facecolor=BLUE, edgecolor="0.5", label="Bresenham's pixels"),
+            Line2D([], [], color=VERMILLION, lw=2, label="the ideal line"),
+        ],
+    )
     dx, dy = p1[0] - p0[0], p1[1] - p0[1]
     steps = max(abs(dx), abs(dy))
     ideal = np.array(p0) + np.outer(np.arange(steps + 1) / steps, (dx, dy))
@@ -96,10 +116,18 @@ def staircase_figure(p0: tuple[int, int] = (0, 0), p1: tuple[int, int] = (14, 9)
         windows.append(
             (image, (left, left + width, top + height, top), f"{title}: {len(pixels)} pixels")
         )
-    figure, axes_list = pixel_figure(windows, zoom=18)
+    figure, axes_list = pixel_figure(windows, zoom=18, legend=[(BLUE, "")])
     for axes in axes_list:
         _grid(axes, left, left + width, top, top + height)
         axes.plot([p0[0] + 0.5, p1[0] + 0.5], [p0[1] + 0.5, p1[1] + 0.5], color="0.2", lw=1)
+    _legend(
+        figure,
+        [
+            Patch(facecolor=BLUE, edgecolor="0.5", label="Bresenham: 8-connected"),
+            Patch(facecolor=VERMILLION, edgecolor="0.5", label="the report's: 4-connected"),
+            Line2D([], [], color="0.2", lw=1, label="the ideal line"),
+        ],
+    )
     counts = [len(pixels) for _, pixels, _ in drawings]
     return Still.of(
         figure, f"{p0} to {p1}: Bresenham {counts[0]} pixels, the report's loop {counts[1]}"
@@ -233,7 +261,7 @@ def mesh_figure(size: int = 64, points: int = 60, seed: int = 4) -> Still:
     vertices = np.unique(np.vstack([corners, rng.integers(0, size + 1, (points, 2))]), axis=0)
     mesh = Delaunay(vertices.astype(float)).simplices
     colours = np.random.default_rng(1).uniform(0.2, 0.8, (len(mesh), 3))
-    windows, counts = [], {}
+    windows, counts, doubles = [], {}, []
     for rule in ("closed", "top-left", "open"):
         image = blank((size, size), (1.0, 1.0, 1.0))
         filled = [triangle(*vertices[s], shape=(size, size), rule=rule) for s in mesh]
@@ -243,7 +271,18 @@ def mesh_figure(size: int = 64, points: int = 60, seed: int = 4) -> Still:
         counts[rule] = (int((hits == 2).sum()), int((hits == 0).sum()))
         twice, never = counts[rule]
         windows.append((image, (0, size, size, 0), f"{rule}: {twice} doubled, {never} cracks"))
-    figure, _ = pixel_figure(windows, zoom=4)
+        doubles.append(np.argwhere(hits == 2)[:, ::-1] + 0.5)
+    figure, axes_list = pixel_figure(windows, zoom=4, legend=[(BLUE, "")])
+    for axes, doubled in zip(axes_list, doubles, strict=True):
+        # Doubled pixels are only a little darker at half opacity: a dot makes them plain.
+        axes.plot(*doubled.T, ".", color="black", markersize=2.5)
+    _legend(
+        figure,
+        [
+            Line2D([], [], marker=".", color="black", ls="", label="doubled: painted twice"),
+            Patch(facecolor="white", edgecolor="0.5", label="crack: painted by none"),
+        ],
+    )
     caption = (
         f"{len(mesh)} triangles over {size * size} pixels: "
         f"top-left {counts['top-left'][0]} doubled, {counts['top-left'][1]} cracks; "

@@ -107,9 +107,16 @@ class SupersampleApp(SliderApp):
         bar.set_ylabel("too bright (+), too dark (−)", fontsize=7, labelpad=1)
         bar.tick_params(labelsize=7)
         rates = np.arange(1, max_rate + 1)
+        # Told apart by marker and dash as well as colour.
+        styles = dict(zip(VERSIONS, (("o-", "#0072B2"), ("s--", "#D55E00")), strict=True))
         self.curves = {
             version: self.curve_axes.semilogy(
-                rates, np.ones(max_rate), "o-", markersize=3, label=version
+                rates,
+                np.ones(max_rate),
+                styles[version][0],
+                color=styles[version][1],
+                markersize=3,
+                label=version,
             )[0]
             for version in VERSIONS
         }

@@ -133,8 +133,10 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
 
     Examples
     --------
-    >>> bilinear_figure()
-    (1.3, 0.9) reads 0.2000: weights 0.12 (0, 0), 0.48 (1, 0), 0.08 (0, 1), 0.32 (1, 1)
+    >>> print(bilinear_figure().caption.replace(": ", ":\\n").replace(", the", ",\\nthe"))
+    (1.3, 0.9) reads 0.2000:
+    0.12 x 0 + 0.48 x 0.25 + 0.08 x 1 + 0.32 x 0,
+    the weights of pixels (0, 0), (1, 0), (0, 1), (1, 1)
     """
     image = np.array([[0.0, 0.25, 1.0, 0.5], [1.0, 0.0, 0.75, 0.25], [0.5, 0.5, 0.0, 1.0]])
     height, width = image.shape
@@ -142,11 +144,28 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
     if not (0 <= x <= width and 0 <= y <= height):
         raise ValueError(f"x and y must lie on the {width} x {height} image; got ({x:g}, {y:g})")
     figure, (axes,) = pixel_figure(
-        [(np.clip(image, 0.15, 0.85), (0, width, height, 0), "pixels, and their centres")],
+        [
+            (
+                np.clip(image, 0.15, 0.85),
+                (0, width, height, 0),
+                f"pixel values and centres; ({x:g}, {y:g}) and its weights",
+            )
+        ],
         zoom=90,
     )
     centres = np.array([(c + 0.5, r + 0.5) for r in range(height) for c in range(width)])
     axes.plot(*centres.T, "o", color=BLUE, ms=5)
+    for row in range(height):
+        for column in range(width):
+            # Each pixel's value, so that the blend can be checked by hand.
+            axes.annotate(
+                f"{image[row, column]:g}",
+                (column + 0.5, row + 0.12),
+                ha="center",
+                va="top",
+                fontsize=9,
+                color="white" if image[row, column] < 0.5 else "black",
+            )
     left, top = int(np.floor(x - 0.5)), int(np.floor(y - 0.5))
     fx, fy = x - 0.5 - left, y - 0.5 - top
     weights = {
@@ -169,8 +188,10 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
         )
     axes.plot([x], [y], "X", color=VERMILLION, ms=10)
     value = float(bilinear(image, x, y))
-    parts = ", ".join(f"{w:.2f} ({c}, {r})" for (c, r), w in weights.items())
-    return Still.of(figure, f"({x:g}, {y:g}) reads {value:.4f}: weights {parts}")
+    terms = " + ".join(f"{w:.2f} x {image[r, c]:g}" for (c, r), w in weights.items())
+    owners = ", ".join(f"({c}, {r})" for c, r in weights)
+    caption = f"({x:g}, {y:g}) reads {value:.4f}: {terms}, the weights of pixels {owners}"
+    return Still.of(figure, caption)
 
 
 @cache
@@ -202,14 +223,20 @@ def zone_plate_figure() -> Still:
     return Still.of(figure, caption)
 
 
-def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13))) -> Still:
+def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13)), floor_rate: int = 32) -> Still:
     """RMS error against the exact box filter at each rate, centred samples and the report's.
+
+    The caption adds the centred error at ``floor_rate``: what many samples
+    leave, the bilinear input's own distance from the exact box mean.
 
     Examples
     --------
-    >>> error_by_rate_figure((1, 2, 3))
-    RMS at rates 1, 2, 3: centred 0.2998, 0.1015, 0.0155; the report's 0.3300, 0.1471, 0.0503
+    >>> print(error_by_rate_figure((1, 2, 3)).caption.replace("; ", "\\n"))
+    RMS at rates 1, 2, 3: centred 0.2998, 0.1015, 0.0155
+    the report's 0.3300, 0.1471, 0.0503
+    centred at rate 32: 0.0034
     """
+    floor_rate = as_int(floor_rate, "floor_rate", minimum=1, maximum=32)
     plate, exact = _lab_zone_plate()
     errors = {
         "centred": [rmse(supersample(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates],
@@ -235,6 +262,8 @@ def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13))) -> Still:
         + ", ".join(f"{v:.4f}" for v in errors["centred"][:3])
         + "; the report's "
         + ", ".join(f"{v:.4f}" for v in errors["the report's"][:3])
+        + f"; centred at rate {floor_rate}: "
+        + f"{rmse(supersample(plate, (LAB_OUT, LAB_OUT), floor_rate), exact):.4f}"
     )
     return Still.of(figure, caption)
 

@@ -35,14 +35,16 @@ UV_app := --extra app
 UV_test := --group pyproject.toml:dev
 UV_browser := --extra browser
 UV_bench := --extra bench
+UV_hub := --extra hub
 UV_site := --group pyproject.toml:site
 PIP_lab := -e ".[lab]"
 PIP_app := -e ".[app]"
 PIP_test := -e . --group dev
 PIP_browser := -e ".[browser]"
 PIP_bench := -e ".[bench]"
+PIP_hub := -e ".[hub]"
 PIP_site := -e . --group site
-SETS := lab app test browser bench site
+SETS := lab app test browser bench site hub
 
 # Checks before anything is installed: the Python version, then the venv module.
 $(BIN)/python:

@@ -7,6 +7,7 @@ import pytest
 from matplotlib.figure import Figure
 from PIL import Image
 
+from course.widgets import picture
 from course.widgets.picture import (
     FigureView,
     PixelPanel,
@@ -32,7 +33,8 @@ def test_png_bytes_decode_to_the_pixels_they_encode():
 def test_png_bytes_refuses_anything_but_rgb_bytes():
     with pytest.raises(
         ValueError,
-        match=r"pixels must be an \(H, W, 3\) uint8 array; got an array of shape \(4, 4\) and "
+        match=r"pixels must be an \(H, W, 3\) or \(H, W, 4\) uint8 array; got an array of shape "
+        r"\(4, 4\) and "
         r"dtype float64",
     ):
         png_bytes(np.zeros((4, 4)))
@@ -170,3 +172,100 @@ def test_pixel_figure_refuses_a_zoom_by_name_for_every_figure_that_passes_one_on
     window = (np.zeros((2, 3)), (0, 3, 2, 0), "")
     with pytest.raises(error, match="zoom"):
         pixel_figure([window], zoom)
+
+
+class Sent:
+    """What a Picture sends to the browser, kept instead: (content, buffers) per message."""
+
+    def __init__(self, view: FigureView) -> None:
+        self.messages: list = []
+        view.image.send = lambda content, buffers=None: self.messages.append((content, buffers))
+
+
+def patched(shown: np.ndarray, messages: list) -> np.ndarray:
+    """The browser's picture: ``shown`` with each patch painted over it, in order."""
+    picture = shown.copy()
+    for content, buffers in messages:
+        assert content["kind"] == "patch" and len(buffers) == len(content["rectangles"])
+        for (left, top, width, height), data in zip(content["rectangles"], buffers, strict=True):
+            piece = np.asarray(Image.open(io.BytesIO(data)).convert("RGBA"))
+            assert piece.shape == (height, width, 4)
+            picture[top : top + height, left : left + width] = piece
+    return picture
+
+
+def test_patches_bring_the_browser_s_picture_to_the_canvas_exactly():
+    view = FigureView(shape=(120, 160))
+    axes = view.figure.add_axes((0, 0, 1, 1))
+    axes.set_xlim(0, 1)
+    axes.set_ylim(0, 1)
+    axes.set_axis_off()
+    axes.axvline(0.3, color="blue")
+    (moving,) = axes.plot([0.1, 0.2], [0.1, 0.9], color="red", linewidth=2, animated=True)
+    label = axes.text(0.5, 0.95, "", animated=True)
+    sent = Sent(view)
+    view.render_moving([moving, label])
+    shown = decoded_rgba(view.image.value)
+    whole = view.image.value
+    for step in range(1, 6):
+        moving.set_data([0.1 * step, 0.2], [0.1, 0.9 - 0.1 * step])
+        label.set_text(f"step {step}")
+        assert view.render_moving([moving, label], patches=True) == b""
+        np.testing.assert_array_equal(patched(shown, sent.messages), view.pixels())
+    assert view.image.value == whole  # the whole picture waits for the drag's end
+    # Far apart changes go as separate rectangles: the label's band and the line's.
+    bands = [rectangle[1] for rectangle in sent.messages[-1][0]["rectangles"]]
+    assert len(bands) == 2 and bands[0] < 20 < bands[1]
+    view.render_moving([moving, label])
+    np.testing.assert_array_equal(decoded_rgba(view.image.value), view.pixels())
+
+
+def test_a_step_that_changes_nothing_sends_nothing_and_jpeg_is_never_patched():
+    view = FigureView(shape=(40, 40))
+    view.figure.add_axes((0, 0, 1, 1)).set_axis_off()
+    sent = Sent(view)
+    assert view.render_moving([], patches=True) != b""  # no whole picture yet: one is sent
+    assert view.render_moving([], patches=True) == b"" and sent.messages == []
+    photo = FigureView(shape=(40, 40), format="jpeg")
+    photo.figure.add_axes((0, 0, 1, 1)).set_axis_off()
+    photo.render_moving([])
+    assert photo.render_moving([], patches=True).startswith(b"\xff\xd8")
+
+
+def decoded_rgba(data: bytes) -> np.ndarray:
+    return np.asarray(Image.open(io.BytesIO(data)).convert("RGBA"))
+
+
+def test_cached_glyphs_paint_exactly_what_agg_paints(monkeypatch):
+    texts = ["degree 3, t = 0.50: B(t) = (355.0, 213.8)", "P1", "Wavy AV (12.3, 4.5)"]
+    pictures = []
+    for cached in (False, True):
+        view = FigureView(shape=(90, 300))
+        axes = view.figure.add_axes((0, 0, 1, 1))
+        axes.set_axis_off()
+        artists = [
+            axes.text(0.013 + 0.1 * i, 0.2 + 0.27 * i, text, fontsize=9 + i, animated=True)
+            for i, text in enumerate(texts)
+        ]
+        artists.append(axes.text(0.5, 0.5, "turned", rotation=30, animated=True))
+        with monkeypatch.context() as patch:
+            if not cached:  # Agg's own drawing: the cache is never installed
+                patch.setattr(picture._GlyphCache, "install", classmethod(lambda cls, r: None))
+            frames = draw_shifted(view, artists)
+        drawer = view.canvas.get_renderer()._draw_text_glyphs_and_boxes
+        assert isinstance(drawer, picture._GlyphCache) == cached
+        pictures.append(frames)
+    for agg, cache in zip(*pictures, strict=True):
+        assert (agg < 250).any()  # something was drawn
+        np.testing.assert_array_equal(cache, agg)
+
+
+def draw_shifted(view: FigureView, artists: list) -> list[np.ndarray]:
+    """The picture with the texts moved by whole and fractional pixels: bitmaps are reused."""
+    frames = []
+    for shift in (0.0, 0.37, 1.0):
+        for artist in artists[:3]:
+            artist.set_x(artist.get_position()[0] + shift / 300)
+        view.render_moving(artists)
+        frames.append(view.pixels())
+    return frames

@@ -191,7 +191,10 @@ class SliderApp:
     def render(self) -> bytes:
         """Draw the figure, or only what moves over the cached rest when the app blits."""
         if self.BLIT:
-            return self.view.render_moving(self.moving, self.pixel_images)
+            # While a handle is held, each step sends only what changed; the release
+            # publishes the whole picture again.
+            patches = self.grabbed is not None
+            return self.view.render_moving(self.moving, self.pixel_images, patches)
         return self.view.render()
 
     def still(self, caption: str | None = None) -> Still:

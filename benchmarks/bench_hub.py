@@ -337,7 +337,7 @@ class Student:
         drawn_steps = step = 0
         while time.monotonic() - start < DRAG_SECONDS:
             now = time.monotonic()
-            if now >= next_due:
+            while now >= next_due:  # every move due, even when this loop ran late
                 step += 1
                 angle = 2.0 * step * MOVE_INTERVAL  # radians: a turn in about 3 s
                 target = (x + RADIUS * (1 - math.cos(angle)), y + RADIUS * math.sin(angle))

@@ -185,7 +185,8 @@ class SliderApp:
         self._place_highlight()
         self.renders += 1
         png = self.render()
-        self._publish_handles()
+        if self.grabbed is None:  # during a drag the browser shows a grabbing hand anyway
+            self._publish_handles()
         return png
 
     def render(self) -> bytes:

@@ -18,7 +18,7 @@ export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
 .DEFAULT_GOAL := help
 .PHONY: help lab app student test test-latest test-browser fuzz lint format notebooks site \
-	bench bench-browser hub lock clean
+	bench bench-browser hub bench-hub lock clean
 
 ## help: this list of targets
 help:
@@ -148,7 +148,7 @@ notebooks: $(VENV)/.lab-installed $(VENV)/.test-installed
 UNPINNED_BENCH := benchmarks/bench_poisson.py
 ## bench: the performance ratios against the reference implementations
 bench: $(VENV)/.bench-installed $(VENV)/.test-installed
-	for script in $(filter-out benchmarks/bench_browser_latency.py $(UNPINNED_BENCH),$(wildcard benchmarks/bench_*.py)); do \
+	for script in $(filter-out benchmarks/bench_browser_latency.py benchmarks/bench_hub.py $(UNPINNED_BENCH),$(wildcard benchmarks/bench_*.py)); do \
 		OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 $(BIN)/python "$$script" || exit 1; \
 	done
 	for script in $(UNPINNED_BENCH); do $(BIN)/python "$$script" || exit 1; done
@@ -172,6 +172,10 @@ hub: $(VENV)/.hub-installed $(HUB_PROXY)
 		"the password '$(HUB_PASSWORD)'. Stop it with Ctrl-C."
 	PATH="$(CURDIR)/$(BIN):$$PATH" COURSE_HUB_DATA=$(HUB_DATA) COURSE_HUB_PORT=$(HUB_PORT) \
 		COURSE_HUB_PASSWORD=$(HUB_PASSWORD) $(BIN)/jupyterhub -f hub/jupyterhub_config.py
+
+## bench-hub: simulated students on the hub: memory, drag round trips, N = 1 to 30 (minutes)
+bench-hub: $(VENV)/.hub-installed $(HUB_PROXY)
+	$(BIN)/python benchmarks/bench_hub.py
 
 $(HUB_PROXY): hub/package.json hub/package-lock.json
 	mkdir -p $(HUB_DATA)

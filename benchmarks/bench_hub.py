@@ -30,8 +30,8 @@ most 150 ms, none lost, a student under 0.5 GiB after lesson 01.
 Every request goes to 127.0.0.1; every wait is bounded; the hub is stopped,
 and any process it started that outlived it, at the end. A step is skipped
 when the machine's available memory could not hold its new students
-(``--gib-per-student``, plus a margin). Run it from the hub's environment:
-``.venv/bin/python benchmarks/bench_hub.py`` after ``make .venv/.hub-installed``.
+(``--gib-per-student``, plus a margin). ``make bench-hub`` installs the hub's
+set and proxy and runs it (not part of ``make bench``: it takes minutes).
 """
 
 from __future__ import annotations

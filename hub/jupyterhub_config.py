@@ -113,7 +113,11 @@ def seed_folder(spawner):
 c.JupyterHub.spawner_class = CourseSpawner
 c.SimpleLocalProcessSpawner.home_dir_template = str(HOMES / "{username}")
 c.Spawner.pre_spawn_hook = seed_folder
-c.Spawner.cmd = [str(Path(sys.executable).with_name("jupyterhub-singleuser"))]
+# The single-user server beside the hub's Python (a venv), else the one on PATH.
+c.Spawner.cmd = [
+    shutil.which("jupyterhub-singleuser", path=str(Path(sys.executable).parent))
+    or "jupyterhub-singleuser"
+]
 c.Spawner.default_url = f"/lab/tree/{LESSONS_FOLDER}/00_index.ipynb"
 c.Spawner.args = [
     # Each drag step's picture sent at once (course.classroom.serving).

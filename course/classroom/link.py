@@ -18,7 +18,8 @@ import posixpath
 import re
 from urllib.parse import quote, urlencode, urlsplit
 
-__all__ = ["add_command", "nbgitpuller_link", "run"]
+# The command-line helpers (add_command, run) are for cli.py only.
+__all__ = ["nbgitpuller_link"]
 
 #: The notebook the link opens, at the top of the student edition.
 START_NOTEBOOK = "00_index.ipynb"

@@ -18,7 +18,7 @@ export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
 .DEFAULT_GOAL := help
 .PHONY: help lab app student test test-latest test-browser fuzz lint format notebooks site \
-	bench bench-browser lock clean
+	bench bench-browser hub bench-hub lock clean
 
 ## help: this list of targets
 help:
@@ -35,14 +35,16 @@ UV_app := --extra app
 UV_test := --group pyproject.toml:dev
 UV_browser := --extra browser
 UV_bench := --extra bench
+UV_hub := --extra hub
 UV_site := --group pyproject.toml:site
 PIP_lab := -e ".[lab]"
 PIP_app := -e ".[app]"
 PIP_test := -e . --group dev
 PIP_browser := -e ".[browser]"
 PIP_bench := -e ".[bench]"
+PIP_hub := -e ".[hub]"
 PIP_site := -e . --group site
-SETS := lab app test browser bench site
+SETS := lab app test browser bench site hub
 
 # Checks before anything is installed: the Python version, then the venv module.
 $(BIN)/python:
@@ -146,7 +148,7 @@ notebooks: $(VENV)/.lab-installed $(VENV)/.test-installed
 UNPINNED_BENCH := benchmarks/bench_poisson.py
 ## bench: the performance ratios against the reference implementations
 bench: $(VENV)/.bench-installed $(VENV)/.test-installed
-	for script in $(filter-out benchmarks/bench_browser_latency.py $(UNPINNED_BENCH),$(wildcard benchmarks/bench_*.py)); do \
+	for script in $(filter-out benchmarks/bench_browser_latency.py benchmarks/bench_hub.py $(UNPINNED_BENCH),$(wildcard benchmarks/bench_*.py)); do \
 		OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 $(BIN)/python "$$script" || exit 1; \
 	done
 	for script in $(UNPINNED_BENCH); do $(BIN)/python "$$script" || exit 1; done
@@ -154,6 +156,32 @@ bench: $(VENV)/.bench-installed $(VENV)/.test-installed
 ## bench-browser: the time from a mouse move or a key press to the new picture, in Chromium
 bench-browser: $(VENV)/.browser-installed $(VENV)/.test-installed
 	$(BIN)/python benchmarks/bench_browser_latency.py
+
+# A class on this machine: the hub's state (database, the students' folders, the student
+# edition they are seeded from) and its proxy from npm, pinned by hub/package-lock.json.
+HUB_DATA := build/hub
+HUB_PORT ?= 8000
+HUB_PASSWORD ?= trial
+HUB_PROXY := $(HUB_DATA)/node_modules/.bin/configurable-http-proxy
+## hub: a JupyterHub for a trial class at http://127.0.0.1:8000 (any name, password 'trial')
+# hub/jupyterhub_config.py is the file a teacher copies to a server (docs/hub.md). The
+# edition is rebuilt at each start; a student's folder only ever gains the files it lacks.
+hub: $(VENV)/.hub-installed $(HUB_PROXY)
+	$(BIN)/python -m course student --out $(HUB_DATA)/student-edition --force
+	@echo "make: the hub opens at http://127.0.0.1:$(HUB_PORT); log in with any name and" \
+		"the password '$(HUB_PASSWORD)'. Stop it with Ctrl-C."
+	PATH="$(CURDIR)/$(BIN):$$PATH" COURSE_HUB_DATA=$(HUB_DATA) COURSE_HUB_PORT=$(HUB_PORT) \
+		COURSE_HUB_PASSWORD=$(HUB_PASSWORD) $(BIN)/jupyterhub -f hub/jupyterhub_config.py
+
+## bench-hub: simulated students on the hub: memory, drag round trips, N = 1 to 30 (minutes)
+bench-hub: $(VENV)/.hub-installed $(HUB_PROXY)
+	$(BIN)/python benchmarks/bench_hub.py
+
+$(HUB_PROXY): hub/package.json hub/package-lock.json
+	mkdir -p $(HUB_DATA)
+	cp hub/package.json hub/package-lock.json $(HUB_DATA)/
+	cd $(HUB_DATA) && npm ci --no-audit --no-fund
+	touch $@
 
 # uv's `pip compile`, pinned, in the venv. The versions already in the lock are kept unless
 # pyproject.toml no longer allows them: `make lock UPGRADE=1` moves every set to the newest.

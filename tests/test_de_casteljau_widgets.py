@@ -173,3 +173,33 @@ def test_decimal_commas_are_refused_not_read_as_more_points():
     assert "decimal comma" in app.status.value and "Kept the last points" in app.status.value
     np.testing.assert_array_equal(app.points, EXAMPLE_POINTS[:4])
     assert app.value("count") == 4
+
+
+def test_a_drag_redraws_only_b_of_t_s_numbers_and_the_release_brings_the_title_back():
+    app = DeCasteljauApp(t=0.5)
+    patches = []
+    app.view.image.send = lambda content, buffers=None: patches.append(content)
+    app.refresh()
+    before = picture(app)
+    start = app.picture_point(app.axes, EXAMPLE_POINTS[1])
+    title = app.title.get_window_extent(app.view.canvas.get_renderer())
+    app.pointer("down", *start)
+    # The title's start stands where the whole title stood, its numbers beside it.
+    first = app.title_start.get_window_extent(app.view.canvas.get_renderer())
+    numbers = app.title_numbers.get_window_extent(app.view.canvas.get_renderer())
+    assert abs(first.x0 - title.x0) < 0.5 and abs(first.y0 - title.y0) < 0.5
+    assert abs(numbers.x0 - first.x1) < 0.5 and abs(numbers.x1 - title.x1) < 2
+    assert not app.title.get_visible() and app.title_start.get_text().endswith("B(t) = ")
+    for step in range(1, 4):
+        app.pointer("move", *np.add(start, (7 * step, -5 * step)))
+        point = de_casteljau(parse_points(app.value("points")), 0.5)
+        assert app.title_numbers.get_text() == f"({point[0]:.1f}, {point[1]:.1f})"
+        assert app.title.get_text() == app.title_start.get_text() + app.title_numbers.get_text()
+    assert patches and all(patch["kind"] == "patch" for patch in patches)
+    assert np.array_equal(picture(app), before)  # the whole picture waits for the release
+    app.pointer("up", *np.add(start, (21, -15)))
+    assert app.title.get_visible() and not app.title_numbers.get_visible()
+    # Released, the picture is the one a fresh app draws for the same points.
+    fresh = DeCasteljauApp(points=parse_points(app.value("points")), t=0.5)
+    fresh.refresh()
+    np.testing.assert_array_equal(picture(app), picture(fresh))

@@ -30,7 +30,7 @@ except ModuleNotFoundError:  # Python 3.10: pytest's own TOML reader
 REPOSITORY = Path(__file__).resolve().parent.parent
 PYPROJECT = tomllib.loads((REPOSITORY / "pyproject.toml").read_text(encoding="utf-8"))
 LOCKS = REPOSITORY / "requirements"
-SETS = ("lab", "app", "test", "browser", "bench", "site")
+SETS = ("lab", "app", "test", "browser", "bench", "site", "hub")
 REQUIREMENT = re.compile(r"^([A-Za-z0-9][A-Za-z0-9._-]*)(\[[^]]*\])?\s*(.*)$")
 
 

@@ -1,14 +1,19 @@
 """course.widgets.picture: the encoders, blitting and pixels written as they are."""
 
 import io
+import json
+import shutil
+import subprocess
 
 import numpy as np
 import pytest
 from matplotlib.figure import Figure
 from PIL import Image
 
+from course.widgets import picture
 from course.widgets.picture import (
     FigureView,
+    Picture,
     PixelPanel,
     Still,
     pixel_axes,
@@ -32,7 +37,8 @@ def test_png_bytes_decode_to_the_pixels_they_encode():
 def test_png_bytes_refuses_anything_but_rgb_bytes():
     with pytest.raises(
         ValueError,
-        match=r"pixels must be an \(H, W, 3\) uint8 array; got an array of shape \(4, 4\) and "
+        match=r"pixels must be an \(H, W, 3\) or \(H, W, 4\) uint8 array; got an array of shape "
+        r"\(4, 4\) and "
         r"dtype float64",
     ):
         png_bytes(np.zeros((4, 4)))
@@ -170,3 +176,195 @@ def test_pixel_figure_refuses_a_zoom_by_name_for_every_figure_that_passes_one_on
     window = (np.zeros((2, 3)), (0, 3, 2, 0), "")
     with pytest.raises(error, match="zoom"):
         pixel_figure([window], zoom)
+
+
+class Sent:
+    """What a Picture sends to the browser, kept instead: (content, buffers) per message."""
+
+    def __init__(self, view: FigureView) -> None:
+        self.messages: list = []
+        view.image.send = lambda content, buffers=None: self.messages.append((content, buffers))
+
+
+def patched(shown: np.ndarray, messages: list) -> np.ndarray:
+    """The browser's picture: ``shown`` with each patch painted over it, in order."""
+    picture = shown.copy()
+    for content, buffers in messages:
+        assert content["kind"] == "patch" and len(buffers) == len(content["rectangles"])
+        for (left, top, width, height), data in zip(content["rectangles"], buffers, strict=True):
+            piece = np.asarray(Image.open(io.BytesIO(data)).convert("RGBA"))
+            assert piece.shape == (height, width, 4)
+            picture[top : top + height, left : left + width] = piece
+    return picture
+
+
+def test_patches_bring_the_browser_s_picture_to_the_canvas_exactly():
+    view = FigureView(shape=(120, 160))
+    axes = view.figure.add_axes((0, 0, 1, 1))
+    axes.set_xlim(0, 1)
+    axes.set_ylim(0, 1)
+    axes.set_axis_off()
+    axes.axvline(0.3, color="blue")
+    (moving,) = axes.plot([0.1, 0.2], [0.1, 0.9], color="red", linewidth=2, animated=True)
+    label = axes.text(0.5, 0.95, "", animated=True)
+    sent = Sent(view)
+    view.render_moving([moving, label])
+    shown = decoded_rgba(view.image.value)
+    whole = view.image.value
+    for step in range(1, 6):
+        moving.set_data([0.1 * step, 0.2], [0.1, 0.9 - 0.1 * step])
+        label.set_text(f"step {step}")
+        assert view.render_moving([moving, label], patches=True) == b""
+        np.testing.assert_array_equal(patched(shown, sent.messages), view.pixels())
+    assert view.image.value == whole  # the whole picture waits for the drag's end
+    # Far apart changes go as separate rectangles: the label's band and the line's.
+    bands = [rectangle[1] for rectangle in sent.messages[-1][0]["rectangles"]]
+    assert len(bands) == 2 and bands[0] < 20 < bands[1]
+    view.render_moving([moving, label])
+    np.testing.assert_array_equal(decoded_rgba(view.image.value), view.pixels())
+
+
+def test_a_step_that_changes_nothing_sends_nothing_and_jpeg_is_never_patched():
+    view = FigureView(shape=(40, 40))
+    view.figure.add_axes((0, 0, 1, 1)).set_axis_off()
+    sent = Sent(view)
+    assert view.render_moving([], patches=True) != b""  # no whole picture yet: one is sent
+    assert view.render_moving([], patches=True) == b"" and sent.messages == []
+    photo = FigureView(shape=(40, 40), format="jpeg")
+    photo.figure.add_axes((0, 0, 1, 1)).set_axis_off()
+    photo.render_moving([])
+    assert photo.render_moving([], patches=True).startswith(b"\xff\xd8")
+
+
+def decoded_rgba(data: bytes) -> np.ndarray:
+    return np.asarray(Image.open(io.BytesIO(data)).convert("RGBA"))
+
+
+def test_cached_glyphs_paint_exactly_what_agg_paints(monkeypatch):
+    texts = ["degree 3, t = 0.50: B(t) = (355.0, 213.8)", "P1", "Wavy AV (12.3, 4.5)"]
+    pictures = []
+    for cached in (False, True):
+        view = FigureView(shape=(90, 300))
+        axes = view.figure.add_axes((0, 0, 1, 1))
+        axes.set_axis_off()
+        artists = [
+            axes.text(0.013 + 0.1 * i, 0.2 + 0.27 * i, text, fontsize=9 + i, animated=True)
+            for i, text in enumerate(texts)
+        ]
+        artists.append(axes.text(0.5, 0.5, "turned", rotation=30, animated=True))
+        with monkeypatch.context() as patch:
+            if not cached:  # Agg's own drawing: the cache is never installed
+                patch.setattr(picture._GlyphCache, "install", classmethod(lambda cls, r: None))
+            frames = draw_shifted(view, artists)
+        drawer = view.canvas.get_renderer()._draw_text_glyphs_and_boxes
+        assert isinstance(drawer, picture._GlyphCache) == cached
+        pictures.append(frames)
+    for agg, cache in zip(*pictures, strict=True):
+        assert (agg < 250).any()  # something was drawn
+        np.testing.assert_array_equal(cache, agg)
+
+
+def draw_shifted(view: FigureView, artists: list) -> list[np.ndarray]:
+    """The picture with the texts moved by whole and fractional pixels: bitmaps are reused."""
+    frames = []
+    for shift in (0.0, 0.37, 1.0):
+        for artist in artists[:3]:
+            artist.set_x(artist.get_position()[0] + shift / 300)
+        view.render_moving(artists)
+        frames.append(view.pixels())
+    return frames
+
+
+NODE = shutil.which("node")
+
+HARNESS = r"""
+const painted = [];
+const text = (part) =>
+  new TextDecoder().decode(part instanceof DataView ? part : new Uint8Array(part));
+globalThis.Blob = class {
+  constructor(parts, options) {
+    this.text = parts.map(text).join("");
+    this.type = options.type;
+  }
+};
+globalThis.URL = { createObjectURL: (blob) => blob.text, revokeObjectURL: () => {} };
+// A patch takes a few milliseconds to decode, as in a browser; the whole picture less.
+globalThis.createImageBitmap = (blob) => new Promise((resolve) =>
+  setTimeout(
+    () => resolve({ width: 5, height: 4, text: blob.text }),
+    blob.text.startsWith("P") ? 5 : 0,
+  ));
+const warnings = [];
+console.warn = (...parts) => warnings.push(parts.join(" "));
+const image = { addEventListener() {}, style: {} };
+globalThis.document = {
+  createElement(tag) {
+    if (tag === "img") return image;
+    const canvas = {
+      getContext: () => context,
+      toBlob: (done) => setTimeout(() => done({ text: "canvas:" + painted.join(" ") }), 0),
+    };
+    const context = {
+      canvas,
+      drawImage: (bitmap, x, y) => painted.push(`${bitmap.text}@${x},${y}`),
+      clearRect: () => {},
+    };
+    return canvas;
+  },
+};
+const handlers = {};
+const state = {
+  value: new TextEncoder().encode("V0"), format: "png", width: 5, height: 4, handles: [],
+};
+const model = {
+  get: (key) => state[key],
+  on: (event, handler) => { handlers[event] = handler; },
+  send: () => {},
+};
+// Longer than every decode and encode above put together, however busy the machine.
+const settle = () => new Promise((resolve) => setTimeout(resolve, 300));
+const bytes = (s) => new DataView(new TextEncoder().encode(s).buffer);
+const patch = (name, x, y) =>
+  handlers["msg:custom"]({ kind: "patch", rectangles: [[x, y, 2, 1]] }, [bytes(name)]);
+const { default: widget } = await import(process.argv[2]);
+widget.render({ model, el: { appendChild() {} } });
+const seen = [image.src];
+patch("P1", 1, 1);
+patch("P2", 3, 2);
+await settle();
+seen.push(image.src);
+patch("P3", 0, 0);  // being decoded when the whole picture comes back: dropped
+await new Promise((resolve) => setTimeout(resolve, 1));
+state.value = new TextEncoder().encode("V1");
+handlers["change:value"]();
+seen.push(image.src);
+await settle();
+seen.push(image.src);
+patch("P4", 2, 2);  // a patch for the new picture starts from it
+await settle();
+seen.push(image.src);
+console.log(JSON.stringify({ seen, warnings }));
+"""
+
+
+# picture.js in Node with a stand-in page (an image, a canvas that records what
+# is painted, blobs and bitmaps that carry their bytes as text): a browser is too
+# heavy for a unit test; tests_browser drives the real one.
+@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
+def test_picture_js_paints_patches_in_order_and_a_new_picture_drops_the_stale_ones(tmp_path):
+    module = tmp_path / "picture.mjs"
+    module.write_text(Picture._esm, encoding="utf-8")
+    harness = tmp_path / "harness.mjs"
+    harness.write_text(HARNESS, encoding="utf-8")
+    done = subprocess.run(
+        [NODE, str(harness), module.as_uri()], capture_output=True, text=True, timeout=60
+    )
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout)["warnings"] == []
+    assert json.loads(done.stdout)["seen"] == [
+        "V0",
+        "canvas:V0@0,0 P1@1,1 P2@3,2",
+        "V1",
+        "V1",
+        "canvas:V0@0,0 P1@1,1 P2@3,2 V1@0,0 P4@2,2",
+    ]

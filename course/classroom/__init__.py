@@ -12,6 +12,7 @@ The third of the package's three layers (``design.md``): algorithms in
 - :mod:`~course.classroom.gallery`: every lesson's key pictures as PNG files;
 - :mod:`~course.classroom.edition`: the student edition;
 - :mod:`~course.classroom.cli`: ``python -m course``;
+- :mod:`~course.classroom.link`: the nbgitpuller link that brings the lessons to a hub;
 - :mod:`~course.classroom.folders`: output folders, never clobbered unasked;
 - :mod:`~course.classroom.source`: the library's source as "Going further" shows it;
 - :mod:`~course.classroom.pictures` and :mod:`~course.classroom.sliders`:

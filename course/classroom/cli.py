@@ -1,4 +1,4 @@
-"""Command line: ``python -m course gallery --out DIR``, ``student --out DIR`` and ``map``.
+"""Command line: ``python -m course gallery --out DIR``, ``student --out DIR``, ``map``, ``link``.
 
 Standard library only: ``student`` is a JSON transform and runs without numpy,
 matplotlib or ipywidgets; ``gallery`` loads them when the lesson modules draw.
@@ -15,7 +15,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from course.classroom import edition, gallery
+from course.classroom import edition, gallery, link
 from course.classroom.course_map import course_map, update_readme
 from course.classroom.notebooks import NOTEBOOKS_VARIABLE, find_notebooks
 from course.classroom.registry import lessons
@@ -71,7 +71,15 @@ def main(argv: list[str] | None = None) -> int:
         type=Path,
         help="rewrite the lesson table between this README's markers instead of printing it",
     )
+    link.add_command(commands)
     args = parser.parse_args(argv)
+    if args.command == "link":
+        try:
+            print(link.run(args))
+        except ValueError as error:
+            print(f"python -m course link: {error}", file=sys.stderr)
+            return 2
+        return 0
     args.notebooks = args.notebooks or find_notebooks()
     if args.notebooks is None and args.command != "gallery":
         print(f"python -m course {args.command}: {NOT_FOUND}", file=sys.stderr)

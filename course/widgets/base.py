@@ -229,13 +229,17 @@ class SliderApp:
         self._place_highlight()
         self.renders += 1
         png = self.render()
-        self._publish_handles()
+        if self.grabbed is None:  # during a drag the browser shows a grabbing hand anyway
+            self._publish_handles()
         return png
 
     def render(self) -> bytes:
         """Draw the figure, or only what moves over the cached rest when the app blits."""
         if self.BLIT:
-            return self.view.render_moving(self.moving, self.pixel_images)
+            # While a handle is held, each step sends only what changed; the release
+            # publishes the whole picture again.
+            patches = self.grabbed is not None
+            return self.view.render_moving(self.moving, self.pixel_images, patches)
         return self.view.render()
 
     def still(self, caption: str | None = None) -> Still:

@@ -14,6 +14,7 @@ import ipywidgets as widgets
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
+from matplotlib.transforms import IdentityTransform
 
 from course._validate import as_app_points, as_int, as_unit
 from course.bezier import de_casteljau, de_casteljau_levels
@@ -39,6 +40,11 @@ _LEVEL_COLORS = (
     "#882255",
     "#DDCC77",
 )
+
+
+def _numbers(point: np.ndarray) -> str:
+    """B(t) as the title shows it: ``(x, y)`` to 0.1."""
+    return f"({point[0]:.1f}, {point[1]:.1f})"
 
 
 def _level_style(level: int) -> dict:
@@ -119,6 +125,12 @@ class DeCasteljauApp(SliderApp):
             for i in range(MAX_POINTS)
         ]
         self.title = axes.set_title("", fontsize=10)
+        # While a point is dragged only B(t)'s numbers change: the title's start is drawn
+        # once into the background and the numbers beside it (text costs the most to draw).
+        self.title_start, self.title_numbers = (
+            self.figure.text(0, 0, "", transform=IdentityTransform(), fontsize=10, visible=False)
+            for _ in range(2)
+        )
         # Everything that moves is drawn over a cached background (blitting):
         # the axes, the ticks and the legend are drawn only when they change.
         self.animate(
@@ -128,6 +140,7 @@ class DeCasteljauApp(SliderApp):
             self.point_marker,
             *self.labels,
             self.title,
+            self.title_numbers,
         )
         self.highlight_ring(axes)
         self.handle_artists = {f"P{i}": [label] for i, label in enumerate(self.labels)}
@@ -185,9 +198,13 @@ class DeCasteljauApp(SliderApp):
         self.point_marker.set_data([point[0]], [point[1]])
         traced = de_casteljau(points, np.linspace(0.0, t, _CURVE_SAMPLES))
         self.traced.set_data(traced[:, 0], traced[:, 1])
-        self.title.set_text(
-            f"degree {len(points) - 1}, t = {t:.2f}: B(t) = ({point[0]:.1f}, {point[1]:.1f})"
-        )
+        start, numbers = f"degree {len(points) - 1}, t = {t:.2f}: B(t) = ", _numbers(point)
+        self.title.set_text(start + numbers)
+        if self.title_numbers.get_visible():
+            self.title_numbers.set_text(numbers)
+            if start != self.title_start.get_text():  # only a drag moves the points: never
+                self.title_start.set_text(start)
+                self.view.invalidate()
 
     def _set_points(self, points: np.ndarray) -> None:
         """New control points: the whole curve, the labels, and the view if they left it."""
@@ -234,6 +251,29 @@ class DeCasteljauApp(SliderApp):
         self.view.invalidate()
 
     # --- dragging ---------------------------------------------------------------
+
+    def grab_started(self, name: str) -> None:
+        super().grab_started(name)
+        if not self.BLIT:
+            return
+        # The title as two texts where it stands: its start still, its numbers redrawn.
+        renderer = self.view.canvas.get_renderer()
+        box = self.title.get_window_extent(renderer)
+        start, numbers = self.title.get_text().split("B(t) = ")
+        for text, shown in ((self.title_start, start + "B(t) = "), (self.title_numbers, numbers)):
+            text.set_text(shown)
+            text.set_verticalalignment("bottom")
+            text.set_visible(True)  # before measuring: a hidden text has no extent
+        self.title_start.set_position((box.x0, box.y0))
+        after = self.title_start.get_window_extent(renderer).width
+        self.title_numbers.set_position((box.x0 + after, box.y0))
+        self.title.set_visible(False)
+
+    def grab_ended(self, name: str) -> None:
+        super().grab_ended(name)
+        self.title.set_visible(True)
+        self.title_start.set_visible(False)
+        self.title_numbers.set_visible(False)
 
     def handles(self) -> list[Handle]:
         return [Handle(f"P{i}", self.axes, tuple(p)) for i, p in enumerate(self.points)]

@@ -6,7 +6,11 @@
 // queues more than one redraw: while the kernel draws, only the latest
 // position is kept, and it is sent when the kernel says the picture is done.
 // The cursor shows what a press would do, from the grabbable places the
-// kernel lists in `handles`.
+// kernel lists in `handles`. During a drag the kernel sends only the rectangles
+// that changed ("patch" messages, one PNG buffer each): they are painted, in
+// order, over a canvas holding the picture, which the image then shows. The
+// release brings the whole picture back as `value`, and a new `value` drops
+// any patch still on its way.
 
 function pictureUrl(value, format) {
   const bytes = value instanceof DataView ? value : new Uint8Array(value ?? []);
@@ -20,16 +24,51 @@ function render({ model, el }) {
   el.appendChild(image);
 
   let url = null;
-  function show() {
-    const next = pictureUrl(model.get("value"), model.get("format"));
+  function display(next) {
     image.src = next;
     if (url) URL.revokeObjectURL(url);
     url = next;
+  }
+
+  let generation = 0; // counts whole pictures: a patch for an older one is dropped
+  let composed = null; // the 2D context of a canvas holding the picture as patched
+  let painting = Promise.resolve(); // patches are painted one after another
+
+  function show() {
+    generation += 1;
+    composed = null;
+    display(pictureUrl(model.get("value"), model.get("format")));
     image.width = model.get("width");
     image.height = model.get("height");
   }
   show();
   model.on("change:value", show);
+
+  function decode(bytes, format) {
+    const data = bytes instanceof DataView ? bytes : new Uint8Array(bytes ?? []);
+    return createImageBitmap(new Blob([data], { type: `image/${format}` }));
+  }
+
+  async function paint(rectangles, buffers, mine) {
+    if (!composed) {
+      const whole = await decode(model.get("value"), model.get("format"));
+      if (mine !== generation) return;
+      const canvas = document.createElement("canvas");
+      canvas.width = whole.width;
+      canvas.height = whole.height;
+      composed = canvas.getContext("2d");
+      composed.drawImage(whole, 0, 0);
+    }
+    const pieces = await Promise.all(buffers.map((buffer) => decode(buffer, "png")));
+    if (mine !== generation) return;
+    rectangles.forEach(([left, top, width, height], index) => {
+      composed.clearRect(left, top, width, height);
+      composed.drawImage(pieces[index], left, top);
+    });
+    const blob = await new Promise((resolve) => composed.canvas.toBlob(resolve, "image/png"));
+    if (mine !== generation || !blob) return;
+    display(URL.createObjectURL(blob));
+  }
 
   // Where the pointer is, in the PNG's pixels (the page may scale the image).
   function position(event) {
@@ -63,7 +102,13 @@ function render({ model, el }) {
     }
   }
 
-  model.on("msg:custom", (message) => {
+  model.on("msg:custom", (message, buffers) => {
+    if (message.kind === "patch") {
+      const mine = generation;
+      painting = painting
+        .then(() => paint(message.rectangles, buffers ?? [], mine))
+        .catch((error) => console.warn("course picture: a patch was not painted", error));
+    }
     if (message.kind === "drawn") {
       waiting = false;
       flush();

@@ -27,9 +27,12 @@ import anywidget
 import matplotlib
 import numpy as np
 import traitlets
+from matplotlib import ft2font
 from matplotlib.axes import Axes
+from matplotlib.backends import backend_agg
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from PIL import Image as PILImage
 
@@ -76,40 +79,55 @@ def rounding_level(value: float, bound: float = 1e-12, spec: str = ".1e") -> str
 
 
 def png_bytes(pixels: np.ndarray) -> bytes:
-    """An (H, W, 3) uint8 RGB image as PNG: no filter, zlib level 1.
+    """An (H, W, 3) RGB or (H, W, 4) RGBA uint8 image as PNG: no filter, zlib level 1.
 
     What a picture redrawn at every step of a drag needs: Pillow's encoder
     tries an adaptive filter on every row, and on the course's line art
     that costs three times as long (5.5 against 1.6 ms for lesson 01's
-    500 x 500 picture) for a file no smaller (41 against 33 kB).
+    500 x 500 picture) for a file no smaller (41 against 33 kB). RGBA is
+    for rectangles cut from the canvas during a drag: its rows are copied
+    whole, where dropping the alpha channel costs more than encoding it.
 
     Examples
     --------
     >>> png = png_bytes(np.zeros((2, 3, 3), dtype=np.uint8))
     >>> PILImage.open(io.BytesIO(png)).size
     (3, 2)
+    >>> PILImage.open(io.BytesIO(png_bytes(np.zeros((2, 3, 4), dtype=np.uint8)))).mode
+    'RGBA'
     """
     if not (
         isinstance(pixels, np.ndarray)
         and pixels.dtype == np.uint8
         and pixels.ndim == 3
-        and pixels.shape[2] == 3
+        and pixels.shape[2] in (3, 4)
     ):
-        raise ValueError(f"pixels must be an (H, W, 3) uint8 array; got {describe(pixels)}")
-    height, width, _ = pixels.shape
-    rows = np.zeros((height, 1 + 3 * width), dtype=np.uint8)  # filter byte 0: none
-    rows[:, 1:] = pixels.reshape(height, -1)
+        raise ValueError(
+            f"pixels must be an (H, W, 3) or (H, W, 4) uint8 array; got {describe(pixels)}"
+        )
+    height, width, channels = pixels.shape
+    rows = np.zeros((height, 1 + channels * width), dtype=np.uint8)  # filter byte 0: none
+    # One copy, however strided the pixels are (a rectangle cut from a picture is).
+    after_filter_byte = np.ndarray(
+        (height, width, channels),
+        np.uint8,
+        buffer=rows,
+        offset=1,
+        strides=(rows.strides[0], channels, 1),
+    )
+    after_filter_byte[...] = pixels
 
     def chunk(kind: bytes, data: bytes) -> bytes:
         return (
             struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
         )
 
-    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8-bit RGB
+    colour_type = 2 if channels == 3 else 6  # 8-bit RGB, or RGBA
+    header = struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)
     return (
         b"\x89PNG\r\n\x1a\n"
         + chunk(b"IHDR", header)
-        + chunk(b"IDAT", zlib.compress(rows.tobytes(), 1))
+        + chunk(b"IDAT", zlib.compress(rows, 1))
         + chunk(b"IEND", b"")
     )
 
@@ -130,6 +148,8 @@ class Picture(anywidget.AnyWidget):
     left, top, right, bottom]`` for a box. Presses, moves and releases come
     back as messages ``{"kind", "x", "y"}`` in picture pixels; the kernel
     answers each with ``{"kind": "drawn"}`` once its picture is published.
+    While a handle is held, the picture is published as ``{"kind": "patch"}``
+    messages of changed rectangles (:meth:`FigureView.publish_patches`).
     """
 
     _esm = (Path(__file__).parent / "picture.js").read_text(encoding="utf-8")
@@ -163,6 +183,8 @@ class FigureView:
         self.canvas = FigureCanvasAgg(self.figure)
         self.image = Picture(width=columns, height=rows, format=format)
         self._background = None
+        # The RGBA pixels the browser holds: the last whole picture and the patches since.
+        self._shown: np.ndarray | None = None
 
     def pixels(self) -> np.ndarray:
         """The picture as last rendered, RGBA pixels (height, width, 4) uint8, before encoding."""
@@ -173,7 +195,9 @@ class FigureView:
         self.canvas.draw()
         return self.publish()
 
-    def render_moving(self, artists: list, images: dict | None = None) -> bytes:
+    def render_moving(
+        self, artists: list, images: dict | None = None, patches: bool = False
+    ) -> bytes:
         """Redraw only ``artists`` (made ``set_animated(True)``) over a cached background.
 
         Blitting: the first call draws everything else once and keeps it;
@@ -182,6 +206,8 @@ class FigureView:
         ``images`` maps axes to (h, w, 3) uint8 pictures the size of the axes
         in pixels: written into the picture as they are, under the artists,
         without matplotlib's resampling (for images shown pixel for pixel).
+        ``patches`` sends only the changed rectangles (:meth:`publish_patches`),
+        for the steps of a drag; then the empty bytes are returned.
         """
         if self._background is None:
             self.canvas.draw()  # skips animated artists
@@ -190,8 +216,12 @@ class FigureView:
             self.canvas.restore_region(self._background)
         for axes, image in (images or {}).items():
             self.paste(axes, image)
+        _GlyphCache.install(self.canvas.get_renderer())
         for artist in artists:
-            self.figure.draw_artist(artist)
+            if not _empty_line(artist):  # an unused level of a construction: nothing to draw
+                self.figure.draw_artist(artist)
+        if patches and self.publish_patches():
+            return b""
         return self.publish()
 
     def paste(self, axes: Axes, image: np.ndarray) -> None:
@@ -225,7 +255,133 @@ class FigureView:
         else:
             encoded = png_bytes(pixels)
         self.image.value = encoded
+        self._shown = np.array(self.canvas.buffer_rgba())
         return encoded
+
+    def publish_patches(self) -> bool:
+        """Send the browser only the rectangles that changed since what it shows.
+
+        A drag moves a few lines under a title: encoding the whole picture at
+        every step costs more than drawing it. The changed pixels are found by
+        comparing with the pixels the browser holds; the rows that changed are
+        grouped into bands (split where :data:`PATCH_GAP` rows or more did not
+        change), each band cut to its changed columns and sent as a PNG in one
+        message ``{"kind": "patch", "rectangles": [[left, top, width, height],
+        ...]}`` with one buffer per rectangle, which ``picture.js`` paints over
+        its picture. ``value`` keeps the last whole picture: the drag's end
+        publishes it. Returns False, having sent nothing, when a patch cannot
+        stand for the picture: no whole picture published yet, or JPEG.
+        """
+        if self._shown is None or self.image.format != "png":
+            return False
+        current = np.asarray(self.canvas.buffer_rgba())
+        if current.shape != self._shown.shape:
+            return False
+        changed = _as_words(current) != _as_words(self._shown)
+        rectangles, buffers = [], []
+        for top, bottom in _bands(np.flatnonzero(changed.any(axis=1)), PATCH_GAP):
+            columns = np.flatnonzero(changed[top:bottom].any(axis=0))
+            left, right = int(columns[0]), int(columns[-1]) + 1
+            rectangles.append([left, top, right - left, bottom - top])
+            buffers.append(png_bytes(current[top:bottom, left:right]))
+            self._shown[top:bottom, left:right] = current[top:bottom, left:right]
+        if rectangles:
+            self.image.send({"kind": "patch", "rectangles": rectangles}, buffers=buffers)
+        return True
+
+
+#: Unchanged rows that split a patch in two: fewer cost more in messages than they save.
+PATCH_GAP = 12
+
+
+def _as_words(pixels: np.ndarray) -> np.ndarray:
+    """(H, W, 4) uint8 pixels as (H, W) 32-bit words: one comparison per pixel."""
+    return np.ascontiguousarray(pixels).view(np.uint32)[..., 0]
+
+
+def _bands(rows: np.ndarray, gap: int) -> list[tuple[int, int]]:
+    """Sorted row indices as [top, bottom) bands, split where ``gap`` or more rows are missing.
+
+    >>> _bands(np.array([2, 3, 4, 30, 31]), 12)
+    [(2, 5), (30, 32)]
+    >>> _bands(np.array([], dtype=int), 12)
+    []
+    """
+    if len(rows) == 0:
+        return []
+    splits = np.flatnonzero(np.diff(rows) > gap)
+    starts = [int(rows[0]), *(int(rows[i + 1]) for i in splits)]
+    ends = [*(int(rows[i]) + 1 for i in splits), int(rows[-1]) + 1]
+    return list(zip(starts, ends, strict=True))
+
+
+# Matplotlib 3.11's FreeType render mode; older releases draw text their own way, uncached.
+_RENDER_NORMAL = getattr(getattr(ft2font, "RenderMode", None), "NORMAL", None)
+
+
+class _GlyphCache:
+    """Agg's text drawing with each glyph's bitmap rendered once, then reused.
+
+    Matplotlib 3.11 asks FreeType for every glyph of a text at every draw; a
+    drag redraws the title of lesson 01's app (41 glyphs, its numbers new at
+    each step) and a point's label, which cost half the drawing. FreeType's
+    bitmap of a glyph depends on its font, size, flags and the position's
+    fraction of a pixel (in 1/64ths) only: moved by whole pixels, it is the
+    same bitmap, so a cached copy painted at the new place gives exactly the
+    pixels Agg draws (the tests compare them). Rotated, slanted, stretched,
+    aliased and mathtext text goes to Agg's own method unchanged, as does
+    everything on a matplotlib without this private method.
+    """
+
+    def __init__(self, renderer: Any, original: Any) -> None:
+        self.renderer, self.original = renderer, original
+        self.bitmaps: dict[tuple, tuple[np.ndarray, int, int]] = {}
+
+    @classmethod
+    def install(cls, renderer: Any) -> None:
+        """Route ``renderer``'s glyph drawing through a cache, once, where matplotlib allows."""
+        original = getattr(renderer, "_draw_text_glyphs_and_boxes", None)
+        if original is None or isinstance(original, cls) or _RENDER_NORMAL is None:
+            return
+        renderer._draw_text_glyphs_and_boxes = cls(renderer, original)
+
+    def __call__(self, gc: Any, x: float, y: float, angle: float, glyphs: Any, boxes: Any) -> None:
+        glyphs = list(glyphs)
+        plain = all(slant == 0 and extend == 1 for _, _, _, slant, extend, _, _ in glyphs)
+        if angle != 0 or boxes or not gc.get_antialiased() or not plain:
+            self.original(gc, x, y, angle, glyphs, boxes)
+            return
+        flags = backend_agg.get_hinting_flag()
+        renderer = self.renderer
+        height = renderer.height
+        for font, size, glyph_index, _, _, dx, dy in glyphs:  # dy is upwards
+            # The glyph's origin in FreeType's 26.6 fixed point, y upwards, as Agg places it.
+            origin_x = round(0x40 * (x + dx))
+            origin_y = round(0x40 * (height - y + dy))
+            key = (font.fname, size, renderer.dpi, glyph_index, flags, origin_x % 64, origin_y % 64)
+            cached = self.bitmaps.get(key)
+            if cached is None:
+                font.set_size(size, renderer.dpi)
+                font._set_transform([[0x10000, 0], [0, 0x10000]], [origin_x, origin_y])
+                bitmap = font._render_glyph(glyph_index, flags, _RENDER_NORMAL)
+                cached = (
+                    np.array(bitmap.buffer),
+                    bitmap.left - (origin_x >> 6),
+                    bitmap.top - (origin_y >> 6),
+                )
+                self.bitmaps[key] = cached
+            buffer, left, top = cached
+            renderer._renderer.draw_text_image(
+                buffer,
+                (origin_x >> 6) + left,
+                int(height) - ((origin_y >> 6) + top) + buffer.shape[0],
+                0,
+                gc,
+            )
+
+
+def _empty_line(artist: Any) -> bool:
+    return isinstance(artist, Line2D) and len(artist.get_xdata(orig=True)) == 0
 
 
 def pixel_axes(figure: Figure, left: int, bottom: int, width: int, height: int) -> Axes:

@@ -1,0 +1,135 @@
+"""Issue 23: the kernel's CPU time per drag step in lesson 01's app, against today's.
+
+A drag step is one pointer move handled as the browser sends it
+(``app.pointer("move", x, y)``): the control point moves, the construction is
+updated, the picture redrawn and published. Its CPU time decides how many
+students a core holds. Three ways, timed in the same run, in interleaved
+batches of 20 steps along the same circle of 40 pixels around P1, with
+``time.process_time`` (CPU time, not wall time: the machine is shared):
+
+- **full**: no blitting, the whole figure drawn by matplotlib and the whole
+  picture encoded as PNG, at every step;
+- **today** (the anchor): blitting as it was before this issue, the moving
+  artists redrawn over a cached background, every glyph of the title and
+  the label rendered anew by FreeType, and the whole picture encoded as PNG
+  (with today's faster RGB copy, so the anchor is if anything too fast);
+- **now**: the moving artists over the cached background with Agg's glyph
+  bitmaps cached, unused level lines skipped, the title's start drawn once
+  into the background and only B(t)'s numbers redrawn, and only the changed
+  rectangles encoded and sent (``FigureView.publish_patches``).
+
+Goal: **now** at most half of **today**. Prints each way's CPU time per step
+(the fastest batch and the median batch, in ms) and the ratios, and the bytes
+each step sends.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import statistics
+import sys
+import time
+from collections.abc import Iterator
+from functools import partial
+from pathlib import Path
+
+import numpy as np
+
+REPOSITORY = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(REPOSITORY))
+
+from course.widgets import picture  # noqa: E402
+from course.widgets.base import SliderApp  # noqa: E402
+from course.widgets.de_casteljau import DeCasteljauApp  # noqa: E402
+
+BATCH = 20
+GOAL = 0.5
+
+
+class Measured:
+    """One way of handling a drag: the app, its pointer on P1, and what it sent."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self.app = DeCasteljauApp(t=0.5)
+        self.sent_bytes: list[int] = []
+        self.app.view.image.send = self.keep
+        if name == "full":
+            self.app.BLIT = False  # canvas.draw() and a whole picture at every step
+        if name in ("full", "today"):
+            self.app.view.publish_patches = lambda: False
+            # The whole title redrawn at every step, as before.
+            self.app.grab_started = partial(SliderApp.grab_started, self.app)
+            self.app.grab_ended = partial(SliderApp.grab_ended, self.app)
+        self.app.refresh()
+        handle = self.app.handles()[1]
+        self.centre = self.app.picture_point(handle.axes, handle.at)
+        with self.as_before():
+            self.app.pointer("down", *self.centre)
+        self.step = 0
+        self.batches: list[float] = []
+
+    def keep(self, content: dict, buffers: list | None = None) -> None:
+        self.sent_bytes.append(sum(len(buffer) for buffer in buffers or []))
+
+    @contextlib.contextmanager
+    def as_before(self) -> Iterator[None]:
+        """For the anchor: Agg's own glyph drawing and every artist drawn, as before."""
+        if self.name == "now":
+            yield
+            return
+        install, empty = picture._GlyphCache.install, picture._empty_line
+        picture._GlyphCache.install = classmethod(lambda cls, renderer: None)
+        picture._empty_line = lambda artist: False
+        try:
+            yield
+        finally:
+            picture._GlyphCache.install, picture._empty_line = install, empty
+
+    def batch(self) -> None:
+        value = self.app.view.image.value
+        with self.as_before():
+            start = time.process_time()
+            for _ in range(BATCH):
+                self.step += 1
+                angle = self.step * 2 * np.pi / 50
+                self.app.pointer("move", *(self.centre + 40 * np.array([np.cos(angle), 1])))
+                self.app.pointer("move", *(self.centre + 40 * np.array([1, np.sin(angle)])))
+            self.batches.append((time.process_time() - start) / (2 * BATCH))
+        if self.name == "now" and self.app.view.image.value != value:
+            raise AssertionError("a patched drag changed the whole picture before the release")
+        if self.name != "now":
+            self.sent_bytes.append(len(self.app.view.image.value))
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rounds", type=int, default=9, help="interleaved batches per way")
+    args = parser.parse_args()
+    ways = [Measured(name) for name in ("full", "today", "now")]
+    for way in ways:
+        way.batch()  # warm-up: caches, the background, the first patch
+        way.batches.clear()
+        way.sent_bytes.clear()
+    for _ in range(args.rounds):
+        for way in ways:
+            way.batch()
+    print(f"Lesson 01's app, 500 x 500, a drag of P1: CPU time per step over {args.rounds} ")
+    print(f"interleaved batches of {2 * BATCH} steps (time.process_time)")
+    print(f"{'way':<7} {'best ms':>8} {'median ms':>10} {'kB sent per step':>17}")
+    for way in ways:
+        sent = statistics.median(way.sent_bytes) / 1000
+        print(
+            f"{way.name:<7} {min(way.batches) * 1e3:>8.2f} "
+            f"{statistics.median(way.batches) * 1e3:>10.2f} {sent:>17.1f}"
+        )
+    full, today, now = (statistics.median(way.batches) for way in ways)
+    ratio = now / today
+    print(f"now / today: {ratio:.2f} (goal <= {GOAL}); now / full: {now / full:.2f}")
+    print(f"goal {'met' if ratio <= GOAL else 'NOT met'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,114 @@
+"""``python -m course link``: the nbgitpuller link that brings the lessons to a class's hub.
+
+A teacher publishes the student edition (``python -m course student --out
+DIR``) as a git repository, and sends the class one link. Opened on the
+class's JupyterHub, nbgitpuller clones that repository into the student's
+folder the first time; every later click merges the teacher's new lessons in
+and keeps what the student wrote (a file the student changed keeps the
+student's lines where both changed it). The link then opens the course map.
+
+Standard library only, like the rest of ``python -m course``: the teacher
+runs it anywhere.
+"""
+
+from __future__ import annotations
+
+import argparse
+import posixpath
+import re
+from urllib.parse import quote, urlencode, urlsplit
+
+# The command-line helpers (add_command, run) are for cli.py only.
+__all__ = ["nbgitpuller_link"]
+
+#: The notebook the link opens, at the top of the student edition.
+START_NOTEBOOK = "00_index.ipynb"
+#: What a branch or folder name may hold: no spaces, no "..", nothing a URL would mangle.
+_NAME = re.compile(r"^[A-Za-z0-9._/-]+$")
+
+
+def nbgitpuller_link(
+    hub: str,
+    repository: str,
+    branch: str = "main",
+    notebook: str = START_NOTEBOOK,
+    folder: str | None = None,
+) -> str:
+    """The link that pulls ``repository``'s ``branch`` into a student's folder on ``hub``.
+
+    ``hub`` is the hub's address (``https://hub.example.edu``, or with the
+    prefix the hub is served under); ``repository`` the student edition's
+    git repository, cloned over http(s). The link opens ``notebook`` in
+    JupyterLab, inside ``folder`` (by default the repository's name, where
+    nbgitpuller clones it).
+
+    Examples
+    --------
+    >>> print(nbgitpuller_link("https://hub.example.edu/", "https://github.com/u/cg-student"))
+    https://hub.example.edu/hub/user-redirect/git-pull?repo=https%3A%2F%2Fgithub.com%2Fu%2Fcg-student&branch=main&urlpath=lab%2Ftree%2Fcg-student%2F00_index.ipynb
+    """
+    hub = _web_address(hub, "hub").rstrip("/")
+    repository = _web_address(repository, "repository")
+    branch = _name(branch, "branch")
+    notebook = _name(notebook, "notebook")
+    if folder is None:
+        folder = posixpath.basename(urlsplit(repository).path.rstrip("/")).removesuffix(".git")
+        if not folder:
+            raise ValueError(f"repository must end in the repository's name; got {repository!r}")
+        query = {"repo": repository, "branch": branch}
+    else:
+        folder = _name(folder, "folder")
+        query = {"repo": repository, "branch": branch, "targetpath": folder}
+    query["urlpath"] = f"lab/tree/{folder}/{notebook}"
+    return f"{hub}/hub/user-redirect/git-pull?{urlencode(query, quote_via=quote, safe='')}"
+
+
+def _web_address(value: object, name: str) -> str:
+    if not isinstance(value, str):
+        raise TypeError(
+            f"{name} must be an http(s) address as a string; got {type(value).__name__}"
+        )
+    parts = urlsplit(value)
+    if parts.scheme not in ("http", "https") or not parts.netloc or parts.query or parts.fragment:
+        raise ValueError(
+            f"{name} must be an http(s) address with a host, no query or fragment; got {value!r}"
+        )
+    return value
+
+
+def _name(value: object, name: str) -> str:
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string; got {type(value).__name__}")
+    parts = value.split("/")
+    if not _NAME.match(value) or ".." in parts or "" in parts:
+        raise ValueError(
+            f"{name} must be a relative name of letters, digits, '.', '_', '-' and '/' "
+            f"(no '..'); got {value!r}"
+        )
+    return value
+
+
+def add_command(commands: argparse._SubParsersAction) -> None:
+    """Add ``link`` to ``python -m course``'s commands."""
+    command = commands.add_parser(
+        "link", help="print the nbgitpuller link that brings the student edition to a hub"
+    )
+    command.add_argument("--hub", required=True, help="the hub's address, e.g. https://hub.uni.edu")
+    command.add_argument(
+        "--repo",
+        required=True,
+        help="the student edition's git repository (python -m course student --out DIR, "
+        "committed and pushed), cloned over https",
+    )
+    command.add_argument("--branch", default="main", help="its branch (default: main)")
+    command.add_argument(
+        "--notebook",
+        default=START_NOTEBOOK,
+        help=f"what the link opens (default: {START_NOTEBOOK})",
+    )
+    command.add_argument("--folder", help="the student's folder (default: the repository's name)")
+
+
+def run(args: argparse.Namespace) -> str:
+    """The link ``python -m course link`` prints for its parsed arguments."""
+    return nbgitpuller_link(args.hub, args.repo, args.branch, args.notebook, args.folder)

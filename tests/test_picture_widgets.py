@@ -288,12 +288,14 @@ globalThis.Blob = class {
   }
 };
 globalThis.URL = { createObjectURL: (blob) => blob.text, revokeObjectURL: () => {} };
-// A patch takes a few milliseconds to decode, as in a browser; the whole picture less.
-globalThis.createImageBitmap = (blob) => new Promise((resolve) =>
-  setTimeout(
-    () => resolve({ width: 5, height: 4, text: blob.text }),
-    blob.text.startsWith("P") ? 5 : 0,
-  ));
+// Time is counted in turns of the event loop, not milliseconds, so a busy machine
+// cannot reorder what follows: a patch takes a few turns to decode, as in a browser;
+// the whole picture fewer.
+const turns = async (count) => {
+  for (let turn = 0; turn < count; turn++) await new Promise((resolve) => setImmediate(resolve));
+};
+globalThis.createImageBitmap = (blob) =>
+  turns(blob.text.startsWith("P") ? 5 : 0).then(() => ({ width: 5, height: 4, text: blob.text }));
 const warnings = [];
 console.warn = (...parts) => warnings.push(parts.join(" "));
 const image = { addEventListener() {}, style: {} };
@@ -302,7 +304,7 @@ globalThis.document = {
     if (tag === "img") return image;
     const canvas = {
       getContext: () => context,
-      toBlob: (done) => setTimeout(() => done({ text: "canvas:" + painted.join(" ") }), 0),
+      toBlob: (done) => turns(1).then(() => done({ text: "canvas:" + painted.join(" ") })),
     };
     const context = {
       canvas,
@@ -321,8 +323,8 @@ const model = {
   on: (event, handler) => { handlers[event] = handler; },
   send: () => {},
 };
-// Longer than every decode and encode above put together, however busy the machine.
-const settle = () => new Promise((resolve) => setTimeout(resolve, 300));
+// More turns than every decode and encode above put together.
+const settle = () => turns(200);
 const bytes = (s) => new DataView(new TextEncoder().encode(s).buffer);
 const patch = (name, x, y) =>
   handlers["msg:custom"]({ kind: "patch", rectangles: [[x, y, 2, 1]] }, [bytes(name)]);
@@ -334,7 +336,7 @@ patch("P2", 3, 2);
 await settle();
 seen.push(image.src);
 patch("P3", 0, 0);  // being decoded when the whole picture comes back: dropped
-await new Promise((resolve) => setTimeout(resolve, 1));
+await turns(1);
 state.value = new TextEncoder().encode("V1");
 handlers["change:value"]();
 seen.push(image.src);

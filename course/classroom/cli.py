@@ -82,7 +82,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{args.readme}: lesson table {'rewritten' if changed else 'unchanged'}")
             return 0
         if args.command == "map":
-            print(course_map(args.notebooks, args.link_prefix))
+            print(course_map(args.notebooks, args.link_prefix, guide=False))
             return 0
         if args.command == "gallery":
             if args.notebooks is None:  # an installed package: every registered picture

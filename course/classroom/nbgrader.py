@@ -257,13 +257,16 @@ def write_nbgrader_course(
 
     ``out/nbgrader_config.py`` and ``out/source/<lesson>/<lesson>.ipynb`` for
     each lesson with exercises. Refuses a non-empty ``out`` unless ``force``
-    (then files of the same names are replaced, nothing is deleted). Every
+    (then the lessons' sources are replaced, a teacher's
+    ``nbgrader_config.py`` is kept, nothing is deleted). Every
     lesson is converted before anything is written, and the files are
     written to a temporary folder first, then moved into place.
     """
     check_output_folder(out, force)
     out = Path(out)
-    files: dict[str, str] = {"nbgrader_config.py": CONFIG.format(stub=STUB_LINE)}
+    files: dict[str, str] = {}
+    if not (out / "nbgrader_config.py").exists():
+        files["nbgrader_config.py"] = CONFIG.format(stub=STUB_LINE)
     for book in notebooks(folder):
         notebook = read_notebook(book.path)
         try:

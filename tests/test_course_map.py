@@ -6,7 +6,12 @@ from pathlib import Path
 from conftest import write_notebook
 
 from course.classroom.cli import main
-from course.classroom.course_map import README_MARKERS, course_map, update_readme
+from course.classroom.course_map import (
+    EXERCISE_GUIDE,
+    README_MARKERS,
+    course_map,
+    update_readme,
+)
 from course.classroom.notebooks import notebooks
 from course.classroom.registry import lessons
 
@@ -16,7 +21,7 @@ README = Path(__file__).resolve().parent.parent / "README.md"
 def test_one_row_per_lesson_with_its_registry_entry_or_its_summary(tmp_path):
     write_notebook(tmp_path / "01_de_casteljau.ipynb", "# Lesson 01 · de Casteljau")
     write_notebook(tmp_path / "42_unregistered.ipynb", "# Later\n\nIt does | this.")
-    table = course_map(tmp_path).splitlines()
+    table = course_map(tmp_path, guide=False).splitlines()
     assert table[0] == "| lesson | after it you can | handout task it answers | time |"
     assert len(table) == 2 + 2
     entry = lessons()["01"]
@@ -41,7 +46,7 @@ def test_every_lesson_says_what_a_student_can_do_after_it_how_long_and_shows_one
 
 def test_the_readme_lesson_table_is_the_course_map(capsys):
     """The README's table is generated: ``make notebooks`` runs ``python -m course map``."""
-    expected = course_map(link_prefix="notebooks/")
+    expected = course_map(link_prefix="notebooks/", guide=False)
     assert main(["map", "--link-prefix", "notebooks/"]) == 0
     assert capsys.readouterr().out == expected + "\n"
     start, end = README_MARKERS
@@ -73,3 +78,13 @@ def test_update_readme_rewrites_only_between_its_markers(tmp_path, capsys):
     readme.write_text("no markers\n")
     assert main(["map", "--readme", str(readme), "--notebooks", str(books)]) == 2
     assert "expected one line" in capsys.readouterr().err
+
+
+def test_the_course_map_notebook_shows_how_an_exercise_works_above_the_table(tmp_path):
+    write_notebook(tmp_path / "01_de_casteljau.ipynb", "# Lesson 01 · de Casteljau")
+    shown = course_map(tmp_path)
+    assert shown.startswith(EXERCISE_GUIDE) and shown.endswith(course_map(tmp_path, guide=False))
+    # What a student must read there: the stub to replace, run, PASS or FAIL, where to work.
+    for words in ('raise NotImplementedError("your code here")', "run the cell", "**PASS**",
+                  "**FAIL**", "student/", "make lab", "never"):  # fmt: skip
+        assert words in EXERCISE_GUIDE, words

@@ -36,7 +36,7 @@ NOT_FOUND = (
 PROMPT = "course.classroom.serving.PromptConnection"
 
 
-def lab_command(notebooks: Path, teacher: bool, extra: list[str]) -> list[str]:
+def lab_command(notebooks: str | Path, teacher: bool, extra: list[str]) -> list[str]:
     """The ``jupyter lab`` command line: rooted at the repository, opening a course map.
 
     Examples
@@ -47,6 +47,13 @@ def lab_command(notebooks: Path, teacher: bool, extra: list[str]) -> list[str]:
     >>> command[4]
     '--LabApp.default_url=/lab/tree/student/00_index.ipynb'
     """
+    if isinstance(notebooks, bool) or not isinstance(notebooks, (str, os.PathLike)):
+        raise TypeError(f"notebooks: expected a folder path; got {type(notebooks).__name__}")
+    if not isinstance(teacher, bool):
+        raise TypeError(f"teacher: expected True or False; got {type(teacher).__name__}")
+    if not isinstance(extra, list) or not all(isinstance(option, str) for option in extra):
+        raise TypeError(f"extra: expected a list of jupyter lab options; got {extra!r:.60}")
+    notebooks = Path(notebooks)
     root = notebooks.resolve().parent
     opened = notebooks.resolve() if teacher else root / "student"
     command = [

@@ -47,6 +47,8 @@ from typing import Any
 from course.classroom.folders import check_output_folder
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 
+# The helpers below __all__'s names (cell_source, check_notebook, notebook_text,
+# read_notebook, solution_bodies, EditionReport) serve this package's other editions.
 __all__ = [
     "BEGIN_SOLUTION",
     "END_SOLUTION",
@@ -56,14 +58,8 @@ __all__ = [
     "REVEALS_TAG",
     "SOLUTION_TAG",
     "STUB_LINE",
-    "EditionReport",
-    "cell_source",
-    "check_notebook",
     "exercise_stub",
-    "notebook_text",
-    "read_notebook",
     "reveals",
-    "solution_bodies",
     "solution_cells",
     "student_notebook",
     "write_student_edition",
@@ -135,11 +131,14 @@ def solution_bodies(source: str) -> list[tuple[int, int, str]]:
     >>> solution_bodies("def f(x):\\n    return 2 * x\\n\\nf(1)")
     [(1, 2, '    ')]
     """
+    if not isinstance(source, str):
+        raise TypeError(f"source: expected a cell's source text; got {type(source).__name__}")
     try:
         tree = ast.parse(source)
-    except SyntaxError as error:
+    except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte
         raise ValueError(
-            f"source: a solution cell must be valid Python; line {error.lineno}: {error.msg}"
+            f"source: a solution cell must be valid Python; "
+            f"line {getattr(error, 'lineno', '?')}: {getattr(error, 'msg', error)}"
         ) from None
     functions = [
         node for node in tree.body if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
@@ -227,7 +226,14 @@ def reveals(cell: dict[str, Any]) -> bool:
 
 
 def cell_source(cell: dict[str, Any]) -> str:
-    """A cell's source as one string (nbformat stores a string or a list of lines)."""
+    """A cell's source as one string (nbformat stores a string or a list of lines).
+
+    Examples
+    --------
+    >>> cell_source({"cell_type": "code", "source": ["x = 1\\n", "y = 2"]})
+    'x = 1\\ny = 2'
+    """
+    _check_cell(cell, "cell")
     source = cell["source"]
     return source if isinstance(source, str) else "".join(source)
 
@@ -325,7 +331,7 @@ def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
     return student
 
 
-@dataclass
+@dataclass(frozen=True)
 class EditionReport:
     """What :func:`write_student_edition` did, notebook by notebook."""
 
@@ -350,8 +356,11 @@ class EditionReport:
         return notes
 
 
-def read_notebook(path: Path) -> dict[str, Any]:
+def read_notebook(path: str | Path) -> dict[str, Any]:
     """The notebook JSON at ``path``, or a ValueError naming the file and what is wrong."""
+    if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path: expected a notebook file's path; got {type(path).__name__}")
+    path = Path(path)
     try:
         notebook = json.loads(path.read_text(encoding="utf-8"))
     except (json.JSONDecodeError, UnicodeDecodeError) as error:
@@ -367,7 +376,14 @@ def read_notebook(path: Path) -> dict[str, Any]:
 
 def notebook_text(notebook: dict[str, Any]) -> str:
     """The file text JupyterLab writes for ``notebook``: sorted keys, one-space indent."""
-    return json.dumps(notebook, sort_keys=True, indent=1, ensure_ascii=False) + "\n"
+    check_notebook(notebook)
+    try:
+        return (
+            json.dumps(notebook, sort_keys=True, indent=1, ensure_ascii=False, allow_nan=False)
+            + "\n"
+        )
+    except (TypeError, ValueError) as error:
+        raise ValueError(f"notebook: not JSON that a notebook file can hold ({error})") from None
 
 
 def _work(text: str) -> str:

@@ -136,10 +136,10 @@ def exercises(notebook: dict[str, Any]) -> list[Exercise]:
         source = cell_source(notebook["cells"][index])
         try:
             tree = ast.parse(source)
-        except SyntaxError as error:
+        except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte
             raise ValueError(
                 f"notebook cell {index}: a solution cell must be valid Python; "
-                f"line {error.lineno}: {error.msg}"
+                f"line {getattr(error, 'lineno', '?')}: {getattr(error, 'msg', error)}"
             ) from None
         functions = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
         last = tree.body[-1] if tree.body else None
@@ -306,7 +306,7 @@ def reference(name: str) -> Callable[..., Any]:
     >>> reference("comb")(5, 2)
     10
     """
-    if name not in REFERENCES:
+    if not isinstance(name, str) or name not in REFERENCES:
         raise ValueError(f"name: expected one of {sorted(REFERENCES)}; got {name!r:.60}")
     module, attribute = REFERENCES[name].split(":")
     return getattr(importlib.import_module(module), attribute)

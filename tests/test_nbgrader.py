@@ -22,6 +22,7 @@ import json
 import os
 import re
 import sys
+from html import unescape
 from pathlib import Path
 
 import pytest
@@ -269,7 +270,7 @@ def test_nbgrader_autogrades_and_explains_the_lesson(book, course, api):
     assert sum(marks["stubs"].values()) == 0, marks["stubs"]
     row = []
     for student, wrong in planted.items():
-        html = (course / "feedback" / student / lesson / f"{lesson}.html").read_text()
+        html = unescape((course / "feedback" / student / lesson / f"{lesson}.html").read_text())
         for grade_id, score in marks[student].items():
             function = tests[grade_id].function
             if function in wrong:
@@ -277,7 +278,7 @@ def test_nbgrader_autogrades_and_explains_the_lesson(book, course, api):
                 assert score == 0, f"{function} with '{name}' scored {score}"
                 assert first_line.split(":")[0] in html, (function, name, first_line)
                 if named:
-                    assert f"This is a known mistake, {named}" in html.replace("&#x27;", "'")
+                    assert f"This is a known mistake, {named}" in html
                 row.append(f"{function} '{name}' {available - EXERCISE_POINTS:g}/{available}")
             else:
                 assert score == EXERCISE_POINTS, f"{function} lost points for another mistake"

@@ -15,6 +15,9 @@ PROMPT := course.classroom.serving.PromptConnection
 # `make site-teacher` the teacher's, with the answers: never publish that one.
 SITE := build/site
 TEACHER_SITE := build/site-teacher
+# MathJax for the website's formulas: npm's mathjax package, pinned.
+MATHJAX_VERSION := 3.2.2
+MATHJAX := build/mathjax-$(MATHJAX_VERSION)
 # Where `make nbgrader` writes the nbgrader course folder.
 NBGRADER := build/nbgrader
 
@@ -137,9 +140,7 @@ site: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
 	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site build/site-source $(SITE)
 	@echo "make: the website is in $(SITE)/; open $(SITE)/index.html"
 
-# MathJax from npm's registry, pinned; fetched once, then served by the site itself.
-MATHJAX_VERSION := 3.2.2
-MATHJAX := build/mathjax-$(MATHJAX_VERSION)
+# MathJax, fetched once from npm's registry, then served by the site itself.
 $(MATHJAX)/es5/tex-mml-chtml.js:
 	rm -rf $(MATHJAX) && mkdir -p $(MATHJAX)
 	cd $(MATHJAX) && npm pack --silent mathjax@$(MATHJAX_VERSION) > /dev/null

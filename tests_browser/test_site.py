@@ -4,9 +4,8 @@ The built site (``build/site/``, or ``$SITE``) is served over HTTP on 127.0.0.1,
 browser may fetch nothing else: a request that leaves the site is aborted, so the test
 sees what a reader offline would: formulas must be typeset by the MathJax the site ships.
 No page may show three consecutive lines of an exercise's solution. Every HTML page of the
-build must load, every picture
-on it decode, and every link that stays inside the site reach a file, and an anchor the
-element it names. The landing page must be the course map, linking every lesson. A
+build must load, every picture on it decode, and every link that stays inside the site
+reach a file, and an anchor the element it names. The landing page must be the course map, linking every lesson. A
 screenshot of the landing page and of lesson 01 goes to ``docs/browser/``.
 """
 

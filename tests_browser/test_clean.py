@@ -39,6 +39,7 @@ def git(copy: Path, *arguments: str) -> subprocess.CompletedProcess:
 def copy(tmp_path_factory) -> Path:
     folder = tmp_path_factory.mktemp("clean") / "course"
     shutil.copytree(REPOSITORY / "notebooks", folder / "notebooks")
+    shutil.copy2(REPOSITORY / ".gitignore", folder / ".gitignore")  # JupyterLab's checkpoints
     for command in (
         ["init", "-q"],
         ["add", "-A"],
@@ -92,13 +93,17 @@ def test_open_run_all_and_save_leaves_git_clean(name, copy, clean_lab, page: Pag
         opened = status(copy)
         print(f"\n{name}: after open and save, git status: {opened or 'clean'}")
         assert git(copy, "diff", "--quiet").returncode == 0, git(copy, "diff").stdout[:3000]
+        assert opened == ""
         run_all_cells(page)
         save(page, path)
         ran = status(copy)
         print(f"{name}: after Run All and save, git status: {ran or 'clean'}")
         difference = git(copy, "diff").stdout
-        changed = sorted(set(re.findall(r"^[-+]\s+(\"[\w/.+-]+\")", difference, re.MULTILINE)))
+        changed = re.findall(r"^[-+](?![-+]).*$", difference, re.MULTILINE)
+        if changed:
+            print(f"{name}: {len(changed)} changed lines, such as:", *changed[:6], sep="\n  ")
         assert git(copy, "diff", "--quiet").returncode == 0, (changed, difference[:3000])
+        assert ran == ""
     finally:
         shut_down_kernels(clean_lab)
         git(copy, "checkout", "--", ".")

@@ -5,8 +5,9 @@ browser may fetch nothing else: a request that leaves the site is aborted, so th
 sees what a reader offline would: formulas must be typeset by the MathJax the site ships.
 No page may show three consecutive lines of an exercise's solution. Every HTML page of the
 build must load, every picture on it decode, and every link that stays inside the site
-reach a file, and an anchor the element it names. The landing page must be the course map, linking every lesson. A
-screenshot of the landing page and of lesson 01 goes to ``docs/browser/``.
+reach a file, and an anchor the element it names. The landing page must be the course
+map, linking every lesson. A screenshot of the landing page and of lesson 01 goes to
+``docs/browser/``.
 """
 
 from __future__ import annotations

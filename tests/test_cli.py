@@ -120,3 +120,18 @@ def test_the_nbgrader_command_writes_a_course_folder_and_keeps_a_teachers_config
     assert main(["nbgrader", "--out", str(out)]) == 2  # not empty: --force to rewrite
     assert main(["nbgrader", "--out", str(out), "--force"]) == 0
     assert "# mine" in (out / "nbgrader_config.py").read_text()
+
+
+def test_lab_takes_over_a_student_folder_written_before_the_manifest(tmp_path, monkeypatch):
+    lessons = tmp_path / "notebooks"
+    lessons.mkdir()
+    write_notebook(lessons / "01_first.ipynb", "# First")
+    old = tmp_path / "student" / "01_first.ipynb"
+    old.parent.mkdir()
+    old.write_text(json.dumps({"cells": [], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}))
+    started = []
+    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    assert main(["lab", "--notebooks", str(lessons), "--no-browser"]) == 0
+    assert started and started[0][-1] == "--no-browser"
+    assert json.loads(old.read_text())["cells"] == []  # the old copy is kept as the student's
+    assert (tmp_path / "student" / "01_first.new.ipynb").is_file()

@@ -139,8 +139,10 @@ def main(argv: list[str] | None = None) -> int:
     try:
         if args.command == "lab":
             if not args.teacher:
+                # student/ is the edition's own folder: one written before the edition kept
+                # a manifest is taken over (its notebooks count as the student's work).
                 report = edition.write_student_edition(
-                    args.notebooks.resolve().parent / "student", args.notebooks
+                    args.notebooks.resolve().parent / "student", args.notebooks, force=True
                 )
                 for line in report.lines():
                     print(f"student/: {line}", file=sys.stderr)

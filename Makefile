@@ -11,13 +11,20 @@ APP_PORT ?= 8866
 ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 # Kernel messages sent at once, not held back by Nagle's algorithm (course.classroom.serving).
 PROMPT := course.classroom.serving.PromptConnection
-# Where `make site` writes the course's website.
+# Where `make site` writes the course's website (the student edition: no answers), and
+# `make site-teacher` the teacher's, with the answers: never publish that one.
 SITE := build/site
+TEACHER_SITE := build/site-teacher
+# MathJax for the website's formulas: npm's mathjax package, pinned.
+MATHJAX_VERSION := 3.2.2
+MATHJAX := build/mathjax-$(MATHJAX_VERSION)
+# Where `make nbgrader` writes the nbgrader course folder.
+NBGRADER := build/nbgrader
 
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
 .DEFAULT_GOAL := help
-.PHONY: help lab app student test test-latest test-browser fuzz lint format notebooks site \
+.PHONY: help lab teach app student nbgrader site-teacher test test-latest test-browser fuzz lint format notebooks site \
 	bench bench-browser hub bench-hub lock clean
 
 ## help: this list of targets
@@ -29,8 +36,10 @@ help:
 	@echo "Python 3.10 or newer is needed: make lab PYTHON=python3.12 picks another one."
 
 # The install sets: pyproject.toml's name for each (for `make lock` and `make test-latest`),
-# and the lock pip installs from by default. Students get `lab`; `test` is the developer's set.
+# and the lock pip installs from by default. Students get `lab`; `test` is the developer's set;
+# `grade` the teacher's nbgrader.
 UV_lab := --extra lab
+UV_grade := --extra grade
 UV_app := --extra app
 UV_test := --group pyproject.toml:dev
 UV_browser := --extra browser
@@ -38,13 +47,14 @@ UV_bench := --extra bench
 UV_hub := --extra hub
 UV_site := --group pyproject.toml:site
 PIP_lab := -e ".[lab]"
+PIP_grade := -e ".[grade]"
 PIP_app := -e ".[app]"
 PIP_test := -e . --group dev
 PIP_browser := -e ".[browser]"
 PIP_bench := -e ".[bench]"
 PIP_hub := -e ".[hub]"
 PIP_site := -e . --group site
-SETS := lab app test browser bench site hub
+SETS := lab grade app test browser bench site hub
 
 # Checks before anything is installed: the Python version, then the venv module.
 $(BIN)/python:
@@ -72,25 +82,34 @@ $(VENV)/.%-installed: $(LOCK)/%.txt pyproject.toml | $(BIN)/python
 		$(if $(LATEST),--upgrade --upgrade-strategy eager $(PIP_$*),-r $(LOCK)/$*.txt -e .)
 	touch $@
 
-## lab: install the lessons, then open them in JupyterLab at the course map
-# With student/ beside notebooks/ so a teacher can open the student edition in the same
-# session. It is written only if missing: work a student saved there is never overwritten.
+## lab: for students: update the student edition in student/, open its course map in JupyterLab
+# `python -m course lab` writes new and changed lessons into student/, never over one the
+# student edited (a changed lesson goes beside it), and adds --allow-root when run as root.
 lab: $(VENV)/.lab-installed
-	test -d student || $(BIN)/python -m course student --out student
 	@echo "make: JupyterLab opens at the course map; its address is printed below, under" \
 		"'Or copy and paste one of these URLs'. Stop it with Ctrl-C, twice."
-	$(BIN)/jupyter lab --ServerApp.root_dir=. \
-		--LabApp.default_url=/lab/tree/notebooks/00_index.ipynb \
-		$(ROOT_FLAG) --ServerApp.kernel_websocket_connection_class=$(PROMPT)
+	$(BIN)/python -m course lab
+
+## teach: for teachers: the solved lessons in notebooks/, in JupyterLab
+teach: $(VENV)/.lab-installed
+	$(BIN)/python -m course lab --teacher
 
 ## app: the lessons as apps for a projector: Voila, code hidden, sliders live
 app: $(VENV)/.app-installed
 	$(BIN)/voila notebooks/ --no-browser --Voila.ip=127.0.0.1 --port=$(APP_PORT) \
 		--Voila.kernel_websocket_connection_class=$(PROMPT)
 
-## student: (re)write the student edition in student/: solutions stubbed, outputs cleared
+## student: write or update the student edition in student/; a student's edits are kept
 student: $(VENV)/.lab-installed
-	$(BIN)/python -m course student --out student --force
+	$(BIN)/python -m course student --out student
+
+## nbgrader: write the nbgrader course folder build/nbgrader/ (see the README, For teachers)
+# Its source/ is rewritten from the lessons; release/, submitted/, the gradebook and an
+# nbgrader_config.py already there are left alone.
+nbgrader: $(VENV)/.grade-installed
+	$(BIN)/python -m course nbgrader --out $(NBGRADER) --force
+	@echo "make: the nbgrader course is in $(NBGRADER)/; from there, with .venv/bin on PATH:" \
+		"nbgrader generate_assignment 01_de_casteljau"
 
 ## lint: ruff's format check and lint, on the pinned ruff
 lint: $(VENV)/.test-installed
@@ -115,12 +134,27 @@ test-latest:
 fuzz: $(VENV)/.test-installed
 	COURSE_FUZZ=long $(BIN)/python -m pytest tests/test_fuzz.py -q -s -n 0 -p no:cacheprovider
 
-## site: build the course's website in build/site/ from the committed notebooks
-# The notebooks are not re-executed: their committed outputs are the pages' pictures.
-site: $(VENV)/.site-installed
-	$(BIN)/python site/stage.py build/site-source
+## site: build the course's website in build/site/: the student edition, safe to publish
+# Exercises show their stubs; every other cell keeps its committed output (the notebooks are
+# not re-executed). MathJax is bundled from its npm package, so formulas render offline.
+site: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
+	$(BIN)/python site/stage.py --mathjax $(MATHJAX)/es5 build/site-source
 	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site build/site-source $(SITE)
 	@echo "make: the website is in $(SITE)/; open $(SITE)/index.html"
+
+# MathJax, fetched once from npm's registry, then served by the site itself.
+$(MATHJAX)/es5/tex-mml-chtml.js:
+	rm -rf $(MATHJAX) && mkdir -p $(MATHJAX)
+	cd $(MATHJAX) && npm pack --silent mathjax@$(MATHJAX_VERSION) > /dev/null
+	tar -xzf $(MATHJAX)/mathjax-$(MATHJAX_VERSION).tgz -C $(MATHJAX) --strip-components=1
+	touch $@
+
+## site-teacher: the website with the answers, in build/site-teacher/: for teachers only
+site-teacher: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
+	$(BIN)/python site/stage.py --teacher --mathjax $(MATHJAX)/es5 build/site-teacher-source
+	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site build/site-teacher-source \
+		$(TEACHER_SITE)
+	@echo "make: the teacher's website is in $(TEACHER_SITE)/; do not publish it"
 
 ## test-browser: build the website, then check its pages and run every lesson in Chromium
 # Debian's Chromium (/usr/bin/chromium); screenshots in build/screenshots/. Not in `make test`.

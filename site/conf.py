@@ -2,7 +2,9 @@
 
 The source is ``build/site-source/``, written by ``site/stage.py`` from the committed
 notebooks; myst-nb renders their outputs as committed (nothing is executed), and the
-build needs no network.
+build needs no network. Formulas are typeset by the MathJax that ``site/stage.py`` bundled
+into the source's ``_mathjax/`` (from npm's ``mathjax`` package): the pages load it from
+the site itself, never from a CDN, so they render offline.
 """
 
 from __future__ import annotations
@@ -19,7 +21,9 @@ html_title = "Computer graphics: Bézier curves, pixels and the 2D lab"
 
 extensions = ["myst_nb"]
 root_doc = "index"
-exclude_patterns = ["_build", "**.ipynb_checkpoints", "alt.json"]
+exclude_patterns = ["_build", "**.ipynb_checkpoints", "alt.json", "_mathjax"]
+# Relative to _static/, where _bundle_mathjax copies the staged MathJax.
+mathjax_path = "mathjax/tex-mml-chtml.js"
 
 # The committed outputs are the pages' pictures: never re-execute.
 nb_execution_mode = "off"
@@ -44,6 +48,17 @@ def _set_alt_text(app, doctree) -> None:
             node["alt"] = described
 
 
+def _bundle_mathjax(app, config) -> None:
+    """Serve the MathJax that site/stage.py staged, from the site's own _static/."""
+    bundled = Path(app.srcdir) / "_mathjax"
+    if not (bundled / mathjax_path).is_file():
+        raise RuntimeError(
+            f"{bundled / mathjax_path} is missing: stage the site with --mathjax (make site)"
+        )
+    config.html_static_path = [*config.html_static_path, str(bundled)]
+
+
 def setup(app):
+    app.connect("config-inited", _bundle_mathjax)
     app.connect("doctree-read", _set_alt_text)
     return {"parallel_read_safe": True}

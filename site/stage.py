@@ -1,6 +1,10 @@
 """Stage the committed notebooks as the website's source: ``python site/stage.py OUT``.
 
-Nothing is executed: the pages show the outputs committed in ``notebooks/``. Staging
+Nothing is executed: the pages show the outputs committed in ``notebooks/``. The site is
+the student edition, safe to publish: each exercise shows its stub, without the solution's
+output, and a cell that reveals a solution another way shows the student edition's note
+instead (``course.classroom.edition``); ``--teacher`` keeps the answers, for a teacher's
+own copy. Staging
 
 - copies every ``NN_topic.ipynb``, the course map ``00_index.ipynb`` as ``index.ipynb``
   (the landing page), its links rewritten, and a hidden table of contents added to it;
@@ -8,7 +12,10 @@ Nothing is executed: the pages show the outputs committed in ``notebooks/``. Sta
 - writes ``alt.json``: for each picture (by the SHA-256 of its bytes, which names the file
   myst-nb writes) its alt text: the gallery's caption when the picture is one of the gallery's
   (``python -m course gallery``, same pixels), else the output's own text, else a description
-  from the lesson's title. ``site/conf.py`` sets it on the page's ``<img>``.
+  from the lesson's title. ``site/conf.py`` sets it on the page's ``<img>``;
+- copies MathJax (``--mathjax``: the ``es5`` folder of npm's ``mathjax`` package, which
+  ``make site`` fetches with ``npm pack``) into ``_mathjax/``, what a page loads to typeset
+  its formulas and nothing more, so that formulas render offline.
 """
 
 from __future__ import annotations
@@ -23,7 +30,24 @@ import shutil
 import sys
 from pathlib import Path
 
+from course.classroom.edition import (
+    EXERCISE_TAG,
+    HIDDEN_NOTE,
+    SOLUTION_TAG,
+    exercise_stub,
+    reveals,
+)
+
 REPOSITORY = Path(__file__).resolve().parent.parent
+#: What a page needs of MathJax's es5 folder: the combined TeX component, the TeX
+#: extensions it loads on demand, its fonts, and the menu's and accessibility's parts.
+MATHJAX_PARTS = (
+    "tex-mml-chtml.js",
+    "input/tex/extensions",
+    "output/chtml/fonts/woff-v2",
+    "a11y",
+    "ui",
+)
 NOTEBOOKS = REPOSITORY / "notebooks"
 LESSON_FILE = re.compile(r"^(\d\d)_\w+\.ipynb$")
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
@@ -63,8 +87,59 @@ def plain_heading(markdown: str) -> str | None:
     return re.sub(r"\[([^]]*)\]\([^)]*\)", r"\1", found.group(1)) if found else None
 
 
-def stage(out: Path, notebooks: Path = NOTEBOOKS, captions: dict[str, str] | None = None) -> int:
-    """Write the website's source to ``out``; return the number of pictures."""
+def student_cells(cells: list[dict]) -> list[dict]:
+    """The cells as the student edition shows them, the other cells' outputs kept.
+
+    An exercise shows its stub and no output (the solution's check said PASS); a cell
+    that reveals a solution is the student edition's note.
+    """
+    shown = []
+    for number, cell in enumerate(cells):
+        tags = cell.get("metadata", {}).get("tags", [])
+        if reveals(cell):
+            cell = {
+                "cell_type": "markdown",
+                "id": cell.get("id", f"hidden-{number}"),
+                "metadata": {"tags": ["hidden"]},
+                "source": HIDDEN_NOTE,
+            }
+        elif cell["cell_type"] == "code" and SOLUTION_TAG in tags:
+            cell = dict(cell, source=exercise_stub(text(cell["source"])), outputs=[])
+            cell["execution_count"] = None
+            cell["metadata"] = dict(
+                cell["metadata"], tags=[EXERCISE_TAG if t == SOLUTION_TAG else t for t in tags]
+            )
+        shown.append(cell)
+    return shown
+
+
+def bundle_mathjax(es5: Path, out: Path) -> None:
+    """Copy what a page needs of MathJax's ``es5`` folder into ``out``."""
+    if not (es5 / MATHJAX_PARTS[0]).is_file():
+        raise SystemExit(
+            f"site/stage.py: no MathJax in {es5}: pass --mathjax, the es5 folder of npm's "
+            "mathjax package (make site fetches it with npm pack)"
+        )
+    for part in MATHJAX_PARTS:
+        source, target = es5 / part, out / part
+        target.parent.mkdir(parents=True, exist_ok=True)
+        if source.is_dir():
+            shutil.copytree(source, target)
+        else:
+            shutil.copy2(source, target)
+
+
+def stage(
+    out: Path,
+    notebooks: Path = NOTEBOOKS,
+    captions: dict[str, str] | None = None,
+    teacher: bool = False,
+    mathjax: Path | None = None,
+) -> int:
+    """Write the website's source to ``out``; return the number of pictures.
+
+    The student edition unless ``teacher``; MathJax bundled from ``mathjax`` if given.
+    """
     captions = gallery_captions() if captions is None else captions
     if out.exists():
         shutil.rmtree(out)
@@ -82,6 +157,8 @@ def stage(out: Path, notebooks: Path = NOTEBOOKS, captions: dict[str, str] | Non
             path.stem,
         )
         count = 0
+        if not teacher:
+            notebook["cells"] = student_cells(notebook["cells"])
         # nbformat 4.5 cells carry ids; the committed ones are normalised without.
         notebook["nbformat_minor"] = max(notebook.get("nbformat_minor", 0), 5)
         for number, cell in enumerate(notebook["cells"]):
@@ -125,6 +202,8 @@ def stage(out: Path, notebooks: Path = NOTEBOOKS, captions: dict[str, str] | Non
             )
         (out / name).write_text(json.dumps(notebook, ensure_ascii=False, indent=1), "utf-8")
     (out / "alt.json").write_text(json.dumps(alt, ensure_ascii=False, indent=1), "utf-8")
+    if mathjax is not None:
+        bundle_mathjax(mathjax, out / "_mathjax" / "mathjax")
     return len(alt)
 
 
@@ -132,8 +211,14 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out", type=Path, help="the folder to write (replaced)")
     parser.add_argument("--notebooks", type=Path, default=NOTEBOOKS)
+    parser.add_argument(
+        "--teacher", action="store_true", help="keep the answers: never publish this build"
+    )
+    parser.add_argument(
+        "--mathjax", type=Path, help="the es5 folder of npm's mathjax package, bundled"
+    )
     args = parser.parse_args(argv)
-    pictures = stage(args.out, args.notebooks)
+    pictures = stage(args.out, args.notebooks, teacher=args.teacher, mathjax=args.mathjax)
     print(f"site/stage.py: {pictures} pictures staged in {args.out}", file=sys.stderr)
     return 0
 

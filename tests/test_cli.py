@@ -1,12 +1,16 @@
 """course.classroom.cli: ``python -m course``, and what each command has to load."""
 
 import json
+import re
 import subprocess
 import sys
+from pathlib import Path
 
+import pytest
 from conftest import write_notebook
 
-from course.classroom.cli import main
+from course.classroom.cli import lab_command, main
+from course.classroom.folders import inside_folder
 
 # Runs ``python -m course ARGS`` in a fresh interpreter, then reports which of the
 # heavy packages that run imported.
@@ -48,3 +52,86 @@ def test_the_probe_sees_what_a_command_loads(tmp_path):
 def test_bad_arguments_are_reported_without_a_traceback(tmp_path, capsys):
     assert main(["student", "--notebooks", str(tmp_path / "none"), "--out", str(tmp_path)]) == 2
     assert "expected a folder of NN_topic.ipynb files" in capsys.readouterr().err
+
+
+def test_an_out_folder_the_user_cannot_enter_is_a_message(tmp_path, capsys, monkeypatch):
+    """As root every folder can be entered: the refusal the file system gives is simulated."""
+    locked = tmp_path / "locked"
+    real_exists = Path.exists
+
+    def exists(path, *args, **kwargs):
+        if path == locked / "out" or locked in path.parents:
+            raise PermissionError(13, "Permission denied", str(path))
+        return real_exists(path, *args, **kwargs)
+
+    monkeypatch.setattr(Path, "exists", exists)
+    write_notebook(tmp_path / "01_first.ipynb", "# First")
+    out = locked / "out" / "student"
+    assert main(["student", "--notebooks", str(tmp_path), "--out", str(out)]) == 2
+    error = capsys.readouterr().err
+    assert "Permission denied" in error and len(error.strip().splitlines()) == 1
+
+
+def test_map_readme_refuses_a_folder_a_missing_file_and_a_read_only_one(
+    tmp_path, capsys, monkeypatch
+):
+    write_notebook(tmp_path / "01_first.ipynb", "# First")
+    for readme, said in [(tmp_path, "is a folder"), (tmp_path / "none.md", "is missing")]:
+        assert main(["map", "--notebooks", str(tmp_path), "--readme", str(readme)]) == 2
+        error = capsys.readouterr().err
+        assert said in error and len(error.strip().splitlines()) == 1
+    readme = tmp_path / "README.md"
+    readme.write_text("no table\n")
+    # os.access answers True to root for a read-only file: ask it as a student would be.
+    monkeypatch.setattr("os.access", lambda path, mode: False)
+    assert main(["map", "--notebooks", str(tmp_path), "--readme", str(readme)]) == 2
+    assert "permission denied" in capsys.readouterr().err
+    assert readme.read_text() == "no table\n"
+
+
+def test_a_path_suffix_that_leaves_its_folder_is_refused():
+    with pytest.raises(ValueError, match="suffix"):
+        inside_folder(Path("out"), "a", "/../../x")
+    with pytest.raises(ValueError, match="name"):
+        inside_folder(Path("out"), "..", "")
+    assert inside_folder(Path("out"), "a", ".png") == Path("out/a.png")
+
+
+def test_lab_opens_the_student_edition_or_the_teachers_with_allow_root_as_root(monkeypatch):
+    notebooks = Path("/course/notebooks")
+    student = lab_command(notebooks, False, ["--no-browser"])
+    teacher = lab_command(notebooks, True, [])
+    assert "--LabApp.default_url=/lab/tree/student/00_index.ipynb" in student
+    assert "--LabApp.default_url=/lab/tree/notebooks/00_index.ipynb" in teacher
+    assert student[-1] == "--no-browser" and "--ServerApp.root_dir=/course" in student
+    monkeypatch.setattr("os.geteuid", lambda: 0)
+    assert "--allow-root" in lab_command(notebooks, False, [])
+    monkeypatch.setattr("os.geteuid", lambda: 1000)
+    assert "--allow-root" not in lab_command(notebooks, False, [])
+
+
+def test_the_nbgrader_command_writes_a_course_folder_and_keeps_a_teachers_config(tmp_path):
+    out = tmp_path / "grading"
+    assert main(["nbgrader", "--out", str(out)]) == 0
+    sources = sorted(path.parent.name for path in out.glob("source/*/*.ipynb"))
+    assert sources and all(re.fullmatch(r"\d\d_\w+", name) for name in sources)
+    assert "00_index" not in sources
+    (out / "nbgrader_config.py").write_text("c = get_config()  # mine\n")
+    assert main(["nbgrader", "--out", str(out)]) == 2  # not empty: --force to rewrite
+    assert main(["nbgrader", "--out", str(out), "--force"]) == 0
+    assert "# mine" in (out / "nbgrader_config.py").read_text()
+
+
+def test_lab_takes_over_a_student_folder_written_before_the_manifest(tmp_path, monkeypatch):
+    lessons = tmp_path / "notebooks"
+    lessons.mkdir()
+    write_notebook(lessons / "01_first.ipynb", "# First")
+    old = tmp_path / "student" / "01_first.ipynb"
+    old.parent.mkdir()
+    old.write_text(json.dumps({"cells": [], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}))
+    started = []
+    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    assert main(["lab", "--notebooks", str(lessons), "--no-browser"]) == 0
+    assert started and started[0][-1] == "--no-browser"
+    assert json.loads(old.read_text())["cells"] == []  # the old copy is kept as the student's
+    assert (tmp_path / "student" / "01_first.new.ipynb").is_file()

@@ -7,6 +7,7 @@ from conftest import write_notebook
 
 from course.classroom.cli import main
 from course.classroom.course_map import (
+    EXERCISE_GUIDE,
     HANDOUTS,
     README_MARKERS,
     course_map,
@@ -23,7 +24,7 @@ README = Path(__file__).resolve().parent.parent / "README.md"
 def test_one_row_per_lesson_with_its_registry_entry_or_its_summary(tmp_path):
     write_notebook(tmp_path / "01_de_casteljau.ipynb", "# Lesson 01 · de Casteljau")
     write_notebook(tmp_path / "42_unregistered.ipynb", "# Later\n\nIt does | this.")
-    table = course_map(tmp_path).splitlines()
+    table = course_map(tmp_path, guide=False).splitlines()
     assert table[0] == "| lesson | after it you can | handout task it answers | time |"
     assert len(table) == 2 + 2
     entry = lessons()["01"]
@@ -48,7 +49,7 @@ def test_every_lesson_says_what_a_student_can_do_after_it_how_long_and_shows_one
 
 def test_the_readme_lesson_table_is_the_course_map(capsys):
     """The README's table is generated: ``make notebooks`` runs ``python -m course map``."""
-    expected = course_map(link_prefix="notebooks/")
+    expected = course_map(link_prefix="notebooks/", guide=False)
     assert main(["map", "--link-prefix", "notebooks/"]) == 0
     assert capsys.readouterr().out == expected + "\n"
     start, end = README_MARKERS
@@ -108,3 +109,13 @@ def test_every_lesson_links_to_the_handout_key_in_the_course_map():
         if book.number == "00":
             continue
         assert "00_index.ipynb#The-handouts" in book.path.read_text(encoding="utf-8"), book.path
+
+
+def test_the_course_map_notebook_shows_how_an_exercise_works_above_the_table(tmp_path):
+    write_notebook(tmp_path / "01_de_casteljau.ipynb", "# Lesson 01 · de Casteljau")
+    shown = course_map(tmp_path)
+    assert shown.startswith(EXERCISE_GUIDE) and shown.endswith(course_map(tmp_path, guide=False))
+    # What a student must read there: the stub to replace, run, PASS or FAIL, where to work.
+    for words in ('raise NotImplementedError("your code here")', "run the cell", "**PASS**",
+                  "**FAIL**", "student/", "make lab", "never"):  # fmt: skip
+        assert words in EXERCISE_GUIDE, words

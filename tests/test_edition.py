@@ -3,7 +3,11 @@
 import ast
 import copy
 import difflib
+import importlib.util
 import json
+import subprocess
+import sys
+from pathlib import Path
 
 import nbformat
 import pytest
@@ -14,6 +18,8 @@ from course.classroom.edition import (
     BEGIN_SOLUTION,
     END_SOLUTION,
     HIDDEN_NOTE,
+    KERNELSPEC,
+    MANIFEST,
     STUB_LINE,
     exercise_stub,
     reveals,
@@ -134,9 +140,149 @@ def test_write_student_edition_refuses_a_non_empty_folder_unless_forced(tmp_path
     assert main(["student", "--out", str(tmp_path)]) == 2
     assert main(["student", "--out", str(tmp_path), "--force"]) == 0
     names = sorted(path.name for path in tmp_path.iterdir())
-    assert names == sorted([book.path.name for book in notebooks(index=True)] + ["notes.txt"])
+    expected = [book.path.name for book in notebooks(index=True)] + ["notes.txt", MANIFEST]
+    assert names == sorted(expected)
     for path in tmp_path.glob("*.ipynb"):
         nbformat.validate(nbformat.read(path, as_version=4))
+
+
+def lesson_folder(folder, *sources):
+    """A folder of lessons 01, 02, ... whose single code cell has each source."""
+    folder.mkdir(exist_ok=True)
+    for number, source in enumerate(sources, start=1):
+        notebook = {
+            "cells": [
+                {"cell_type": "markdown", "metadata": {}, "source": f"# Lesson {number}"},
+                code_cell(source, ["solution"]) | {"outputs": [], "execution_count": None},
+            ],
+            "metadata": {},
+            "nbformat": 4,
+            "nbformat_minor": 5,
+        }
+        (folder / f"{number:02d}_lesson.ipynb").write_text(json.dumps(notebook))
+    return folder
+
+
+def edit(path, source):
+    notebook = json.loads(path.read_text())
+    notebook["cells"][1]["source"] = source
+    path.write_text(json.dumps(notebook))
+
+
+def test_rebuilding_the_edition_never_overwrites_a_students_work(tmp_path):
+    lessons = lesson_folder(tmp_path / "lessons", "def f(x):\n    return x\n\n\ncheck.f(f)")
+    out = tmp_path / "student"
+    first = write_student_edition(out, lessons)
+    assert [path.name for path in first.written] == ["01_lesson.ipynb"]
+    lesson = out / "01_lesson.ipynb"
+    assert STUB_LINE in json.loads(lesson.read_text())["cells"][1]["source"]
+    # Run only (outputs, counts): not work; an unchanged lesson is left as it is.
+    ran = json.loads(lesson.read_text())
+    ran["cells"][1]["outputs"] = [{"output_type": "stream", "name": "stdout", "text": "FAIL"}]
+    lesson.write_text(json.dumps(ran))
+    again = write_student_edition(out, lessons)
+    assert again.unchanged == [lesson] and again.written == []
+    # The student writes the function; a rebuild keeps it, and a new lesson is added.
+    edit(lesson, "def f(x):\n    return x  # mine\n\n\ncheck.f(f)")
+    lesson_folder(lessons, "def f(x):\n    return x\n\n\ncheck.f(f)", "def g():\n    pass")
+    kept = write_student_edition(out, lessons)
+    assert kept.kept == [lesson] and [p.name for p in kept.written] == ["02_lesson.ipynb"]
+    assert "# mine" in lesson.read_text()
+    # The lesson changes under the student's edits: the new one goes beside, and says so.
+    lesson_folder(lessons, "def f(x, y):\n    return x\n\n\ncheck.f(f)", "def g():\n    pass")
+    changed = write_student_edition(out, lessons)
+    beside = out / "01_lesson.new.ipynb"
+    assert changed.beside == [(lesson, beside)]
+    assert "# mine" in lesson.read_text() and "def f(x, y)" in beside.read_text()
+    assert "01_lesson.new.ipynb, beside it" in changed.lines()[0]
+    # A lesson the student never edited is updated in place.
+    edit(lessons / "02_lesson.ipynb", "def g(y):\n    pass")
+    updated = write_student_edition(out, lessons)
+    assert out / "02_lesson.ipynb" in updated.written
+    assert "def g(y)" in (out / "02_lesson.ipynb").read_text()
+    assert sorted(p.name for p in out.iterdir()) == [
+        MANIFEST, "01_lesson.ipynb", "01_lesson.new.ipynb", "02_lesson.ipynb"
+    ]  # fmt: skip
+
+
+def test_a_target_the_edition_cannot_write_is_refused_before_anything_is_written(tmp_path, capsys):
+    lessons = lesson_folder(tmp_path / "lessons", "def f():\n    pass", "def g():\n    pass")
+    out = tmp_path / "student"
+    (out / "02_lesson.ipynb").mkdir(parents=True)
+    assert main(["student", "--notebooks", str(lessons), "--out", str(out), "--force"]) == 2
+    error = capsys.readouterr().err
+    assert "02_lesson.ipynb is a folder" in error and len(error.strip().splitlines()) == 1
+    assert sorted(p.name for p in out.iterdir()) == ["02_lesson.ipynb"]  # nothing half-written
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: solution_cells({}),
+        lambda: solution_cells([]),
+        lambda: student_notebook({"cells": [{}]}),
+        lambda: student_notebook({"cells": [{"cell_type": "code", "source": 3}]}),
+        lambda: reveals({"cell_type": "code", "source": "", "metadata": None}),
+        lambda: exercise_stub("def f(:\n"),
+        lambda: student_notebook(
+            {
+                "cells": [
+                    {"cell_type": "code", "source": "def f(:", "metadata": {"tags": ["solution"]}}
+                ]
+            }
+        ),
+    ],
+)
+def test_a_malformed_notebook_or_cell_is_a_value_error(call):
+    with pytest.raises(ValueError, match=r"^(notebook|cell|source)"):
+        call()
+
+
+@pytest.mark.parametrize(
+    "text, said",
+    [("{}", "not an nbformat 4 notebook"), ("[1, 2]", "not an nbformat 4 notebook"),
+     ("{", "not a notebook file")],
+)  # fmt: skip
+@pytest.mark.parametrize("command", ["student", "gallery", "nbgrader"])
+def test_a_malformed_notebook_is_one_line_and_exit_2_for_every_command(
+    tmp_path, capsys, text, said, command
+):
+    (tmp_path / "lessons").mkdir()
+    (tmp_path / "lessons" / "01_x.ipynb").write_text(text)
+    out = tmp_path / "out"
+    code = main([command, "--notebooks", str(tmp_path / "lessons"), "--out", str(out)])
+    error = capsys.readouterr().err
+    assert code == 2 and said in error and len(error.strip().splitlines()) == 1, error
+    assert not out.exists() or not any(out.iterdir())
+
+
+def test_every_lesson_carries_the_kernelspec_jupyterlab_writes():
+    for book in notebooks(index=True):
+        notebook = json.loads(book.path.read_text(encoding="utf-8"))
+        assert notebook["metadata"]["kernelspec"] == KERNELSPEC, book.path.name
+
+
+def test_executing_and_stripping_as_make_notebooks_does_leaves_the_kernelspec(tmp_path):
+    """``make notebooks`` runs nbconvert --execute, then nbstripout: the metadata stays."""
+    lesson = json.loads((notebooks()[0].path).read_text(encoding="utf-8"))
+    notebook = {
+        "cells": [code_cell("print(6 * 7)") | {"outputs": [], "execution_count": None}],
+        "metadata": lesson["metadata"],
+        "nbformat": 4,
+        "nbformat_minor": 5,
+    }
+    path = tmp_path / "01_small.ipynb"
+    path.write_text(json.dumps(notebook))
+    bin_folder = Path(sys.executable).parent
+    for command in (
+        [bin_folder / "jupyter", "nbconvert", "--to", "notebook", "--execute", "--inplace", path],
+        [bin_folder / "nbstripout", "--keep-output", "--keep-count", path],
+    ):
+        done = subprocess.run(command, capture_output=True, text=True, timeout=300)
+        assert done.returncode == 0, done.stderr
+    executed = json.loads(path.read_text())
+    assert "".join(executed["cells"][0]["outputs"][0]["text"]) == "42\n"
+    assert executed["metadata"]["kernelspec"] == KERNELSPEC
 
 
 def result_text(cell) -> str:
@@ -221,3 +367,76 @@ def test_every_exercise_fails_as_shipped_passes_restored_and_nothing_gives_it_aw
     shown = "\n".join(cell.source + "\n" + output_text(cell) for cell in cells)
     leaked = answers & text_triples(shown)
     assert not leaked, f"{book.path.name} shows solution lines: {sorted(leaked)[:3]}"
+
+
+# The published website (site/stage.py) is the student edition too.
+_spec = importlib.util.spec_from_file_location(
+    "stage", Path(__file__).resolve().parent.parent / "site" / "stage.py"
+)
+stage = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(stage)
+
+
+def site_text(value) -> str:
+    return value if isinstance(value, str) else "".join(value)
+
+
+def site_solution_triples(source: str) -> set[tuple[str, ...]]:
+    """Every three consecutive lines the stub takes out of a solution."""
+    kept = {line.strip() for line in exercise_stub(source).splitlines()}
+    removed = [line.strip() for line in source.splitlines() if line.strip()]
+    removed = [line for line in removed if line not in kept]
+    return {tuple(removed[i : i + 3]) for i in range(len(removed) - 2)}
+
+
+def shown_triples(notebook: dict) -> set[tuple[str, ...]]:
+    """Every three consecutive lines a page shows: sources and text outputs."""
+    parts = []
+    for cell in notebook["cells"]:
+        parts.append(site_text(cell["source"]))
+        for output in cell.get("outputs", []):
+            parts.append(site_text(output.get("text", "")))
+            for kind, value in output.get("data", {}).items():
+                if kind.startswith("text/"):
+                    parts.append(site_text(value))
+    lines = [line.strip() for part in parts for line in part.splitlines() if line.strip()]
+    return {tuple(lines[i : i + 3]) for i in range(len(lines) - 2)}
+
+
+def fake_mathjax(folder: Path) -> Path:
+    for part in stage.MATHJAX_PARTS:
+        path = folder / part if part.endswith(".js") else folder / part / "x.js"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(f"// {part}")
+    (folder / "sre").mkdir()
+    (folder / "sre" / "big.js").write_text("// not needed by a page")
+    return folder
+
+
+def test_the_published_source_shows_stubs_and_no_solution_and_the_teachers_keeps_them(tmp_path):
+    stage.stage(tmp_path / "site", captions={}, mathjax=fake_mathjax(tmp_path / "es5"))
+    stage.stage(tmp_path / "teacher", captions={}, teacher=True)
+    leaking_pages = 0
+    exercises = 0
+    for book in notebooks(index=True):
+        teacher = json.loads(book.path.read_text(encoding="utf-8"))
+        name = "index.ipynb" if book.number == "00" else book.path.name
+        page = json.loads((tmp_path / "site" / name).read_text(encoding="utf-8"))
+        answers = set()
+        for before, after in zip(teacher["cells"], page["cells"], strict=False):
+            if "solution" in before.get("metadata", {}).get("tags", []):
+                exercises += 1
+                answers |= site_solution_triples(site_text(before["source"]))
+                assert STUB_LINE in after["source"] and after["outputs"] == []
+            elif reveals(before):
+                assert after["source"] == HIDDEN_NOTE
+        if answers & shown_triples(page):
+            leaking_pages += 1
+        kept = json.loads((tmp_path / "teacher" / name).read_text(encoding="utf-8"))
+        assert answers <= shown_triples(kept), "the teacher's build keeps the solutions"
+    assert exercises > 0
+    assert leaking_pages == 0
+    bundled = tmp_path / "site" / "_mathjax" / "mathjax"
+    assert (bundled / "tex-mml-chtml.js").is_file()
+    assert (bundled / "output" / "chtml" / "fonts" / "woff-v2" / "x.js").is_file()
+    assert not (bundled / "sre").exists()

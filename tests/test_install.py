@@ -6,6 +6,7 @@ jupyter lab) in a temporary copy of the repository, so that they cannot rot.
 
 from __future__ import annotations
 
+import json
 import os
 import re
 import shutil
@@ -30,7 +31,7 @@ except ModuleNotFoundError:  # Python 3.10: pytest's own TOML reader
 REPOSITORY = Path(__file__).resolve().parent.parent
 PYPROJECT = tomllib.loads((REPOSITORY / "pyproject.toml").read_text(encoding="utf-8"))
 LOCKS = REPOSITORY / "requirements"
-SETS = ("lab", "app", "test", "browser", "bench", "site", "hub")
+SETS = ("lab", "grade", "app", "test", "browser", "bench", "site", "hub")
 REQUIREMENT = re.compile(r"^([A-Za-z0-9][A-Za-z0-9._-]*)(\[[^]]*\])?\s*(.*)$")
 
 
@@ -147,7 +148,9 @@ def test_every_set_is_locked_within_the_whole_lock():
 def test_a_student_installs_no_developer_tools():
     lab = {name for name, _ in pins(LOCKS / "lab.txt")}
     assert {"jupyterlab", "ipywidgets", "numpy"} <= lab
-    assert not lab & {"pytest", "hypothesis", "ruff", "playwright", "sphinx", "voila"}
+    assert not lab & {"pytest", "hypothesis", "ruff", "playwright", "sphinx", "voila", "nbgrader"}
+    grade = {name for name, _ in pins(LOCKS / "grade.txt")}
+    assert {"nbgrader", "jupyterlab", "numpy"} <= grade
     browser = {name for name, _ in pins(LOCKS / "browser.txt")}
     assert {"playwright", "voila", "jupyterlab"} <= browser
 
@@ -249,7 +252,7 @@ def test_the_readmes_commands_install_from_the_lock_and_start_jupyterlab(tmp_pat
     clone = tmp_path / "course"
     copy_of_the_repository(clone)
     *install, start = readme_block("sh", "### Without make")
-    assert start.startswith(".venv/bin/jupyter lab notebooks/00_index.ipynb")
+    assert start == ".venv/bin/python -m course lab"
     for command in install:
         done = subprocess.run(
             command, shell=True, cwd=clone, capture_output=True, text=True, timeout=1200
@@ -263,7 +266,9 @@ def test_the_readmes_commands_install_from_the_lock_and_start_jupyterlab(tmp_pat
         sock.bind(("127.0.0.1", 0))
         port = sock.getsockname()[1]
     extra = f" --no-browser --ServerApp.port={port} --ServerApp.port_retries=0"
-    extra += " --IdentityProvider.token=" + (" --allow-root" if os.geteuid() == 0 else "")
+    # Only what a test needs on top: a free port, no browser, no token. As root too, the
+    # block as printed must start the server (python -m course lab adds --allow-root).
+    extra += " --IdentityProvider.token="
     log = (tmp_path / "lab.log").open("w")
     server = subprocess.Popen(
         start + extra,
@@ -286,8 +291,12 @@ def test_the_readmes_commands_install_from_the_lock_and_start_jupyterlab(tmp_pat
             except (urllib.error.URLError, ConnectionError, TimeoutError):
                 assert time.monotonic() < deadline, (tmp_path / "lab.log").read_text()
                 time.sleep(0.5)
-        with urllib.request.urlopen(base + "/api/contents/00_index.ipynb") as response:
+        # The server opens the student edition, written before it started.
+        with urllib.request.urlopen(base + "/api/contents/student/00_index.ipynb") as response:
             assert response.status == 200
+        with urllib.request.urlopen(base + "/api/contents/student/01_de_casteljau.ipynb") as got:
+            lesson = json.loads(got.read())["content"]
+        assert any("your code here" in "".join(cell["source"]) for cell in lesson["cells"])
     finally:
         os.killpg(server.pid, 15)
         server.wait(timeout=30)

@@ -2,19 +2,24 @@
 
 The built site (``build/site/``, or ``$SITE``) is served over HTTP on 127.0.0.1, and the
 browser may fetch nothing else: a request that leaves the site is aborted, so the test
-sees what a reader offline would. Every HTML page of the build must load, every picture
-on it decode, and every link that stays inside the site reach a file, and an anchor the
-element it names. The landing page must be the course map, linking every lesson. A
-screenshot of the landing page and of lesson 01 goes to ``docs/browser/``.
+sees what a reader offline would: formulas must be typeset by the MathJax the site ships.
+No page may show three consecutive lines of an exercise's solution. Every HTML page of the
+build must load, every picture on it decode, and every link that stays inside the site
+reach a file, and an anchor the element it names. The landing page must be the course
+map, linking every lesson. A screenshot of the landing page and of lesson 01 goes to
+``docs/browser/``.
 """
 
 from __future__ import annotations
 
 import functools
 import http.server
+import json
 import os
+import re
 import threading
 from collections.abc import Iterator
+from html import unescape
 from pathlib import Path
 from urllib.parse import urldefrag, urlparse
 
@@ -144,3 +149,61 @@ def test_a_lesson_page_shows_its_apps_still_pictures_with_the_gallerys_captions(
     )
     offline_page.locator("img").first.scroll_into_view_if_needed()
     offline_page.screenshot(path=str(DOCS / "site_lesson01.png"))
+
+
+def solution_triples() -> set[tuple[str, ...]]:
+    """Every three consecutive lines the student edition's stubs take out of the solutions."""
+    from course.classroom.edition import cell_source, exercise_stub, solution_cells
+
+    triples = set()
+    for path in (REPOSITORY / "notebooks").glob("[0-9][0-9]_*.ipynb"):
+        notebook = json.loads(path.read_text(encoding="utf-8"))
+        for index in solution_cells(notebook):
+            source = cell_source(notebook["cells"][index])
+            kept = {line.strip() for line in exercise_stub(source).splitlines()}
+            removed = [line.strip() for line in source.splitlines() if line.strip()]
+            removed = [line for line in removed if line not in kept]
+            triples |= {tuple(removed[i : i + 3]) for i in range(len(removed) - 2)}
+    return triples
+
+
+def page_lines(path: Path) -> list[str]:
+    """The text of a page's code and outputs, line by line, as a reader sees it."""
+    markup = path.read_text(encoding="utf-8")
+    markup = re.sub(r"<(script|style)\b.*?</\1>", "", markup, flags=re.DOTALL)
+    plain = unescape(re.sub(r"<[^>]+>", "", markup))
+    return [line.strip() for line in plain.splitlines() if line.strip()]
+
+
+def test_no_page_of_the_published_site_shows_a_solution():
+    answers = solution_triples()
+    assert len(answers) > 30, "the solutions have lines to look for"
+    leaking = []
+    for path in sorted(SITE.glob("*.html")):
+        lines = page_lines(path)
+        shown = {tuple(lines[i : i + 3]) for i in range(len(lines) - 2)}
+        if answers & shown:
+            leaking.append(path.name)
+    print(f"\npages of {SITE.name}/ containing a solution line: {len(leaking)}")
+    assert leaking == []
+    assert any("your code here" in " ".join(page_lines(page)) for page in LESSON_PAGES)
+
+
+def test_formulas_render_offline_from_the_sites_own_mathjax(offline_page: Page, site: str):
+    """The browser may fetch nothing outside the site: MathJax must come from it."""
+    for path in sorted(SITE.glob("*.html")):
+        markup = path.read_text(encoding="utf-8")
+        sources = re.findall(r"<script[^>]*\bsrc=\"([^\"]+)\"", markup)
+        assert all(not urlparse(source).netloc for source in sources), (path.name, sources)
+        assert "cdn.jsdelivr" not in markup and "cdnjs" not in markup, path.name
+    assert (SITE / "_static" / "mathjax" / "tex-mml-chtml.js").is_file()
+    visit(offline_page, site + "01_de_casteljau.html")
+    offline_page.wait_for_function(
+        "() => document.querySelectorAll('mjx-container').length > 0", timeout=60_000
+    )
+    typeset = offline_page.locator("mjx-container").count()
+    raw = offline_page.evaluate(
+        "() => [...document.querySelectorAll('.math')].filter(e => /\\\\\\(|\\$/.test("
+        "e.textContent) && !e.querySelector('mjx-container')).length"
+    )
+    assert typeset > 5 and raw == 0, (typeset, raw)

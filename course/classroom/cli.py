@@ -1,7 +1,10 @@
-"""Command line: ``python -m course gallery --out DIR``, ``student --out DIR``, ``map``, ``link``.
+"""Command line: ``python -m course lab``, ``student``, ``nbgrader``, ``gallery``, ``map`` and ``link``.
 
-Standard library only: ``student`` is a JSON transform and runs without numpy,
-matplotlib or ipywidgets; ``gallery`` loads them when the lesson modules draw.
+Standard library only: ``student`` and ``nbgrader`` are JSON transforms and run
+without numpy, matplotlib or ipywidgets; ``gallery`` loads them when the lesson
+modules draw. ``lab`` updates the student edition, then starts JupyterLab at its
+course map (``--teacher``: the solved lessons), with ``--allow-root`` when run as
+root, as in a container.
 
 The lessons' notebooks are found beside the package in the course's repository (or in
 ``$COURSE_NOTEBOOKS``, or ``./notebooks``; ``--notebooks DIR`` says where). An installed
@@ -12,10 +15,12 @@ student edition and the map need the notebooks, and say so.
 from __future__ import annotations
 
 import argparse
+import os
+import subprocess
 import sys
 from pathlib import Path
 
-from course.classroom import edition, gallery, link
+from course.classroom import edition, gallery, link, nbgrader
 from course.classroom.course_map import course_map, update_readme
 from course.classroom.notebooks import NOTEBOOKS_VARIABLE, find_notebooks
 from course.classroom.registry import lessons
@@ -27,22 +32,75 @@ NOT_FOUND = (
 )
 
 
+#: The connection class that sends the apps' messages at once (course.classroom.serving).
+PROMPT = "course.classroom.serving.PromptConnection"
+
+
+def lab_command(notebooks: str | Path, teacher: bool, extra: list[str]) -> list[str]:
+    """The ``jupyter lab`` command line: rooted at the repository, opening a course map.
+
+    Examples
+    --------
+    >>> command = lab_command(Path("/course/notebooks"), False, ["--no-browser"])
+    >>> command[1:4], command[-1]
+    (['-m', 'jupyterlab', '--ServerApp.root_dir=/course'], '--no-browser')
+    >>> command[4]
+    '--LabApp.default_url=/lab/tree/student/00_index.ipynb'
+    """
+    if isinstance(notebooks, bool) or not isinstance(notebooks, (str, os.PathLike)):
+        raise TypeError(f"notebooks: expected a folder path; got {type(notebooks).__name__}")
+    if not isinstance(teacher, bool):
+        raise TypeError(f"teacher: expected True or False; got {type(teacher).__name__}")
+    if not isinstance(extra, list) or not all(isinstance(option, str) for option in extra):
+        raise TypeError(f"extra: expected a list of jupyter lab options; got {extra!r:.60}")
+    notebooks = Path(notebooks)
+    root = notebooks.resolve().parent
+    opened = notebooks.resolve() if teacher else root / "student"
+    command = [
+        sys.executable,
+        "-m",
+        "jupyterlab",
+        f"--ServerApp.root_dir={root}",
+        f"--LabApp.default_url=/lab/tree/{opened.relative_to(root).as_posix()}/00_index.ipynb",
+        f"--ServerApp.kernel_websocket_connection_class={PROMPT}",
+    ]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        command.append("--allow-root")  # JupyterLab refuses root without it (containers)
+    return command + extra
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m course", description=__doc__)
     commands = parser.add_subparsers(dest="command", required=True)
+    lab = commands.add_parser(
+        "lab",
+        help="update the student edition in student/, then open its course map in JupyterLab "
+        "(other options go to jupyter lab)",
+    )
+    lab.add_argument(
+        "--teacher", action="store_true", help="open the solved lessons in notebooks/ instead"
+    )
+    lab.add_argument(
+        "--notebooks", type=Path, help="the lessons' folder (default: the repository's notebooks/)"
+    )
+    grading = commands.add_parser(
+        "nbgrader",
+        help="write an nbgrader course folder: nbgrader_config.py and source/<lesson>/",
+    )
     gallery_command = commands.add_parser(
         "gallery", help="render every lesson's key figures to PNG files, without Jupyter"
     )
     student_command = commands.add_parser(
         "student", help="write the notebooks with solutions replaced by stubs, outputs cleared"
     )
-    for command in (gallery_command, student_command):
+    for command in (gallery_command, student_command, grading):
         command.add_argument("--out", required=True, type=Path, help="the folder to write")
         command.add_argument(
             "--force",
             action="store_true",
-            help="write into a non-empty folder (files of the same names are replaced; "
-            "nothing is deleted)",
+            help="write into a non-empty folder (gallery and nbgrader: files of the same "
+            "names are replaced; student: a notebook with edits is never replaced; nothing "
+            "is deleted)",
         )
         command.add_argument(
             "--notebooks",
@@ -72,7 +130,9 @@ def main(argv: list[str] | None = None) -> int:
         help="rewrite the lesson table between this README's markers instead of printing it",
     )
     link.add_command(commands)
-    args = parser.parse_args(argv)
+    args, extra = parser.parse_known_args(argv)
+    if extra and args.command != "lab":
+        parser.error(f"unrecognized arguments: {' '.join(extra)}")
     if args.command == "link":
         try:
             print(link.run(args))
@@ -85,12 +145,23 @@ def main(argv: list[str] | None = None) -> int:
         print(f"python -m course {args.command}: {NOT_FOUND}", file=sys.stderr)
         return 2
     try:
+        if args.command == "lab":
+            if not args.teacher:
+                # student/ is the edition's own folder: one written before the edition kept
+                # a manifest is taken over (its notebooks count as the student's work).
+                report = edition.write_student_edition(
+                    args.notebooks.resolve().parent / "student", args.notebooks, force=True
+                )
+                for line in report.lines():
+                    print(f"student/: {line}", file=sys.stderr)
+            command = lab_command(args.notebooks, args.teacher, extra)
+            return subprocess.call(command)
         if args.command == "map" and args.readme:
             changed = update_readme(args.readme, args.notebooks)
             print(f"{args.readme}: lesson table {'rewritten' if changed else 'unchanged'}")
             return 0
         if args.command == "map":
-            print(course_map(args.notebooks, args.link_prefix))
+            print(course_map(args.notebooks, args.link_prefix, guide=False))
             return 0
         if args.command == "gallery":
             if args.notebooks is None:  # an installed package: every registered picture
@@ -100,10 +171,16 @@ def main(argv: list[str] | None = None) -> int:
             if args.only:
                 pictures = gallery.named_pictures(pictures, args.only)
             written = gallery.write_gallery(args.out, args.force, pictures)
+        elif args.command == "nbgrader":
+            written = nbgrader.write_nbgrader_course(args.out, args.notebooks, args.force)
         else:
-            written = edition.write_student_edition(args.out, args.notebooks, args.force)
-    except (FileExistsError, FileNotFoundError, NotADirectoryError, ValueError) as error:
-        print(f"python -m course {args.command}: {error}", file=sys.stderr)
+            report = edition.write_student_edition(args.out, args.notebooks, args.force)
+            for line in report.lines():
+                print(f"{args.out}: {line}", file=sys.stderr)
+            return 0
+    except (OSError, ValueError, TypeError) as error:
+        message = " ".join(str(error).split()) if str(error) else type(error).__name__
+        print(f"python -m course {args.command}: {message}", file=sys.stderr)
         return 2
     print(f"wrote {len(written)} files to {args.out}", file=sys.stderr)
     return 0

@@ -34,18 +34,27 @@ from __future__ import annotations
 
 import ast
 import copy
+import hashlib
 import json
+import os
 import re
+import shutil
+import tempfile
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from course.classroom.folders import check_output_folder
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 
+# The helpers below __all__'s names (cell_source, check_notebook, notebook_text,
+# read_notebook, solution_bodies, EditionReport) serve this package's other editions.
 __all__ = [
     "BEGIN_SOLUTION",
     "END_SOLUTION",
     "HIDDEN_NOTE",
+    "KERNELSPEC",
+    "MANIFEST",
     "REVEALS_TAG",
     "SOLUTION_TAG",
     "STUB_LINE",
@@ -68,6 +77,11 @@ HIDDEN_NOTE = (
     "*Student edition: a cell here printed code that answers an exercise. "
     "Solve the exercise first; the teacher's edition has the cell.*"
 )
+#: The kernelspec JupyterLab writes into a notebook it saves: every lesson carries it, so
+#: opening one changes nothing.
+KERNELSPEC = {"display_name": "Python 3 (ipykernel)", "language": "python", "name": "python3"}
+#: The student edition's record of what it wrote: a digest of each notebook's sources.
+MANIFEST = ".edition.json"
 _PRINTS_SOURCE = re.compile(r"\bsource_of\(|getsource\(|^\s*\S+\?\?\s*$|%psource", re.MULTILINE)
 
 
@@ -93,18 +107,50 @@ def exercise_stub(source: str) -> str:
     <BLANKLINE>
     check.area(area)
     """
+    if not isinstance(source, str):
+        raise TypeError(f"source: expected a cell's source text; got {type(source).__name__}")
     if BEGIN_SOLUTION in source or END_SOLUTION in source:
         return _scaffold_stub(source)
-    tree = ast.parse(source)
-    functions = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
+    lines = source.splitlines()
+    # Replace from the bottom up, so earlier line numbers stay valid.
+    for start, end, indent in reversed(solution_bodies(source)):
+        lines[start:end] = [indent + STUB_LINE]
+    return "\n".join(lines)
+
+
+def solution_bodies(source: str) -> list[tuple[int, int, str]]:
+    """Where a solution cell's answers are: ``(start, end, indent)`` for each top-level function.
+
+    ``lines[start:end]`` (0-based, of ``source.splitlines()``) is the body
+    after the ``def`` line and docstring; ``indent`` is its indentation. The
+    student edition replaces it by a stub, the nbgrader edition puts it
+    between nbgrader's markers.
+
+    Examples
+    --------
+    >>> solution_bodies("def f(x):\\n    return 2 * x\\n\\nf(1)")
+    [(1, 2, '    ')]
+    """
+    if not isinstance(source, str):
+        raise TypeError(f"source: expected a cell's source text; got {type(source).__name__}")
+    try:
+        tree = ast.parse(source)
+    except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte
+        raise ValueError(
+            f"source: a solution cell must be valid Python; "
+            f"line {getattr(error, 'lineno', '?')}: {getattr(error, 'msg', error)}"
+        ) from None
+    functions = [
+        node for node in tree.body if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+    ]
     if not functions:
         raise ValueError(
             "source: a solution cell must define the exercise's function at top level "
             f"(def name(...): ...); got no def in:\n{source}"
         )
     lines = source.splitlines()
-    # Replace from the bottom up, so earlier line numbers stay valid.
-    for function in reversed(functions):
+    bodies = []
+    for function in functions:
         body = function.body
         first = body[0]
         has_docstring = (
@@ -126,8 +172,8 @@ def exercise_stub(source: str) -> str:
             keep = first.lineno - 1
             while keep > function.lineno and lines[keep - 1].strip()[:1] in ("", "#"):
                 keep -= 1
-        lines[keep : function.end_lineno] = [indent + STUB_LINE]
-    return "\n".join(lines)
+        bodies.append((keep, function.end_lineno, indent))
+    return bodies
 
 
 def _scaffold_stub(source: str) -> str:
@@ -166,18 +212,86 @@ def _scaffold_stub(source: str) -> str:
 
 
 def reveals(cell: dict[str, Any]) -> bool:
-    """Whether a cell shows a solution outside an exercise: printed source, a solved variant."""
+    """Whether a cell shows a solution outside an exercise: printed source, a solved variant.
+
+    Examples
+    --------
+    >>> reveals({"cell_type": "code", "metadata": {}, "source": "print(source_of(f))"})
+    True
+    """
+    _check_cell(cell, "cell")
     if cell["cell_type"] != "code" or SOLUTION_TAG in _tags(cell):
         return False
-    return REVEALS_TAG in _tags(cell) or bool(_PRINTS_SOURCE.search("".join(cell["source"])))
+    return REVEALS_TAG in _tags(cell) or bool(_PRINTS_SOURCE.search(cell_source(cell)))
+
+
+def cell_source(cell: dict[str, Any]) -> str:
+    """A cell's source as one string (nbformat stores a string or a list of lines).
+
+    Examples
+    --------
+    >>> cell_source({"cell_type": "code", "source": ["x = 1\\n", "y = 2"]})
+    'x = 1\\ny = 2'
+    """
+    _check_cell(cell, "cell")
+    source = cell["source"]
+    return source if isinstance(source, str) else "".join(source)
 
 
 def _tags(cell: dict[str, Any]) -> list[str]:
     return list(cell.get("metadata", {}).get("tags", []))
 
 
+def _check_cell(cell: Any, name: str) -> None:
+    """Refuse, with a ValueError naming ``name``, a cell nbformat 4 would not read."""
+    if not isinstance(cell, dict):
+        raise ValueError(f"{name}: expected a notebook cell (a JSON object); got {cell!r:.60}")
+    if cell.get("cell_type") not in ("code", "markdown", "raw"):
+        raise ValueError(
+            f"{name}: expected a cell_type of 'code', 'markdown' or 'raw'; "
+            f"got {cell.get('cell_type')!r:.60}"
+        )
+    source = cell.get("source")
+    if not isinstance(source, str) and not (
+        isinstance(source, list) and all(isinstance(line, str) for line in source)
+    ):
+        raise ValueError(f"{name}: expected a source (text or a list of lines); got {source!r:.60}")
+    metadata = cell.get("metadata", {})
+    if not isinstance(metadata, dict):
+        raise ValueError(f"{name}: expected metadata as a JSON object; got {metadata!r:.60}")
+    tags = metadata.get("tags", [])
+    if not isinstance(tags, list) or not all(isinstance(tag, str) for tag in tags):
+        raise ValueError(f"{name}: expected metadata.tags as a list of text; got {tags!r:.60}")
+
+
+def check_notebook(notebook: Any) -> None:
+    """Refuse, with a ValueError naming the cell, what is not an nbformat 4 notebook's JSON.
+
+    Examples
+    --------
+    >>> check_notebook({"cells": [{}]})
+    Traceback (most recent call last):
+    ...
+    ValueError: notebook cell 0: expected a cell_type of 'code', 'markdown' or 'raw'; got None
+    """
+    if not isinstance(notebook, dict) or not isinstance(notebook.get("cells"), list):
+        raise ValueError(
+            f"notebook: expected an nbformat 4 notebook, a JSON object with a list of cells; "
+            f"got {notebook!r:.60}"
+        )
+    for index, cell in enumerate(notebook["cells"]):
+        _check_cell(cell, f"notebook cell {index}")
+
+
 def solution_cells(notebook: dict[str, Any]) -> list[int]:
-    """Indices of the cells tagged ``solution``."""
+    """Indices of the cells tagged ``solution``.
+
+    Examples
+    --------
+    >>> solution_cells({"cells": [{"cell_type": "code", "source": "", "metadata": {}}]})
+    []
+    """
+    check_notebook(notebook)
     return [
         index
         for index, cell in enumerate(notebook["cells"])
@@ -189,7 +303,9 @@ def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
     """A copy of ``notebook`` (nbformat 4 JSON) with stubs for solutions and no outputs.
 
     Cells that reveal a solution (:func:`reveals`) become a markdown note.
+    The kernelspec is JupyterLab's own (:data:`KERNELSPEC`).
     """
+    check_notebook(notebook)
     student = copy.deepcopy(notebook)
     for index, cell in enumerate(student["cells"]):
         if reveals(cell):
@@ -201,44 +317,198 @@ def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
             }
     for index in solution_cells(student):
         cell = student["cells"][index]
-        cell["source"] = exercise_stub("".join(cell["source"]))
+        try:
+            cell["source"] = exercise_stub(cell_source(cell))
+        except ValueError as error:
+            raise ValueError(f"notebook cell {index} (tagged {SOLUTION_TAG!r}): {error}") from None
         tags = [EXERCISE_TAG if tag == SOLUTION_TAG else tag for tag in _tags(cell)]
         cell["metadata"]["tags"] = tags
     for cell in student["cells"]:
         if cell["cell_type"] == "code":
             cell["outputs"] = []
             cell["execution_count"] = None
+    student.setdefault("metadata", {})["kernelspec"] = dict(KERNELSPEC)
     return student
+
+
+@dataclass(frozen=True)
+class EditionReport:
+    """What :func:`write_student_edition` did, notebook by notebook."""
+
+    written: list[Path] = field(default_factory=list)
+    unchanged: list[Path] = field(default_factory=list)
+    #: Notebooks the student edited, left as they are: the lesson has not changed.
+    kept: list[Path] = field(default_factory=list)
+    #: (the student's edited notebook, the new edition written beside it).
+    beside: list[tuple[Path, Path]] = field(default_factory=list)
+
+    def lines(self) -> list[str]:
+        """One line per notebook that needs the reader's attention, then a summary."""
+        notes = [
+            f"{edited.name} has your work: the lesson changed, and its new edition is "
+            f"{new.name}, beside it (yours is untouched)"
+            for edited, new in self.beside
+        ]
+        notes.append(
+            f"{len(self.written)} notebooks written, {len(self.unchanged)} unchanged, "
+            f"{len(self.kept) + len(self.beside)} with your edits kept"
+        )
+        return notes
+
+
+def read_notebook(path: str | Path) -> dict[str, Any]:
+    """The notebook JSON at ``path``, or a ValueError naming the file and what is wrong."""
+    if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path: expected a notebook file's path; got {type(path).__name__}")
+    path = Path(path)
+    try:
+        notebook = json.loads(path.read_text(encoding="utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError) as error:
+        raise ValueError(f"{path}: not a notebook file ({error})") from None
+    except OSError as error:
+        raise ValueError(f"{path}: cannot be read ({error.strerror})") from None
+    try:
+        check_notebook(notebook)
+    except ValueError as error:
+        raise ValueError(f"{path}: {error}") from None
+    return notebook
+
+
+def notebook_text(notebook: dict[str, Any]) -> str:
+    """The file text JupyterLab writes for ``notebook``: sorted keys, one-space indent."""
+    check_notebook(notebook)
+    try:
+        return (
+            json.dumps(notebook, sort_keys=True, indent=1, ensure_ascii=False, allow_nan=False)
+            + "\n"
+        )
+    except (TypeError, ValueError) as error:
+        raise ValueError(f"notebook: not JSON that a notebook file can hold ({error})") from None
+
+
+def _work(text: str) -> str:
+    """A digest of what a student edits in a notebook: its cells' types and sources.
+
+    Running cells changes outputs and counts, not the work: a notebook only run
+    is replaced by a new edition; one whose sources differ is the student's.
+    """
+    try:
+        notebook = json.loads(text)
+        check_notebook(notebook)
+        cells = [[cell["cell_type"], cell_source(cell)] for cell in notebook["cells"]]
+    except (json.JSONDecodeError, ValueError):
+        cells = ["unreadable", text]
+    return hashlib.sha256(json.dumps(cells).encode("utf-8")).hexdigest()
+
+
+def _read_manifest(out: Path) -> dict[str, str]:
+    path = out / MANIFEST
+    if not path.is_file():
+        return {}
+    try:
+        manifest = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    if not isinstance(manifest, dict):
+        return {}
+    return {k: v for k, v in manifest.items() if isinstance(k, str) and isinstance(v, str)}
+
+
+def _beside_name(out: Path, name: str, manifest: dict[str, str]) -> str:
+    """The first ``NN_topic.new.ipynb`` (``.new2``, ...) that holds no edits of the student's."""
+    stem = name.removesuffix(".ipynb")
+    for number in range(1, 1000):
+        candidate = f"{stem}.new{number if number > 1 else ''}.ipynb"
+        path = out / candidate
+        if not path.exists() or (
+            path.is_file() and manifest.get(candidate) == _work(_read_text(path))
+        ):
+            return candidate
+    raise ValueError(f"out: {out} holds 999 new editions of {name}; remove some")
+
+
+def _is_edition(out: Any) -> bool:
+    """Whether ``out`` holds a student edition this function wrote (its manifest)."""
+    try:
+        return isinstance(out, (str, os.PathLike)) and (Path(out) / MANIFEST).is_file()
+    except OSError:
+        return False
+
+
+def _read_text(path: Path) -> str:
+    try:
+        return path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return ""
 
 
 def write_student_edition(
     out: str | Path, folder: str | Path = NOTEBOOKS, force: bool = False
-) -> list[Path]:
-    """Write the student edition of every notebook in ``folder`` into ``out``.
+) -> EditionReport:
+    """Write or update the student edition of every notebook in ``folder`` in ``out``.
 
-    Refuses a non-empty ``out`` unless ``force``; never deletes a file (with
-    ``force``, notebooks of the same names are replaced). Returns the paths
-    written.
+    A student's work is never lost. The edition records what it wrote in
+    ``out/.edition.json``; run again, it writes new lessons, replaces the
+    notebooks the student has not edited (running cells is not editing), and
+    leaves every edited one alone: where that lesson changed, its new
+    edition is written beside it as ``NN_topic.new.ipynb``.
+
+    A non-empty ``out`` that is not an edition is refused unless ``force``;
+    even then no file is replaced. Every notebook is read and every file
+    checked before any is written, and each file is written whole (to a
+    temporary file, then moved into place).
     """
-    check_output_folder(out, force)
+    if not isinstance(force, bool):
+        raise TypeError(f"force: expected True or False; got {type(force).__name__} {force!r:.60}")
+    check_output_folder(out, force or _is_edition(out))
     out = Path(out)
     editions = []
     for book in notebooks(folder, index=True):  # every notebook read before any is written
+        notebook = read_notebook(book.path)
         try:
-            notebook = json.loads(book.path.read_text(encoding="utf-8"))
             edition = student_notebook(notebook)
-        except (json.JSONDecodeError, UnicodeDecodeError) as error:
-            raise ValueError(f"{book.path}: not a notebook file ({error})") from None
-        except (KeyError, TypeError, AttributeError) as error:
-            raise ValueError(
-                f"{book.path}: not a notebook, no {error} where one is needed"
-            ) from None
-        editions.append((book.path.name, edition))
-    out.mkdir(parents=True, exist_ok=True)
-    written = []
-    for name, edition in editions:
+        except ValueError as error:
+            raise ValueError(f"{book.path}: {error}") from None
+        editions.append((book.path.name, notebook_text(edition)))
+    manifest = _read_manifest(out)
+    report = EditionReport()
+    plan: list[tuple[str, str]] = []
+    for name, text in editions:
         path = out / name
-        text = json.dumps(edition, indent=1, ensure_ascii=False)
-        path.write_text(text + "\n", encoding="utf-8")
-        written.append(path)
-    return written
+        work = _work(text)
+        if path.is_dir():
+            raise ValueError(f"out: {path} is a folder; the edition needs that name for a notebook")
+        if not path.exists():
+            plan.append((name, text))
+            report.written.append(path)
+            continue
+        current = _work(_read_text(path))
+        if current == work:
+            report.unchanged.append(path)
+        elif manifest.get(name) == current:  # as the edition wrote it: no work of the student's
+            plan.append((name, text))
+            report.written.append(path)
+        elif manifest.get(name) == work:  # the student's, and the lesson has not changed
+            report.kept.append(path)
+        else:
+            beside = _beside_name(out, name, manifest)
+            plan.append((beside, text))
+            report.beside.append((path, out / beside))
+            report.written.append(out / beside)
+        manifest[name] = work
+    for name, text in plan:
+        manifest[name] = _work(text)
+    out.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=".edition-", dir=out))
+    try:
+        for name, text in plan:
+            (staging / name).write_text(text, encoding="utf-8")
+        (staging / MANIFEST).write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+        for name, _ in plan:
+            os.replace(staging / name, out / name)
+        os.replace(staging / MANIFEST, out / MANIFEST)
+    except OSError as error:
+        raise ValueError(f"out: cannot write into {out} ({error.strerror or error})") from None
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+    return report

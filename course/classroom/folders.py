@@ -31,18 +31,26 @@ def check_output_folder(out: str | Path, force: bool) -> None:
             f"out: the name {long[0][:40]!r}... has {len(long[0])} characters; "
             f"folder names may have at most {_NAME_MAX}"
         )
-    existing = out
-    while not existing.exists() and existing != existing.parent:
-        existing = existing.parent
-    if existing != out and not existing.is_dir():
-        raise NotADirectoryError(f"out: {existing}, a parent of {out}, is a file, not a folder")
-    if existing.is_dir() and not os.access(existing, os.W_OK | os.X_OK):
+    try:
+        existing = out
+        while not existing.exists() and existing != existing.parent:
+            existing = existing.parent
+        if existing != out and not existing.is_dir():
+            raise NotADirectoryError(f"out: {existing}, a parent of {out}, is a file, not a folder")
+        if existing.is_dir() and not os.access(existing, os.W_OK | os.X_OK):
+            raise ValueError(
+                f"out: cannot write into {existing} (permission denied); choose another folder"
+            )
+        if out.exists() and not out.is_dir():
+            raise NotADirectoryError(f"out: expected a folder; got the file {out}")
+        holds_files = out.is_dir() and any(out.iterdir())
+    except OSError as error:  # a parent the user may not enter, say
+        if isinstance(error, NotADirectoryError) and str(error).startswith("out: "):
+            raise
         raise ValueError(
-            f"out: cannot write into {existing} (permission denied); choose another folder"
-        )
-    if out.exists() and not out.is_dir():
-        raise NotADirectoryError(f"out: expected a folder; got the file {out}")
-    if out.is_dir() and any(out.iterdir()) and not force:
+            f"out: cannot use {out} ({error.strerror or error}); choose another folder"
+        ) from None
+    if holds_files and not force:
         raise FileExistsError(
             f"out: {out} is not empty; choose an empty folder, or pass force=True "
             "(--force) to add these files to it (files of the same names are replaced, "
@@ -61,15 +69,24 @@ def inside_folder(folder: Path, name: str, suffix: str) -> Path:
     Traceback (most recent call last):
     ...
     ValueError: name: expected a plain file name inside out; got '../x'
+    >>> inside_folder(Path("out"), "a", "/../../x")
+    Traceback (most recent call last):
+    ...
+    ValueError: suffix: expected a file name ending such as '.png'; got '/../../x'
     """
+    if not isinstance(suffix, str) or not _plain(suffix) or suffix == ".":
+        raise ValueError(f"suffix: expected a file name ending such as '.png'; got {suffix!r:.60}")
     if (
         not isinstance(name, str)
         or not name
-        or name in (".", "..")
-        or "/" in name
-        or "\\" in name
-        or "\0" in name
+        or not _plain(name)
+        or name + suffix in (".", "..")
         or len(os.fsencode(name + suffix)) > _NAME_MAX
     ):
         raise ValueError(f"name: expected a plain file name inside {folder}; got {name!r}")
     return folder / f"{name}{suffix}"
+
+
+def _plain(text: str) -> bool:
+    """No separator nor NUL: ``text`` cannot lead out of a folder."""
+    return text not in (".", "..") and not any(mark in text for mark in ("/", "\\", "\0"))

@@ -76,11 +76,17 @@ def notebooks(folder: str | Path = NOTEBOOKS, index: bool = False) -> list[Noteb
 
 def _title_and_summary(path: Path) -> tuple[str, str]:
     """The first markdown heading and the first paragraph after it."""
-    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
-    for cell in cells:
-        if cell["cell_type"] != "markdown":
-            continue
-        text = "".join(cell["source"])
+    try:
+        cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+        markdown = ["".join(cell["source"]) for cell in cells if cell["cell_type"] == "markdown"]
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
+        raise ValueError(f"{path}: not a notebook file ({error})") from None
+    except (KeyError, TypeError, AttributeError) as error:
+        raise ValueError(
+            f"{path}: not an nbformat 4 notebook (a JSON object whose cells each have a "
+            f"cell_type and a source); reading it failed at {error!r}"
+        ) from None
+    for text in markdown:
         heading = _HEADING.search(text)
         if heading:
             rest = text[heading.end() :].strip()

@@ -356,3 +356,13 @@ def test_points_written_with_decimal_commas_are_refused_not_misread(points, data
     text = separator.join(f"{localised(x)} {localised(y)}" for x, y in points)
     with pytest.raises(ValueError, match="point 1"):
         parse_points(text)
+
+
+def test_an_apps_model_id_is_counted_per_class_not_random():
+    from course.widgets.bernstein import BernsteinBasisApp
+    from course.widgets.de_casteljau import DeCasteljauApp
+
+    first, second = DeCasteljauApp().widget.model_id, DeCasteljauApp().widget.model_id
+    assert first.startswith("course-DeCasteljauApp-") and second != first
+    assert int(second.rsplit("-", 1)[1]) == int(first.rsplit("-", 1)[1]) + 1
+    assert BernsteinBasisApp().widget.model_id.startswith("course-BernsteinBasisApp-")

@@ -21,13 +21,6 @@ from playwright.sync_api import Page
 from tests_browser.conftest import REPOSITORY, free_port, lab_command, server
 from tests_browser.test_lab import kernel_idle, run_all_cells, shut_down_kernels
 
-#: A lesson's widget outputs hold the app's model id, a random UUID each run, until the
-#: apps are given ids of their own: lesson 01 stays dirty after Run All until then.
-RANDOM_MODEL_IDS = pytest.mark.xfail(
-    strict=True,
-    reason="course.widgets' apps get a random widget model id per run (see the report)",
-)
-
 
 def git(copy: Path, *arguments: str) -> subprocess.CompletedProcess:
     return subprocess.run(
@@ -83,7 +76,7 @@ def status(copy: Path) -> str:
 
 @pytest.mark.parametrize(
     "name",
-    ["00_index.ipynb", pytest.param("01_de_casteljau.ipynb", marks=RANDOM_MODEL_IDS)],
+    ["00_index.ipynb", "01_de_casteljau.ipynb"],
 )
 def test_open_run_all_and_save_leaves_git_clean(name, copy, clean_lab, page: Page):
     open_lesson(page, clean_lab, name)

@@ -20,6 +20,7 @@ Every point also has a text box, for the keyboard; the two stay in step.
 from __future__ import annotations
 
 import base64
+import itertools
 import re
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -150,6 +151,20 @@ class _Grab:
     start: tuple[float, float]
 
 
+_MODEL_NUMBERS: dict[str, Iterator[int]] = {}
+
+
+def _next_model_id(name: str) -> str:
+    """A widget model id counted per app class in this kernel, not a random UUID.
+
+    The notebook stores the id of the app it shows; counted, it is the same each
+    time a lesson is run from the top, so running and saving a lesson leaves git
+    clean. Each kernel counts from 1, and no two apps in one kernel share an id.
+    """
+    number = next(_MODEL_NUMBERS.setdefault(name, itertools.count(1)))
+    return f"course-{name}-{number}"
+
+
 class SliderApp:
     """Controls beside a picture; a control's change, or a drag on the picture, redraws it.
 
@@ -214,6 +229,7 @@ class SliderApp:
         self.widget = widgets.HBox(
             [self.view.image, panel],
             layout=widgets.Layout(align_items="flex-start", flex_flow="row wrap"),
+            model_id=_next_model_id(type(self).__name__),
         )
 
     def value(self, name: str) -> Any:

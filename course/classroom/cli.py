@@ -1,4 +1,4 @@
-"""Command line: ``python -m course lab``, ``student``, ``nbgrader``, ``gallery``, ``map`` and ``link``.
+"""Command line: ``python -m course lab``, ``student``, ``nbgrader``, ``gallery``, ``map``, ``link``
 
 Standard library only: ``student`` and ``nbgrader`` are JSON transforms and run
 without numpy, matplotlib or ipywidgets; ``gallery`` loads them when the lesson

@@ -349,3 +349,19 @@ def require_bounded_flattening(control: np.ndarray, tolerance: float, max_step: 
             f"than the {limits.MAX_SAMPLES} allowed; raise tolerance (or max_step), or "
             "bring the control points closer together"
         )
+
+
+def require_step_samples(step: float, name: str = "step", curves: int = 1) -> None:
+    """ValueError unless a t step gives at most ``limits.MAX_STEP_SAMPLES`` samples in all.
+
+    ``curves`` curves are each sampled at t = 0, step, 2 step, ... <= 1.
+    """
+    count = (np.floor(1 / step * (1 + 1e-12)) + 2) * curves
+    if count > limits.MAX_STEP_SAMPLES:
+        per_curve = f" over {curves} curves" if curves > 1 else ""
+        room = limits.MAX_STEP_SAMPLES / curves - 2
+        smallest = f", a step of at least {1 / room:.3g}" if room >= 1 else ""
+        raise ValueError(
+            f"{name} must give at most {limits.MAX_STEP_SAMPLES} samples{per_curve}{smallest}; "
+            f"got {step:g}, which gives about {count:.3g}"
+        )

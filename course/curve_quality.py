@@ -276,7 +276,12 @@ def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarra
     """
     control = as_curve(points)
     shape = as_shape(shape)
-    return {name: render_variant(name, control, shape, width) for name in VARIANTS}
+    # Agg takes degrees 1 to 3 only: drawn first, a curve it refuses costs nothing else.
+    drawn = {AGG: render_variant(AGG, control, shape, width)}
+    return {
+        name: drawn[name] if name in drawn else render_variant(name, control, shape, width)
+        for name in VARIANTS
+    }
 
 
 def render_window(

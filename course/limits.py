@@ -15,6 +15,7 @@ from __future__ import annotations
 
 __all__ = [
     "LARGEST",
+    "MAX_BAYER_SIZE",
     "MAX_CALLS",
     "MAX_COORDINATE",
     "MAX_COUNT",
@@ -27,8 +28,11 @@ __all__ = [
     "MAX_RATE",
     "MAX_SAMPLES",
     "MAX_SIDE",
+    "MAX_STEP_SAMPLES",
+    "MAX_STROKED_TEXT",
     "MAX_STROKE_WIDTH",
     "MAX_SUPERSAMPLES",
+    "MAX_TEXT_LENGTH",
     "MAX_ZOOM",
     "SMALLEST",
 ]
@@ -57,6 +61,11 @@ MAX_FIGURE_PIXELS = 4000 * 4000
 MAX_SAMPLES = 2**25
 """Points, samples or polyline vertices one call may generate."""
 
+MAX_STEP_SAMPLES = 2**20
+"""Most samples a fixed t step may give (t = 0, step, 2 step, ... <= 1), over all of a
+path's curves: a step of at least about 1e-6 for one curve. The handouts step by 0.001
+and 0.0001; a million samples already take seconds to splat and count."""
+
 MAX_COORDINATE = 2.0**20
 """Largest |x| or |y| of an image-space point (a million pixels off any canvas)."""
 
@@ -74,6 +83,18 @@ MAX_ITERATIONS = 100_000
 
 MAX_MASK_SIZE = 128
 """Largest side of a void-and-cluster mask: its cost grows as size**4 (128 takes a second)."""
+
+MAX_BAYER_SIZE = 2**11
+"""Largest side of a Bayer matrix: its size**2 entries stay within MAX_PIXELS / 2 (4 M
+thresholds, far more levels than any image has)."""
+
+MAX_TEXT_LENGTH = 1000
+"""Most characters of a line of text turned into curves."""
+
+MAX_STROKED_TEXT = 160
+"""Largest ``len(text) * size`` (characters times pixels to the em) of a line of text a
+figure strokes and compares with the exact coverage, which samples 64 x 64 points in every
+pixel along the outlines: 'Bé' at 40 px, the lesson's, is 80."""
 
 MAX_CALLS = 2_000_000
 """Most calls a deliberately exponential handout recursion may make."""

@@ -17,6 +17,8 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
+from course import limits
+from course._validate import as_positive_float, describe
 from course.antialias import bilinear_centres, render
 from course.bezier import de_casteljau
 from course.canvas import crop
@@ -365,6 +367,13 @@ def text_figure(text: str = "Bé", size: float = 40.0, zoom: int = 6) -> Still:
     'Bé' at 40 px, stroked at width 1, against the exact coverage: RMSE Agg 0.0333,
     stroke area 0.0028
     """
+    size = as_positive_float(size, "size")
+    if not isinstance(text, str) or len(text) * size > limits.MAX_STROKED_TEXT:
+        raise ValueError(
+            f"text and size must have len(text) * size at most {limits.MAX_STROKED_TEXT} "
+            f"(the exact coverage samples every pixel along the outlines); got {describe(text)} "
+            f"at {size:g} px"
+        )
     curves = text_curves(text, size=size)
     shape = canvas_for(curves)
     exact = reference(curves, shape, width=1.0, k=64)

@@ -252,6 +252,8 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
     flatten 0 gaps, 1.21
     """
     control = as_curve(points)
+    # Three panels zoomed 12 times: a window of 100 pixels is a 3600-pixel-wide picture.
+    size = as_int(size, "size", minimum=1, maximum=100)
     centre = de_casteljau(control, near_t)
     polyline = flatten(control, 0.25, max_step=1.0)
     drawings = [

@@ -349,6 +349,14 @@ def require_bounded_flattening(control: np.ndarray, tolerance: float, max_step: 
             f"than the {limits.MAX_SAMPLES} allowed; raise tolerance (or max_step), or "
             "bring the control points closer together"
         )
+    # Degree 4 and up is evaluated by de Casteljau, (degree + 1)**2 / 2 steps a vertex.
+    if degree >= 4 and not needed * (degree + 1) ** 2 <= limits.MAX_EVALUATION_WORK:
+        raise ValueError(
+            f"points: a curve of {degree + 1} control points within this tolerance would need "
+            f"about {needed:.3g} vertices of {(degree + 1) ** 2} interpolations each, more "
+            f"than the {limits.MAX_EVALUATION_WORK} allowed; split the curve into pieces of "
+            "low degree, or raise tolerance"
+        )
 
 
 def require_step_samples(step: float, name: str = "step", curves: int = 1) -> None:
@@ -364,4 +372,16 @@ def require_step_samples(step: float, name: str = "step", curves: int = 1) -> No
         raise ValueError(
             f"{name} must give at most {limits.MAX_STEP_SAMPLES} samples{per_curve}{smallest}; "
             f"got {step:g}, which gives about {count:.3g}"
+        )
+
+
+def require_bounded_evaluation(points: int, samples: int, name: str = "points") -> None:
+    """ValueError unless ``samples`` evaluations of a curve of ``points`` control points fit
+    ``limits.MAX_EVALUATION_WORK`` interpolations (de Casteljau's (N + 1)**2 / 2 per sample)."""
+    work = float(samples) * points**2
+    if work > limits.MAX_EVALUATION_WORK:
+        raise ValueError(
+            f"{name}: {samples} samples of a curve of {points} control points would take about "
+            f"{work:.3g} interpolations, more than the {limits.MAX_EVALUATION_WORK} allowed; "
+            "split the curve into pieces of low degree, or raise the tolerance or step"
         )

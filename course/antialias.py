@@ -42,6 +42,7 @@ from course._validate import (
     as_positive_float,
     as_shape,
     describe,
+    require_bounded_evaluation,
 )
 from course.bezier import bezier_bernstein, de_casteljau, uniform_parameters
 from course.canvas import painted
@@ -402,6 +403,7 @@ def curve_samples(points: Any, step: float) -> np.ndarray:
 
 def _evaluate(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     """Points of the curve: the Bernstein form up to cubics, de Casteljau beyond."""
+    require_bounded_evaluation(len(control), len(t))
     return bezier_bernstein(control, t) if len(control) <= 4 else de_casteljau(control, t)
 
 

@@ -113,6 +113,11 @@ def intensity_along(
     position, intensity, length = _curve_positions(gray, control)
     if length <= 0:
         raise ValueError("points: the curve has no length, so no intensity per unit length")
+    if length / piece_length > limits.MAX_STEP_SAMPLES:
+        raise ValueError(
+            f"piece_length must leave at most {limits.MAX_STEP_SAMPLES} knots along the "
+            f"{length:.4g} px curve; got {piece_length:g}"
+        )
     count = max(2, round(length / piece_length))
     spacing = length / count
     scaled = np.clip(position / spacing, 0, count)

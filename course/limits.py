@@ -20,6 +20,7 @@ __all__ = [
     "MAX_COORDINATE",
     "MAX_COUNT",
     "MAX_DEGREE",
+    "MAX_EVALUATION_WORK",
     "MAX_FIGURE_PIXELS",
     "MAX_ITERATIONS",
     "MAX_MASK_SIZE",
@@ -74,6 +75,10 @@ MAX_PARAMETER = 1e3
 
 MAX_DEGREE = 2000
 """Largest degree (or binomial row n): exact Pascal rows beyond it take seconds."""
+
+MAX_EVALUATION_WORK = 2**27
+"""Most interpolations one evaluation of a curve may take: samples times (degree + 1)**2.
+A cubic may be sampled at 8 million parameters, a degree-1000 curve at 134."""
 
 MAX_COUNT = 10**7
 """Largest integer count or size of any other kind (sizes, rates, samples, margins)."""

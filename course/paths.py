@@ -38,6 +38,7 @@ from course._validate import (
     as_point,
     as_positive_float,
     describe,
+    require_bounded_evaluation,
     require_finite,
     require_within,
 )
@@ -377,6 +378,7 @@ def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.nd
         count = (
             np.zeros(len(which), dtype=np.int64) if size == 1 else wang_counts(control, tolerance)
         )
+        require_bounded_evaluation(size, int(count.sum()) + len(count), "curves")
         if count.sum() > limits.MAX_SAMPLES:
             raise ValueError(
                 f"tolerance {tolerance:g} would need {count.sum()} vertices, more than the "

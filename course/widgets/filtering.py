@@ -32,6 +32,7 @@ __all__ = [
     "KERNELS",
     "KernelApp",
     "RepeatedBlurApp",
+    "blurred",
     "border_ring_mean",
     "format_kernel",
     "parse_kernel",
@@ -147,15 +148,16 @@ class RepeatedBlurApp(SliderApp):
             )
             self.titles[border] = top.set_title(border, fontsize=9)
             bottom = bare_axes(self.figure.add_subplot(grid[1, column]))
-            self.crops[border] = bottom.imshow(self.corner_of(self.image), **style)
+            self.crops[border] = bottom.imshow(self._corner_of(self.image), **style)
         self.update()
 
-    def corner_of(self, image: np.ndarray) -> np.ndarray:
+    def _corner_of(self, image: np.ndarray) -> np.ndarray:
         """The zoomed top-right corner."""
         return image[: self.corner, -self.corner :]
 
     def blurred(self, repeats: int) -> dict[str, np.ndarray]:
         """The image blurred ``repeats`` times under each rule (kept for the next step)."""
+        repeats = as_int(repeats, "repeats", minimum=0, maximum=30)  # the slider's range
         if repeats < self.done:
             self.done, self.results = 0, dict.fromkeys(filters.BORDERS, self.image)
         while self.done < repeats:
@@ -169,7 +171,7 @@ class RepeatedBlurApp(SliderApp):
         repeats = int(self.value("repeats"))
         for border, result in self.blurred(repeats).items():
             self.wholes[border].set_data(result)
-            self.crops[border].set_data(self.corner_of(result))
+            self.crops[border].set_data(self._corner_of(result))
             ring = border_ring_mean(result)
             if self.original_ring > 0:
                 edge = f"edge pixels at {ring / self.original_ring:.2f} x the original"

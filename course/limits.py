@@ -24,6 +24,7 @@ __all__ = [
     "MAX_FIGURE_PIXELS",
     "MAX_ITERATIONS",
     "MAX_MASK_SIZE",
+    "MAX_OVERLAP_PAIRS",
     "MAX_PARAMETER",
     "MAX_PIXELS",
     "MAX_RATE",
@@ -88,6 +89,11 @@ MAX_ITERATIONS = 100_000
 
 MAX_MASK_SIZE = 128
 """Largest side of a void-and-cluster mask: its cost grows as size**4 (128 takes a second)."""
+
+MAX_OVERLAP_PAIRS = 2**21
+"""Most pairs of a polyline's segments within a stroke's width of each other that the exact
+stroke examines (a line of text has a few thousand; a path running over itself hundreds of
+times, millions)."""
 
 MAX_BAYER_SIZE = 2**11
 """Largest side of a Bayer matrix: its size**2 entries stay within MAX_PIXELS / 2 (4 M

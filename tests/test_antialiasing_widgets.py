@@ -159,29 +159,3 @@ def test_zoom_windows_are_shown_pixel_for_pixel_and_new_titles_reach_the_picture
     after = app.view.pixels()[title_rows, left : left + ZoomApp.PANEL]
     assert not np.array_equal(before, after)
     assert app.panels[1].title.get_text() == label_of("bilinear_centres")
-
-
-def test_text_figure_bounds_its_text_before_stroking_it():
-    from course.widgets.antialiasing_figures import text_figure
-
-    with pytest.raises(ValueError, match=r"len\(text\) \* size at most 160"):
-        text_figure("W" * 200, 16, 2)
-    with pytest.raises(ValueError, match="text and size"):
-        text_figure(None)
-
-
-@pytest.mark.parametrize(
-    ("steps", "message"),
-    [
-        ((1e-9,), "at most"),
-        ((0.02,) * 9, "1 to 8 t steps"),
-        ((), "1 to 8 t steps"),
-        ((np.nan,), r"steps\[0\] must be finite"),
-        ("abc", "steps must be a sequence"),
-    ],
-)
-def test_brightness_figure_bounds_its_steps(steps, message):
-    from course.widgets.antialiasing_figures import brightness_figure
-
-    with pytest.raises((TypeError, ValueError), match=message):
-        brightness_figure(steps=steps)

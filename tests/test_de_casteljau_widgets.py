@@ -152,12 +152,3 @@ def test_the_picture_only_changes_where_things_move():
     app.controls["t"].value = 0.2
     # Blitting over the cached background gives exactly the same picture back.
     np.testing.assert_array_equal(picture(app), first)
-
-
-def test_gaps_figure_bounds_its_window_before_drawing():
-    import pytest
-
-    from course.widgets.de_casteljau_figures import gaps_figure
-
-    with pytest.raises(ValueError, match="size must be between 1 and 100"):
-        gaps_figure([[10, 10], [690, 10], [10, 690], [690, 690]], size=10**6)

@@ -160,12 +160,3 @@ def test_dragging_a_control_point_of_the_segments_app_redraws_them():
     assert (round(box.x0, 6), round(box.y0, 6)) == (40, 30)
     report = segments_report(moved, 8)
     assert (np.asarray(app.pixels.get_array()) == 2).sum() == report["off"]
-
-
-def test_colour_figure_names_a_canvas_the_triangle_misses_and_one_too_large():
-    from course.widgets.lines_and_triangles_figures import colour_figure
-
-    with pytest.raises(ValueError, match="enclose at least one pixel centre"):
-        colour_figure(size=(1, 1))
-    with pytest.raises(ValueError, match="size must"):
-        colour_figure(size=(1, 10**4))

@@ -47,14 +47,3 @@ def test_supersample_app_switches_to_the_photograph(small_supersample_app):
         app.result.get_array(), supersample(app.sources["photograph"], (64, 64), 2)
     )
     assert "rate 8" in app.difference_axes.get_title()
-
-
-@pytest.mark.parametrize(
-    ("arguments", "name"),
-    [({"corner": 10**9}, "corner"), ({"rate": 10**6}, "rate"), ({"corner": "40"}, "corner")],
-)
-def test_shift_figure_bounds_its_window_and_rate(arguments, name):
-    from course.widgets.supersampling_figures import shift_figure
-
-    with pytest.raises((TypeError, ValueError), match=name):
-        shift_figure(**arguments)

@@ -25,7 +25,6 @@ from matplotlib.figure import Figure
 
 from course import images, poisson
 from course import poisson_solvers as solvers
-from course._validate import describe
 from course.widgets.picture import Still, pixel_figure
 
 __all__ = [
@@ -217,7 +216,9 @@ def write_lab_sweeps(path: str | os.PathLike[str] = LAB_SWEEPS_FILE) -> None:
     minutes of solving.
     """
     if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
-        raise TypeError(f"path must be a file path (str or pathlib.Path); got {describe(path)}")
+        raise TypeError(
+            f"path must be a file path (str or pathlib.Path); got {type(path).__name__} {path!r}"
+        )
     path = Path(path)
     if path.is_dir():
         raise ValueError(f"path must name a file; {str(path)!r} is a folder")

@@ -408,6 +408,17 @@ VALID: dict[str, Any] = {
     "course.paths.Curves:points": lambda: CURVE.copy(),
     "course.paths.Curves:sizes": lambda: np.array([4]),
     "course.paths.Curves.moved:offset": lambda: (1.0, 2.0),
+    "course.widgets.filtering.KernelApp.filtered:kernel": lambda: np.ones((3, 3)) / 9,
+    "course.widgets.filtering.KernelApp.filtered:border": lambda: "replicate",
+    "course.classroom.gallery.ProgressBar.advance:label": lambda: "lesson",
+    "course.widgets.antialiasing.ZoomPanel.show:centre": lambda: (6.0, 5.0),
+    "course.widgets.antialiasing.ZoomPanel.show:size": lambda: 8,
+    "course.widgets.antialiasing.ZoomPanel.show:title": lambda: "zoom",
+    "course.widgets.antialiasing.ZoomPanel.show_window:window": lambda: GRAY[:4, :4].copy(),
+    "course.widgets.antialiasing.ZoomPanel.show_window:extent": lambda: (0, 4, 4, 0),
+    "course.widgets.antialiasing.ZoomPanel.show_window:title": lambda: "zoom",
+    "course.widgets.poisson.PoissonIterationApp.iterate:method": lambda: "jacobi",
+    "course.widgets.poisson.PoissonIterationApp.iterate:sweeps": lambda: 0,
 }
 
 

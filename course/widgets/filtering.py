@@ -24,7 +24,7 @@ import numpy as np
 from matplotlib.patches import Rectangle
 
 from course import filters, images, limits
-from course._validate import as_choice, as_image, as_int, as_option, describe
+from course._validate import as_choice, as_float_array, as_image, as_int, as_option, describe
 from course.widgets.base import SliderApp
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
@@ -298,6 +298,9 @@ class KernelApp(SliderApp):
 
     def filtered(self, kernel: np.ndarray, border: str) -> np.ndarray:
         """The lab's dot product of ``kernel`` with each window, under ``border``."""
+        kernel = as_float_array(kernel, "kernel")
+        if kernel.shape != (3, 3):
+            raise ValueError(f"kernel must be 3 x 3; got shape {kernel.shape}")
         return filters.convolve(self.image, kernel[::-1, ::-1], border)
 
     def update(self) -> None:

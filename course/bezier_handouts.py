@@ -228,6 +228,12 @@ def trace_iterative(points: Any, t: float) -> DeCasteljauCost:
     """
     control = as_points(points)
     value = as_scalar_parameter(t)
+    # N (N - 1) / 2 interpolations, one Python step each.
+    if len(control) > limits.MAX_HANDOUT_POINTS:
+        raise ValueError(
+            f"points must hold at most {limits.MAX_HANDOUT_POINTS} control points for the "
+            f"handout's loop; got {len(control)}"
+        )
     interpolations = peak = 0
     point_list = list(control)
     while len(point_list) != 1:

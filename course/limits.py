@@ -22,6 +22,7 @@ __all__ = [
     "MAX_DEGREE",
     "MAX_EVALUATION_WORK",
     "MAX_FIGURE_PIXELS",
+    "MAX_HANDOUT_POINTS",
     "MAX_ITERATIONS",
     "MAX_MASK_SIZE",
     "MAX_OVERLAP_PAIRS",
@@ -94,6 +95,10 @@ MAX_OVERLAP_PAIRS = 2**21
 """Most pairs of a polyline's segments within a stroke's width of each other that the exact
 stroke examines (a line of text has a few thousand; a path running over itself hundreds of
 times, millions)."""
+
+MAX_HANDOUT_POINTS = 500
+"""Most control points the handouts' point-by-point Python loops are given: N (N - 1) / 2
+interpolations, 125,000 at most, a fraction of a second."""
 
 MAX_BAYER_SIZE = 2**11
 """Largest side of a Bayer matrix: its size**2 entries stay within MAX_PIXELS / 2 (4 M

@@ -158,3 +158,11 @@ def test_step_report_counts_the_distinct_pixels_of_its_samples(control):
 
     report = step_report(np.array(control, dtype=float), 0.01)
     assert report["pixels"] == len({tuple(p) for p in report["pixel_list"].tolist()})
+
+
+def test_trace_iterative_bounds_the_handout_loop():
+    from course import limits
+    from course.bezier_handouts import trace_iterative
+
+    with pytest.raises(ValueError, match=f"at most {limits.MAX_HANDOUT_POINTS} control points"):
+        trace_iterative(np.zeros((limits.MAX_HANDOUT_POINTS + 1, 2)), 0.5)

@@ -105,6 +105,24 @@ def as_curve(points: Any, name: str = "points") -> np.ndarray:
     return control
 
 
+def as_figure_curve(points: Any, name: str = "points") -> np.ndarray:
+    """:func:`as_curve` for a figure that draws and labels every control point: at most
+    ``limits.MAX_FIGURE_POINTS`` of them.
+
+    Examples
+    --------
+    >>> as_figure_curve([[0, 0], [1, 2]]).shape
+    (2, 2)
+    """
+    control = as_curve(points, name)
+    if len(control) > limits.MAX_FIGURE_POINTS:
+        raise ValueError(
+            f"{name} must hold at most {limits.MAX_FIGURE_POINTS} control points for a figure "
+            f"that draws each of them; got {len(control)}"
+        )
+    return control
+
+
 def as_point(
     point: Any, name: str, dim: int | None = None, bound: float | None = None
 ) -> np.ndarray:

@@ -22,6 +22,7 @@ __all__ = [
     "MAX_DEGREE",
     "MAX_EVALUATION_WORK",
     "MAX_FIGURE_PIXELS",
+    "MAX_FIGURE_POINTS",
     "MAX_HANDOUT_POINTS",
     "MAX_ITERATIONS",
     "MAX_MASK_SIZE",
@@ -60,6 +61,9 @@ MAX_RATE = 256
 
 MAX_FIGURE_PIXELS = 4000 * 4000
 """Most pixels of an app's or figure's picture."""
+
+MAX_FIGURE_POINTS = 100
+"""Most control points of a curve a lesson's figure draws and labels one by one."""
 
 MAX_SAMPLES = 2**25
 """Points, samples or polyline vertices one call may generate."""

@@ -55,3 +55,28 @@ def test_shift_figure_bounds_its_window_and_rate(arguments, name):
 
     with pytest.raises((TypeError, ValueError), match=name):
         shift_figure(**arguments)
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["three_points_figure", "reversed_figure", "end_of_curve_figure", "yellow_check_figure"],
+)
+def test_de_casteljau_figures_draw_at_most_100_control_points(name):
+    from course.widgets import de_casteljau_figures
+
+    curve = np.resize([[2.0, 3.0], [14.0, 1.0], [3.0, 13.0], [13.0, 14.0]], (1501, 2))
+    arguments = {"t": 0.5} if name == "three_points_figure" else {}
+    if name == "yellow_check_figure":
+        arguments = {"seed": "000"}
+    with pytest.raises(ValueError, match="at most 100 control points"):
+        getattr(de_casteljau_figures, name)(curve, **arguments)
+
+
+def test_bernstein_figures_draw_at_most_100_control_points_and_tangents():
+    from course.widgets.bernstein_figures import hodograph_figure, tangents_figure
+
+    curve = np.resize([[2.0, 3.0], [14.0, 1.0], [3.0, 13.0], [13.0, 14.0]], (1501, 2))
+    with pytest.raises(ValueError, match="at most 100 control points"):
+        tangents_figure(curve)
+    with pytest.raises(ValueError, match="ts must hold at most 100"):
+        hodograph_figure(curve[:4], ts=np.linspace(0, 1, 1501))

@@ -18,6 +18,7 @@ import itertools
 import numpy as np
 from scipy.spatial import cKDTree
 
+from course import limits
 from course._segments import Segments
 from course.near_pixels import HALF_DIAGONAL, first_of_runs, pixels_near
 
@@ -46,6 +47,12 @@ def overlapping(segments: Segments, half: float) -> np.ndarray:
     if len(s.length) < 2:
         return doubtful
     first, second = _candidate_pairs(s, 2 * half)
+    if len(first) > limits.MAX_OVERLAP_PAIRS:
+        raise ValueError(
+            f"polyline: {len(first)} pairs of its segments come within the stroke's width of "
+            f"each other, more than the {limits.MAX_OVERLAP_PAIRS} the exact stroke examines; "
+            "a path that runs over itself this often is better drawn in pieces"
+        )
     # Neighbours meet at a join the outline draws.
     neighbours = (s.next[first] == second) | (s.next[second] == first)
     first, second = first[~neighbours], second[~neighbours]

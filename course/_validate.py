@@ -105,6 +105,24 @@ def as_curve(points: Any, name: str = "points") -> np.ndarray:
     return control
 
 
+def as_figure_curve(points: Any, name: str = "points") -> np.ndarray:
+    """:func:`as_curve` for a figure that draws and labels every control point: at most
+    ``limits.MAX_FIGURE_POINTS`` of them.
+
+    Examples
+    --------
+    >>> as_figure_curve([[0, 0], [1, 2]]).shape
+    (2, 2)
+    """
+    control = as_curve(points, name)
+    if len(control) > limits.MAX_FIGURE_POINTS:
+        raise ValueError(
+            f"{name} must hold at most {limits.MAX_FIGURE_POINTS} control points for a figure "
+            f"that draws each of them; got {len(control)}"
+        )
+    return control
+
+
 def as_point(
     point: Any, name: str, dim: int | None = None, bound: float | None = None
 ) -> np.ndarray:
@@ -348,4 +366,40 @@ def require_bounded_flattening(control: np.ndarray, tolerance: float, max_step: 
             f"points, tolerance and max_step would need about {needed:.3g} vertices, more "
             f"than the {limits.MAX_SAMPLES} allowed; raise tolerance (or max_step), or "
             "bring the control points closer together"
+        )
+    # Degree 4 and up is evaluated by de Casteljau, (degree + 1)**2 / 2 steps a vertex.
+    if degree >= 4 and not needed * (degree + 1) ** 2 <= limits.MAX_EVALUATION_WORK:
+        raise ValueError(
+            f"points: a curve of {degree + 1} control points within this tolerance would need "
+            f"about {needed:.3g} vertices of {(degree + 1) ** 2} interpolations each, more "
+            f"than the {limits.MAX_EVALUATION_WORK} allowed; split the curve into pieces of "
+            "low degree, or raise tolerance"
+        )
+
+
+def require_step_samples(step: float, name: str = "step", curves: int = 1) -> None:
+    """ValueError unless a t step gives at most ``limits.MAX_STEP_SAMPLES`` samples in all.
+
+    ``curves`` curves are each sampled at t = 0, step, 2 step, ... <= 1.
+    """
+    count = (np.floor(1 / step * (1 + 1e-12)) + 2) * curves
+    if count > limits.MAX_STEP_SAMPLES:
+        per_curve = f" over {curves} curves" if curves > 1 else ""
+        room = limits.MAX_STEP_SAMPLES / curves - 2
+        smallest = f", a step of at least {1 / room:.3g}" if room >= 1 else ""
+        raise ValueError(
+            f"{name} must give at most {limits.MAX_STEP_SAMPLES} samples{per_curve}{smallest}; "
+            f"got {step:g}, which gives about {count:.3g}"
+        )
+
+
+def require_bounded_evaluation(points: int, samples: int, name: str = "points") -> None:
+    """ValueError unless ``samples`` evaluations of a curve of ``points`` control points fit
+    ``limits.MAX_EVALUATION_WORK`` interpolations (de Casteljau's (N + 1)**2 / 2 per sample)."""
+    work = float(samples) * points**2
+    if work > limits.MAX_EVALUATION_WORK:
+        raise ValueError(
+            f"{name}: {samples} samples of a curve of {points} control points would take about "
+            f"{work:.3g} interpolations, more than the {limits.MAX_EVALUATION_WORK} allowed; "
+            "split the curve into pieces of low degree, or raise the tolerance or step"
         )

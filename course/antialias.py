@@ -42,6 +42,7 @@ from course._validate import (
     as_positive_float,
     as_shape,
     describe,
+    require_bounded_evaluation,
 )
 from course.bezier import bezier_bernstein, de_casteljau, uniform_parameters
 from course.canvas import painted
@@ -348,11 +349,16 @@ def render(
         # Each pixel comes once: "max" writes it without a saturating sum.
         return painted((height, canvas_width), pixels, 1.0, weights, mode="max")
     # The handouts' loop, curve after curve; every splat adds, with saturation.
+    controls = path.split() if len(path.sizes) > 1 else [path.points]
+    steps = [
+        step
+        if step is not None
+        else (DEFAULT_STEP if weighting == "count" else arc_length_step(control))
+        for control in controls
+    ]
+    _require_few_samples(steps, step is not None)
     all_pixels, all_weights = [], []
-    for control in path.split() if len(path.sizes) > 1 else [path.points]:
-        own_step = step
-        if own_step is None:
-            own_step = DEFAULT_STEP if weighting == "count" else arc_length_step(control)
+    for control, own_step in zip(controls, steps, strict=True):
         samples = curve_samples(control, own_step)
         pixels, weights = splat(samples, method)
         if weighting == "arc_length":
@@ -363,6 +369,18 @@ def render(
     if len(all_pixels) > 1:
         all_pixels, all_weights = [np.concatenate(all_pixels)], [np.concatenate(all_weights)]
     return painted((height, canvas_width), all_pixels[0], 1.0, all_weights[0])
+
+
+def _require_few_samples(steps: list[float], given: bool) -> None:
+    """ValueError before sampling when the curves' t steps add up to too many samples."""
+    total = sum(np.floor(1 / step * (1 + 1e-12)) + 1 for step in steps)
+    if total > limits.MAX_STEP_SAMPLES:
+        cause = "step" if given else "points (a long curve takes a fine default step)"
+        raise ValueError(
+            f"{cause}: the splat methods would take about {total:.3g} samples over "
+            f"{len(steps)} curves, more than the {limits.MAX_STEP_SAMPLES} allowed; use a "
+            "larger step, fewer or shorter curves, or a stroke method"
+        )
 
 
 def curve_samples(points: Any, step: float) -> np.ndarray:
@@ -385,6 +403,7 @@ def curve_samples(points: Any, step: float) -> np.ndarray:
 
 def _evaluate(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     """Points of the curve: the Bernstein form up to cubics, de Casteljau beyond."""
+    require_bounded_evaluation(len(control), len(t))
     return bezier_bernstein(control, t) if len(control) <= 4 else de_casteljau(control, t)
 
 

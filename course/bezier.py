@@ -37,6 +37,7 @@ from course._validate import (
     as_positive_float,
     as_scalar_parameter,
     require_bounded_flattening,
+    require_step_samples,
 )
 
 __all__ = [
@@ -439,6 +440,7 @@ def uniform_parameters(step: float, accumulate: str = "exact") -> np.ndarray:
     """
     step = as_positive_float(step, "step")
     accumulate = as_choice(accumulate, "accumulate", _ACCUMULATE)
+    require_step_samples(step, "step")
     if step > 1:
         return np.zeros(1)
     if accumulate == "exact":

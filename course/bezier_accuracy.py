@@ -35,6 +35,7 @@ from course.bezier import bezier_bernstein, de_casteljau, pascal_row
 
 __all__ = [
     "ACCURACY_BY_DEGREE_METHODS",
+    "MAX_POWER_DEGREE",
     "accuracy_by_degree",
     "bezier_exact",
     "bezier_power",
@@ -43,6 +44,9 @@ __all__ = [
 ]
 
 ACCURACY_BY_DEGREE_METHODS = ("de_casteljau", "bernstein_loop", "bernstein_horner", "power")
+
+MAX_POWER_DEGREE = 500
+"""Highest degree :func:`power_coefficients` converts: beyond, coefficients overflow float64."""
 
 
 def _as_integers(control: np.ndarray) -> tuple[list[list[int]], int]:
@@ -102,16 +106,28 @@ def power_coefficients(points: Any) -> np.ndarray:
            [-2.,  0.]])
     """
     control = as_points(points)
-    integers, denominator = _as_integers(control)
     degree = len(control) - 1
+    # |a_j| reaches 4**n |P| / sqrt(n): past float64's 2**1024 near degree 500.
+    if degree > MAX_POWER_DEGREE:
+        raise ValueError(
+            f"points must be at most {MAX_POWER_DEGREE + 1} control points: the power basis' "
+            f"coefficients of higher degrees overflow float64; got {len(control)}"
+        )
+    integers, denominator = _as_integers(control)
     coefficients = np.empty(control.shape)
     for j in range(degree + 1):
         row = pascal_row(j)
         for axis in range(control.shape[1]):
             alternating = sum((-1) ** (j - i) * row[i] * integers[i][axis] for i in range(j + 1))
-            coefficients[j, axis] = float(
-                Fraction(pascal_row(degree)[j] * alternating, denominator)
-            )
+            try:
+                coefficients[j, axis] = float(
+                    Fraction(pascal_row(degree)[j] * alternating, denominator)
+                )
+            except OverflowError:
+                raise ValueError(
+                    f"points: coefficient a_{j} of this degree-{degree} curve in the power "
+                    "basis overflows float64; bring the control points closer to the origin"
+                ) from None
     return coefficients
 
 
@@ -201,12 +217,19 @@ def accuracy_by_degree(
         as_int(n, "degrees", minimum=0, maximum=limits.MAX_DEGREE)
         for n in np.atleast_1d(np.asarray(degrees, dtype=object)).tolist()
     ]
-    work = samples * sum((degree + 1) ** 2 for degree in degree_list)
+    if "power" in methods and max(degree_list, default=0) > MAX_POWER_DEGREE:
+        raise ValueError(
+            f"degrees must be at most {MAX_POWER_DEGREE} with the method 'power', whose "
+            f"coefficients overflow float64 beyond; got {max(degree_list)}"
+        )
+    # Exact sums cost (degree + 1)**2 big-integer steps per sample, and each sample of each
+    # degree about 150 more in Fractions, whatever its degree.
+    work = samples * sum((degree + 1) ** 2 + 150 for degree in degree_list)
     if work > limits.MAX_CALLS:
         raise ValueError(
             f"degrees and samples ask for {work} exact operations (samples * sum of "
-            f"(degree + 1)**2); at most {limits.MAX_CALLS}: ask for fewer or lower degrees, "
-            "or fewer samples"
+            f"((degree + 1)**2 + 150)); at most {limits.MAX_CALLS}: ask for fewer or lower "
+            "degrees, or fewer samples"
         )
     results: dict[str, list[float]] = {method: [] for method in methods}
     for degree in degree_list:

@@ -188,6 +188,13 @@ def trace_recursive(points: Any, t: float) -> DeCasteljauCost:
     """
     control = as_points(points)
     value = as_scalar_parameter(t)
+    # One nested call per point: stay well inside Python's recursion limit.
+    if len(control) > sys.getrecursionlimit() // 2:
+        raise ValueError(
+            f"points must hold at most {sys.getrecursionlimit() // 2} control points (half of "
+            f"Python's recursion limit, one nested call each); got {len(control)}. "
+            "trace_iterative counts the same interpolations without recursion"
+        )
     calls = interpolations = peak = 0
 
     def recursive_bezier(level: list[np.ndarray], held: int) -> np.ndarray:
@@ -221,6 +228,12 @@ def trace_iterative(points: Any, t: float) -> DeCasteljauCost:
     """
     control = as_points(points)
     value = as_scalar_parameter(t)
+    # N (N - 1) / 2 interpolations, one Python step each.
+    if len(control) > limits.MAX_HANDOUT_POINTS:
+        raise ValueError(
+            f"points must hold at most {limits.MAX_HANDOUT_POINTS} control points for the "
+            f"handout's loop; got {len(control)}"
+        )
     interpolations = peak = 0
     point_list = list(control)
     while len(point_list) != 1:
@@ -258,7 +271,10 @@ def step_report(points: Any, step: float, accumulate: str = "exact") -> dict[str
     samples = de_casteljau(points, t)
     pixels = nearest_pixels(samples)
     jumps = np.abs(np.diff(pixels, axis=0)).max(axis=1) if len(pixels) > 1 else np.zeros(0)
-    distinct = len(np.unique(pixels, axis=0))
+    # One integer per pixel: np.unique on rows sorts structured records, ten times slower.
+    low = pixels.min(axis=0) if len(pixels) else np.zeros(2, np.int64)
+    keys = (pixels[:, 0] - low[0]) * (int(pixels[:, 1].max() - low[1]) + 1) + pixels[:, 1] - low[1]
+    distinct = len(np.unique(keys))
     return {
         "samples": len(samples),
         "pixels": distinct,

@@ -21,6 +21,7 @@ from course._validate import (
     as_pixels,
     as_point,
     as_shape,
+    as_unit,
     describe,
     require_finite,
 )
@@ -255,6 +256,7 @@ def yellow_fraction(image: np.ndarray, threshold: float = 0.5) -> float:
     array = as_image(image, "image", copy=False)
     if array.ndim != 3:
         raise ValueError(f"image must be an RGB (H, W, 3) image; got shape {array.shape}")
+    threshold = as_unit(threshold, "threshold")
     red = array[..., 0] > threshold
     green = array[..., 1] > threshold
     painted = int(np.count_nonzero(red | green))

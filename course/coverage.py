@@ -61,7 +61,6 @@ __all__ = [
     "segment_distance",
     "slab_coverage",
     "subdivide",
-    "supersample",
 ]
 
 # How far the reference's polyline may stray from the true curve, in pixels.
@@ -160,7 +159,7 @@ def reference(points: Any, shape: Any, width: float = 1.0, k: int = 16) -> np.nd
     np.minimum.at(nearest, near.flat, near.distance)
     inside = nearest <= half - HALF_DIAGONAL
     image[inside] = 1.0
-    firsts, coverage = supersample(near, ~inside[near.flat], half, k)
+    firsts, coverage = _supersample(near, ~inside[near.flat], half, k)
     image[near.flat[firsts]] = coverage
     return image.reshape(height, canvas_width)
 
@@ -174,7 +173,7 @@ def _sample_grid(k: int) -> tuple[np.ndarray, np.ndarray]:
     return sub_x, sub_y
 
 
-def supersample(
+def _supersample(
     near: NearPixels, pairs: np.ndarray, half: float, k: int
 ) -> tuple[np.ndarray, np.ndarray]:
     """Coverage of the pixels whose pairs are selected, by k x k point samples.

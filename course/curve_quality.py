@@ -113,6 +113,11 @@ def intensity_along(
     position, intensity, length = _curve_positions(gray, control)
     if length <= 0:
         raise ValueError("points: the curve has no length, so no intensity per unit length")
+    if length / piece_length > limits.MAX_STEP_SAMPLES:
+        raise ValueError(
+            f"piece_length must leave at most {limits.MAX_STEP_SAMPLES} knots along the "
+            f"{length:.4g} px curve; got {piece_length:g}"
+        )
     count = max(2, round(length / piece_length))
     spacing = length / count
     scaled = np.clip(position / spacing, 0, count)
@@ -276,7 +281,12 @@ def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarra
     """
     control = as_curve(points)
     shape = as_shape(shape)
-    return {name: render_variant(name, control, shape, width) for name in VARIANTS}
+    # Agg takes degrees 1 to 3 only: drawn first, a curve it refuses costs nothing else.
+    drawn = {AGG: render_variant(AGG, control, shape, width)}
+    return {
+        name: drawn[name] if name in drawn else render_variant(name, control, shape, width)
+        for name in VARIANTS
+    }
 
 
 def render_window(

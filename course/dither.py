@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 from scipy import ndimage
 
+from course import limits
 from course._validate import as_choice, as_gray, as_int, as_positive_float, as_rng
 from course.blue_noise import blue_noise_mask
 from course.error_diffusion import (
@@ -190,7 +191,7 @@ def bayer_matrix(size: int) -> np.ndarray:
            [ 3, 11,  1,  9],
            [15,  7, 13,  5]])
     """
-    size = as_int(size, "size", minimum=1)
+    size = as_int(size, "size", minimum=1, maximum=limits.MAX_BAYER_SIZE)
     if size & (size - 1):
         raise ValueError(f"size must be a power of two (1, 2, 4, 8, ...); got {size}")
     matrix = np.zeros((1, 1), dtype=int)

@@ -15,20 +15,28 @@ from __future__ import annotations
 
 __all__ = [
     "LARGEST",
+    "MAX_BAYER_SIZE",
     "MAX_CALLS",
     "MAX_COORDINATE",
     "MAX_COUNT",
     "MAX_DEGREE",
+    "MAX_EVALUATION_WORK",
     "MAX_FIGURE_PIXELS",
+    "MAX_FIGURE_POINTS",
+    "MAX_HANDOUT_POINTS",
     "MAX_ITERATIONS",
     "MAX_MASK_SIZE",
+    "MAX_OVERLAP_PAIRS",
     "MAX_PARAMETER",
     "MAX_PIXELS",
     "MAX_RATE",
     "MAX_SAMPLES",
     "MAX_SIDE",
+    "MAX_STEP_SAMPLES",
+    "MAX_STROKED_TEXT",
     "MAX_STROKE_WIDTH",
     "MAX_SUPERSAMPLES",
+    "MAX_TEXT_LENGTH",
     "MAX_ZOOM",
     "SMALLEST",
 ]
@@ -54,8 +62,16 @@ MAX_RATE = 256
 MAX_FIGURE_PIXELS = 4000 * 4000
 """Most pixels of an app's or figure's picture."""
 
+MAX_FIGURE_POINTS = 100
+"""Most control points of a curve a lesson's figure draws and labels one by one."""
+
 MAX_SAMPLES = 2**25
 """Points, samples or polyline vertices one call may generate."""
+
+MAX_STEP_SAMPLES = 2**20
+"""Most samples a fixed t step may give (t = 0, step, 2 step, ... <= 1), over all of a
+path's curves: a step of at least about 1e-6 for one curve. The handouts step by 0.001
+and 0.0001; a million samples already take seconds to splat and count."""
 
 MAX_COORDINATE = 2.0**20
 """Largest |x| or |y| of an image-space point (a million pixels off any canvas)."""
@@ -66,6 +82,10 @@ MAX_PARAMETER = 1e3
 MAX_DEGREE = 2000
 """Largest degree (or binomial row n): exact Pascal rows beyond it take seconds."""
 
+MAX_EVALUATION_WORK = 2**27
+"""Most interpolations one evaluation of a curve may take: samples times (degree + 1)**2.
+A cubic may be sampled at 8 million parameters, a degree-1000 curve at 134."""
+
 MAX_COUNT = 10**7
 """Largest integer count or size of any other kind (sizes, rates, samples, margins)."""
 
@@ -74,6 +94,27 @@ MAX_ITERATIONS = 100_000
 
 MAX_MASK_SIZE = 128
 """Largest side of a void-and-cluster mask: its cost grows as size**4 (128 takes a second)."""
+
+MAX_OVERLAP_PAIRS = 2**21
+"""Most pairs of a polyline's segments within a stroke's width of each other that the exact
+stroke examines (a line of text has a few thousand; a path running over itself hundreds of
+times, millions)."""
+
+MAX_HANDOUT_POINTS = 500
+"""Most control points the handouts' point-by-point Python loops are given: N (N - 1) / 2
+interpolations, 125,000 at most, a fraction of a second."""
+
+MAX_BAYER_SIZE = 2**11
+"""Largest side of a Bayer matrix: its size**2 entries stay within MAX_PIXELS / 2 (4 M
+thresholds, far more levels than any image has)."""
+
+MAX_TEXT_LENGTH = 1000
+"""Most characters of a line of text turned into curves."""
+
+MAX_STROKED_TEXT = 160
+"""Largest ``len(text) * size`` (characters times pixels to the em) of a line of text a
+figure strokes and compares with the exact coverage, which samples 64 x 64 points in every
+pixel along the outlines: 'Bé' at 40 px, the lesson's, is 80."""
 
 MAX_CALLS = 2_000_000
 """Most calls a deliberately exponential handout recursion may make."""

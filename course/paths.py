@@ -35,9 +35,12 @@ from course import limits
 from course._validate import (
     as_curve,
     as_float_array,
+    as_point,
     as_positive_float,
     describe,
+    require_bounded_evaluation,
     require_finite,
+    require_within,
 )
 from course.bezier import de_casteljau
 
@@ -81,6 +84,32 @@ class Curves:
     points: np.ndarray
     sizes: np.ndarray
 
+    def __post_init__(self) -> None:
+        """Check both fields once: every function that takes Curves trusts them.
+
+        Examples
+        --------
+        >>> Curves(np.array([[0.0, 0.0], [np.nan, 1.0]]), np.array([2]))
+        Traceback (most recent call last):
+        ...
+        ValueError: points must be finite; got nan at index (1, 0)
+        """
+        points, sizes = self.points, self.sizes
+        if not isinstance(points, np.ndarray) or points.dtype.kind not in "iuf":
+            raise TypeError(f"points must be a numpy array of real numbers; got {describe(points)}")
+        if points.ndim != 2 or points.shape[1] != 2:
+            raise ValueError(f"points must have shape (P, 2); got {points.shape}")
+        require_finite(points, "points")
+        require_within(points, "points", limits.MAX_COORDINATE)
+        if not isinstance(sizes, np.ndarray) or sizes.dtype.kind not in "iu" or sizes.ndim != 1:
+            raise TypeError(f"sizes must be a 1-D integer numpy array; got {describe(sizes)}")
+        if sizes.size and sizes.min() < 1:
+            raise ValueError(f"sizes must be >= 1 (control points per curve); got {sizes.min()}")
+        if int(sizes.sum()) != len(points):
+            raise ValueError(
+                f"sizes must add up to the {len(points)} points; they add up to {int(sizes.sum())}"
+            )
+
     @property
     def starts(self) -> np.ndarray:
         """Index in ``points`` of each curve's first control point."""
@@ -102,8 +131,20 @@ class Curves:
         return [part.copy() for part in np.split(self.points, np.cumsum(self.sizes)[:-1])]
 
     def moved(self, offset: Any) -> Curves:
-        """The same curves translated by ``-offset`` (a point's new coordinates)."""
-        return Curves(self.points - np.asarray(offset, dtype=float), self.sizes)
+        """The same curves translated by ``-offset`` (a point's new coordinates).
+
+        Examples
+        --------
+        >>> as_path([[1.0, 2.0], [3.0, 4.0]]).moved((1, 2)).points.tolist()
+        [[0.0, 0.0], [2.0, 2.0]]
+        """
+        shift = as_point(offset, "offset", dim=2, bound=limits.MAX_COORDINATE)
+        points = self.points - shift
+        if points.size and np.abs(points).max() > limits.MAX_COORDINATE:
+            raise ValueError(
+                f"offset {shift.tolist()} moves the points beyond +-{limits.MAX_COORDINATE:g}"
+            )
+        return Curves(points, self.sizes)
 
 
 def as_path(points: Any, name: str = "points") -> Curves:
@@ -337,6 +378,7 @@ def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.nd
         count = (
             np.zeros(len(which), dtype=np.int64) if size == 1 else wang_counts(control, tolerance)
         )
+        require_bounded_evaluation(size, int(count.sum()) + len(count), "curves")
         if count.sum() > limits.MAX_SAMPLES:
             raise ValueError(
                 f"tolerance {tolerance:g} would need {count.sum()} vertices, more than the "
@@ -385,11 +427,35 @@ def flatten_each(
         raise TypeError(
             f"flatten_one must be a function of the control points; got {describe(flatten_one)}"
         )
-    parts = [flatten_one(control) for control in curves.split()]
+    parts = [_vertices_of(flatten_one(control), control) for control in curves.split()]
     counts = np.array([len(part) for part in parts], dtype=np.int64)
     order = np.arange(len(parts))
     stacked = np.concatenate(parts) if parts else np.zeros((0, 2))
     return _assemble(curves, counts, {0: (order, stacked)})
+
+
+def _vertices_of(part: Any, control: np.ndarray) -> np.ndarray:
+    """What ``flatten_one`` returned, checked: finite (K, 2) vertices, K >= 1."""
+    try:
+        array = np.asarray(part, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(
+            f"flatten_one must return (K, 2) vertices; for control {control.tolist()} it "
+            f"returned {describe(part)}"
+        ) from None
+    if array.ndim != 2 or array.shape[1] != 2 or len(array) == 0:
+        raise ValueError(
+            f"flatten_one must return (K, 2) vertices, K >= 1; for control {control.tolist()} "
+            f"it returned shape {array.shape}"
+        )
+    bad = ~np.isfinite(array)
+    if bad.any() or np.abs(array).max() > limits.MAX_COORDINATE:
+        worst = array[bad][0] if bad.any() else array.flat[int(np.abs(array).argmax())]
+        raise ValueError(
+            f"flatten_one must return finite vertices within +-{limits.MAX_COORDINATE:g}; for "
+            f"control {control.tolist()} it returned a vertex coordinate {worst:g}"
+        )
+    return array
 
 
 def _assemble(
@@ -460,6 +526,10 @@ def text_curves(
     """
     if not isinstance(text, str) or not text.strip():
         raise ValueError(f"text must be a non-empty string with some ink; got {describe(text)}")
+    if len(text) > limits.MAX_TEXT_LENGTH:
+        raise ValueError(
+            f"text must be at most {limits.MAX_TEXT_LENGTH} characters; got {len(text)}"
+        )
     size = as_positive_float(size, "size")
     margin = as_positive_float(margin, "margin", allow_zero=True)
     if not isinstance(family, str):

@@ -21,6 +21,7 @@ from course._validate import (
     as_float_array,
     as_image,
     as_int,
+    as_shape,
     describe,
     require_finite,
 )
@@ -29,8 +30,15 @@ __all__ = [
     "GUIDANCE",
     "PoissonProblem",
     "as_problem",
+    "build_clone_problem",
+    "clone_inputs",
     "clone_problem",
+    "image_of",
     "inpaint_problem",
+    "paste_window",
+    "planes_of",
+    "window_at",
+    "window_in",
 ]
 
 GUIDANCE = ("plain", "mixed")
@@ -113,17 +121,24 @@ class PoissonProblem:
         >>> [array.shape for array in problem.planes()]
         [(3, 3, 4), (3, 4), (3, 3, 4)]
         """
-        return planes_of(self.values), self.region.copy(), planes_of(self.source)
+        return _planes_of(self.values), self.region.copy(), _planes_of(self.source)
 
     def residual(self, solution: Any) -> float:
         """Largest ``|b_p + sum_q u_q - 4 u_p|`` over the region: 0 for the exact solution."""
         return solvers.residual(
-            planes_of(self._as_solution(solution)), self.region, planes_of(self.source)
+            _planes_of(self._as_solution(solution)), self.region, _planes_of(self.source)
         )
 
     def paste(self, image: np.ndarray, solution: Any) -> np.ndarray:
-        """A copy of ``image`` whose region pixels are ``solution``'s."""
-        return paste_window(self, image, self._as_solution(solution))
+        """A copy of ``image`` whose region pixels are ``solution``'s.
+
+        Examples
+        --------
+        >>> problem = clone_problem(np.zeros((4, 4)), np.zeros((3, 3)), (1, 0))
+        >>> problem.paste(np.zeros((4, 4)), np.ones((3, 3)))[1]
+        array([0., 0., 1., 0.])
+        """
+        return _paste_window(self, self._as_image(image, "image"), self._as_solution(solution))
 
     def seam(self, image: np.ndarray) -> float:
         """Mean absolute step across the region's border in ``image`` (which holds the region).
@@ -150,7 +165,7 @@ class PoissonProblem:
     def _mean_step(self, image: np.ndarray, across_border: bool) -> float:
         x, y = self.corner
         height, width = self.region.shape
-        window = np.asarray(image, dtype=float)[y : y + height, x : x + width]
+        window = self._as_image(image, "image")[y : y + height, x : x + width]
         steps = []
         for dy, dx in solvers.NEIGHBOURS:
             neighbour = (slice(1 + dy, height - 1 + dy), slice(1 + dx, width - 1 + dx))
@@ -159,6 +174,29 @@ class PoissonProblem:
             steps.append(np.abs(window[1:-1, 1:-1][pairs] - window[neighbour][pairs]).reshape(-1))
         steps = np.concatenate(steps)
         return float(steps.mean()) if steps.size else float("nan")
+
+    def _as_image(self, image: Any, name: str) -> np.ndarray:
+        """``image`` as finite floats, the problem's kind, holding the problem's window.
+
+        A float64 array is checked where it lies (the callers only read it).
+        """
+        keep = isinstance(image, np.ndarray) and image.dtype == np.float64
+        array = image if keep else as_float_array(image, name)
+        kind = "(H, W)" if self.values.ndim == 2 else "(H, W, 3)"
+        if array.ndim != self.values.ndim or array.shape[2:] != self.values.shape[2:]:
+            raise ValueError(
+                f"{name} must be an image of shape {kind}, like the problem's values "
+                f"{self.values.shape}; got shape {array.shape}"
+            )
+        x, y = self.corner
+        height, width = self.region.shape
+        if not (0 <= x and x + width <= array.shape[1] and 0 <= y and y + height <= array.shape[0]):
+            raise ValueError(
+                f"{name} of shape {array.shape[:2]} must hold the problem's window, "
+                f"{height} x {width} pixels at (x, y) = ({x}, {y})"
+            )
+        require_finite(array, name)
+        return array
 
     def _as_solution(self, solution: Any) -> np.ndarray:
         array = as_float_array(solution, "solution")
@@ -183,7 +221,7 @@ def clone_problem(
     """
     background, foreground, corner, mask = clone_inputs(background, foreground, offset, mask)
     guidance = as_choice(guidance, "guidance", GUIDANCE)
-    return build_clone_problem(background, foreground, corner, mask, guidance)
+    return _build_clone_problem(background, foreground, corner, mask, guidance)
 
 
 def inpaint_problem(image: Any, mask: Any) -> PoissonProblem:
@@ -221,6 +259,25 @@ def inpaint_problem(image: Any, mask: Any) -> PoissonProblem:
 
 
 def build_clone_problem(
+    background: Any,
+    foreground: Any,
+    corner: tuple[int, int],
+    mask: Any,
+    guidance: str,
+) -> PoissonProblem:
+    """:func:`clone_problem` with every argument given: ``corner`` is the offset.
+
+    Examples
+    --------
+    >>> build_clone_problem(np.zeros((5, 5)), np.ones((3, 3)), (1, 1), None, "plain").corner
+    (1, 1)
+    """
+    background, foreground, corner, mask = clone_inputs(background, foreground, corner, mask)
+    guidance = as_choice(guidance, "guidance", GUIDANCE)
+    return _build_clone_problem(background, foreground, corner, mask, guidance)
+
+
+def _build_clone_problem(
     background: np.ndarray,
     foreground: np.ndarray,
     corner: tuple[int, int],
@@ -238,7 +295,7 @@ def build_clone_problem(
     region = mask[top:bottom, left:right].copy()
     crop = (corner[0] + left, corner[1] + top)
     f = foreground[top:bottom, left:right]
-    b = window_at(background, crop, region.shape)
+    b = _window_at(background, crop, region.shape)
     values = np.where(_channels_last(region, f), f, b)
     source = _guidance_sum(f, b, region, guidance)
     return PoissonProblem(values, region, source, (int(crop[0]), int(crop[1])))
@@ -268,12 +325,32 @@ def _guidance_sum(f: np.ndarray, b: np.ndarray, region: np.ndarray, guidance: st
     return total
 
 
-def paste_window(problem: PoissonProblem, image: np.ndarray, window: np.ndarray) -> np.ndarray:
-    """:meth:`PoissonProblem.paste` without its checks, for inputs checked already.
+def paste_window(problem: PoissonProblem, image: Any, window: Any) -> np.ndarray:
+    """A copy of ``image`` (float) whose region pixels are those of ``window``.
 
-    A copy of ``image`` (float, its shape) whose region pixels are those of
-    ``window`` (float, the shape of ``problem.values``).
+    ``window`` has the shape of ``problem.values``; ``image`` holds the
+    problem's window at ``problem.corner``. Both are checked (finite, their
+    shapes); see :func:`_paste_window` for arrays checked already.
+
+    Examples
+    --------
+    >>> problem = clone_problem(np.zeros((4, 4)), np.zeros((3, 3)), (0, 1))
+    >>> paste_window(problem, np.zeros((4, 4)), np.ones((3, 3)))[:, 1]
+    array([0., 0., 1., 0.])
     """
+    problem = as_problem(problem)
+    image = problem._as_image(image, "image")
+    window = as_float_array(window, "window")
+    if window.shape != problem.values.shape:
+        raise ValueError(
+            f"window must have the problem's shape {problem.values.shape}; got {window.shape}"
+        )
+    require_finite(window, "window")
+    return _paste_window(problem, image, window)
+
+
+def _paste_window(problem: PoissonProblem, image: np.ndarray, window: np.ndarray) -> np.ndarray:
+    """:func:`paste_window` without its checks, for inputs checked already."""
     x, y = problem.corner
     height, width = problem.region.shape
     result = np.array(image, dtype=float)
@@ -285,33 +362,133 @@ def paste_window(problem: PoissonProblem, image: np.ndarray, window: np.ndarray)
     return result
 
 
-def window_in(problem: PoissonProblem, image: np.ndarray, corner: tuple[int, int]) -> np.ndarray:
-    """The problem's window cut from ``image``, whose top-left pixel sits at ``corner``."""
-    x = problem.corner[0] - corner[0]
-    y = problem.corner[1] - corner[1]
+def window_in(problem: PoissonProblem, image: Any, corner: Any) -> np.ndarray:
+    """The problem's window cut from ``image``, whose top-left pixel sits at ``corner``.
+
+    ``corner = (x, y)`` places ``image`` in the problem's picture (the
+    foreground's offset, for a clone); the window must lie inside ``image``.
+
+    Examples
+    --------
+    >>> problem = clone_problem(np.zeros((5, 5)), np.ones((3, 3)), (1, 2))
+    >>> window_in(problem, np.ones((3, 3)), (1, 2)).shape
+    (3, 3)
+    """
+    problem = as_problem(problem)
+    array = as_float_array(image, "image")
+    x0, y0 = _as_corner(corner, "corner")
+    x = problem.corner[0] - x0
+    y = problem.corner[1] - y0
     height, width = problem.region.shape
-    return image[y : y + height, x : x + width]
+    if array.ndim != problem.values.ndim or array.shape[2:] != problem.values.shape[2:]:
+        raise ValueError(
+            f"image must have the layout of the problem's values {problem.values.shape}; "
+            f"got shape {array.shape}"
+        )
+    if not (0 <= x and x + width <= array.shape[1] and 0 <= y and y + height <= array.shape[0]):
+        raise ValueError(
+            f"image of shape {array.shape[:2]} at corner (x, y) = ({x0}, {y0}) does not hold "
+            f"the problem's window, {height} x {width} pixels at ({problem.corner[0]}, "
+            f"{problem.corner[1]})"
+        )
+    window = array[y : y + height, x : x + width]
+    require_finite(window, "image")
+    return window
 
 
-def window_at(image: np.ndarray, corner: tuple[int, int], shape: tuple[int, int]) -> np.ndarray:
-    """The ``shape`` window of ``image`` whose top-left pixel is ``corner = (x, y)``."""
+def window_at(image: Any, corner: Any, shape: Any) -> np.ndarray:
+    """The ``shape`` window of ``image`` whose top-left pixel is ``corner = (x, y)``.
+
+    The part of the window off the image is clipped, never wrapped around:
+    the result is a copy of the pixels the window and the image share (empty
+    when they share none).
+
+    Examples
+    --------
+    >>> image = np.arange(16.0).reshape(4, 4)
+    >>> window_at(image, (1, 2), (2, 2))
+    array([[ 9., 10.],
+           [13., 14.]])
+    >>> window_at(image, (-1, -1), (2, 3))   # one row and two columns on the image
+    array([[0., 1.]])
+    """
+    array = as_float_array(image, "image")
+    if array.ndim not in (2, 3):
+        raise ValueError(f"image must be (H, W) or (H, W, C); got shape {array.shape}")
+    x, y = _as_corner(corner, "corner")
+    height, width = as_shape(shape, "shape")
+    window = _window_at(array, (x, y), (height, width))
+    require_finite(window, "image")
+    return window.copy()
+
+
+def _window_at(image: np.ndarray, corner: tuple[int, int], shape: tuple[int, int]) -> np.ndarray:
+    """:func:`window_at` on checked input: a view, clipped to the image."""
     x, y = corner
-    return image[y : y + shape[0], x : x + shape[1]]
+    top, left = max(y, 0), max(x, 0)
+    bottom = max(min(y + shape[0], image.shape[0]), top)
+    right = max(min(x + shape[1], image.shape[1]), left)
+    return image[top:bottom, left:right]
+
+
+def _as_corner(corner: Any, name: str) -> tuple[int, int]:
+    if isinstance(corner, (str, bytes)) or not hasattr(corner, "__len__") or len(corner) != 2:
+        raise ValueError(f"{name} must be a pair (x, y) of integers; got {describe(corner)}")
+    return as_int(corner[0], f"{name}[0] (x)"), as_int(corner[1], f"{name}[1] (y)")
 
 
 def _channels_last(mask: np.ndarray, like: np.ndarray) -> np.ndarray:
     return mask if like.ndim == 2 else mask[..., None]
 
 
-def planes_of(image: np.ndarray) -> np.ndarray:
-    """``(h, w)`` or ``(h, w, 3)`` to channels first, ``(C, h, w)``."""
+def planes_of(image: Any) -> np.ndarray:
+    """``(h, w)`` or ``(h, w, C)`` to channels first, ``(C, h, w)``: a finite float copy.
+
+    Examples
+    --------
+    >>> planes_of(np.zeros((2, 3, 3))).shape, planes_of(np.zeros((2, 3))).shape
+    ((3, 2, 3), (1, 2, 3))
+    """
+    array = as_float_array(image, "image")
+    if array.ndim not in (2, 3) or 0 in array.shape:
+        raise ValueError(
+            f"image must be a non-empty (h, w) or (h, w, C) array; got shape {array.shape}"
+        )
+    require_finite(array, "image")
+    return array[None] if array.ndim == 2 else np.ascontiguousarray(np.moveaxis(array, -1, 0))
+
+
+def _planes_of(image: np.ndarray) -> np.ndarray:
     if image.ndim == 2:
         return image[None].astype(float)
     return np.ascontiguousarray(np.moveaxis(image, -1, 0), dtype=float)
 
 
-def image_of(planes: np.ndarray, like: np.ndarray) -> np.ndarray:
-    """Back from channels first to the layout of ``like``."""
+def image_of(planes: Any, like: Any) -> np.ndarray:
+    """Back from channels first, ``(C, h, w)``, to the layout of ``like``: a finite copy.
+
+    Examples
+    --------
+    >>> image_of(np.zeros((3, 2, 4)), np.zeros((2, 4, 3))).shape
+    (2, 4, 3)
+    """
+    array = as_float_array(planes, "planes")
+    if array.ndim != 3 or 0 in array.shape:
+        raise ValueError(f"planes must be a non-empty (C, h, w) array; got shape {array.shape}")
+    layout = np.shape(like) if isinstance(like, np.ndarray) else None
+    if layout is None or len(layout) not in (2, 3):
+        raise TypeError(f"like must be an (h, w) or (h, w, C) array; got {describe(like)}")
+    expected = (1, *layout) if len(layout) == 2 else (layout[2], *layout[:2])
+    if array.shape != expected:
+        raise ValueError(
+            f"planes must have shape {expected}, channels first, for like of shape {layout}; "
+            f"got {array.shape}"
+        )
+    require_finite(array, "planes")
+    return _image_of(array, like)
+
+
+def _image_of(planes: np.ndarray, like: np.ndarray) -> np.ndarray:
     if like.ndim == 2:
         return planes[0].copy()
     return np.ascontiguousarray(np.moveaxis(planes, 0, -1))

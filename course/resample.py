@@ -303,12 +303,30 @@ def measure_shift(
     out_size = as_int(out_size, "out_size", minimum=3, maximum=limits.MAX_SIDE)
     rate = as_int(rate, "rate", minimum=1, maximum=limits.MAX_RATE)
     ramp = np.broadcast_to((np.arange(in_size) + 0.5) / in_size, (2, in_size))
-    result = np.asarray(resampler(ramp, (1, out_size), rate))[0]
+    result = _checked_row(resampler(ramp, (1, out_size), rate), out_size)
     scale = in_size / out_size
     centres = np.arange(out_size) + 0.5
     # The first and last output pixels may have samples clamped at the border.
     interior = slice(1, out_size - 1)
     return float(np.mean(result[interior] * in_size / scale - centres[interior]))
+
+
+def _checked_row(answer: Any, out_size: int) -> np.ndarray:
+    """The one row of what ``resampler`` returned: a finite (1, out_size) image."""
+    try:
+        array = np.asarray(answer, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(
+            f"resampler must return a (1, {out_size}) image of numbers; it returned "
+            f"{describe(answer)}"
+        ) from None
+    if array.shape != (1, out_size):
+        raise ValueError(
+            f"resampler must return an image of shape (1, {out_size}), the out_shape it was "
+            f"given; it returned shape {array.shape}"
+        )
+    require_finite(array, "resampler's result")
+    return array[0]
 
 
 def _require_bounded_samples(height: int, width: int, rate: int) -> None:

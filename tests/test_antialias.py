@@ -353,3 +353,23 @@ def test_render_does_not_modify_its_input():
     for method in RENDER_METHODS:
         render(points, SHAPE, method)
     np.testing.assert_array_equal(points, EDGE_CURVE)
+
+
+def test_render_refuses_a_step_that_would_take_too_many_samples():
+    from course import limits
+
+    with pytest.raises(ValueError, match="step"):
+        render([[0.0, 1.0], [4.0, 1.0]], (4, 4), "bilinear_centres", step=1e-9)
+    many = [[[0.0, 1.0], [4.0, 1.0]]] * (limits.MAX_STEP_SAMPLES // 1000)
+    with pytest.raises(ValueError, match=r"samples over \d+ curves"):
+        render(many, (4, 4), "bilinear_centres", step=0.001)
+    long_curve = [[0.0, 0.0], [2.0**20, 0.0]]
+    with pytest.raises(ValueError, match="a long curve takes a fine default step"):
+        render(long_curve, (4, 4), "bilinear_centres", weighting="arc_length")
+
+
+def test_curve_samples_refuses_a_step_too_fine():
+    from course.antialias import curve_samples
+
+    with pytest.raises(ValueError, match="step must give at most"):
+        curve_samples([[0.0, 1.0], [4.0, 1.0]], 1e-9)

@@ -614,3 +614,22 @@ def test_public_names_are_exported():
         "sample_uniform",
         "uniform_parameters",
     }
+
+
+@pytest.mark.parametrize("step", [1e-9, 1e-15])
+def test_a_step_too_fine_is_refused_before_any_sample_is_made(step):
+    from course import limits
+    from course.bezier import sample_uniform, uniform_parameters
+
+    with pytest.raises(ValueError, match=f"at most {limits.MAX_STEP_SAMPLES} samples"):
+        uniform_parameters(step)
+    with pytest.raises(ValueError, match="step must give"):
+        sample_uniform([[0, 0], [1, 1]], step, accumulate="float32")
+
+
+def test_the_finest_step_allowed_gives_at_most_the_bound():
+    from course import limits
+    from course.bezier import uniform_parameters
+
+    step = 1 / (limits.MAX_STEP_SAMPLES - 2)
+    assert len(uniform_parameters(step)) <= limits.MAX_STEP_SAMPLES

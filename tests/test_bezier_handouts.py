@@ -5,6 +5,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from course.bezier import bezier_bernstein, de_casteljau, sample_uniform, uniform_parameters
 from course.bezier_handouts import (
@@ -136,3 +138,31 @@ def test_the_yellow_check_agrees_with_painting_both_curves_by_hand():
     # The float loops stop short of t = 1; the double one stops a whole step short.
     assert yellow_check(SEED_000_CUBIC, HANDOUT_LOOPS["003"]).fraction == 1.0
     assert yellow_check(SEED_000_CUBIC, HANDOUT_LOOPS["000"]).fraction < 0.5
+
+
+def test_trace_recursive_refuses_a_curve_deeper_than_the_recursion_allows():
+    import sys
+
+    from course.bezier_handouts import trace_recursive
+
+    points = np.zeros((1501, 2))
+    with pytest.raises(ValueError, match="points must hold at most"):
+        trace_recursive(points, 0.5)
+    depth = sys.getrecursionlimit() // 2
+    assert trace_recursive(np.zeros((depth, 2)), 0.5).calls == depth
+
+
+@given(st.lists(st.tuples(st.integers(-40, 40), st.integers(-40, 40)), min_size=2, max_size=6))
+def test_step_report_counts_the_distinct_pixels_of_its_samples(control):
+    from course.bezier_handouts import step_report
+
+    report = step_report(np.array(control, dtype=float), 0.01)
+    assert report["pixels"] == len({tuple(p) for p in report["pixel_list"].tolist()})
+
+
+def test_trace_iterative_bounds_the_handout_loop():
+    from course import limits
+    from course.bezier_handouts import trace_iterative
+
+    with pytest.raises(ValueError, match=f"at most {limits.MAX_HANDOUT_POINTS} control points"):
+        trace_iterative(np.zeros((limits.MAX_HANDOUT_POINTS + 1, 2)), 0.5)

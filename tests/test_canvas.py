@@ -91,3 +91,12 @@ def test_painted_is_paint_on_a_blank_canvas_for_every_mode():
                 mode,
             )
             np.testing.assert_array_equal(painted((8, 10), pixels, color, weights, mode), expected)
+
+
+@pytest.mark.parametrize("threshold", ["abc", None, np.nan, -0.5, 1.5])
+def test_yellow_fraction_names_a_bad_threshold(threshold):
+    from course.canvas import blank, yellow_fraction
+
+    image = blank((2, 2), (1.0, 1.0, 0.0))
+    with pytest.raises((TypeError, ValueError), match="threshold"):
+        yellow_fraction(image, threshold)

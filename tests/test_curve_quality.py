@@ -89,3 +89,20 @@ def test_variants_and_the_quality_table():
     assert table["stroke_area"]["rmse"] < table[AGG]["rmse"]
     assert table["stroke_area"]["cv"] <= 0.05
     assert table["bilinear_centres" + ARC_LENGTH]["cv"] < table["bilinear_centres"]["cv"]
+
+
+def test_variants_refuses_a_degree_agg_cannot_draw_before_rendering_anything(monkeypatch):
+    from course import curve_quality
+
+    drawn = []
+    original = curve_quality.render_variant
+
+    def counting(name, *args, **kwargs):
+        drawn.append(name)
+        return original(name, *args, **kwargs)
+
+    monkeypatch.setattr(curve_quality, "render_variant", counting)
+    curve = np.column_stack([np.linspace(1, 30, 201), np.full(201, 5.0)])
+    with pytest.raises(ValueError, match="degree 1 to 3"):
+        curve_quality.variants(curve, (10, 32))
+    assert drawn == [curve_quality.AGG]

@@ -234,3 +234,14 @@ def test_bad_options_are_rejected_naming_them():
         bn.blue_noise_mask(1)
     with pytest.raises(ValueError, match=r"pattern must be a square \(N, N\) array"):
         bn.cluster_energy(np.zeros((3, 4)))
+
+
+def test_bayer_sizes_are_bounded_before_the_matrix_is_built():
+    from course import limits
+    from course.dither import bayer, bayer_matrix
+
+    with pytest.raises(ValueError, match=f"size must be between 1 and {limits.MAX_BAYER_SIZE}"):
+        bayer_matrix(2**14)
+    with pytest.raises(ValueError, match="size must be between"):
+        bayer(np.full((4, 4), 0.5), size=2**14)
+    assert bayer_matrix(limits.MAX_BAYER_SIZE).shape == (2**11, 2**11)

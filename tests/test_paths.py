@@ -158,3 +158,71 @@ def test_render_does_not_modify_a_path():
         render(path, (8, 8), method)
     for curve, copy in zip(path, copies, strict=True):
         np.testing.assert_array_equal(curve, copy)
+
+
+# --- Curves and the callbacks: checked once, at the boundary ---------------------------
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, 1e200])
+def test_curves_refuse_points_that_are_not_finite_or_far_away(bad):
+    from course.paths import Curves
+
+    points = np.array([[0.0, 0.0], [bad, 1.0]])
+    with pytest.raises(ValueError, match="points"):
+        Curves(points, np.array([2]))
+
+
+def test_curves_refuse_sizes_that_disagree_with_their_points():
+    from course.paths import Curves, flatten_uniform
+
+    with pytest.raises(ValueError, match="sizes must add up to the 4 points"):
+        flatten_uniform(Curves(np.zeros((4, 2)), np.array([3, 3])), 0.1)
+    with pytest.raises(ValueError, match="sizes must be >= 1"):
+        Curves(np.zeros((4, 2)), np.array([4, 0]))
+    with pytest.raises(TypeError, match="sizes must be a 1-D integer"):
+        Curves(np.zeros((4, 2)), np.array([4.0]))
+
+
+@pytest.mark.parametrize("offset", [None, (np.nan, 0.0), (np.inf, 0.0), (1.0,), "ab"])
+def test_moved_refuses_an_offset_that_is_not_a_point(offset):
+    path = as_path([[0.0, 0.0], [3.0, 4.0]])
+    with pytest.raises((TypeError, ValueError), match="offset"):
+        path.moved(offset)
+
+
+def test_moved_refuses_to_move_points_past_the_coordinate_bound():
+    path = as_path([[0.0, 0.0], [3.0, 4.0]])
+    with pytest.raises(ValueError, match="offset"):
+        path.moved((-(2.0**20), 0.0))
+
+
+@pytest.mark.parametrize(
+    ("answer", "error", "message"),
+    [
+        (lambda control: np.full((3, 2), np.nan), ValueError, "finite vertices"),
+        (lambda control: control * 1e200, ValueError, "finite vertices"),
+        (lambda control: np.zeros((2, 3)), ValueError, r"\(K, 2\) vertices"),
+        (lambda control: np.zeros((0, 2)), ValueError, r"K >= 1"),
+        (lambda control: None, ValueError, "flatten_one must return"),
+        (lambda control: "abc", TypeError, "flatten_one must return"),
+    ],
+)
+def test_flatten_each_checks_what_its_callback_returns(answer, error, message):
+    from course.paths import flatten_each
+
+    with pytest.raises(error, match=message):
+        flatten_each(as_path([[0.0, 0.0], [3.0, 4.0], [5.0, 0.0]]), answer)
+
+
+def test_flatten_each_keeps_a_good_callback_s_vertices():
+    from course.paths import flatten_each
+
+    path = as_path([[[0.0, 0.0], [3.0, 4.0]], [[3.0, 4.0], [5.0, 0.0]]])
+    line, gaps = flatten_each(path, lambda control: control)
+    np.testing.assert_array_equal(line, [[0.0, 0.0], [3.0, 4.0], [5.0, 0.0]])
+    assert not gaps.any()
+
+
+def test_text_has_a_bounded_length():
+    with pytest.raises(ValueError, match="text must be at most 1000 characters"):
+        text_curves("W" * 1001)

@@ -506,3 +506,121 @@ def test_the_history_ends_with_the_iterate_solve_returns():
     assert list(history.sweeps) == [0, 5, 10, 12]
     solved = poisson.solve(problem, "gauss_seidel", iterations=12)
     assert np.abs(history.solution - solved).max() < 1e-15
+
+
+# --- the window helpers of course.poisson_problem: public, so checked ---------------------
+
+
+@given(
+    x=st.integers(-6, 10),
+    y=st.integers(-6, 10),
+    height=st.integers(1, 8),
+    width=st.integers(1, 8),
+)
+def test_window_at_clips_a_window_off_the_image_and_never_wraps(x, y, height, width):
+    from course.poisson_problem import window_at
+
+    image = np.arange(48.0).reshape(6, 8)
+    window = window_at(image, (x, y), (height, width))
+    rows = [r for r in range(y, y + height) if 0 <= r < 6]
+    columns = [c for c in range(x, x + width) if 0 <= c < 8]
+    expected = image[np.ix_(rows, columns)] if rows and columns else np.zeros((0, 0))
+    assert window.size == expected.size
+    if expected.size:
+        np.testing.assert_array_equal(window, expected)
+
+
+def test_window_at_with_a_negative_corner_keeps_the_part_on_the_image():
+    from course.poisson_problem import window_at
+
+    assert window_at(np.zeros((8, 8)), (-1, -1), (3, 3)).shape == (2, 2)
+    assert window_at(np.ones((8, 8)), (-2, 1), (3, 4)).shape == (3, 2)
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf])
+def test_the_window_helpers_reject_non_finite_pixels(bad):
+    from course.poisson_problem import (
+        clone_problem,
+        image_of,
+        paste_window,
+        planes_of,
+        window_at,
+        window_in,
+    )
+
+    image = np.zeros((6, 6))
+    image[1, 1] = bad
+    problem = clone_problem(np.zeros((6, 6)), np.zeros((3, 3)), (0, 0))
+    with pytest.raises(ValueError, match="image must be finite"):
+        planes_of(image)
+    with pytest.raises(ValueError, match="planes must be finite"):
+        image_of(image[None], np.zeros((6, 6)))
+    with pytest.raises(ValueError, match="image must be finite"):
+        paste_window(problem, image, np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="window must be finite"):
+        paste_window(problem, np.zeros((6, 6)), image[:3, :3])
+    with pytest.raises(ValueError, match="image must be finite"):
+        window_in(problem, image, (0, 0))
+    with pytest.raises(ValueError, match="image must be finite"):
+        window_at(image, (0, 0), (3, 3))
+    for method in (problem.seam, problem.texture):
+        with pytest.raises(ValueError, match="image must be finite"):
+            method(image)
+    with pytest.raises(ValueError, match="image must be finite"):
+        problem.paste(image, np.zeros((3, 3)))
+
+
+def test_the_window_helpers_name_what_is_wrong():
+    from course.poisson_problem import (
+        build_clone_problem,
+        clone_problem,
+        image_of,
+        paste_window,
+        planes_of,
+        window_in,
+    )
+
+    problem = clone_problem(np.zeros((6, 6)), np.zeros((4, 4)), (1, 1))
+    with pytest.raises(TypeError, match="problem must be a PoissonProblem"):
+        paste_window(None, np.zeros((6, 6)), np.zeros((4, 4)))
+    with pytest.raises(TypeError, match="problem must be a PoissonProblem"):
+        window_in(None, np.zeros((4, 4)), (1, 1))
+    with pytest.raises(ValueError, match="does not hold the problem's window"):
+        window_in(problem, np.zeros((4, 4)), (2, 2))
+    with pytest.raises(TypeError, match="like must be"):
+        image_of(np.zeros((1, 2, 2)), None)
+    with pytest.raises(ValueError, match=r"planes must have shape \(3, 2, 2\)"):
+        image_of(np.zeros((1, 2, 2)), np.zeros((2, 2, 3)))
+    with pytest.raises(TypeError, match="image must hold real numbers"):
+        planes_of(None)
+    with pytest.raises(TypeError, match="foreground"):
+        build_clone_problem(np.zeros((6, 6)), None, (1, 1), None, "plain")
+    for method in (problem.seam, problem.texture):
+        with pytest.raises(ValueError, match="must hold the problem's window"):
+            method(np.zeros((2, 2)))
+
+
+def test_the_checked_helpers_give_what_the_solvers_use():
+    from course.poisson_problem import (
+        build_clone_problem,
+        clone_problem,
+        image_of,
+        paste_window,
+        planes_of,
+        window_in,
+    )
+
+    rng = np.random.default_rng(5)
+    background, foreground = rng.uniform(0, 1, (9, 10, 3)), rng.uniform(0, 1, (5, 6, 3))
+    problem = clone_problem(background, foreground, (3, 2))
+    built = build_clone_problem(background, foreground, (3, 2), None, "plain")
+    for field in ("values", "region", "source"):
+        np.testing.assert_array_equal(getattr(built, field), getattr(problem, field))
+    planes = planes_of(problem.values)
+    np.testing.assert_array_equal(planes[1], problem.values[..., 1])
+    np.testing.assert_array_equal(image_of(planes, problem.values), problem.values)
+    window = window_in(problem, foreground, (3, 2))
+    np.testing.assert_array_equal(window, foreground)
+    pasted = paste_window(problem, background, window)
+    np.testing.assert_array_equal(pasted[3:6, 4:8], foreground[1:-1, 1:-1])
+    np.testing.assert_array_equal(pasted, problem.paste(background, window))

@@ -61,3 +61,14 @@ def test_the_day_plane_is_blue_and_an_unknown_sky_is_refused_by_name():
     assert (day[2:8, 2:8, 2] > day[2:8, 2:8, 0]).all()
     with pytest.raises(ValueError, match="sky"):
         images.plane(sky="night")
+
+
+@pytest.mark.parametrize("path", [3, None, b"x.json"])
+def test_write_lab_sweeps_checks_its_path_before_solving(path):
+    with pytest.raises(TypeError, match="path must be a file path"):
+        figures.write_lab_sweeps(path)
+
+
+def test_write_lab_sweeps_refuses_a_folder(tmp_path):
+    with pytest.raises(ValueError, match="is a folder"):
+        figures.write_lab_sweeps(str(tmp_path))

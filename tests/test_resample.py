@@ -236,3 +236,19 @@ def test_each_half_of_the_reports_mistake_shifts_the_picture_by_its_own_half(rat
     )
     with pytest.raises(ValueError, match="sample_offset"):
         supersample_shifted(image, (5, 7), rate, sample_offset=float("inf"))
+
+
+@pytest.mark.parametrize(
+    ("resampler", "error", "message"),
+    [
+        (lambda image, shape, rate: np.full(shape, np.nan), ValueError, "must be finite"),
+        (lambda image, shape, rate: np.zeros((2, 3, 4)), ValueError, r"shape \(1, 8\)"),
+        (lambda image, shape, rate: None, ValueError, r"shape \(1, 8\)"),
+        (lambda image, shape, rate: "abc", TypeError, "resampler must return"),
+    ],
+)
+def test_measure_shift_checks_what_the_resampler_returns(resampler, error, message):
+    from course.resample import measure_shift
+
+    with pytest.raises(error, match=message):
+        measure_shift(resampler, 32, 8, 2)

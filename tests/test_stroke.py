@@ -259,3 +259,13 @@ def test_a_point_crowding_a_segment_is_found_past_a_nearer_point():
     exact = reference(curves, (6, 8), 3.0, k=K)
     assert image[0, 2] == pytest.approx(0.898, abs=0.01)
     assert np.abs(image - exact).max() <= TOLERANCE
+
+
+def test_a_path_running_over_itself_thousands_of_times_is_refused_not_integrated():
+    from course import limits
+    from course.antialias import stroke_area
+
+    zigzag = np.resize([[2.0, 3.0], [14.0, 1.0], [3.0, 13.0], [13.0, 14.0]], (1501, 2))
+    with pytest.raises(ValueError, match=f"more than the {limits.MAX_OVERLAP_PAIRS}"):
+        stroke_area(zigzag)
+    assert stroke_area(zigzag[:101])[1].max() <= 1.0

@@ -59,6 +59,8 @@ def curve_picture(
     curve run backwards shows at a glance. Image space: y points down.
     """
     control = as_points(control, "control", bound=limits.MAX_COORDINATE)
+    if len(control) > 100:  # each control point is labelled: a picture has room for 100
+        raise ValueError(f"control must hold at most 100 points; got {len(control)}")
     expected = _as_pairs(expected, "expected")
     require_finite(expected, "expected")
     given = _as_pairs(given, "given")  # a student's points: NaN shows as a gap

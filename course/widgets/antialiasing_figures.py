@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import functools
 import math
+from typing import Any
 
 import numpy as np
 from matplotlib.collections import LineCollection
@@ -18,6 +19,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Polygon
 
+from course import limits
+from course._validate import as_positive_float, describe
 from course.antialias import bilinear_centres, render
 from course.bezier import de_casteljau
 from course.canvas import crop
@@ -247,6 +250,7 @@ def brightness_figure(
     ink per px of length, step 0.001: counted 0.50..1.09, by length 0.75..1.00;
     step 0.0002: counted 1.24..2.00, by length 1.00..1.00
     """
+    steps = _as_steps(steps)
     figure = Figure(figsize=(9.0, 3.0), dpi=100)
     panels = figure.subplots(1, 2, sharey=True)
     ranges = {}
@@ -273,6 +277,22 @@ def brightness_figure(
         (c0, c1), (a0, a1) = ranges["count", step], ranges["arc_length", step]
         parts.append(f"step {step:g}: counted {c0:.2f}..{c1:.2f}, by length {a0:.2f}..{a1:.2f}")
     return Still.of(figure, "ink per px of length, " + "; ".join(parts))
+
+
+def _as_steps(steps: Any) -> tuple[float, ...]:
+    """One to eight t steps, each drawn twice: at most MAX_STEP_SAMPLES / 4 samples in all."""
+    if isinstance(steps, (str, bytes)) or not isinstance(steps, (tuple, list, np.ndarray)):
+        raise TypeError(f"steps must be a sequence of t steps; got {describe(steps)}")
+    if not 1 <= len(steps) <= 8:
+        raise ValueError(f"steps must hold 1 to 8 t steps; got {len(steps)}")
+    checked = tuple(as_positive_float(step, f"steps[{i}]") for i, step in enumerate(steps))
+    samples = sum(np.floor(1 / step) + 1 for step in checked)
+    if samples > limits.MAX_STEP_SAMPLES // 4:
+        raise ValueError(
+            f"steps must give at most {limits.MAX_STEP_SAMPLES // 4} samples in all, each "
+            f"drawn twice; {list(checked)} give {samples:.3g}"
+        )
+    return checked
 
 
 class Table(str):
@@ -505,6 +525,13 @@ def text_figure(text: str = "Bé", size: float = 40.0, zoom: int = 6) -> Still:
     'Bé' at 40 px, stroked at width 1, against the exact coverage: RMSE Agg 0.0333,
     stroke area 0.0028
     """
+    size = as_positive_float(size, "size")
+    if not isinstance(text, str) or len(text) * size > limits.MAX_STROKED_TEXT:
+        raise ValueError(
+            f"text and size must have len(text) * size at most {limits.MAX_STROKED_TEXT} "
+            f"(the exact coverage samples every pixel along the outlines); got {describe(text)} "
+            f"at {size:g} px"
+        )
     curves = text_curves(text, size=size)
     shape = canvas_for(curves)
     exact = reference(curves, shape, width=1.0, k=64)

@@ -13,7 +13,8 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
-from course._validate import as_curve, as_int
+from course import limits
+from course._validate import as_figure_curve, as_int
 from course.bezier import binomial, de_casteljau, derivative
 from course.bezier_accuracy import accuracy_by_degree
 from course.bezier_handouts import comb_recursive_calls
@@ -59,7 +60,7 @@ def tangents_figure(points: Any) -> Still:
     >>> tangents_figure([[90, 610], [170, 130], [540, 80], [620, 470]])
     B'(0) = (240, -1440) = 3 (P1 - P0); B'(1) = (240, 1170) = 3 (P3 - P2)
     """
-    control = as_curve(points)
+    control = as_figure_curve(points)
     degree = len(control) - 1
     hodograph = derivative(control)
     start, end = de_casteljau(hodograph, 0.0), de_casteljau(hodograph, 1.0)
@@ -108,7 +109,11 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
     slowest at t = 0.582, 667 px per unit of t
     fastest at t = 0, 1460
     """
-    control = as_curve(points)
+    control = as_figure_curve(points)
+    if np.size(ts) > limits.MAX_FIGURE_POINTS:  # one arrow and label each
+        raise ValueError(
+            f"ts must hold at most {limits.MAX_FIGURE_POINTS} values; got {np.size(ts)}"
+        )
     hodograph = derivative(control)
     velocities = de_casteljau(hodograph, np.asarray(ts, dtype=float))
     curve = de_casteljau(control, np.linspace(0.0, 1.0, 201))

@@ -20,7 +20,7 @@ from matplotlib.legend_handler import HandlerTuple
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-from course._validate import as_choice, as_curve, as_int
+from course._validate import as_choice, as_figure_curve, as_int
 from course.bezier import (
     de_casteljau,
     de_casteljau_levels,
@@ -70,7 +70,7 @@ def three_points_figure(points: Any, t: float) -> Still:
     >>> three_points_figure([[0, 0], [2, 4], [8, 0]], 0.25)
     de Casteljau on three points at t = 0.25: B(t) = (5/4, 3/2)
     """
-    control = as_curve(points)
+    control = as_figure_curve(points)
     levels = de_casteljau_levels(control, t)
     curve = de_casteljau(control, np.linspace(0.0, 1.0, 101))
     figure = Figure(figsize=(5.2, 3.6), dpi=100)
@@ -145,7 +145,7 @@ def reversed_figure(points: Any, t: float = 0.25) -> Still:
     >>> reversed_figure([[10, 10], [690, 10], [10, 690], [690, 690]])
     at t = 0.25: textbook (307.5, 116.25), reversed (392.5, 583.75) = textbook at t = 0.75
     """
-    control = as_curve(points)
+    control = as_figure_curve(points)
     ts = np.linspace(0.0, 1.0, 21)
     figure = Figure(figsize=(8.4, 4.4), dpi=100)
     pairs = (
@@ -240,7 +240,7 @@ def end_of_curve_figure(
     the GAMES101 report paints it (last t 0.9999907)
     the VS2022 report does not (last t 0.999)
     """
-    control = as_curve(points)
+    control = as_figure_curve(points)
     if isinstance(seeds, str) or not hasattr(seeds, "__iter__"):
         raise TypeError(f"seeds must be a sequence of handout seeds; got {type(seeds).__name__}")
     seeds = [as_choice(seed, "seeds", tuple(HANDOUT_LOOPS)) for seed in seeds]
@@ -302,7 +302,9 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
     step 0.0001 0 gaps, 7.55
     flatten 0 gaps, 1.21
     """
-    control = as_curve(points)
+    control = as_figure_curve(points)
+    # Three panels zoomed 12 times: a window of 100 pixels is a 3600-pixel-wide picture.
+    size = as_int(size, "size", minimum=1, maximum=100)
     centre = de_casteljau(control, near_t)
     polyline = flatten(control, 0.25, max_step=1.0)
     drawings = [
@@ -351,7 +353,7 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     >>> yellow_check_figure([[10, 10], [690, 10], [10, 690], [690, 690]], "002")
     the any-degree report against naive_bezier: 99.2% yellow, 4 pixels only red, 4 only green
     """
-    control = as_curve(points)
+    control = as_figure_curve(points)
     seed = as_choice(seed, "seed", tuple(HANDOUT_LOOPS))
     size = as_int(size, "size", minimum=2, maximum=100)
     check = yellow_check(control, HANDOUT_LOOPS[seed])

@@ -24,7 +24,7 @@ import numpy as np
 from matplotlib.patches import Rectangle
 
 from course import filters, images, limits
-from course._validate import as_choice, as_image, as_int, as_option, describe
+from course._validate import as_choice, as_float_array, as_image, as_int, as_option, describe
 from course.widgets.base import SliderApp
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
@@ -32,6 +32,7 @@ __all__ = [
     "KERNELS",
     "KernelApp",
     "RepeatedBlurApp",
+    "blurred",
     "border_ring_mean",
     "format_kernel",
     "parse_kernel",
@@ -174,15 +175,16 @@ class RepeatedBlurApp(SliderApp):
             )
             self.titles[border] = top.set_title(border, fontsize=9)
             bottom = bare_axes(self.figure.add_subplot(grid[1, column]))
-            self.crops[border] = bottom.imshow(self.corner_of(self.image), **style)
+            self.crops[border] = bottom.imshow(self._corner_of(self.image), **style)
         self.update()
 
-    def corner_of(self, image: np.ndarray) -> np.ndarray:
+    def _corner_of(self, image: np.ndarray) -> np.ndarray:
         """The zoomed top-right corner."""
         return image[: self.corner, -self.corner :]
 
     def blurred(self, repeats: int) -> dict[str, np.ndarray]:
         """The image blurred ``repeats`` times under each rule (kept for the next step)."""
+        repeats = as_int(repeats, "repeats", minimum=0, maximum=30)  # the slider's range
         if repeats < self.done:
             self.done, self.results = 0, dict.fromkeys(filters.BORDERS, self.image)
         while self.done < repeats:
@@ -196,7 +198,7 @@ class RepeatedBlurApp(SliderApp):
         repeats = int(self.value("repeats"))
         for border, result in self.blurred(repeats).items():
             self.wholes[border].set_data(result)
-            self.crops[border].set_data(self.corner_of(result))
+            self.crops[border].set_data(self._corner_of(result))
             ring = border_ring_mean(result)
             if self.original_ring > 0:
                 edge = f"edge pixels at {ring / self.original_ring:.2f} x the original"
@@ -323,6 +325,9 @@ class KernelApp(SliderApp):
 
     def filtered(self, kernel: np.ndarray, border: str) -> np.ndarray:
         """The lab's dot product of ``kernel`` with each window, under ``border``."""
+        kernel = as_float_array(kernel, "kernel")
+        if kernel.shape != (3, 3):
+            raise ValueError(f"kernel must be 3 x 3; got shape {kernel.shape}")
         return filters.convolve(self.image, kernel[::-1, ::-1], border)
 
     def update(self) -> None:

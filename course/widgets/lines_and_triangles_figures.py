@@ -305,11 +305,18 @@ def colour_figure(
     >>> colour_figure()
     131 pixels; at the centre (14.5, 7.5) the weights are (0.240, 0.515, 0.245)
     """
-    size = as_shape(size, "size", max_pixels=256 * 256)
+    size = as_shape(size, "size", max_pixels=128 * 128)
+    if max(size) > 128:  # zoomed 16 times, a side of 128 pixels is a 2048-pixel picture
+        raise ValueError(f"size must have sides of at most 128 pixels; got {size}")
     p0, p1, p2 = (
         as_point(p, name, dim=2, bound=256.0) for p, name in ((p0, "p0"), (p1, "p1"), (p2, "p2"))
     )
     pixels, colours = interpolate(p0, p1, p2, np.eye(3), shape=size)
+    if len(pixels) == 0:
+        raise ValueError(
+            f"p0, p1 and p2 must enclose at least one pixel centre of the {size} canvas to "
+            f"colour; got {p0.tolist()}, {p1.tolist()}, {p2.tolist()}"
+        )
     image = blank(size, (1.0, 1.0, 1.0))
     image[pixels[:, 1], pixels[:, 0]] = colours
     height, width = size

@@ -499,6 +499,11 @@ def pixel_figure(
     top = title_height + (legend_height if legend else 0)
     columns = reserve_left + sum(widths) + gap * (len(windows) + 1) + reserve_right
     rows = max(heights) + top + gap // 2
+    if columns * rows > limits.MAX_FIGURE_PIXELS:
+        raise ValueError(
+            f"windows at zoom {zoom} make a {columns} x {rows} picture, more than the "
+            f"{limits.MAX_FIGURE_PIXELS} pixels allowed: crop smaller windows or zoom less"
+        )
     figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
     axes_list = []
     left = reserve_left + gap

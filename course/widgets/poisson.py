@@ -22,6 +22,7 @@ from course._validate import (
     as_float_array,
     as_image,
     as_int,
+    as_option,
     describe,
     require_finite,
 )
@@ -111,6 +112,8 @@ class PoissonIterationApp(SliderApp):
 
     def iterate(self, method: str, sweeps: int) -> np.ndarray:
         """The problem's window after ``sweeps`` sweeps of ``method`` (kept for next time)."""
+        method = as_option(method, "method", poisson.ITERATIVE_METHODS)
+        sweeps = as_option(sweeps, "sweeps", self.stops)  # the slider's stops: bounded work
         kept = self._iterates.setdefault(method, {0: self.problem.values})
         if sweeps not in kept:
             run, done = self._runs.get(method, (None, 0))

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import functools
 import json
+import os
 from pathlib import Path
 from typing import Any
 
@@ -42,7 +43,9 @@ __all__ = [
     "lab_sweeps",
     "mask_and_mixed_figure",
     "residual_scale",
+    "strip_and_square",
     "tiny_clone_figure",
+    "write_lab_sweeps",
 ]
 
 #: Where the day plane sits in the lake's sky (x, y): the headline clone.
@@ -219,8 +222,19 @@ def lab_sweeps() -> dict[str, Any]:
     return json.loads(LAB_SWEEPS_FILE.read_text())
 
 
-def write_lab_sweeps(path: Path = LAB_SWEEPS_FILE) -> None:
-    """Compute the record again and store it (the maintainers' step; a test compares)."""
+def write_lab_sweeps(path: str | os.PathLike[str] = LAB_SWEEPS_FILE) -> None:
+    """Compute the record again and store it (the maintainers' step; a test compares).
+
+    ``path`` is a file path, a ``str`` or a ``Path``; it is checked before the
+    minutes of solving.
+    """
+    if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
+        raise TypeError(
+            f"path must be a file path (str or pathlib.Path); got {type(path).__name__} {path!r}"
+        )
+    path = Path(path)
+    if path.is_dir():
+        raise ValueError(f"path must name a file; {str(path)!r} is a folder")
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(compute_lab_sweeps(), indent=1) + "\n")
 

@@ -15,7 +15,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from course import limits
-from course._validate import as_int
+from course._validate import as_int, as_option
 from course.images import photograph, zone_plate, zone_plate_box
 from course.metrics import rmse
 from course.resample import supersample, supersample_without_offset
@@ -133,10 +133,14 @@ class SupersampleApp(SliderApp):
 
     def resample(self, image: str, version: str, rate: int) -> np.ndarray:
         """The chosen image shrunk by the chosen version at this rate."""
+        image = as_option(image, "image", tuple(self.sources))
+        version = as_option(version, "version", VERSIONS)
+        rate = as_int(rate, "rate", minimum=1, maximum=self.max_rate)
         return _RESAMPLERS[version](self.sources[image], self.out_shapes[image], rate)
 
     def error_curves(self, image: str) -> dict[str, np.ndarray]:
         """RMS error against the reference at every rate, per version (computed once)."""
+        image = as_option(image, "image", tuple(self.sources))
         if image not in self.errors:
             reference = self.references[image]
             self.errors[image] = {

@@ -276,6 +276,9 @@ def shift_figure(rate: int = 4, corner: int = 40, zoom: int = 6) -> Still:
     >>> shift_figure()
     rate 4, top-left 40 x 40: RMS centred 0.0008, the report's 0.0326
     """
+    # Two supersamplings of the lab's whole plate: their cost grows with rate**2.
+    rate = as_int(rate, "rate", minimum=1, maximum=16)
+    corner = as_int(corner, "corner", minimum=1, maximum=LAB_OUT)
     plate, exact = _lab_zone_plate()
     window = (slice(0, corner), slice(0, corner))
     centred = supersample(plate, (LAB_OUT, LAB_OUT), rate)[window]

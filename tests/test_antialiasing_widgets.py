@@ -210,3 +210,18 @@ def test_curve_walk_and_zoom_panel_refuse_what_they_cannot_draw():
         ZoomPanel(axes, np.zeros(0))
     with pytest.raises(ValueError, match="curve must be finite"):
         ZoomPanel(axes, [[0.0, 0.0], [np.nan, 1.0]])
+
+
+def test_a_zoom_panels_window_is_refused_when_not_finite_or_its_extent_does_not_span_it():
+    app = ZoomApp()
+    panel = app.panels[0]
+    window = np.zeros((4, 5))
+    with pytest.raises(ValueError, match="window"):
+        panel.show_window(np.full((4, 5), np.nan), (0, 5, 4, 0), "t")
+    with pytest.raises(ValueError, match="extent must be"):
+        panel.show_window(window, (0, 5, 4), "t")
+    with pytest.raises(ValueError, match="span the window's 5 columns and 4 rows"):
+        panel.show_window(window, (0, 6, 4, 0), "t")
+    with pytest.raises(TypeError, match=r"extent\[0\]"):
+        panel.show_window(window, (0.5, 5, 4, 0), "t")
+    assert panel.show_window(window, (10, 15, 24, 20), "t") is not None

@@ -25,6 +25,7 @@ from matplotlib.patches import Rectangle
 from course import limits
 from course._validate import (
     as_curve,
+    as_float_array,
     as_image,
     as_int,
     as_point,
@@ -32,6 +33,7 @@ from course._validate import (
     as_scalar_parameter,
     as_shape,
     describe,
+    require_finite,
 )
 from course.antialias import SPLATS, WEIGHTINGS, render
 from course.canvas import crop
@@ -175,7 +177,26 @@ class ZoomPanel:
     def show_window(
         self, window: np.ndarray, extent: Any, title: str, note: str = ""
     ) -> np.ndarray:
-        """Show ``window``, a crop with extent ``(left, right, bottom, top)``; return it."""
+        """Show ``window``, a crop with extent ``(left, right, bottom, top)``; return it.
+
+        The extent is in whole pixels and spans the window exactly: ``right - left``
+        columns and ``bottom - top`` rows.
+        """
+        window = as_float_array(window, "window")
+        if window.ndim != 2 or 0 in window.shape:
+            raise ValueError(f"window must be a gray (H, W) crop; got shape {window.shape}")
+        require_finite(window, "window")  # values past 1 are ink piled up, drawn as 1
+        if not isinstance(extent, (tuple, list)) or len(extent) != 4:
+            raise ValueError(
+                f"extent must be (left, right, bottom, top) in pixels; got {describe(extent)}"
+            )
+        bound = limits.MAX_COORDINATE
+        x0, x1, y1, y0 = (as_int(v, f"extent[{i}]", maximum=bound) for i, v in enumerate(extent))
+        if (x1 - x0, y1 - y0) != (window.shape[1], window.shape[0]):
+            raise ValueError(
+                f"extent must span the window's {window.shape[1]} columns and "
+                f"{window.shape[0]} rows; got {x1 - x0} x {y1 - y0}"
+            )
         if self.app is None:
             self.picture.set_data(window)
             self.picture.set_extent(extent)
@@ -184,7 +205,6 @@ class ZoomPanel:
             gray = (np.clip(window, 0.0, 1.0) * 255).astype(np.uint8)  # as imshow maps gray
             zoomed = np.repeat(np.repeat(gray, zoom, axis=0), zoom, axis=1)
             self.app.pixel_images[self.axes] = np.repeat(zoomed[..., None], 3, axis=2)
-        x0, x1, y1, y0 = extent
         columns = [[(x, y0), (x, y1)] for x in range(x0, x1 + 1)]
         rows = [[(x0, y), (x1, y)] for y in range(y0, y1 + 1)]
         self.grid.set_segments(columns + rows)

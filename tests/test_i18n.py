@@ -150,3 +150,9 @@ def test_a_figure_speaks_the_language_and_english_is_unchanged():
     assert english == (
         "at the Nyquist frequency 0.5 the box keeps 0.637; zero at 1, 2 and 3 cycles per pixel"
     )
+
+
+def test_no_english_message_holds_chinese():
+    # English is the source's own strings: a Chinese character there would show in English.
+    chinese = [m.id for m in catalog(POT) if m.id and any("\u4e00" <= c <= "\u9fff" for c in m.id)]
+    assert chinese == []

@@ -119,7 +119,7 @@ class DitherComparisonApp(SliderApp):
         centre = self.centre()
         for name, result in self.results.items():
             scale = result.shape[0] // self.gray.shape[0]
-            window, _ = _zoom_window(result, scale, centre, self.size)
+            window, _extent = _zoom_window(result, scale, centre, self.size)
             self.crops[name].set_data(_padded(window, self.size * scale))
         _, (left, right, bottom, top) = crop(self.gray, centre, self.size)
         self.window.set_bounds(left, top, right - left, bottom - top)

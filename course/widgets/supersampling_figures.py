@@ -15,7 +15,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from course._validate import as_int, as_point
-from course.i18n import _
+from course.i18n import N_, _
 from course.images import photograph, zone_plate, zone_plate_box
 from course.metrics import rmse
 from course.resample import bilinear, supersample, supersample_without_offset
@@ -59,7 +59,7 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
         np.cos(2 * np.pi * frequency * fine_x),
         color=BLUE,
         lw=1.2,
-        label=f"cos(2π {frequency:g} x)",
+        label=_("cos(2π {frequency:g} x)").format(frequency=frequency),
     )
     signal.plot(
         fine_x,
@@ -67,7 +67,7 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
         "--",
         color=VERMILLION,
         lw=1.5,
-        label=f"cos(2π {alias:g} x): the same samples",
+        label=_("cos(2π {alias:g} x): the same samples").format(alias=alias),
     )
     signal.plot(samples_x, samples, "o", color="0.1", ms=6, label=f"{rate:g} sample per unit")
     signal.set_xlabel(_("x (samples)"), fontsize=8)
@@ -94,8 +94,15 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
     spectrum.legend(fontsize=7, loc="upper right")
     figure.tight_layout()
     caption = (
-        f"{frequency:g} cycles per sample is seen as {alias:g}: the two cosines' samples differ "
-        + ("by rounding alone (below 1e-12)" if gap < 1e-12 else f"by up to {gap:.1e}")
+        _(
+            "{frequency:g} cycles per sample is seen as {alias:g}: "
+            "the two cosines' samples differ by rounding alone (below 1e-12)"
+        ).format(frequency=frequency, alias=alias)
+        if gap < 1e-12
+        else _(
+            "{frequency:g} cycles per sample is seen as {alias:g}: "
+            "the two cosines' samples differ by up to {gap:.1e}"
+        ).format(frequency=frequency, alias=alias, gap=gap)
     )
     return Still.of(figure, caption)
 
@@ -154,7 +161,7 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
             (
                 np.clip(image, 0.15, 0.85),
                 (0, width, height, 0),
-                f"pixel values and centres; ({x:g}, {y:g}) and its weights",
+                _("pixel values and centres; ({x:g}, {y:g}) and its weights").format(x=x, y=y),
             )
         ],
         zoom=90,
@@ -196,7 +203,9 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
     value = float(bilinear(image, x, y))
     terms = " + ".join(f"{w:.2f} x {image[r, c]:g}" for (c, r), w in weights.items())
     owners = ", ".join(f"({c}, {r})" for c, r in weights)
-    caption = f"({x:g}, {y:g}) reads {value:.4f}: {terms}, the weights of pixels {owners}"
+    caption = _("({x:g}, {y:g}) reads {value:.4f}: {terms}, the weights of pixels {owners}").format(
+        x=x, y=y, value=value, terms=terms, owners=owners
+    )
     return Still.of(figure, caption)
 
 
@@ -220,12 +229,18 @@ def zone_plate_figure() -> Still:
     plate, exact = _lab_zone_plate()
     rate_one = supersample(plate, (LAB_OUT, LAB_OUT), 1)
     windows = [
-        (plate[:LAB_OUT, :LAB_OUT], (0, LAB_OUT, LAB_OUT, 0), "the input's top-left corner, 1:1"),
-        (rate_one, (0, LAB_OUT, LAB_OUT, 0), "shrunk to 320, rate 1"),
-        (exact, (0, LAB_OUT, LAB_OUT, 0), "shrunk to 320, exact box filter"),
+        (
+            plate[:LAB_OUT, :LAB_OUT],
+            (0, LAB_OUT, LAB_OUT, 0),
+            _("the input's top-left corner, 1:1"),
+        ),
+        (rate_one, (0, LAB_OUT, LAB_OUT, 0), _("shrunk to 320, rate 1")),
+        (exact, (0, LAB_OUT, LAB_OUT, 0), _("shrunk to 320, exact box filter")),
     ]
-    figure, _ = pixel_figure(windows, zoom=1)
-    caption = f"320 x 320 at rate 1: RMS {rmse(rate_one, exact):.4f} against the exact box filter"
+    figure, _axes = pixel_figure(windows, zoom=1)
+    caption = _("320 x 320 at rate 1: RMS {error:.4f} against the exact box filter").format(
+        error=rmse(rate_one, exact)
+    )
     return Still.of(figure, caption)
 
 
@@ -245,8 +260,8 @@ def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13)), floor_rate:
     floor_rate = as_int(floor_rate, "floor_rate", minimum=1, maximum=32)
     plate, exact = _lab_zone_plate()
     errors = {
-        "centred": [rmse(supersample(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates],
-        "the report's": [
+        N_("centred"): [rmse(supersample(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates],
+        N_("the report's"): [
             rmse(supersample_without_offset(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates
         ],
     }
@@ -255,7 +270,7 @@ def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13)), floor_rate:
     for (name, values), (style, colour) in zip(
         errors.items(), (("o-", BLUE), ("s--", VERMILLION)), strict=True
     ):
-        axes.semilogy(rates, values, style, color=colour, ms=4, label=name)
+        axes.semilogy(rates, values, style, color=colour, ms=4, label=_(name))
     axes.set_xticks(list(rates))
     axes.set_xlabel(_("rate (samples per output pixel along each axis)"), fontsize=8)
     axes.set_ylabel(_("RMS error"), fontsize=8)
@@ -263,13 +278,15 @@ def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13)), floor_rate:
     axes.legend(fontsize=8)
     figure.tight_layout()
     shown = list(rates)[:3]
-    caption = (
-        f"RMS at rates {', '.join(map(str, shown))}: centred "
-        + ", ".join(f"{v:.4f}" for v in errors["centred"][:3])
-        + "; the report's "
-        + ", ".join(f"{v:.4f}" for v in errors["the report's"][:3])
-        + f"; centred at rate {floor_rate}: "
-        + f"{rmse(supersample(plate, (LAB_OUT, LAB_OUT), floor_rate), exact):.4f}"
+    caption = _(
+        "RMS at rates {rates}: centred {centred}; the report's {report}; "
+        "centred at rate {floor_rate}: {floor:.4f}"
+    ).format(
+        rates=", ".join(map(str, shown)),
+        centred=", ".join(f"{v:.4f}" for v in errors["centred"][:3]),
+        report=", ".join(f"{v:.4f}" for v in errors["the report's"][:3]),
+        floor_rate=floor_rate,
+        floor=rmse(supersample(plate, (LAB_OUT, LAB_OUT), floor_rate), exact),
     )
     return Still.of(figure, caption)
 
@@ -337,5 +354,5 @@ def photograph_figure(rates: Sequence[int] = (1, 2, 3, 12), reference_rate: int 
         error = rmse(image, reference)
         windows.append((image, (0, 64, 64, 0), f"rate {rate}: RMS {error:.4f}"))
         parts.append(f"rate {rate} {error:.4f}")
-    figure, _ = pixel_figure(windows, zoom=3)
+    figure, _axes = pixel_figure(windows, zoom=3)
     return Still.of(figure, f"RMS against rate {reference_rate}: " + ", ".join(parts))

@@ -154,8 +154,8 @@ def reversed_figure(points: Any, t: float = 0.25) -> Still:
     ts = np.linspace(0.0, 1.0, 21)
     figure = Figure(figsize=(8.4, 4.4), dpi=100)
     pairs = (
-        ("textbook: (1 - t) P[i] + t P[i+1]", de_casteljau),
-        ("two reports: t P[i] + (1 - t) P[i+1]", de_casteljau_reversed),
+        (_("textbook: (1 - t) P[i] + t P[i+1]"), de_casteljau),
+        (_("two reports: t P[i] + (1 - t) P[i+1]"), de_casteljau_reversed),
     )
     centre = control.mean(axis=0)
     marks = []

@@ -5,6 +5,8 @@ VENV := .venv
 BIN := $(VENV)/bin
 LOCK := requirements
 NOTEBOOKS := $(sort $(wildcard notebooks/[0-9]*.ipynb))
+# The Chinese lessons: the twins that exist (python -m course twins writes one per catalog).
+TWINS = $(sort $(wildcard notebooks/zh-CN/[0-9]*.ipynb))
 SOURCES := $(wildcard course tests tests_browser benchmarks notebooks site)
 APP_PORT ?= 8866
 # JupyterLab refuses to start as root without this flag (containers run as root).
@@ -25,7 +27,7 @@ export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
 .DEFAULT_GOAL := help
 .PHONY: help lab teach app student nbgrader site-teacher test test-latest test-browser fuzz lint format notebooks site \
-	bench bench-browser hub bench-hub lock clean
+	bench bench-browser hub bench-hub lock clean messages
 
 ## help: this list of targets
 help:
@@ -80,7 +82,15 @@ $(VENV)/.%-installed: $(LOCK)/%.txt pyproject.toml | $(BIN)/python
 	@echo "make: installing the '$*' set into $(VENV) $(if $(LATEST),(newest releases),from $(LOCK)/$*.txt)"
 	$(BIN)/python -m pip install --progress-bar on \
 		$(if $(LATEST),--upgrade --upgrade-strategy eager $(PIP_$*),-r $(LOCK)/$*.txt -e .)
+	$(BIN)/pybabel compile -d course/locale -D course --statistics
 	touch $@
+
+## messages: extract the library's marked strings into course.pot and merge them into the .po
+messages: $(VENV)/.test-installed
+	$(BIN)/pybabel extract -F babel.cfg --no-wrap --sort-by-file --project course \
+		-o course/locale/course.pot course
+	$(BIN)/pybabel update --no-wrap -i course/locale/course.pot -d course/locale -D course
+	$(BIN)/pybabel compile -d course/locale -D course --statistics
 
 ## lab: for students: update the student edition in student/, open its course map in JupyterLab
 # `python -m course lab` writes new and changed lessons into student/, never over one the
@@ -124,7 +134,7 @@ format: $(VENV)/.test-installed
 ## test: ruff, unit and property tests, doctests, and every notebook with nbval
 test: lint
 	$(BIN)/python -m pytest -n 2 --dist loadfile course tests \
-		--nbval --nbval-current-env --nbval-cell-timeout=300 $(NOTEBOOKS)
+		--nbval --nbval-current-env --nbval-cell-timeout=300 $(NOTEBOOKS) $(TWINS)
 
 ## test-latest: make test on the newest releases (in .venv-latest), to find drift first
 test-latest:
@@ -165,13 +175,20 @@ test-browser: site $(VENV)/.browser-installed $(VENV)/.test-installed
 # The README's picture: lesson 01's app as the notebook first shows it.
 README_PICTURE := 01_de_casteljau_degree3_t0.50
 
-## notebooks: re-execute and normalise the lessons, then the README's table and picture
+## notebooks: re-execute and normalise the lessons, English and Chinese, then the README's table
 notebooks: $(VENV)/.lab-installed $(VENV)/.test-installed
 	for notebook in $(NOTEBOOKS); do \
 		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
 			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
 	done
 	$(BIN)/nbstripout --keep-output --keep-count $(NOTEBOOKS)
+	$(BIN)/python -m course twins
+	for notebook in notebooks/zh-CN/[0-9]*.ipynb; do \
+		test -e "$$notebook" || continue; \
+		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
+			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
+		$(BIN)/nbstripout --keep-output --keep-count "$$notebook" || exit 1; \
+	done
 	$(BIN)/python -m course map --readme README.md
 	$(BIN)/python -m course gallery --out docs --force --only $(README_PICTURE)
 

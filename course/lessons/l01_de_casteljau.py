@@ -11,6 +11,7 @@ from __future__ import annotations
 from course.bezier import de_casteljau
 from course.classroom.pictures import CRIMSON, app_picture, landmark_at, still_picture
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
+from course.i18n import N_
 from course.images import EXAMPLE_POINTS, SEED_000_CUBIC
 from course.widgets import de_casteljau_figures as figures
 from course.widgets.base import SliderApp, parse_points
@@ -46,17 +47,21 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "find a point of a Bézier curve by hand, by repeated linear interpolation",
-        "write the GAMES101 handout's recursive_bezier and the loop that draws the curve",
-        "measure the handouts' pitfalls: a curve run backwards, a loop short of t = 1, gaps",
+        N_("find a point of a Bézier curve by hand, by repeated linear interpolation"),
+        N_("write the GAMES101 handout's recursive_bezier and the loop that draws the curve"),
+        N_("measure the handouts' pitfalls: a curve run backwards, a loop short of t = 1, gaps"),
     ),
     minutes=60,
     preview=Picture("01_preview", "de Casteljau's construction of a cubic at t = 0.5", preview),
-    handout="the GAMES101 handout's basic part (基础部分): recursive_bezier and the bezier "
-    "loop; the reversed step and float loops of the any-degree, VS2022 and lab 6 reports",
-    teaches="a Bézier curve by repeated linear interpolation: by hand on three points, "
-    "recursive_bezier and the drawing loop written and checked, every level under a t slider "
-    "and draggable points; the handouts' pitfalls as pictures and numbers",
+    handout=N_(
+        "the GAMES101 handout's basic part (基础部分): recursive_bezier and the bezier "
+        "loop; the reversed step and float loops of the any-degree, VS2022 and lab 6 reports"
+    ),
+    teaches=N_(
+        "a Bézier curve by repeated linear interpolation: by hand on three points, "
+        "recursive_bezier and the drawing loop written and checked, every level under a t slider "
+        "and draggable points; the handouts' pitfalls as pictures and numbers"
+    ),
     pictures=(
         de_casteljau_picture(0.5),
         de_casteljau_picture(0.25),

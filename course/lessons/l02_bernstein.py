@@ -19,6 +19,7 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.i18n import N_
 from course.images import EXAMPLE_POINTS
 from course.widgets import bernstein_figures as figures
 from course.widgets.base import SliderApp
@@ -60,19 +61,23 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "write a Bézier curve as its control points weighted by Bernstein polynomials",
-        "compute binomials exactly by Pascal's rule and write naive_bezier for any degree",
-        "read a curve's end tangents and derivative off its control polygon",
+        N_("write a Bézier curve as its control points weighted by Bernstein polynomials"),
+        N_("compute binomials exactly by Pascal's rule and write naive_bezier for any degree"),
+        N_("read a curve's end tangents and derivative off its control polygon"),
     ),
     minutes=50,
     preview=Picture(
         "02_preview", "the four cubic Bernstein polynomials, and their values at t = 0.3", preview
     ),
-    handout="the GAMES101 framework's naive_bezier, generalised to any degree with the "
-    "recursive comb of the any-degree report (任意多次的曲线绘制)",
-    teaches="the Bernstein basis under a degree slider; binomials by Pascal's rule, written "
-    "and checked, against the handout's exponential recursion and 32-bit int; naive_bezier of "
-    "any degree; end tangents and the hodograph; accuracy against the degree",
+    handout=N_(
+        "the GAMES101 framework's naive_bezier, generalised to any degree with the "
+        "recursive comb of the any-degree report (任意多次的曲线绘制)"
+    ),
+    teaches=N_(
+        "the Bernstein basis under a degree slider; binomials by Pascal's rule, written "
+        "and checked, against the handout's exponential recursion and 32-bit int; naive_bezier of "
+        "any degree; end tangents and the hodograph; accuracy against the degree"
+    ),
     pictures=(
         bernstein_picture(3, 0.3),
         bernstein_picture(9, 0.5),

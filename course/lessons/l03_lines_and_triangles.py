@@ -25,6 +25,7 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
+from course.i18n import N_
 from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
 from course.triangles import EDGE_RULES
 from course.widgets import lines_and_triangles_figures as figures
@@ -141,19 +142,25 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "draw a line with Bresenham's algorithm in all eight directions (the lab's DrawLine)",
-        "fill a triangle row by row, taking each shared edge's pixels once (DrawTriangleFilled)",
-        "interpolate a colour across a triangle with barycentric weights",
+        N_("draw a line with Bresenham's algorithm in all eight directions (the lab's DrawLine)"),
+        N_(
+            "fill a triangle row by row, taking each shared edge's pixels once (DrawTriangleFilled)"
+        ),
+        N_("interpolate a colour across a triangle with barycentric weights"),
     ),
     minutes=60,
     preview=Picture(
         "03_preview", "two triangles sharing an edge, filled by the top-left rule", preview
     ),
-    handout="the lab report (Lab01 Report), Task 4 (Bresenham's line in every octant), Task 5 "
-    "(scanline triangle filling) and Task 7 (the Bézier curve drawn with lines)",
-    teaches="Bresenham's line in all eight octants, written and checked, against the report's "
-    "4-connected staircase; the scanline fill in flat-top and flat-bottom halves, written and "
-    "checked; the top-left rule on shared edges; barycentric colour; a curve as segments",
+    handout=N_(
+        "the lab report (Lab01 Report), Task 4 (Bresenham's line in every octant), Task 5 "
+        "(scanline triangle filling) and Task 7 (the Bézier curve drawn with lines)"
+    ),
+    teaches=N_(
+        "Bresenham's line in all eight octants, written and checked, against the report's "
+        "4-connected staircase; the scanline fill in flat-top and flat-bottom halves, written and "
+        "checked; the top-left rule on shared edges; barycentric colour; a curve as segments"
+    ),
     pictures=(
         still_picture(
             "03_scanline_fill",

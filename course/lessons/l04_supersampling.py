@@ -24,6 +24,7 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.i18n import N_
 from course.resample import supersample, supersample_without_offset
 from course.widgets import supersampling_figures as figures
 from course.widgets.base import SliderApp
@@ -89,17 +90,21 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "explain aliasing as detail folding back at half the sampling rate",
-        "write a bilinear lookup and the lab's supersampling loop",
-        "measure the error at every rate, and the lab report's half-sample shift",
+        N_("explain aliasing as detail folding back at half the sampling rate"),
+        N_("write a bilinear lookup and the lab's supersampling loop"),
+        N_("measure the error at every rate, and the lab report's half-sample shift"),
     ),
     minutes=45,
     preview=Picture("04_preview", "a zone plate shrunk by supersampling", preview),
-    handout="the lab report (Lab01 Report), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
-    "by supersampling",
-    teaches="aliasing as folding, in one dimension and on a zone plate; the box filter's "
-    "response; bilinear lookup and the supersampling loop, written and checked; the error at "
-    "every rate against the exact box mean; the report's half-sample shift measured",
+    handout=N_(
+        "the lab report (Lab01 Report), Task 6: shrink a 2500 x 2500 image to 320 x 320 "
+        "by supersampling"
+    ),
+    teaches=N_(
+        "aliasing as folding, in one dimension and on a zone plate; the box filter's "
+        "response; bilinear lookup and the supersampling loop, written and checked; the error at "
+        "every rate against the exact box mean; the report's half-sample shift measured"
+    ),
     pictures=(
         still_picture(
             "04_folding",

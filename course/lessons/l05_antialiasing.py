@@ -24,6 +24,7 @@ from course.classroom.pictures import (
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.coverage import curve_polyline
 from course.curve_quality import REFERENCE, render_window
+from course.i18n import N_
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.widgets import antialiasing_figures as figures
 from course.widgets.antialiasing import ZOOM_PICKS, CurveWalk, StepApp, ZoomApp
@@ -82,19 +83,24 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "say what a pixel of a drawn curve should hold: the area of it the stroke covers",
-        "write the handout's bilinear splat and weight it by the length of curve it stands for",
-        "measure the handouts' splats for error and even brightness against the exact coverage",
+        N_("say what a pixel of a drawn curve should hold: the area of it the stroke covers"),
+        N_("write the handout's bilinear splat and weight it by the length of curve it stands for"),
+        N_("measure the handouts' splats for error and even brightness against the exact coverage"),
     ),
     minutes=60,
     preview=Picture(
         "05_preview", "an anti-aliased curve, zoomed until each pixel is a square", preview
     ),
-    handout="the GAMES101 handout's improvement part (提高部分) in the GAMES101, any-degree "
-    "and VS2022 reports: anti-aliasing the curve with the GAMES101 report's three addColor "
-    "splats, the any-degree report's sub-sample falloff and the VS2022 report's normalised splat",
-    teaches="a curve's pixels as the coverage of a stroke: the bilinear splat, the t-step "
-    "pitfall and the arc-length fix, every handout splat measured against the exact coverage",
+    handout=N_(
+        "the GAMES101 handout's improvement part (提高部分) in the GAMES101, any-degree "
+        "and VS2022 reports: anti-aliasing the curve with the GAMES101 report's three addColor "
+        "splats, the any-degree report's sub-sample falloff and the VS2022 "
+        "report's normalised splat"
+    ),
+    teaches=N_(
+        "a curve's pixels as the coverage of a stroke: the bilinear splat, the t-step "
+        "pitfall and the arc-length fix, every handout splat measured against the exact coverage"
+    ),
     pictures=(
         still_picture(
             "05_aliased_and_antialiased",

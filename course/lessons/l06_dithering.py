@@ -21,6 +21,7 @@ from course.classroom.pictures import (
     read_only,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.i18n import N_
 from course.widgets import dithering_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.dithering import GrayLevelApp, VoidAndClusterApp
@@ -104,19 +105,26 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "turn gray levels into black and white dots five ways (the lab's Task 1)",
-        "write ordered dithering with the lab's 3 x 3 matrix and Floyd-Steinberg error diffusion",
-        "tell the methods apart by the tone they keep and how visible their dots are",
+        N_("turn gray levels into black and white dots five ways (the lab's Task 1)"),
+        N_(
+            "write ordered dithering with the lab's 3 x 3 matrix and "
+            "Floyd-Steinberg error diffusion"
+        ),
+        N_("tell the methods apart by the tone they keep and how visible their dots are"),
     ),
     minutes=45,
     preview=Picture(
         "06_preview", "a photograph in black and white dots, by error diffusion", preview
     ),
-    handout="the lab report (Lab01 Report), Task 1: threshold, uniform random, blue noise, "
-    "ordered 3 x 3 and Floyd-Steinberg error diffusion",
-    teaches="gray levels from black and white dots: the lab's five methods side by side, "
-    "ordered dithering and Floyd-Steinberg written and checked, blue noise by "
-    "void-and-cluster, tone and visible error measured, the ordered bias and the x - 1 slip",
+    handout=N_(
+        "the lab report (Lab01 Report), Task 1: threshold, uniform random, blue noise, "
+        "ordered 3 x 3 and Floyd-Steinberg error diffusion"
+    ),
+    teaches=N_(
+        "gray levels from black and white dots: the lab's five methods side by side, "
+        "ordered dithering and Floyd-Steinberg written and checked, blue noise by "
+        "void-and-cluster, tone and visible error measured, the ordered bias and the x - 1 slip"
+    ),
     pictures=(
         Picture(
             "06_dithering_table",

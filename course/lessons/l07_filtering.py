@@ -22,6 +22,7 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
+from course.i18n import N_
 from course.widgets import filtering_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.filtering import KernelApp, RepeatedBlurApp, blurred
@@ -71,19 +72,23 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "compute a 3 x 3 filter by hand and as a loop: a weighted sum of each pixel's window",
-        "write the lab's Blur and Sobel Edge",
-        "choose what a window reads past the image's edge, and see what each rule does",
+        N_("compute a 3 x 3 filter by hand and as a loop: a weighted sum of each pixel's window"),
+        N_("write the lab's Blur and Sobel Edge"),
+        N_("choose what a window reads past the image's edge, and see what each rule does"),
     ),
     minutes=35,
     preview=Picture(
         "07_preview", "a photograph blurred eight times with the report's border rule", preview
     ),
-    handout="the lab report (Lab01 Report), Task 2: 3 x 3 blur with the report's border rule "
-    "and Sobel edges",
-    teaches="3 x 3 kernels as weighted sums of a window (the box is lesson 04's box filter), "
-    "blur and Sobel edges, any kernel on a photograph; the four border rules and zero "
-    "padding's dark frame and false edges, measured",
+    handout=N_(
+        "the lab report (Lab01 Report), Task 2: 3 x 3 blur with the report's border rule "
+        "and Sobel edges"
+    ),
+    teaches=N_(
+        "3 x 3 kernels as weighted sums of a window (the box is lesson 04's box filter), "
+        "blur and Sobel edges, any kernel on a photograph; the four border rules and zero "
+        "padding's dark frame and false edges, measured"
+    ),
     pictures=(
         still_picture(
             "07_blur_and_edges",

@@ -20,6 +20,7 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
+from course.i18n import N_
 from course.widgets import poisson_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.poisson import MARGIN, CloneApp, PoissonIterationApp, half_size
@@ -109,17 +110,21 @@ def preview() -> bytes:
 
 LESSON = Lesson(
     outcomes=(
-        "paste one image into another with no seam, by solving a Poisson equation",
-        "write the lab's boundary ring and its sweep, stopping on the residual",
-        "say why 8000 sweeps are not enough, and when cloning cannot keep the colours",
+        N_("paste one image into another with no seam, by solving a Poisson equation"),
+        N_("write the lab's boundary ring and its sweep, stopping on the residual"),
+        N_("say why 8000 sweeps are not enough, and when cloning cannot keep the colours"),
     ),
     minutes=60,
     preview=Picture("08_preview", "a plane cloned seamlessly into a lake's sky", preview),
-    handout="the lab report (Lab01 Report), Task 3: Poisson image editing, the plane pasted "
-    "into the lake with the lab's 8000 'Jacobi' sweeps",
-    teaches="seamless cloning as a Poisson equation: the correction g over the ring's "
-    "mismatch, the lab's sweep with a stop on the residual, why 8000 sweeps (Gauss-Seidel, "
-    "not Jacobi) are not enough, and the colours a clone cannot keep",
+    handout=N_(
+        "the lab report (Lab01 Report), Task 3: Poisson image editing, the plane pasted "
+        "into the lake with the lab's 8000 'Jacobi' sweeps"
+    ),
+    teaches=N_(
+        "seamless cloning as a Poisson equation: the correction g over the ring's "
+        "mismatch, the lab's sweep with a stop on the residual, why 8000 sweeps (Gauss-Seidel, "
+        "not Jacobi) are not enough, and the colours a clone cannot keep"
+    ),
     pictures=(
         still_picture(
             "08_naive_paste_and_seamless_clone",

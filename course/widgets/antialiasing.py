@@ -47,6 +47,7 @@ from course.curve_quality import (
     render_window,
     uniformity,
 )
+from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.metrics import rmse
 from course.widgets.base import Handle, SliderApp, format_points
@@ -64,22 +65,26 @@ __all__ = [
 ]
 
 
+# Shown through _ where they are used: the zoom app's slots, and the weightings of
+# course.antialias.WEIGHTINGS as the splat app's title names them.
+_SHOWN_NAMES = (N_("left"), N_("middle"), N_("right"), N_("count"), N_("arc length"))
+
 #: The three variants the lesson's zoom app starts with: seed 000's three splats.
 ZOOM_PICKS = ("bilinear_zero_offset", "bilinear_corners", "bilinear_centres")
 
 #: Short names by role, for drop-downs and panel titles (the library's names are identifiers).
 VARIANT_LABELS = {
-    "nearest_truncate": "plain loop, truncated",
-    "nearest_round": "plain loop, rounded",
-    "bilinear_zero_offset": "GAMES101 left",
-    "bilinear_corners": "GAMES101 middle",
-    "bilinear_centres": "GAMES101 right",
-    "subsample_falloff": "any-degree falloff",
-    "normalised_centres": "VS2022 splat",
-    "stroke_linear": "stroke distance",
-    "stroke_area": "stroke area",
-    AGG: "Agg (matplotlib)",
-    REFERENCE: "exact coverage",
+    "nearest_truncate": N_("plain loop, truncated"),
+    "nearest_round": N_("plain loop, rounded"),
+    "bilinear_zero_offset": N_("GAMES101 left"),
+    "bilinear_corners": N_("GAMES101 middle"),
+    "bilinear_centres": N_("GAMES101 right"),
+    "subsample_falloff": N_("any-degree falloff"),
+    "normalised_centres": N_("VS2022 splat"),
+    "stroke_linear": N_("stroke distance"),
+    "stroke_area": N_("stroke area"),
+    AGG: N_("Agg (matplotlib)"),
+    REFERENCE: N_("exact coverage"),
 }
 
 
@@ -94,9 +99,9 @@ def label_of(name: str) -> str:
     if isinstance(name, str) and name.endswith(ARC_LENGTH):
         base = name[: -len(ARC_LENGTH)]
         if base in VARIANT_LABELS:
-            return VARIANT_LABELS[base] + ", by length"
+            return _("{label}, by length").format(label=_(VARIANT_LABELS[base]))
     if isinstance(name, str) and name in VARIANT_LABELS:
-        return VARIANT_LABELS[name]
+        return _(VARIANT_LABELS[name])
     names = ", ".join(repr(key) for key in VARIANT_LABELS)
     raise ValueError(
         f"name must be one of {names}, or one of them followed by {ARC_LENGTH!r}; got {name!r}"
@@ -296,15 +301,17 @@ class ZoomApp(SliderApp):
         self.walk = CurveWalk(self.points)
         controls: dict[str, widgets.ValueWidget] = {
             "position": widgets.FloatSlider(
-                value=0.1, min=0.0, max=1.0, step=0.005, description="along curve"
+                value=0.1, min=0.0, max=1.0, step=0.005, description=_("along curve")
             ),
-            "size": widgets.SelectionSlider(options=self.SIZES, value=16, description="window px"),
+            "size": widgets.SelectionSlider(
+                options=self.SIZES, value=16, description=_("window px")
+            ),
         }
         for slot, name in zip(("left", "middle", "right"), picks, strict=True):
             controls[slot] = widgets.Dropdown(
                 options=[(label_of(variant), variant) for variant in VARIANTS],
                 value=name,
-                description=slot,
+                description=_(slot),
             )
         controls["points"] = widgets.Textarea(
             value=format_points(self.points), description="x, y", continuous_update=False
@@ -380,10 +387,10 @@ class ZoomApp(SliderApp):
         if not len(moved):
             return inside, ""
         names = ", ".join(f"P{i}" for i in moved)
-        return inside, (
-            f"Clipped {names} to the {width} x {height} canvas (x from 0 to {width}, "
-            f"y from 0 to {height}), where the app draws: {format_points(inside[moved])}"
-        )
+        return inside, _(
+            "Clipped {names} to the {width} x {height} canvas (x from 0 to {width}, "
+            "y from 0 to {height}), where the app draws: {points}"
+        ).format(names=names, width=width, height=height, points=format_points(inside[moved]))
 
     def update(self) -> None:
         points = self.read_points()
@@ -404,12 +411,14 @@ class ZoomApp(SliderApp):
         self.windows = []
         titles = [self.value(slot) for slot in ("left", "middle", "right")]
         for zoom, name in zip(self.panels, titles, strict=False):
-            window, _ = render_window(name, points, self.shape, centre, size, self.stroke_width)
+            window, _extent = render_window(
+                name, points, self.shape, centre, size, self.stroke_width
+            )
             zoom.curve.set_data(near[:, 0], near[:, 1])
-            note = f"RMSE here {rmse(window, truth):.3f}"
+            note = _("RMSE here {error:.3f}").format(error=rmse(window, truth))
             self.windows.append(zoom.show_window(window, extent, label_of(name), note))
         self.panels[3].curve.set_data(near[:, 0], near[:, 1])
-        note = f"{k} x {k} samples a pixel"
+        note = _("{k} x {k} samples a pixel").format(k=k)
         self.windows.append(self.panels[3].show_window(truth, extent, label_of(REFERENCE), note))
         if [panel.title.get_text() for panel in self.panels] != self._titles:
             self._titles = [panel.title.get_text() for panel in self.panels]
@@ -464,17 +473,17 @@ class StepApp(SliderApp):
                 min=-4,
                 max=-1.3,
                 step=0.05,
-                description="t step",
+                description=_("t step"),
                 readout_format=".2g",
             ),
             "method": widgets.Dropdown(
                 options=[(label_of(splat), splat) for splat in SPLATS],
                 value="bilinear_centres",
-                description="splat",
+                description=_("splat"),
             ),
             "weighting": widgets.ToggleButtons(options=WEIGHTINGS, value="count"),
             "position": widgets.FloatSlider(
-                value=0.02, min=0.0, max=1.0, step=0.005, description="along curve"
+                value=0.02, min=0.0, max=1.0, step=0.005, description=_("along curve")
             ),
         }
         super().__init__(controls, shape=(380, 900))
@@ -482,20 +491,22 @@ class StepApp(SliderApp):
         self.panel = ZoomPanel(self.figure.add_subplot(grid[0]), self.walk.polyline)
         self.profile_axes = self.figure.add_subplot(grid[1])
         (self.profile,) = self.profile_axes.plot(
-            [], [], color="#0072B2", linewidth=1.2, label="this splat"
+            [], [], color="#0072B2", linewidth=1.2, label=_("this splat")
         )
         self.profile_axes.axhline(
-            1.0, color="black", linewidth=0.8, linestyle="--", label="1: evenly bright"
+            1.0, color="black", linewidth=0.8, linestyle="--", label=_("1: evenly bright")
         )
         self.marker = self.profile_axes.axvline(
-            0.0, color="gray", linewidth=0.8, linestyle=":", label="the zoomed window"
+            0.0, color="gray", linewidth=0.8, linestyle=":", label=_("the zoomed window")
         )
-        self.profile_axes.set_xlabel("distance along the curve (px)")
-        self.profile_axes.set_ylabel("ink per px of length")
+        self.profile_axes.set_xlabel(_("distance along the curve (px)"))
+        self.profile_axes.set_ylabel(_("ink per px of length"))
         self.profile_axes.set_xlim(0, self.walk.lengths[-1])
         self.profile_axes.set_ylim(0, self.FLOOR_TOP)
-        curve_key = Line2D([], [], color=self.panel.curve.get_color(), label="left: the true curve")
-        handles, _ = self.profile_axes.get_legend_handles_labels()
+        curve_key = Line2D(
+            [], [], color=self.panel.curve.get_color(), label=_("left: the true curve")
+        )
+        handles, _labels = self.profile_axes.get_legend_handles_labels()
         self.profile_axes.legend(
             handles=[curve_key, *handles], fontsize=8, loc="lower center", ncols=2
         )
@@ -518,7 +529,16 @@ class StepApp(SliderApp):
         self.marker.set_xdata([fraction * self.walk.lengths[-1]] * 2)
         cv = uniformity(self.image, self.points)
         self.profile_title.set_text(
-            f"{label_of(method)}, {weighting.replace('_', ' ')}: CV {100 * cv:.1f}%, "
-            f"mean {self.density.mean():.2f}"
+            _("{method}, {weighting}: CV {cv:.1f}%, mean {mean:.2f}").format(
+                method=label_of(method),
+                weighting=_(weighting.replace("_", " ")),
+                cv=100 * cv,
+                mean=self.density.mean(),
+            )
         )
-        self.panel.show(self.image, self.walk.at(fraction), 24, f"t step {self.value('step'):.2g}")
+        self.panel.show(
+            self.image,
+            self.walk.at(fraction),
+            24,
+            _("t step {step:.2g}").format(step=self.value("step")),
+        )

@@ -15,6 +15,7 @@ import numpy as np
 from course import limits
 from course._validate import as_int, as_shape, as_unit
 from course.bezier import bernstein_basis
+from course.i18n import _
 from course.widgets.base import SliderApp
 
 __all__ = ["BernsteinBasisApp"]
@@ -34,7 +35,7 @@ class BernsteinBasisApp(SliderApp):
         shape = as_shape(shape, max_pixels=limits.MAX_FIGURE_PIXELS)
         controls = {
             "degree": widgets.IntSlider(
-                value=degree, min=0, max=MAX_DEGREE, description="degree n"
+                value=degree, min=0, max=MAX_DEGREE, description=_("degree n")
             ),
             "t": widgets.FloatSlider(value=t, min=0.0, max=1.0, step=0.01, description="t"),
         }
@@ -46,14 +47,14 @@ class BernsteinBasisApp(SliderApp):
         self.axes.set_xlabel("t")
         self.bars_axes.set_ylim(0, 1.0)
         self.bars_axes.set_xlabel("i")
-        self.bars_axes.set_title("weights $B_{i,n}(t)$ at t", fontsize=9)
+        self.bars_axes.set_title(_("weights $B_{i,n}(t)$ at t"), fontsize=9)
         self.basis_lines = [self.axes.plot([], [], linewidth=1.5)[0] for _ in range(MAX_DEGREE + 1)]
         # Each curve named at its peak, in its colour: the key to the colours, bars included.
         self.curve_labels = [
             self.axes.text(0, 0, "", ha="center", va="bottom", fontsize=9)
             for _ in range(MAX_DEGREE + 1)
         ]
-        (self.sum_line,) = self.axes.plot([], [], "k--", linewidth=1, label="sum of the weights")
+        (self.sum_line,) = self.axes.plot([], [], "k--", linewidth=1, label=_("sum of the weights"))
         self.t_line = self.axes.axvline(t, color="crimson", linewidth=1)
         (self.markers,) = self.axes.plot(
             [], [], "o", color="crimson", markersize=4, label="the weights at t"
@@ -99,4 +100,8 @@ class BernsteinBasisApp(SliderApp):
         self.bars_axes.set_xlim(-0.6, degree + 0.6)
         step = 1 if degree <= 8 else 2 if degree <= 12 else 5
         self.bars_axes.set_xticks(range(0, degree + 1, step))
-        self.title.set_text(f"n = {degree}, t = {t:.2f}: weights sum to {weights.sum():.12f}")
+        self.title.set_text(
+            _("n = {degree}, t = {t:.2f}: weights sum to {total:.12f}").format(
+                degree=degree, t=t, total=weights.sum()
+            )
+        )

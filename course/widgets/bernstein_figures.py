@@ -18,6 +18,7 @@ from course._validate import as_figure_curve, as_int
 from course.bezier import binomial, de_casteljau, derivative
 from course.bezier_accuracy import accuracy_by_degree
 from course.bezier_handouts import comb_recursive_calls
+from course.i18n import N_, _
 from course.widgets.picture import Still, rounding_level
 
 __all__ = [
@@ -67,7 +68,9 @@ def tangents_figure(points: Any) -> Still:
     curve = de_casteljau(control, np.linspace(0.0, 1.0, 201))
     figure = Figure(figsize=(5.0, 4.4), dpi=100)
     axes = figure.add_subplot()
-    axes.plot(*control.T, "o--", color="0.55", linewidth=1, markersize=6, label="control polygon")
+    axes.plot(
+        *control.T, "o--", color="0.55", linewidth=1, markersize=6, label=_("control polygon")
+    )
     _label_points(axes, control)
     axes.plot(*curve.T, color="0.15", linewidth=2, label="B(t)")
     _arrow(axes, control[0], start / degree, BLUE, f"B'(0) / {degree}")
@@ -77,7 +80,7 @@ def tangents_figure(points: Any) -> Still:
     axes.margins(0.12)
     axes.legend(fontsize=8, loc="lower center")
     axes.tick_params(labelsize=7)
-    axes.set_title("the end tangents lie along the first and last edges", fontsize=9)
+    axes.set_title(_("the end tangents lie along the first and last edges"), fontsize=9)
     figure.tight_layout()
 
     def vector(value: np.ndarray) -> str:
@@ -130,10 +133,10 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
         _arrow(left, de_casteljau(control, t), velocity * scale, colour, f"t = {t:g}")
         right.plot(*velocity, "o", color=colour, markersize=8)
         _arrow(right, (0.0, 0.0), velocity, colour)
-    left.set_title("B(t) and its velocity B'(t) (scaled)", fontsize=9)
+    left.set_title(_("B(t) and its velocity B'(t) (scaled)"), fontsize=9)
     right.plot(*trace.T, color=BLUE, linewidth=1.5, label="B'(t)")
     right.plot(
-        *hodograph.T, "s--", color="0.55", linewidth=1, markersize=5, label="its control points"
+        *hodograph.T, "s--", color="0.55", linewidth=1, markersize=5, label=_("its control points")
     )
     _label_points(right, hodograph, "D")
     right.plot(0, 0, "+", color="0.2", markersize=12)
@@ -150,9 +153,12 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
         ":",
         color="0.2",
         linewidth=1.2,
-        label="nearest the origin: slowest",
+        label=_("nearest the origin: slowest"),
     )
-    right.set_title(f"the hodograph: a Bézier curve of degree {len(hodograph) - 1}", fontsize=9)
+    right.set_title(
+        _("the hodograph: a Bézier curve of degree {degree}").format(degree=len(hodograph) - 1),
+        fontsize=9,
+    )
     for axes in (left, right):
         axes.set_aspect("equal")
         axes.invert_yaxis()
@@ -162,10 +168,16 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
     right.legend(fontsize=7, loc="lower left")
     figure.tight_layout()
     values = ", ".join("(" + ", ".join(f"{v:g}" for v in point) + ")" for point in hodograph)
-    caption = (
-        f"the hodograph's control points n (P[i+1] - P[i]): {values}; "
-        f"slowest at t = {fine[slowest]:g}, {speeds[slowest]:.0f} px per unit of t; "
-        f"fastest at t = {fine[fastest]:g}, {speeds[fastest]:.0f}"
+    caption = _(
+        "the hodograph's control points n (P[i+1] - P[i]): {values}; "
+        "slowest at t = {slow_t:g}, {slow:.0f} px per unit of t; "
+        "fastest at t = {fast_t:g}, {fast:.0f}"
+    ).format(
+        values=values,
+        slow_t=fine[slowest],
+        slow=speeds[slowest],
+        fast_t=fine[fastest],
+        fast=speeds[fastest],
     )
     return Still.of(figure, caption)
 
@@ -205,7 +217,13 @@ def pascal_figure(rows: int = 7, entry: tuple[int, int] = (5, 2)) -> Still:
                 weight=weight,
             )
         axes.text(
-            -rows / 2 - 1.2, -row, f"row {row}", ha="right", va="center", fontsize=8, color="0.5"
+            -rows / 2 - 1.2,
+            -row,
+            _("row {row}").format(row=row),
+            ha="right",
+            va="center",
+            fontsize=8,
+            color="0.5",
         )
     for parent in parents:
         axes.annotate(
@@ -237,22 +255,24 @@ def comb_calls_figure(sizes: Sequence[int] = tuple(range(4, 41, 2))) -> Still:
     calls = [comb_recursive_calls(m, m // 2) for m in sizes]
     figure = Figure(figsize=(5.2, 3.4), dpi=100)
     axes = figure.add_subplot()
-    axes.semilogy(sizes, calls, "o-", color=VERMILLION, label="calls of comb(m, m/2)")
+    axes.semilogy(sizes, calls, "o-", color=VERMILLION, label=_("calls of comb(m, m/2)"))
     axes.semilogy(sizes, [2.0**m for m in sizes], "--", color="0.5", label="2^m")
     axes.set_xlabel("m")
-    axes.set_ylabel("calls")
+    axes.set_ylabel(_("calls"))
     axes.legend(fontsize=8)
     figure.tight_layout()
     last = sizes[-1]
-    caption = f"comb({last}, {last // 2}) makes {calls[-1]:,} calls; 2^{last} = {2**last:,}"
+    caption = _("comb({last}, {half}) makes {calls:,} calls; 2^{last} = {power:,}").format(
+        last=last, half=last // 2, calls=calls[-1], power=2**last
+    )
     return Still.of(figure, caption)
 
 
 _LABELS = {
-    "de_casteljau": ("de Casteljau", BLUE, "o-"),
-    "bernstein_loop": ("Bernstein, the handout's sum", VERMILLION, "s--"),
-    "bernstein_horner": ("Bernstein, Horner (library default)", GREEN, "^:"),
-    "power": ("power basis", PURPLE, "D-"),
+    "de_casteljau": (N_("de Casteljau"), BLUE, "o-"),
+    "bernstein_loop": (N_("Bernstein, the handout's sum"), VERMILLION, "s--"),
+    "bernstein_horner": (N_("Bernstein, Horner (library default)"), GREEN, "^:"),
+    "power": (N_("power basis"), PURPLE, "D-"),
 }
 
 
@@ -280,26 +300,34 @@ def accuracy_figure(degrees: Sequence[int] = tuple(range(1, 61)), samples: int =
             style,
             color=colour,
             markersize=3,
-            label=label,
+            label=_(label),
         )
-    axes.axhline(2.0**-52, color="0.6", linestyle=":", label="float64 epsilon")
-    axes.set_xlabel("degree n")
-    axes.set_ylabel("worst error / polygon size")
+    axes.axhline(2.0**-52, color="0.6", linestyle=":", label=_("float64 epsilon"))
+    axes.set_xlabel(_("degree n"))
+    axes.set_ylabel(_("worst error / polygon size"))
     axes.set_ylim(floor / 2, 1e12)
     axes.legend(fontsize=7)
     figure.tight_layout()
     worst = {method: float(errors[method].max()) for method in _LABELS}
     power = errors["power"]
     parts = [
-        f"{_LABELS[m][0]} worst {rounding_level(worst[m], spec='.0e')}"
+        _("{method} worst {error}").format(
+            method=_(_LABELS[m][0]), error=rounding_level(worst[m], spec=".0e")
+        )
         for m in ("de_casteljau", "bernstein_loop")
     ]
     if (power > 1e-6).any():
         parts.append(
-            f"power basis above 1e-6 from degree {int(errors['degree'][np.argmax(power > 1e-6)])}"
+            _("power basis above 1e-6 from degree {degree}").format(
+                degree=int(errors["degree"][np.argmax(power > 1e-6)])
+            )
         )
     if (power > 1).any():
-        parts.append(f"above 1 from degree {int(errors['degree'][np.argmax(power > 1)])}")
+        parts.append(
+            _("above 1 from degree {degree}").format(
+                degree=int(errors["degree"][np.argmax(power > 1)])
+            )
+        )
     return Still.of(figure, "; ".join(parts))
 
 

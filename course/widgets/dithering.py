@@ -23,8 +23,19 @@ from course._validate import as_gray, as_int, as_positive_float, as_unit
 from course.blue_noise import blue_noise_mask, cluster_energy, radial_power_spectrum
 from course.blue_noise import void_and_cluster as rank_pixels
 from course.canvas import crop
+from course.i18n import N_, _
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
+
+# The names of course.dither.all_methods as the apps title them: marked here, where they are
+# shown, for the catalog (the library keys its results by the English names).
+_METHOD_TITLES = (
+    N_("original"),
+    N_("Floyd-Steinberg serpentine"),
+    N_("Jarvis-Judice-Ninke"),
+    N_("Stucki"),
+    N_("Atkinson"),
+)
 
 __all__ = ["DitherComparisonApp", "GrayLevelApp", "VoidAndClusterApp"]
 
@@ -57,7 +68,7 @@ class DitherComparisonApp(SliderApp):
     BLIT = True
     COLUMNS = 4
     # Titles wider than a panel, shortened so that nothing is cut off.
-    SHORT_TITLES: ClassVar[dict[str, str]] = {"Floyd-Steinberg serpentine": "F-S serpentine"}
+    SHORT_TITLES: ClassVar[dict[str, str]] = {"Floyd-Steinberg serpentine": N_("F-S serpentine")}
 
     def __init__(self, gray: Any, size: int = 24, zoom: int = 6) -> None:
         self.gray = as_gray(gray, "gray")
@@ -80,7 +91,7 @@ class DitherComparisonApp(SliderApp):
         super().__init__(controls, shape=(figure_height, figure_width))
         overview = pixel_axes(self.figure, 12, figure_height - title - height, width, height)
         bare_axes(overview).imshow(self.gray, extent=(0, width, height, 0), **GRAY_PIXELS)
-        overview.set_title("original, 1:1 (drag the red window)", fontsize=9)
+        overview.set_title(_("original, 1:1 (drag the red window)"), fontsize=9)
         self.window = Rectangle((0, 0), 1, 1, fill=False, color="red", lw=1.5)
         overview.add_patch(self.window)
         self.overview = overview
@@ -90,7 +101,7 @@ class DitherComparisonApp(SliderApp):
             left = 12 + width + 24 + column * (side + gap)
             bottom = figure_height - (row + 1) * (side + title)
             axes = bare_axes(pixel_axes(self.figure, left, bottom, side, side))
-            axes.set_title(self.SHORT_TITLES.get(name, name), fontsize=9)
+            axes.set_title(_(self.SHORT_TITLES.get(name, name)), fontsize=9)
             scale = result.shape[0] // height
             shape = (self.size * scale, self.size * scale)
             self.crops[name] = PixelPanel(self, axes, shape, self.zoom // scale)
@@ -108,7 +119,7 @@ class DitherComparisonApp(SliderApp):
         centre = self.centre()
         for name, result in self.results.items():
             scale = result.shape[0] // self.gray.shape[0]
-            window, _ = _zoom_window(result, scale, centre, self.size)
+            window, _extent = _zoom_window(result, scale, centre, self.size)
             self.crops[name].set_data(_padded(window, self.size * scale))
         _, (left, right, bottom, top) = crop(self.gray, centre, self.size)
         self.window.set_bounds(left, top, right - left, bottom - top)
@@ -156,12 +167,12 @@ class GrayLevelApp(SliderApp):
     ZOOM = 6
     # The methods side by side under the strip, in the order of :meth:`outputs`.
     PANELS = (
-        "threshold",
-        "uniform random",
-        "blue noise",
-        "ordered 3x3",
-        "Bayer 8x8",
-        "Floyd-Steinberg",
+        N_("threshold"),
+        N_("uniform random"),
+        N_("blue noise"),
+        N_("ordered 3x3"),
+        N_("Bayer 8x8"),
+        N_("Floyd-Steinberg"),
     )
 
     def __init__(self, level: float = 0.3, size: int = 24) -> None:
@@ -174,7 +185,7 @@ class GrayLevelApp(SliderApp):
                 min=0.0,
                 max=1.0,
                 step=self.STEP,
-                description="level",
+                description=_("level"),
                 readout_format=".3f",
             )
         }
@@ -186,8 +197,10 @@ class GrayLevelApp(SliderApp):
         strip = bare_axes(pixel_axes(self.figure, 16, side + 80, 39 * strip_zoom, 3 * strip_zoom))
         strip.imshow(self.ordered_patterns(), extent=(0, 39, 3, 0), **GRAY_PIXELS)
         strip.set_title(
-            "the ten patterns of M = [[6, 8, 4], [1, 0, 3], [5, 2, 7]]: k sub-pixels "
-            "lit for levels in ((k - 1)/9, k/9]",
+            _(
+                "the ten patterns of M = [[6, 8, 4], [1, 0, 3], [5, 2, 7]]: k sub-pixels "
+                "lit for levels in ((k - 1)/9, k/9]"
+            ),
             fontsize=9,
         )
         for k in range(10):
@@ -200,7 +213,7 @@ class GrayLevelApp(SliderApp):
             scale = 3 if name == "ordered 3x3" else 1
             shape = (self.size * scale, self.size * scale)
             self.panels[name] = PixelPanel(self, axes, shape, self.ZOOM // scale)
-            self.titles[name] = axes.set_title(name, fontsize=9)
+            self.titles[name] = axes.set_title(_(name), fontsize=9)
         self.animate(self.highlight, *self.titles.values())
         self.update()
 
@@ -237,7 +250,11 @@ class GrayLevelApp(SliderApp):
         level = self.snapped(float(self.value("level")))
         for name, result in self.outputs(level).items():
             self.panels[name].set_data(result)
-            self.titles[name].set_text(f"{name}\nlit {result.mean():.3f} (level {level:.3f})")
+            self.titles[name].set_text(
+                _("{name}\nlit {lit:.3f} (level {level:.3f})").format(
+                    name=_(name), lit=result.mean(), level=level
+                )
+            )
         lit = int(dither.ordered([[level]]).sum())
         self.highlight.set_x(4 * lit - 0.1)
 
@@ -267,7 +284,9 @@ class VoidAndClusterApp(SliderApp):
         self.initial = round(0.1 * self.size**2)
         self.white_order = np.random.default_rng(1).permutation(self.size**2)
         controls = {
-            "dots": widgets.IntSlider(value=dots, min=1, max=self.size**2 - 1, description="dots")
+            "dots": widgets.IntSlider(
+                value=dots, min=1, max=self.size**2 - 1, description=_("dots")
+            )
         }
         super().__init__(controls, shape=(460, 1000))
         zoom = 380 // self.size  # each pixel of the mask a whole square
@@ -277,22 +296,25 @@ class VoidAndClusterApp(SliderApp):
         )
         bar = pixel_axes(self.figure, 30 + zoom * self.size, 20, 12, zoom * self.size)
         self.figure.colorbar(self.energy, cax=bar).set_label(
-            f"energy: the dots blurred by a Gaussian (sigma {sigma:g} px)", fontsize=8
+            _("energy: the dots blurred by a Gaussian (sigma {sigma:g} px)").format(sigma=sigma),
+            fontsize=8,
         )
         bar.tick_params(labelsize=7)
         self.dots = left.imshow(np.zeros((self.size, self.size, 4)), interpolation="nearest")
         (self.next_dot,) = left.plot([], [], "o", ms=14, mfc="none", mec="red", mew=2)
         self.heading = left.set_title("", fontsize=9)
         right = self.figure.add_axes((0.57, 0.12, 0.41, 0.72))
-        frequency, _ = radial_power_spectrum(np.eye(self.size))
-        (self.blue_line,) = right.plot(frequency, np.ones_like(frequency), label="void-and-cluster")
-        (self.white_line,) = right.plot(frequency, np.ones_like(frequency), label="white noise")
+        frequency, _power = radial_power_spectrum(np.eye(self.size))
+        (self.blue_line,) = right.plot(
+            frequency, np.ones_like(frequency), label=_("void-and-cluster")
+        )
+        (self.white_line,) = right.plot(frequency, np.ones_like(frequency), label=_("white noise"))
         right.set_xlim(0, 0.72)
         right.set_ylim(0, 3)
-        right.set_xlabel("frequency (cycles per pixel)")
+        right.set_xlabel(_("frequency (cycles per pixel)"))
         # A pattern with a share p of dots has variance p (1 - p): dividing by it puts white
         # noise at 1 on average, whatever the number of dots.
-        right.set_ylabel("power (white noise = 1)")
+        right.set_ylabel(_("power (white noise = 1)"))
         right.legend(loc="upper left", fontsize=9)
         self.ratio = right.set_title("", fontsize=9)
         self.update()
@@ -313,18 +335,22 @@ class VoidAndClusterApp(SliderApp):
         y, x = np.unravel_index(int(np.flatnonzero(self.ranks.ravel() == count)[0]), pattern.shape)
         self.next_dot.set_data([x], [y])
         if count < self.initial:
-            phase = "phase 1: ranks a random start, tightest cluster out first"
+            phase = _("phase 1: ranks a random start, tightest cluster out first")
         else:
-            phase = "phase 2: each new dot into the largest void (lowest energy)"
-        self.heading.set_text(f"{count} dots (white), the next circled\n{phase}")
+            phase = _("phase 2: each new dot into the largest void (lowest energy)")
+        self.heading.set_text(
+            _("{count} dots (white), the next circled\n{phase}").format(count=count, phase=phase)
+        )
         white = np.zeros(self.size**2, dtype=bool)
         white[self.white_order[:count]] = True
         share = count / self.size**2
         scale = share * (1 - share)
-        _, blue_power = radial_power_spectrum(pattern)
-        _, white_power = radial_power_spectrum(white.reshape(self.size, self.size))
+        _frequency, blue_power = radial_power_spectrum(pattern)
+        _frequency, white_power = radial_power_spectrum(white.reshape(self.size, self.size))
         self.blue_line.set_ydata(blue_power / scale)
         self.white_line.set_ydata(white_power / scale)
         low = (0 < self.blue_line.get_xdata()) & (self.blue_line.get_xdata() < 0.125)
         ratio = blue_power[low].mean() / white_power[low].mean()
-        self.ratio.set_text(f"power below 0.125 cycles/pixel: {ratio:.3f} x white noise")
+        self.ratio.set_text(
+            _("power below 0.125 cycles/pixel: {ratio:.3f} x white noise").format(ratio=ratio)
+        )

@@ -25,6 +25,7 @@ from matplotlib.patches import Rectangle
 
 from course import filters, images, limits
 from course._validate import as_choice, as_float_array, as_image, as_int, as_option, describe
+from course.i18n import N_, _
 from course.widgets.base import SliderApp
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
@@ -161,7 +162,9 @@ class RepeatedBlurApp(SliderApp):
         self.corner = as_int(corner, "corner", minimum=2)
         repeats = as_int(repeats, "repeats", minimum=0, maximum=30)
         self.original_ring = border_ring_mean(self.image)
-        controls = {"repeats": widgets.IntSlider(value=repeats, min=0, max=30, description="blurs")}
+        controls = {
+            "repeats": widgets.IntSlider(value=repeats, min=0, max=30, description=_("blurs"))
+        }
         super().__init__(controls, shape=(560, 1000))
         self.done = 0
         self.results = dict.fromkeys(filters.BORDERS, self.image)
@@ -201,10 +204,16 @@ class RepeatedBlurApp(SliderApp):
             self.crops[border].set_data(self._corner_of(result))
             ring = border_ring_mean(result)
             if self.original_ring > 0:
-                edge = f"edge pixels at {ring / self.original_ring:.2f} x the original"
+                edge = _("edge pixels at {ratio:.2f} x the original").format(
+                    ratio=ring / self.original_ring
+                )
             else:  # a black frame: no ratio to show
-                edge = f"edge pixels' mean {ring:.2f} (the original's is 0)"
-            self.titles[border].set_text(f"{border!r}, {repeats} blurs\n{edge}")
+                edge = _("edge pixels' mean {mean:.2f} (the original's is 0)").format(mean=ring)
+            self.titles[border].set_text(
+                _("{border}, {repeats} blurs\n{edge}").format(
+                    border=repr(border), repeats=repeats, edge=edge
+                )
+            )
 
 
 class KernelApp(SliderApp):
@@ -244,12 +253,14 @@ class KernelApp(SliderApp):
         window = (as_int(window[0], "window[0] (row)"), as_int(window[1], "window[1] (column)"))
         controls = {
             "preset": widgets.Dropdown(
-                options=[*KERNELS, "typed"], value=kernel, description="preset"
+                options=[*KERNELS, "typed"], value=kernel, description=_("preset")
             ),
             "kernel": widgets.Textarea(
-                value=KERNELS[kernel], description="kernel", continuous_update=False
+                value=KERNELS[kernel], description=_("kernel"), continuous_update=False
             ),
-            "border": widgets.Dropdown(options=filters.BORDERS, value=border, description="border"),
+            "border": widgets.Dropdown(
+                options=filters.BORDERS, value=border, description=_("border")
+            ),
         }
         height, width = self.image.shape
         side_h, side_w = height * self.ZOOM, width * self.ZOOM
@@ -268,8 +279,8 @@ class KernelApp(SliderApp):
         self.titles = {}
         for index, (name, size, zoom, (h, w)) in enumerate(
             (
-                ("original", side_w, self.ZOOM, (height, width)),
-                ("filtered", side_w, self.ZOOM, (height, width)),
+                (N_("original"), side_w, self.ZOOM, (height, width)),
+                (N_("filtered"), side_w, self.ZOOM, (height, width)),
             )
         ):
             axes = bare_axes(
@@ -282,7 +293,7 @@ class KernelApp(SliderApp):
                 )
             )
             self.panels[name] = PixelPanel(self, axes, (h, w), zoom)
-            self.titles[name] = axes.set_title(name, fontsize=9)
+            self.titles[name] = axes.set_title(_(name), fontsize=9)
         axes = bare_axes(
             pixel_axes(
                 self.figure, margin + 2 * (side_w + gap), margin + tallest - corner, corner, corner
@@ -335,13 +346,13 @@ class KernelApp(SliderApp):
         try:
             kernel = parse_kernel(self.value("kernel"))
         except ValueError as error:
-            self.status.value = f"Kept the last kernel: {error}"
+            self.status.value = _("Kept the last kernel: {error}").format(error=error)
             kernel = self.kernel
         else:
             self.status.value = ""
         border = self.value("border")
         if border == "handout" and abs(kernel.sum()) < 1e-12:
-            self.status.value = (
+            self.status.value = _(
                 "The report's border rule averages the pixels inside; a kernel whose "
                 "weights sum to 0 has nothing to average, so it is read as zero padding."
             )
@@ -358,6 +369,10 @@ class KernelApp(SliderApp):
             panel.vmin, panel.vmax = (-limit, limit) if signed else (0.0, 1.0)
         self.panels["filtered"].set_data(self.result)
         self.panels["corner"].set_data(self.result[self.window])
-        scale = f"blue -{limit:.2g} to red +{limit:.2g}" if signed else "gray 0 to 1, clipped"
-        self.titles["filtered"].set_text(f"filtered ({scale})")
-        self.titles["corner"].set_text(f"the orange window, {border!r}")
+        scale = (
+            _("blue -{limit:.2g} to red +{limit:.2g}").format(limit=limit)
+            if signed
+            else _("gray 0 to 1, clipped")
+        )
+        self.titles["filtered"].set_text(_("filtered ({scale})").format(scale=scale))
+        self.titles["corner"].set_text(_("the orange window, {border}").format(border=repr(border)))

@@ -24,6 +24,7 @@ from course._validate import as_app_points, as_choice, as_int, as_point, as_shap
 from course.bezier import de_casteljau
 from course.bezier_handouts import bresenham_curve, segments_report
 from course.canvas import blank, paint
+from course.i18n import _
 from course.images import EXAMPLE_POINTS
 from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
 from course.triangles import EDGE_RULES
@@ -163,17 +164,21 @@ class LineApp(SliderApp):
             ideal.set_data([p0[0] + 0.5, p1[0] + 0.5], [p0[1] + 0.5, p1[1] + 0.5])
         dx, dy = p1[0] - p0[0], p1[1] - p0[1]
         self.panels["bresenham"].axes.set_title(
-            f"Bresenham: {len(bresenham)} px = max(|dx|, |dy|) + 1", fontsize=9
+            _("Bresenham: {count} px = max(|dx|, |dy|) + 1").format(count=len(bresenham)),
+            fontsize=9,
         )
         self.panels["report"].axes.set_title(
-            f"report's loop: {len(staircase)} px = |dx| + |dy| + 1", fontsize=9
+            _("report's loop: {count} px = |dx| + |dy| + 1").format(count=len(staircase)),
+            fontsize=9,
         )
         self.panels["wu"].axes.set_title(
-            f"Wu: {len(wu_pixels)} px, ink {wu_weights.sum():.1f}", fontsize=9
+            _("Wu: {count} px, ink {ink:.1f}").format(count=len(wu_pixels), ink=wu_weights.sum()),
+            fontsize=9,
         )
         self.heading.set_text(
-            f"({p0[0]}, {p0[1]}) to ({p1[0]}, {p1[1]}): dx = {dx}, dy = {dy}, "
-            f"octant {octant(dx, dy)}"
+            _("({x0}, {y0}) to ({x1}, {y1}): dx = {dx}, dy = {dy}, octant {octant}").format(
+                x0=p0[0], y0=p0[1], x1=p1[0], y1=p1[1], dx=dx, dy=dy, octant=octant(dx, dy)
+            )
         )
 
 
@@ -238,9 +243,12 @@ class TriangleApp(SliderApp):
                 value=format_points(self.corners), description="x, y", continuous_update=False
             ),
             "rule": widgets.ToggleButtons(
-                options=EDGE_RULES, value=rule, description="rule", style={"button_width": "70px"}
+                options=EDGE_RULES,
+                value=rule,
+                description=_("rule"),
+                style={"button_width": "70px"},
             ),
-            "rate": widgets.IntSlider(value=rate, min=1, max=8, description="SSAA rate"),
+            "rate": widgets.IntSlider(value=rate, min=1, max=8, description=_("SSAA rate")),
         }
         super().__init__(controls, shape=(445, 830))
         size, zoom = TRIANGLE_GRID, self.ZOOM
@@ -255,12 +263,12 @@ class TriangleApp(SliderApp):
         # Under the left panel, and part of its tight box: the course map shows that panel alone.
         left.legend(
             handles=[
-                Patch(facecolor=OWNER_COLORS[1], edgecolor="0.5", label="ABC only"),
-                Patch(facecolor=OWNER_COLORS[2], edgecolor="0.5", label="ACD only"),
-                Patch(facecolor=OWNER_COLORS[3], edgecolor="0.5", label="both: painted twice"),
-                Line2D([], [], marker="o", color="black", ls="", ms=3, label="centre inside"),
-                Line2D([], [], marker=".", color="0.6", ls="", ms=4, label="centre outside"),
-                Line2D([], [], color="navy", lw=2, label="shared edge AC"),
+                Patch(facecolor=OWNER_COLORS[1], edgecolor="0.5", label=_("ABC only")),
+                Patch(facecolor=OWNER_COLORS[2], edgecolor="0.5", label=_("ACD only")),
+                Patch(facecolor=OWNER_COLORS[3], edgecolor="0.5", label=_("both: painted twice")),
+                Line2D([], [], marker="o", color="black", ls="", ms=3, label=_("centre inside")),
+                Line2D([], [], marker=".", color="0.6", ls="", ms=4, label=_("centre outside")),
+                Line2D([], [], color="navy", lw=2, label=_("shared edge AC")),
             ],
             loc="upper center",
             bbox_to_anchor=(0.5, -0.07),
@@ -325,8 +333,12 @@ class TriangleApp(SliderApp):
         doubled = int(np.count_nonzero(self.counts == 2))
         cracks = int(np.count_nonzero(shared_edge_centres(a, c, shape) & (self.counts == 0)))
         self.left.set_title(
-            f"rule {rule}: {len(first)} + {len(second)} pixels\n"
-            f"{doubled} painted twice, {cracks} missed on the shared edge",
+            _(
+                "rule {rule}: {first} + {second} pixels\n"
+                "{doubled} painted twice, {cracks} missed on the shared edge"
+            ).format(
+                rule=rule, first=len(first), second=len(second), doubled=doubled, cracks=cracks
+            ),
             fontsize=9,
         )
         image = blank(shape)
@@ -334,7 +346,9 @@ class TriangleApp(SliderApp):
             pixels, weights = triangle_coverage(*triple, shape, rate, rule=rule)
             paint(image, pixels, 1.0, weight=weights)
         self.coverage.set_data(image)
-        self.right.set_title(f"SSAA coverage, {rate} x {rate} samples per pixel", fontsize=9)
+        self.right.set_title(
+            _("SSAA coverage, {rate} x {rate} samples per pixel").format(rate=rate), fontsize=9
+        )
         for label, corner in zip(self.labels, (a, b, c, d), strict=True):
             label.xy = tuple(corner)
         quad = np.array([a, b, c, d, a])
@@ -375,7 +389,7 @@ class CurveSegmentsApp(SliderApp):
         self.control = np.round(np.asarray(start, dtype=float), 1)
         controls = {
             "segments": widgets.IntSlider(
-                value=segments, min=1, max=max(_SEGMENT_COUNTS), description="segments"
+                value=segments, min=1, max=max(_SEGMENT_COUNTS), description=_("segments")
             ),
             "points": widgets.Textarea(
                 value=format_points(self.control), description="x, y", continuous_update=False
@@ -396,15 +410,24 @@ class CurveSegmentsApp(SliderApp):
         )
         grid_axes.legend(
             handles=[
-                Patch(facecolor=_DRAWN.colors[1], edgecolor="0.5", label="drawn, on the curve"),
-                Patch(facecolor=_DRAWN.colors[2], edgecolor="0.5", label="drawn, off the curve"),
+                Patch(facecolor=_DRAWN.colors[1], edgecolor="0.5", label=_("drawn, on the curve")),
+                Patch(facecolor=_DRAWN.colors[2], edgecolor="0.5", label=_("drawn, off the curve")),
                 Patch(
-                    facecolor=_DRAWN.colors[3], edgecolor="0.5", label="curve missed (> 1 px away)"
+                    facecolor=_DRAWN.colors[3],
+                    edgecolor="0.5",
+                    label=_("curve missed (> 1 px away)"),
                 ),
                 Line2D(
-                    [], [], marker="o", color="white", mec="0.3", ls="", ms=4, label="drawn twice"
+                    [],
+                    [],
+                    marker="o",
+                    color="white",
+                    mec="0.3",
+                    ls="",
+                    ms=4,
+                    label=_("drawn twice"),
                 ),
-                Line2D([], [], color="#0072B2", lw=1.5, label="the curve"),
+                Line2D([], [], color="#0072B2", lw=1.5, label=_("the curve")),
             ],
             loc="upper center",
             bbox_to_anchor=(0.5, -0.05),
@@ -421,13 +444,13 @@ class CurveSegmentsApp(SliderApp):
         chart = pixel_axes(self.figure, 520, 90, 350, 370)
         chart.set_xscale("log", base=2)
         chart.set_xticks(_SEGMENT_COUNTS, [str(n) for n in _SEGMENT_COUNTS])
-        chart.set_xlabel("segments", fontsize=9)
-        chart.set_ylabel("pixels", fontsize=9)
+        chart.set_xlabel(_("segments"), fontsize=9)
+        chart.set_ylabel(_("pixels"), fontsize=9)
         chart.tick_params(labelsize=8)
         self.counts = {
-            "off": chart.plot([], [], "s-", color="#D55E00", label="off the curve")[0],
-            "missed": chart.plot([], [], "^--", color="#56B4E9", label="curve missed")[0],
-            "twice": chart.plot([], [], "o:", color="0.2", label="drawn twice")[0],
+            "off": chart.plot([], [], "s-", color="#D55E00", label=_("off the curve"))[0],
+            "missed": chart.plot([], [], "^--", color="#56B4E9", label=_("curve missed"))[0],
+            "twice": chart.plot([], [], "o:", color="0.2", label=_("drawn twice"))[0],
         }
         self.now = chart.axvline(segments, color="0.6", linewidth=1)
         chart.legend(fontsize=8, loc="upper center")
@@ -469,8 +492,10 @@ class CurveSegmentsApp(SliderApp):
         for label, point in zip(self.labels, control, strict=True):
             label.xy = tuple(point)
         self.grid_axes.set_title(
-            f"{segments} segments: {report['pixels']} pixels, {report['twice']} drawn twice\n"
-            f"{report['off']} off the curve, {report['missed']} of its {report['curve']} missed",
+            _(
+                "{segments} segments: {pixels} pixels, {twice} drawn twice\n"
+                "{off} off the curve, {missed} of its {curve} missed"
+            ).format(segments=segments, **report),
             fontsize=9,
         )
         sweep = [segments_report(control, n) for n in _SEGMENT_COUNTS]

@@ -26,6 +26,7 @@ from course._validate import (
     describe,
     require_finite,
 )
+from course.i18n import _
 from course.poisson_problem import build_clone_problem
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import rounding_level
@@ -78,10 +79,10 @@ class PoissonIterationApp(SliderApp):
             "method": widgets.Dropdown(
                 options=[("Jacobi", "jacobi"), ("Gauss-Seidel", "gauss_seidel"), ("SOR", "sor")],
                 value="jacobi",
-                description="method",
+                description=_("method"),
             ),
             "sweeps": widgets.SelectionSlider(
-                options=self.stops, value=self.stops[0], description="sweeps"
+                options=self.stops, value=self.stops[0], description=_("sweeps")
             ),
         }
         super().__init__(controls, shape=(330, 900))
@@ -105,9 +106,9 @@ class PoissonIterationApp(SliderApp):
             vmax=max(self.initial_error, 1e-9),
             interpolation="nearest",
         )
-        self.figure.colorbar(self.error_image, ax=error_axes, shrink=0.8, label="grey levels")
-        picture_axes.set_title("the result after the sweeps", fontsize=10)
-        error_axes.set_title("|iterate - exact solution|, largest channel", fontsize=10)
+        self.figure.colorbar(self.error_image, ax=error_axes, shrink=0.8, label=_("grey levels"))
+        picture_axes.set_title(_("the result after the sweeps"), fontsize=10)
+        error_axes.set_title(_("|iterate - exact solution|, largest channel"), fontsize=10)
         self.caption = self.figure.text(0.5, 0.96, "", ha="center", va="top", fontsize=11)
 
     def iterate(self, method: str, sweeps: int) -> np.ndarray:
@@ -150,9 +151,16 @@ class PoissonIterationApp(SliderApp):
         residual = self.problem.residual(solution)
         names = {"jacobi": "Jacobi", "gauss_seidel": "Gauss-Seidel", "sor": "SOR"}
         self.caption.set_text(
-            f"{names[method]}, {sweeps} sweeps: residual {rounding_level(residual, spec='.2g')}, "
-            f"error up to "
-            f"{self._error(solution):.1f} grey levels (from {self.initial_error:.1f})"
+            _(
+                "{method}, {sweeps} sweeps: residual {residual}, "
+                "error up to {error:.1f} grey levels (from {initial:.1f})"
+            ).format(
+                method=names[method],
+                sweeps=sweeps,
+                residual=rounding_level(residual, spec=".2g"),
+                error=self._error(solution),
+                initial=self.initial_error,
+            )
         )
 
     def _error(self, solution: np.ndarray) -> float:
@@ -229,8 +237,8 @@ class CloneApp(SliderApp):
             self.shown[name] = self._pasted(x + 1, y + 1, region)
             # As imshow shows an RGB image in [0, 1]: 255 times, truncated.
             self.pixel_images[self.panels[name]] = as_pixels_uint8(self.shown[name])
-        self.titles["naive paste"].set_text(f"naive paste at ({x}, {y})")
-        self.titles["seamless clone"].set_text(f"seamless clone at ({x}, {y})")
+        self.titles["naive paste"].set_text(_("naive paste at ({x}, {y})").format(x=x, y=y))
+        self.titles["seamless clone"].set_text(_("seamless clone at ({x}, {y})").format(x=x, y=y))
 
     def _pasted(self, x: int, y: int, patch: np.ndarray) -> np.ndarray:
         """The half-size background with ``patch`` pasted at (x, y).

@@ -15,6 +15,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from course._validate import as_int, as_point
+from course.i18n import N_, _
 from course.images import photograph, zone_plate, zone_plate_box
 from course.metrics import rmse
 from course.resample import bilinear, supersample, supersample_without_offset
@@ -58,7 +59,7 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
         np.cos(2 * np.pi * frequency * fine_x),
         color=BLUE,
         lw=1.2,
-        label=f"cos(2π {frequency:g} x)",
+        label=_("cos(2π {frequency:g} x)").format(frequency=frequency),
     )
     signal.plot(
         fine_x,
@@ -66,10 +67,10 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
         "--",
         color=VERMILLION,
         lw=1.5,
-        label=f"cos(2π {alias:g} x): the same samples",
+        label=_("cos(2π {alias:g} x): the same samples").format(alias=alias),
     )
     signal.plot(samples_x, samples, "o", color="0.1", ms=6, label=f"{rate:g} sample per unit")
-    signal.set_xlabel("x (samples)", fontsize=8)
+    signal.set_xlabel(_("x (samples)"), fontsize=8)
     signal.legend(fontsize=7, loc="upper right", ncols=3)
     signal.set_ylim(-1.25, 1.6)
     nyquist = rate / 2
@@ -78,8 +79,8 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
     spectrum.annotate(
         "Nyquist: rate / 2", (nyquist, 1.05), xytext=(4, 0), textcoords="offset points", fontsize=8
     )
-    spectrum.vlines(frequency, 0, 1, color=BLUE, lw=3, label="the signal")
-    spectrum.vlines(alias, 0, 1, color=VERMILLION, lw=3, label="where the samples put it")
+    spectrum.vlines(frequency, 0, 1, color=BLUE, lw=3, label=_("the signal"))
+    spectrum.vlines(alias, 0, 1, color=VERMILLION, lw=3, label=_("where the samples put it"))
     spectrum.annotate(
         "",
         xy=(alias, 0.6),
@@ -89,12 +90,19 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
     spectrum.set_xlim(0, max(1.5 * rate, frequency + 0.2))
     spectrum.set_ylim(0, 1.3)
     spectrum.set_yticks([])
-    spectrum.set_xlabel("frequency (cycles per unit)", fontsize=8)
+    spectrum.set_xlabel(_("frequency (cycles per unit)"), fontsize=8)
     spectrum.legend(fontsize=7, loc="upper right")
     figure.tight_layout()
     caption = (
-        f"{frequency:g} cycles per sample is seen as {alias:g}: the two cosines' samples differ "
-        + ("by rounding alone (below 1e-12)" if gap < 1e-12 else f"by up to {gap:.1e}")
+        _(
+            "{frequency:g} cycles per sample is seen as {alias:g}: "
+            "the two cosines' samples differ by rounding alone (below 1e-12)"
+        ).format(frequency=frequency, alias=alias)
+        if gap < 1e-12
+        else _(
+            "{frequency:g} cycles per sample is seen as {alias:g}: "
+            "the two cosines' samples differ by up to {gap:.1e}"
+        ).format(frequency=frequency, alias=alias, gap=gap)
     )
     return Still.of(figure, caption)
 
@@ -112,18 +120,23 @@ def box_response_figure(width: float = 1.0) -> Still:
     figure = Figure(figsize=(6.4, 3.0), dpi=100)
     axes = figure.add_subplot()
     axes.axhline(0, color="0.6", lw=0.8)
-    axes.plot(frequencies, response, color=BLUE, lw=1.5, label="box of one pixel: sinc(f)")
+    axes.plot(frequencies, response, color=BLUE, lw=1.5, label=_("box of one pixel: sinc(f)"))
     nyquist = 0.5 / width
-    axes.axvline(nyquist, color="0.3", lw=1, ls=":", label="Nyquist frequency of the pixel grid")
+    axes.axvline(nyquist, color="0.3", lw=1, ls=":", label=_("Nyquist frequency of the pixel grid"))
     axes.plot([nyquist], [box_response(nyquist, width)], "o", color=VERMILLION)
-    axes.set_xlabel("frequency (cycles per pixel)", fontsize=8)
-    axes.set_ylabel("kept", fontsize=8)
+    axes.set_xlabel(_("frequency (cycles per pixel)"), fontsize=8)
+    axes.set_ylabel(_("kept"), fontsize=8)
     axes.legend(fontsize=7)
     figure.tight_layout()
-    zeros = ", ".join(f"{k / width:g}" for k in (1, 2)) + f" and {3 / width:g}"
-    caption = (
-        f"at the Nyquist frequency {nyquist:g} the box keeps {box_response(nyquist, width):.3f}; "
-        f"zero at {zeros} cycles per pixel"
+    caption = _(
+        "at the Nyquist frequency {nyquist:g} the box keeps {kept:.3f}; "
+        "zero at {first:g}, {second:g} and {third:g} cycles per pixel"
+    ).format(
+        nyquist=nyquist,
+        kept=box_response(nyquist, width),
+        first=1 / width,
+        second=2 / width,
+        third=3 / width,
     )
     return Still.of(figure, caption)
 
@@ -148,7 +161,7 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
             (
                 np.clip(image, 0.15, 0.85),
                 (0, width, height, 0),
-                f"pixel values and centres; ({x:g}, {y:g}) and its weights",
+                _("pixel values and centres; ({x:g}, {y:g}) and its weights").format(x=x, y=y),
             )
         ],
         zoom=90,
@@ -190,7 +203,9 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
     value = float(bilinear(image, x, y))
     terms = " + ".join(f"{w:.2f} x {image[r, c]:g}" for (c, r), w in weights.items())
     owners = ", ".join(f"({c}, {r})" for c, r in weights)
-    caption = f"({x:g}, {y:g}) reads {value:.4f}: {terms}, the weights of pixels {owners}"
+    caption = _("({x:g}, {y:g}) reads {value:.4f}: {terms}, the weights of pixels {owners}").format(
+        x=x, y=y, value=value, terms=terms, owners=owners
+    )
     return Still.of(figure, caption)
 
 
@@ -214,12 +229,18 @@ def zone_plate_figure() -> Still:
     plate, exact = _lab_zone_plate()
     rate_one = supersample(plate, (LAB_OUT, LAB_OUT), 1)
     windows = [
-        (plate[:LAB_OUT, :LAB_OUT], (0, LAB_OUT, LAB_OUT, 0), "the input's top-left corner, 1:1"),
-        (rate_one, (0, LAB_OUT, LAB_OUT, 0), "shrunk to 320, rate 1"),
-        (exact, (0, LAB_OUT, LAB_OUT, 0), "shrunk to 320, exact box filter"),
+        (
+            plate[:LAB_OUT, :LAB_OUT],
+            (0, LAB_OUT, LAB_OUT, 0),
+            _("the input's top-left corner, 1:1"),
+        ),
+        (rate_one, (0, LAB_OUT, LAB_OUT, 0), _("shrunk to 320, rate 1")),
+        (exact, (0, LAB_OUT, LAB_OUT, 0), _("shrunk to 320, exact box filter")),
     ]
-    figure, _ = pixel_figure(windows, zoom=1)
-    caption = f"320 x 320 at rate 1: RMS {rmse(rate_one, exact):.4f} against the exact box filter"
+    figure, _axes = pixel_figure(windows, zoom=1)
+    caption = _("320 x 320 at rate 1: RMS {error:.4f} against the exact box filter").format(
+        error=rmse(rate_one, exact)
+    )
     return Still.of(figure, caption)
 
 
@@ -239,8 +260,8 @@ def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13)), floor_rate:
     floor_rate = as_int(floor_rate, "floor_rate", minimum=1, maximum=32)
     plate, exact = _lab_zone_plate()
     errors = {
-        "centred": [rmse(supersample(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates],
-        "the report's": [
+        N_("centred"): [rmse(supersample(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates],
+        N_("the report's"): [
             rmse(supersample_without_offset(plate, (LAB_OUT, LAB_OUT), r), exact) for r in rates
         ],
     }
@@ -249,21 +270,23 @@ def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13)), floor_rate:
     for (name, values), (style, colour) in zip(
         errors.items(), (("o-", BLUE), ("s--", VERMILLION)), strict=True
     ):
-        axes.semilogy(rates, values, style, color=colour, ms=4, label=name)
+        axes.semilogy(rates, values, style, color=colour, ms=4, label=_(name))
     axes.set_xticks(list(rates))
-    axes.set_xlabel("rate (samples per output pixel along each axis)", fontsize=8)
-    axes.set_ylabel("RMS error", fontsize=8)
+    axes.set_xlabel(_("rate (samples per output pixel along each axis)"), fontsize=8)
+    axes.set_ylabel(_("RMS error"), fontsize=8)
     axes.grid(True, which="both", color="0.92")
     axes.legend(fontsize=8)
     figure.tight_layout()
     shown = list(rates)[:3]
-    caption = (
-        f"RMS at rates {', '.join(map(str, shown))}: centred "
-        + ", ".join(f"{v:.4f}" for v in errors["centred"][:3])
-        + "; the report's "
-        + ", ".join(f"{v:.4f}" for v in errors["the report's"][:3])
-        + f"; centred at rate {floor_rate}: "
-        + f"{rmse(supersample(plate, (LAB_OUT, LAB_OUT), floor_rate), exact):.4f}"
+    caption = _(
+        "RMS at rates {rates}: centred {centred}; the report's {report}; "
+        "centred at rate {floor_rate}: {floor:.4f}"
+    ).format(
+        rates=", ".join(map(str, shown)),
+        centred=", ".join(f"{v:.4f}" for v in errors["centred"][:3]),
+        report=", ".join(f"{v:.4f}" for v in errors["the report's"][:3]),
+        floor_rate=floor_rate,
+        floor=rmse(supersample(plate, (LAB_OUT, LAB_OUT), floor_rate), exact),
     )
     return Still.of(figure, caption)
 
@@ -288,9 +311,9 @@ def shift_figure(rate: int = 4, corner: int = 40, zoom: int = 6) -> Still:
     extent = (0, corner, corner, 0)
     figure, axes_list = pixel_figure(
         [
-            (truth, extent, "exact box mean"),
-            (np.zeros_like(truth), extent, "centred minus exact"),
-            (np.zeros_like(truth), extent, "the report's minus exact"),
+            (truth, extent, _("exact box mean")),
+            (np.zeros_like(truth), extent, _("centred minus exact")),
+            (np.zeros_like(truth), extent, _("the report's minus exact")),
         ],
         zoom=zoom,
         reserve_right=70,
@@ -309,12 +332,12 @@ def shift_figure(rate: int = 4, corner: int = 40, zoom: int = 6) -> Still:
     last = axes_list[-1].get_window_extent()
     bar = pixel_axes(figure, round(last.x1) + 8, round(last.y0), 12, round(last.height))
     figure.colorbar(shown, cax=bar)
-    bar.set_ylabel("too bright (+) / too dark (−)", fontsize=7)
+    bar.set_ylabel(_("too bright (+) / too dark (−)"), fontsize=7)
     bar.tick_params(labelsize=7)
-    caption = (
-        f"rate {rate}, top-left {corner} x {corner}: RMS centred {rmse(centred, truth):.4f}, "
-        f"the report's {rmse(shifted, truth):.4f}"
-    )
+    caption = _(
+        "rate {rate}, top-left {corner} x {corner}: RMS centred {centred:.4f}, "
+        "the report's {shifted:.4f}"
+    ).format(rate=rate, corner=corner, centred=rmse(centred, truth), shifted=rmse(shifted, truth))
     return Still.of(figure, caption)
 
 
@@ -334,5 +357,5 @@ def photograph_figure(rates: Sequence[int] = (1, 2, 3, 12), reference_rate: int 
         error = rmse(image, reference)
         windows.append((image, (0, 64, 64, 0), f"rate {rate}: RMS {error:.4f}"))
         parts.append(f"rate {rate} {error:.4f}")
-    figure, _ = pixel_figure(windows, zoom=3)
+    figure, _axes = pixel_figure(windows, zoom=3)
     return Still.of(figure, f"RMS against rate {reference_rate}: " + ", ".join(parts))

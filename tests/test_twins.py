@@ -144,3 +144,14 @@ def test_a_committed_twin_has_the_english_code_and_no_untranslated_cell(twin_pat
     )
     assert report.untranslated == []
     assert report.problems == []
+
+
+def test_the_handout_keys_anchor_may_be_the_translated_headings_and_formulas_may_wrap():
+    from course.classroom.twins import translation_problems
+
+    english = "See [the handouts](00_index.ipynb#The-handouts): $4(1 - \\rho) \\approx\n0.00094$."
+    chinese = "见[讲义](00_index.ipynb#讲义)：$4(1 - \\rho) \\approx\n0.00094$。"
+    assert translation_problems("c", english, chinese) == []
+    wrong_anchor = chinese.replace("#讲义", "#The-handouts")
+    assert translation_problems("c", english, wrong_anchor) != []
+    assert translation_problems("c", english, chinese.replace("0.00094", "0.0009")) != []

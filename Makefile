@@ -5,6 +5,11 @@ VENV := .venv
 BIN := $(VENV)/bin
 LOCK := requirements
 NOTEBOOKS := $(sort $(wildcard notebooks/[0-9]*.ipynb))
+# The Chinese lessons: the twins that exist (python -m course twins writes one per catalog).
+TWINS = $(sort $(wildcard notebooks/zh-CN/[0-9]*.ipynb))
+# The lessons' language for `make lab`: en, or zh-CN for the Chinese edition (not LANG).
+COURSE_LANG ?= en
+LAB_FOLDER := $(if $(filter zh-CN,$(COURSE_LANG)),notebooks/zh-CN,notebooks)
 SOURCES := $(wildcard course tests tests_browser benchmarks notebooks site)
 APP_PORT ?= 8866
 # JupyterLab refuses to start as root without this flag (containers run as root).
@@ -18,7 +23,7 @@ export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
 .DEFAULT_GOAL := help
 .PHONY: help lab app student test test-latest test-browser fuzz lint format notebooks site \
-	bench bench-browser lock clean
+	bench bench-browser lock clean messages
 
 ## help: this list of targets
 help:
@@ -68,7 +73,15 @@ $(VENV)/.%-installed: $(LOCK)/%.txt pyproject.toml | $(BIN)/python
 	@echo "make: installing the '$*' set into $(VENV) $(if $(LATEST),(newest releases),from $(LOCK)/$*.txt)"
 	$(BIN)/python -m pip install --progress-bar on \
 		$(if $(LATEST),--upgrade --upgrade-strategy eager $(PIP_$*),-r $(LOCK)/$*.txt -e .)
+	$(BIN)/pybabel compile -d course/locale -D course --statistics
 	touch $@
+
+## messages: extract the library's marked strings into course.pot and merge them into the .po
+messages: $(VENV)/.test-installed
+	$(BIN)/pybabel extract -F babel.cfg --no-wrap --sort-by-file --project course \
+		-o course/locale/course.pot course
+	$(BIN)/pybabel update --no-wrap -i course/locale/course.pot -d course/locale -D course
+	$(BIN)/pybabel compile -d course/locale -D course --statistics
 
 ## lab: install the lessons, then open them in JupyterLab at the course map
 # With student/ beside notebooks/ so a teacher can open the student edition in the same
@@ -78,7 +91,7 @@ lab: $(VENV)/.lab-installed
 	@echo "make: JupyterLab opens at the course map; its address is printed below, under" \
 		"'Or copy and paste one of these URLs'. Stop it with Ctrl-C, twice."
 	$(BIN)/jupyter lab --ServerApp.root_dir=. \
-		--LabApp.default_url=/lab/tree/notebooks/00_index.ipynb \
+		--LabApp.default_url=/lab/tree/$(LAB_FOLDER)/00_index.ipynb \
 		$(ROOT_FLAG) --ServerApp.kernel_websocket_connection_class=$(PROMPT)
 
 ## app: the lessons as apps for a projector: Voila, code hidden, sliders live
@@ -103,7 +116,7 @@ format: $(VENV)/.test-installed
 ## test: ruff, unit and property tests, doctests, and every notebook with nbval
 test: lint
 	$(BIN)/python -m pytest -n 2 --dist loadfile course tests \
-		--nbval --nbval-current-env --nbval-cell-timeout=300 $(NOTEBOOKS)
+		--nbval --nbval-current-env --nbval-cell-timeout=300 $(NOTEBOOKS) $(TWINS)
 
 ## test-latest: make test on the newest releases (in .venv-latest), to find drift first
 test-latest:
@@ -129,13 +142,20 @@ test-browser: site $(VENV)/.browser-installed $(VENV)/.test-installed
 # The README's picture: lesson 01's app as the notebook first shows it.
 README_PICTURE := 01_de_casteljau_degree3_t0.50
 
-## notebooks: re-execute and normalise the lessons, then the README's table and picture
+## notebooks: re-execute and normalise the lessons, English and Chinese, then the README's table
 notebooks: $(VENV)/.lab-installed $(VENV)/.test-installed
 	for notebook in $(NOTEBOOKS); do \
 		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
 			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
 	done
 	$(BIN)/nbstripout --keep-output --keep-count $(NOTEBOOKS)
+	$(BIN)/python -m course twins
+	for notebook in notebooks/zh-CN/[0-9]*.ipynb; do \
+		test -e "$$notebook" || continue; \
+		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
+			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
+		$(BIN)/nbstripout --keep-output --keep-count "$$notebook" || exit 1; \
+	done
 	$(BIN)/python -m course map --readme README.md
 	$(BIN)/python -m course gallery --out docs --force --only $(README_PICTURE)
 

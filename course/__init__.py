@@ -10,3 +10,7 @@ try:
     __version__ = version("course")
 except PackageNotFoundError:  # the package imported from a folder, not installed
     __version__ = "0+unknown"
+
+from course.i18n import current_language, use_language
+
+__all__ = ["__version__", "current_language", "use_language"]

@@ -71,11 +71,21 @@ def main(argv: list[str] | None = None) -> int:
         type=Path,
         help="rewrite the lesson table between this README's markers instead of printing it",
     )
+    twins_command = commands.add_parser(
+        "twins", help="write the Chinese lessons notebooks/zh-CN/*.ipynb from their catalogs"
+    )
+    twins_command.add_argument("--notebooks", type=Path, help="the English lessons' folder")
+    twins_command.add_argument("--update-po", action="store_true", help="merge new English first")
+    twins_command.add_argument("--check", action="store_true", help="write nothing; fail on gaps")
     args = parser.parse_args(argv)
     args.notebooks = args.notebooks or find_notebooks()
     if args.notebooks is None and args.command != "gallery":
         print(f"python -m course {args.command}: {NOT_FOUND}", file=sys.stderr)
         return 2
+    if args.command == "twins":
+        from course.classroom import twins
+
+        return twins.run(args.notebooks, args.update_po, args.check)
     try:
         if args.command == "map" and args.readme:
             changed = update_readme(args.readme, args.notebooks)

@@ -17,6 +17,7 @@ from matplotlib.lines import Line2D
 
 from course._validate import as_app_points, as_int, as_unit
 from course.bezier import de_casteljau, de_casteljau_levels
+from course.i18n import _
 from course.images import EXAMPLE_POINTS
 from course.widgets.base import Handle, SliderApp, format_points, parse_points
 
@@ -72,14 +73,16 @@ class DeCasteljauApp(SliderApp):
             start = parse_points(format_points(as_app_points(points, "points")))
             if not MIN_POINTS <= len(start) <= MAX_POINTS:
                 raise ValueError(
-                    f"points must hold {MIN_POINTS} to {MAX_POINTS} points; got {len(start)}"
+                    _("points must hold {low} to {high} points; got {count}").format(
+                        low=MIN_POINTS, high=MAX_POINTS, count=len(start)
+                    )
                 )
         t = as_unit(t, "t")
         size = as_int(size, "size", minimum=100, maximum=4000)
         controls = {
             "t": widgets.FloatSlider(value=t, min=0.0, max=1.0, step=0.01, description="t"),
             "count": widgets.IntSlider(
-                value=len(start), min=MIN_POINTS, max=MAX_POINTS, description="points"
+                value=len(start), min=MIN_POINTS, max=MAX_POINTS, description=_("points")
             ),
             "points": widgets.Textarea(
                 value=format_points(start), description="x, y", continuous_update=False
@@ -97,12 +100,14 @@ class DeCasteljauApp(SliderApp):
         axes.tick_params(labelsize=8)
         axes.set_aspect("equal", adjustable="box")
         self.axes = axes
-        (self.full_curve,) = axes.plot([], [], color="0.75", linewidth=1, label="the whole curve")
+        (self.full_curve,) = axes.plot(
+            [], [], color="0.75", linewidth=1, label=_("the whole curve")
+        )
         self.level_lines: list[Line2D] = []
         for level in range(MAX_POINTS - 1):
             (line,) = axes.plot([], [], **_level_style(level))
             self.level_lines.append(line)
-        (self.traced,) = axes.plot([], [], color="crimson", linewidth=2.5, label="B(s), s <= t")
+        (self.traced,) = axes.plot([], [], color="crimson", linewidth=2.5, label=_("B(s), s <= t"))
         (self.point_marker,) = axes.plot(
             [], [], "o", color="crimson", markersize=9, label="B(t)", zorder=5
         )
@@ -144,19 +149,23 @@ class DeCasteljauApp(SliderApp):
         try:
             points = parse_points(self.value("points"))
             if len(points) < MIN_POINTS:
-                raise ValueError(f"at least {MIN_POINTS} points are needed; got {len(points)}")
+                raise ValueError(
+                    _("at least {low} points are needed; got {count}").format(
+                        low=MIN_POINTS, count=len(points)
+                    )
+                )
         except ValueError as error:
-            self.status.value = f"Kept the last points: {error}"
+            self.status.value = _("Kept the last points: {error}").format(error=error)
             points = self.points  # the typed text stays, for the student to fix
         count = self.value("count")
         if self._count_changed:
             points = np.vstack([points, EXAMPLE_POINTS[len(points) : count]])[:count]
         cut = len(points) > MAX_POINTS
         if cut:
-            self.status.value = (
-                f"Kept the first {MAX_POINTS} of the {len(points)} points typed: "
-                f"the app draws at most {MAX_POINTS} (degree {MAX_POINTS - 1})."
-            )
+            self.status.value = _(
+                "Kept the first {high} of the {count} points typed: "
+                "the app draws at most {high} (degree {degree})."
+            ).format(high=MAX_POINTS, count=len(points), degree=MAX_POINTS - 1)
             points = points[:MAX_POINTS]
         if cut or len(points) != count or self._count_changed:
             self._write_points(points)
@@ -186,7 +195,9 @@ class DeCasteljauApp(SliderApp):
         traced = de_casteljau(points, np.linspace(0.0, t, _CURVE_SAMPLES))
         self.traced.set_data(traced[:, 0], traced[:, 1])
         self.title.set_text(
-            f"degree {len(points) - 1}, t = {t:.2f}: B(t) = ({point[0]:.1f}, {point[1]:.1f})"
+            _("degree {degree}, t = {t:.2f}: B(t) = ({x:.1f}, {y:.1f})").format(
+                degree=len(points) - 1, t=t, x=point[0], y=point[1]
+            )
         )
 
     def _set_points(self, points: np.ndarray) -> None:
@@ -218,7 +229,11 @@ class DeCasteljauApp(SliderApp):
         """A legend for the levels this many points have; it lives in the background."""
         for level, line in enumerate(self.level_lines):
             line.set_label(
-                "control polygon P" if level == 0 else f"level {level}" if level < count else ""
+                _("control polygon P")
+                if level == 0
+                else _("level {level}").format(level=level)
+                if level < count
+                else ""
             )
         shown = [self.level_lines[0], *self.level_lines[1 : count - 1], self.traced]
         shown.append(self.point_marker)
@@ -247,7 +262,9 @@ class DeCasteljauApp(SliderApp):
     def click(self, axes: Axes, point: np.ndarray) -> bool:
         """A click on empty space adds a point there, at the end of the list."""
         if len(self.points) >= MAX_POINTS:
-            self.status.value = f"At most {MAX_POINTS} points: double-click one to remove it."
+            self.status.value = _("At most {high} points: double-click one to remove it.").format(
+                high=MAX_POINTS
+            )
             return False
         self._write_points(np.vstack([self.points, self._inside_view(point)]))
         return True
@@ -255,7 +272,9 @@ class DeCasteljauApp(SliderApp):
     def double_click(self, name: str) -> bool:
         """A double click on a point removes it, down to two points."""
         if len(self.points) <= MIN_POINTS:
-            self.status.value = f"At least {MIN_POINTS} points: a curve needs two ends."
+            self.status.value = _("At least {low} points: a curve needs two ends.").format(
+                low=MIN_POINTS
+            )
             return False
         self._write_points(np.delete(self.points, int(name[1:]), axis=0))
         return True

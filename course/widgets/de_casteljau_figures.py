@@ -37,6 +37,7 @@ from course.bezier_handouts import (
     yellow_check,
 )
 from course.canvas import crop, paint
+from course.i18n import _
 from course.raster import nearest_pixels
 from course.widgets.picture import Still, pixel_axes, pixel_figure
 
@@ -75,11 +76,11 @@ def three_points_figure(points: Any, t: float) -> Still:
     curve = de_casteljau(control, np.linspace(0.0, 1.0, 101))
     figure = Figure(figsize=(5.2, 3.6), dpi=100)
     axes = figure.add_subplot()
-    axes.plot(*curve.T, color="0.8", linewidth=1, label="the curve")
+    axes.plot(*curve.T, color="0.8", linewidth=1, label=_("the curve"))
     names = [["P"], ["Q"], ["B(t)"]]
     styles = [("o-", "0.35"), ("s--", BLUE), ("D", VERMILLION)]
     for level, (points_at, (style, colour)) in enumerate(zip(levels, styles, strict=False)):
-        label = ("control polygon", "level 1", "level 2: B(t)")[min(level, 2)]
+        label = (_("control polygon"), _("level 1"), _("level 2: B(t)"))[min(level, 2)]
         axes.plot(*points_at.T, style, color=colour, markersize=7, label=label)
         for index, point in enumerate(points_at):
             name = names[min(level, 2)][0]
@@ -101,7 +102,9 @@ def three_points_figure(points: Any, t: float) -> Still:
     axes.invert_yaxis()
     axes.margins(x=0.3, y=0.18)
     axes.legend(fontsize=7, loc="lower right")
-    axes.set_title(f"t = {_fraction(t)}: a quarter of the way along each segment", fontsize=9)
+    axes.set_title(
+        _("t = {t}: a quarter of the way along each segment").format(t=_fraction(t)), fontsize=9
+    )
     figure.tight_layout()
     point = levels[-1][0]
     value = ", ".join(_fraction(float(v)) for v in point)
@@ -127,13 +130,15 @@ def points_held_figure(counts: Sequence[int] = (4, 10, 20, 50, 100, 200)) -> Sti
         iterative.append(trace_iterative(points, 0.3).peak_points_held)
     figure = Figure(figsize=(4.6, 3.2), dpi=100)
     axes = figure.add_subplot()
-    axes.loglog(counts, recursive, "o-", color=VERMILLION, label="recursion: N(N+1)/2")
-    axes.loglog(counts, iterative, "s--", color=BLUE, label="loop: 2N - 1")
-    axes.set_xlabel("control points N")
-    axes.set_ylabel("points held at once")
+    axes.loglog(counts, recursive, "o-", color=VERMILLION, label=_("recursion: N(N+1)/2"))
+    axes.loglog(counts, iterative, "s--", color=BLUE, label=_("loop: 2N - 1"))
+    axes.set_xlabel(_("control points N"))
+    axes.set_ylabel(_("points held at once"))
     axes.legend(fontsize=8)
     figure.tight_layout()
-    caption = f"points held at N = {counts[-1]}: recursion {recursive[-1]}, loop {iterative[-1]}"
+    caption = _("points held at N = {count}: recursion {recursive}, loop {loop}").format(
+        count=counts[-1], recursive=recursive[-1], loop=iterative[-1]
+    )
     return Still.of(figure, caption)
 
 
@@ -191,10 +196,9 @@ def reversed_figure(points: Any, t: float = 0.25) -> Still:
         axes.tick_params(labelsize=7)
     figure.colorbar(dots, ax=figure.axes, shrink=0.6, fraction=0.03, label="t")
     textbook, backwards = ((f"{v:g}" for v in mark) for mark in marks)
-    caption = (
-        f"at t = {t:g}: textbook ({', '.join(textbook)}), reversed ({', '.join(backwards)}) "
-        f"= textbook at t = {1 - t:g}"
-    )
+    caption = _(
+        "at t = {t:g}: textbook ({textbook}), reversed ({reversed}) = textbook at t = {mirror:g}"
+    ).format(t=t, textbook=", ".join(textbook), reversed=", ".join(backwards), mirror=1 - t)
     return Still.of(figure, caption)
 
 
@@ -254,17 +258,30 @@ def end_of_curve_figure(
         last_t = uniform_parameters(0.001, loop.accumulate)[-1]
         lit = bool((pixels == home).all(axis=1).any())
         window, extent = crop(_painted(pixels, (0.0, 0.62, 0.45)), end, size)
-        rounding = "rounded" if loop.rounding == "round" else "truncated"
-        windows.append((window, extent, f"{loop.name}\nlast t {last_t:.7g}, {rounding}"))
-        verdicts.append(f"{loop.name} {'paints it' if lit else 'does not'} (last t {last_t:.7g})")
+        rounding = _("rounded") if loop.rounding == "round" else _("truncated")
+        windows.append(
+            (
+                window,
+                extent,
+                _("{loop}\nlast t {last_t:.7g}, {rounding}").format(
+                    loop=loop.name, last_t=last_t, rounding=rounding
+                ),
+            )
+        )
+        verdict = (
+            _("{loop} paints it (last t {last_t:.7g})")
+            if lit
+            else _("{loop} does not (last t {last_t:.7g})")
+        )
+        verdicts.append(verdict.format(loop=loop.name, last_t=last_t))
     legend = [
-        (GREEN, "painted"),
-        ("white", "not painted"),
-        ("white", "B(1)'s pixel"),
+        (GREEN, _("painted")),
+        ("white", _("not painted")),
+        ("white", _("B(1)'s pixel")),
         ("white", "B(1)"),
     ]
     figure, axes_list = pixel_figure(windows, zoom=18, legend=legend, title_height=44)
-    for axes, (_, extent, _) in zip(axes_list, windows, strict=True):
+    for axes, (_window, extent, _title) in zip(axes_list, windows, strict=True):
         _pixel_grid(axes, extent)
         axes.add_patch(
             Rectangle(
@@ -285,8 +302,10 @@ def end_of_curve_figure(
         Patch(facecolor="white", edgecolor=VERMILLION, linestyle="--", linewidth=1.5),
         Line2D([], [], marker="+", color=VERMILLION, linestyle="", markersize=10, mew=2),
     ]
-    _replace_legend(figure, handles, [label for _, label in legend])
-    caption = f"B(1) = ({end[0]:g}, {end[1]:g}) in pixel {home}; " + "; ".join(verdicts)
+    _replace_legend(figure, handles, [label for _colour, label in legend])
+    caption = _("B(1) = ({x:g}, {y:g}) in pixel {pixel}; {verdicts}").format(
+        x=end[0], y=end[1], pixel=home, verdicts="; ".join(verdicts)
+    )
     return Still.of(figure, caption)
 
 
@@ -323,15 +342,23 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
         overdraw.append(len(pixels) / len(np.unique(pixels, axis=0)))
         window, extent = crop(_painted(pixels, (0.0, 0.45, 0.7)), centre, size)
         windows.append((window, extent, title))
-    figure, axes_list = pixel_figure(windows, zoom=12, legend=[(BLUE, "painted")])
-    for axes, (_, extent, _) in zip(axes_list, windows, strict=True):
+    figure, axes_list = pixel_figure(windows, zoom=12, legend=[(BLUE, _("painted"))])
+    for axes, (_window, extent, _title) in zip(axes_list, windows, strict=True):
         _pixel_grid(axes, extent)
     speed = np.hypot(*de_casteljau(derivative(control), [0.0, 0.5]).T)
-    caption = (
-        f"speed {speed[0]:g} px per unit of t at t = 0, {speed[1]:g} at t = 0.5; "
-        f"whole curve: step 0.001 leaves {gaps[0]} gaps, {overdraw[0]:.2f} points per painted "
-        f"pixel; step 0.0001 {gaps[1]} gaps, {overdraw[1]:.2f}; flatten {gaps[2]} gaps, "
-        f"{overdraw[2]:.2f}"
+    caption = _(
+        "speed {start:g} px per unit of t at t = 0, {middle:g} at t = 0.5; "
+        "whole curve: step 0.001 leaves {gaps0} gaps, {over0:.2f} points per painted "
+        "pixel; step 0.0001 {gaps1} gaps, {over1:.2f}; flatten {gaps2} gaps, {over2:.2f}"
+    ).format(
+        start=speed[0],
+        middle=speed[1],
+        gaps0=gaps[0],
+        over0=overdraw[0],
+        gaps1=gaps[1],
+        over1=overdraw[1],
+        gaps2=gaps[2],
+        over2=overdraw[2],
     )
     return Still.of(figure, caption)
 
@@ -364,11 +391,15 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     shown[yellow > 0] = YELLOW
     window, extent = crop(shown, first + 0.5, size)
     side = size * 16  # the overview is as tall as the zoomed panel
-    colours = [(YELLOW, "both"), ((1, 0, 0), "only red (ring)"), ((0, 1, 0), "only green (cross)")]
+    colours = [
+        (YELLOW, _("both")),
+        ((1, 0, 0), _("only red (ring)")),
+        ((0, 1, 0), _("only green (cross)")),
+    ]
     figure, (zoomed,) = pixel_figure(
-        [(window, extent, f"around pixel {tuple(int(v) for v in first)}")],
+        [(window, extent, _("around pixel {pixel}").format(pixel=tuple(int(v) for v in first)))],
         zoom=16,
-        legend=[*colours, ("white", "not yellow")],
+        legend=[*colours, ("white", _("not yellow"))],
         legend_height=44,
         reserve_left=side + 18,
     )
@@ -404,7 +435,10 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     overview.set_xticks([])
     overview.set_yticks([])
     painted = np.count_nonzero(check.image.sum(axis=2) > 0)
-    overview.set_title(f"{len(odd)} of {painted} pixels not yellow", fontsize=9)
+    overview.set_title(
+        _("{odd} of {painted} pixels not yellow").format(odd=len(odd), painted=painted),
+        fontsize=9,
+    )
     handles = [
         Patch(facecolor=YELLOW, edgecolor="0.5"),
         (
@@ -424,11 +458,16 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
             linestyle="",
         ),
     ]
-    labels = [label for _, label in colours]
-    labels.append("not yellow (whole curve; box: the zoom)")
+    labels = [label for _colour, label in colours]
+    labels.append(_("not yellow (whole curve; box: the zoom)"))
     _replace_legend(figure, handles, labels, ncols=2)
-    caption = (
-        f"{HANDOUT_LOOPS[seed].name} against naive_bezier: {check.fraction:.1%} yellow, "
-        f"{len(check.red_only)} pixels only red, {len(check.green_only)} only green"
+    caption = _(
+        "{loop} against naive_bezier: {yellow:.1%} yellow, "
+        "{red} pixels only red, {green} only green"
+    ).format(
+        loop=HANDOUT_LOOPS[seed].name,
+        yellow=check.fraction,
+        red=len(check.red_only),
+        green=len(check.green_only),
     )
     return Still.of(figure, caption)

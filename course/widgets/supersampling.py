@@ -16,6 +16,7 @@ import numpy as np
 
 from course import limits
 from course._validate import as_int
+from course.i18n import N_, _
 from course.images import photograph, zone_plate, zone_plate_box
 from course.metrics import rmse
 from course.resample import supersample, supersample_without_offset
@@ -23,8 +24,8 @@ from course.widgets.base import SliderApp
 
 __all__ = ["IMAGES", "VERSIONS", "SupersampleApp"]
 
-IMAGES = ("zone plate", "photograph")
-VERSIONS = ("centred", "report's")
+IMAGES = (N_("zone plate"), N_("photograph"))
+VERSIONS = (N_("centred"), N_("report's"))
 _RESAMPLERS = {"centred": supersample, "report's": supersample_without_offset}
 _PHOTO_SIDE = 500
 _PANEL = 320  # pixels on screen for each picture
@@ -59,9 +60,13 @@ class SupersampleApp(SliderApp):
                 f"pixel; got out_size={out_size} for size={size}"
             )
         controls = {
-            "rate": widgets.IntSlider(value=rate, min=1, max=max_rate, description="rate"),
-            "image": widgets.ToggleButtons(options=IMAGES, description="image"),
-            "version": widgets.ToggleButtons(options=VERSIONS, description="sampling"),
+            "rate": widgets.IntSlider(value=rate, min=1, max=max_rate, description=_("rate")),
+            "image": widgets.ToggleButtons(
+                options=[(_(name), name) for name in IMAGES], description=_("image")
+            ),
+            "version": widgets.ToggleButtons(
+                options=[(_(name), name) for name in VERSIONS], description=_("sampling")
+            ),
         }
         super().__init__(controls, shape=(420, 1080))
         self.max_rate = max_rate
@@ -77,8 +82,8 @@ class SupersampleApp(SliderApp):
             "photograph": supersample(photo, (photo_out, photo_out), reference_rate),
         }
         self.reference_names = {
-            "zone plate": "exact box filter",
-            "photograph": f"rate {reference_rate}",
+            "zone plate": _("exact box filter"),
+            "photograph": _("rate {rate}").format(rate=reference_rate),
         }
         self.errors: dict[str, dict[str, np.ndarray]] = {}
 
@@ -104,7 +109,7 @@ class SupersampleApp(SliderApp):
         )
         bar = self.figure.add_axes(box(696, 40, 10, _PANEL))
         self.figure.colorbar(self.difference, cax=bar)
-        bar.set_ylabel("too bright (+), too dark (−)", fontsize=7, labelpad=1)
+        bar.set_ylabel(_("too bright (+), too dark (−)"), fontsize=7, labelpad=1)
         bar.tick_params(labelsize=7)
         rates = np.arange(1, max_rate + 1)
         # Told apart by marker and dash as well as colour.
@@ -116,15 +121,15 @@ class SupersampleApp(SliderApp):
                 styles[version][0],
                 color=styles[version][1],
                 markersize=3,
-                label=version,
+                label=_(version),
             )[0]
             for version in VERSIONS
         }
         (self.current,) = self.curve_axes.plot(
             [], [], "o", color="crimson", markersize=8, fillstyle="none"
         )
-        self.curve_axes.set_xlabel("rate (samples per pixel along each axis)", fontsize=8)
-        self.curve_axes.set_ylabel("RMS error", fontsize=8)
+        self.curve_axes.set_xlabel(_("rate (samples per pixel along each axis)"), fontsize=8)
+        self.curve_axes.set_ylabel(_("RMS error"), fontsize=8)
         self.curve_axes.set_xticks(rates)
         self.curve_axes.tick_params(labelsize=7)
         self.curve_axes.grid(True, which="both", color="0.9")
@@ -164,9 +169,17 @@ class SupersampleApp(SliderApp):
         self.difference.set_data(difference)
         self.difference.set_extent(extent)
         error = rmse(result, reference)
-        self.result_axes.set_title(f"{width} x {height} at rate {rate} ({version})", fontsize=9)
+        self.result_axes.set_title(
+            _("{width} x {height} at rate {rate} ({version})").format(
+                width=width, height=height, rate=rate, version=_(version)
+            ),
+            fontsize=9,
+        )
         self.difference_axes.set_title(
-            f"minus the {self.reference_names[image]}: RMS {error:.4f}", fontsize=9
+            _("minus the {reference}: RMS {error:.4f}").format(
+                reference=self.reference_names[image], error=error
+            ),
+            fontsize=9,
         )
         curves = self.error_curves(image)
         for name, curve in self.curves.items():
@@ -175,5 +188,11 @@ class SupersampleApp(SliderApp):
         high = max(values.max() for values in curves.values())
         self.curve_axes.set_ylim(low / 1.5, high * 1.5)
         self.current.set_data([rate], [curves[version][rate - 1]])
-        self.curve_axes.set_title(f"{image}: error at each rate", fontsize=9)
-        self.heading.set_text(f"{rate} x {rate} = {rate * rate} bilinear samples per output pixel")
+        self.curve_axes.set_title(
+            _("{image}: error at each rate").format(image=_(image)), fontsize=9
+        )
+        self.heading.set_text(
+            _("{rate} x {rate} = {samples} bilinear samples per output pixel").format(
+                rate=rate, samples=rate * rate
+            )
+        )

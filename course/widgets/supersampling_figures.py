@@ -15,6 +15,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from course._validate import as_int, as_point
+from course.i18n import _
 from course.images import photograph, zone_plate, zone_plate_box
 from course.metrics import rmse
 from course.resample import bilinear, supersample, supersample_without_offset
@@ -69,7 +70,7 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
         label=f"cos(2π {alias:g} x): the same samples",
     )
     signal.plot(samples_x, samples, "o", color="0.1", ms=6, label=f"{rate:g} sample per unit")
-    signal.set_xlabel("x (samples)", fontsize=8)
+    signal.set_xlabel(_("x (samples)"), fontsize=8)
     signal.legend(fontsize=7, loc="upper right", ncols=3)
     signal.set_ylim(-1.25, 1.6)
     nyquist = rate / 2
@@ -78,8 +79,8 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
     spectrum.annotate(
         "Nyquist: rate / 2", (nyquist, 1.05), xytext=(4, 0), textcoords="offset points", fontsize=8
     )
-    spectrum.vlines(frequency, 0, 1, color=BLUE, lw=3, label="the signal")
-    spectrum.vlines(alias, 0, 1, color=VERMILLION, lw=3, label="where the samples put it")
+    spectrum.vlines(frequency, 0, 1, color=BLUE, lw=3, label=_("the signal"))
+    spectrum.vlines(alias, 0, 1, color=VERMILLION, lw=3, label=_("where the samples put it"))
     spectrum.annotate(
         "",
         xy=(alias, 0.6),
@@ -89,7 +90,7 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
     spectrum.set_xlim(0, max(1.5 * rate, frequency + 0.2))
     spectrum.set_ylim(0, 1.3)
     spectrum.set_yticks([])
-    spectrum.set_xlabel("frequency (cycles per unit)", fontsize=8)
+    spectrum.set_xlabel(_("frequency (cycles per unit)"), fontsize=8)
     spectrum.legend(fontsize=7, loc="upper right")
     figure.tight_layout()
     caption = (
@@ -112,18 +113,23 @@ def box_response_figure(width: float = 1.0) -> Still:
     figure = Figure(figsize=(6.4, 3.0), dpi=100)
     axes = figure.add_subplot()
     axes.axhline(0, color="0.6", lw=0.8)
-    axes.plot(frequencies, response, color=BLUE, lw=1.5, label="box of one pixel: sinc(f)")
+    axes.plot(frequencies, response, color=BLUE, lw=1.5, label=_("box of one pixel: sinc(f)"))
     nyquist = 0.5 / width
-    axes.axvline(nyquist, color="0.3", lw=1, ls=":", label="Nyquist frequency of the pixel grid")
+    axes.axvline(nyquist, color="0.3", lw=1, ls=":", label=_("Nyquist frequency of the pixel grid"))
     axes.plot([nyquist], [box_response(nyquist, width)], "o", color=VERMILLION)
-    axes.set_xlabel("frequency (cycles per pixel)", fontsize=8)
-    axes.set_ylabel("kept", fontsize=8)
+    axes.set_xlabel(_("frequency (cycles per pixel)"), fontsize=8)
+    axes.set_ylabel(_("kept"), fontsize=8)
     axes.legend(fontsize=7)
     figure.tight_layout()
-    zeros = ", ".join(f"{k / width:g}" for k in (1, 2)) + f" and {3 / width:g}"
-    caption = (
-        f"at the Nyquist frequency {nyquist:g} the box keeps {box_response(nyquist, width):.3f}; "
-        f"zero at {zeros} cycles per pixel"
+    caption = _(
+        "at the Nyquist frequency {nyquist:g} the box keeps {kept:.3f}; "
+        "zero at {first:g}, {second:g} and {third:g} cycles per pixel"
+    ).format(
+        nyquist=nyquist,
+        kept=box_response(nyquist, width),
+        first=1 / width,
+        second=2 / width,
+        third=3 / width,
     )
     return Still.of(figure, caption)
 
@@ -251,8 +257,8 @@ def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13)), floor_rate:
     ):
         axes.semilogy(rates, values, style, color=colour, ms=4, label=name)
     axes.set_xticks(list(rates))
-    axes.set_xlabel("rate (samples per output pixel along each axis)", fontsize=8)
-    axes.set_ylabel("RMS error", fontsize=8)
+    axes.set_xlabel(_("rate (samples per output pixel along each axis)"), fontsize=8)
+    axes.set_ylabel(_("RMS error"), fontsize=8)
     axes.grid(True, which="both", color="0.92")
     axes.legend(fontsize=8)
     figure.tight_layout()
@@ -285,9 +291,9 @@ def shift_figure(rate: int = 4, corner: int = 40, zoom: int = 6) -> Still:
     extent = (0, corner, corner, 0)
     figure, axes_list = pixel_figure(
         [
-            (truth, extent, "exact box mean"),
-            (np.zeros_like(truth), extent, "centred minus exact"),
-            (np.zeros_like(truth), extent, "the report's minus exact"),
+            (truth, extent, _("exact box mean")),
+            (np.zeros_like(truth), extent, _("centred minus exact")),
+            (np.zeros_like(truth), extent, _("the report's minus exact")),
         ],
         zoom=zoom,
         reserve_right=70,
@@ -306,12 +312,12 @@ def shift_figure(rate: int = 4, corner: int = 40, zoom: int = 6) -> Still:
     last = axes_list[-1].get_window_extent()
     bar = pixel_axes(figure, round(last.x1) + 8, round(last.y0), 12, round(last.height))
     figure.colorbar(shown, cax=bar)
-    bar.set_ylabel("too bright (+) / too dark (−)", fontsize=7)
+    bar.set_ylabel(_("too bright (+) / too dark (−)"), fontsize=7)
     bar.tick_params(labelsize=7)
-    caption = (
-        f"rate {rate}, top-left {corner} x {corner}: RMS centred {rmse(centred, truth):.4f}, "
-        f"the report's {rmse(shifted, truth):.4f}"
-    )
+    caption = _(
+        "rate {rate}, top-left {corner} x {corner}: RMS centred {centred:.4f}, "
+        "the report's {shifted:.4f}"
+    ).format(rate=rate, corner=corner, centred=rmse(centred, truth), shifted=rmse(shifted, truth))
     return Still.of(figure, caption)
 
 

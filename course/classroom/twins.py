@@ -1,0 +1,249 @@
+"""The Chinese lessons: ``python -m course twins`` writes each twin from its catalog.
+
+The translation of ``notebooks/NN_topic.ipynb`` is the gettext catalog
+``notebooks/zh-CN/NN_topic.po``: one message per markdown cell, ``msgctxt`` the cell's id,
+``msgid`` its source, ``msgstr`` the Chinese. The twin ``notebooks/zh-CN/NN_topic.ipynb`` is
+the English lesson with each markdown cell replaced by its translation, the code cells copied,
+and :data:`course.i18n.LANGUAGE_LINES` put before the first code cell. Its outputs come from
+executing it (``make notebooks``); the builder writes it with the English outputs cleared.
+
+``--update-po`` merges the English markdown into the catalogs: a new or changed cell becomes
+an untranslated message, a message no cell has any more becomes obsolete (``#~``). ``--check``
+writes nothing and fails when a message is untranslated or a translation lost the LaTeX, code
+spans, links' targets or HTML tags of its English.
+
+Needs Babel (a dependency of the course) and the standard library only.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from course.i18n import LANGUAGE_LINES
+
+#: The twins' folder, inside the English lessons' folder.
+TWIN_FOLDER = "zh-CN"
+LOCALE = "zh_CN"
+
+# What a translation must keep exactly, in order: display and inline LaTeX, fenced code,
+# code spans, link and image targets, HTML tags.
+_KEPT = re.compile(
+    r"\$\$.+?\$\$|(?<![\\$])\$[^$\n]+?\$|```.*?```|`[^`\n]+`|\]\((?!#)[^)\s]*\)|</?[a-zA-Z][^>]*>",
+    re.DOTALL,
+)
+# str.format fields ({x}, {x:.2f}) and printf conversions (%d, %(x)s); not {{ or }}.
+_PLACEHOLDER = re.compile(
+    r"(?<!\{)\{[A-Za-z_0-9.\[\]]*(?:![rsa])?(?::[^{}]*)?\}(?!\})"
+    r"|%(?:\([^)]*\))?[-#0+]*\d*(?:\.\d+)?[diouxXeEfFgGcrs]"
+)
+
+
+def kept_spans(text: str) -> list[str]:
+    """The LaTeX, code spans, link targets and HTML tags of a markdown text, in order.
+
+    Examples
+    --------
+    >>> kept_spans("The point $B(t)$ of `de_casteljau`, see [here](01_x.ipynb).")
+    ['$B(t)$', '`de_casteljau`', '](01_x.ipynb)']
+    """
+    return _KEPT.findall(text)
+
+
+def placeholders(text: str) -> list[str]:
+    """The format fields and printf conversions of a message, sorted.
+
+    Examples
+    --------
+    >>> placeholders("{count} pixels at %d dpi, {rate:.2f}")
+    ['%d', '{count}', '{rate:.2f}']
+    """
+    return sorted(_PLACEHOLDER.findall(text))
+
+
+def english_lessons(notebooks: Path) -> list[Path]:
+    """The English lessons ``NN_topic.ipynb`` of ``notebooks``, in order."""
+    return sorted(notebooks.glob("[0-9][0-9]_*.ipynb"))
+
+
+def read_notebook(path: Path) -> dict:
+    return json.loads(path.read_text(encoding="utf-8"))
+
+
+def write_notebook(path: Path, notebook: dict) -> None:
+    # nbformat's own layout, so that nbstripout and git see no difference in form.
+    text = json.dumps(notebook, indent=1, sort_keys=True, ensure_ascii=False) + "\n"
+    path.write_text(text, encoding="utf-8")
+
+
+def cell_source(cell: dict) -> str:
+    source = cell["source"]
+    return source if isinstance(source, str) else "".join(source)
+
+
+def markdown_messages(notebook: dict) -> list[tuple[str, str]]:
+    """``(cell id, source)`` of every markdown cell with text."""
+    return [
+        (cell["id"], cell_source(cell))
+        for cell in notebook["cells"]
+        if cell["cell_type"] == "markdown" and cell_source(cell).strip()
+    ]
+
+
+def read_catalog(path: Path):
+    from babel.messages.pofile import read_po
+
+    with path.open("rb") as po_file:
+        return read_po(po_file, locale=LOCALE)
+
+
+def write_catalog(path: Path, catalog) -> None:
+    from babel.messages.pofile import write_po
+
+    with path.open("wb") as po_file:
+        write_po(po_file, catalog, width=0, include_previous=True)
+
+
+def new_catalog(domain: str):
+    from babel.messages.catalog import Catalog
+
+    return Catalog(locale=LOCALE, project="course", domain=domain)
+
+
+@dataclass
+class TwinReport:
+    """What the builder found for one lesson."""
+
+    lesson: str
+    cells: int = 0
+    untranslated: list[str] = field(default_factory=list)  # cell ids
+    problems: list[str] = field(default_factory=list)  # lost LaTeX, code, placeholders
+
+    def line(self) -> str:
+        done = self.cells - len(self.untranslated)
+        text = f"{self.lesson}: {done}/{self.cells} markdown cells translated"
+        if self.untranslated:
+            shown = ", ".join(self.untranslated[:8])
+            more = f" and {len(self.untranslated) - 8} more" if len(self.untranslated) > 8 else ""
+            text += f"; untranslated: {shown}{more}"
+        return text
+
+
+def translation(catalog, cell_id: str, source: str) -> str | None:
+    """The cell's Chinese, or None when the catalog has none for this exact source."""
+    if catalog is None:
+        return None
+    message = catalog.get(source, context=cell_id)
+    if message is None or message.fuzzy or not message.string:
+        return None
+    return message.string
+
+
+def translation_problems(cell_id: str, english: str, chinese: str) -> list[str]:
+    """How ``chinese`` fails to keep ``english``'s LaTeX, code spans, links and HTML tags."""
+    problems = []
+    # A sentence may put the formulas in another order: the same spans, counted.
+    if sorted(kept_spans(chinese)) != sorted(kept_spans(english)):
+        lost = sorted(set(kept_spans(english)) - set(kept_spans(chinese)))
+        added = sorted(set(kept_spans(chinese)) - set(kept_spans(english)))
+        problems.append(f"cell {cell_id}: LaTeX/code/links differ: lost {lost}, added {added}")
+    return problems
+
+
+def build_twin(english_path: Path, catalog) -> tuple[dict, TwinReport]:
+    """The twin of the English lesson at ``english_path``, outputs cleared, and its report."""
+    notebook = copy.deepcopy(read_notebook(english_path))
+    report = TwinReport(english_path.stem)
+    first_code = True
+    for cell in notebook["cells"]:
+        source = cell_source(cell)
+        if cell["cell_type"] == "code":
+            if first_code:
+                source = LANGUAGE_LINES + source
+                first_code = False
+            cell["source"] = source
+            cell["outputs"] = []
+            cell["execution_count"] = None
+        elif cell["cell_type"] == "markdown" and source.strip():
+            report.cells += 1
+            chinese = translation(catalog, cell["id"], source)
+            if chinese is None:
+                report.untranslated.append(cell["id"])
+            else:
+                report.problems += translation_problems(cell["id"], source, chinese)
+                cell["source"] = chinese
+    return notebook, report
+
+
+def english_code(twin: dict) -> list[str]:
+    """The twin's code cells as the English lesson has them: the language lines removed.
+
+    Raises
+    ------
+    ValueError
+        If the twin's first code cell does not start with the language lines.
+    """
+    sources = [cell_source(cell) for cell in twin["cells"] if cell["cell_type"] == "code"]
+    if not sources or not sources[0].startswith(LANGUAGE_LINES):
+        raise ValueError("twin: the first code cell must start with the language lines")
+    sources[0] = sources[0][len(LANGUAGE_LINES) :]
+    return sources
+
+
+def update_catalog(english_path: Path, po_path: Path) -> tuple[int, int]:
+    """Merge the English markdown into the catalog at ``po_path``; (new, obsolete) counts.
+
+    A cell whose source changed gets a new untranslated message (its old translation is kept
+    as obsolete, for the translator to reuse).
+    """
+    catalog = read_catalog(po_path) if po_path.exists() else new_catalog(english_path.stem)
+    wanted = markdown_messages(read_notebook(english_path))
+    wanted_keys = {(cell_id, source) for cell_id, source in wanted}
+    new = 0
+    for cell_id, source in wanted:
+        if catalog.get(source, context=cell_id) is None:
+            catalog.add(source, "", context=cell_id)
+            new += 1
+    obsolete = 0
+    for message in list(catalog):
+        if not message.id or (message.context, message.id) in wanted_keys:
+            continue
+        catalog.delete(message.id, context=message.context)
+        catalog.obsolete[(message.id, message.context)] = message
+        obsolete += 1
+    po_path.parent.mkdir(parents=True, exist_ok=True)
+    write_catalog(po_path, catalog)
+    return new, obsolete
+
+
+def write_twins(notebooks: Path, update_po: bool = False, check: bool = False) -> list[TwinReport]:
+    """Write (or with ``check``, only check) every lesson's twin; a report per lesson."""
+    folder = notebooks / TWIN_FOLDER
+    reports = []
+    for english_path in english_lessons(notebooks):
+        po_path = folder / f"{english_path.stem}.po"
+        if update_po and not check:
+            update_catalog(english_path, po_path)
+        catalog = read_catalog(po_path) if po_path.exists() else None
+        twin, report = build_twin(english_path, catalog)
+        reports.append(report)
+        if not check and catalog is not None:
+            write_notebook(folder / english_path.name, twin)
+    return reports
+
+
+def run(notebooks: Path, update_po: bool, check: bool) -> int:
+    """The ``twins`` command: print a line per lesson and the problems; 1 if any remain."""
+    reports = write_twins(notebooks, update_po, check)
+    failed = False
+    for report in reports:
+        print(report.line())
+        for problem in report.problems:
+            print(f"  {problem}")
+        failed |= bool(report.untranslated or report.problems)
+    total = sum(len(report.untranslated) for report in reports)
+    print(f"untranslated markdown cells: {total}")
+    return 1 if (check and failed) else 0

@@ -1,0 +1,146 @@
+"""The Chinese lessons: built from their catalogs, the same code as the English ones."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from babel.messages.pofile import read_po
+
+from course.classroom import twins
+from course.classroom.cli import main
+from course.i18n import LANGUAGE_LINES
+
+NOTEBOOKS = Path(__file__).resolve().parents[1] / "notebooks"
+EXISTING_TWINS = sorted((NOTEBOOKS / twins.TWIN_FOLDER).glob("[0-9][0-9]_*.ipynb"))
+
+
+def lesson(folder: Path, name: str = "01_x") -> Path:
+    cells = [
+        {
+            "cell_type": "markdown",
+            "id": "a",
+            "metadata": {},
+            "source": "# Lesson\n\nThe point $B(t)$ of `f`.",
+        },
+        {
+            "cell_type": "code",
+            "id": "b",
+            "metadata": {},
+            "source": "import math",
+            "outputs": [],
+            "execution_count": 1,
+        },
+        {
+            "cell_type": "markdown",
+            "id": "c",
+            "metadata": {},
+            "source": "See [the map](00_index.ipynb).",
+        },
+        {
+            "cell_type": "code",
+            "id": "d",
+            "metadata": {},
+            "source": "math.pi",
+            "outputs": [
+                {
+                    "output_type": "execute_result",
+                    "data": {"text/plain": "3.14"},
+                    "metadata": {},
+                    "execution_count": 2,
+                }
+            ],
+            "execution_count": 2,
+        },
+    ]
+    notebook = {"cells": cells, "metadata": {}, "nbformat": 4, "nbformat_minor": 5}
+    path = folder / f"{name}.ipynb"
+    path.write_text(json.dumps(notebook), encoding="utf-8")
+    return path
+
+
+def translate(po_path: Path, translations: dict[str, str]) -> None:
+    catalog = twins.read_catalog(po_path)
+    for message in catalog:
+        if message.id:
+            message.string = translations.get(message.context, "")
+    twins.write_catalog(po_path, catalog)
+
+
+def test_update_po_makes_one_untranslated_message_per_markdown_cell(tmp_path):
+    english = lesson(tmp_path)
+    assert twins.update_catalog(english, tmp_path / "zh-CN" / "01_x.po") == (2, 0)
+    with (tmp_path / "zh-CN" / "01_x.po").open("rb") as file:
+        catalog = read_po(file)
+    assert [(m.context, m.id, m.string) for m in catalog if m.id] == [
+        ("a", "# Lesson\n\nThe point $B(t)$ of `f`.", ""),
+        ("c", "See [the map](00_index.ipynb).", ""),
+    ]
+
+
+def test_a_twin_has_the_translations_and_the_english_code(tmp_path, capsys):
+    english = lesson(tmp_path)
+    po_path = tmp_path / "zh-CN" / "01_x.po"
+    twins.update_catalog(english, po_path)
+    translate(po_path, {"a": "# 课\n\n`f` 的点 $B(t)$。", "c": "见[课程地图](00_index.ipynb)。"})
+    assert main(["twins", "--notebooks", str(tmp_path), "--check"]) == 0
+    assert "01_x: 2/2 markdown cells translated" in capsys.readouterr().out
+    assert main(["twins", "--notebooks", str(tmp_path)]) == 0
+    twin = json.loads((tmp_path / "zh-CN" / "01_x.ipynb").read_text(encoding="utf-8"))
+    assert [c["source"] for c in twin["cells"] if c["cell_type"] == "markdown"] == [
+        "# 课\n\n`f` 的点 $B(t)$。",
+        "见[课程地图](00_index.ipynb)。",
+    ]
+    assert twins.english_code(twin) == ["import math", "math.pi"]
+    assert twin["cells"][1]["source"] == LANGUAGE_LINES + "import math"
+    assert all(c["outputs"] == [] for c in twin["cells"] if c["cell_type"] == "code")
+
+
+def test_a_changed_english_cell_is_untranslated_until_its_message_is(tmp_path, capsys):
+    english = lesson(tmp_path)
+    po_path = tmp_path / "zh-CN" / "01_x.po"
+    twins.update_catalog(english, po_path)
+    translate(po_path, {"a": "# 课\n\n`f` 的点 $B(t)$。", "c": "见[课程地图](00_index.ipynb)。"})
+    notebook = json.loads(english.read_text(encoding="utf-8"))
+    notebook["cells"][2]["source"] = "See [the course map](00_index.ipynb)."
+    english.write_text(json.dumps(notebook), encoding="utf-8")
+    assert main(["twins", "--notebooks", str(tmp_path), "--check"]) == 1
+    assert "untranslated: c" in capsys.readouterr().out
+    assert twins.update_catalog(english, po_path) == (1, 1)
+    catalog = twins.read_catalog(po_path)
+    assert catalog.get("See [the course map](00_index.ipynb).", context="c").string == ""
+    assert ("See [the map](00_index.ipynb).", "c") in catalog.obsolete
+
+
+def test_a_translation_that_loses_a_formula_or_a_link_target_is_reported(tmp_path, capsys):
+    english = lesson(tmp_path)
+    po_path = tmp_path / "zh-CN" / "01_x.po"
+    twins.update_catalog(english, po_path)
+    translate(po_path, {"a": "# 课\n\n`f` 的点 B(t)。", "c": "见[课程地图](00_index_zh.ipynb)。"})
+    assert main(["twins", "--notebooks", str(tmp_path), "--check"]) == 1
+    out = capsys.readouterr().out
+    assert "cell a: LaTeX/code/links differ: lost ['$B(t)$']" in out
+    assert "cell c: LaTeX/code/links differ: lost ['](00_index.ipynb)']" in out
+
+
+def test_a_catalog_written_by_the_builder_reads_back_exactly(tmp_path):
+    source = "# Title\n\n" + "a long line of text " * 20 + "\n\n* item `x`\n  continued\n"
+    catalog = twins.new_catalog("01_x")
+    catalog.add(source, "标题 " * 40 + "\n", context="id-1")
+    twins.write_catalog(tmp_path / "x.po", catalog)
+    back = twins.read_catalog(tmp_path / "x.po")
+    assert back.get(source, context="id-1").string == "标题 " * 40 + "\n"
+
+
+@pytest.mark.parametrize("twin_path", EXISTING_TWINS, ids=lambda p: p.stem)
+def test_a_committed_twin_has_the_english_code_and_no_untranslated_cell(twin_path):
+    twin = json.loads(twin_path.read_text(encoding="utf-8"))
+    english = json.loads((NOTEBOOKS / twin_path.name).read_text(encoding="utf-8"))
+    english_code = [twins.cell_source(c) for c in english["cells"] if c["cell_type"] == "code"]
+    assert twins.english_code(twin) == english_code
+    _, report = twins.build_twin(
+        NOTEBOOKS / twin_path.name, twins.read_catalog(twin_path.with_suffix(".po"))
+    )
+    assert report.untranslated == []
+    assert report.problems == []

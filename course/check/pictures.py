@@ -181,21 +181,28 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     """
     want = np.asarray(expected, dtype=float)
     have = np.asarray(given, dtype=float)
+    if want.ndim not in (2, 3) or want.size == 0 or max(want.shape[:2]) > limits.MAX_SIDE:
+        raise ValueError(
+            f"expected must be a non-empty image (H, W) or (H, W, 3); got {want.shape}"
+        )
     if have.shape != want.shape:
         have = np.zeros_like(want)  # the report names the shapes; draw what can be drawn
     height, width = want.shape[:2]
-    zoom = max(1, min(24, 192 // max(height, width)))
+    zoom = max(1, min(24, 192 // max(height, width, 1)))
     side_w, side_h = width * zoom, height * zoom
-    margin, bar, gap, top = 12, 14, 16, 40
-    columns = margin + 3 * side_w + 2 * gap + 8 + bar + 36
-    rows = top + side_h + margin
+    # Each panel sits in a slot wide enough for its title, so that titles never run together.
+    slot = max(side_w, 84)
+    margin, bar, gap, top = 12, 14, 24, 40
+    columns = margin + 3 * slot + 2 * gap + 8 + bar + 44
+    rows = top + side_h + margin + 14
+    bottom = margin + 14  # room for the difference panel's pixel numbers
     figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
     difference = have - want
     if difference.ndim == 3:
         difference = difference.mean(axis=2)
-    limit = max(float(np.abs(difference).max()), 1e-12)
+    limit = max(float(np.abs(np.nan_to_num(difference)).max(initial=0.0)), 1e-12)
     # Values past 1 (a gradient magnitude) get a gray scale that reaches them, named in the title.
-    top = max(1.0, float(np.max(want, initial=0.0)))
+    top = max(1.0, float(np.max(np.nan_to_num(want), initial=0.0)))
     scale = "" if top == 1.0 else f", 0 to {top:.3g}"
     panels = (
         (want, f"expected{scale}", {"cmap": "gray", "vmin": 0, "vmax": top}),
@@ -204,8 +211,8 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     )
     shown = None
     for index, (picture, name, style) in enumerate(panels):
-        left = margin + index * (side_w + gap)
-        axes = figure.add_axes((left / columns, margin / rows, side_w / columns, side_h / rows))
+        left = margin + index * (slot + gap) + (slot - side_w) / 2
+        axes = figure.add_axes((left / columns, bottom / rows, side_w / columns, side_h / rows))
         if picture.ndim == 3:
             style = {}
             picture = np.clip(picture, 0, 1)
@@ -213,8 +220,13 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
         axes.set_xticks([])
         axes.set_yticks([])
         axes.set_title(name, fontsize=8)
-    bar_left = margin + 3 * side_w + 2 * gap + 8
-    colour_bar = figure.add_axes((bar_left / columns, margin / rows, bar / columns, side_h / rows))
+    # Pixel numbers on the difference: x below it, y on its left, a few of each.
+    step_x, step_y = max(1, -(-width // 4)), max(1, -(-height // 4))
+    axes.set_xticks(range(0, width, step_x))
+    axes.set_yticks(range(0, height, step_y))
+    axes.tick_params(labelsize=6, length=2, pad=1)
+    bar_left = margin + 3 * slot + 2 * gap + 8
+    colour_bar = figure.add_axes((bar_left / columns, bottom / rows, bar / columns, side_h / rows))
     figure.colorbar(shown, cax=colour_bar)
     colour_bar.tick_params(labelsize=7)
     if title:

@@ -190,14 +190,7 @@ def test_memory_that_keeps_growing_is_stopped_or_the_loop_is(student):
     assert not tracemalloc.is_tracing()
 
 
-def test_the_budget_leaves_a_running_tracemalloc_running_and_composes_with_call_budget():
-    tracemalloc.start()
-    try:
-        assert bounded(lambda x: 2 * x)
-        assert tracemalloc.is_tracing()
-    finally:
-        tracemalloc.stop()
-
+def test_the_budget_composes_with_call_budget():
     def watch():
         return call_budget(max_calls=50)
 

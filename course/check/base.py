@@ -336,8 +336,7 @@ def pixel_rows(pixels: Any, name: str = "") -> np.ndarray:
     if not whole.all():
         index = int(np.argmin(whole))
         raise AnswerError(
-            f"{name}a pixel is two whole numbers (x, y); pixel [{index}] is "
-            f"{_pair(values[index])}"
+            f"{name}a pixel is two whole numbers (x, y); pixel [{index}] is {_pair(values[index])}"
         )
     return values.astype(np.int64)
 
@@ -753,7 +752,9 @@ def run_cases(
         if answer is None and returned is None:
             if is_stub(student):
                 return report.fail(
-                    count, ["not written yet: your function returns nothing", report.start()], hinted=False
+                    count,
+                    ["not written yet: your function returns nothing", report.start()],
+                    hinted=False,
                 )
             return report.fail(
                 count,

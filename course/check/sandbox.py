@@ -72,38 +72,56 @@ class _BudgetExceeded(BaseException):
     """Raised inside the student's code; a BaseException, so ``except Exception`` lets it by."""
 
 
+#: The one watchdog allowed to raise: a watchdog left over from an earlier case never does.
+_ACTIVE: list[Any] = [None]
+
+
 class _Watchdog(threading.Thread):
+    """Raises in the target thread past a budget. It shares no lock with it: an exception
+    delivered inside a ``with lock`` could leave the lock held, so the two talk through
+    plain attributes, each written in one step."""
+
     def __init__(self, target: int, seconds: float, memory: int, baseline: int) -> None:
         super().__init__(name="course-check-watchdog", daemon=True)
         self.target, self.seconds, self.memory, self.baseline = target, seconds, memory, baseline
-        self.lock = threading.Lock()
-        self.finished = threading.Event()
+        self.done = False  # set by the target thread: raise no more
+        self.exited = False  # set here: no raise will follow
         self.kind: str | None = None
 
     def run(self) -> None:
+        try:
+            self._watch()
+        finally:
+            self.exited = True
+
+    def _watch(self) -> None:
         start = time.monotonic()
-        while not self.finished.wait(_POLL):
+        next_raise = 0.0
+        while not self.done and _ACTIVE[0] is self:
+            time.sleep(_POLL)
+            now = time.monotonic()
             kind = None
-            if time.monotonic() - start > self.seconds:
+            if now - start > self.seconds:
                 kind = "time"
             elif tracemalloc.is_tracing():
                 current, _ = tracemalloc.get_traced_memory()
                 if current - self.baseline > self.memory:
                     kind = "memory"
-            if kind is None:
+            if kind is None or now < next_raise or self.done or _ACTIVE[0] is not self:
                 continue
-            with self.lock:
-                if self.finished.is_set():
-                    return
-                self.kind = self.kind or kind
-                _raise_in(self.target, _BudgetExceeded)
-            self.finished.wait(_REPEAT)
+            self.kind = self.kind or kind
+            _raise_in(self.target, _BudgetExceeded)
+            next_raise = now + _REPEAT
 
     def stop(self) -> None:
-        with self.lock:
-            self.finished.set()
-            if self.kind is not None:
-                _raise_in(self.target, None)  # cancel a raise not yet delivered
+        self.done = True
+        if _ACTIVE[0] is self:
+            _ACTIVE[0] = None
+        deadline = time.monotonic() + 1.0
+        while not self.exited and time.monotonic() < deadline:
+            time.sleep(_POLL / 10)
+        if self.kind is not None:
+            _raise_in(self.target, None)  # cancel a raise not yet delivered
 
 
 def _raise_in(thread_id: int, exception: type[BaseException] | None) -> None:
@@ -150,6 +168,7 @@ def run_bounded(
         tracemalloc.start()
     watchdog = _Watchdog(threading.get_ident(), seconds, memory, tracemalloc.get_traced_memory()[0])
     profile = sys.getprofile()
+    _ACTIVE[0] = watchdog
     try:
         try:
             watchdog.start()
@@ -169,12 +188,13 @@ def run_bounded(
 
 def _stop(watchdog: _Watchdog) -> None:
     """Stop the watchdog, even if its last raise arrives while this runs."""
-    while True:
+    for _ in range(100):
         try:
             watchdog.stop()
             return
         except _BudgetExceeded:
             continue
+    watchdog.stop()
 
 
 def _restore(profile: Any, was_tracing: bool, watchdog: _Watchdog) -> None:

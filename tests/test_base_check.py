@@ -166,7 +166,7 @@ def catches_exceptions(x):
         try:
             while True:
                 pass
-        except Exception:  # noqa: S110 - a student's broad except lets the budget by
+        except Exception:
             pass
 
 

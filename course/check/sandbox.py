@@ -121,7 +121,28 @@ class _Watchdog(threading.Thread):
         while not self.exited and time.monotonic() < deadline:
             time.sleep(_POLL / 10)
         if self.kind is not None:
-            _raise_in(self.target, None)  # cancel a raise not yet delivered
+            _drain(self.target)
+
+
+class _Drained(BaseException):
+    """Replaces a raise not yet delivered, and is caught at once by :func:`_drain`."""
+
+
+def _drain(thread_id: int) -> None:
+    """Take delivery here of any raise still pending, so none reaches the checker's code.
+
+    Cancelling a pending raise (``PyThreadState_SetAsyncExc`` with NULL) leaves
+    CPython's "asynchronous exception" flag set with nothing to deliver: a
+    profile hook (``call_budget``) then spins forever at the next function
+    entry. So the pending raise is replaced by one that is delivered, which
+    clears the flag, and caught here, in a loop that gives it a place to land.
+    """
+    try:
+        _raise_in(thread_id, _Drained)
+        for _ in range(10**8):
+            pass
+    except _Drained:
+        return
 
 
 def _raise_in(thread_id: int, exception: type[BaseException] | None) -> None:

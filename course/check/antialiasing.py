@@ -301,7 +301,7 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
     Examples
     --------
     >>> bilinear_splat(lambda x, y: ([(int(x), int(y))], [1.0])).mistake
-    'the nearest pixel only'
+    'the corners are the point itself'
     """
     return run_cases(
         "bilinear_splat",

@@ -164,7 +164,7 @@ EDGE_MISTAKES = (
     Mistake(
         "clipped to 1",
         "your magnitude stops at 1, as writing it into an 8-bit image would: Sobel's runs up "
-        "to 4 sqrt(2). Return sqrt(Gx^2 + Gy^2) as it is.",
+        "to sqrt(20), about 4.47 (Gx = 4 with Gy = 2). Return sqrt(Gx^2 + Gy^2) as it is.",
         lambda image: np.clip(sobel(image, border="replicate"), 0.0, 1.0),
     ),
     Mistake(

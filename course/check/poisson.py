@@ -292,18 +292,21 @@ SWEEP_MISTAKES = (
         lambda g, tolerance: (np.asarray(g, dtype=float), 0),
         matches=_fixed_count,
     ),
-    Mistake(
-        "a stop on the change between sweeps",
-        "you stopped when one sweep changed g by less than the tolerance: that is a quarter "
-        "of the residual, so your loop stops late. Test the residual, max |up + down + left "
-        "+ right - 4 g| over the inside, before each sweep.",
-        _until_change,
-    ),
+    # Before the stop on the change: on an array already harmonic both give one sweep, and
+    # only a loop that sweeps before it tests fails nothing else.
     Mistake(
         "one sweep late",
         "you sweep before you test: the loop must stop as soon as the residual is below the "
         "tolerance, so an array already within it gets no sweep at all.",
         lambda g, tolerance: _jacobi_until(g, tolerance, late=1),
+    ),
+    Mistake(
+        "a stop on the change between sweeps",
+        "you stopped when one sweep changed g by less than the tolerance: that change is a "
+        "quarter of the residual, so your loop stops while the residual is still up to four "
+        "times the tolerance. Test the residual, max |up + down + left + right - 4 g| over "
+        "the inside, before each sweep.",
+        _until_change,
     ),
 )
 

@@ -93,8 +93,8 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> image_supersampling(supersample_without_offset).mistake
-    "the report's two shifts"
+    >>> image_supersampling(lambda image, out_shape, rate: image).passed
+    False
     """
     mistakes = [
         Mistake(

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
+from course.check import base
 from course.check import de_casteljau as check
 
 
@@ -42,7 +43,9 @@ def test_correct_solutions_pass_in_one_line_whatever_they_name_their_arguments()
     result = check.recursive_bezier(recursive_solution)
     assert result and str(result) == "PASS recursive_bezier: all 45 cases pass"
     assert check.recursive_bezier(lambda p, t: tuple(recursive_solution(p, t)))
-    assert result.picture is None and result.mistake is None
+    assert result.mistake is None and result.picture.startswith(b"\x89PNG")
+    # the pass picture: the student's points on seed 000's curve, 3 inches square at 100 dpi
+    assert picture_size(result) == (300, 300)
 
 
 @pytest.mark.parametrize(
@@ -53,14 +56,20 @@ def test_correct_solutions_pass_in_one_line_whatever_they_name_their_arguments()
         (swapped, "x and y swapped", "your point is (y, x)"),
     ],
 )
-def test_each_known_mistake_of_recursive_bezier_is_named_with_its_picture(solution, mistake, words):
+def test_each_known_mistake_of_recursive_bezier_is_named_with_its_picture(
+    solution, mistake, words, monkeypatch
+):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
     result = check.recursive_bezier(solution)
     assert not result and result.mistake == mistake
     message = str(result)
     assert message.startswith("FAIL recursive_bezier: case 1 is wrong\n")
     assert f"This is a known mistake, {mistake}: {words}" in message
     assert "first wrong value: [0]" in message or "first wrong value: [1]" in message
-    assert message.splitlines()[-1].startswith("Hint: ")
+    assert message.splitlines()[-2:] == [
+        f"Hint: {check.RECURSIVE_HINTS.where}",
+        '(More: check.hint("recursive_bezier").)',
+    ]
     assert picture_size(result)[0] > 300
 
 
@@ -160,13 +169,13 @@ def coarse(control_points, window):
 
 def test_the_drawing_loop_passes_in_one_line():
     result = check.bezier(bezier_solution)
-    assert str(result) == "PASS bezier: all 2 cases pass"
+    assert str(result) == "PASS bezier: all 3 cases pass"
 
 
 @pytest.mark.parametrize(
     ("solution", "mistake", "case"),
     [
-        (float_loop, "the float loop that stops short of t = 1", 1),
+        (float_loop, "the loop stops before t = 1", 1),
         (rounded, "rounding to the nearest pixel", 1),
         (swapped_axes, "x and y swapped", 1),
         (unguarded_below, "a negative index wraps around", 2),
@@ -179,7 +188,8 @@ def test_each_known_mistake_of_the_drawing_loop_is_named_with_a_pixel_picture(
     result = check.bezier(solution)
     assert not result and result.mistake == mistake
     assert str(result).startswith(f"FAIL bezier: case {case} is wrong")
-    assert picture_size(result) == (458, 343)  # 16 x 16 pixels at 18 x 18, and the legend
+    # 16 x 16 pixels at 18 x 18, 30-pixel margins for the coordinates, the legend and title
+    assert picture_size(result) == (16 * 18 + 2 * 30 + 150, 16 * 18 + 2 * 30 + 35)
 
 
 def test_the_float_loop_report_names_the_missing_end_pixel():
@@ -187,12 +197,18 @@ def test_the_float_loop_report_names_the_missing_end_pixel():
     assert "1 pixel missing, first (690, 690)" in message
 
 
-def test_a_loop_that_writes_off_the_window_is_told_where():
+def test_a_loop_that_writes_off_the_window_is_told_where(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+
     def unguarded(control_points, window):
         for k in range(1001):
             x, y = recursive_solution(control_points, k / 1000)
             window[int(y), int(x)] = (0, 1, 0)
 
     message = str(check.bezier(unguarded))
-    assert message.startswith("FAIL bezier: case 2 raised IndexError")
-    assert "skip the points off the window" in message
+    assert message.startswith(
+        "FAIL bezier: case 2 raised IndexError: index 80 is out of bounds for axis 1 with size 80"
+    )
+    line = unguarded.__code__.co_firstlineno + 3
+    assert f"at line {line} of unguarded: window[int(y), int(x)] = (0, 1, 0)" in message
+    assert "and at points off the window." in message

@@ -50,13 +50,16 @@ def nine_ifs(gray, transposed=False, at_least=False):
 
 
 def test_ordered_dithering_passes_and_its_slips_are_named():
-    assert str(check.dithering_ordered(nine_ifs)) == "PASS DitheringOrdered: all 3 cases pass"
+    # Four cases: the levels on M / 9, a 2 x 3 image, noise and the small face.
+    passed = check.dithering_ordered(nine_ifs)
+    assert str(passed) == "PASS DitheringOrdered: all 4 cases pass"
+    assert passed.picture is not None and passed.picture.startswith(b"\x89PNG")
     transposed = check.dithering_ordered(lambda gray: nine_ifs(gray, transposed=True))
     assert transposed.mistake == "the matrix transposed" and transposed.picture is not None
     assert check.dithering_ordered(lambda gray: nine_ifs(gray, at_least=True)).mistake == ">= for >"
 
 
-def floyd_steinberg(gray, guard_left=True, serpentine=False, read_errors=True):
+def floyd_steinberg(gray, guard_left=True, serpentine=False, read_errors=True, sign=1.0):
     height, width = gray.shape
     buffer, output = gray.copy(), np.zeros_like(gray)
     for y in range(height):
@@ -65,7 +68,7 @@ def floyd_steinberg(gray, guard_left=True, serpentine=False, read_errors=True):
         for x in columns:
             value = buffer[y, x] if read_errors else gray[y, x]
             output[y, x] = 1.0 if value > 0.5 else 0.0
-            error = value - output[y, x]
+            error = sign * (value - output[y, x])
             for dx, dy, weight in ((step, 0, 7), (-step, 1, 3), (0, 1, 5), (step, 1, 1)):
                 inside = 0 <= x + dx < width if guard_left else x + dx < width
                 if inside and y + dy < height:
@@ -84,3 +87,11 @@ def test_error_diffusion_names_its_slips_and_what_reached_the_first_wrong_pixel(
     assert serpentine.mistake == "a serpentine scan"
     unread = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, read_errors=False))
     assert unread.mistake == "the errors are never read" and unread.picture is not None
+
+
+def test_a_flipped_sign_and_unread_errors_are_told_apart():
+    # On a flat 0.5 both give all black; the checker's first case, a ramp, tells them apart.
+    flipped = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, sign=-1.0))
+    assert flipped.mistake == "the error's sign flipped" and "case 1 is wrong" in str(flipped)
+    unread = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, read_errors=False))
+    assert unread.mistake == "the errors are never read" and "case 1 is wrong" in str(unread)

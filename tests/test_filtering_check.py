@@ -6,25 +6,105 @@ import pytest
 from course import filters
 from course.check import filtering as check
 
+# The students below are written here, as a student would write them: the checkers fail
+# an answer that calls the library's own blur, sobel or convolve.
+SOBEL_X = np.array([[-1.0, 0.0, 1.0], [-2.0, 0.0, 2.0], [-1.0, 0.0, 1.0]])
+
+
+def _windows(image, border):
+    """Each pixel's 3 x 3 window, shape (H, W, 3, 3, ...), and how many of its pixels exist."""
+    image = np.asarray(image, dtype=float)
+    pad = [(1, 1), (1, 1)] + [(0, 0)] * (image.ndim - 2)
+    padded = np.pad(image, pad, mode="edge" if border == "replicate" else "constant")
+    inside = np.pad(np.ones(image.shape[:2]), 1)
+    height, width = image.shape[:2]
+    windows = np.stack(
+        [
+            np.stack([padded[dy : dy + height, dx : dx + width] for dx in range(3)], axis=2)
+            for dy in range(3)
+        ],
+        axis=2,
+    )
+    counts = sum(inside[dy : dy + height, dx : dx + width] for dy in range(3) for dx in range(3))
+    return windows, counts
+
+
+def box_blur(image, border="inside"):
+    """The 3 x 3 mean; "inside" divides by the neighbours that exist, the others by 9."""
+    windows, counts = _windows(image, border)
+    total = windows.sum(axis=(2, 3))
+    divisor = counts if border == "inside" else np.full(counts.shape, 9.0)
+    return total / (divisor if total.ndim == 2 else divisor[..., None])
+
+
+def correlate(image, kernel, border="replicate"):
+    """The handout's dot product of ``kernel`` with each 3 x 3 window."""
+    windows, _ = _windows(image, border)
+    kernel = np.asarray(kernel, dtype=float)
+    weights = kernel if windows.ndim == 4 else kernel[..., None]
+    return (windows * weights).sum(axis=(2, 3))
+
+
+def sobel_magnitude(image, border="replicate"):
+    return np.hypot(correlate(image, SOBEL_X, border), correlate(image, SOBEL_X.T, border))
+
+
+def test_the_test_students_agree_with_the_library():
+    rng = np.random.default_rng(0)
+    for image in (rng.random((5, 7)), rng.random((1, 1)), rng.random((4, 5, 3))):
+        np.testing.assert_allclose(box_blur(image), filters.blur(image), atol=1e-12)
+        for border in ("zero", "replicate"):
+            np.testing.assert_allclose(
+                box_blur(image, border), filters.convolve(image, filters.BOX, border), atol=1e-12
+            )
+            np.testing.assert_allclose(
+                sobel_magnitude(image, border), filters.sobel(image, border), atol=1e-12
+            )
+
 
 def test_blur_checker_passes_the_loop_and_fails_zero_padding_naming_the_case():
-    assert check.blur(lambda image: filters.blur(image, method="loop"))
-    result = check.blur(lambda image: filters.convolve(image, filters.BOX, "zero"))
-    assert not result and "case 1 is wrong" in result.message and "image=" in result.message
+    assert check.blur(box_blur)
+    result = check.blur(lambda image: box_blur(image, "zero"))
+    assert not result and "case 1 is wrong" in result.message
+    assert result.mistake == "zero padding"
+
+
+def test_blur_and_edge_tell_a_call_to_the_library_to_write_it():
+    for student, name in (
+        (lambda image: filters.blur(image, method="loop"), "blur"),
+        (lambda image: filters.convolve(image, filters.BOX, "zero"), "convolve"),
+    ):
+        result = check.blur(student)
+        assert not result
+        assert result.message.startswith(
+            f"your function calls course.filters.{name}, the library's own answer: "
+            "this exercise writes it"
+        )
+    result = check.edge(lambda image: filters.sobel(image, method="loop"))
+    assert not result
+    assert result.message.startswith("your function calls course.filters.sobel")
 
 
 def test_edge_checker_passes_sobel_and_fails_prewitt_and_a_black_border():
-    assert check.edge(lambda image: filters.sobel(image, method="loop"))
+    assert check.edge(sobel_magnitude)
     prewitt = np.array([[-1, 0, 1], [-1, 0, 1], [-1, 0, 1]])
 
     def prewitt_magnitude(image):
-        gx = filters.convolve(image, prewitt[::-1, ::-1], "replicate")
-        gy = filters.convolve(image, prewitt.T[::-1, ::-1], "replicate")
-        return np.hypot(gx, gy)
+        return np.hypot(correlate(image, prewitt), correlate(image, prewitt.T))
 
     assert not check.edge(prewitt_magnitude)
-    result = check.edge(lambda image: filters.sobel(image, "zero"))
+    result = check.edge(lambda image: sobel_magnitude(image, "zero"))
     assert not result and "case 1 is wrong" in result.message
+    assert result.mistake == "zero padding"
+
+
+def test_the_clipped_magnitude_names_sobels_true_range():
+    # A window with Gx = 4 and Gy = 2 is the largest: sqrt(20).
+    window = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 1.0, 1.0]])
+    assert np.hypot((SOBEL_X * window).sum(), (SOBEL_X.T * window).sum()) == np.sqrt(20)
+    result = check.edge(lambda image: np.clip(sobel_magnitude(image), 0, 1))
+    assert result.mistake == "clipped to 1"
+    assert "up to sqrt(20), about 4.47" in result.message
 
 
 def _frame_zero(function):
@@ -38,18 +118,18 @@ def _frame_zero(function):
 
 def _frame_copied(image):
     output = np.array(image, dtype=float)
-    output[1:-1, 1:-1] = filters.blur(image)[1:-1, 1:-1]
+    output[1:-1, 1:-1] = box_blur(image)[1:-1, 1:-1]
     return output
 
 
 @pytest.mark.parametrize(
     ("student", "mistake"),
     [
-        (lambda image: filters.convolve(image, filters.BOX, "zero"), "zero padding"),
-        (_frame_zero(filters.blur), "the frame skipped"),
+        (lambda image: box_blur(image, "zero"), "zero padding"),
+        (_frame_zero(box_blur), "the frame skipped"),
         (_frame_copied, "the frame copied"),
         (
-            lambda image: filters.convolve(image, filters.BOX, "replicate"),
+            lambda image: box_blur(image, "replicate"),
             "the edge pixel repeated",
         ),
     ],
@@ -68,10 +148,10 @@ def test_blur_mistakes_are_named_with_a_map_and_the_first_pixel(student, mistake
 @pytest.mark.parametrize(
     ("student", "mistake"),
     [
-        (lambda image: filters.sobel(image, "zero"), "zero padding"),
-        (lambda image: np.clip(filters.sobel(image), 0, 1), "clipped to 1"),
-        (lambda image: np.abs(filters.convolve(image, filters.SOBEL_X, "replicate")), "Gx alone"),
-        (_frame_zero(filters.sobel), "the frame skipped"),
+        (lambda image: sobel_magnitude(image, "zero"), "zero padding"),
+        (lambda image: np.clip(sobel_magnitude(image), 0, 1), "clipped to 1"),
+        (lambda image: np.abs(correlate(image, SOBEL_X)), "Gx alone"),
+        (_frame_zero(sobel_magnitude), "the frame skipped"),
     ],
 )
 def test_edge_mistakes_are_named_with_a_map(student, mistake):
@@ -84,7 +164,7 @@ def test_edge_mistakes_are_named_with_a_map(student, mistake):
 
 def test_an_interior_error_is_placed_inside_the_image():
     def off_by_one_pixel(image):
-        output = filters.blur(image)
+        output = box_blur(image)
         if output.shape[:2] == (8, 10):
             output[4, 5] += 0.25
         return output

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from course.check import lines_and_triangles as check
-from course.raster import line_4connected, triangle
+from course.raster import line, line_4connected, triangle
 
 
 def bresenham_ties_toward_the_end(p0, p1):
@@ -26,15 +26,42 @@ def bresenham_ties_toward_the_end(p0, p1):
             err, y = err + dx, y + sy
 
 
+def precomputed(library_function, cases, **options):
+    """A student function answering each of the checker's cases from a table made beforehand.
+
+    The checker refuses a function that calls or names the library's own answer, so the
+    library's pixels for a case are computed here, outside the call being checked.
+    """
+    table = {tuple(case): library_function(*case, **options) for case in cases}
+
+    def answer(*points):
+        return table[points]
+
+    return answer
+
+
+LIBRARY_REFUSED = (
+    "your function calls course.raster.{}, the library's own answer: this exercise writes it"
+)
+
+
 def test_draw_line_accepts_bresenham_with_either_tie_rule():
     result = check.draw_line(bresenham_ties_toward_the_end)
     assert result and result.message == "all 15 cases pass"
 
 
 def test_draw_line_rejects_the_reports_staircase():
-    result = check.draw_line(lambda p0, p1: line_4connected(p0, p1).tolist())
-    assert not result
+    staircase = precomputed(lambda p0, p1: line_4connected(p0, p1).tolist(), check._LINE_CASES)
+    result = check.draw_line(staircase)
+    assert not result and result.mistake == "the report's staircase"
     assert "case 1 is wrong" in result.message and "p0=(2, 3)" in result.message
+
+
+@pytest.mark.parametrize("library_line", [line_4connected, line])
+def test_draw_line_refuses_the_librarys_own_line(library_line):
+    result = check.draw_line(lambda p0, p1: library_line(p0, p1).tolist())
+    assert not result
+    assert result.message.splitlines()[0] == LIBRARY_REFUSED.format(library_line.__name__)
 
 
 def test_draw_line_rejects_a_rounded_dda_that_skips_steep_pixels():
@@ -87,17 +114,27 @@ def point_in_triangle_with_top_left_rule(p0, p1, p2):
 
 def test_draw_triangle_filled_accepts_a_correct_answer_in_any_order():
     assert check.draw_triangle_filled(point_in_triangle_with_top_left_rule)
-    assert check.draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2)[::-1])
+    library = precomputed(triangle, check._TRIANGLE_CASES)
+    assert check.draw_triangle_filled(lambda p0, p1, p2: library(p0, p1, p2)[::-1])
+
+
+def test_draw_triangle_filled_refuses_the_librarys_own_fill():
+    result = check.draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2))
+    assert not result
+    assert result.message.splitlines()[0] == LIBRARY_REFUSED.format("triangle")
 
 
 def test_draw_triangle_filled_names_the_shared_edge_case_for_the_closed_rule():
-    result = check.draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed"))
+    result = check.draw_triangle_filled(precomputed(triangle, check._TRIANGLE_CASES, rule="closed"))
     assert not result and "case 5 is wrong" in result.message
+    assert result.mistake == "every edge closed"
 
 
 def test_draw_triangle_filled_rejects_pixels_painted_twice():
+    library = precomputed(triangle, check._TRIANGLE_CASES)
+
     def twice(p0, p1, p2):
-        pixels = triangle(p0, p1, p2).tolist()
+        pixels = library(p0, p1, p2).tolist()
         return pixels + pixels[:1]
 
     result = check.draw_triangle_filled(twice)
@@ -105,12 +142,14 @@ def test_draw_triangle_filled_rejects_pixels_painted_twice():
 
 
 def test_draw_triangle_filled_reports_the_handouts_division_by_zero():
+    library = precomputed(triangle, check._TRIANGLE_CASES)
+
     def scanline_without_special_cases(p0, p1, p2):
         top, middle, _ = sorted([p0, p1, p2], key=lambda p: p[1])
         # The handout's warning: the slope of top -> middle divides by zero
         # when the two share a y.
         (middle[0] - top[0]) / (middle[1] - top[1])
-        return triangle(p0, p1, p2).tolist()
+        return library(p0, p1, p2).tolist()
 
     result = check.draw_triangle_filled(scanline_without_special_cases)
     assert not result and "case 3 raised ZeroDivisionError" in result.message
@@ -143,8 +182,12 @@ def the_reports_loop(p0, p1):
 def test_draw_line_names_each_known_mistake_and_draws_the_difference(solution, mistake):
     result = check.draw_line(solution)
     assert not result and result.mistake == mistake
-    assert result.picture.startswith(b"\x89PNG")
-    assert "missing" in str(result) or "extra" in str(result) or "same pixels" in str(result)
+    if mistake == "drawn backwards":
+        # the same pixels in the other order: the words say it, a picture of pixels cannot
+        assert "\n  the same pixels\n" in str(result) and result.picture is None
+    else:
+        assert result.picture.startswith(b"\x89PNG")
+        assert "missing" in str(result) or "extra" in str(result)
 
 
 def scanline(p0, p1, p2, closed=False):
@@ -175,8 +218,11 @@ def test_draw_triangle_filled_names_each_known_mistake_with_a_pixel_picture():
     closed = check.draw_triangle_filled(lambda p0, p1, p2: scanline(p0, p1, p2, closed=True))
     assert not closed and closed.mistake == "every edge closed"
     corners = check.draw_triangle_filled(
-        lambda p0, p1, p2: triangle(*(np.subtract(p, 0.5) for p in (p0, p1, p2)))
+        precomputed(
+            lambda p0, p1, p2: triangle(*(np.subtract(p, 0.5) for p in (p0, p1, p2))),
+            check._TRIANGLE_CASES,
+        )
     )
     assert corners.mistake == "pixel corners for centres" and corners.picture is not None
-    opened = check.draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2, rule="open"))
+    opened = check.draw_triangle_filled(precomputed(triangle, check._TRIANGLE_CASES, rule="open"))
     assert opened.mistake == "every edge open"

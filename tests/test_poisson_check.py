@@ -136,24 +136,14 @@ def test_jacobi_sweep_reports_a_ring_that_moves_and_a_missing_count():
 @pytest.mark.parametrize(
     ("student", "mistake"),
     [
+        (flipped_sign, "the sign flipped"),
         (
-            lambda background, foreground, offset: (
-                -correction_boundary(background, foreground, offset)
-            ),
-            "the sign flipped",
-        ),
-        (
-            lambda background, foreground, offset: correction_boundary(
+            lambda background, foreground, offset: lab_style_boundary(
                 background, foreground * 0, offset
             ),
             "the background alone",
         ),
-        (
-            lambda background, foreground, offset: correction_boundary(
-                background, foreground, offset[::-1]
-            ),
-            "x and y swapped",
-        ),
+        (swapped_offset, "x and y swapped"),
     ],
 )
 def test_boundary_mistakes_are_named_with_a_picture(student, mistake):
@@ -161,3 +151,40 @@ def test_boundary_mistakes_are_named_with_a_picture(student, mistake):
     assert not result
     assert result.mistake == mistake
     assert result.picture is not None
+
+
+def test_the_lab_loops_are_the_librarys_ring():
+    rng = np.random.default_rng(4)
+    background, foreground = rng.random((9, 11, 3)), rng.random((4, 6, 3))
+    np.testing.assert_array_equal(
+        lab_style_boundary(background, foreground, (3, 2)),
+        correction_boundary(background, foreground, (3, 2)),
+    )
+
+
+def test_a_call_to_the_librarys_ring_is_told_to_write_it():
+    result = check.poisson_boundary(
+        lambda background, foreground, offset: -correction_boundary(background, foreground, offset)
+    )
+    assert not result and result.mistake is None
+    assert result.message.startswith(
+        "your function calls course.poisson.correction_boundary, the library's own answer: "
+        "this exercise writes it"
+    )
+
+
+def until_the_change_is_small(g, tolerance):
+    g = np.array(g, dtype=float)
+    for sweeps in itertools.count(1):
+        new = g.copy()
+        new[1:-1, 1:-1] = (g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]) / 4
+        if np.abs(new - g).max() < tolerance:
+            return new, sweeps
+        g = new
+
+
+def test_a_stop_on_the_change_between_sweeps_is_named_as_stopping_early():
+    result = check.jacobi_sweep(until_the_change_is_small)
+    assert result.mistake == "a stop on the change between sweeps"
+    assert "sweeps: expected 11, given 10" in result.message
+    assert "up to four times the tolerance" in result.message

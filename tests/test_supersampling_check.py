@@ -5,9 +5,30 @@ import numpy as np
 from course.check import supersampling as check
 from course.resample import (
     bilinear,
+    supersample,
     supersample_shifted,
     supersample_without_offset,
 )
+
+
+def bilinear_sample(image, x, y, pixel_centre=0.5):
+    """The lab's lookup, written as a student would: the checker fails a call to the library's."""
+    image = np.asarray(image, dtype=float)
+    height, width = image.shape[:2]
+    u = min(max(x - pixel_centre, 0.0), width - 1.0)
+    v = min(max(y - pixel_centre, 0.0), height - 1.0)
+    left, top = min(int(np.floor(u)), max(width - 2, 0)), min(int(np.floor(v)), max(height - 2, 0))
+    right, bottom = min(left + 1, width - 1), min(top + 1, height - 1)
+    fx, fy = u - left, v - top
+    upper = image[top, left] * (1 - fx) + image[top, right] * fx
+    lower = image[bottom, left] * (1 - fx) + image[bottom, right] * fx
+    return upper * (1 - fy) + lower * fy
+
+
+def test_the_test_lookup_agrees_with_the_library():
+    image = np.random.default_rng(1).random((3, 4, 3))
+    for x, y in ((1.3, 0.9), (-0.4, 1.1), (3.9, 2.95), (0.5, 0.5), (2.0, 1.5)):
+        np.testing.assert_allclose(bilinear_sample(image, x, y), bilinear(image, x, y), atol=1e-12)
 
 
 def test_the_supersampling_checker_passes_a_loop_and_names_the_reports_version():
@@ -16,15 +37,18 @@ def test_the_supersampling_checker_passes_a_loop_and_names_the_reports_version()
         result = np.zeros((height, width, *image.shape[2:]))
         for row in range(height):
             for column in range(width):
-                j, i = np.meshgrid(np.arange(rate), np.arange(rate), indexing="ij")
-                x = (column + (i + 0.5) / rate) * image.shape[1] / width
-                y = (row + (j + 0.5) / rate) * image.shape[0] / height
-                result[row, column] = bilinear(image, x, y).mean(axis=(0, 1))
+                for j in range(rate):
+                    for i in range(rate):
+                        x = (column + (i + 0.5) / rate) * image.shape[1] / width
+                        y = (row + (j + 0.5) / rate) * image.shape[0] / height
+                        result[row, column] += bilinear_sample(image, x, y) / rate**2
         return result
 
     assert check.image_supersampling(student)
-    result = check.image_supersampling(supersample_without_offset)
+    assert check.bilinear_lookup(bilinear_sample)
+    result = check.image_supersampling(reports_version)
     assert not result and "case 1 is wrong" in result.message
+    assert result.mistake == "the report's two shifts"
     result = check.image_supersampling(lambda image, out_shape, rate: image[: out_shape[0]])
     assert not result and "case 1 is wrong" in result.message
 
@@ -36,21 +60,74 @@ def corner_samples(image, out_shape, rate):
     result = np.zeros((height, width, *image.shape[2:]))
     for row in range(height):
         for column in range(width):
-            offsets = np.arange(rate) / rate
-            y, x = np.meshgrid(
-                (row + offsets) * in_height / height,
-                (column + offsets) * in_width / width,
-                indexing="ij",
-            )
-            result[row, column] = bilinear(image, x, y).mean(axis=(0, 1))
+            for j in range(rate):
+                for i in range(rate):
+                    x = (column + i / rate) * in_width / width
+                    y = (row + j / rate) * in_height / height
+                    result[row, column] += bilinear_sample(image, x, y) / rate**2
     return result
+
+
+def _shifted_loop(image, out_shape, rate, sample_offset, pixel_centre):
+    height, width = out_shape
+    in_height, in_width = image.shape[:2]
+    result = np.zeros((height, width, *image.shape[2:]))
+    for row in range(height):
+        for column in range(width):
+            for j in range(rate):
+                for i in range(rate):
+                    x = (column + (i + sample_offset) / rate) * in_width / width
+                    y = (row + (j + sample_offset) / rate) * in_height / height
+                    result[row, column] += bilinear_sample(image, x, y, pixel_centre) / rate**2
+    return result
+
+
+def integer_centres(image, out_shape, rate):
+    """A student's loop whose lookup takes pixel k to sit at x = k."""
+    return _shifted_loop(image, out_shape, rate, sample_offset=0.5, pixel_centre=0.0)
+
+
+def reports_version(image, out_shape, rate):
+    """The lab report's loop: samples at the sub-pixel corners, pixel k centred at k."""
+    return _shifted_loop(image, out_shape, rate, sample_offset=0.0, pixel_centre=0.0)
+
+
+def test_the_test_loops_agree_with_the_librarys_shifted_versions():
+    image = np.random.default_rng(2).random((9, 12, 3))
+    for out_shape, rate in (((4, 5), 2), ((3, 3), 3), ((12, 14), 2)):
+        np.testing.assert_allclose(
+            reports_version(image, out_shape, rate),
+            supersample_without_offset(image, out_shape, rate),
+            atol=1e-12,
+        )
+        np.testing.assert_allclose(
+            integer_centres(image, out_shape, rate),
+            supersample_shifted(image, out_shape, rate, pixel_centre=0.0),
+            atol=1e-12,
+        )
+        np.testing.assert_allclose(
+            corner_samples(image, out_shape, rate),
+            supersample_shifted(image, out_shape, rate, sample_offset=0.0),
+            atol=1e-12,
+        )
 
 
 def test_each_half_of_the_reports_shift_is_named_with_a_difference_picture():
     corners = check.image_supersampling(corner_samples)
     assert corners.mistake == "samples at the sub-pixel corners" and corners.picture is not None
-    centres = check.image_supersampling(
-        lambda image, out_shape, rate: supersample_shifted(image, out_shape, rate, pixel_centre=0.0)
-    )
+    centres = check.image_supersampling(integer_centres)
     assert centres.mistake == "pixel centres at whole numbers"
     assert "first wrong value: [0, 0]" in str(centres)
+
+
+def test_a_call_to_the_librarys_supersampling_or_lookup_is_told_to_write_it():
+    for student in (
+        supersample,
+        supersample_without_offset,
+        lambda image, out_shape, rate: supersample_shifted(image, out_shape, rate),
+        lambda image, out_shape, rate: bilinear(image, 0.5, 0.5) + 0 * image[: out_shape[0]],
+    ):
+        result = check.image_supersampling(student)
+        assert not result
+        assert result.message.startswith("your function calls course.resample.")
+        assert "the library's own answer: this exercise writes it" in result.message

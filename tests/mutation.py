@@ -98,8 +98,38 @@ class Mutant:
 
     @property
     def diff(self) -> str:
-        """The slip on one line: ``line N: original -> mutated``."""
-        return f"line {self.line}: {self.original}  ->  {self.mutated}"
+        """The slip, short: ``line N: x < x1 -> x <= x1``, a word of context either side.
+
+        Where the statement holds the changed words more than once, the column
+        of the change follows the line (``line 7:12``), so each diff names one mutant.
+        """
+        before, after = self.original, self.mutated
+        start = 0
+        while start < min(len(before), len(after)) and before[start] == after[start]:
+            start += 1
+        end = 0
+        while (
+            end < min(len(before), len(after)) - start
+            and before[len(before) - 1 - end] == after[len(after) - 1 - end]
+        ):
+            end += 1
+        # Widen to a word of context either side, cut at spaces.
+        left = before.rfind(" ", 0, max(0, before.rfind(" ", 0, start)))
+        left = 0 if left < 0 else left + 1
+        right_before = _word_end(before, len(before) - end)
+        right_after = _word_end(after, len(after) - end)
+        old, new = before[left:right_before].strip(), after[left:right_after].strip()
+        where = f"{self.line}" if before.count(old) == 1 else f"{self.line}:{left}"
+        return f"line {where}: {old or '(nothing)'}  ->  {new or '(nothing)'}"
+
+
+def _word_end(text: str, position: int) -> int:
+    """Past the next space-delimited word after ``position`` (or the text's end)."""
+    first = text.find(" ", position + 1)
+    if first < 0:
+        return len(text)
+    second = text.find(" ", first + 1)
+    return len(text) if second < 0 else second
 
 
 @dataclass(frozen=True)
@@ -421,9 +451,8 @@ def mutants(exercise: Exercise) -> list[Mutant]:
         return line is not None and first <= line and (end or line) <= last
 
     def add(kind: str, path: Path_, replacement: Any) -> None:
-        new_tree = copy.deepcopy(tree)
+        new_tree = ast.parse(exercise.source)  # a fresh tree: far cheaper than a deep copy
         _set(new_tree, path, replacement)
-        ast.fix_missing_locations(new_tree)
         source = ast.unparse(new_tree)
         if source in seen:
             return

@@ -189,6 +189,22 @@ def _setup(earlier: Sequence[ast.stmt], needed: set[str]) -> str:
     return "\n".join(ast.unparse(earlier[index]) for index in sorted(chosen))
 
 
+def _checked_call(tree: ast.Module) -> ast.Call | None:
+    """The cell's last statement if it is ``check.<checker>(<function>)``."""
+    last = tree.body[-1] if tree.body else None
+    call = last.value if isinstance(last, ast.Expr) else None
+    if (
+        isinstance(call, ast.Call)
+        and isinstance(call.func, ast.Attribute)
+        and isinstance(call.func.value, ast.Name)
+        and call.func.value.id == "check"
+        and len(call.args) == 1
+        and isinstance(call.args[0], ast.Name)
+    ):
+        return call
+    return None
+
+
 def find_exercises(notebooks: Iterable[Path] | None = None) -> list[Exercise]:
     """Every exercise of the lessons' notebooks, in the notebooks' order."""
     found = []
@@ -207,20 +223,9 @@ def find_exercises(notebooks: Iterable[Path] | None = None) -> list[Exercise]:
                     (ast.Import, ast.ImportFrom, ast.FunctionDef, ast.ClassDef, ast.Assign),
                 )
             ]
-            last = tree.body[-1] if tree.body else None
-            is_check = (
-                "solution" in tags
-                and isinstance(last, ast.Expr)
-                and isinstance(last.value, ast.Call)
-                and isinstance(last.value.func, ast.Attribute)
-                and isinstance(last.value.func.value, ast.Name)
-                and last.value.func.value.id == "check"
-                and len(last.value.args) == 1
-                and isinstance(last.value.args[0], ast.Name)
-            )
-            if is_check:
-                assert isinstance(last, ast.Expr) and isinstance(last.value, ast.Call)
-                function = last.value.args[0].id  # type: ignore[attr-defined]
+            checked = _checked_call(tree) if "solution" in tags else None
+            if checked is not None:
+                last, function = tree.body[-1], checked.args[0].id  # type: ignore[attr-defined]
                 body = tree.body[:-1]
                 text_lines = text.splitlines()
                 marked = [i + 1 for i, line in enumerate(text_lines) if line.strip() == BEGIN]
@@ -240,7 +245,7 @@ def find_exercises(notebooks: Iterable[Path] | None = None) -> list[Exercise]:
                 needed -= {n for s in body for n in _defined_names(s)}
                 found.append(
                     Exercise(
-                        checker=last.value.func.attr,
+                        checker=checked.func.attr,  # type: ignore[attr-defined]
                         function=function,
                         notebook=notebook.name,
                         cell=index,
@@ -506,7 +511,7 @@ PRELOAD = [
 ]
 
 
-def _check(setup: str, source: str, call: str, memory: int, connection: Any) -> None:
+def _check(setup: str, source: str, call: str, memory: int, prelude: str, connection: Any) -> None:
     """In the mutant's own process: run the check and send back (outcome, detail)."""
     try:
         import resource
@@ -525,6 +530,7 @@ def _check(setup: str, source: str, call: str, memory: int, connection: Any) -> 
     chatter = io.StringIO()
     try:
         namespace: dict[str, Any] = {"__name__": "__mutant__"}
+        exec(compile(prelude, "<prelude>", "exec"), {})
         exec(compile(setup, "<setup>", "exec"), namespace)
         exec(compile(source, "<mutant>", "exec"), namespace)
         with redirect_stdout(chatter), redirect_stderr(chatter):
@@ -571,8 +577,13 @@ def run(
     workers: int = WORKERS,
     memory: int = MEMORY,
     progress: Callable[[Outcome], None] | None = None,
+    prelude: str = "",
 ) -> list[Outcome]:
-    """Check each mutant in a process of its own, ``workers`` at a time; outcomes in order."""
+    """Check each mutant in a process of its own, ``workers`` at a time; outcomes in order.
+
+    ``prelude`` is code the process runs first, in a namespace of its own (to
+    lengthen a checker's own budget, say).
+    """
     context = _context()
     results: dict[int, Outcome] = {}
     pending = list(enumerate(work))[::-1]
@@ -595,7 +606,7 @@ def run(
             receiver, sender = context.Pipe(duplex=False)
             process = context.Process(
                 target=_check,
-                args=(exercise.setup, mutant.source, exercise.call, memory, sender),
+                args=(exercise.setup, mutant.source, exercise.call, memory, prelude, sender),
                 daemon=True,
             )
             process.start()

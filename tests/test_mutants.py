@@ -27,6 +27,8 @@ import pytest
 
 ALL = os.environ.get("COURSE_MUTANTS", "") == "all"
 SAMPLE_STEP = 12  # in make test, every 12th mutant of each exercise, beside the listed ones
+# Under pytest-xdist (make test: two workers on two cores) one mutant at a time, not two.
+WORKERS = 1 if os.environ.get("PYTEST_XDIST_WORKER") else mutation.WORKERS
 
 #: (exercise, the slip as Mutant.diff writes it, why it passes): every mutant that passes.
 SURVIVORS: list[tuple[str, str, str]] = [
@@ -425,7 +427,7 @@ def test_only_the_listed_mutants_survive_and_none_hangs(
 ) -> None:
     chosen = _chosen(work)
     # A timeout well beyond any checker's own budget: only a mutant nothing stops meets it.
-    outcomes = mutation.run(chosen, timeout=3 * mutation.TIMEOUT)
+    outcomes = mutation.run(chosen, timeout=3 * mutation.TIMEOUT, workers=WORKERS)
     listed = {(e, d) for e, d, _ in SURVIVORS}
     slow = [
         index
@@ -433,7 +435,8 @@ def test_only_the_listed_mutants_survive_and_none_hangs(
         if outcome.outcome == "stopped" and (outcome.mutant.exercise, outcome.mutant.diff) in listed
     ]
     if slow:
-        again = mutation.run([chosen[i] for i in slow], 30 * mutation.TIMEOUT, prelude=PATIENT)
+        slowly = [chosen[i] for i in slow]
+        again = mutation.run(slowly, 30 * mutation.TIMEOUT, WORKERS, prelude=PATIENT)
         for index, outcome in zip(slow, again, strict=True):
             outcomes[index] = outcome
     by_outcome: dict[str, set[tuple[str, str]]] = {}

@@ -11,6 +11,12 @@ y swapped, the nearest pixel only).
 stands for; a failure plots both sets of weights along the curve and
 recognises counting (every weight 1), a whole chord on one side only, and
 whole chords on both sides.
+
+Both are called by position, so the parameters may have any names. An
+answer that calls the library's own splat or weights is told to write it.
+Hints come in steps: a failure says where to look, the next failures say
+more; ``check.hint("splat")`` says more at once and
+``check.hint("splat", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
@@ -22,7 +28,7 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
-from course import limits
+from course import limits, splats
 from course._validate import require_finite
 from course.antialias import (
     arc_length_weights as reference_weights,
@@ -33,12 +39,35 @@ from course.antialias import (
     bilinear_zero_offset,
     curve_samples,
     nearest_round,
+    normalised_centres,
 )
-from course.check.base import CheckResult, Mistake, close, first_difference, run_cases
-from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture
+from course.check.base import (
+    AnswerError,
+    CheckResult,
+    Hints,
+    Mistake,
+    close,
+    first_difference,
+    hint,
+    register_hints,
+    run_cases,
+)
+from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture, side_by_side
 from course.images import SEED_000_CUBIC
 
-__all__ = ["arc_length_weights", "bilinear_splat", "splat_table"]
+__all__ = ["arc_length_weights", "bilinear_splat", "hint", "splat_table"]
+
+_LIBRARY = {
+    function: f"your function calls course.splats.{function.__name__}, the library's own "
+    "answer: this exercise writes it"
+    for function in (
+        splats.splat,
+        splats.bilinear_centres,
+        splats.bilinear_corners,
+        splats.normalised_centres,
+        splats.arc_length_weights,
+    )
+}
 
 # Points that tell the common mistakes apart: a pixel centre (one pixel gets
 # everything), a pixel corner (four equal shares), generic points, points
@@ -93,6 +122,21 @@ def splat_table(pixels: Any, weights: Any) -> np.ndarray:
 
 def _table_of(splat: Callable[..., Any]) -> Callable[[float, float], np.ndarray]:
     return lambda x, y: splat_table(*splat([[x, y]]))
+
+
+def _student_table(answer: Any) -> np.ndarray:
+    """The student's (pixels, weights) as a splat table; AnswerError in their terms."""
+    try:
+        pixels, weights = answer
+    except (TypeError, ValueError):
+        raise AnswerError(
+            f"return two things, the pixels and their weights; yours is a {type(answer).__name__}"
+            + (f" of {len(answer)} items" if isinstance(answer, (list, tuple)) else "")
+        ) from None
+    try:
+        return splat_table(pixels, weights)
+    except (TypeError, ValueError) as error:
+        raise AnswerError(str(error)) from None
 
 
 def _weights_by_pixel(table: np.ndarray) -> dict[tuple[int, int], float]:
@@ -186,6 +230,14 @@ def _own_rectangles(x: float, y: float) -> np.ndarray:
     return splat_table(pixels, [dx * dy, (1 - dx) * dy, dx * (1 - dy), (1 - dx) * (1 - dy)])
 
 
+def _truncated(x: float, y: float) -> np.ndarray:
+    """The splat with int() for floor: left of or above 0.5 it picks the wrong pixels."""
+    left, top = int(x - 0.5), int(y - 0.5)
+    dx, dy = x - (left + 0.5), y - (top + 0.5)
+    pixels = [(left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)]
+    return splat_table(pixels, [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy])
+
+
 SPLAT_MISTAKES = (
     Mistake(
         "the corners are the point itself",
@@ -220,6 +272,20 @@ SPLAT_MISTAKES = (
         "your pixels are (row, column): give each as (x, y), the column first.",
         _swapped,
     ),
+    Mistake(
+        "the normalised splat",
+        "your weights never vanish: a point at a pixel's centre still gives its neighbours "
+        "some. That is the VS2022 report's splat (seed 003): sqrt(2) minus each distance, "
+        "normalised. Bilinear weights are areas of rectangles, and give a centre's pixel "
+        "everything.",
+        _table_of(normalised_centres),
+    ),
+    Mistake(
+        "int() for floor",
+        "left of or above the first centres your pixels are one off: int() rounds toward "
+        "zero, so int(-0.75) is 0, while the pixel to the left is floor(-0.75) = -1.",
+        _truncated,
+    ),
 )
 
 
@@ -234,9 +300,8 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
 
     Examples
     --------
-    >>> from course.antialias import bilinear_centres
-    >>> bilinear_splat(lambda x, y: bilinear_centres([[x, y]]))
-    PASS bilinear_splat: all 7 cases pass
+    >>> bilinear_splat(lambda x, y: ([(int(x), int(y))], [1.0])).mistake
+    'the nearest pixel only'
     """
     return run_cases(
         "bilinear_splat",
@@ -244,16 +309,41 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
         CASES,
         reference=_table_of(bilinear_centres),
         compare=close(atol=1e-9, rtol=0.0),
-        convert=lambda answer: splat_table(*answer),
-        hint="the four pixels whose centres (c + 0.5, r + 0.5) surround the point; measure the "
-        "point's offset (dx, dy) from the top-left of those centres, and give each pixel the "
-        "area of the opposite rectangle.",
+        convert=_student_table,
+        hint=SPLAT_HINTS,
         mistakes=SPLAT_MISTAKES,
         difference=splat_difference,
         picture=_splat_picture,
         explain=_splat_explain,
         show=show_splat,
+        forbidden=_LIBRARY,
+        pass_picture=_splat_pass_picture,
     )
+
+
+def _splat_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
+    case, expected, given = results[2]  # (3.25, 7.875): four unequal weights
+    window = _window(case, [expected, given])
+    return side_by_side(
+        _painted(expected, window),
+        _painted(given, window),
+        ("expected", f"your splat of ({case['x']}, {case['y']})"),
+    )
+
+
+SPLAT_HINTS = register_hints(
+    "bilinear_splat",
+    Hints(
+        where="look at which four pixels you light, and from which point you measure the offsets.",
+        more="pixel (c, r) is centred at (c + 0.5, r + 0.5); the four pixels are those whose "
+        "centres surround the point, and each gets more the nearer the point is to its "
+        "centre: 1 at its own centre, 0 at a neighbour's.",
+        recipe="left = floor(x - 0.5), top = floor(y - 0.5); dx, dy = the point minus the "
+        "centre (left + 0.5, top + 0.5); weights (1 - dx)(1 - dy), dx (1 - dy), (1 - dx) dy, "
+        "dx dy for (left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1).",
+    ),
+    "splat",
+)
 
 
 def _weight_cases() -> list[dict[str, Any]]:
@@ -269,7 +359,12 @@ def _weight_cases() -> list[dict[str, Any]]:
     ]
 
 
-def _weights_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:
+def _weights_picture(
+    case: dict[str, Any],
+    expected: Any,
+    given: Any,
+    title: str = "the weight of each sample along the curve",
+) -> bytes | None:
     want, have = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
     if have.shape != want.shape:
         return None
@@ -282,7 +377,7 @@ def _weights_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes |
     axes.set_ylabel("weight (px of curve)", fontsize=8)
     axes.tick_params(labelsize=7)
     axes.legend(fontsize=7)
-    axes.set_title("the weight of each sample along the curve", fontsize=9)
+    axes.set_title(title, fontsize=9)
     figure.tight_layout()
     return figure_png(figure)
 
@@ -328,9 +423,8 @@ def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
 
     Examples
     --------
-    >>> from course.antialias import arc_length_weights as weights
-    >>> arc_length_weights(weights)
-    PASS arc_length_weights: all 5 cases pass
+    >>> arc_length_weights(lambda samples: [1.0] * len(samples)).mistake
+    'counting'
     """
     return run_cases(
         "arc_length_weights",
@@ -339,9 +433,23 @@ def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
         reference=reference_weights,
         compare=close(atol=1e-9, rtol=1e-9),
         convert=lambda answer: np.asarray(answer, dtype=float),
-        hint="half the distance to the previous sample plus half the distance to the next; "
-        "the first and the last sample have only one neighbour.",
+        hint=WEIGHT_HINTS,
         mistakes=WEIGHT_MISTAKES,
         difference=first_difference,
         picture=_weights_picture,
+        forbidden=_LIBRARY,
+        pass_picture=lambda results: _weights_picture(*results[2], "your weights along the cubic"),
     )
+
+
+WEIGHT_HINTS = register_hints(
+    "arc_length_weights",
+    Hints(
+        where="look at the chords beside each sample, and at the first and the last sample.",
+        more="a sample stands for the curve from halfway to its previous sample to halfway "
+        "to its next one; the ends have one neighbour only, and all the weights add up to "
+        "the polyline's length.",
+        recipe="chords = the distances between neighbouring samples; pad them with 0 at "
+        "both ends; w[i] = (padded[i] + padded[i + 1]) / 2.",
+    ),
+)

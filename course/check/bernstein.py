@@ -5,12 +5,18 @@ an exact integer (0 when n > m), built by Pascal's rule C(m, n) = C(m - 1, n)
 + C(m - 1, n - 1). Python's own ``math.comb`` and the library's binomials
 are not accepted, and the handout's recursion, which computes the same
 coefficients again and again, is stopped after a budget of calls and named.
-``naive_bezier(control_points, t)`` is the Bernstein form of any degree.
+``naive_bezier(control_points, t)`` is the Bernstein form of any degree,
+checked up to degree 40, where 32-bit binomials have long overflowed.
+
+Hints come in steps: a failure says where to look, the next failures say
+more; ``check.hint("comb")`` says more at once and
+``check.hint("comb", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
@@ -19,10 +25,25 @@ import numpy as np
 
 from course.bezier import bernstein_basis, bezier_bernstein, binomial, pascal_row
 from course.bezier_handouts import comb_recursive_calls, de_casteljau_reversed, pascal_row_int32
-from course.check.base import CheckResult, Mistake, call_budget, close, run_cases
-from course.check.de_casteljau import as_point, curve_cases, curve_picture_of, positional
+from course.check.base import (
+    CheckResult,
+    Hints,
+    Mistake,
+    call_budget,
+    close,
+    hint,
+    register_hints,
+    run_cases,
+)
+from course.check.de_casteljau import (
+    LIBRARY_CURVES,
+    _curve_pass_picture,
+    _point_picture,
+    as_point,
+    curve_cases,
+)
 
-__all__ = ["COMB_CASES", "MAX_CALLS", "comb", "naive_bezier"]
+__all__ = ["COMB_CASES", "MAX_CALLS", "comb", "hint", "naive_bezier"]
 
 #: Small cases first, then the sizes where 32-bit and 64-bit integers overflow
 #: (C(34, 17) > 2^31, C(67, 33) > 2^63), and C(100, 50), 30 digits long.
@@ -37,6 +58,7 @@ COMB_CASES = tuple(
         (10, 0),
         (10, 10),
         (3, 5),
+        (2, 7),
         (20, 7),
         (34, 17),
         (40, 20),
@@ -68,16 +90,28 @@ def _exact(expected: int, given: Any) -> bool:
     return not isinstance(given, bool) and given == expected
 
 
+_REFUSED = "this exercise builds the coefficients itself, by Pascal's rule"
+
+
+def _binomials() -> dict[Any, str]:
+    """The ready-made binomials a comb must not call: Python's, the library's, scipy's."""
+    forbidden = {
+        math.comb: f"math.comb was called: {_REFUSED}",
+        math.perm: f"math.perm was called: {_REFUSED}",
+        math.factorial: f"math.factorial was called: {_REFUSED}, not from factorials",
+        binomial: f"course.bezier.binomial was called: {_REFUSED}",
+        pascal_row: f"course.bezier.pascal_row was called: {_REFUSED}",
+    }
+    special = sys.modules.get("scipy.special")  # not imported: the student cannot call it
+    if special is not None:
+        for name in ("comb", "binom", "perm", "factorial"):
+            if hasattr(special, name):
+                forbidden[getattr(special, name)] = f"scipy.special.{name} was called: {_REFUSED}"
+    return forbidden
+
+
 @contextmanager
 def _pascal_only() -> Iterator[None]:
-    refused = "this exercise builds the coefficients itself, by Pascal's rule"
-    forbidden = {
-        math.comb: f"math.comb was called: {refused}",
-        math.perm: f"math.perm was called: {refused}",
-        math.factorial: f"math.factorial was called: {refused}, not from factorials",
-        binomial: f"course.bezier.binomial was called: {refused}",
-        pascal_row: f"course.bezier.pascal_row was called: {refused}",
-    }
     exponential = Mistake(
         "the exponential recursion",
         "comb(m - 1, n) + comb(m - 1, n - 1) computes the same coefficients again and again, "
@@ -87,8 +121,20 @@ def _pascal_only() -> Iterator[None]:
         "coefficients already computed).",
         lambda m, n: None,
     )
-    with call_budget(MAX_CALLS, forbidden, too_many=exponential):
+    with call_budget(MAX_CALLS, too_many=exponential):
         yield
+
+
+COMB_HINTS = register_hints(
+    "comb",
+    Hints(
+        where="look at the first rows of Pascal's triangle, and at what your code does when n > m.",
+        more="row 0 is [1]; each next row is made from the one above it, entry by entry, so "
+        "each coefficient is computed once; C(m, n) is entry n of row m, and 0 when n > m.",
+        recipe="start from row = [1]; m times, make the next row: 1, then the sums of the "
+        "neighbouring pairs of the row above, then 1. Return row[n] (0 if n > m).",
+    ),
+)
 
 
 def comb(function: Callable[..., Any]) -> CheckResult:
@@ -96,18 +142,10 @@ def comb(function: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> def comb_by_rows(m, n):
-    ...     row = [1]
-    ...     for _ in range(m):
-    ...         row = [1] + [a + b for a, b in zip(row, row[1:])] + [1]
-    ...     return row[n] if n <= m else 0
-    >>> comb(comb_by_rows)
-    PASS comb: all 13 cases pass
     >>> import math
     >>> comb(math.comb).passed
     False
     """
-    student = (lambda m, n: function(m, n)) if callable(function) else function
     mistakes = [
         Mistake(
             "32-bit integers",
@@ -132,6 +170,11 @@ def comb(function: Callable[..., Any]) -> CheckResult:
             ),
         ),
         Mistake(
+            "the arguments swapped",
+            "you computed C(n, m): comb(m, n) is entry n of row m, the row first.",
+            lambda m, n: binomial(n, m) if m <= n else 0,
+        ),
+        Mistake(
             "off by one row",
             "you returned C(m - 1, n): the row of Pascal's triangle for m is reached after m "
             "steps from the row [1] (row 0).",
@@ -146,14 +189,14 @@ def comb(function: Callable[..., Any]) -> CheckResult:
     ]
     return run_cases(
         "comb",
-        student,
+        function,
         COMB_CASES,
         reference=lambda m, n: binomial(m, n) if n <= m else 0,
         compare=_exact,
-        hint="start from row 0 = [1]; each next row starts and ends with 1, and every entry "
-        "in between is the sum of the two above it. Row m holds C(m, 0) ... C(m, m).",
+        hint=COMB_HINTS,
         mistakes=mistakes,
         watch=_pascal_only,
+        forbidden=_binomials(),
     )
 
 
@@ -162,22 +205,53 @@ def _degree_off_by_one(control_points: np.ndarray, t: float) -> np.ndarray:
     return (bernstein_basis(count, t)[0, :count] @ control_points).reshape(-1)
 
 
+def _int32_weights(control_points: np.ndarray, t: float) -> np.ndarray:
+    n = len(control_points) - 1
+    i = np.arange(n + 1)
+    weights = pascal_row_int32(n).astype(float) * t**i * (1 - t) ** (n - i)
+    return weights @ control_points
+
+
+def _high_degree_cases() -> list[dict[str, Any]]:
+    """A curve of 41 control points: C(40, 20) > 2^31, so 32-bit binomials wrap around."""
+    rng = np.random.default_rng(41)
+    points = rng.uniform(0, 700, (41, 2)).round(1)
+    return [{"control_points": points, "t": t} for t in (0.25, 0.5)]
+
+
+NAIVE_HINTS = register_hints(
+    "naive_bezier",
+    Hints(
+        where="look at the degree n, at the weight each control point gets, and at where "
+        "your sum starts.",
+        more="a curve of N control points has degree n = N - 1; point i is weighted by "
+        "its Bernstein polynomial, built from your comb(n, i) and powers of t and 1 - t, "
+        "and the weights add up to 1. Each call starts its sum from zero.",
+        recipe="n = len(control_points) - 1; return the sum over i = 0 ... n of comb(n, i) "
+        "t^i (1 - t)^(n - i) control_points[i].",
+    ),
+)
+
+
 def naive_bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's Bernstein-form ``naive_bezier(control_points, t)`` of any degree.
 
-    Compared with :func:`course.bezier.bezier_bernstein` on curves of 2 to
-    12 control points, to 1e-9.
+    Compared with the library's Bernstein form on curves of 2 to 12 control
+    points and one of 41, to 1e-9. A pass shows the student's points on
+    seed 000's curve.
 
     Examples
     --------
-    >>> from course.bezier import bezier_bernstein
-    >>> naive_bezier(lambda control_points, t: bezier_bernstein(control_points, t))
-    PASS naive_bezier: all 55 cases pass
+    >>> from course.bezier_handouts import de_casteljau_reversed
+    >>> naive_bezier(de_casteljau_reversed).mistake
+    'the reversed weights'
     """
-    student = positional(function)
+    history: list[np.ndarray] = []
 
     def curve(control_points: np.ndarray, t: float) -> np.ndarray:
-        return bezier_bernstein(control_points, t)
+        point = bezier_bernstein(control_points, t)
+        history.append(point)
+        return point
 
     mistakes = [
         Mistake(
@@ -195,20 +269,32 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
         Mistake(
             "x and y swapped",
             "your point is (y, x): return x first, as the control points' columns are x, y.",
-            lambda control_points, t: curve(control_points, t)[::-1],
+            lambda control_points, t: bezier_bernstein(control_points, t)[::-1],
+        ),
+        Mistake(
+            "32-bit binomials",
+            "your binomials wrapped around at degree 40: C(40, 20) does not fit in a 32-bit "
+            "int. Use your comb, which gives Python's exact ints.",
+            _int32_weights,
+        ),
+        Mistake(
+            "an accumulator not reset",
+            "your answer is the sum of this point and the ones before it: the sum must start "
+            "from zero at each call (the any-degree report's own remark about its point "
+            "declared outside the loop).",
+            lambda control_points, t: np.sum(history, axis=0),
         ),
     ]
     return run_cases(
         "naive_bezier",
-        student,
-        curve_cases(max_points=12),
+        function,
+        curve_cases(max_points=12) + _high_degree_cases(),
         reference=curve,
         compare=close(atol=1e-9, rtol=1e-9),
         convert=as_point,
-        hint="with n = N - 1, add up C(n, i) t^i (1 - t)^(n-i) P[i] for i = 0 ... n; your comb "
-        "gives C(n, i).",
+        hint=NAIVE_HINTS,
         mistakes=mistakes,
-        picture=curve_picture_of(student, curve, "your naive_bezier along the curve")
-        if callable(function)
-        else None,
+        picture=_point_picture(bezier_bernstein, "your naive_bezier"),
+        forbidden=LIBRARY_CURVES,
+        pass_picture=_curve_pass_picture(bezier_bernstein, "naive_bezier"),
     )

@@ -1,16 +1,23 @@
 """Lesson 01's checkers: one de Casteljau level, ``recursive_bezier`` and the drawing loop.
 
-The exercises keep the handouts' signatures. ``next_level(control_points,
-t)`` and ``recursive_bezier(control_points, t)`` take the control points as a
-float array (N, 2) and t as one number; the first returns the N - 1 points
-of the next level, the second the curve point (x, y). ``bezier(control_points,
-window)`` paints the curve into ``window``, an (H, W, 3) float image, in
-green, one pixel per t = 0, 0.001, ..., 1 (seed 000's loop).
+The exercises keep the handouts' signatures, and the student's function is
+called by position, so its parameters may have any names.
+``next_level(control_points, t)`` and ``recursive_bezier(control_points, t)``
+take the control points as a float array (N, 2) and t as one number; the
+first returns the N - 1 points of the next level, the second the curve point
+(x, y). ``bezier(control_points, window)`` paints the curve into ``window``,
+an (H, W, 3) float image, in green, one pixel per t = 0, 0.001, ..., 1
+(seed 000's loop).
 
 Each recognises the handouts' mistakes: the reversed step of seeds 002 and
-004, stopping one level early, x and y swapped, a float loop that never
-reaches t = 1, OpenCV's rounding to the nearest pixel, and a negative index
-that wraps around to the other side of the window.
+004, stopping one level early, x and y swapped, a loop that never reaches
+t = 1, the GAMES101 handout's float32 t, OpenCV's rounding to the nearest
+pixel, and a negative index that wraps around to the other side of the
+window. An answer that calls the library's own curve is told to write it.
+
+Hints come in steps: a failure says where to look, the next failures say
+more; ``check.hint("bezier")`` says more at once and
+``check.hint("bezier", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
@@ -20,29 +27,57 @@ from typing import Any
 
 import numpy as np
 
+from course import bezier as library
 from course._validate import as_int
 from course.bezier import de_casteljau, de_casteljau_levels, uniform_parameters
 from course.bezier_handouts import de_casteljau_reversed
-from course.check.base import CheckResult, Mistake, close, pixel_difference, run_cases, same_pixels
-from course.check.pictures import curve_picture, pixel_picture
+from course.check.base import (
+    AnswerError,
+    CheckResult,
+    Hints,
+    Mistake,
+    close,
+    hint,
+    pixel_difference,
+    pixel_rows,
+    register_hints,
+    run_cases,
+    same_pixels,
+)
+from course.check.pictures import curve_picture, pixel_picture, side_by_side
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 
 __all__ = [
-    "BEZIER_CASES",
+    "BEZIER_SHAPES",
+    "LIBRARY_CURVES",
     "as_point",
     "bezier",
     "curve_cases",
-    "curve_picture_of",
+    "hint",
     "next_level",
     "point_mistakes",
-    "positional",
     "recursive_bezier",
 ]
 
 #: The t step of seed 000's loop, and the values it should take: 0, 0.001, ..., 1.
 STEP = 0.001
 _STEPS = round(1 / STEP)
+_WRITE_IT = "this exercise writes the curve itself, from the interpolation step"
+#: The library's own curves: an answer that calls one is told to write it.
+LIBRARY_CURVES = {
+    function: f"your function calls course.bezier.{function.__name__}, the library's own "
+    f"answer: {_WRITE_IT}"
+    for function in (
+        library.de_casteljau,
+        library.de_casteljau_recursive,
+        library.de_casteljau_levels,
+        library.bezier_bernstein,
+        library.bernstein_basis,
+        library.split,
+        library.sample_uniform,
+    )
+}
 
 
 def curve_cases(max_points: int) -> list[dict[str, Any]]:
@@ -68,38 +103,51 @@ def curve_cases(max_points: int) -> list[dict[str, Any]]:
 
 
 def as_point(value: Any) -> np.ndarray:
-    """A student's point, whatever its container, as a flat float array."""
-    return np.asarray(value, dtype=float).reshape(-1)
+    """A student's point, whatever its container (array, tuple, list), as a flat float array."""
+    try:
+        return np.asarray(value, dtype=float).reshape(-1)
+    except (TypeError, ValueError):
+        raise AnswerError(
+            f"a point is two numbers (x, y); yours is a {type(value).__name__} that is not"
+        ) from None
 
 
-def positional(function: Callable[..., Any]) -> Callable[..., Any]:
-    """Call with positional arguments, so the student may name them as they like."""
-    if not callable(function):
-        return function  # run_cases reports it
-    return lambda control_points, t: function(control_points, t)
-
-
-def curve_picture_of(
-    function: Callable[[np.ndarray, float], Any], reference: Callable[..., Any], title: str
+def _point_picture(
+    reference: Callable[..., Any], title: str
 ) -> Callable[[dict[str, Any], Any, Any], bytes | None]:
-    """A checker's picture: the student's function along the failing case's curve.
-
-    Draws ``function(control_points, t)`` at 41 values of t against the
-    reference curve; a point the student's code cannot give is left out.
-    """
+    """The failing case's picture: its curve, the point expected at its t and the student's."""
 
     def draw(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:
-        control = case["control_points"]
-        ts = np.linspace(0.0, 1.0, 41)
-        theirs = []
-        for t in ts:
-            try:
-                point = np.asarray(function(control.copy(), float(t)), dtype=float).reshape(-1)
-            except Exception:  # the report already names the failing case
-                point = np.full(2, np.nan)
-            theirs.append(point[:2] if point.size >= 2 else np.full(2, np.nan))
-        ours = np.array([reference(control, float(t)) for t in ts])
-        return curve_picture(control, ours, np.array(theirs), title)
+        control = np.asarray(case["control_points"], dtype=float)
+        curve = reference(control, np.linspace(0.0, 1.0, 41))
+        theirs = np.asarray(given, dtype=float).reshape(-1)
+        theirs = theirs[:2].reshape(1, 2) if theirs.size >= 2 else np.full((1, 2), np.nan)
+        return curve_picture(
+            control,
+            curve,
+            theirs,
+            f"{title}, t = {case['t']:g}",
+            mark_start=False,
+            given_label=f"your point at t = {case['t']:g}",
+        )
+
+    return draw
+
+
+def _curve_pass_picture(reference: Callable[..., Any], name: str) -> Callable[[list], bytes]:
+    """A pass's picture: the student's points on seed 000's curve, beside the reference's."""
+
+    def draw(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
+        chosen = [
+            (c, g) for c, _, g in results if np.array_equal(c["control_points"], SEED_000_CUBIC)
+        ]
+        chosen.sort(key=lambda pair: pair[0]["t"])
+        theirs = np.array([np.asarray(g, dtype=float).reshape(-1)[:2] for _, g in chosen])
+        curve = reference(SEED_000_CUBIC, np.linspace(0.0, 1.0, 41))
+        ts = ", ".join(f"{c['t']:g}" for c, _ in chosen)
+        return curve_picture(
+            SEED_000_CUBIC, curve, theirs, f"your {name} at t = {ts}", width_inches=3.0
+        )
 
     return draw
 
@@ -110,8 +158,8 @@ def point_mistakes(curve: Callable[[np.ndarray, float], np.ndarray]) -> list[Mis
         Mistake(
             "the reversed step",
             "your curve runs backwards: you wrote t P[i] + (1 - t) P[i+1], as two of the "
-            "reports do. The textbook step is (1 - t) P[i] + t P[i+1], so that B(0) = P0 and "
-            "B(1) = Pn.",
+            "reports do. The point at t on an edge is t of the way from its first end, so "
+            "that B(0) = P0 and B(1) = Pn.",
             lambda control_points, t: de_casteljau_reversed(control_points, t),
         ),
         Mistake(
@@ -129,212 +177,355 @@ def point_mistakes(curve: Callable[[np.ndarray, float], np.ndarray]) -> list[Mis
     ]
 
 
-def _curve(control_points: np.ndarray, t: float) -> np.ndarray:
+def _curve(control_points: np.ndarray, t: Any) -> np.ndarray:
     return de_casteljau(control_points, t)
+
+
+RECURSIVE_HINTS = register_hints(
+    "recursive_bezier",
+    Hints(
+        where="look at what one call hands to the next, and at when the recursion stops.",
+        more="each call makes one level with one point fewer (your next_level), and passes "
+        "it on with the same t; the call that gets a single point has B(t).",
+        recipe="if len(control_points) == 1, return control_points[0]; otherwise return "
+        "recursive_bezier(next_level(control_points, t), t).",
+    ),
+)
 
 
 def recursive_bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's de Casteljau ``recursive_bezier(control_points, t)``.
 
-    Compared with :func:`course.bezier.de_casteljau` on curves of 2 to 10
-    control points, to 1e-9.
+    Compared with the library's curve on curves of 2 to 10 control points,
+    to 1e-9. A pass shows the student's points on seed 000's curve.
 
     Examples
     --------
-    >>> from course.bezier import de_casteljau
-    >>> recursive_bezier(lambda control_points, t: de_casteljau(control_points, t))
-    PASS recursive_bezier: all 45 cases pass
     >>> from course.bezier_handouts import de_casteljau_reversed
     >>> recursive_bezier(de_casteljau_reversed).mistake
     'the reversed step'
     """
-    student = positional(function)
     return run_cases(
         "recursive_bezier",
-        student,
+        function,
         curve_cases(max_points=10),
         reference=_curve,
         compare=close(atol=1e-9, rtol=1e-9),
         convert=as_point,
-        hint="each call computes the next level (one point fewer, as next_level does) and "
-        "hands it to the next call; the call that gets a single point returns it.",
+        hint=RECURSIVE_HINTS,
         mistakes=point_mistakes(_curve),
-        picture=curve_picture_of(student, _curve, "your recursive_bezier along the curve")
-        if callable(function)
-        else None,
+        picture=_point_picture(_curve, "your recursive_bezier"),
+        forbidden=LIBRARY_CURVES,
+        pass_picture=_curve_pass_picture(_curve, "recursive_bezier"),
     )
 
 
-def _next_level(control_points: np.ndarray, t: float) -> np.ndarray:
+def _reference_level(control_points: np.ndarray, t: float) -> np.ndarray:
     return de_casteljau_levels(control_points, t)[1]
 
 
-def next_level(function: Callable[..., Any]) -> CheckResult:
-    """Check ``next_level(control_points, t)``: the N - 1 points of one de Casteljau step.
-
-    Compared with level 1 of :func:`course.bezier.de_casteljau_levels`, to 1e-9.
-
-    Examples
-    --------
-    >>> next_level(lambda p, t: (1 - t) * p[:-1] + t * p[1:])
-    PASS next_level: all 45 cases pass
-    >>> next_level(lambda p, t: t * p[:-1] + (1 - t) * p[1:]).mistake
-    'the reversed step'
-    """
-    student = positional(function)
-    mistakes = [
+def _level_mistakes() -> list[Mistake]:
+    return [
         Mistake(
             "the reversed step",
             "your points sit at 1 - t along each edge: you wrote t P[i] + (1 - t) P[i+1]. "
-            "The point at t on the edge from P[i] to P[i+1] is (1 - t) P[i] + t P[i+1]: at "
-            "t = 0 it is P[i].",
+            "The point at t on the edge from P[i] to P[i+1] is P[i] at t = 0.",
             lambda control_points, t: de_casteljau_levels(control_points, 1 - t)[1],
         ),
         Mistake(
             "one point short",
-            "your level has N - 2 points: the loop over i must run to N - 2 inclusive, "
-            "range(len(control_points) - 1), one point per edge of the polygon.",
-            lambda control_points, t: _next_level(control_points, t)[:-1],
+            "your level has N - 2 points: there is one new point per edge of the polygon, "
+            "and N points make N - 1 edges.",
+            lambda control_points, t: _reference_level(control_points, t)[:-1],
         ),
         Mistake(
             "an edge from the last point back to the first",
             "your level has N points: np.roll joins the last control point to the first, but "
             "the control polygon is open; it has N - 1 edges.",
-            lambda control_points, t: (
-                (1 - t) * control_points + t * np.roll(control_points, -1, axis=0)
+            lambda control_points, t: _reference_level(
+                np.vstack([control_points, control_points[:1]]), t
             ),
         ),
         Mistake(
             "x and y swapped",
             "your points are (y, x): keep the columns in the order x, y.",
-            lambda control_points, t: _next_level(control_points, t)[:, ::-1],
+            lambda control_points, t: _reference_level(control_points, t)[:, ::-1],
         ),
     ]
-    return run_cases(
-        "next_level",
-        student,
-        curve_cases(max_points=10),
-        reference=_next_level,
-        compare=close(atol=1e-9, rtol=1e-9),
-        convert=lambda value: np.asarray(value, dtype=float),
-        hint="one new point on each edge of the control polygon, at t of the way from its "
-        "first end to its second: N points make N - 1 edges.",
-        mistakes=mistakes,
+
+
+def _as_level(value: Any) -> np.ndarray:
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise AnswerError(
+            "a level is a list or array of (x, y) points, all of the same length"
+        ) from None
+
+
+def _level_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
+    chosen = [
+        (c, g)
+        for c, _, g in results
+        if np.array_equal(c["control_points"], SEED_000_CUBIC) and c["t"] == 0.25
+    ]
+    _, given = chosen[0]
+    return curve_picture(
+        SEED_000_CUBIC,
+        _curve(SEED_000_CUBIC, np.linspace(0.0, 1.0, 41)),
+        np.asarray(given, dtype=float).reshape(-1, 2),
+        "your next level of seed 000's cubic, t = 0.25",
+        width_inches=3.0,
+        mark_start=False,
+        given_label="your level",
     )
 
 
-#: The drawing loop's cases: seed 000's curve on its 700 x 700 window, and a curve that
-#: leaves a small window on every side (its pixels off the window must be skipped).
-BEZIER_CASES = (
-    {"control_points": SEED_000_CUBIC.copy(), "shape": (700, 700)},
-    {
-        "control_points": np.array([[-20.0, 50.0], [30.0, -40.0], [70.0, 90.0], [100.0, 20.0]]),
-        "shape": (60, 80),
-    },
+NEXT_LEVEL_HINTS = register_hints(
+    "next_level",
+    Hints(
+        where="look at the edges of the control polygon: how many there are, and where on "
+        "each your new point sits.",
+        more="each edge from P[i] to P[i+1] gets one new point, t of the way from P[i]: "
+        "at t = 0 it is P[i], at t = 1 it is P[i+1].",
+        recipe="the new point on edge i is (1 - t) P[i] + t P[i+1], for i = 0 ... N - 2; "
+        "with numpy, the first N - 1 rows and the last N - 1 rows of control_points.",
+    ),
 )
 
 
+def next_level(function: Callable[..., Any]) -> CheckResult:
+    """Check ``next_level(control_points, t)``: the N - 1 points of one de Casteljau step.
+
+    Compared with the library's level 1, to 1e-9. A pass shows the
+    student's level on seed 000's control polygon.
+
+    Examples
+    --------
+    >>> next_level(lambda points, t: points).passed
+    False
+    """
+    return run_cases(
+        "next_level",
+        function,
+        curve_cases(max_points=10),
+        reference=_reference_level,
+        compare=close(atol=1e-9, rtol=1e-9),
+        convert=_as_level,
+        hint=NEXT_LEVEL_HINTS,
+        mistakes=_level_mistakes(),
+        forbidden=LIBRARY_CURVES,
+        pass_picture=_level_pass_picture,
+    )
+
+
+#: The drawing loop's windows: seed 000's curve on its 700 x 700 window, a curve that
+#: leaves a small window on every side (its pixels off the window must be skipped, and it
+#: crosses x = width and y = height, where a test `x <= width` indexes past the end), and
+#: a curve on a 24 x 24 window.
+BEZIER_SHAPES = (
+    (SEED_000_CUBIC, (700, 700)),
+    (np.array([[-20.0, 50.0], [30.0, -40.0], [70.0, 90.0], [100.0, 20.0]]), (60, 80)),
+    (np.array([[2.2, 20.5], [5.0, 1.5], [21.0, 3.5]]), (24, 24)),
+)
+GREEN = (0.0, 1.0, 0.0)
+
+
+def _bezier_cases() -> list[dict[str, Any]]:
+    return [
+        {"control_points": points.copy(), "window": np.zeros((*shape, 3))}
+        for points, shape in BEZIER_SHAPES
+    ]
+
+
 def _loop_pixels(
-    control_points: np.ndarray, shape: tuple[int, int], t: np.ndarray, rounding: str = "floor"
+    control_points: np.ndarray, shape: tuple[int, ...], t: np.ndarray, rounding: str = "floor"
 ) -> np.ndarray:
     curve = de_casteljau(control_points, t)
-    return nearest_pixels(curve, rounding=rounding, shape=shape)
+    return nearest_pixels(curve, rounding=rounding, shape=shape[:2])
 
 
-def _bezier_reference(control_points: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
-    return _loop_pixels(control_points, shape, np.arange(_STEPS + 1) / _STEPS)
+def _every_t() -> np.ndarray:
+    return np.arange(_STEPS + 1) / _STEPS
 
 
-def _wrapped(control_points: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
-    height, width = shape
-    pixels = nearest_pixels(de_casteljau(control_points, np.arange(_STEPS + 1) / _STEPS))
+def _bezier_reference(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
+    return _loop_pixels(control_points, window.shape, _every_t())
+
+
+def _wrapped(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
+    height, width = window.shape[:2]
+    pixels = nearest_pixels(de_casteljau(control_points, _every_t()))
     # Python counts a negative index from the end; one past the end raises instead.
     keep = (pixels[:, 0] >= -width) & (pixels[:, 0] < width)
     keep &= (pixels[:, 1] >= -height) & (pixels[:, 1] < height)
     return pixels[keep] % (width, height)
 
 
-def _green_pixels(window: Any) -> np.ndarray:
-    """The pixels a student painted green: (x, y) where the green channel is over one half."""
-    image = np.asarray(window, dtype=float)
-    rows, columns = np.nonzero(image[..., 1] > 0.5)
-    return np.column_stack([columns, rows])
+class _Painting:
+    """The pixels a student painted (any channel not 0), and the first in the wrong colour."""
+
+    def __init__(self, window: Any) -> None:
+        image = np.asarray(window)
+        if image.ndim != 3 or image.shape[2] != 3 or image.dtype.kind not in "biuf":
+            raise AnswerError(
+                f"the window must stay an (H, W, 3) image of numbers; yours is {image.shape}"
+            )
+        painted = (image != 0).any(axis=2)
+        rows, columns = np.nonzero(painted)
+        self.window = image
+        self.pixels = np.column_stack([columns, rows]).astype(np.int64)
+        colours = image[rows, columns].astype(float)
+        wrong = ~(colours == GREEN).all(axis=1)
+        self.wrong_colour = None
+        if wrong.any():
+            k = int(np.argmax(wrong))
+            self.wrong_colour = (int(columns[k]), int(rows[k]), tuple(colours[k].tolist()))
 
 
-def bezier(function: Callable[..., Any]) -> CheckResult:
-    """Check a student's drawing loop ``bezier(control_points, window)``.
+def _same_painting(expected: np.ndarray, given: _Painting) -> bool:
+    return given.wrong_colour is None and same_pixels(expected, given.pixels)
 
-    It must paint green (``window[y, x] = (0, 1, 0)``) the pixel that holds
-    the curve point at each t = 0, 0.001, ..., 1, and skip points off the
-    window: the painted pixels must be those of :func:`course.bezier.de_casteljau`
-    at those 1001 values, each in the pixel whose square holds it.
 
-    Examples
-    --------
-    >>> from course.canvas import paint
-    >>> def good(control_points, window):
-    ...     t = np.arange(1001) / 1000
-    ...     points = de_casteljau(control_points, t)
-    ...     paint(window, nearest_pixels(points), (0.0, 1.0, 0.0), mode="over")
-    >>> bezier(good)
-    PASS bezier: all 2 cases pass
-    """
+def _painting_difference(expected: np.ndarray, given: _Painting) -> str:
+    if given.wrong_colour is not None and same_pixels(expected, given.pixels):
+        x, y, colour = given.wrong_colour
+        shown = ", ".join(f"{c:g}" for c in colour)
+        return (
+            f"the right pixels, but pixel ({x}, {y}) is ({shown}): paint the curve green, (0, 1, 0)"
+        )
+    return pixel_difference(expected, given.pixels)
 
-    def paint_into_window(control_points: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
-        window = np.zeros((*shape, 3))
-        function(control_points, window)
-        return _green_pixels(window)
 
-    float_loop = uniform_parameters(STEP, accumulate="float64")
-    mistakes = [
+def _show_painting(answer: Any) -> str:
+    if isinstance(answer, _Painting):
+        return f"{len(answer.pixels)} pixels painted"
+    return f"{len(np.unique(pixel_rows(answer, 'expected'), axis=0))} pixels painted"
+
+
+def _pixels_of(answer: Any) -> Any:
+    return answer.pixels if isinstance(answer, _Painting) else answer
+
+
+def _bezier_mistakes() -> list[Mistake]:
+    stops_short = uniform_parameters(STEP, accumulate="float64")
+    float32_loop = uniform_parameters(STEP, accumulate="float32")
+
+    def pixels_match(mistaken: Any, given: Any) -> bool:
+        return same_pixels(mistaken, _pixels_of(given))
+
+    return [
         Mistake(
-            "the float loop that stops short of t = 1",
-            "you add 0.001 to t a thousand times; in floating point the sum passes 1 after "
-            "0.999, so the loop ends without t = 1 and the curve's last pixel stays dark. "
-            "Count whole steps instead: for k in range(1001): t = k / 1000.",
-            lambda control_points, shape: _loop_pixels(control_points, shape, float_loop),
+            "the loop stops before t = 1",
+            "your loop never reaches t = 1, so the curve's last pixel stays dark: range(1000) "
+            "and np.arange(0, 1, 0.001) stop at 0.999, and adding 0.001 to t a thousand times "
+            "passes 1 by a rounding error. Count whole steps, so that the last t is exactly 1.",
+            lambda control_points, window: _loop_pixels(control_points, window.shape, stops_short),
+            matches=pixels_match,
+        ),
+        Mistake(
+            "the float32 loop of the GAMES101 handout",
+            "your t drifts: the handout's `float t` keeps about 7 digits, and a thousand "
+            "additions of 0.001 move the points enough to change pixels in the middle of the "
+            "curve. Compute each t from a whole count, in Python's float.",
+            lambda control_points, window: _loop_pixels(control_points, window.shape, float32_loop),
+            matches=pixels_match,
         ),
         Mistake(
             "rounding to the nearest pixel",
             "you rounded x and y, as OpenCV's cv::Point does in the GAMES101 report: that "
             "paints the pixel whose corner is nearest, half a pixel off. The pixel that holds "
-            "(x, y) is (int(x), int(y)) for x, y >= 0 (floor).",
-            lambda control_points, shape: _loop_pixels(
-                control_points, shape, np.arange(_STEPS + 1) / _STEPS, "round"
+            "(x, y) is the one whose square [x0, x0 + 1) x [y0, y0 + 1) contains it.",
+            lambda control_points, window: _loop_pixels(
+                control_points, window.shape, _every_t(), "round"
             ),
+            matches=pixels_match,
         ),
         Mistake(
             "x and y swapped",
             "you wrote window[x, y]: an image is indexed by row first, window[y, x].",
-            lambda control_points, shape: _bezier_reference(control_points, shape[::-1])[:, ::-1],
+            lambda control_points, window: _loop_pixels(
+                control_points, window.shape[1::-1], _every_t()
+            )[:, ::-1],
+            matches=pixels_match,
         ),
         Mistake(
             "a negative index wraps around",
             "a pixel with x < 0 or y < 0 appeared on the other side of the window: Python "
-            "counts a negative index from the end. Skip every point with x < 0, y < 0, "
-            "x >= width or y >= height.",
+            "counts a negative index from the end. Skip every point off the window.",
             _wrapped,
+            matches=pixels_match,
         ),
         Mistake(
             "a step of 0.01",
             "your step is ten times too coarse: 101 points leave gaps on a curve about 1400 "
             "pixels long. Use 0.001, as the handout does.",
-            lambda control_points, shape: _loop_pixels(control_points, shape, np.arange(101) / 100),
+            lambda control_points, window: _loop_pixels(
+                control_points, window.shape, np.arange(101) / 100
+            ),
+            matches=pixels_match,
         ),
     ]
 
-    def picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
-        return pixel_picture(expected, given, title="around the first difference")
 
+def _bezier_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
+    return pixel_picture(expected, _pixels_of(given), title="around the first difference")
+
+
+def _bezier_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
+    case, expected, given = results[0]
+    reference = np.zeros(case["window"].shape)
+    reference[expected[:, 1], expected[:, 0]] = GREEN
+    return side_by_side(reference, given.window, ("expected", "your window"), shrink="max")
+
+
+BEZIER_HINTS = register_hints(
+    "bezier",
+    Hints(
+        where="look at the values t takes (the first and the last), at which pixel each point "
+        "lands in, and at points off the window.",
+        more="t must run from 0 to exactly 1 in steps of 0.001; the pixel holding (x, y) has "
+        "the whole parts of x and y, rows first in the window; a point with x or y below 0, "
+        "or at width or height and beyond, is skipped.",
+        recipe="for k in range(1001): t = k / 1000; x, y = recursive_bezier(control_points, "
+        "t); if 0 <= x < width and 0 <= y < height: window[int(y), int(x)] = (0, 1, 0).",
+    ),
+)
+
+
+def bezier(function: Callable[..., Any]) -> CheckResult:
+    """Check a student's drawing loop ``bezier(control_points, window)``.
+
+    It must paint green, ``(0, 1, 0)``, the pixel that holds the curve point
+    at each t = 0, 0.001, ..., 1, nothing else, and skip points off the
+    window. Writing into ``window`` is the exercise; the control points must
+    stay as they were. A pass shows the student's window beside the
+    expected one.
+
+    Examples
+    --------
+    >>> print(bezier(lambda control_points, window: None))  # doctest: +ELLIPSIS
+    FAIL bezier: case 1 is wrong
+      inputs: control_points=...
+      expected: 955 pixels painted
+      given:    0 pixels painted
+      955 pixels missing, first (10, 10)
+    ...
+    """
     return run_cases(
         "bezier",
-        paint_into_window if callable(function) else function,
-        BEZIER_CASES,
+        function,
+        _bezier_cases(),
         reference=_bezier_reference,
-        compare=same_pixels,
-        hint="count the steps with a whole number, so that the last t is exactly 1; paint the "
-        "pixel whose square holds the point (rows are y); skip the points off the window.",
-        mistakes=mistakes,
-        difference=pixel_difference,
-        picture=picture,
+        compare=_same_painting,
+        convert=_Painting,
+        hint=BEZIER_HINTS,
+        mistakes=_bezier_mistakes(),
+        difference=_painting_difference,
+        picture=_bezier_picture,
+        show=_show_painting,
+        answer=lambda returned, arguments: arguments[1],
+        writable=("window",),
+        forbidden=LIBRARY_CURVES,
+        pass_picture=_bezier_pass_picture,
     )

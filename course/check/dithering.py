@@ -5,27 +5,58 @@ the first wrong pixel (for error diffusion, with the value and the error
 carried into it), and recognises the slips the lab's reports make or invite:
 the matrix read transposed, ``>=`` for ``>``, one comparison per pixel
 without the 3 x 3 enlargement; a left edge that wraps around, a serpentine
-scan, errors that are never read.
+scan, errors that are never read, the error's sign flipped, the kernel
+mirrored, and the input dithered in place (the lab report's missing copy).
+Both checkers end on a small face; a pass shows the student's dithered face
+beside the expected one.
+
+Hints come in steps: a failure says where to look, the next failures say
+more; ``check.hint("dithering_ordered")`` says more at once and
+``check.hint("dithering_ordered", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import cache
 from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, Mistake, close, run_cases
-from course.check.pictures import image_picture
+from course import dither
+from course import error_diffusion as diffusion
+from course.check.base import CheckResult, Hints, Mistake, close, hint, register_hints, run_cases
+from course.check.pictures import image_picture, side_by_side
 from course.dither import ORDERED_MATRIX, ordered, threshold
 from course.error_diffusion import (
     error_diffusion,
     error_diffusion_values,
     error_diffusion_wraparound,
 )
-from course.images import ramp
+from course.images import face, ramp
 
-__all__ = ["dithering_error_diffuse", "dithering_ordered"]
+__all__ = ["dithering_error_diffuse", "dithering_ordered", "hint"]
+
+_LIBRARY = {
+    function: f"your function calls {function.__module__}.{function.__name__}, the library's "
+    "own answer: this exercise writes it"
+    for function in (
+        dither.ordered,
+        diffusion.error_diffusion,
+        diffusion.error_diffusion_values,
+    )
+}
+
+
+@cache
+def _small_face() -> np.ndarray:
+    """Lesson 06's face at a quarter of its pixels, 75 x 64: quick to dither in a Python loop."""
+    return face()[::2, ::2].copy()
+
+
+def _face_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
+    _, expected, given = results[-1]
+    return side_by_side(expected, given, ("expected", "your dithered face"))
 
 
 def _as_output(value: Any) -> np.ndarray:
@@ -48,6 +79,7 @@ def _ordered_cases() -> list[dict[str, Any]]:
         {"gray": levels},
         {"gray": np.array([[0.3, 0.75, 0.05], [0.55, 0.95, 0.45]])},
         {"gray": rng.random((4, 7))},
+        {"gray": _small_face()},
     ]
 
 
@@ -80,8 +112,6 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> dithering_ordered(ordered)
-    PASS DitheringOrdered: all 3 cases pass
     >>> dithering_ordered(_ordered_with(ORDERED_MATRIX.T, np.greater)).mistake
     'the matrix transposed'
     """
@@ -113,11 +143,26 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
         reference=ordered,
         compare=close(atol=0, rtol=0),
         convert=_as_output,
-        hint="make an output three times larger; for each input pixel (x, y) and each i, j in "
-        "0, 1, 2, set output[3 y + i, 3 x + j] to 1 where the value is > M[i][j] / 9.",
+        hint=ORDERED_HINTS,
         mistakes=mistakes,
         picture=_picture,
+        forbidden=_LIBRARY,
+        pass_picture=_face_pass_picture,
     )
+
+
+ORDERED_HINTS = register_hints(
+    "DitheringOrdered",
+    Hints(
+        where="look at the output's size, at which sub-pixel of a cell compares with which "
+        "entry of M, and at the comparison itself.",
+        more="each input pixel becomes a 3 x 3 cell; row i, column j of the cell compares "
+        "the pixel's value with M[i][j] / 9, lit only where the value is greater.",
+        recipe="output = zeros(3 H, 3 W); for each (x, y) and i, j in range(3): output[3 y + "
+        "i, 3 x + j] = 1 if gray[y, x] > M[i][j] / 9 else 0.",
+    ),
+    "dithering_ordered",
+)
 
 
 def _diffusion_cases() -> list[dict[str, Any]]:
@@ -129,7 +174,28 @@ def _diffusion_cases() -> list[dict[str, Any]]:
         {"gray": np.full((8, 1), 0.3)},
         {"gray": rng.random((9, 13))},
         {"gray": rng.random((16, 16))},
+        {"gray": _small_face()},
     ]
+
+
+#: Floyd-Steinberg's pushes as the lab writes them: (dx, dy, sixteenths).
+_KERNEL = ((1, 0, 7), (-1, 1, 3), (0, 1, 5), (1, 1, 1))
+_MIRRORED = ((1, 0, 7), (1, 1, 3), (0, 1, 5), (-1, 1, 1))
+
+
+def _diffused(gray: Any, kernel: tuple = _KERNEL, sign: float = 1.0) -> np.ndarray:
+    """The lab's loop with a given kernel, or with the error's sign flipped: the slips' answers."""
+    buffer = np.array(gray, dtype=float)
+    height, width = buffer.shape
+    output = np.zeros_like(buffer)
+    for y in range(height):
+        for x in range(width):
+            output[y, x] = 1.0 if buffer[y, x] > 0.5 else 0.0
+            error = sign * (buffer[y, x] - output[y, x])
+            for dx, dy, weight in kernel:
+                if 0 <= x + dx < width and y + dy < height:
+                    buffer[y + dy, x + dx] += error * weight / 16
+    return output
 
 
 def _carried(case: dict[str, Any], expected: Any, given: Any) -> str:
@@ -160,8 +226,6 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> dithering_error_diffuse(lambda gray: error_diffusion(gray, method="loop"))
-    PASS DitheringErrorDiffuse: all 6 cases pass
     >>> dithering_error_diffuse(error_diffusion_wraparound).mistake
     'the left edge wraps around'
     """
@@ -180,6 +244,19 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
             lambda gray: error_diffusion(gray, serpentine=True, method="loop"),
         ),
         Mistake(
+            "the error's sign flipped",
+            "you pushed output - value instead of value - output: each neighbour then moves "
+            "away from the tone it should keep. The error is what the pixel wanted minus "
+            "what it got.",
+            lambda gray: _diffused(gray, sign=-1.0),
+        ),
+        Mistake(
+            "the kernel mirrored",
+            "your 3/16 and 1/16 are swapped: 3/16 goes below left, (x - 1, y + 1), and 1/16 "
+            "below right, (x + 1, y + 1), as on the slide.",
+            lambda gray: _diffused(gray, kernel=_MIRRORED),
+        ),
+        Mistake(
             "the errors are never read",
             "you thresholded the input itself: the errors must go into a copy of the image "
             "(the report's inputcopy), and each pixel is thresholded with what it received.",
@@ -190,13 +267,36 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
         "DitheringErrorDiffuse",
         student,
         _diffusion_cases(),
-        reference=lambda gray: error_diffusion(gray, method="loop"),
+        reference=_loop_reference,
         compare=close(atol=0, rtol=0),
         convert=_as_output,
-        hint="visit the pixels row by row, left to right; threshold each at 0.5, and pass its "
-        "error (value - output) on to the four neighbours not yet visited, 7/16 to the right, "
-        "3/16, 5/16, 1/16 below.",
+        hint=DIFFUSION_HINTS,
         mistakes=mistakes,
         picture=_picture,
         explain=_carried,
+        forbidden=_LIBRARY,
+        on_change="This is the lab report's own slip: its loop pushes the errors into the "
+        "input image itself. Push them into a copy (buffer = gray.copy()), so that the "
+        "caller's image stays as it was.",
+        pass_picture=_face_pass_picture,
     )
+
+
+def _loop_reference(gray: Any) -> np.ndarray:
+    return error_diffusion(gray, method="loop")
+
+
+DIFFUSION_HINTS = register_hints(
+    "DitheringErrorDiffuse",
+    Hints(
+        where="look at the order you visit the pixels in, at what each pixel is compared "
+        "with, and at where its error goes.",
+        more="visit the pixels row by row, left to right, in a copy of the image; each is "
+        "thresholded at 0.5 with the errors it has received, and its own error (what it "
+        "wanted minus what it got) is shared among the four neighbours not yet visited.",
+        recipe="buffer = gray.copy(); for y, for x: output = 1 if buffer[y, x] > 0.5 else 0; "
+        "error = buffer[y, x] - output; add 7/16 of it right, 3/16 below left, 5/16 below, "
+        "1/16 below right, skipping pushes off the image.",
+    ),
+    "dithering_error_diffuse",
+)

@@ -4,23 +4,38 @@ A failure names the first wrong pixel as (x, y) with its window (how many of
 its nine neighbours lie inside the image), draws a map of where the output
 differs, and recognises the usual border slips: zero padding (dividing by 9
 everywhere), the frame skipped or copied, the nearest pixel repeated where
-the report averages only the pixels inside; for Sobel also a clipped
-magnitude and Gx alone.
+the report averages only the pixels inside, and a window sliced from
+``y - 1`` at y = 0 (Python reads ``image[-1:2]`` as empty); for Sobel also a
+clipped magnitude and Gx alone. A blur that writes into its input fails,
+however right its values. A pass shows the student's output beside the
+expected one.
+
+Hints come in steps: a failure says where to look, the next failures say
+more; ``check.hint("blur")`` says more at once and
+``check.hint("blur", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, Mistake, close, run_cases
-from course.check.pictures import image_picture
+from course import filters
+from course.check.base import CheckResult, Hints, Mistake, close, hint, register_hints, run_cases
+from course.check.pictures import image_picture, side_by_side
 from course.filters import BOX, SOBEL_X, convolve, sobel
 from course.filters import blur as reference_blur
 
-__all__ = ["blur", "edge"]
+__all__ = ["blur", "edge", "hint"]
+
+_LIBRARY = {
+    function: f"your function calls course.filters.{function.__name__}, the library's own "
+    "answer: this exercise writes it"
+    for function in (filters.blur, filters.sobel, filters.convolve)
+}
 
 
 def _cases() -> list[dict[str, Any]]:
@@ -28,6 +43,7 @@ def _cases() -> list[dict[str, Any]]:
     square = np.full((8, 10), 0.2)
     square[2:6, 3:8] = 0.9  # a bright square: its edges and the frame show in the map
     return [
+        {"image": rng.random((4, 4))},  # small enough to read in the report
         {"image": square},
         {"image": rng.random((5, 7))},
         {"image": rng.random((1, 1))},
@@ -83,7 +99,34 @@ def _correlate(image: Any, kernel: np.ndarray, border: str) -> np.ndarray:
     return convolve(image, kernel[::-1, ::-1], border)
 
 
+def _sliced_from_minus_one(image: Any) -> np.ndarray:
+    """Each pixel the mean of image[y - 1 : y + 2, x - 1 : x + 2]: empty at y = 0 or x = 0."""
+    array = np.asarray(image, dtype=float)
+    output = np.zeros_like(array)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for y in range(array.shape[0]):
+            for x in range(array.shape[1]):
+                output[y, x] = array[y - 1 : y + 2, x - 1 : x + 2].mean(axis=(0, 1))
+    return output
+
+
+def _same_or_both_nan(expected: Any, given: Any) -> bool:
+    want, have = _as_float(expected), _as_float(given)
+    return want.shape == have.shape and bool(
+        np.allclose(have, want, atol=1e-9, rtol=1e-9, equal_nan=True)
+    )
+
+
 BLUR_MISTAKES = (
+    Mistake(
+        "a window sliced from y - 1 at y = 0",
+        "at y = 0 (or x = 0) your window image[y - 1 : y + 2] starts at -1, which Python "
+        "reads as the last row, so the slice is empty and its mean is NaN. Start the slice "
+        "at max(y - 1, 0).",
+        _sliced_from_minus_one,
+        matches=_same_or_both_nan,
+    ),
     Mistake(
         "zero padding",
         "you divide by 9 everywhere, as if the pixels outside the image were black: the frame "
@@ -149,9 +192,8 @@ def blur(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> from course.filters import blur as library_blur
-    >>> blur(library_blur)
-    PASS Blur: all 7 cases pass
+    >>> blur(lambda image: image).passed
+    False
     """
     return run_cases(
         "Blur",
@@ -160,13 +202,35 @@ def blur(student: Callable[..., Any]) -> CheckResult:
         reference_blur,
         close(1e-9),
         _as_float,
-        hint="each output pixel is the mean of the 3 x 3 neighbours that lie inside the image: "
-        "9 inside, 6 on an edge, 4 at a corner.",
+        hint=BLUR_HINTS,
         mistakes=BLUR_MISTAKES,
         picture=_picture,
         explain=_explain,
         show=_summary,
+        forbidden=_LIBRARY,
+        pass_picture=_pass_picture,
     )
+
+
+def _pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
+    _, expected, given = results[1]  # the bright square
+    top = max(float(np.max(expected)), 1.0)
+    return side_by_side(expected / top, _as_float(given) / top, ("expected", "your output"))
+
+
+BLUR_HINTS = register_hints(
+    "Blur",
+    Hints(
+        where="look at the pixels on the image's border: which neighbours you read there, "
+        "and what you divide by.",
+        more="each output pixel is the mean of those of its 3 x 3 neighbours that exist: 9 "
+        "inside, 6 on an edge, 4 at a corner; nothing outside the image is read, and the "
+        "input is left as it was.",
+        recipe="output = zeros_like(image); for each (x, y): window = image[max(y - 1, 0) : "
+        "y + 2, max(x - 1, 0) : x + 2]; output[y, x] = window.mean(axis=(0, 1)).",
+    ),
+    "blur_exercise",
+)
 
 
 def edge(student: Callable[..., Any]) -> CheckResult:
@@ -180,21 +244,41 @@ def edge(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> from course.filters import sobel
-    >>> edge(sobel)
-    PASS Edge: all 7 cases pass
+    >>> edge(lambda image: image).passed
+    False
     """
     return run_cases(
         "Edge",
         student,
         _cases(),
-        lambda image: sobel(image, border="replicate"),
+        _sobel_replicated,
         close(1e-9),
         _as_float,
-        hint="read outside pixels from the nearest pixel inside (clamp the index); Gx and Gy "
-        "are two 3 x 3 weighted sums, and the answer is sqrt(Gx^2 + Gy^2).",
+        hint=EDGE_HINTS,
         mistakes=EDGE_MISTAKES,
         picture=_picture,
         explain=_explain,
         show=_summary,
+        forbidden=_LIBRARY,
+        pass_picture=_pass_picture,
     )
+
+
+def _sobel_replicated(image: Any) -> np.ndarray:
+    return sobel(image, border="replicate")
+
+
+EDGE_HINTS = register_hints(
+    "Edge",
+    Hints(
+        where="look at the border pixels (what you read outside the image), and at how you "
+        "combine the two gradients.",
+        more="outside the image, read the nearest pixel inside; Gx and Gy are the dot "
+        "products of the two Sobel kernels with each 3 x 3 window, and the output is the "
+        "length of (Gx, Gy), not clipped.",
+        recipe="pad the image by one pixel with its edge values (np.pad, mode='edge'); for "
+        "each (x, y), window = padded[y : y + 3, x : x + 3]; gx, gy = the sums of SOBEL_X and "
+        "SOBEL_Y times window; output[y, x] = sqrt(gx**2 + gy**2).",
+    ),
+    "edge_exercise",
+)

@@ -7,8 +7,14 @@ inside, each once, in any order (the lab fills them by scanline; any method
 that takes the same pixels passes). A failure shows the missing and extra
 pixels as a picture and names the handouts' mistakes: the report's
 4-connected staircase, a line drawn backwards or short of an end, and for
-triangles the closed and open edge rules and pixel corners taken for
-centres.
+triangles the closed and open edge rules, the bottom row filled, vertices
+made whole and pixel corners taken for centres. Pictures count pixels on
+their axes and draw the triangle's edges. An answer that calls the
+library's own line or fill is told to write it.
+
+Hints come in steps: a failure says where to look, the next failures say
+more; ``check.hint("draw_line")`` says more at once and
+``check.hint("draw_line", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
@@ -18,11 +24,34 @@ from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, Mistake, pixel_difference, run_cases
+from course import raster
+from course.check.base import (
+    CheckResult,
+    Hints,
+    Mistake,
+    hint,
+    pixel_difference,
+    pixel_rows,
+    register_hints,
+    run_cases,
+    same_pixels,
+)
 from course.check.pictures import pixel_picture
 from course.raster import line, line_4connected, triangle
 
-__all__ = ["draw_line", "draw_triangle_filled"]
+__all__ = ["draw_line", "draw_triangle_filled", "hint"]
+
+_RASTER = {
+    function: f"your function calls course.raster.{function.__name__}, the library's own "
+    "answer: this exercise writes it"
+    for function in (
+        raster.line,
+        raster.line_4connected,
+        raster.triangle,
+        raster.triangle_coverage,
+        raster.wu_line,
+    )
+}
 
 # Every octant, both axes, a single pixel, slopes of exactly 1 and 1/2, and
 # lines with ties (the ideal line midway between two pixels).
@@ -56,11 +85,34 @@ _TRIANGLE_CASES = [
     ((1, 1), (5, 3), (9, 5)),  # zero area: no pixels
     ((2, 2), (2, 2), (7, 4)),  # two equal vertices: no pixels
     ((0, 2), (12, 2.4), (6, 2.2)),  # thinner than a row
+    ((0.5, 0.5), (0.5, 5.5), (7.5, 5.5)),  # a flat bottom edge on a row of centres: 16 pixels
+    ((0.7, 0.2), (6.6, 1.3), (2.4, 7.8)),  # float vertices whose whole parts fill otherwise
 ]
 
 
-def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
-    return pixel_picture(expected, given, title="around the first difference")
+def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:
+    if same_pixels(expected, given):
+        return None  # the same pixels, some repeated: the words say it, a picture cannot
+    outline = [case[name] for name in ("p0", "p1", "p2") if name in case]
+    return pixel_picture(
+        expected,
+        given,
+        title="around the first difference",
+        outline=outline if len(outline) == 3 else None,
+    )
+
+
+def _pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
+    case, expected, given = results[0]
+    outline = [case[name] for name in ("p0", "p1", "p2") if name in case]
+    return pixel_picture(
+        expected,
+        given,
+        window=14,
+        zoom=12,
+        title="your pixels for case 1",
+        outline=outline if len(outline) == 3 else None,
+    )
 
 
 def _ordered_same(expected: Any, given: Any) -> bool:
@@ -78,10 +130,8 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> draw_line(lambda p0, p1: line(p0, p1))
-    PASS DrawLine: all 15 cases pass
-    >>> draw_line(lambda p0, p1: line_4connected(p0, p1)).mistake
-    "the report's staircase"
+    >>> draw_line(lambda p0, p1: [p0, p1]).passed
+    False
     """
     cases = [{"p0": p0, "p1": p1} for p0, p1 in _LINE_CASES]
     mistakes = [
@@ -90,7 +140,7 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
             "every step of your line moves in x or in y, never both: the lab report's `else` "
             "between the two tests. A line steps diagonally whenever both errors call for it, "
             "so it has max(|dx|, |dy|) + 1 pixels, not |dx| + |dy| + 1.",
-            lambda p0, p1: line_4connected(p0, p1),
+            _staircase,
             matches=_ordered_same,
         ),
         Mistake(
@@ -119,12 +169,33 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
         line,
         _is_bresenham_line,
         _as_pixel_array,
-        hint="step one pixel at a time along the longer axis; carry an error term that says "
-        "when to step along the shorter one too (diagonally), never both separately.",
+        hint=LINE_HINTS,
         mistakes=mistakes,
         difference=pixel_difference,
         picture=_picture,
+        forbidden=_RASTER,
+        pass_picture=_pass_picture,
     )
+
+
+def _staircase(p0: Any, p1: Any) -> Any:
+    return line_4connected(p0, p1)
+
+
+LINE_HINTS = register_hints(
+    "DrawLine",
+    Hints(
+        where="look at the first and the last pixel, and at each step: how far it moves "
+        "along each axis, and when the loop stops.",
+        more="step one pixel at a time along the longer axis; an error term says when the "
+        "line has drifted half a pixel along the shorter one, and then that step moves "
+        "along both (diagonally). The loop stops at p1.",
+        recipe="dx = |x1 - x0|, dy = |y1 - y0|, sx and sy the signs, error = dx - dy; "
+        "paint (x, y); while not at p1: e2 = 2 error; if e2 > -dy: error -= dy, x += sx; "
+        "if e2 < dx: error += dx, y += sy; paint (x, y).",
+    ),
+    "draw_line",
+)
 
 
 def _corners_inside(p0: Any, p1: Any, p2: Any) -> np.ndarray:
@@ -145,10 +216,8 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2))
-    PASS DrawTriangleFilled: all 11 cases pass
-    >>> draw_triangle_filled(lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed")).mistake
-    'every edge closed'
+    >>> draw_triangle_filled(lambda p0, p1, p2: [p0, p1, p2]).passed
+    False
     """
     cases = [{"p0": p0, "p1": p1, "p2": p2} for p0, p1, p2 in _TRIANGLE_CASES]
     mistakes = [
@@ -160,6 +229,22 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
             lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed"),
         ),
         Mistake(
+            "the bottom row filled",
+            "your rows run over [y_top, y_bottom], the last one included: a row of centres "
+            "exactly on a flat bottom edge belongs to the triangle below. Take the rows over "
+            "[y_top, y_bottom).",
+            _bottom_row_filled,
+        ),
+        Mistake(
+            "the vertices made whole",
+            "your triangle's vertices were cut to whole numbers (int() or a cast) before "
+            "filling: a vertex at (0.7, 0.2) moved to (0, 0). Keep them as floats; only the "
+            "pixels are whole.",
+            lambda p0, p1, p2: triangle(
+                *(np.trunc(np.asarray(p, dtype=float)) for p in (p0, p1, p2))
+            ),
+        ),
+        Mistake(
             "every edge open",
             "you leave out every centre that lies on an edge, so two triangles sharing that "
             "edge would both skip it: a crack. Include the left and the top ones: "
@@ -169,7 +254,7 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
         Mistake(
             "pixel corners for centres",
             "you tested the pixel's corner (x, y), not its centre (x + 0.5, y + 0.5): the whole "
-            "triangle is off by half a pixel.",
+            "triangle is off by half a pixel, up and left.",
             _corners_inside,
         ),
     ]
@@ -180,18 +265,44 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
         triangle,
         _same_pixel_set,
         _as_pixel_array,
-        hint="sort the vertices by y and fill the rows of pixel centres between the top and "
-        "the bottom; on each row, the centres between the two edges' x, the left edge in and "
-        "the right edge out. Split at the middle vertex so that no edge is horizontal.",
+        hint=TRIANGLE_HINTS,
         mistakes=mistakes,
         difference=pixel_difference,
         picture=_picture,
+        forbidden=_RASTER,
+        pass_picture=_pass_picture,
     )
 
 
+def _bottom_row_filled(p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    """The fill with each triangle's last row of centres taken too: rows over [top, bottom]."""
+    closed = triangle(p0, p1, p2, rule="closed")
+    inside = triangle(p0, p1, p2)
+    bottom = max(float(p[1]) for p in (p0, p1, p2))
+    on_bottom = closed[(closed[:, 1] + 0.5 == bottom)]
+    rows = np.vstack([inside, on_bottom]) if len(on_bottom) else inside
+    return np.unique(rows, axis=0)
+
+
+TRIANGLE_HINTS = register_hints(
+    "DrawTriangleFilled",
+    Hints(
+        where="look at which rows your loop fills (the first and the last), and at the "
+        "pixels where a row of centres meets an edge.",
+        more="a pixel is in when its centre (x + 0.5, y + 0.5) is inside; a centre exactly "
+        "on an edge belongs to the triangle only on the left or the top edge, so a row on a "
+        "flat bottom edge, and a centre on a right edge, are left out.",
+        recipe="sort the vertices by y; for each row of centres from ceil(y_top - 0.5) to "
+        "ceil(y_bottom - 0.5) - 1, find the two edges' x at y + 0.5 and take the pixels "
+        "from ceil(x_left - 0.5) to ceil(x_right - 0.5) - 1, splitting at the middle vertex.",
+    ),
+    "draw_triangle_filled",
+)
+
+
 def _as_pixel_array(given: Any) -> np.ndarray:
-    """The student's pixels as an (K, 2) array; a list of (x, y) pairs is fine."""
-    return np.asarray([tuple(pixel) for pixel in given], dtype=float).reshape(-1, 2)
+    """The student's pixels as a (K, 2) array; a list of (x, y) pairs is fine."""
+    return pixel_rows(given).astype(float)
 
 
 def _is_bresenham_line(expected: np.ndarray, given: np.ndarray) -> bool:

@@ -31,6 +31,7 @@ __all__ = [
     "figure_png",
     "image_picture",
     "pixel_picture",
+    "side_by_side",
 ]
 
 #: Okabe and Ito's blue, for what was expected (a curve, or the pixels missing from the answer).
@@ -50,7 +51,13 @@ def figure_png(figure: Figure) -> bytes:
 
 
 def curve_picture(
-    control: Any, expected: Any, given: Any, title: str = "", width_inches: float = 4.2
+    control: Any,
+    expected: Any,
+    given: Any,
+    title: str = "",
+    width_inches: float = 4.2,
+    mark_start: bool = True,
+    given_label: str = "your points",
 ) -> bytes:
     """The control polygon, the expected curve and the student's points, as a PNG.
 
@@ -69,8 +76,8 @@ def curve_picture(
     for index, point in enumerate(control):
         axes.annotate(f"P{index}", point, xytext=(5, 5), textcoords="offset points", fontsize=8)
     axes.plot(*expected.T, "-", color=EXPECTED, linewidth=2, label="expected curve")
-    axes.plot(*given.T, "o", color=GIVEN, markersize=3.5, label="your points")
-    for points, colour in ((expected, EXPECTED), (given, GIVEN)):
+    axes.plot(*given.T, "o", color=GIVEN, markersize=3.5, label=str(given_label))
+    for points, colour in ((expected, EXPECTED), (given, GIVEN)) if mark_start else ():
         if len(points) and np.isfinite(points[0]).all():
             axes.plot(*points[0], "o", markersize=11, fillstyle="none", color=colour)
             axes.annotate(
@@ -86,30 +93,45 @@ def curve_picture(
 
 
 def pixel_picture(
-    expected: Any, given: Any, window: int = 16, zoom: int = 18, title: str = ""
+    expected: Any,
+    given: Any,
+    window: int = 16,
+    zoom: int = 18,
+    title: str = "",
+    outline: Any = None,
 ) -> bytes:
     """Pixels around the first difference, as a PNG: both in gray, missing and extra in colour.
 
     ``expected`` and ``given`` are (K, 2) integer (x, y) pixels. The view is
     ``window`` x ``window`` pixels centred on the first missing pixel in
     reading order (else the first extra one), each ``zoom`` x ``zoom``
-    screen pixels, so nothing is resampled.
+    screen pixels, so nothing is resampled. The axes count pixels (pixel
+    (x, y) is the square from (x, y) to (x + 1, y + 1)); ``outline``, if
+    given, is a polygon in those coordinates drawn over the pixels (a
+    triangle's edges).
     """
     window = as_int(window, "window", minimum=1, maximum=256)
     zoom = as_int(zoom, "zoom", minimum=1, maximum=64)
-    want = _pixels_of(expected, "expected")
-    have = _pixels_of(given, "given")
-    differing = sorted((want ^ have), key=lambda pixel: (pixel[1], pixel[0]))
-    missing = sorted(want - have, key=lambda pixel: (pixel[1], pixel[0]))
-    centre = (missing or differing or sorted(want | have) or [(0, 0)])[0]
+    want = _pixel_keys(expected, "expected")
+    have = _pixel_keys(given, "given")
+    if outline is not None:
+        outline = as_points(outline, "outline", bound=limits.MAX_COORDINATE)
+    both, missing, extra = (
+        np.intersect1d(want, have),
+        np.setdiff1d(want, have),
+        np.setdiff1d(have, want),
+    )
+    differing = np.union1d(missing, extra)
+    first = next((group[0] for group in (missing, differing, want, have) if len(group)), None)
+    centre = (0, 0) if first is None else _pixel_at(first)
     left, top = centre[0] - window // 2, centre[1] - window // 2
     codes = np.zeros((window, window), dtype=int)
-    for pixels, code in ((want & have, 1), (want - have, 2), (have - want, 3)):
-        for x, y in pixels:
-            if 0 <= x - left < window and 0 <= y - top < window:
-                codes[y - top, x - left] = code
+    for keys, code in ((both, 1), (missing, 2), (extra, 3)):
+        xs, ys = keys % _WIDE - _OFFSET - left, keys // _WIDE - _OFFSET - top
+        inside = (xs >= 0) & (xs < window) & (ys >= 0) & (ys < window)
+        codes[ys[inside], xs[inside]] = code
     side = window * zoom / 100  # inches at 100 dpi: one image pixel is zoom screen pixels
-    margin, legend_width, title_height = 0.1, 1.5, 0.35
+    margin, legend_width, title_height = 0.3, 1.5, 0.35
     width, height = side + 2 * margin + legend_width, side + 2 * margin + title_height
     figure = Figure(figsize=(width, height), dpi=100)
     axes = figure.add_axes((margin / width, margin / height, side / width, side / height))
@@ -120,9 +142,18 @@ def pixel_picture(
     grid = [[(left + e, top), (left + e, top + window)] for e in edges]
     grid += [[(left, top + e), (left + window, top + e)] for e in edges]
     axes.add_collection(LineCollection(grid, colors="0.85", linewidths=0.5))
-    axes.set_xticks([])
-    axes.set_yticks([])
-    counts = (len(want & have), len(want - have), len(have - want))
+    if outline is not None:
+        closed = np.vstack([outline, outline[:1]])
+        axes.plot(*closed.T, "-", color="black", linewidth=1.2)
+        axes.set_xlim(left, left + window)
+        axes.set_ylim(top + window, top)
+    every = max(1, window // 8)
+    axes.set_xticks([left + e + 0.5 for e in range(0, window, every)])
+    axes.set_xticklabels([str(left + e) for e in range(0, window, every)], fontsize=6)
+    axes.set_yticks([top + e + 0.5 for e in range(0, window, every)])
+    axes.set_yticklabels([str(top + e) for e in range(0, window, every)], fontsize=6)
+    axes.tick_params(length=2, pad=1)
+    counts = (len(both), len(missing), len(extra))
     labels = (f"in both ({counts[0]})", f"missing ({counts[1]})", f"extra ({counts[2]})")
     figure.legend(
         handles=[
@@ -150,21 +181,28 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     """
     want = np.asarray(expected, dtype=float)
     have = np.asarray(given, dtype=float)
+    if want.ndim not in (2, 3) or want.size == 0 or max(want.shape[:2]) > limits.MAX_SIDE:
+        raise ValueError(
+            f"expected must be a non-empty image (H, W) or (H, W, 3); got {want.shape}"
+        )
     if have.shape != want.shape:
         have = np.zeros_like(want)  # the report names the shapes; draw what can be drawn
     height, width = want.shape[:2]
-    zoom = max(1, min(24, 192 // max(height, width)))
+    zoom = max(1, min(24, 192 // max(height, width, 1)))
     side_w, side_h = width * zoom, height * zoom
-    margin, bar, gap, top = 12, 14, 16, 40
-    columns = margin + 3 * side_w + 2 * gap + 8 + bar + 36
-    rows = top + side_h + margin
+    # Each panel sits in a slot wide enough for its title, so that titles never run together.
+    slot = max(side_w, 84)
+    margin, bar, gap, top = 12, 14, 24, 40
+    columns = margin + 3 * slot + 2 * gap + 8 + bar + 44
+    rows = top + side_h + margin + 14
+    bottom = margin + 14  # room for the difference panel's pixel numbers
     figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
     difference = have - want
     if difference.ndim == 3:
         difference = difference.mean(axis=2)
-    limit = max(float(np.abs(difference).max()), 1e-12)
+    limit = max(float(np.abs(np.nan_to_num(difference)).max(initial=0.0)), 1e-12)
     # Values past 1 (a gradient magnitude) get a gray scale that reaches them, named in the title.
-    top = max(1.0, float(np.max(want, initial=0.0)))
+    top = max(1.0, float(np.max(np.nan_to_num(want), initial=0.0)))
     scale = "" if top == 1.0 else f", 0 to {top:.3g}"
     panels = (
         (want, f"expected{scale}", {"cmap": "gray", "vmin": 0, "vmax": top}),
@@ -173,8 +211,8 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     )
     shown = None
     for index, (picture, name, style) in enumerate(panels):
-        left = margin + index * (side_w + gap)
-        axes = figure.add_axes((left / columns, margin / rows, side_w / columns, side_h / rows))
+        left = margin + index * (slot + gap) + (slot - side_w) / 2
+        axes = figure.add_axes((left / columns, bottom / rows, side_w / columns, side_h / rows))
         if picture.ndim == 3:
             style = {}
             picture = np.clip(picture, 0, 1)
@@ -182,8 +220,13 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
         axes.set_xticks([])
         axes.set_yticks([])
         axes.set_title(name, fontsize=8)
-    bar_left = margin + 3 * side_w + 2 * gap + 8
-    colour_bar = figure.add_axes((bar_left / columns, margin / rows, bar / columns, side_h / rows))
+    # Pixel numbers on the difference: x below it, y on its left, a few of each.
+    step_x, step_y = max(1, -(-width // 4)), max(1, -(-height // 4))
+    axes.set_xticks(range(0, width, step_x))
+    axes.set_yticks(range(0, height, step_y))
+    axes.tick_params(labelsize=6, length=2, pad=1)
+    bar_left = margin + 3 * slot + 2 * gap + 8
+    colour_bar = figure.add_axes((bar_left / columns, bottom / rows, bar / columns, side_h / rows))
     figure.colorbar(shown, cax=colour_bar)
     colour_bar.tick_params(labelsize=7)
     if title:
@@ -203,7 +246,64 @@ def _as_pairs(points: Any, name: str) -> np.ndarray:
     return array.reshape(-1, 2)
 
 
-def _pixels_of(pixels: Any, name: str) -> set[tuple[int, int]]:
+# Pixels as one int64 key each, sorted in reading order: (x, y) -> (y + _OFFSET) * _WIDE + x + ...
+_OFFSET = 2**21
+_WIDE = 2**22
+
+
+def _pixel_keys(pixels: Any, name: str) -> np.ndarray:
     array = _as_pairs(pixels, name)
     require_finite(array, name)
-    return {(int(x), int(y)) for x, y in array}
+    whole = np.floor(array).astype(np.int64)
+    return np.unique((whole[:, 1] + _OFFSET) * _WIDE + whole[:, 0] + _OFFSET)
+
+
+def _pixel_at(key: Any) -> tuple[int, int]:
+    return int(key % _WIDE - _OFFSET), int(key // _WIDE - _OFFSET)
+
+
+def side_by_side(
+    left: Any, right: Any, titles: tuple[str, str] = ("expected", "yours"), shrink: str = "mean"
+) -> bytes:
+    """Two images in [0, 1] side by side, each at most 160 screen pixels across, as a PNG.
+
+    A pass's picture: the reference's result beside the student's. An image
+    larger than that is shrunk by whole blocks, each block's ``"mean"`` (a
+    dithered picture's tone) or ``"max"`` (a one-pixel curve stays visible);
+    a smaller one is zoomed by whole pixels, so nothing is blurred.
+    """
+    shrink = str(shrink)
+    if shrink not in ("mean", "max"):
+        raise ValueError(f"shrink must be 'mean' or 'max'; got {shrink!r}")
+    panels = [_fitted(np.asarray(image, dtype=float), shrink) for image in (left, right)]
+    height = max(p.shape[0] for p in panels)
+    width = sum(p.shape[1] for p in panels) + 36
+    figure = Figure(figsize=(width / 100, (height + 24) / 100), dpi=100)
+    offset = 12
+    for panel, name in zip(panels, titles, strict=True):
+        h, w = panel.shape[:2]
+        axes = figure.add_axes((offset / width, 4 / (height + 24), w / width, h / (height + 24)))
+        style = {} if panel.ndim == 3 else {"cmap": "gray", "vmin": 0.0, "vmax": 1.0}
+        axes.imshow(np.clip(panel, 0, 1), interpolation="nearest", **style)
+        axes.set_xticks([])
+        axes.set_yticks([])
+        axes.set_title(str(name), fontsize=7, pad=2)
+        offset += w + 12
+    return figure_png(figure)
+
+
+def _fitted(image: np.ndarray, shrink: str, largest: int = 160) -> np.ndarray:
+    """``image`` at a whole zoom, or shrunk by whole blocks, to at most ``largest`` pixels."""
+    if image.ndim not in (2, 3) or image.size == 0 or max(image.shape[:2]) > limits.MAX_SIDE:
+        return np.zeros((8, 8))
+    image = np.where(np.isfinite(image), image, 0.0)
+    side = max(image.shape[:2])
+    if side <= largest:
+        zoom = max(1, largest // side)
+        return np.repeat(np.repeat(image, zoom, axis=0), zoom, axis=1)
+    block = -(-side // largest)
+    height, width = (-(-n // block) * block for n in image.shape[:2])
+    padding = [(0, height - image.shape[0]), (0, width - image.shape[1])]
+    padded = np.pad(image, padding + [(0, 0)] * (image.ndim - 2))
+    blocks = padded.reshape(height // block, block, width // block, block, *image.shape[2:])
+    return blocks.max(axis=(1, 3)) if shrink == "max" else blocks.mean(axis=(1, 3))

@@ -6,7 +6,15 @@ foreground`` (:func:`poisson_boundary`); Jacobi sweeps then make ``g``
 harmonic inside, each pixel the mean of its four neighbours, until the
 residual is small (:func:`jacobi_sweep`). Failures draw the difference and
 recognise the sign flipped, x and y swapped, the sweep done in place (the
-lab's loop: Gauss-Seidel), the ring swept too and a stop one sweep late.
+lab's loop: Gauss-Seidel), a stop one sweep late, the lab's fixed count of
+sweeps and a stop on the change between sweeps. A function that writes into
+its inputs (``g = background[...]; g -= foreground`` changes the background)
+fails, however right its values. A pass shows the student's ``g`` beside the
+expected one.
+
+Hints come in steps: a failure says where to look, the next failures say
+more; ``check.hint("jacobi_exercise")`` says more at once and
+``check.hint("jacobi_exercise", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
@@ -16,13 +24,30 @@ from typing import Any
 
 import numpy as np
 
-from course import poisson
-from course.check.base import CheckResult, Mistake, close, run_cases
-from course.check.pictures import image_picture
+from course import poisson, poisson_solvers
+from course.check.base import CheckResult, Hints, Mistake, close, hint, register_hints, run_cases
+from course.check.pictures import image_picture, side_by_side
 from course.poisson_problem import image_of, planes_of
 from course.poisson_solvers import jacobi_sweeps, residual
 
-__all__ = ["jacobi_sweep", "poisson_boundary"]
+__all__ = ["hint", "jacobi_sweep", "poisson_boundary"]
+
+_LIBRARY = {
+    function: f"your function calls {function.__module__}.{function.__name__}, the library's "
+    "own answer: this exercise writes it"
+    for function in (
+        poisson.correction_boundary,
+        poisson.seamless_clone,
+        poisson.solve,
+        poisson_solvers.jacobi_sweeps,
+        poisson_solvers.iterate,
+    )
+}
+
+
+def _shown(g: Any) -> np.ndarray:
+    """A correction g in [-1, 1] as a picture: (g + 1) / 2, so 0 is mid-gray."""
+    return (np.asarray(g, dtype=float) + 1) / 2
 
 
 def _cases() -> list[dict[str, Any]]:
@@ -53,9 +78,6 @@ def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> from course.poisson import correction_boundary
-    >>> poisson_boundary(correction_boundary)
-    PASS poisson_boundary: all 4 cases pass
     >>> zeros = lambda background, foreground, offset: foreground * 0
     >>> print(poisson_boundary(zeros))  # doctest: +ELLIPSIS
     FAIL poisson_boundary: case 1 is wrong
@@ -68,11 +90,29 @@ def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
         poisson.correction_boundary,
         close(atol=1e-12, rtol=0),
         convert=lambda g: np.asarray(g, dtype=float),
-        hint="the correction is zero inside and, on the region's border, the difference "
-        "between the background and the pasted image there.",
+        hint=BOUNDARY_HINTS,
         mistakes=BOUNDARY_MISTAKES,
         picture=_boundary_picture,
+        forbidden=_LIBRARY,
+        pass_picture=lambda results: side_by_side(
+            _shown(results[2][1]), _shown(results[2][2]), ("expected g", "your g")
+        ),
     )
+
+
+BOUNDARY_HINTS = register_hints(
+    "poisson_boundary",
+    Hints(
+        where="look at the pixels of the foreground's outer ring, at where they sit in the "
+        "background, and at the inside.",
+        more="offset = (x, y) puts the foreground's top-left pixel at background[y, x]; on "
+        "the ring, g is what the background has there minus the foreground; inside, 0. The "
+        "background and the foreground stay as they were.",
+        recipe="window = background[y : y + height, x : x + width]; g = window - foreground "
+        "(a new array); g[1:-1, 1:-1] = 0.",
+    ),
+    "boundary_exercise",
+)
 
 
 def _boundary_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
@@ -214,6 +254,28 @@ def _show_sweeps(answer: Any) -> str:
         return f"{type(answer).__name__} (expected a pair: g and the number of sweeps)"
 
 
+def _until_change(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
+    """Jacobi sweeps until the largest change of one sweep is below ``tolerance``."""
+    u = np.array(g, dtype=float)
+    count = 0
+    while True:
+        new = u.copy()
+        new[1:-1, 1:-1] = (u[:-2, 1:-1] + u[2:, 1:-1] + u[1:-1, :-2] + u[1:-1, 2:]) / 4
+        count += 1
+        if u.size == 0 or np.abs(new - u).max() < tolerance:
+            return new, count
+        u = new
+
+
+def _fixed_count(expected: Any, given: Any) -> bool:
+    """A sweep count far past what the tolerance needs: the lab's fixed loop of 8000."""
+    try:
+        _, sweeps = given
+        return int(sweeps) >= 1000 and int(sweeps) != int(expected[1])
+    except (TypeError, ValueError):
+        return False
+
+
 SWEEP_MISTAKES = (
     Mistake(
         "in place: Gauss-Seidel",
@@ -222,6 +284,20 @@ SWEEP_MISTAKES = (
         "says. Jacobi computes every new value from the old array (a copy, or all four "
         "shifted slices at once).",
         _gauss_seidel_until,
+    ),
+    Mistake(
+        "a fixed number of sweeps",
+        "you ran a fixed count of sweeps, as the lab's loop runs 8000: the exercise stops as "
+        "soon as the residual is below the tolerance, and returns how many sweeps that took.",
+        lambda g, tolerance: (np.asarray(g, dtype=float), 0),
+        matches=_fixed_count,
+    ),
+    Mistake(
+        "a stop on the change between sweeps",
+        "you stopped when one sweep changed g by less than the tolerance: that is a quarter "
+        "of the residual, so your loop stops late. Test the residual, max |up + down + left "
+        "+ right - 4 g| over the inside, before each sweep.",
+        _until_change,
     ),
     Mistake(
         "one sweep late",
@@ -244,8 +320,8 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> jacobi_sweep(_jacobi_until)
-    PASS jacobi_sweep: all 4 cases pass
+    >>> jacobi_sweep(_gauss_seidel_until).mistake
+    'in place: Gauss-Seidel'
     """
     return run_cases(
         "jacobi_sweep",
@@ -253,11 +329,29 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
         _sweep_cases(),
         _jacobi_until,
         _same_sweeps,
-        hint="loop: compute the residual from the four shifted slices; stop if it is below "
-        "the tolerance; else set the inside to their sum / 4 (all from the old values) and "
-        "count the sweep.",
+        hint=SWEEP_HINTS,
         mistakes=SWEEP_MISTAKES,
         difference=_sweep_difference,
         picture=_sweep_picture,
         show=_show_sweeps,
+        forbidden=_LIBRARY,
+        pass_picture=lambda results: side_by_side(
+            _shown(results[1][1][0]), _shown(results[1][2][0]), ("expected g", "your g")
+        ),
     )
+
+
+SWEEP_HINTS = register_hints(
+    "jacobi_sweep",
+    Hints(
+        where="look at when your loop tests the residual (before or after a sweep), at what "
+        "each sweep reads, and at what you count.",
+        more="before each sweep, the residual max |up + down + left + right - 4 g| over the "
+        "inside is compared with the tolerance; a sweep computes every new inside value "
+        "from the previous array only, and the ring never changes. Work on a copy of g.",
+        recipe="g = np.array(g, dtype=float); for sweeps in itertools.count(): n = the sum of "
+        "the four shifted slices; if max |n - 4 g[1:-1, 1:-1]| < tolerance: return g, sweeps; "
+        "g[1:-1, 1:-1] = n / 4.",
+    ),
+    "jacobi_exercise",
+)

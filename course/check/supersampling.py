@@ -3,6 +3,13 @@
 The student's ``supersample(image, out_shape, rate)`` returns the shrunk
 image: for each output pixel, the mean of rate x rate bilinear samples at
 the sub-pixel centres, with pixel centres at +0.5 (:mod:`course.resample`).
+The student's ``bilinear_sample(image, x, y)`` is checked on its own first,
+its clamp at every edge included. An answer that calls the library's own
+lookup or supersampling is told to write it.
+
+Hints come in steps: a failure says where to look, the next failures say
+more; ``check.hint("bilinear_sample")`` says more at once and
+``check.hint("bilinear_sample", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
@@ -12,8 +19,9 @@ from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, Mistake, close, run_cases
-from course.check.pictures import image_picture
+from course import resample
+from course.check.base import CheckResult, Hints, Mistake, close, hint, register_hints, run_cases
+from course.check.pictures import image_picture, side_by_side
 from course.resample import (
     bilinear,
     supersample,
@@ -21,7 +29,41 @@ from course.resample import (
     supersample_without_offset,
 )
 
-__all__ = ["bilinear_lookup", "image_supersampling"]
+__all__ = ["bilinear_lookup", "hint", "image_supersampling"]
+
+_LIBRARY = {
+    function: f"your function calls course.resample.{function.__name__}, the library's own "
+    "answer: this exercise writes it"
+    for function in (
+        resample.bilinear,
+        resample.supersample,
+        resample.supersample_shifted,
+        resample.supersample_without_offset,
+    )
+}
+
+
+def _as_image(value: Any) -> np.ndarray:
+    return np.asarray(value, dtype=float)
+
+
+def _variant(
+    image: Any, out_shape: Any, rate: int, whole_scale: bool = False, divide: str = "square"
+) -> np.ndarray:
+    """Supersampling with one of the lab's slips: a whole-number scale, or / rate for / rate^2."""
+    image = np.asarray(image, dtype=float)
+    (height, width), (in_height, in_width) = out_shape, image.shape[:2]
+    sx = in_width // width if whole_scale else in_width / width
+    sy = in_height // height if whole_scale else in_height / height
+    offsets = (np.arange(rate) + 0.5) / rate
+    xs = (np.arange(width)[:, None] + offsets[None, :]) * sx  # (w, rate)
+    ys = (np.arange(height)[:, None] + offsets[None, :]) * sy  # (h, rate)
+    grid_y = ys[:, None, :, None] + 0 * xs[None, :, None, :]
+    grid_x = xs[None, :, None, :] + 0 * ys[:, None, :, None]
+    samples = bilinear(image, grid_x.reshape(-1), grid_y.reshape(-1))
+    samples = samples.reshape(height, width, rate * rate, *image.shape[2:])
+    total = samples.sum(axis=2)
+    return total / (rate if divide == "rate" else rate * rate)
 
 
 def _cases() -> list[dict[str, Any]]:
@@ -35,6 +77,7 @@ def _cases() -> list[dict[str, Any]]:
         {"image": rng.random((9, 12, 3)), "out_shape": (4, 5), "rate": 2},  # colour
         {"image": rng.random((5, 7)), "out_shape": (5, 7), "rate": 2},  # same size
         {"image": rng.random((3, 4)), "out_shape": (6, 8), "rate": 3},  # enlarging: clamped edges
+        {"image": rng.random((4, 4)), "out_shape": (2, 2), "rate": 2},  # 4 x 4: each slip shows
     ]
 
 
@@ -50,12 +93,22 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> image_supersampling(supersample)
-    PASS Supersampling: all 7 cases pass
     >>> image_supersampling(supersample_without_offset).mistake
     "the report's two shifts"
     """
     mistakes = [
+        Mistake(
+            "the scale made whole",
+            "you divided the sizes with //: 25 // 3 is 8, not 8.33, so the samples do not "
+            "cover the input. The scale W / w is a float.",
+            lambda image, out_shape, rate: _variant(image, out_shape, rate, whole_scale=True),
+        ),
+        Mistake(
+            "divided by the rate, not its square",
+            "your pixels are rate times too bright: there are rate x rate samples per output "
+            "pixel, so their mean divides by rate squared.",
+            lambda image, out_shape, rate: _variant(image, out_shape, rate, divide="rate"),
+        ),
         Mistake(
             "the report's two shifts",
             "your samples start at each sub-pixel's corner, i / rate, and your lookup takes "
@@ -85,18 +138,38 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
     def picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
         return image_picture(expected, given, title=f"case: rate {case['rate']}")
 
+    def pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
+        _, expected, given = results[3]  # the 25 x 25 noise shrunk to 3 x 3
+        return side_by_side(expected, given, ("expected", "your supersample"))
+
     return run_cases(
         "Supersampling",
         student,
         _cases(),
         supersample,
         close(atol=1e-9),
-        np.asarray,
-        hint="each output pixel averages rate x rate bilinear samples, spread evenly over the "
-        "pixel's square: their positions are the pixel's corner plus (i + 0.5) / rate.",
+        _as_image,
+        hint=SUPERSAMPLE_HINTS,
         mistakes=mistakes,
         picture=picture,
+        forbidden=_LIBRARY,
+        pass_picture=pass_picture,
     )
+
+
+SUPERSAMPLE_HINTS = register_hints(
+    "Supersampling",
+    Hints(
+        where="look at where your samples sit inside each output pixel's square, and at "
+        "what you divide the sum by.",
+        more="output pixel (r, c) covers the input from c W / w to (c + 1) W / w (a float "
+        "scale); its rate x rate samples sit at the centres of a rate x rate grid on that "
+        "square, each read with your bilinear_sample, and the pixel is their mean.",
+        recipe="for each output pixel and i, j in range(rate): x = (c + (i + 0.5) / rate) "
+        "W / w, y = (r + (j + 0.5) / rate) H / h; add bilinear_sample(image, x, y) / rate**2.",
+    ),
+    "supersample",
+)
 
 
 def _lookup_cases() -> list[dict[str, Any]]:
@@ -109,6 +182,9 @@ def _lookup_cases() -> list[dict[str, Any]]:
         (3.2, 2.8),  # beyond the last centres: clamped to the corner pixel
         (-0.4, 1.1),  # left of the first centre: clamped in x only
         (2.75, 0.25),
+        (3.9, 1.2),  # right of the last centres: clamped in x
+        (1.3, 2.9),  # below the last centres: clamped in y
+        (3.8, 2.95),  # beyond the bottom-right centre
     ]
     cases = [{"image": gray, "x": x, "y": y} for x, y in points]
     cases += [{"image": colour, "x": x, "y": y} for x, y in ((1.9, 1.2), (0.2, 1.9))]
@@ -124,12 +200,25 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> bilinear_lookup(bilinear)
-    PASS bilinear: all 8 cases pass
-    >>> bilinear_lookup(lambda image, x, y: bilinear(image, x + 0.5, y + 0.5)).mistake
-    'pixel centres at whole numbers'
+    >>> bilinear_lookup(lambda image, x, y: image[int(y), int(x)]).mistake
+    'no blending: the nearest pixel'
     """
     mistakes = [
+        Mistake(
+            "no blending: the nearest pixel",
+            "you returned the pixel the point falls in; blend the four nearest centres, each "
+            "weighted by how near the point is to it along x and along y.",
+            lambda image, x, y: image[
+                int(np.clip(np.floor(y), 0, image.shape[0] - 1)),
+                int(np.clip(np.floor(x), 0, image.shape[1] - 1)),
+            ],
+        ),
+        Mistake(
+            "no clamp at the right or bottom edge",
+            "beyond the last pixel centres your blend reaches past the image (or extrapolates): "
+            "a point right of the last centre, or below it, takes the edge value.",
+            _unclamped,
+        ),
         Mistake(
             "pixel centres at whole numbers",
             "you read pixel k as sitting at x = k, as the lab report's ix = int(fx) does: its "
@@ -142,15 +231,6 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
             "you read image[x, y]: an image is indexed by row first, image[y, x].",
             lambda image, x, y: bilinear(np.swapaxes(image, 0, 1), y, x),
         ),
-        Mistake(
-            "no blending: the nearest pixel",
-            "you returned the pixel the point falls in; blend the four nearest centres, each "
-            "weighted by how near the point is to it along x and along y.",
-            lambda image, x, y: image[
-                int(np.clip(np.floor(y), 0, image.shape[0] - 1)),
-                int(np.clip(np.floor(x), 0, image.shape[1] - 1)),
-            ],
-        ),
     ]
     return run_cases(
         "bilinear",
@@ -158,9 +238,36 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
         _lookup_cases(),
         bilinear,
         close(atol=1e-9),
-        np.asarray,
-        hint="with u = x - 0.5 and v = y - 0.5, the four centres around the point are at "
-        "floor(u), floor(u) + 1 and floor(v), floor(v) + 1 (clamped to the image); blend "
-        "them with the weights u - floor(u) and v - floor(v).",
+        _as_image,
+        hint=BILINEAR_HINTS,
         mistakes=mistakes,
+        forbidden=_LIBRARY,
     )
+
+
+def _unclamped(image: Any, x: float, y: float) -> np.ndarray:
+    """A blend clamped at the left and top only: past the last centres it extrapolates."""
+    image = np.asarray(image, dtype=float)
+    height, width = image.shape[:2]
+    u, v = max(x - 0.5, 0.0), max(y - 0.5, 0.0)
+    left, top = min(int(u), width - 2), min(int(v), height - 2)
+    fx, fy = u - left, v - top
+    upper = image[top, left] * (1 - fx) + image[top, left + 1] * fx
+    lower = image[top + 1, left] * (1 - fx) + image[top + 1, left + 1] * fx
+    return upper * (1 - fy) + lower * fy
+
+
+BILINEAR_HINTS = register_hints(
+    "bilinear",
+    Hints(
+        where="look at where your code puts pixel centres, and at points near the image's edges.",
+        more="pixel (r, c) is centred at (c + 0.5, r + 0.5); the point lies between four "
+        "such centres and is their blend, each weighted by nearness along x and along y. A "
+        "point beyond the outer centres, on any side, takes the edge value.",
+        recipe="u = x - 0.5, v = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the centres "
+        "are floor(u), floor(u) + 1 and floor(v), floor(v) + 1 (kept inside the image); the "
+        "weights are u - floor(u) and v - floor(v).",
+    ),
+    "bilinear_sample",
+    "bilinear_lookup",
+)

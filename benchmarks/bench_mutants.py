@@ -133,7 +133,8 @@ def main() -> None:
         for outcome in chosen:
             reason = why.get((outcome.mutant.exercise, outcome.mutant.diff))
             mark = "" if title != "survivors" else "  [NOT LISTED]" if reason is None else ""
-            mark = mark or ("  [equivalent]" if is_equivalent(reason) else "")
+            if mark == "" and is_equivalent(reason):
+                mark = f"  [{str(reason).split(':')[0]}]"
             mark = mark or ("  [listed, to catch]" if title == "survivors" else "")
             print(f"  {outcome.mutant.exercise}: {outcome.mutant.diff}{mark}")
             if outcome.outcome == "crash":

@@ -4,15 +4,16 @@ tests/mutation.py makes every single-slip mutant of the 17 reference solutions
 (an operator, a comparison, an integer constant plus or minus one, ``and``/``or``,
 a unary minus, a dropped line, an index off by one) and checks each in a process
 of its own under a hard timeout. :data:`SURVIVORS` lists every mutant that
-passes its checker, with the reason it may: it computes the same answer as the
-reference on every input the exercise allows (an equivalent mutant), or the
-difference is one the lesson does not ask the student to get right.
+passes its checker, with the reason: "equivalent" (it computes the reference's
+answer on every input the exercise allows), "acceptable" (a tie between two
+pixels equally near the line, which the checker accepts by design), or "NOT
+ACCEPTABLE, listed until the checker catches it", with the case that would.
 
 A listed survivor that no longer survives, or a survivor that is not listed,
 fails the test: the list stays exact. So does a mutant that hangs (the checker
 did not stop it) or makes the checker raise.
 
-All the mutants take a few minutes on two cores, too long for ``make test``:
+All 928 mutants take about 15 minutes on two busy cores, too long for ``make test``:
 there, a fixed sample of them (every :data:`SAMPLE_STEP`-th of each exercise)
 and every listed survivor run. ``COURSE_MUTANTS=all`` (``make mutants`` runs
 benchmarks/bench_mutants.py, the same with a table) runs them all.
@@ -75,36 +76,6 @@ SURVIVORS: list[tuple[str, str, str]] = [
         "(300, 0.4)) paints nothing",
     ),
     (
-        "bezier",
-        "line 8: = (0, 1,  ->  = (1, 1,",
-        "NOT ACCEPTABLE, listed until the checker catches it: the colour is not checked (only "
-        "which pixels are green); a window compared exactly with the reference's kills it",
-    ),
-    (
-        "bezier",
-        "line 8: = (0, 1,  ->  = (-1, 1,",
-        "NOT ACCEPTABLE, listed until the checker catches it: the colour is not checked (only "
-        "which pixels are green); a window compared exactly with the reference's kills it",
-    ),
-    (
-        "bezier",
-        "line 8: (0, 1, 0)  ->  (0, 2, 0)",
-        "NOT ACCEPTABLE, listed until the checker catches it: the colour is not checked (only "
-        "which pixels are green); a window compared exactly with the reference's kills it",
-    ),
-    (
-        "bezier",
-        "line 8: 1, 0)  ->  1, 1)",
-        "NOT ACCEPTABLE, listed until the checker catches it: the colour is not checked (only "
-        "which pixels are green); a window compared exactly with the reference's kills it",
-    ),
-    (
-        "bezier",
-        "line 8: 1, 0)  ->  1, -1)",
-        "NOT ACCEPTABLE, listed until the checker catches it: the colour is not checked (only "
-        "which pixels are green); a window compared exactly with the reference's kills it",
-    ),
-    (
         "draw_line",
         "line 3: x < x1 else  ->  x <= x1 else",
         "equivalent: x == x1 only on a vertical line, where dx = 0 and x never steps, so sx is "
@@ -127,45 +98,6 @@ SURVIVORS: list[tuple[str, str, str]] = [
         "line 9: double < dx:  ->  double <= dx:",
         "acceptable: it differs only where 2 error == dx, a tie between two equally near pixels, "
         "which the checker accepts either way",
-    ),
-    (
-        "bilinear_lookup",
-        "line 4: width - 1), min(max(y  ->  width + 1), min(max(y",
-        "NOT ACCEPTABLE, listed until the checker catches it: no clamp at the right edge: a 4 x 4 "
-        "image sampled at x = 4.0, y = 2.0 (expected 9, given 9.5); every case stays left of x = "
-        "width - 0.5",
-    ),
-    (
-        "bilinear_lookup",
-        "line 4: - 1), min(max(y  ->  - 0), min(max(y",
-        "NOT ACCEPTABLE, listed until the checker catches it: no clamp at the right edge: a 4 x 4 "
-        "image sampled at x = 4.0, y = 2.0 (expected 9, given 9.5); every case stays left of x = "
-        "width - 0.5",
-    ),
-    (
-        "bilinear_lookup",
-        "line 4: - 1), min(max(y  ->  - -1), min(max(y",
-        "NOT ACCEPTABLE, listed until the checker catches it: no clamp at the right edge: a 4 x 4 "
-        "image sampled at x = 4.0, y = 2.0 (expected 9, given 9.5); every case stays left of x = "
-        "width - 0.5",
-    ),
-    (
-        "bilinear_lookup",
-        "line 5: width - 2), min(int(v),  ->  width + 2), min(int(v),",
-        "NOT ACCEPTABLE, listed until the checker catches it: left not kept below width - 1: a 4 x"
-        " 4 image sampled at x = 3.5 reads column 4 (IndexError)",
-    ),
-    (
-        "bilinear_lookup",
-        "line 5: - 2), min(int(v),  ->  - 1), min(int(v),",
-        "NOT ACCEPTABLE, listed until the checker catches it: left not kept below width - 1: a 4 x"
-        " 4 image sampled at x = 3.5 reads column 4 (IndexError)",
-    ),
-    (
-        "bilinear_lookup",
-        "line 5: - 2), min(int(v),  ->  - -2), min(int(v),",
-        "NOT ACCEPTABLE, listed until the checker catches it: left not kept below width - 1: a 4 x"
-        " 4 image sampled at x = 3.5 reads column 4 (IndexError)",
     ),
     (
         "image_supersampling",
@@ -195,13 +127,6 @@ SURVIVORS: list[tuple[str, str, str]] = [
     ),
     (
         "jacobi_sweep",
-        "line 3: g = np.array(g, dtype=float)  ->  pass",
-        "NOT ACCEPTABLE, listed until the checker catches it: no copy: the sweeps write into the "
-        "caller's g (the input-copy check of issue 20's item 3 names it), and an integer g "
-        "truncates each sweep",
-    ),
-    (
-        "jacobi_sweep",
         "line 6: 1:-1]).max() < tolerance:  ->  1:-1]).max() <= tolerance:",
         "NOT ACCEPTABLE, listed until the checker catches it: stops when the residual equals the "
         "tolerance: g = [[0, 0, 0], [0, 1, 0], [0, 0, 0]], tolerance 4 (residual exactly 4): "
@@ -209,72 +134,10 @@ SURVIVORS: list[tuple[str, str, str]] = [
     ),
 ]
 
-#: (exercise, the slip): mutants the checker does not stop, so the harness's timeout does.
-HANGS: list[tuple[str, str]] = [
-    ("draw_line", "line 3: (abs(x1 - x), abs(y1  ->  (abs(x1 + x), abs(y1"),
-    ("draw_line", "line 3: = (abs(x1 -  ->  = (abs(-x1 -"),
-    ("draw_line", "line 3: - x), abs(y1  ->  - -x), abs(y1"),
-    ("draw_line", "line 3: abs(y1 - y), 1  ->  abs(y1 + y), 1"),
-    ("draw_line", "line 3: x), abs(y1 -  ->  x), abs(-y1 -"),
-    ("draw_line", "line 3: - y), 1  ->  - -y), 1"),
-    ("draw_line", "line 3: x < x1 else  ->  x > x1 else"),
-    ("draw_line", "line 3: y), 1 if x  ->  y), 2 if x"),
-    ("draw_line", "line 3: y), 1 if x  ->  y), 0 if x"),
-    ("draw_line", "line 3: else -1, 1  ->  else 1, 1"),
-    ("draw_line", "line 3: else -1, 1  ->  else -2, 1"),
-    ("draw_line", "line 3: else -1, 1  ->  else -0, 1"),
-    ("draw_line", "line 3: y < y1 else  ->  y > y1 else"),
-    ("draw_line", "line 3: -1, 1 if y  ->  -1, 2 if y"),
-    ("draw_line", "line 3: -1, 1 if y  ->  -1, 0 if y"),
-    ("draw_line", "line 3: else -1)  ->  else 1)"),
-    ("draw_line", "line 3: else -1)  ->  else -2)"),
-    ("draw_line", "line 3: else -1)  ->  else -0)"),
-    ("draw_line", "line 4: (dx - dy, [(x,  ->  (dx + dy, [(x,"),
-    ("draw_line", "line 4: = (dx -  ->  = (-dx -"),
-    ("draw_line", "line 4: - dy, [(x,  ->  - -dy, [(x,"),
-    ("draw_line", "line 6: 2 * error  ->  2 / error"),
-    ("draw_line", "line 6: = 2 *  ->  = -2 *"),
-    ("draw_line", "line 6: * error  ->  * -error"),
-    ("draw_line", "line 7: if double > -dy:  ->  pass"),
-    ("draw_line", "line 7: double > -dy:  ->  double < -dy:"),
-    ("draw_line", "line 7: > -dy:  ->  > dy:"),
-    ("draw_line", "line 8: error, x = (error - dy, x + sx)  ->  pass"),
-    ("draw_line", "line 8: (error - dy, x  ->  (error + dy, x"),
-    ("draw_line", "line 8: = (error -  ->  = (-error -"),
-    ("draw_line", "line 8: - dy, x  ->  - -dy, x"),
-    ("draw_line", "line 8: x + sx)  ->  x - sx)"),
-    ("draw_line", "line 8: dy, x +  ->  dy, -x +"),
-    ("draw_line", "line 8: + sx)  ->  + -sx)"),
-    ("draw_line", "line 9: if double < dx:  ->  pass"),
-    ("draw_line", "line 9: double < dx:  ->  double > dx:"),
-    ("draw_line", "line 10: error, y = (error + dx, y + sy)  ->  pass"),
-    ("draw_line", "line 10: (error + dx, y  ->  (error - dx, y"),
-    ("draw_line", "line 10: + dx, y  ->  + -dx, y"),
-    ("draw_line", "line 10: y + sy)  ->  y - sy)"),
-    ("draw_line", "line 10: dx, y +  ->  dx, -y +"),
-    ("draw_line", "line 10: + sy)  ->  + -sy)"),
-    (
-        "jacobi_sweep",
-        "line 6: if np.abs(neighbours - 4 * g[1:-1, 1:-1]).max() < tolerance:  ->  pass",
-    ),
-    ("jacobi_sweep", "line 6: np.abs(neighbours - 4 *  ->  np.abs(neighbours + 4 *"),
-    ("jacobi_sweep", "line 6: if np.abs(neighbours -  ->  if np.abs(-neighbours -"),
-    ("jacobi_sweep", "line 6: 4 * g[1:-1, 1:-1]).max()  ->  4 / g[1:-1, 1:-1]).max()"),
-    ("jacobi_sweep", "line 6: - 4 * g[1:-1,  ->  - 5 * g[1:-1,"),
-    ("jacobi_sweep", "line 6: - 4 * g[1:-1,  ->  - 3 * g[1:-1,"),
-    ("jacobi_sweep", "line 6: - 4 *  ->  - -4 *"),
-    ("jacobi_sweep", "line 6: * g[1:-1, 1:-1]).max()  ->  * -g[1:-1, 1:-1]).max()"),
-    ("jacobi_sweep", "line 6: * g[1:-1, 1:-1]).max()  ->  * g[2:-1, 1:-1]).max()"),
-    ("jacobi_sweep", "line 6: * g[1:-1, 1:-1]).max()  ->  * g[1:-2, 1:-1]).max()"),
-    ("jacobi_sweep", "line 7: return (g, sweeps)  ->  pass"),
-    ("jacobi_sweep", "line 8: g[1:-1, 1:-1] = neighbours / 4  ->  pass"),
-    ("jacobi_sweep", "line 8: neighbours / 4  ->  neighbours * 4"),
-    ("jacobi_sweep", "line 8: neighbours / 4  ->  neighbours // 4"),
-    ("jacobi_sweep", "line 8: = neighbours /  ->  = -neighbours /"),
-    ("jacobi_sweep", "line 8: / 4  ->  / 5"),
-    ("jacobi_sweep", "line 8: / 4  ->  / 3"),
-    ("jacobi_sweep", "line 8: / 4  ->  / -4"),
-]
+#: (exercise, the slip): mutants the checker does not stop, so the harness's timeout does. None
+#: since the checkers run each case under a time and memory budget (course/check/sandbox.py):
+#: on main before it, 42 slips of draw_line and 18 of jacobi_sweep hung.
+HANGS: list[tuple[str, str]] = []
 
 
 @pytest.fixture(scope="module")

@@ -116,3 +116,308 @@ def test_assert_passed_raises_the_whole_report_for_a_grader_and_returns_a_pass()
         failed.assert_passed()
     passed = CheckResult("blur", True, 3, "all 3 cases pass")
     assert passed.assert_passed() is passed
+
+
+# --- Bounded, positional, input-keeping runs (issue 20) ---------------------------------
+
+import math  # noqa: E402
+import tracemalloc  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+from course.check import base, sandbox  # noqa: E402
+from course.check.base import AnswerError, Hints, hint, register_hints  # noqa: E402
+
+SMALL = {"seconds": 0.2, "memory": 32 * 2**20}
+
+
+def bounded(student, **options):
+    options.setdefault("hint", "double it")
+    options = {**SMALL, **options}
+    return run_cases("double", student, CASES, lambda x: 2 * x, close(), **options)
+
+
+def spin(x):
+    while True:
+        pass
+
+
+def never_one(x):
+    t = 0.0
+    while t != 1.0:
+        t += 0.001
+    return 2 * x
+
+
+def growing_list(x):
+    kept = []
+    while True:
+        kept.append([x] * 10_000)
+
+
+def growing_arrays(x):
+    kept = []
+    while True:
+        kept.append(np.zeros((512, 512)))
+
+
+def catches_exceptions(x):
+    while True:
+        try:
+            while True:
+                pass
+        except Exception:  # noqa: S110 - a student's broad except lets the budget by
+            pass
+
+
+@pytest.mark.parametrize("student", [spin, never_one, catches_exceptions])
+def test_a_loop_that_never_ends_is_stopped_and_reported_with_its_case(student):
+    before = sys.getprofile()
+    result = bounded(student)
+    lines = str(result).splitlines()
+    assert lines[:2] == [
+        "FAIL double: case 1 was stopped: the loop did not stop within 0.2 s",
+        "  inputs: x=1.0",
+    ]
+    assert sys.getprofile() is before and not tracemalloc.is_tracing()
+
+
+@pytest.mark.parametrize("student", [growing_list, growing_arrays])
+def test_memory_that_keeps_growing_is_stopped_or_the_loop_is(student):
+    result = bounded(student, seconds=5.0)
+    assert not result
+    assert "memory kept growing (past 32 MiB)" in str(result)
+    assert not tracemalloc.is_tracing()
+
+
+def test_the_budget_leaves_a_running_tracemalloc_running_and_composes_with_call_budget():
+    tracemalloc.start()
+    try:
+        assert bounded(lambda x: 2 * x)
+        assert tracemalloc.is_tracing()
+    finally:
+        tracemalloc.stop()
+
+    def watch():
+        return call_budget(max_calls=50)
+
+    def recursing(x):
+        return recursing(x)
+
+    result = bounded(recursing, watch=watch)
+    assert "case 1 was stopped: more than 50 Python function calls" in str(result)
+
+
+def test_the_students_globals_survive_a_stopped_case():
+    state = {"calls": 0}
+
+    def counting(x):
+        state["calls"] += 1
+        while True:
+            pass
+
+    assert not bounded(counting)
+    assert state == {"calls": 1}
+    assert bounded(lambda x: 2 * x)
+
+
+def test_the_function_is_called_by_position_and_any_names_pass():
+    cases = [{"control_points": 1.0, "t": 2.0}, {"control_points": 3.0, "t": 4.0}]
+
+    def run2(student):
+        return run_cases(
+            "f", student, cases, lambda control_points, t: control_points - t, close(), hint="h"
+        )
+
+    assert run2(lambda p, u: p - u)
+    assert run2(lambda px, py, extra=0: px - py)
+    wrong = run2(lambda p: p)
+    assert str(wrong).splitlines()[0] == (
+        "FAIL f: your function cannot be called as the handout does: expected 2 parameters, "
+        "(control_points, t); your function takes 1, (p)"
+    )
+    assert wrong.cases_run == 0
+
+
+def test_a_changed_input_fails_naming_the_argument_and_element_even_when_the_value_is_right():
+    cases = [{"image": np.array([[1.0, 2.0], [3.0, 4.0]]), "k": 2}]
+
+    def doubled_in_place(image, k):
+        image *= k
+        return image
+
+    result = run_cases(
+        "scale",
+        doubled_in_place,
+        cases,
+        lambda image, k: image * k,
+        close(),
+        hint="h",
+        on_change="keep a copy",
+    )
+    lines = str(result).splitlines()
+    assert lines[0] == "FAIL scale: case 1 changed its input image: element [0, 0] was 1, is now 2"
+    assert "  keep a copy" in lines
+    assert cases[0]["image"][0, 0] == 1.0  # the checker's own input is untouched
+
+    def paints(image, k):
+        image[0, 0] = 9.0
+        return k
+
+    allowed = run_cases(
+        "paint", paints, cases, lambda image, k: k, close(), hint="h", writable=("image",)
+    )
+    assert allowed
+
+
+def test_none_and_stubs_are_told_apart():
+    def forgot(x):
+        2 * x
+
+    def stub(x):
+        """Double x."""
+        ...
+
+    assert str(bounded(forgot)).splitlines()[0] == (
+        "FAIL double: case 1 returned None: did you forget `return`?"
+    )
+    assert str(bounded(stub)).splitlines() == [
+        "FAIL double: not written yet: your function returns nothing",
+        "Start here: double it",
+    ]
+
+    def raises(x):
+        raise NotImplementedError("your code here")
+
+    assert str(bounded(raises)).splitlines()[0] == (
+        "FAIL double: not written yet: your function raised NotImplementedError: your code here"
+    )
+
+
+def test_odd_answers_get_a_clear_report_never_a_library_traceback():
+    complex_answer = bounded(lambda x: 2 * x + 1j)
+    assert "your answer holds complex numbers" in str(complex_answer)
+    nan_answer = bounded(lambda x: np.array([np.nan]))
+    assert "your answer holds nan at [0]" in str(nan_answer)
+    float32 = bounded(lambda x: np.float32(2 * x + 1e-6))
+    assert "your answer is float32" in str(float32) and "allows 1e-09" in str(float32)
+    assert bounded(lambda x: [2 * x][0])
+
+
+def test_a_list_or_tuple_with_the_right_values_passes():
+    cases = [{"x": 1.0}]
+    assert run_cases(
+        "pair", lambda x: [x, 2 * x], cases, lambda x: np.array([x, 2 * x]), close(), hint="h"
+    )
+    assert run_cases(
+        "pair", lambda x: (x, 2 * x), cases, lambda x: np.array([x, 2 * x]), close(), hint="h"
+    )
+
+
+def test_an_exception_shows_the_students_line_and_the_checkers_own_errors_say_so():
+    def divides(x):
+        zero = 0
+        return x / zero
+
+    text = str(bounded(divides))
+    assert "case 1 raised ZeroDivisionError: division by zero" in text
+    assert "at line 3 of divides: return x / zero" in text
+
+    def unreadable(value):
+        raise AnswerError("a point is two numbers")
+
+    assert "your answer cannot be read: a point is two numbers" in str(
+        bounded(lambda x: 2 * x, convert=unreadable)
+    )
+
+    def strict(value):
+        return np.asarray(value, dtype=float)
+
+    ragged = str(bounded(lambda x: [[1.0], [1.0, 2.0]], convert=strict))
+    assert "the checker raised this while reading your answer" in ragged
+
+
+def test_cases_must_be_mappings():
+    with pytest.raises(TypeError, match="case \\[0\\] is int"):
+        run_cases("f", abs, [1], abs, close(), hint="h")
+    with pytest.raises(TypeError, match="got int"):
+        run_cases("f", abs, 1, abs, close(), hint="h")
+
+
+def test_the_librarys_own_answer_is_refused_when_called_or_named():
+    def library_double(x):
+        return 2 * x
+
+    forbidden = {library_double: "you called the library's double"}
+    assert str(bounded(library_double, forbidden=forbidden)).splitlines()[0] == (
+        "FAIL double: you called the library's double"
+    )
+    assert "library's double" in str(bounded(lambda x: library_double(x), forbidden=forbidden))
+    refused = {math.comb: "math.comb was called"}
+    cases = [{"m": 5, "n": 2}]
+
+    def through_map(m, n):
+        return next(map(math.comb, [m], [n]))
+
+    result = run_cases(
+        "comb", through_map, cases, math.comb, lambda a, b: a == b, hint="h", forbidden=refused
+    )
+    assert str(result).splitlines()[0] == "FAIL comb: math.comb was called"
+
+    def own(m, n):
+        comb = 10  # a local of the same name is not math.comb
+        return comb
+
+    assert run_cases(
+        "comb", own, cases, math.comb, lambda a, b: a == b, hint="h", forbidden=refused
+    )
+
+
+def test_hints_come_in_steps_and_the_recipe_only_on_request(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    steps = register_hints(
+        "tripling", Hints("look at x", "three of them", "return 3 * x"), "triple"
+    )
+    first = run_cases("tripling", lambda x: x, CASES, lambda x: 3 * x, close(), hint=steps)
+    assert str(first).splitlines()[-2:] == ["Hint: look at x", '(More: check.hint("triple").)']
+    second = run_cases("tripling", lambda x: x, CASES, lambda x: 3 * x, close(), hint=steps)
+    assert "Hint: look at x three of them" in str(second)
+    assert "return 3 * x" not in str(first) + str(second)
+    assert str(hint("triple")) == "Hint for tripling: look at x three of them"
+    assert str(hint("Triple", recipe=True)) == "Hint for tripling: return 3 * x"
+    with pytest.raises(ValueError, match="exercise must be one of"):
+        hint("no such exercise")
+
+
+def test_a_pass_carries_the_pass_picture_made_from_the_students_answers():
+    seen = []
+
+    def draw(results):
+        seen.extend(given for _, _, given in results)
+        return b"png"
+
+    result = run(lambda x: 2 * x, pass_picture=draw)
+    assert result.picture == b"png" and seen == [2.0, 4.0, 6.0]
+
+
+def test_a_huge_wrong_answer_is_refused_quickly_by_size_not_read_pixel_by_pixel():
+    cases = [{"n": 3}]
+    result = run_cases(
+        "pixels",
+        lambda n: np.zeros((2**21, 2)),
+        cases,
+        lambda n: np.array([[0, 0]]),
+        same_pixels,
+        base.pixel_rows,
+        hint="h",
+    )
+    assert "far more than any case needs" in str(result)
+
+
+def test_student_line_skips_frames_inside_the_course():
+    def calls_library(x):
+        return sandbox.arity_problem(None, ("x",)) + 1
+
+    with pytest.raises(TypeError) as caught:
+        calls_library(1)
+    assert sandbox.student_line(caught.value).startswith("line 2 of calls_library")

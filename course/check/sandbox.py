@@ -10,7 +10,8 @@ system, and raises it again every :data:`_REPEAT` seconds in case the code
 catches it. The kernel survives; the caller gets :class:`CaseStopped`.
 
 A call that stays inside one long C function (a single ``time.sleep(60)``)
-cannot be interrupted this way; every loop written in Python can.
+cannot be interrupted this way, nor a loop whose bare ``except:`` catches
+every raise; every other loop written in Python can.
 """
 
 from __future__ import annotations

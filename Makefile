@@ -27,7 +27,7 @@ export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
 .DEFAULT_GOAL := help
 .PHONY: help lab teach app student nbgrader site-teacher test test-latest test-browser fuzz lint format notebooks site \
-	bench bench-browser hub bench-hub lock clean messages
+	bench bench-browser hub bench-hub mutants lock clean messages
 
 ## help: this list of targets
 help:
@@ -199,10 +199,17 @@ notebooks: $(VENV)/.lab-installed $(VENV)/.test-installed
 UNPINNED_BENCH := benchmarks/bench_poisson.py
 ## bench: the performance ratios against the reference implementations
 bench: $(VENV)/.bench-installed $(VENV)/.test-installed
-	for script in $(filter-out benchmarks/bench_browser_latency.py benchmarks/bench_hub.py $(UNPINNED_BENCH),$(wildcard benchmarks/bench_*.py)); do \
+	for script in $(filter-out benchmarks/bench_browser_latency.py benchmarks/bench_hub.py \
+			benchmarks/bench_mutants.py $(UNPINNED_BENCH),$(wildcard benchmarks/bench_*.py)); do \
 		OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 $(BIN)/python "$$script" || exit 1; \
 	done
 	for script in $(UNPINNED_BENCH); do $(BIN)/python "$$script" || exit 1; done
+
+## mutants: how many single-slip mutants of each reference solution its checker fails
+# Every mutant in a process of its own, two at a time, each under a 20 s timeout: minutes.
+# tests/test_mutants.py runs a sample in `make test`; COURSE_MUTANTS=all runs them all.
+mutants: $(VENV)/.test-installed
+	nice $(BIN)/python benchmarks/bench_mutants.py
 
 ## bench-browser: the time from a mouse move or a key press to the new picture, in Chromium
 bench-browser: $(VENV)/.browser-installed $(VENV)/.test-installed

@@ -226,7 +226,7 @@ def sobel(image: Any, border: str = "replicate", method: str = "separable") -> n
 
     ``Gx`` is the dot product of ``SOBEL_X`` with each 3 x 3 window (the
     handout's form), ``Gy`` that of ``SOBEL_Y``. The result lies in
-    [0, 4 sqrt(2)] for an image in [0, 1]; clip it to [0, 1] to show it as
+    [0, sqrt(20)] (about 4.47) for an image in [0, 1]; clip it to [0, 1] to show it as
     the lab does. Inside it equals ``numpy.hypot(scipy.ndimage.sobel(image,
     0), scipy.ndimage.sobel(image, 1))``.
 

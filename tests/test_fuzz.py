@@ -222,6 +222,7 @@ def _valid_by_name(name: str, annotation: str, qualified: str) -> Any:
 
 VALID: dict[str, Any] = {
     # by parameter name
+    "course.classroom.edition.solution_bodies:source": lambda: "def f(x):\n    return 2 * x\n",
     "points": lambda: CURVE.copy(),
     "control": lambda: CURVE.copy(),
     "polyline": lambda: CURVE.copy(),
@@ -359,9 +360,6 @@ VALID: dict[str, Any] = {
     "course.widgets.lines_and_triangles.octant:dy": lambda: 1,
     "course.check.base.same_pixels:expected": lambda: np.array([[1, 2]]),
     "course.check.base.same_pixels:given": lambda: np.array([[1, 2]]),
-    "course.check.antialiasing.splat_difference:expected": lambda: np.ones((3, 3)),
-    "course.check.antialiasing.splat_difference:given": lambda: np.ones((3, 3)),
-    "course.check.antialiasing.show_splat:table": lambda: np.ones((3, 3)),
     "course.check.pictures.pixel_picture:expected": lambda: np.array([[1, 2], [3, 4]]),
     "course.check.pictures.pixel_picture:given": lambda: np.array([[1, 2], [3, 5]]),
     "course.check.pictures.image_picture:expected": lambda: GRAY.copy(),
@@ -522,6 +520,10 @@ def valid_arguments(qualified: str, function: Any, tmp: Path) -> dict[str, Any] 
                 arguments[name].write_text(README)
             elif name == "folder":
                 arguments[name].mkdir()
+            continue
+        if qualified == "course.classroom.edition.read_notebook" and name == "path":
+            arguments[name] = tmp / f"lesson-{next(_PATH_NUMBERS)}.ipynb"
+            arguments[name].write_text('{"cells": [], "metadata": {}, "nbformat": 4}')
             continue
         key = f"{qualified}:{name}"
         if parameter.default is not parameter.empty and key not in VALID:

@@ -55,7 +55,12 @@ from course.check.base import (
 from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture, side_by_side
 from course.images import SEED_000_CUBIC
 
-__all__ = ["arc_length_weights", "bilinear_splat", "hint", "splat_table"]
+__all__ = [
+    "arc_length_weights",
+    "bilinear_splat",
+    "hint",
+    "splat_table",
+]
 
 _LIBRARY = {
     function: f"your function calls course.splats.{function.__name__}, the library's own "
@@ -143,12 +148,12 @@ def _weights_by_pixel(table: np.ndarray) -> dict[tuple[int, int], float]:
     return {(int(x), int(y)): float(w) for x, y, w in table}
 
 
-def splat_difference(expected: np.ndarray, given: np.ndarray) -> str:
+def _splat_difference(expected: np.ndarray, given: np.ndarray) -> str:
     """The first pixel, by (y, x), whose weight differs, in words.
 
     Examples
     --------
-    >>> splat_difference(np.array([[0, 0, 0.5], [1, 0, 0.5]]), np.array([[0, 0, 1.0]]))
+    >>> _splat_difference(np.array([[0, 0, 0.5], [1, 0, 0.5]]), np.array([[0, 0, 1.0]]))
     'first wrong pixel: (0, 0) should get 0.5, yours gets 1'
     """
     want, have = _weights_by_pixel(expected), _weights_by_pixel(given)
@@ -161,12 +166,12 @@ def splat_difference(expected: np.ndarray, given: np.ndarray) -> str:
     return "the same pixels and weights"
 
 
-def show_splat(table: np.ndarray) -> str:
+def _show_splat(table: np.ndarray) -> str:
     """A splat table in words: each lit pixel and its weight.
 
     Examples
     --------
-    >>> show_splat(np.array([[2, 1, 0.75], [3, 1, 0.25]]))
+    >>> _show_splat(np.array([[2, 1, 0.75], [3, 1, 0.25]]))
     'pixel (2, 1) gets 0.75, pixel (3, 1) gets 0.25'
     """
     if len(table) == 0:
@@ -312,10 +317,10 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
         convert=_student_table,
         hint=SPLAT_HINTS,
         mistakes=SPLAT_MISTAKES,
-        difference=splat_difference,
+        difference=_splat_difference,
         picture=_splat_picture,
         explain=_splat_explain,
-        show=show_splat,
+        show=_show_splat,
         forbidden=_LIBRARY,
         pass_picture=_splat_pass_picture,
     )

@@ -58,6 +58,7 @@ __all__ = [
     "Mistake",
     "call_budget",
     "close",
+    "copies_of",
     "first_difference",
     "hint",
     "pixel_difference",

@@ -25,6 +25,8 @@ from course.classroom.course_map import course_map, update_readme
 from course.classroom.notebooks import NOTEBOOKS_VARIABLE, find_notebooks
 from course.classroom.registry import lessons
 
+__all__ = ["lab_command", "main"]
+
 NOT_FOUND = (
     "the lessons' notebooks are not beside the installed package, nor in ./notebooks: "
     "pass --notebooks DIR, the notebooks/ folder of the course's repository "

@@ -19,7 +19,11 @@ import re
 from urllib.parse import quote, urlencode, urlsplit
 
 # The command-line helpers (add_command, run) are for cli.py only.
-__all__ = ["nbgitpuller_link"]
+__all__ = [
+    "add_command",
+    "nbgitpuller_link",
+    "run",
+]
 
 #: The notebook the link opens, at the top of the student edition.
 START_NOTEBOOK = "00_index.ipynb"

@@ -20,7 +20,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Polygon
 
 from course import limits
-from course._validate import as_positive_float, describe
+from course._validate import as_positive_float, describe, require_step_samples
 from course.antialias import bilinear_centres, render
 from course.bezier import de_casteljau
 from course.canvas import crop
@@ -446,6 +446,10 @@ def speeds(step: float = 0.001) -> Table:
     )
 
 
+#: The most t steps the step study renders (each one a whole curve, twice).
+_STUDY_STEPS = 8
+
+
 def step_study(
     steps: tuple[float, ...] = (0.002, 0.001, 0.0005, 0.0001), method: str = "bilinear_centres"
 ) -> Table:
@@ -460,6 +464,15 @@ def step_study(
     >>> print(step_study(steps=(0.001,)).splitlines()[1])  # doctest: +NORMALIZE_WHITESPACE
     0.001      count       0.10   0.88  22.4%   arc length   0.19   0.98   3.7%
     """
+    if not isinstance(steps, (tuple, list)) or not 1 <= len(steps) <= _STUDY_STEPS:
+        raise ValueError(
+            f"steps must be a tuple of 1 to {_STUDY_STEPS} t steps; got {describe(steps)}"
+        )
+    steps = tuple(
+        as_positive_float(step, f"steps[{i}]", largest=1.0) for i, step in enumerate(steps)
+    )
+    for step in steps:
+        require_step_samples(step, "steps")
     lines = [
         f"{'step':10s} {'weighting':11s} {'end':>5s} {'mean':>6s} {'CV':>6s}   "
         f"{'weighting':12s} {'end':>5s} {'mean':>6s} {'CV':>6s}"

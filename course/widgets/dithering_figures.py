@@ -16,7 +16,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-from course import dither
+from course import dither, limits
 from course._validate import as_gray, as_image, as_int, as_point
 from course.blue_noise import blue_noise_mask, low_frequency_fraction, radial_power_spectrum
 from course.canvas import crop
@@ -24,6 +24,7 @@ from course.error_diffusion import diffusion_offsets
 from course.widgets.picture import GRAY_PIXELS, Still, bare_axes, pixel_axes, pixel_figure
 
 __all__ = [
+    "Table",
     "block_mean",
     "by_hand_figure",
     "clumps_and_holes",
@@ -203,7 +204,7 @@ def diffusion_figure() -> Still:
 BY_HAND = np.array([[0.2, 0.4, 0.6], [0.4, 0.6, 0.8], [0.6, 0.8, 1.0]])
 
 
-def diffusion_steps(gray: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+def _diffusion_steps(gray: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
     """Floyd-Steinberg one pixel at a time: (values so far, dots so far) after each pixel.
 
     Values start as the image; after pixel k its dot is decided and its error
@@ -211,7 +212,7 @@ def diffusion_steps(gray: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
 
     Examples
     --------
-    >>> values, dots = diffusion_steps(BY_HAND)[0]
+    >>> values, dots = _diffusion_steps(BY_HAND)[0]
     >>> values[0].round(4).tolist(), dots[0].tolist()
     ([0.2, 0.4875, 0.6], [0.0, nan, nan])
     """
@@ -230,6 +231,10 @@ def diffusion_steps(gray: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
     return steps
 
 
+#: The most pixels a by-hand figure draws, one panel per pixel visited.
+_BY_HAND_PIXELS = 16
+
+
 def by_hand_figure(gray: np.ndarray = BY_HAND, zoom: int = 52) -> Still:
     """Floyd-Steinberg on a 3 x 3 image, one panel per pixel visited, every value written.
 
@@ -240,7 +245,13 @@ def by_hand_figure(gray: np.ndarray = BY_HAND, zoom: int = 52) -> Still:
     """
     gray = as_gray(gray, "gray")
     height, width = gray.shape
-    steps = diffusion_steps(gray)
+    if height * width > _BY_HAND_PIXELS:
+        raise ValueError(
+            f"gray must be small enough to work by hand, at most {_BY_HAND_PIXELS} pixels; "
+            f"got {height} x {width}"
+        )
+    zoom = as_int(zoom, "zoom", minimum=8, maximum=limits.MAX_ZOOM)
+    steps = _diffusion_steps(gray)
     side, gap, title, top = width * zoom, 24, 40, 58
     columns = width
     rows = -(-len(steps) // columns)

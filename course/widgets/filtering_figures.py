@@ -20,7 +20,14 @@ from course._validate import as_int
 from course.widgets.filtering import blurred, border_ring_mean
 from course.widgets.picture import Still, pixel_figure
 
-__all__ = ["border_figure", "false_edges_figure", "filters_figure", "window_figure"]
+__all__ = [
+    "border_figure",
+    "false_edges_figure",
+    "filters_figure",
+    "frame_depth",
+    "ratios_at_edge",
+    "window_figure",
+]
 
 BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
 

@@ -44,6 +44,7 @@ __all__ = [
     "mask_and_mixed_figure",
     "residual_scale",
     "strip_and_square",
+    "sweep_study",
     "tiny_clone_figure",
     "write_lab_sweeps",
 ]

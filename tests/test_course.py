@@ -335,11 +335,13 @@ def test_the_private_name_checks_can_fail():
 def test_test_files_are_named_for_what_they_test():
     """``test_<module>.py``, ``test_<topic>_check.py``, ``test_<topic>_widgets.py``.
 
-    Three test the whole package: ``test_course.py`` (its layout), ``test_fuzz.py``
-    (every public callable, given bad input) and ``test_install.py`` (make, the locks,
-    the README's commands).
+    Five test the whole package: ``test_course.py`` (its layout), ``test_fuzz.py``
+    (every public callable, given bad input), ``test_figure_bounds.py`` (every figure's
+    size bounds), ``test_mutants.py`` (every exercise's checker against the slips of its
+    answer) and ``test_install.py`` (make, the locks, the README's commands).
     """
-    stems = {name.rsplit(".", 1)[-1] for name in MODULES} | {"course", "fuzz", "install"}
+    whole = {"course", "fuzz", "figure_bounds", "mutants", "install"}
+    stems = {name.rsplit(".", 1)[-1] for name in MODULES} | whole
     checks = {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.check.")}
     apps = {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.widgets.")}
     named = [path.stem[len("test_") :] for path in Path(__file__).parent.glob("test_*.py")]

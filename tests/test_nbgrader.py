@@ -25,6 +25,7 @@ import sys
 from html import unescape
 from pathlib import Path
 
+import numpy as np
 import pytest
 from mistakes import mistaken, named_mistakes
 from nbgrader.api import Gradebook
@@ -290,3 +291,26 @@ def test_nbgrader_autogrades_and_explains_the_lesson(book, course, api):
         "stubs": f"{sum(marks['stubs'].values()):g}",
         "mistakes": "; ".join(row + [f"(note: {note})" for note in notes]),
     }
+
+
+def test_the_graders_own_answers_agree_with_the_library_without_running_it():
+    from course import bezier, resample
+    from course.classroom.nbgrader import reference
+
+    points = np.array([[0.0, 0.0], [10.0, 30.0], [40.0, 5.0], [50.0, 50.0]])
+    for t in (0.0, 0.3, 1.0):
+        np.testing.assert_allclose(
+            reference("recursive_bezier")(points, t), bezier.de_casteljau(points, t)
+        )
+        np.testing.assert_allclose(
+            reference("next_level")(points, t), bezier.de_casteljau_levels(points, t)[1]
+        )
+    assert all(
+        reference("comb")(m, n) == bezier.binomial(m, n) for m in range(45) for n in range(m + 1)
+    )
+    rng = np.random.default_rng(1)
+    image = rng.random((5, 7, 3))
+    for x, y in rng.uniform(-2.0, 9.0, (100, 2)):
+        np.testing.assert_allclose(
+            reference("bilinear_sample")(image, x, y), resample.bilinear(image, x, y)
+        )

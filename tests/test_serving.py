@@ -5,6 +5,7 @@ from pathlib import Path
 from jupyter_server.services.kernels.connection.channels import ZMQChannelsWebsocketConnection
 from traitlets.utils.importstring import import_item
 
+from course.classroom.cli import lab_command
 from course.classroom.serving import CONNECTION_CLASS, PromptConnection
 
 
@@ -32,5 +33,8 @@ def test_nagle_is_turned_off_before_the_kernel_is_connected(monkeypatch):
 def test_make_lab_and_make_app_start_their_servers_with_it():
     makefile = (Path(__file__).resolve().parent.parent / "Makefile").read_text()
     assert f"PROMPT := {CONNECTION_CLASS}\n" in makefile
-    assert "--ServerApp.kernel_websocket_connection_class=$(PROMPT)" in makefile
+    # make lab and make teach start JupyterLab through python -m course lab.
+    assert "$(BIN)/python -m course lab" in makefile
+    command = lab_command(Path("notebooks"), False, [])
+    assert f"--ServerApp.kernel_websocket_connection_class={CONNECTION_CLASS}" in command
     assert "--Voila.kernel_websocket_connection_class=$(PROMPT)" in makefile

@@ -37,10 +37,10 @@ from course.check.base import (
 )
 from course.check.de_casteljau import (
     LIBRARY_CURVES,
-    _curve_pass_picture,
-    _point_picture,
     as_point,
     curve_cases,
+    curve_pass_picture,
+    point_picture,
 )
 
 __all__ = ["COMB_CASES", "MAX_CALLS", "comb", "hint", "naive_bezier"]
@@ -294,7 +294,7 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
         convert=as_point,
         hint=NAIVE_HINTS,
         mistakes=mistakes,
-        picture=_point_picture(bezier_bernstein, "your naive_bezier"),
+        picture=point_picture(bezier_bernstein, "your naive_bezier"),
         forbidden=LIBRARY_CURVES,
-        pass_picture=_curve_pass_picture(bezier_bernstein, "naive_bezier"),
+        pass_picture=curve_pass_picture(bezier_bernstein, "naive_bezier"),
     )

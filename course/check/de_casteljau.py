@@ -54,9 +54,11 @@ __all__ = [
     "as_point",
     "bezier",
     "curve_cases",
+    "curve_pass_picture",
     "hint",
     "next_level",
     "point_mistakes",
+    "point_picture",
     "recursive_bezier",
 ]
 
@@ -112,7 +114,7 @@ def as_point(value: Any) -> np.ndarray:
         ) from None
 
 
-def _point_picture(
+def point_picture(
     reference: Callable[..., Any], title: str
 ) -> Callable[[dict[str, Any], Any, Any], bytes | None]:
     """The failing case's picture: its curve, the point expected at its t and the student's."""
@@ -134,7 +136,7 @@ def _point_picture(
     return draw
 
 
-def _curve_pass_picture(reference: Callable[..., Any], name: str) -> Callable[[list], bytes]:
+def curve_pass_picture(reference: Callable[..., Any], name: str) -> Callable[[list], bytes]:
     """A pass's picture: the student's points on seed 000's curve, beside the reference's."""
 
     def draw(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
@@ -214,9 +216,9 @@ def recursive_bezier(function: Callable[..., Any]) -> CheckResult:
         convert=as_point,
         hint=RECURSIVE_HINTS,
         mistakes=point_mistakes(_curve),
-        picture=_point_picture(_curve, "your recursive_bezier"),
+        picture=point_picture(_curve, "your recursive_bezier"),
         forbidden=LIBRARY_CURVES,
-        pass_picture=_curve_pass_picture(_curve, "recursive_bezier"),
+        pass_picture=curve_pass_picture(_curve, "recursive_bezier"),
     )
 
 

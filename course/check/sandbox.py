@@ -12,6 +12,10 @@ catches it. The kernel survives; the caller gets :class:`CaseStopped`.
 A call that stays inside one long C function (a single ``time.sleep(60)``)
 cannot be interrupted this way, nor a loop whose bare ``except:`` catches
 every raise; every other loop written in Python can.
+
+Unchecked: this is the checkers' kernel (``UNCHECKED = True``). It runs and
+copies whatever it is given, NaN included; ``course.check.base`` validates
+what reaches it.
 """
 
 from __future__ import annotations
@@ -32,6 +36,8 @@ from contextlib import AbstractContextManager, nullcontext
 from typing import Any
 
 import numpy as np
+
+UNCHECKED = True  # see the module docstring
 
 __all__ = [
     "MEMORY_BUDGET",

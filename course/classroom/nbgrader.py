@@ -27,6 +27,7 @@ from __future__ import annotations
 import ast
 import copy
 import importlib
+import itertools
 import os
 import shutil
 import tempfile
@@ -70,11 +71,14 @@ EXERCISE_POINTS = 1
 SCHEMA_VERSION = 3
 #: The library's answer to each exercise that a later one builds on, as "module:name":
 #: what a later exercise is graded with, so that a mistake is charged once.
+# The grader's own answers, written here: the checkers refuse an answer that runs the
+# library's (course.bezier.de_casteljau, binomial, course.resample.bilinear), and an
+# exercise graded with an earlier one's answer runs it inside the student's code.
 REFERENCES = {
     "next_level": "course.classroom.nbgrader:_next_level",
-    "recursive_bezier": "course.bezier:de_casteljau",
-    "comb": "course.bezier:binomial",
-    "bilinear_sample": "course.resample:bilinear",
+    "recursive_bezier": "course.classroom.nbgrader:_recursive_bezier",
+    "comb": "course.classroom.nbgrader:_comb",
+    "bilinear_sample": "course.classroom.nbgrader:_bilinear_sample",
 }
 
 CONFIG = '''"""nbgrader's configuration for the course, written by `python -m course nbgrader`."""
@@ -354,7 +358,45 @@ def earlier_exercises(function: Any, *names: str) -> Iterator[None]:
 
 
 def _next_level(control_points: Any, t: float) -> Any:
-    """The library's answer to lesson 01's ``next_level``: level 1 of de Casteljau's steps."""
-    from course.bezier import de_casteljau_levels
+    """The answer to lesson 01's ``next_level``: one de Casteljau step."""
+    import numpy as np
 
-    return de_casteljau_levels(control_points, t)[1]
+    points = np.asarray(control_points, dtype=float)
+    return (1 - t) * points[:-1] + t * points[1:]
+
+
+def _recursive_bezier(control_points: Any, t: float) -> Any:
+    """The answer to lesson 01's ``recursive_bezier``: steps until one point is left."""
+    import numpy as np
+
+    points = np.asarray(control_points, dtype=float)
+    while len(points) > 1:
+        points = _next_level(points, t)
+    return points[0]
+
+
+def _comb(m: int, n: int) -> int:
+    """The answer to lesson 02's ``comb``: row m of Pascal's triangle, exact integers."""
+    row = [1]
+    for _ in range(m):
+        row = [1, *(a + b for a, b in itertools.pairwise(row)), 1]
+    return row[n] if 0 <= n <= m else 0
+
+
+def _bilinear_sample(image: Any, x: float, y: float) -> Any:
+    """The answer to lesson 04's ``bilinear_sample``: centres at half pixels, edges clamped."""
+    import numpy as np
+
+    pixels = np.asarray(image, dtype=float)
+    height, width = pixels.shape[:2]
+
+    def taps(position: float, size: int) -> tuple[int, int, float]:
+        clamped = min(max(position, 0.0), size - 1)
+        first = min(int(np.floor(clamped)), max(size - 2, 0))
+        return first, min(first + 1, size - 1), clamped - first
+
+    left, right, fx = taps(float(x) - 0.5, width)
+    top, bottom, fy = taps(float(y) - 0.5, height)
+    upper = pixels[top, left] * (1 - fx) + pixels[top, right] * fx
+    lower = pixels[bottom, left] * (1 - fx) + pixels[bottom, right] * fx
+    return upper * (1 - fy) + lower * fy

@@ -224,6 +224,7 @@ class GrayLevelApp(SliderApp):
         ``n * (1 / 360)`` can land just above a ninth, ``40 * (1 / 360) >
         1 / 9``, which would light the next ordered pattern at the ninth itself.
         """
+        level = as_unit(level, "level")
         return round(level * cls.DIVISIONS) / cls.DIVISIONS
 
     @staticmethod

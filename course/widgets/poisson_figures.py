@@ -24,8 +24,9 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
-from course import images, poisson
+from course import images, limits, poisson
 from course import poisson_solvers as solvers
+from course._validate import as_int
 from course.widgets.picture import Still, bare_axes, pixel_axes, pixel_figure
 
 __all__ = [
@@ -421,6 +422,7 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
     the library (yours are not done yet): 28 sweeps; the dark window stays 0.4 below the
     pixel under it (0.100 against 0.500); the clone's ring equals the sky's
     """
+    zoom = as_int(zoom, "zoom", minimum=8, maximum=limits.MAX_ZOOM)
     g, sweeps, who = _tiny_correction(boundary, jacobi)
     height, width = TINY_FOREGROUND.shape
     x, y = TINY_OFFSET

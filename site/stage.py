@@ -57,6 +57,21 @@ HEADING = re.compile(r"^#+\s+(.+?)\s*$", re.MULTILINE)
 UNINFORMATIVE = re.compile(r"^<.*object>$|^\w+App\(")
 
 
+def myst_anchors(markdown: str) -> str:
+    """Links to a heading as JupyterLab spells its anchor (``#The-handouts``), as MyST does.
+
+    JupyterLab keeps the heading's case; MyST's heading anchors are lower case.
+
+    >>> myst_anchors("[the handouts](index.ipynb#The-handouts)")
+    '[the handouts](index.ipynb#the-handouts)'
+    """
+    return re.sub(
+        r"(\]\([^)#\s]*\.ipynb#)([^)\s]+)\)",
+        lambda link: f"{link.group(1)}{link.group(2).lower()})",
+        markdown,
+    )
+
+
 def text(value: str | list[str]) -> str:
     return value if isinstance(value, str) else "".join(value)
 
@@ -164,7 +179,9 @@ def stage(
         for number, cell in enumerate(notebook["cells"]):
             cell.setdefault("id", f"cell-{number}")
             if cell["cell_type"] == "markdown":
-                cell["source"] = text(cell["source"]).replace("00_index.ipynb", "index.ipynb")
+                cell["source"] = myst_anchors(
+                    text(cell["source"]).replace("00_index.ipynb", "index.ipynb")
+                )
             described = title
             for output in cell.get("outputs", []):
                 data = output.get("data", {})

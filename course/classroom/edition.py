@@ -63,6 +63,7 @@ __all__ = [
     "check_notebook",
     "exercise_stub",
     "notebook_text",
+    "parse_solution",
     "read_notebook",
     "reveals",
     "solution_bodies",
@@ -124,6 +125,27 @@ def exercise_stub(source: str) -> str:
     return "\n".join(lines)
 
 
+def parse_solution(source: str, where: str) -> ast.Module:
+    """The syntax tree of a solution cell's ``source``; a ValueError, beginning ``where``, if none.
+
+    Examples
+    --------
+    >>> parse_solution("def f(:", "cell 3").body
+    Traceback (most recent call last):
+    ...
+    ValueError: cell 3: a solution cell must be valid Python; line 1: invalid syntax
+    """
+    if not isinstance(source, str):
+        raise TypeError(f"source: expected a cell's source text; got {type(source).__name__}")
+    try:
+        return ast.parse(source)
+    except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte
+        raise ValueError(
+            f"{where}: a solution cell must be valid Python; "
+            f"line {getattr(error, 'lineno', '?')}: {getattr(error, 'msg', error)}"
+        ) from None
+
+
 def solution_bodies(source: str) -> list[tuple[int, int, str]]:
     """Where a solution cell's answers are: ``(start, end, indent)`` for each top-level function.
 
@@ -137,15 +159,7 @@ def solution_bodies(source: str) -> list[tuple[int, int, str]]:
     >>> solution_bodies("def f(x):\\n    return 2 * x\\n\\nf(1)")
     [(1, 2, '    ')]
     """
-    if not isinstance(source, str):
-        raise TypeError(f"source: expected a cell's source text; got {type(source).__name__}")
-    try:
-        tree = ast.parse(source)
-    except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte
-        raise ValueError(
-            f"source: a solution cell must be valid Python; "
-            f"line {getattr(error, 'lineno', '?')}: {getattr(error, 'msg', error)}"
-        ) from None
+    tree = parse_solution(source, "source")
     functions = [
         node for node in tree.body if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
     ]

@@ -46,6 +46,7 @@ from course.classroom.edition import (
     STUB_LINE,
     cell_source,
     notebook_text,
+    parse_solution,
     read_notebook,
     reveals,
     solution_bodies,
@@ -138,13 +139,7 @@ def exercises(notebook: dict[str, Any]) -> list[Exercise]:
     found: list[Exercise] = []
     for index in solution_cells(notebook):
         source = cell_source(notebook["cells"][index])
-        try:
-            tree = ast.parse(source)
-        except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte
-            raise ValueError(
-                f"notebook cell {index}: a solution cell must be valid Python; "
-                f"line {getattr(error, 'lineno', '?')}: {getattr(error, 'msg', error)}"
-            ) from None
+        tree = parse_solution(source, f"notebook cell {index}")
         functions = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
         last = tree.body[-1] if tree.body else None
         call = last.value if isinstance(last, ast.Expr) else None

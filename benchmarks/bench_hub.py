@@ -548,7 +548,16 @@ def main() -> int:
     args = parser.parse_args()
     if sorted(args.counts) != args.counts or args.counts[0] < 1:
         parser.error("--counts must be increasing positive class sizes")
-    return asyncio.run(main_async(args))
+    # A benchmark stopped with kill (SIGTERM) must still stop its hub and the class's
+    # servers: as an interrupt, the main task is cancelled and its `finally` runs.
+    signal.signal(signal.SIGTERM, signal.default_int_handler)
+    try:
+        return asyncio.run(main_async(args))
+    except KeyboardInterrupt:
+        print(
+            "bench_hub: stopped; the hub and every server it started are stopped", file=sys.stderr
+        )
+        return 130
 
 
 if __name__ == "__main__":

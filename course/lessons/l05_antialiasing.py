@@ -37,8 +37,8 @@ seed_000_renderings = figures.seed_000_renderings
 
 
 def zoom_app() -> ZoomApp:
-    """Lesson 05's first app, as its notebook builds it."""
-    return ZoomApp(SEED_000_CUBIC, SEED_000_SHAPE, picks=ZOOM_PICKS)
+    """Lesson 05's zoom app (its second; the step app comes first), as its notebook builds it."""
+    return ZoomApp(SEED_000_CUBIC, SEED_000_SHAPE, picks=ZOOM_PICKS, k=64)
 
 
 def zoom_landmarks(app: SliderApp) -> list[Landmark]:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -189,7 +190,12 @@ def diffusion_figure() -> Still:
         zoom=70,
     )
     shares = {(3, 0): 7, (1, 1): 3, (2, 1): 5, (3, 1): 1}
-    axes.text(2.5, 0.5, "x", ha="center", va="center", fontsize=16, weight="bold")
+    # Only the first font family: the Chinese edition's fallback font has no bold face, and
+    # matplotlib would log that it lacks one although "x" needs none of its glyphs.
+    first_family = matplotlib.rcParams["font.family"][0]
+    axes.text(
+        2.5, 0.5, "x", ha="center", va="center", fontsize=16, weight="bold", family=first_family
+    )
     for (column, row), share in shares.items():
         axes.text(
             column + 0.5,

@@ -12,6 +12,7 @@ from course.classroom.course_map import (
     README_MARKERS,
     course_map,
     handout_key,
+    lesson_card,
     readme_lessons,
     update_readme,
 )
@@ -156,3 +157,14 @@ def test_the_course_map_in_english_is_the_registry_as_written():
         "paste one image into another with no seam, by solving a Poisson equation"
     )
     assert not CHINESE.search(course_map(guide=True).split("| [")[0])
+
+
+def test_a_lesson_card_says_what_comes_after_it_in_the_language():
+    outcomes = ("blur", "find edges")
+    english = lesson_card("Lesson 07 · Filtering", "07_filtering.ipynb", outcomes)
+    assert english == (
+        "### [Lesson 07 · Filtering](07_filtering.ipynb)\n\nAfter it you can:\n* blur\n* find edges"
+    )
+    with language("zh-CN"):
+        chinese = lesson_card("第 07 课 · 滤波", "07_filtering.ipynb", outcomes)
+    assert chinese.splitlines()[2] == "学完这一课，你能够："

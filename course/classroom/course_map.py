@@ -28,6 +28,7 @@ __all__ = [
     "Handout",
     "course_map",
     "handout_key",
+    "lesson_card",
     "readme_lessons",
     "update_readme",
 ]
@@ -224,6 +225,27 @@ def course_map(folder: str | Path = NOTEBOOKS, link_prefix: str = "", guide: boo
         rows.append("| " + " | ".join(cells) + " |")
     table = "\n".join(rows)
     return f"{_(EXERCISE_GUIDE)}\n\n{table}" if guide else table
+
+
+def lesson_card(title: str, link: str, outcomes: tuple[str, ...]) -> str:
+    """A lesson's heading, linked, and what a student can do after it: the course map's card.
+
+    In the current language, as the course map notebook shows it above the lesson's
+    preview; ``outcomes`` are the registry's (:func:`~course.classroom.registry.lessons`
+    gives them translated).
+
+    Examples
+    --------
+    >>> print(lesson_card("Lesson 07 · Filtering", "07_filtering.ipynb", ("blur", "find edges")))
+    ### [Lesson 07 · Filtering](07_filtering.ipynb)
+    <BLANKLINE>
+    After it you can:
+    * blur
+    * find edges
+    """
+    listed = "".join(f"\n* {outcome}" for outcome in outcomes)
+    after = _("After it you can:")
+    return f"### [{title}]({link})\n\n{after}{listed}"
 
 
 def readme_lessons(folder: str | Path = NOTEBOOKS, link_prefix: str = "") -> str:

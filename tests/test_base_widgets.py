@@ -8,7 +8,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from course.widgets.base import Handle, SliderApp, format_points, parse_points
+from course.i18n import language
+from course.widgets.base import Handle, SliderApp, format_points, pad, parse_points
 
 
 class LineApp(SliderApp):
@@ -366,3 +367,35 @@ def test_an_apps_model_id_is_counted_per_class_not_random():
     assert first.startswith("course-DeCasteljauApp-") and second != first
     assert int(second.rsplit("-", 1)[1]) == int(first.rsplit("-", 1)[1]) + 1
     assert BernsteinBasisApp().widget.model_id.startswith("course-BernsteinBasisApp-")
+
+
+def test_a_table_pads_chinese_by_the_columns_it_takes():
+    assert pad("lit", 6, ">") == f"{'lit':>6s}" and pad("lit", 6) == f"{'lit':6s}"
+    assert pad("点亮", 6, ">") == "  点亮" and pad("（像素）", 9) == "（像素） "
+    assert pad("过长的名字", 4) == "过长的名字"
+    with pytest.raises(ValueError, match="align"):
+        pad("lit", 6, "^")
+
+
+class _OneSlider(SliderApp):
+    def __init__(self):
+        super().__init__({"t": widgets.FloatSlider(value=0.5)}, shape=(40, 40), dpi=40)
+
+    def update(self):
+        pass
+
+
+def test_the_status_line_speaks_the_language_and_clears_after_a_refused_value():
+    with language("zh-CN"):
+        app = _OneSlider()
+        app.controls["t"].value = float("nan")
+        assert app.status.value == "拒绝了 t = nan：应为有限的数；保留 0.5"
+        app.controls["t"].value = 0.25
+        assert app.status.value == ""
+        app._on_message(None, {"kind": "down"}, [])
+        assert app.status.value == "忽略了一条指针消息：缺少 x, y"
+        with pytest.raises(ValueError, match="不读取小数逗号") as error:
+            parse_points("90,5 610,5")
+        assert "第 1 个点" in str(error.value)
+    app.controls["t"].value = float("nan")
+    assert app.status.value == "Refused t = nan: expected a finite number; kept 0.25"

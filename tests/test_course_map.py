@@ -12,11 +12,13 @@ from course.classroom.course_map import (
     README_MARKERS,
     course_map,
     handout_key,
+    lesson_card,
     readme_lessons,
     update_readme,
 )
-from course.classroom.notebooks import notebooks
+from course.classroom.notebooks import NOTEBOOKS, notebooks
 from course.classroom.registry import lessons
+from course.i18n import language
 
 README = Path(__file__).resolve().parent.parent / "README.md"
 
@@ -119,3 +121,50 @@ def test_the_course_map_notebook_shows_how_an_exercise_works_above_the_table(tmp
     for words in ('raise NotImplementedError("your code here")', "run the cell", "**PASS**",
                   "**FAIL**", "student/", "make lab", "never"):  # fmt: skip
         assert words in EXERCISE_GUIDE, words
+
+
+CHINESE = re.compile("[\u4e00-\u9fff]")
+
+
+def test_the_course_map_in_chinese_shows_chinese_lessons_handouts_and_guide():
+    with language("zh-CN"):
+        shown = course_map(NOTEBOOKS / "zh-CN")
+        key = handout_key()
+        outcome = lessons()["08"].outcomes[0]
+        title = HANDOUTS[0].title
+    assert shown.startswith("### 练习怎么做")
+    assert "| 课 | 学完你能够 | 它解答的讲义任务 | 时长 |" in shown
+    assert "[第 01 课 · " in shown and "60 分钟" in shown
+    assert "用反复的线性插值，手算贝塞尔曲线上的一个点" in shown
+    # Each lesson's row: its title, what it teaches and its handout task, in Chinese.
+    rows = [line for line in shown.splitlines() if line.startswith("| [")]
+    assert len(rows) == len(lessons())
+    assert all(len(CHINESE.findall(row)) > 20 for row in rows)
+    assert outcome == "通过求解泊松方程，把一幅图像无缝地贴进另一幅"
+    assert key.startswith("| 课程里的称呼 |") and "| GAMES101 作业报告 |" in key
+    # The handouts' own titles stay as the student holds them, in both languages.
+    assert "| HW4:绘制贝塞尔曲线 + 线性插值反走样 |" in key and "| Lab01 Report |" in key
+    assert title.startswith("作业 4 的题目：GAMES101 作业报告在“题目”下引用")
+
+
+def test_the_course_map_in_english_is_the_registry_as_written():
+    assert HANDOUTS[0].title == (
+        "作业 4 的题目: quoted under 题目 in the GAMES101 report, and as 作业要求 in the VS2022 "
+        "report"
+    )
+    assert "anti-aliasing as the 提高部分" in HANDOUTS[0].holds
+    assert lessons()["08"].outcomes[0] == (
+        "paste one image into another with no seam, by solving a Poisson equation"
+    )
+    assert not CHINESE.search(course_map(guide=True).split("| [")[0])
+
+
+def test_a_lesson_card_says_what_comes_after_it_in_the_language():
+    outcomes = ("blur", "find edges")
+    english = lesson_card("Lesson 07 · Filtering", "07_filtering.ipynb", outcomes)
+    assert english == (
+        "### [Lesson 07 · Filtering](07_filtering.ipynb)\n\nAfter it you can:\n* blur\n* find edges"
+    )
+    with language("zh-CN"):
+        chinese = lesson_card("第 07 课 · 滤波", "07_filtering.ipynb", outcomes)
+    assert chinese.splitlines()[2] == "学完这一课，你能够："

@@ -325,6 +325,7 @@ VALID: dict[str, Any] = {
     "course.widgets.filtering.blurred:border": lambda: "replicate",
     "course.widgets.antialiasing.label_of:name": lambda: "bilinear_centres",
     "course.widgets.base.parse_points:text": lambda: "1, 2; 3, 4",
+    "course.widgets.base.pad:width": lambda: 12,
     "course.widgets.filtering.parse_kernel:text": lambda: "1 1 1; 1 1 1; 1 1 1",
     "course.widgets.filtering.format_kernel:kernel": lambda: np.ones((3, 3)),
     "course.widgets.dithering_figures.methods_figure:images": lambda: {"a": GRAY.copy()},

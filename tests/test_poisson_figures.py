@@ -2,8 +2,10 @@
 
 import numpy as np
 import pytest
+from chinese import check_chinese_figure
 
 from course import images, poisson
+from course.i18n import language
 from course.widgets import poisson_figures as figures
 
 # How far two machines may differ on the lab's record, in intensity units (the image is in
@@ -72,3 +74,15 @@ def test_write_lab_sweeps_checks_its_path_before_solving(path):
 def test_write_lab_sweeps_refuses_a_folder(tmp_path):
     with pytest.raises(ValueError, match="is a folder"):
         figures.write_lab_sweeps(str(tmp_path))
+
+
+def test_the_tiny_clone_in_chinese_has_chinese_words_and_every_glyph(monkeypatch, caplog):
+    check_chinese_figure(figures.tiny_clone_figure, (None, None, 10), monkeypatch, caplog)
+
+
+def test_a_printed_line_follows_the_language():
+    with language("zh-CN"):
+        chinese = figures.strip_and_square()
+    assert chinese == (
+        "3 x 3 正方形：0.7071；3 x 30 长条：0.8510；3 x 300 长条：0.8535；3 x 无穷：0.8536"
+    )

@@ -36,12 +36,15 @@ checks none (``UNCHECKED = True``; the fuzz test skips it).
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import pkgutil
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
+
+from course.i18n import _
 
 __all__ = [
     "LESSONS_PACKAGE",
@@ -136,7 +139,9 @@ class Lesson:
 
     ``outcomes`` says what a student will be able to do after the lesson,
     ``minutes`` about how long it takes, and ``preview`` is one legible,
-    single-panel picture for the course map.
+    single-panel picture for the course map. ``handout``, ``teaches`` and
+    ``outcomes`` are English, marked with :func:`course.i18n.N_` in the
+    lesson module; :func:`lessons` gives them in the current language.
     """
 
     handout: str
@@ -173,8 +178,12 @@ def lesson_modules() -> dict[str, str]:
 def lessons() -> dict[str, Lesson]:
     """Every lesson module's ``LESSON``, by lesson number, in lesson order.
 
-    Importing the modules imports what they draw with (numpy, matplotlib,
-    the apps); call this only where the pictures or the sliders are needed.
+    The entries' texts (``handout``, ``teaches``, ``outcomes``) are in the
+    language :func:`course.use_language` set, so that the course map, and any
+    notebook cell that reads an entry, speaks it; in English they are the
+    modules' own entries. Importing the modules imports what they draw with
+    (numpy, matplotlib, the apps); call this only where the pictures or the
+    sliders are needed.
     """
     entries = {}
     for number, name in lesson_modules().items():
@@ -183,5 +192,10 @@ def lessons() -> dict[str, Lesson]:
             raise TypeError(
                 f"{name}: expected a module-level LESSON = Lesson(...); got {type(lesson).__name__}"
             )
-        entries[number] = lesson
+        entries[number] = dataclasses.replace(
+            lesson,
+            handout=_(lesson.handout),
+            teaches=_(lesson.teaches),
+            outcomes=tuple(_(outcome) for outcome in lesson.outcomes),
+        )
     return entries

@@ -33,9 +33,11 @@ from course.curve_quality import (
     quality_table,
     variants,
 )
+from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.metrics import rmse
 from course.paths import canvas_for, text_curves
+from course.widgets.base import pad
 from course.widgets.picture import Still, pixel_figure
 
 __all__ = [
@@ -75,21 +77,33 @@ def _key(figure: Figure, handles: list, ncols: int | None = None) -> None:
     )
 
 
-#: The variants of lesson 05 by role: (who draws the curve this way, what the splat does).
+#: The variants of lesson 05 by role: (who draws the curve this way, what the splat does),
+#: in English; ``_(ROLES[name][0])`` is the current language's.
 ROLES = {
-    "nearest_truncate": ("plain loop, truncated", "the pixel under each sample, weight 1"),
-    "nearest_round": ("plain loop, rounded", "the nearest pixel corner, weight 1"),
+    "nearest_truncate": (N_("plain loop, truncated"), N_("the pixel under each sample, weight 1")),
+    "nearest_round": (N_("plain loop, rounded"), N_("the nearest pixel corner, weight 1")),
     "bilinear_zero_offset": (
-        "GAMES101 report, left addColor",
-        "corners made of the point: dx = dy = 0",
+        N_("GAMES101 report, left addColor"),
+        N_("corners made of the point: dx = dy = 0"),
     ),
-    "bilinear_corners": ("GAMES101 report, middle addColor", "bilinear, pixels at their corners"),
-    "bilinear_centres": ("GAMES101 report, right addColor", "bilinear about pixel centres"),
-    "subsample_falloff": ("any-degree report's falloff", "its own pixel, dimmed by distance"),
-    "normalised_centres": ("VS2022 report's splat", "four centres, weights sqrt(2) - d"),
-    "stroke_area": ("the stroke's area (library)", "each pixel's covered area, once"),
-    AGG: ("Agg (matplotlib)", "its outline's area, scanline by scanline"),
+    "bilinear_corners": (
+        N_("GAMES101 report, middle addColor"),
+        N_("bilinear, pixels at their corners"),
+    ),
+    "bilinear_centres": (
+        N_("GAMES101 report, right addColor"),
+        N_("bilinear about pixel centres"),
+    ),
+    "subsample_falloff": (
+        N_("any-degree report's falloff"),
+        N_("its own pixel, dimmed by distance"),
+    ),
+    "normalised_centres": (N_("VS2022 report's splat"), N_("four centres, weights sqrt(2) - d")),
+    "stroke_area": (N_("the stroke's area (library)"), N_("each pixel's covered area, once")),
+    AGG: (N_("Agg (matplotlib)"), N_("its outline's area, scanline by scanline")),
 }
+#: The two ways a sample's ink is weighted, by the name :func:`course.antialias.render` takes.
+_WEIGHTINGS = {"count": N_("count"), "arc_length": N_("arc length")}
 
 
 @functools.cache
@@ -119,21 +133,28 @@ def opening_figure(t: float = 0.06, size: int = 24, zoom: int = 12) -> Still:
     renderings, exact = seed_000_renderings()
     centre = de_casteljau(SEED_000_CUBIC, t)
     aliased, extent = crop(renderings["nearest_truncate"], centre, size)
-    smooth, _ = crop(exact, centre, size)
+    smooth, _extent = crop(exact, centre, size)
     figure, axes = pixel_figure(
         [
-            (aliased, extent, "the pixel under each sample"),
-            (smooth, extent, "each pixel: the area the stroke covers"),
+            (aliased, extent, _("the pixel under each sample")),
+            (smooth, extent, _("each pixel: the area the stroke covers")),
         ],
         zoom,
-        legend=[(VERMILLION, "the true curve")],
+        legend=[(VERMILLION, _("the true curve"))],
     )
     for panel in axes:
         _curve_overlay(panel, np.asarray(SEED_000_CUBIC, dtype=float))
-    caption = (
-        f"{size} x {size} pixels around t = {t:g}, each {zoom} x {zoom}: left "
-        f"{np.count_nonzero(aliased)} pixels are lit, all at 1; right "
-        f"{np.count_nonzero(smooth > 0.01)} are lit, from 0.01 to {smooth.max():.2f}"
+    caption = _(
+        "{size} x {size} pixels around t = {t:g}, each {zoom} x {zoom}: left "
+        "{aliased} pixels are lit, all at 1; right "
+        "{smooth} are lit, from 0.01 to {brightest:.2f}"
+    ).format(
+        size=size,
+        t=t,
+        zoom=zoom,
+        aliased=np.count_nonzero(aliased),
+        smooth=np.count_nonzero(smooth > 0.01),
+        brightest=smooth.max(),
     )
     return Still.of(figure, caption)
 
@@ -153,9 +174,9 @@ def pixel_area_figure(zoom: int = 64) -> Still:
     _key(
         figure,
         [
-            Line2D([], [], color=VERMILLION, lw=1.5, label="the stroke's edges (width 1)"),
-            Line2D([], [], color=BLUE, lw=0.8, label="pixel edges"),
-            Patch(facecolor="0.6", edgecolor="0.5", label="grey: the area covered (written)"),
+            Line2D([], [], color=VERMILLION, lw=1.5, label=_("the stroke's edges (width 1)")),
+            Line2D([], [], color=BLUE, lw=0.8, label=_("pixel edges")),
+            Patch(facecolor="0.6", edgecolor="0.5", label=_("grey: the area covered (written)")),
         ],
         ncols=2,
     )
@@ -176,10 +197,10 @@ def pixel_area_figure(zoom: int = 64) -> Still:
             fontsize=9,
             color="black" if value > 0.5 else "white",
         )
-    caption = (
-        f"pixel (2, 1) is {coverage[1, 2]:.2f} covered: the mean of the stroke over its "
+    caption = _(
+        "pixel (2, 1) is {covered:.2f} covered: the mean of the stroke over its "
         "square, lesson 04's box filter"
-    )
+    ).format(covered=coverage[1, 2])
     return Still.of(figure, caption)
 
 
@@ -202,10 +223,10 @@ def splat_figure(x: float = 3.3, y: float = 2.8, zoom: int = 96) -> Still:
     _key(
         figure,
         [
-            Line2D([], [], ls="", marker="o", color=VERMILLION, label="the curve point"),
-            Line2D([], [], ls="", marker="+", color=BLUE, mew=1.5, label="pixel centres"),
-            Line2D([], [], ls=":", color=GREEN, lw=1.5, label="its offset dx, dy"),
-            Patch(facecolor="0.6", edgecolor="0.5", label="grey: the weight (written)"),
+            Line2D([], [], ls="", marker="o", color=VERMILLION, label=_("the curve point")),
+            Line2D([], [], ls="", marker="+", color=BLUE, mew=1.5, label=_("pixel centres")),
+            Line2D([], [], ls=":", color=GREEN, lw=1.5, label=_("its offset dx, dy")),
+            Patch(facecolor="0.6", edgecolor="0.5", label=_("grey: the weight (written)")),
         ],
         ncols=2,
     )
@@ -231,10 +252,18 @@ def splat_figure(x: float = 3.3, y: float = 2.8, zoom: int = 96) -> Still:
             fontsize=10,
             color="black" if weight > 0.5 else "white",
         )
-    shares = ", ".join(f"{w:.2f}" for w in weights[order][:-1]) + f" and {weights[order][-1]:.2f}"
-    caption = (
-        f"({x:g}, {y:g}) lies {dx:.1f} right of and {dy:.1f} below the centre "
-        f"({first[0]:g}, {first[1]:g}): weights {shares}"
+    caption = _(
+        "({x:g}, {y:g}) lies {dx:.1f} right of and {dy:.1f} below the centre "
+        "({cx:g}, {cy:g}): weights {shares} and {last:.2f}"
+    ).format(
+        x=x,
+        y=y,
+        dx=dx,
+        dy=dy,
+        cx=first[0],
+        cy=first[1],
+        shares=_(", ").join(f"{w:.2f}" for w in weights[order][:-1]),
+        last=weights[order][-1],
     )
     return Still.of(figure, caption)
 
@@ -257,26 +286,32 @@ def brightness_figure(
     for axes, weighting, title in zip(
         panels,
         ("count", "arc_length"),
-        ("counted, as the handouts do", "weighted by the length each sample stands for"),
+        (_("counted, as the handouts do"), _("weighted by the length each sample stands for")),
         strict=True,
     ):
         for step, dashes, colour in zip(steps, _DASHES, _COLOURS, strict=False):
             image = render(SEED_000_CUBIC, SEED_000_SHAPE, method, step=step, weighting=weighting)
             positions, density = intensity_along(image, SEED_000_CUBIC)
-            axes.plot(positions, density, lw=1.4, ls=dashes, color=colour, label=f"step {step:g}")
+            label = _("step {step:g}").format(step=step)
+            axes.plot(positions, density, lw=1.4, ls=dashes, color=colour, label=label)
             ranges[weighting, step] = (density.min(), density.max())
-        axes.axhline(1.0, color="black", lw=0.6, ls=(0, (1, 3)), label="1: evenly bright")
+        axes.axhline(1.0, color="black", lw=0.6, ls=(0, (1, 3)), label=_("1: evenly bright"))
         axes.set_title(title, fontsize=9)
-        axes.set_xlabel("distance along the curve (px)", fontsize=8)
+        axes.set_xlabel(_("distance along the curve (px)"), fontsize=8)
         axes.tick_params(labelsize=7)
-    panels[0].set_ylabel("ink per px of length", fontsize=8)
+    panels[0].set_ylabel(_("ink per px of length"), fontsize=8)
     panels[1].legend(fontsize=7)
     figure.tight_layout()
     parts = []
     for step in steps[-2:]:
         (c0, c1), (a0, a1) = ranges["count", step], ranges["arc_length", step]
-        parts.append(f"step {step:g}: counted {c0:.2f}..{c1:.2f}, by length {a0:.2f}..{a1:.2f}")
-    return Still.of(figure, "ink per px of length, " + "; ".join(parts))
+        parts.append(
+            _("step {step:g}: counted {c0:.2f}..{c1:.2f}, by length {a0:.2f}..{a1:.2f}").format(
+                step=step, c0=c0, c1=c1, a0=a0, a1=a1
+            )
+        )
+    caption = _("ink per px of length, {parts}").format(parts=_("; ").join(parts))
+    return Still.of(figure, caption)
 
 
 def _as_steps(steps: Any) -> tuple[float, ...]:
@@ -322,19 +357,24 @@ def variants_table() -> Table:
     0.001, and weighted by arc length.
     """
     names, counted, by_length, others = _variant_rows()
+    variant, what_it_does = pad(_("variant"), 34), pad(_("what it does"), 40)
+    counted_, by_length_ = pad(_("counted"), 15, ">"), pad(_("by length"), 15, ">")
+    rmse_, cv = pad(_("RMSE"), 7, ">"), pad(_("CV"), 7, ">")
     lines = [
-        f"{'variant':34s} {'what it does':40s} {'counted':>15s} {'by length':>15s}",
-        f"{'':34s} {'':40s} {'RMSE':>7s} {'CV':>7s} {'RMSE':>7s} {'CV':>7s}",
+        f"{variant} {what_it_does} {counted_} {by_length_}",
+        f"{'':34s} {'':40s} {rmse_} {cv} {rmse_} {cv}",
     ]
     for name, count, length in zip(names, counted, by_length, strict=True):
-        who, what = ROLES[name]
+        who, what = (_(text) for text in ROLES[name])
         lines.append(
-            f"{who:34s} {what:40s} {count['rmse']:7.4f} {100 * count['cv']:6.1f}% "
+            f"{pad(who, 34)} {pad(what, 40)} {count['rmse']:7.4f} {100 * count['cv']:6.1f}% "
             f"{length['rmse']:7.4f} {100 * length['cv']:6.1f}%"
         )
     for row in others:
-        who, what = ROLES[row["name"]]
-        lines.append(f"{who:34s} {what:40s} {row['rmse']:7.4f} {100 * row['cv']:6.1f}% {'':>15s}")
+        who, what = (_(text) for text in ROLES[row["name"]])
+        lines.append(
+            f"{pad(who, 34)} {pad(what, 40)} {row['rmse']:7.4f} {100 * row['cv']:6.1f}% {'':>15s}"
+        )
     return Table("\n".join(lines))
 
 
@@ -348,7 +388,8 @@ def variants_figure() -> Still:
     the least error: the stroke's area (library), 0.0002
     """
     names, counted, by_length, others = _variant_rows()
-    labels = [ROLES[n][0] for n in names] + [ROLES[row["name"]][0] for row in others]
+    shown = [*names, *(row["name"] for row in others)]
+    labels = [_(ROLES[name][0]) for name in shown]
     figure = Figure(figsize=(9.0, 3.4), dpi=100)
     error_axes, cv_axes = figure.subplots(1, 2, sharey=True)
     rows = np.arange(len(labels))[::-1]
@@ -359,26 +400,26 @@ def variants_figure() -> Still:
             [scale * row[key] for row in counted],
             height,
             color="0.7",
-            label="counted (the handouts)",
+            label=_("counted (the handouts)"),
         )
         axes.barh(
             rows[: len(names)] - height / 2,
             [scale * row[key] for row in by_length],
             height,
             color=BLUE,
-            label="weighted by length",
+            label=_("weighted by length"),
         )
         axes.barh(
             rows[len(names) :],
             [scale * row[key] for row in others],
             height,
             color=GREEN,
-            label="not a splat: each pixel's area",
+            label=_("not a splat: each pixel's area"),
         )
         axes.tick_params(labelsize=7)
     error_axes.set_xscale("log")
-    error_axes.set_xlabel("RMSE against the exact coverage (log scale)", fontsize=8)
-    cv_axes.set_xlabel("brightness variation along the curve, CV (%)", fontsize=8)
+    error_axes.set_xlabel(_("RMSE against the exact coverage (log scale)"), fontsize=8)
+    cv_axes.set_xlabel(_("brightness variation along the curve, CV (%)"), fontsize=8)
     error_axes.set_yticks(rows, labels, fontsize=8)
     cv_axes.legend(fontsize=7, loc="lower right")
     figure.tight_layout()
@@ -387,11 +428,18 @@ def variants_figure() -> Still:
     fixed_low = min(row["cv"] for row in by_length)
     fixed_high = max(row["cv"] for row in by_length)
     best = min(counted + by_length + others, key=lambda row: row["rmse"])
-    best_name = ROLES.get(best["name"], (best["name"],))[0]
-    caption = (
-        f"weighted by length, the CV falls from {100 * low:.1f}-{100 * high:.1f}% to "
-        f"{100 * fixed_low:.1f}-{100 * fixed_high:.1f}%; the least error: {best_name}, "
-        f"{best['rmse']:.4f}"
+    best_role = ROLES.get(best["name"], (best["name"],))[0]
+    best_name = _(best_role)
+    caption = _(
+        "weighted by length, the CV falls from {low:.1f}-{high:.1f}% to "
+        "{fixed_low:.1f}-{fixed_high:.1f}%; the least error: {best}, {error:.4f}"
+    ).format(
+        low=100 * low,
+        high=100 * high,
+        fixed_low=100 * fixed_low,
+        fixed_high=100 * fixed_high,
+        best=best_name,
+        error=best["rmse"],
     )
     return Still.of(figure, caption)
 
@@ -407,16 +455,22 @@ def claims() -> Table:
     renderings, exact = seed_000_renderings()
     plain = renderings["nearest_round"]
     shown = (
-        ("no anti-aliasing", plain),
-        ("left (Point2f)", renderings["bilinear_zero_offset"]),
-        ("middle (Point)", renderings["bilinear_corners"]),
-        ("right (rounded)", renderings["bilinear_centres"]),
+        (_("no anti-aliasing"), plain),
+        (_("left (Point2f)"), renderings["bilinear_zero_offset"]),
+        (_("middle (Point)"), renderings["bilinear_corners"]),
+        (_("right (rounded)"), renderings["bilinear_centres"]),
     )
     return Table(
         "\n".join(
-            f"{name:19s} pixels differing from it: {np.count_nonzero(image != plain):5d}  "
-            f"RMSE {rmse(image, exact):.4f}  position error "
-            f"{position_error(image, SEED_000_CUBIC):.3f} px"
+            _(
+                "{name} pixels differing from it: {count:5d}  "
+                "RMSE {error:.4f}  position error {position:.3f} px"
+            ).format(
+                name=pad(name, 19),
+                count=np.count_nonzero(image != plain),
+                error=rmse(image, exact),
+                position=position_error(image, SEED_000_CUBIC),
+            )
             for name, image in shown
         )
     )
@@ -439,10 +493,22 @@ def speeds(step: float = 0.001) -> Table:
     bend = int(np.argmin(speed[: len(t) // 2]))
     end, slowest, middle = speed[0], speed[bend], speed[len(t) // 2]
     return Table(
-        f"the curve moves {end:.0f} px per unit t at its ends, {slowest:.0f} at its two bends "
-        f"(t = {t[bend, 0]:.3f} and {1 - t[bend, 0]:.3f}) and {middle:.0f} in the middle: at "
-        f"step {step:g} its samples fall {end * step:.2f}, {slowest * step:.2f} and "
-        f"{middle * step:.2f} px apart"
+        _(
+            "the curve moves {end:.0f} px per unit t at its ends, {slowest:.0f} at its two bends "
+            "(t = {first:.3f} and {second:.3f}) and {middle:.0f} in the middle: at "
+            "step {step:g} its samples fall {end_gap:.2f}, {slowest_gap:.2f} and "
+            "{middle_gap:.2f} px apart"
+        ).format(
+            end=end,
+            slowest=slowest,
+            first=t[bend, 0],
+            second=1 - t[bend, 0],
+            middle=middle,
+            step=step,
+            end_gap=end * step,
+            slowest_gap=slowest * step,
+            middle_gap=middle * step,
+        )
     )
 
 
@@ -473,19 +539,21 @@ def step_study(
     )
     for step in steps:
         require_step_samples(step, "steps")
+    step_ = pad(_("step"), 10)
+    weighting_, end = _("weighting"), pad(_("end"), 5, ">")
+    mean, cv = pad(_("mean"), 6, ">"), pad(_("CV"), 6, ">")
     lines = [
-        f"{'step':10s} {'weighting':11s} {'end':>5s} {'mean':>6s} {'CV':>6s}   "
-        f"{'weighting':12s} {'end':>5s} {'mean':>6s} {'CV':>6s}"
+        f"{step_} {pad(weighting_, 11)} {end} {mean} {cv}   {pad(weighting_, 12)} {end} {mean} {cv}"
     ]
     for step in steps:
         parts = [f"{step:<10g}"]
         for weighting in ("count", "arc_length"):
             image = render(SEED_000_CUBIC, SEED_000_SHAPE, method, step=step, weighting=weighting)
-            _, ink = intensity_along(image, SEED_000_CUBIC)
+            _positions, ink = intensity_along(image, SEED_000_CUBIC)
             # The curve leaves (10, 10) level and fast: columns 12..59, rows 5..19 hold it.
             emptiest = image[5:20, 12:60].sum(axis=0).min()
             parts.append(
-                f"{weighting.replace('_', ' '):12s} {emptiest:5.2f} {ink.mean():6.2f} "
+                f"{pad(_(_WEIGHTINGS[weighting]), 12)} {emptiest:5.2f} {ink.mean():6.2f} "
                 f"{100 * ink.std() / ink.mean():5.1f}%"
             )
         lines.append(" ".join(parts[:2]) + "   " + parts[2])
@@ -508,20 +576,24 @@ def offset_figure(t: float = 0.06, size: int = 16, zoom: int = 14) -> Still:
     renderings, exact = seed_000_renderings()
     centre = de_casteljau(SEED_000_CUBIC, t)
     shown = (
-        ("middle addColor", renderings["bilinear_corners"]),
-        ("right addColor", renderings["bilinear_centres"]),
-        ("exact coverage", exact),
+        (_("middle addColor"), renderings["bilinear_corners"]),
+        (_("right addColor"), renderings["bilinear_centres"]),
+        (_("exact coverage"), exact),
     )
-    errors = [position_error(image, SEED_000_CUBIC) for _, image in shown]
+    errors = [position_error(image, SEED_000_CUBIC) for _name, image in shown]
     windows = []
     for (name, image), error in zip(shown, errors, strict=True):
         window, extent = crop(image, centre, size)
-        windows.append((window, extent, f"{name}\nposition error {error:.3f} px"))
-    figure, axes = pixel_figure(windows, zoom, legend=[(VERMILLION, "the true curve")])
+        title = _("{name}\nposition error {error:.3f} px").format(name=name, error=error)
+        windows.append((window, extent, title))
+    figure, axes = pixel_figure(windows, zoom, legend=[(VERMILLION, _("the true curve"))])
     for panel in axes:
         _curve_overlay(panel, np.asarray(SEED_000_CUBIC, dtype=float))
-    caption = "position error over the whole curve: " + ", ".join(
-        f"{name} {error:.3f} px" for (name, _), error in zip(shown, errors, strict=True)
+    caption = _("position error over the whole curve: {errors}").format(
+        errors=_(", ").join(
+            _("{name} {error:.3f} px").format(name=name, error=error)
+            for (name, _image), error in zip(shown, errors, strict=True)
+        )
     )
     return Still.of(figure, caption)
 
@@ -551,16 +623,16 @@ def text_figure(text: str = "Bé", size: float = 40.0, zoom: int = 6) -> Still:
     agg = agg_render(curves, shape)
     ours = render(curves, shape, "stroke_area")
     extent = (0, shape[1], shape[0], 0)
-    figure, _ = pixel_figure(
+    figure, _axes = pixel_figure(
         [
-            (agg, extent, "Agg (matplotlib)"),
-            (ours, extent, "stroke area"),
-            (exact, extent, "exact"),
+            (agg, extent, _("Agg (matplotlib)")),
+            (ours, extent, _("stroke area")),
+            (exact, extent, _("exact")),
         ],
         zoom,
     )
-    caption = (
-        f"{text!r} at {size:g} px, stroked at width 1, against the exact coverage: RMSE Agg "
-        f"{rmse(agg, exact):.4f}, stroke area {rmse(ours, exact):.4f}"
-    )
+    caption = _(
+        "{text} at {size:g} px, stroked at width 1, against the exact coverage: RMSE Agg "
+        "{agg:.4f}, stroke area {ours:.4f}"
+    ).format(text=repr(text), size=size, agg=rmse(agg, exact), ours=rmse(ours, exact))
     return Still.of(figure, caption)

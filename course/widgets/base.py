@@ -22,6 +22,7 @@ from __future__ import annotations
 import base64
 import itertools
 import re
+import unicodedata
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -35,6 +36,7 @@ from matplotlib.patches import Rectangle
 
 from course import limits
 from course._validate import as_choice, as_int, as_shape, describe
+from course.i18n import N_, _
 from course.widgets.picture import FigureView, Still
 
 __all__ = [
@@ -42,6 +44,7 @@ __all__ = [
     "Handle",
     "SliderApp",
     "format_points",
+    "pad",
     "parse_points",
 ]
 
@@ -55,21 +58,42 @@ _POINT = re.compile(
     rf"|\[\s*({_NUMBER})\s*,\s*({_NUMBER})\s*\]"
     rf"|({_NUMBER})\s*,\s*({_NUMBER}))\s*"
 )
-_FORM = "write each point as x, y and separate points with ';' or a new line"
+_FORM = N_("write each point as x, y and separate points with ';' or a new line")
+
+
+def pad(text: str, width: int, align: str = "<") -> str:
+    """``text`` padded with spaces to ``width`` columns of a monospaced font, as in a table.
+
+    A Chinese character takes two columns, so a table of Chinese names keeps its columns
+    where ``f"{text:{width}s}"`` would not; for English it is exactly that. ``align`` is
+    ``"<"`` (text on the left) or ``">"``; text wider than ``width`` is left whole.
+
+    Examples
+    --------
+    >>> pad("RMSE", 6, ">") + "|", pad("均方根", 8) + "|"
+    ('  RMSE|', '均方根  |')
+    """
+    if not isinstance(text, str):
+        raise TypeError(f"text must be a str; got {describe(text)}")
+    width = as_int(width, "width", minimum=0, maximum=1000)
+    align = as_choice(align, "align", ("<", ">"))
+    columns = sum(2 if unicodedata.east_asian_width(c) in "WF" else 1 for c in text)
+    fill = " " * max(width - columns, 0)
+    return fill + text if align == ">" else text + fill
 
 
 def _why_not_a_point(piece: str) -> str:
     """What keeps ``piece`` (one point's text) from reading as x, y, for the student to fix."""
     numbers = re.findall(_NUMBER, piece)
     if re.search(r"\b0[xXbBoO]", piece):
-        return "numbers must be decimal (0x10 and 0b1 are not read)"
+        return _("numbers must be decimal (0x10 and 0b1 are not read)")
     if re.search(r"\d,\d", piece) and len(numbers) > 2:
-        return "a decimal comma is not read: write 90.5, not 90,5"
+        return _("a decimal comma is not read: write 90.5, not 90,5")
     if len(numbers) > 2:
-        return f"a point is two numbers; got {len(numbers)}"
+        return _("a point is two numbers; got {count}").format(count=len(numbers))
     if "," not in piece:
-        return "the x and the y need a comma between them"
-    return "expected two decimal numbers such as 90.5, -3 or 1e2"
+        return _("the x and the y need a comma between them")
+    return _("expected two decimal numbers such as 90.5, -3 or 1e2")
 
 
 def parse_points(text: str) -> np.ndarray:
@@ -98,22 +122,27 @@ write 90.5, not 90,5 (write each point as x, y and separate points with ';' or a
     pieces = [piece.strip() for piece in re.split(r"[;\n]", text)]
     pieces = [piece for piece in pieces if piece]
     if not pieces:
-        raise ValueError(f"points: expected text such as '10, 10; 690, 10'; got {text!r}")
+        raise ValueError(
+            _("points: expected text such as '10, 10; 690, 10'; got {text}").format(text=repr(text))
+        )
     numbers = []
     for index, piece in enumerate(pieces, start=1):
         match = _POINT.fullmatch(piece)
         if match is None:
             shown = piece if len(piece) <= 40 else piece[:37] + "..."
             raise ValueError(
-                f"points: point {index}, {shown!r}, is not x, y: {_why_not_a_point(piece)} "
-                f"({_FORM})"
+                _("points: point {index}, {shown}, is not x, y: {why} ({form})").format(
+                    index=index, shown=repr(shown), why=_why_not_a_point(piece), form=_(_FORM)
+                )
             )
         numbers.extend(float(value) for value in match.groups() if value is not None)
     points = np.array(numbers).reshape(-1, 2)
     if not np.isfinite(points).all():
-        raise ValueError("points must be finite numbers")
+        raise ValueError(_("points must be finite numbers"))
     if np.abs(points).max() > limits.MAX_COORDINATE:
-        raise ValueError(f"points must lie within +-{limits.MAX_COORDINATE:g}")
+        raise ValueError(
+            _("points must lie within +-{bound:g}").format(bound=limits.MAX_COORDINATE)
+        )
     return points
 
 
@@ -211,6 +240,7 @@ class SliderApp:
         self._press: tuple[float, float] | None = None
         self._held = False
         self._restoring = False
+        self._refused = False  # the status line says a value was refused
         self._rings: dict[Axes, tuple[Line2D, Rectangle]] = {}
         self.moving: list[Any] = []
         # Artists that move with one handle only (its label): while another is
@@ -281,8 +311,9 @@ class SliderApp:
             return
         if self._held:
             return  # one redraw after the drag has set every control it moves
-        if self.status.value.startswith("Refused "):
+        if self._refused:
             self.status.value = ""  # a good value follows a refused one
+            self._refused = False
         try:
             self.refresh()
         except (ValueError, TypeError) as error:
@@ -304,9 +335,10 @@ class SliderApp:
             owner.value = old
         finally:
             self._restoring = False
-        self.status.value = (
-            f"Refused {name} = {_format(change['new'])}: {reason}; kept {_format(old)}"
+        self.status.value = _("Refused {name} = {value}: {reason}; kept {kept}").format(
+            name=name, value=_format(change["new"]), reason=reason, kept=_format(old)
         )
+        self._refused = True
 
     @contextmanager
     def holding(self) -> Iterator[None]:
@@ -337,9 +369,14 @@ class SliderApp:
         try:
             points = parse_points(self.value(control))
             if len(points) != count:
-                raise ValueError(f"expected {count} point{'s' * (count > 1)}; got {len(points)}")
+                expected = (
+                    _("expected {count} points; got {given}")
+                    if count > 1
+                    else _("expected {count} point; got {given}")
+                )
+                raise ValueError(expected.format(count=count, given=len(points)))
             if whole and (points != np.round(points)).any():
-                raise ValueError("expected whole pixels")
+                raise ValueError(_("expected whole pixels"))
             low_x, low_y = np.broadcast_to(low, 2)
             high_x, high_y = np.broadcast_to(high, 2)
             if (
@@ -347,10 +384,14 @@ class SliderApp:
                 or not ((low_y <= points[:, 1]) & (points[:, 1] <= high_y)).all()
             ):
                 raise ValueError(
-                    f"x must lie from {low_x:g} to {high_x:g}, y from {low_y:g} to {high_y:g}"
+                    _("x must lie from {x0:g} to {x1:g}, y from {y0:g} to {y1:g}").format(
+                        x0=low_x, x1=high_x, y0=low_y, y1=high_y
+                    )
                 )
         except ValueError as error:
-            self.status.value = f"Kept the last {control}: {error}"
+            self.status.value = _("Kept the last {control}: {error}").format(
+                control=control, error=error
+            )
             return np.array(kept, dtype=float)
         self.status.value = ""
         return points
@@ -449,13 +490,17 @@ class SliderApp:
         # NaN) is reported on the status line, never raised out of the observer.
         try:
             if not isinstance(content, dict):
-                raise TypeError(f"expected a dict with kind, x and y; got {describe(content)}")
+                raise TypeError(
+                    _("expected a dict with kind, x and y; got {given}").format(
+                        given=describe(content)
+                    )
+                )
             missing = [key for key in ("kind", "x", "y") if key not in content]
             if missing:
-                raise ValueError(f"missing {', '.join(missing)}")
+                raise ValueError(_("missing {keys}").format(keys=", ".join(missing)))
             self.pointer(content["kind"], content["x"], content["y"])
         except (ValueError, TypeError) as error:
-            self.status.value = f"Ignored a pointer message: {error}"
+            self.status.value = _("Ignored a pointer message: {error}").format(error=error)
         finally:
             self.view.image.send({"kind": "drawn"})
 
@@ -613,7 +658,7 @@ def _not_finite(value: Any) -> str:
     values = value if isinstance(value, tuple) else (value,)
     for item in values:
         if isinstance(item, (float, np.floating)) and not np.isfinite(item):
-            return "expected a finite number"
+            return _("expected a finite number")
     return ""
 
 

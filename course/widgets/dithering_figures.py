@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -21,6 +22,8 @@ from course._validate import as_gray, as_image, as_int, as_point
 from course.blue_noise import blue_noise_mask, low_frequency_fraction, radial_power_spectrum
 from course.canvas import crop
 from course.error_diffusion import diffusion_offsets
+from course.i18n import _
+from course.widgets.base import pad
 from course.widgets.picture import GRAY_PIXELS, Still, bare_axes, pixel_axes, pixel_figure
 
 __all__ = [
@@ -66,7 +69,8 @@ def methods_figure(
     The first image sets the scale; an image three times larger (ordered
     dithering) is shrunk and zoomed three times less, so every panel shows
     the same part of the picture at the same size. ``zoom`` must be a
-    multiple of 3.
+    multiple of 3. A name the course's catalog knows (the lab's methods,
+    ``"original"``) is shown in the current language.
 
     Examples
     --------
@@ -104,7 +108,7 @@ def methods_figure(
         overview = bare_axes(pixel_axes(figure, left, top - over_h, over_w, over_h))
         small = block_mean(image, shrink * scale)
         overview.imshow(small, extent=(0, small.shape[1], small.shape[0], 0), **GRAY_PIXELS)
-        overview.set_title(name, fontsize=9)
+        overview.set_title(_(name), fontsize=9)
         window, (x0, x1, y1, y0) = crop(image, np.multiply(centre, scale), size * scale)
         box = Rectangle(
             (x0 / (shrink * scale), y0 / (shrink * scale)),
@@ -119,10 +123,10 @@ def methods_figure(
         full = np.full((size * scale, size * scale), 0.5)
         full[: window.shape[0], : window.shape[1]] = window
         zoomed.imshow(full, extent=(0, size * scale, size * scale, 0), **GRAY_PIXELS)
-    caption = (
-        f"{len(arrays)} images; the window {size} x {size} around ({centre[0]:g}, "
-        f"{centre[1]:g}), each pixel {zoom} x {zoom} screen pixels"
-    )
+    caption = _(
+        "{count} images; the window {size} x {size} around ({x:g}, {y:g}), "
+        "each pixel {zoom} x {zoom} screen pixels"
+    ).format(count=len(arrays), size=size, x=centre[0], y=centre[1], zoom=zoom)
     return Still.of(figure, caption)
 
 
@@ -139,28 +143,29 @@ def mask_figure(size: int = 64, seed: int = 0) -> Still:
     zoom = max(1, 256 // (2 * size))
     side = 2 * size * zoom
     figure = Figure(figsize=((2 * side + 400) / 100, (side + 60) / 100), dpi=100)
-    for index, (picture, name) in enumerate(((mask, "void-and-cluster"), (white, "white noise"))):
+    blue_name, white_name = _("void-and-cluster"), _("white noise")
+    for index, (picture, name) in enumerate(((mask, blue_name), (white, white_name))):
         axes = bare_axes(pixel_axes(figure, 16 + index * (side + 16), 16, side, side))
         tiled = np.tile(picture, (2, 2))
         axes.imshow(tiled, extent=(0, 2 * size, 2 * size, 0), **GRAY_PIXELS)
-        axes.set_title(f"{name}, tiled 2 x 2", fontsize=9)
+        axes.set_title(_("{name}, tiled 2 x 2").format(name=name), fontsize=9)
     chart = figure.add_axes(
         ((2 * side + 90) / figure.bbox.width, 0.18, 280 / figure.bbox.width, 0.68)
     )
     frequency, blue_power = radial_power_spectrum(mask)
-    _, white_power = radial_power_spectrum(white)
-    chart.plot(frequency, blue_power, color=BLUE, label="void-and-cluster")
-    chart.plot(frequency, white_power, color=VERMILLION, ls="--", label="white noise")
+    _frequency, white_power = radial_power_spectrum(white)
+    chart.plot(frequency, blue_power, color=BLUE, label=blue_name)
+    chart.plot(frequency, white_power, color=VERMILLION, ls="--", label=white_name)
     chart.axvline(0.125, color="0.5", lw=0.8, ls=":")
-    chart.set_xlabel("frequency (cycles per pixel)", fontsize=8)
-    chart.set_ylabel("power", fontsize=8)
+    chart.set_xlabel(_("frequency (cycles per pixel)"), fontsize=8)
+    chart.set_ylabel(_("power"), fontsize=8)
     chart.tick_params(labelsize=7)
     chart.legend(fontsize=7)
     blue_low, white_low = low_frequency_fraction(mask), low_frequency_fraction(white)
-    caption = (
-        f"power below 0.125 cycles per pixel: mask {blue_low:.2e}, white noise {white_low:.3f} "
-        f"({white_low / blue_low:.1e} times less)"
-    )
+    caption = _(
+        "power below 0.125 cycles per pixel: mask {mask:.2e}, white noise {white:.3f} "
+        "({ratio:.1e} times less)"
+    ).format(mask=blue_low, white=white_low, ratio=white_low / blue_low)
     return Still.of(figure, caption)
 
 
@@ -175,11 +180,22 @@ def diffusion_figure() -> Still:
     shades = np.array([[0.55, 0.55, 1.0, 1.0, 1.0], [1.0, 1.0, 1.0, 1.0, 1.0]])
     shades[0, 2] = 0.8
     figure, (axes,) = pixel_figure(
-        [(shades, (0, 5, 2, 0), "visited (gray), this pixel (x), the four that get its error")],
+        [
+            (
+                shades,
+                (0, 5, 2, 0),
+                _("visited (gray), this pixel (x), the four that get its error"),
+            )
+        ],
         zoom=70,
     )
     shares = {(3, 0): 7, (1, 1): 3, (2, 1): 5, (3, 1): 1}
-    axes.text(2.5, 0.5, "x", ha="center", va="center", fontsize=16, weight="bold")
+    # Only the first font family: the Chinese edition's fallback font has no bold face, and
+    # matplotlib would log that it lacks one although "x" needs none of its glyphs.
+    first_family = matplotlib.rcParams["font.family"][0]
+    axes.text(
+        2.5, 0.5, "x", ha="center", va="center", fontsize=16, weight="bold", family=first_family
+    )
     for (column, row), share in shares.items():
         axes.text(
             column + 0.5,
@@ -193,10 +209,10 @@ def diffusion_figure() -> Still:
     for k in range(6):
         axes.axvline(k, color="0.7", lw=0.8)
     axes.axhline(1, color="0.7", lw=0.8)
-    caption = (
+    caption = _(
         "the error goes 7/16 right, 3/16 below left, 5/16 below, 1/16 below right: "
-        f"{sum(shares.values())}/16 in all"
-    )
+        "{total}/16 in all"
+    ).format(total=sum(shares.values()))
     return Still.of(figure, caption)
 
 
@@ -289,13 +305,16 @@ def by_hand_figure(gray: np.ndarray = BY_HAND, zoom: int = 52) -> Still:
             )
         error = seen - dots[y, x]
         axes.set_title(
-            f"pixel ({x}, {y}): {seen:.3f} -> {dots[y, x]:.0f}\nerror {error:+.3f}", fontsize=8
+            _("pixel ({x}, {y}): {seen:.3f} -> {dot:.0f}\nerror {error:+.3f}").format(
+                x=x, y=y, seen=seen, dot=dots[y, x], error=error
+            ),
+            fontsize=8,
         )
     figure.legend(
         handles=[
-            Line2D([], [], color=VERMILLION, lw=3, label="the pixel visited"),
-            Patch(facecolor="white", edgecolor="0.5", label="its dot, 1 or 0"),
-            Patch(facecolor="0.55", edgecolor="0.5", label="grey: value so far"),
+            Line2D([], [], color=VERMILLION, lw=3, label=_("the pixel visited")),
+            Patch(facecolor="white", edgecolor="0.5", label=_("its dot, 1 or 0")),
+            Patch(facecolor="0.55", edgecolor="0.5", label=_("grey: value so far")),
         ],
         loc="upper center",
         ncols=3,
@@ -303,20 +322,12 @@ def by_hand_figure(gray: np.ndarray = BY_HAND, zoom: int = 52) -> Still:
         frameon=False,
     )
     final = steps[-1][1]
-    figure.text(
-        0.5,
-        1 - 30 / figure_height,
-        f"{int(final.sum())} of {final.size} dots lit: mean {final.mean():.3f} against the "
-        f"image's {gray.mean():.3f}",
-        ha="center",
-        va="top",
-        fontsize=9,
+    lit = _("{lit} of {count} dots lit: mean {mean:.3f} against the image's {image:.3f}").format(
+        lit=int(final.sum()), count=final.size, mean=final.mean(), image=gray.mean()
     )
+    figure.text(0.5, 1 - 30 / figure_height, lit, ha="center", va="top", fontsize=9)
     last = steps[-2][0][-1, -1]
-    caption = (
-        f"{int(final.sum())} of {final.size} dots lit: mean {final.mean():.3f} against the "
-        f"image's {gray.mean():.3f}; the last pixel saw {last:.3f}"
-    )
+    caption = _("{lit}; the last pixel saw {last:.3f}").format(lit=lit, last=last)
     return Still.of(figure, caption)
 
 
@@ -342,13 +353,18 @@ def clumps_and_holes(patterns: Mapping[str, np.ndarray], level: float) -> Table:
     """
     from scipy import ndimage
 
-    lines = [f"level {level:.3f}      lit   dots touching a dot   largest hole (px)"]
+    lines = [
+        pad(_("level {level:.3f}").format(level=level), 14)
+        + pad(_("lit"), 6, ">")
+        + pad(_("dots touching a dot"), 22, ">")
+        + pad(_("largest hole (px)"), 20, ">")
+    ]
     for name, dots in patterns.items():
         lit = np.asarray(dots) > 0.5
         neighbours = ndimage.convolve(lit.astype(int), np.ones((3, 3), int), mode="constant")
         touching = int(np.count_nonzero(lit & (neighbours > 1)))
         hole = ndimage.distance_transform_edt(~lit).max() if lit.any() else float("inf")
-        lines.append(f"{name:15s}{lit.mean():6.3f}{touching:22d}{hole:20.2f}")
+        lines.append(f"{pad(_(name), 15)}{lit.mean():6.3f}{touching:22d}{hole:20.2f}")
     return Table("\n".join(lines))
 
 
@@ -376,7 +392,7 @@ def wavefront_figure(height: int = 6, width: int = 10, pixel: tuple[int, int] = 
             (
                 1 - shade,
                 (0, width, height, 0),
-                f"t = x + 2y: the pixels numbered {t[y, x]} run together",
+                _("t = x + 2y: the pixels numbered {number} run together").format(number=t[y, x]),
             )
         ],
         zoom=44,
@@ -385,10 +401,12 @@ def wavefront_figure(height: int = 6, width: int = 10, pixel: tuple[int, int] = 
         axes.text(column + 0.5, row + 0.5, str(value), ha="center", va="center", fontsize=9)
     waits = [t[ny, nx] for nx, ny in needs]
     caption = (
-        f"pixel {pixel} is number {t[y, x]} and waits for {len(needs)} pixels, all numbered "
-        f"below {t[y, x]}"
+        _(
+            "pixel {pixel} is number {number} and waits for {count} pixels, all numbered "
+            "below {number}"
+        ).format(pixel=pixel, number=t[y, x], count=len(needs))
         if max(waits) < t[y, x]
-        else "the numbering is wrong"
+        else _("the numbering is wrong")
     )
     return Still.of(figure, caption)
 
@@ -414,23 +432,23 @@ def wraparound_figure(
     changed = good != bad
     windows = []
     for picture, name in (
-        (good, "correct"),
-        (bad, "with the slip"),
-        (difference, f"difference: {changed.sum()} pixels in all"),
+        (good, _("correct")),
+        (bad, _("with the slip")),
+        (difference, _("difference: {count} pixels in all").format(count=changed.sum())),
     ):
         window, extent = crop(picture, centre, size)
         windows.append((window, extent, name))
     overview = gray[::2, ::2]
     reserve = overview.shape[1] + 18
-    figure, _ = pixel_figure(
+    figure, _panels = pixel_figure(
         windows,
         zoom=zoom,
         reserve_left=reserve,
         legend=[
-            ("0.5", "same dot"),
-            ("white", "lit only with the slip"),
-            ("black", "lit only without it"),
-            ("red", "the window"),
+            ("0.5", _("same dot")),
+            ("white", _("lit only with the slip")),
+            ("black", _("lit only without it")),
+            ("red", _("the window")),
         ],
     )
     height, width = gray.shape
@@ -441,13 +459,18 @@ def wraparound_figure(
         )
     )
     axes.imshow(overview, extent=(0, width, height, 0), **GRAY_PIXELS)
-    axes.set_title("the whole image", fontsize=9)
-    _, (left, right, bottom, top) = crop(gray, centre, size)
+    axes.set_title(_("the whole image"), fontsize=9)
+    _window, (left, right, bottom, top) = crop(gray, centre, size)
     axes.add_patch(
         Rectangle((left, top), right - left, bottom - top, fill=False, edgecolor="red", lw=1.5)
     )
     columns = np.flatnonzero(changed.any(axis=0))
-    where = f"all in columns {columns.min()} to {columns.max()}" if len(columns) else "none"
-    return Still.of(
-        figure, f"the slip changes {changed.sum()} pixels ({changed.mean():.1%}), {where}"
+    where = (
+        _("all in columns {first} to {last}").format(first=columns.min(), last=columns.max())
+        if len(columns)
+        else _("none")
     )
+    caption = _("the slip changes {count} pixels ({share:.1%}), {where}").format(
+        count=changed.sum(), share=changed.mean(), where=where
+    )
+    return Still.of(figure, caption)

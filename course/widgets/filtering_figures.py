@@ -17,6 +17,7 @@ from matplotlib.patches import Rectangle
 
 from course import filters, images
 from course._validate import as_int
+from course.i18n import _
 from course.widgets.filtering import blurred, border_ring_mean
 from course.widgets.picture import Still, pixel_figure
 
@@ -50,23 +51,23 @@ def filters_figure(zoom: int = 2) -> Still:
     """
     image = _face()
     five = image
-    for _ in range(5):
+    for _blur in range(5):
         five = filters.blur(five)
     edges = filters.sobel(image)
     extent = (0, image.shape[1], image.shape[0], 0)
-    figure, _ = pixel_figure(
+    figure, _panels = pixel_figure(
         [
-            (image, extent, "original"),
-            (filters.blur(image), extent, "box blur"),
-            (five, extent, "box blur, 5 times"),
-            (np.clip(edges, 0, 1), extent, "Sobel magnitude"),
+            (image, extent, _("original")),
+            (filters.blur(image), extent, _("box blur")),
+            (five, extent, _("box blur, 5 times")),
+            (np.clip(edges, 0, 1), extent, _("Sobel magnitude")),
         ],
         zoom,
     )
-    caption = (
-        f"Sobel magnitude: max {edges.max():.2f}, {(edges > 1).mean():.1%} of the pixels "
-        f"above 1 (drawn white); each pixel {zoom} x {zoom}"
-    )
+    caption = _(
+        "Sobel magnitude: max {largest:.2f}, {share:.1%} of the pixels "
+        "above 1 (drawn white); each pixel {zoom} x {zoom}"
+    ).format(largest=edges.max(), share=(edges > 1).mean(), zoom=zoom)
     return Still.of(figure, caption)
 
 
@@ -82,7 +83,7 @@ def window_figure(row: int = 2, column: int = 2, zoom: int = 56) -> Still:
     out = filters.blur(patch)
     extent = (0, 5, 5, 0)
     figure, axes = pixel_figure(
-        [(patch, extent, "input: the 3 x 3 window"), (out, extent, "output: its mean")],
+        [(patch, extent, _("input: the 3 x 3 window")), (out, extent, _("output: its mean"))],
         zoom,
         gap=40,
     )
@@ -104,10 +105,10 @@ def window_figure(row: int = 2, column: int = 2, zoom: int = 56) -> Still:
     )
     axes[1].add_patch(Rectangle((column, row), 1, 1, fill=False, edgecolor=VERMILLION, lw=2.5))
     window = patch[row - 1 : row + 2, column - 1 : column + 2]
-    caption = (
-        f"the window around (x, y) = ({column}, {row}) holds {window.min():.2f} ... "
-        f"{window.max():.2f}; their mean, {out[row, column]:.3f}, is the output"
-    )
+    caption = _(
+        "the window around (x, y) = ({x}, {y}) holds {low:.2f} ... "
+        "{high:.2f}; their mean, {mean:.3f}, is the output"
+    ).format(x=column, y=row, low=window.min(), high=window.max(), mean=out[row, column])
     return Still.of(figure, caption)
 
 
@@ -149,7 +150,7 @@ def border_figure(passes: int = 20, depth: int = 16) -> Still:
     depth = as_int(depth, "depth", minimum=2, maximum=64)
     image = _face()
     results = dict.fromkeys(filters.BORDERS, image)
-    for _ in range(passes):
+    for _pass in range(passes):
         results = {border: blurred(result, border) for border, result in results.items()}
     columns = np.arange(depth)[::-1]  # distance from the right edge, in pixels
     before = image[:, -depth:].mean(axis=0)
@@ -168,24 +169,28 @@ def border_figure(passes: int = 20, depth: int = 16) -> Still:
     axes.axhline(1.0, color="0.6", lw=0.6)
     depth_of_frame = frame_depth(results["zero"], results["replicate"])
     axes.set_title(
-        f"'zero': the outermost column at {ratios_at_edge(results, image)['zero']:.2f} of its "
-        f"brightness, the frame {depth_of_frame} px deep",
+        _(
+            "'zero': the outermost column at {ratio:.2f} of its brightness, "
+            "the frame {depth} px deep"
+        ).format(ratio=ratios_at_edge(results, image)["zero"], depth=depth_of_frame),
         fontsize=9,
     )
     axes.set_xlim(depth - 0.5, -0.5)  # the edge on the right, as in the image
-    axes.set_xlabel("distance from the image's right edge (px)", fontsize=8)
-    axes.set_ylabel(f"column brightness after {passes} blurs\n/ before", fontsize=8)
+    axes.set_xlabel(_("distance from the image's right edge (px)"), fontsize=8)
+    axes.set_ylabel(
+        _("column brightness after {passes} blurs\n/ before").format(passes=passes), fontsize=8
+    )
     axes.tick_params(labelsize=7)
-    axes.legend(fontsize=8, title="border rule", title_fontsize=8, loc="lower left")
+    axes.legend(fontsize=8, title=_("border rule"), title_fontsize=8, loc="lower left")
     figure.tight_layout()
     original = border_ring_mean(image)
-    ratios = ", ".join(
+    ratios = _(", ").join(
         f"{border_ring_mean(result) / original:.2f} ({border})"
         for border, result in results.items()
     )
-    caption = (
-        f"after {passes} blurs the outermost pixels are at {ratios} times their first brightness"
-    )
+    caption = _(
+        "after {passes} blurs the outermost pixels are at {ratios} times their first brightness"
+    ).format(passes=passes, ratios=ratios)
     return Still.of(figure, caption)
 
 
@@ -203,21 +208,27 @@ def false_edges_figure(zoom: int = 24) -> Still:
     extent = (0, 10, 8, 0)
     frame = np.ones(flat.shape, dtype=bool)
     frame[1:-1, 1:-1] = False
-    figure, _ = pixel_figure(
+    figure, _panels = pixel_figure(
         [
-            (flat, extent, "flat 0.5"),
+            (flat, extent, _("flat 0.5")),
             (
                 zero / limit,
                 extent,
-                f"Sobel, 'zero' border: frame {zero[frame].min():.2f}\nto {limit:.2f} (white)",
+                _("Sobel, 'zero' border: frame {low:.2f}\nto {high:.2f} (white)").format(
+                    low=zero[frame].min(), high=limit
+                ),
             ),
-            (replicate / limit, extent, f"Sobel, 'replicate':\n{replicate.max():.2f} everywhere"),
+            (
+                replicate / limit,
+                extent,
+                _("Sobel, 'replicate':\n{value:.2f} everywhere").format(value=replicate.max()),
+            ),
         ],
         zoom,
         title_height=44,
     )
-    caption = (
-        f"a flat 0.5 image has no edge; zero padding gives its frame {zero[frame].min():.2f} "
-        f"to {zero[frame].max():.2f}, replicate {replicate.max():.2f}"
-    )
+    caption = _(
+        "a flat 0.5 image has no edge; zero padding gives its frame {low:.2f} "
+        "to {high:.2f}, replicate {replicate:.2f}"
+    ).format(low=zero[frame].min(), high=zero[frame].max(), replicate=replicate.max())
     return Still.of(figure, caption)

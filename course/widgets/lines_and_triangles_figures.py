@@ -18,6 +18,7 @@ from scipy.spatial import Delaunay
 
 from course._validate import as_int, as_point, as_shape
 from course.canvas import blank, paint
+from course.i18n import N_, _
 from course.raster import hit_counts, line, line_4connected, triangle
 from course.triangles import interpolate
 from course.widgets.picture import Still, pixel_figure
@@ -32,6 +33,8 @@ __all__ = [
 ]
 
 BLUE, VERMILLION, ORANGE, SKY, GREEN = "#0072B2", "#D55E00", "#E69F00", "#56B4E9", "#009E73"
+#: The colour figure's vertex labels: which colour each vertex carries.
+_VERTEX_COLOURS = (N_("p0: red"), N_("p1: green"), N_("p2: blue"))
 
 
 def _rgb(colour: str) -> tuple[float, float, float]:
@@ -70,27 +73,34 @@ def line_figure(p0: tuple[int, int] = (0, 0), p1: tuple[int, int] = (7, 3)) -> S
     paint(image, pixels - (left, top), _rgb(BLUE), mode="over")
     extent = (left, left + width, top + height, top)
     figure, (axes,) = pixel_figure(
-        [(image, extent, f"line from {p0} to {p1}")], zoom=48, legend=[(BLUE, "")]
+        [(image, extent, _("line from {p0} to {p1}").format(p0=p0, p1=p1))],
+        zoom=48,
+        legend=[(BLUE, "")],
     )
     _grid(axes, left, left + width, top, top + height)
     axes.plot([p0[0] + 0.5, p1[0] + 0.5], [p0[1] + 0.5, p1[1] + 0.5], color=VERMILLION, lw=2)
     _legend(
         figure,
         [
-            Patch(facecolor=BLUE, edgecolor="0.5", label="Bresenham's pixels"),
-            Line2D([], [], color=VERMILLION, lw=2, label="the ideal line"),
+            Patch(facecolor=BLUE, edgecolor="0.5", label=_("Bresenham's pixels")),
+            Line2D([], [], color=VERMILLION, lw=2, label=_("the ideal line")),
         ],
     )
     dx, dy = p1[0] - p0[0], p1[1] - p0[1]
     steps = max(abs(dx), abs(dy))
     ideal = np.array(p0) + np.outer(np.arange(steps + 1) / steps, (dx, dy))
     off = np.abs(pixels - ideal).max()
-    axis = "y" if abs(dx) >= abs(dy) else "x"
-    major = "column" if axis == "y" else "row"
     caption = (
-        f"{p0} to {p1}: {len(pixels)} pixels, one per {major}; the farthest centre is "
-        f"{off:.3f} px off in {axis}"
-    )
+        _(
+            "{p0} to {p1}: {count} pixels, one per column; the farthest centre is "
+            "{off:.3f} px off in y"
+        )
+        if abs(dx) >= abs(dy)
+        else _(
+            "{p0} to {p1}: {count} pixels, one per row; the farthest centre is "
+            "{off:.3f} px off in x"
+        )
+    ).format(p0=p0, p1=p1, count=len(pixels), off=off)
     return Still.of(figure, caption)
 
 
@@ -107,14 +117,18 @@ def staircase_figure(p0: tuple[int, int] = (0, 0), p1: tuple[int, int] = (14, 9)
     left, top = min(p0[0], p1[0]), min(p0[1], p1[1])
     windows = []
     drawings = (
-        ("Bresenham", line(p0, p1), BLUE),
-        ("the report's loop", line_4connected(p0, p1), VERMILLION),
+        (_("Bresenham"), line(p0, p1), BLUE),
+        (_("the report's loop"), line_4connected(p0, p1), VERMILLION),
     )
     for title, pixels, colour in drawings:
         image = blank((height, width), (1.0, 1.0, 1.0))
         paint(image, pixels - (left, top), _rgb(colour), mode="over")
         windows.append(
-            (image, (left, left + width, top + height, top), f"{title}: {len(pixels)} pixels")
+            (
+                image,
+                (left, left + width, top + height, top),
+                _("{title}: {count} pixels").format(title=title, count=len(pixels)),
+            )
         )
     figure, axes_list = pixel_figure(windows, zoom=18, legend=[(BLUE, "")])
     for axes in axes_list:
@@ -123,15 +137,16 @@ def staircase_figure(p0: tuple[int, int] = (0, 0), p1: tuple[int, int] = (14, 9)
     _legend(
         figure,
         [
-            Patch(facecolor=BLUE, edgecolor="0.5", label="Bresenham: 8-connected"),
-            Patch(facecolor=VERMILLION, edgecolor="0.5", label="the report's: 4-connected"),
-            Line2D([], [], color="0.2", lw=1, label="the ideal line"),
+            Patch(facecolor=BLUE, edgecolor="0.5", label=_("Bresenham: 8-connected")),
+            Patch(facecolor=VERMILLION, edgecolor="0.5", label=_("the report's: 4-connected")),
+            Line2D([], [], color="0.2", lw=1, label=_("the ideal line")),
         ],
     )
-    counts = [len(pixels) for _, pixels, _ in drawings]
-    return Still.of(
-        figure, f"{p0} to {p1}: Bresenham {counts[0]} pixels, the report's loop {counts[1]}"
+    counts = [len(pixels) for _title, pixels, _colour in drawings]
+    caption = _("{p0} to {p1}: Bresenham {line} pixels, the report's loop {loop}").format(
+        p0=p0, p1=p1, line=counts[0], loop=counts[1]
     )
+    return Still.of(figure, caption)
 
 
 def _rows(p0: Any, p1: Any, p2: Any) -> list[tuple[float, float, float, bool]]:
@@ -171,30 +186,30 @@ def scanline_figure(
     )
     rows = _rows(p0, p1, p2)
     pixels = triangle(p0, p1, p2, shape=size)
-    upper_rows = {int(y) for y, _, _, upper in rows if upper}
+    upper_rows = {int(y) for y, _left, _right, upper in rows if upper}
     image = blank(size, (1.0, 1.0, 1.0))
     for x, y in pixels:
         image[y, x] = _rgb(SKY) if y in upper_rows else _rgb(ORANGE)
     figure, (axes,) = pixel_figure(
-        [(image, (0, width, height, 0), "each row: from the left edge to the right edge")],
+        [(image, (0, width, height, 0), _("each row: from the left edge to the right edge"))],
         zoom=30,
-        legend=[(SKY, "upper half (flat bottom)"), (ORANGE, "lower half (flat top)")],
+        legend=[(SKY, _("upper half (flat bottom)")), (ORANGE, _("lower half (flat top)"))],
     )
     _grid(axes, 0, width, 0, height)
     corners = np.array([p0, p1, p2, p0], dtype=float)
     axes.plot(corners[:, 0], corners[:, 1], color="0.15", lw=1.5)
     middle = sorted([p0, p1, p2], key=lambda p: p[1])[1]
     axes.axhline(middle[1], color="0.4", lw=1, ls="--")
-    for y, left, right, _ in rows:
+    for y, left, right, _upper in rows:
         axes.plot([left, right], [y, y], color=BLUE, lw=1.2)
         axes.plot([left], [y], "|", color=BLUE, ms=8)
     centres = np.array([(x + 0.5, y + 0.5) for x in range(width) for y in range(height)])
     axes.plot(*centres.T, ".", color="0.55", ms=2)
-    upper = sum(1 for *_, flag in rows if flag)
-    caption = (
-        f"{len(rows)} rows: {upper} in the upper half, {len(rows) - upper} in the lower; "
-        f"{len(pixels)} pixels, as the top-left rule takes them"
-    )
+    upper = sum(1 for *_row, flag in rows if flag)
+    caption = _(
+        "{rows} rows: {upper} in the upper half, {lower} in the lower; "
+        "{pixels} pixels, as the top-left rule takes them"
+    ).format(rows=len(rows), upper=upper, lower=len(rows) - upper, pixels=len(pixels))
     return Still.of(figure, caption)
 
 
@@ -216,16 +231,17 @@ def edge_rules_figure(size: int = 6) -> Still:
         owner = np.zeros((size, size), dtype=int)
         owner[first[:, 1], first[:, 0]] += 1
         owner[second[:, 1], second[:, 0]] += 2
-        windows.append((colours[owner], (0, size, size, 0), f"rule {rule!r}"))
+        title = _("rule {rule}").format(rule=repr(rule))
+        windows.append((colours[owner], (0, size, size, 0), title))
         notes.append((rule, int((counts == 2).sum()), int((counts == 0).sum())))
     figure, axes_list = pixel_figure(
         windows,
         zoom=34,
         legend=[
-            (SKY, "upper triangle"),
-            (ORANGE, "lower triangle"),
-            (VERMILLION, "both"),
-            ("white", "neither"),
+            (SKY, _("upper triangle")),
+            (ORANGE, _("lower triangle")),
+            (VERMILLION, _("both")),
+            ("white", _("neither")),
         ],
     )
     for axes in axes_list:
@@ -236,12 +252,13 @@ def edge_rules_figure(size: int = 6) -> Still:
     parts = []
     for rule, twice, never in notes:
         if twice:
-            parts.append(f"{rule} paints {twice} twice")
+            parts.append(_("{rule} paints {count} twice").format(rule=rule, count=twice))
         elif never:
-            parts.append(f"{rule} misses {never}")
+            parts.append(_("{rule} misses {count}").format(rule=rule, count=never))
         else:
-            parts.append(f"{rule} paints each once")
-    return Still.of(figure, "centres on the shared edge: " + "; ".join(parts))
+            parts.append(_("{rule} paints each once").format(rule=rule))
+    caption = _("centres on the shared edge: {parts}").format(parts=_("; ").join(parts))
+    return Still.of(figure, caption)
 
 
 def mesh_figure(size: int = 64, points: int = 60, seed: int = 4) -> Still:
@@ -270,7 +287,10 @@ def mesh_figure(size: int = 64, points: int = 60, seed: int = 4) -> Still:
         hits = hit_counts(filled, (size, size))
         counts[rule] = (int((hits == 2).sum()), int((hits == 0).sum()))
         twice, never = counts[rule]
-        windows.append((image, (0, size, size, 0), f"{rule}: {twice} doubled, {never} cracks"))
+        title = _("{rule}: {twice} doubled, {never} cracks").format(
+            rule=rule, twice=twice, never=never
+        )
+        windows.append((image, (0, size, size, 0), title))
         doubles.append(np.argwhere(hits == 2)[:, ::-1] + 0.5)
     figure, axes_list = pixel_figure(windows, zoom=4, legend=[(BLUE, "")])
     for axes, doubled in zip(axes_list, doubles, strict=True):
@@ -279,15 +299,22 @@ def mesh_figure(size: int = 64, points: int = 60, seed: int = 4) -> Still:
     _legend(
         figure,
         [
-            Line2D([], [], marker=".", color="black", ls="", label="doubled: painted twice"),
-            Patch(facecolor="white", edgecolor="0.5", label="crack: painted by none"),
+            Line2D([], [], marker=".", color="black", ls="", label=_("doubled: painted twice")),
+            Patch(facecolor="white", edgecolor="0.5", label=_("crack: painted by none")),
         ],
     )
-    caption = (
-        f"{len(mesh)} triangles over {size * size} pixels: "
-        f"top-left {counts['top-left'][0]} doubled, {counts['top-left'][1]} cracks; "
-        f"closed {counts['closed'][0]} doubled; "
-        f"open {counts['open'][1]} cracks"
+    caption = _(
+        "{triangles} triangles over {pixels} pixels: "
+        "top-left {top_left_twice} doubled, {top_left_never} cracks; "
+        "closed {closed_twice} doubled; "
+        "open {open_never} cracks"
+    ).format(
+        triangles=len(mesh),
+        pixels=size * size,
+        top_left_twice=counts["top-left"][0],
+        top_left_never=counts["top-left"][1],
+        closed_twice=counts["closed"][0],
+        open_never=counts["open"][1],
     )
     return Still.of(figure, caption)
 
@@ -321,14 +348,14 @@ def colour_figure(
     image[pixels[:, 1], pixels[:, 0]] = colours
     height, width = size
     figure, (axes,) = pixel_figure(
-        [(image, (0, width, height, 0), "colour at each centre")], zoom=16
+        [(image, (0, width, height, 0), _("colour at each centre"))], zoom=16
     )
     middle = np.mean([p0, p1, p2], axis=0)
-    for name, point in zip(("p0: red", "p1: green", "p2: blue"), (p0, p1, p2), strict=True):
+    for name, point in zip(_VERTEX_COLOURS, (p0, p1, p2), strict=True):
         axes.plot(*point, "o", color="0.1", ms=4)
         away = np.sign(np.subtract(point, middle)) * (1, -1)  # y down in data, up in offsets
         axes.annotate(
-            name,
+            _(name),
             point,
             xytext=tuple(10 * away),
             textcoords="offset points",
@@ -340,9 +367,16 @@ def colour_figure(
     axes.plot(corners[:, 0], corners[:, 1], color="0.15", lw=1)
     probe = pixels[len(pixels) // 2]
     weights = colours[len(pixels) // 2]
-    caption = (
-        f"{len(pixels)} pixels; at the centre ({probe[0] + 0.5:g}, {probe[1] + 0.5:g}) the "
-        f"weights are ({weights[0]:.3f}, {weights[1]:.3f}, {weights[2]:.3f})"
+    caption = _(
+        "{count} pixels; at the centre ({x:g}, {y:g}) the "
+        "weights are ({w0:.3f}, {w1:.3f}, {w2:.3f})"
+    ).format(
+        count=len(pixels),
+        x=probe[0] + 0.5,
+        y=probe[1] + 0.5,
+        w0=weights[0],
+        w1=weights[1],
+        w2=weights[2],
     )
     return Still.of(figure, caption)
 

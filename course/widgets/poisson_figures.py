@@ -27,6 +27,7 @@ from matplotlib.patches import Rectangle
 from course import images, limits, poisson
 from course import poisson_solvers as solvers
 from course._validate import as_int
+from course.i18n import N_, _
 from course.widgets.picture import Still, bare_axes, pixel_axes, pixel_figure
 
 __all__ = [
@@ -103,18 +104,21 @@ def headline_figure() -> Still:
     naive = poisson.naive_paste(lake, plane, DAY_OFFSET)
     cloned = poisson.seamless_clone(lake, plane, DAY_OFFSET)
     window, extent = _around(DAY_OFFSET, plane.shape[:2], lake)
-    figure, _ = pixel_figure(
+    figure, _panels = pixel_figure(
         [
-            (naive[window], extent, "pasted: the pixels copied"),
-            (cloned[window], extent, "seamless clone"),
+            (naive[window], extent, _("pasted: the pixels copied")),
+            (cloned[window], extent, _("seamless clone")),
         ],
         1,
     )
     problem = poisson.clone_problem(lake, plane, DAY_OFFSET)
-    caption = (
-        f"the step across the region's border: {_grey(problem.seam(naive))} grey levels "
-        f"pasted, {_grey(problem.seam(cloned))} cloned (the sky's own steps there: "
-        f"{_grey(problem.seam(lake))})"
+    caption = _(
+        "the step across the region's border: {pasted} grey levels "
+        "pasted, {cloned} cloned (the sky's own steps there: {sky})"
+    ).format(
+        pasted=_grey(problem.seam(naive)),
+        cloned=_grey(problem.seam(cloned)),
+        sky=_grey(problem.seam(lake)),
     )
     return Still.of(figure, caption)
 
@@ -134,20 +138,19 @@ def correction_figure() -> Still:
     membrane = poisson.PoissonProblem(ring, problem.region, np.zeros_like(ring), problem.corner)
     g = poisson.solve(membrane)
     extent = (0, plane.shape[1], plane.shape[0], 0)
-    figure, _ = pixel_figure(
+    figure, _panels = pixel_figure(
         [
-            (plane, extent, "the plane, f"),
-            (np.clip((g + 1) / 2, 0, 1), extent, "g, shown as (g + 1) / 2"),
+            (plane, extent, _("the plane, f")),
+            (np.clip((g + 1) / 2, 0, 1), extent, _("g, shown as (g + 1) / 2")),
             (np.clip(plane + g, 0, 1), extent, "f + g"),
         ],
         1,
     )
     edge = ~problem.region
     means = ", ".join(f"{value:.2f}" for value in g[problem.region].mean(axis=0))
-    caption = (
-        f"g's mean over the region (R, G, B): {means}; from {ring[edge].min():.2f} to "
-        f"{ring[edge].max():.2f} on the ring"
-    )
+    caption = _(
+        "g's mean over the region (R, G, B): {means}; from {low:.2f} to {high:.2f} on the ring"
+    ).format(means=means, low=ring[edge].min(), high=ring[edge].max())
     return Still.of(figure, caption)
 
 
@@ -169,23 +172,25 @@ def colour_figure() -> Still:
     shift = (exact - plane)[problem.region].mean(axis=0)
     outside = ((exact < 0) | (exact > 1))[problem.region].mean()
     shifts = ", ".join(f"{value:+.2f}" for value in shift)
-    figure, _ = pixel_figure(
+    figure, _panels = pixel_figure(
         [
-            (naive[window], extent, "pasted"),
+            (naive[window], extent, _("pasted")),
             (
                 cloned[window],
                 extent,
-                f"clone: R, G, B moved by {shifts};\n"
-                f"{outside:.1%} of values outside [0, 1], clipped",
+                _(
+                    "clone: R, G, B moved by {shifts};\n"
+                    "{outside:.1%} of values outside [0, 1], clipped"
+                ).format(shifts=shifts, outside=outside),
             ),
         ],
         1,
         title_height=44,
     )
-    caption = (
-        f"cloned, the plane's white shifts by {shifts} (R, G, B) on average; "
-        f"{outside:.1%} of the region's values fall outside [0, 1] and are clipped"
-    )
+    caption = _(
+        "cloned, the plane's white shifts by {shifts} (R, G, B) on average; "
+        "{outside:.1%} of the region's values fall outside [0, 1] and are clipped"
+    ).format(shifts=shifts, outside=outside)
     return Still.of(figure, caption)
 
 
@@ -241,7 +246,7 @@ def write_lab_sweeps(path: str | os.PathLike[str] = LAB_SWEEPS_FILE) -> None:
     path.write_text(json.dumps(compute_lab_sweeps(), indent=1) + "\n")
 
 
-_NAMES = {"jacobi": "Jacobi", "gauss_seidel": "Gauss-Seidel (the lab's loop)", "sor": "SOR"}
+_NAMES = {"jacobi": "Jacobi", "gauss_seidel": N_("Gauss-Seidel (the lab's loop)"), "sor": "SOR"}
 
 
 def convergence_figure() -> Still:
@@ -265,11 +270,11 @@ def convergence_figure() -> Still:
         history = record[method]
         errors = np.maximum(np.array(history["errors"]) * 255, 1e-9)
         axes.semilogy(
-            history["sweeps"], errors, color=colour, ls=dashes, lw=1.8, label=_NAMES[method]
+            history["sweeps"], errors, color=colour, ls=dashes, lw=1.8, label=_(_NAMES[method])
         )
     axes.axvline(8000, color="0.3", ls=":", lw=1)
     axes.annotate(
-        "the lab's 8000",
+        _("the lab's 8000"),
         (8000, 1e2),
         xytext=(-4, 0),
         textcoords="offset points",
@@ -278,10 +283,10 @@ def convergence_figure() -> Still:
     )
     axes.axhline(1.0, color="0.5", lw=0.8, ls="--")
     axes.annotate(
-        "one grey level", (100, 1.0), xytext=(0, 3), textcoords="offset points", fontsize=8
+        _("one grey level"), (100, 1.0), xytext=(0, 3), textcoords="offset points", fontsize=8
     )
-    axes.set_xlabel("sweeps", fontsize=8)
-    axes.set_ylabel("largest error (grey levels)", fontsize=8)
+    axes.set_xlabel(_("sweeps"), fontsize=8)
+    axes.set_ylabel(_("largest error (grey levels)"), fontsize=8)
     axes.tick_params(labelsize=7)
     axes.legend(fontsize=7, loc="lower left")
     figure.tight_layout()
@@ -289,13 +294,21 @@ def convergence_figure() -> Still:
     lab = record["lab_result"]
     height, width = record["region"]
     rho = solvers.jacobi_rate((height - 2, width - 2))  # the unknowns: inside the ring
-    caption = (
-        f"rho = {rho:.5f} per Jacobi sweep; "
-        f"after the lab's 8000 sweeps: Jacobi {final['jacobi']:.2g} grey levels off, "
-        f"Gauss-Seidel {final['gauss_seidel']:.2g}; SOR {final['sor']:.2g} after "
-        f"{record['sor']['sweeps'][-1]}; the lab's result is {lab['mean_error']:.1f} grey "
-        f"levels off on average, {lab['share_above_one_grey_level']:.0%} of its pixels by "
+    caption = _(
+        "rho = {rho:.5f} per Jacobi sweep; "
+        "after the lab's 8000 sweeps: Jacobi {jacobi:.2g} grey levels off, "
+        "Gauss-Seidel {gauss_seidel:.2g}; SOR {sor:.2g} after "
+        "{sor_sweeps}; the lab's result is {mean:.1f} grey "
+        "levels off on average, {share:.0%} of its pixels by "
         "more than one"
+    ).format(
+        rho=rho,
+        jacobi=final["jacobi"],
+        gauss_seidel=final["gauss_seidel"],
+        sor=final["sor"],
+        sor_sweeps=record["sor"]["sweeps"][-1],
+        mean=lab["mean_error"],
+        share=lab["share_above_one_grey_level"],
     )
     return Still.of(figure, caption)
 
@@ -311,18 +324,22 @@ def mask_and_mixed_figure() -> Still:
     """
     lake, plane = day_scene()
     shown = {
-        "rectangle": poisson.seamless_clone(lake, plane, DAY_OFFSET),
-        "mask": poisson.seamless_clone(lake, plane, DAY_OFFSET, images.plane_mask()),
-        "mixed": poisson.seamless_clone(lake, plane, DAY_OFFSET, guidance="mixed"),
+        _("rectangle"): poisson.seamless_clone(lake, plane, DAY_OFFSET),
+        _("mask"): poisson.seamless_clone(lake, plane, DAY_OFFSET, images.plane_mask()),
+        _("mixed"): poisson.seamless_clone(lake, plane, DAY_OFFSET, guidance="mixed"),
     }
     window, extent = _around(DAY_OFFSET, plane.shape[:2], lake)
-    figure, _ = pixel_figure([(image[window], extent, name) for name, image in shown.items()], 1)
-    problem = poisson.clone_problem(lake, plane, DAY_OFFSET)
-    steps = ", ".join(f"{name} {problem.texture(image) * 255:.2f}" for name, image in shown.items())
-    caption = (
-        f"mean step between neighbours inside the rectangle: the sky "
-        f"{problem.texture(lake) * 255:.2f} grey levels, {steps}"
+    figure, _panels = pixel_figure(
+        [(image[window], extent, name) for name, image in shown.items()], 1
     )
+    problem = poisson.clone_problem(lake, plane, DAY_OFFSET)
+    steps = _(", ").join(
+        _("{name} {step:.2f}").format(name=name, step=problem.texture(image) * 255)
+        for name, image in shown.items()
+    )
+    caption = _(
+        "mean step between neighbours inside the rectangle: the sky {sky:.2f} grey levels, {steps}"
+    ).format(sky=problem.texture(lake) * 255, steps=steps)
     return Still.of(figure, caption)
 
 
@@ -340,14 +357,20 @@ def inpainting_figure() -> Still:
     filled = poisson.inpaint(scratched, scratches)
     window = (slice(120, 420), slice(60, 460))
     extent = (60, 460, 420, 120)
-    figure, _ = pixel_figure(
-        [(scratched[window], extent, "scratched"), (filled[window], extent, "inpainted")], 1
+    figure, _panels = pixel_figure(
+        [(scratched[window], extent, _("scratched")), (filled[window], extent, _("inpainted"))],
+        1,
     )
     error = np.abs(filled - original)[scratches] * 255
     before = np.abs(scratched - original)[scratches].mean() * 255
-    caption = (
-        f"{scratches.sum()} scratched pixels: mean error {before:.0f} grey levels scratched, "
-        f"{error.mean():.1f} inpainted (95% within {np.percentile(error, 95):.0f})"
+    caption = _(
+        "{count} scratched pixels: mean error {before:.0f} grey levels scratched, "
+        "{after:.1f} inpainted (95% within {percentile:.0f})"
+    ).format(
+        count=scratches.sum(),
+        before=before,
+        after=error.mean(),
+        percentile=np.percentile(error, 95),
     )
     return Still.of(figure, caption)
 
@@ -360,10 +383,13 @@ def strip_and_square() -> str:
     >>> print(strip_and_square())
     3 x 3 square: 0.7071; 3 x 30 strip: 0.8510; 3 x 300 strip: 0.8535; 3 x infinity: 0.8536
     """
-    parts = [f"3 x 3 square: {solvers.jacobi_rate((3, 3)):.4f}"]
-    parts += [f"3 x {n} strip: {solvers.jacobi_rate((3, n)):.4f}" for n in (30, 300)]
-    parts.append(f"3 x infinity: {(np.cos(np.pi / 4) + 1) / 2:.4f}")
-    return "; ".join(parts)
+    parts = [_("3 x 3 square: {rate:.4f}").format(rate=solvers.jacobi_rate((3, 3)))]
+    parts += [
+        _("3 x {length} strip: {rate:.4f}").format(length=n, rate=solvers.jacobi_rate((3, n)))
+        for n in (30, 300)
+    ]
+    parts.append(_("3 x infinity: {rate:.4f}").format(rate=(np.cos(np.pi / 4) + 1) / 2))
+    return _("; ").join(parts)
 
 
 #: Lesson 08's tiny clone: a 6 x 7 sky brightening to the right, and a 4 x 5 patch of a white
@@ -391,10 +417,10 @@ def _tiny_correction(boundary: Any, jacobi: Any) -> tuple[np.ndarray, int, str]:
         given, count = jacobi(given_ring, 1e-6)
         given = np.asarray(given, dtype=float)
         if given.shape == expected.shape and np.allclose(given, expected, atol=1e-5):
-            return given, int(count), "your boundary_exercise and jacobi_exercise"
+            return given, int(count), _("your boundary_exercise and jacobi_exercise")
     except Exception:  # the student's code is not written yet, or fails: show the library's
         pass
-    return expected, sweeps, "the library (yours are not done yet)"
+    return expected, sweeps, _("the library (yours are not done yet)")
 
 
 def _jacobi_reference(g: np.ndarray, tolerance: float) -> tuple[np.ndarray, int]:
@@ -429,10 +455,10 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
     sky = TINY_BACKGROUND[y : y + height, x : x + width]
     clone = TINY_FOREGROUND + g
     panels = (
-        ("the sky b, under the patch", sky),
-        ("the plane f", TINY_FOREGROUND),
-        (f"g: b - f on the ring,\nJacobi inside ({sweeps} sweeps)", g),
-        ("the clone f + g", clone),
+        (_("the sky b, under the patch"), sky),
+        (_("the plane f"), TINY_FOREGROUND),
+        (_("g: b - f on the ring,\nJacobi inside ({sweeps} sweeps)").format(sweeps=sweeps), g),
+        (_("the clone f + g"), clone),
     )
     side, gap, title = width * zoom, 22, 44
     figure = Figure(
@@ -466,7 +492,9 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
     figure.text(
         0.5,
         0.98,
-        f"solved by {who}; orange: the inside, the six unknowns; g drawn as 0.5 + g",
+        _("solved by {who}; orange: the inside, the six unknowns; g drawn as 0.5 + g").format(
+            who=who
+        ),
         ha="center",
         va="top",
         fontsize=9,
@@ -474,10 +502,21 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
     dark = clone[1, 2]
     below = clone[2, 2]
     caption = (
-        f"{who}: {sweeps} sweeps; the dark window stays "
-        f"{TINY_FOREGROUND[2, 2] - TINY_FOREGROUND[1, 2]:.1f} below the pixel under it "
-        f"({dark:.3f} against {below:.3f}); the clone's ring "
-        f"{'equals' if np.allclose(clone[0], sky[0]) else 'differs from'} the sky's"
+        _(
+            "{who}: {sweeps} sweeps; the dark window stays {gap:.1f} below the pixel under it "
+            "({dark:.3f} against {below:.3f}); the clone's ring equals the sky's"
+        )
+        if np.allclose(clone[0], sky[0])
+        else _(
+            "{who}: {sweeps} sweeps; the dark window stays {gap:.1f} below the pixel under it "
+            "({dark:.3f} against {below:.3f}); the clone's ring differs from the sky's"
+        )
+    ).format(
+        who=who,
+        sweeps=sweeps,
+        gap=TINY_FOREGROUND[2, 2] - TINY_FOREGROUND[1, 2],
+        dark=dark,
+        below=below,
     )
     return Still.of(figure, caption)
 
@@ -496,10 +535,18 @@ def residual_scale(app: Any) -> str:
     residual = app.problem.residual(solution)
     factor = 1 / (4 * (1 - rho))
     measured = float(np.abs(solution - app.exact)[app.problem.region].max() * 255)
-    return (
-        f"rho = {rho:.5f}, so a residual r can hide an error of about r / (4 (1 - rho)) = "
-        f"{factor:.0f} r. {_NAMES[method]} after {sweeps} sweeps: r = {residual:.2g}, an error "
-        f"of about {factor * residual * 255:.0f} grey levels; measured, up to {measured:.0f}"
+    return _(
+        "rho = {rho:.5f}, so a residual r can hide an error of about r / (4 (1 - rho)) = "
+        "{factor:.0f} r. {method} after {sweeps} sweeps: r = {residual:.2g}, an error "
+        "of about {error:.0f} grey levels; measured, up to {measured:.0f}"
+    ).format(
+        rho=rho,
+        factor=factor,
+        method=_(_NAMES[method]),
+        sweeps=sweeps,
+        residual=residual,
+        error=factor * residual * 255,
+        measured=measured,
     )
 
 
@@ -519,12 +566,18 @@ def sweep_study(app: Any) -> str:
     for sweeps in (10, 100, 1000):
         error = np.abs(app.iterate("jacobi", sweeps) - app.exact).max(axis=2) * 255
         lines.append(
-            f"Jacobi, {sweeps:4d} sweeps: mean error {error[near].mean():6.1f} grey levels "
-            f"near the ring, {error[far].mean():6.1f} more than 40 px from it"
+            _(
+                "Jacobi, {sweeps:4d} sweeps: mean error {near:6.1f} grey levels "
+                "near the ring, {far:6.1f} more than 40 px from it"
+            ).format(sweeps=sweeps, near=error[near].mean(), far=error[far].mean())
         )
     for sweeps in app.stops:
         error = np.abs(app.iterate("sor", sweeps) - app.exact).max(axis=2)[region] * 255
         if error.max() < 1:
-            lines.append(f"SOR: within one grey level everywhere after {sweeps} sweeps")
+            lines.append(
+                _("SOR: within one grey level everywhere after {sweeps} sweeps").format(
+                    sweeps=sweeps
+                )
+            )
             break
     return "\n".join(lines)

@@ -1,0 +1,41 @@
+"""Lesson 06's figures and table in Chinese: Chinese words, every glyph found, columns kept."""
+
+import re
+
+import numpy as np
+import pytest
+from chinese import check_chinese_figure
+
+from course.i18n import language
+from course.widgets import dithering_figures as figures
+
+FIGURES = [
+    (figures.diffusion_figure, ()),
+    (figures.wavefront_figure, ()),
+    (figures.by_hand_figure, (np.array([[0.2, 0.7], [0.4, 0.9]]), 20)),
+    (figures.wraparound_figure, (np.full((12, 12), 0.3), (6, 6), 6, 2)),
+]
+
+
+@pytest.mark.parametrize(("figure", "arguments"), FIGURES, ids=[f.__name__ for f, _ in FIGURES])
+def test_a_figure_in_chinese_has_chinese_words_and_every_glyph(
+    figure, arguments, monkeypatch, caplog
+):
+    check_chinese_figure(figure, arguments, monkeypatch, caplog)
+
+
+def test_the_table_names_the_lab_methods_in_chinese_and_keeps_its_columns():
+    dots = np.zeros((4, 4))
+    dots[0, 0] = 1
+    with language("zh-CN"):
+        header, row = figures.clumps_and_holes({"blue noise": dots}, 0.1).splitlines()
+    with language("en"):
+        english_header, _row = figures.clumps_and_holes({"x": dots}, 0.1).splitlines()
+    assert header.startswith("灰度 0.100") and row.startswith("蓝噪声")
+
+    def columns(text: str) -> int:  # a Chinese character or full-width sign takes two
+        return len(text) + len(re.findall("[\u3000-\u303f\u4e00-\u9fff\uff01-\uff60]", text))
+
+    assert columns(row) == 15 + 6 + 22 + 20
+    # Each header ends where it ends in English, one column before its numbers.
+    assert columns(header) == len(english_header) == columns(row) - 1

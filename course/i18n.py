@@ -42,6 +42,7 @@ Examples
 
 from __future__ import annotations
 
+import dataclasses
 import gettext
 import io
 from collections.abc import Iterator
@@ -242,7 +243,14 @@ def _add_cjk_font() -> None:
     from matplotlib import font_manager
 
     path = cjk_font_path()
-    font_manager.fontManager.addfont(str(path))
+    known = [entry for entry in font_manager.fontManager.ttflist if entry.fname == str(path)]
+    if not known:
+        font_manager.fontManager.addfont(str(path))
+        (regular,) = [e for e in font_manager.fontManager.ttflist if e.fname == str(path)]
+        # The package has no bold face. Bold titles would make matplotlib log "Failed to find
+        # font weight bold" and fall back anyway: the regular face stands in for bold, quietly.
+        font_manager.fontManager.ttflist.append(dataclasses.replace(regular, weight=700))
+        font_manager.fontManager._findfont_cached.cache_clear()
     name = font_manager.FontProperties(fname=str(path)).get_name()
     if _english_families is None:
         _english_families = list(mpl.rcParams["font.family"])

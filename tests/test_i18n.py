@@ -133,6 +133,18 @@ def test_every_translation_renders_without_a_missing_glyph(caplog):
     assert list(mpl.rcParams["font.family"]) == english_fonts
 
 
+def test_bold_chinese_needs_no_bold_face_and_logs_nothing(caplog):
+    # The font package has only a regular face: without the stand-in, matplotlib logs
+    # "findfont: Failed to find font weight bold for Noto Sans SC" under every bold title.
+    with i18n.language("zh-CN"):
+        figure = Figure()
+        figure.suptitle("贝塞尔曲线", weight="bold")
+        figure.text(0.5, 0.5, "x", weight="bold")
+        with caplog.at_level("INFO", logger="matplotlib.font_manager"):
+            figure.savefig(__import__("io").BytesIO(), format="png")
+    assert [r.getMessage() for r in caplog.records if "findfont" in r.getMessage()] == []
+
+
 def test_english_without_the_font_shows_chinese_as_missing_glyphs():
     # The check above can fail: the English fonts lack these glyphs.
     figure = Figure()

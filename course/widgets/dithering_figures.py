@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -190,12 +189,7 @@ def diffusion_figure() -> Still:
         zoom=70,
     )
     shares = {(3, 0): 7, (1, 1): 3, (2, 1): 5, (3, 1): 1}
-    # Only the first font family: the Chinese edition's fallback font has no bold face, and
-    # matplotlib would log that it lacks one although "x" needs none of its glyphs.
-    first_family = matplotlib.rcParams["font.family"][0]
-    axes.text(
-        2.5, 0.5, "x", ha="center", va="center", fontsize=16, weight="bold", family=first_family
-    )
+    axes.text(2.5, 0.5, "x", ha="center", va="center", fontsize=16, weight="bold")
     for (column, row), share in shares.items():
         axes.text(
             column + 0.5,

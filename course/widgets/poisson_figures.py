@@ -445,8 +445,8 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
     Examples
     --------
     >>> tiny_clone_figure()  # doctest: +NORMALIZE_WHITESPACE
-    the library (yours are not done yet): 28 sweeps; the dark window stays 0.4 below the
-    pixel under it (0.100 against 0.500); the clone's ring equals the sky's
+    the library (yours are not done yet): 28 sweeps; the dark window stays 0.4 darker than
+    the pixel below it (0.100 against 0.500); the clone's ring equals the sky's
     """
     zoom = as_int(zoom, "zoom", minimum=8, maximum=limits.MAX_ZOOM)
     g, sweeps, who = _tiny_correction(boundary, jacobi)
@@ -503,13 +503,13 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
     below = clone[2, 2]
     caption = (
         _(
-            "{who}: {sweeps} sweeps; the dark window stays {gap:.1f} below the pixel under it "
-            "({dark:.3f} against {below:.3f}); the clone's ring equals the sky's"
+            "{who}: {sweeps} sweeps; the dark window stays {gap:.1f} darker than the pixel below "
+            "it ({dark:.3f} against {below:.3f}); the clone's ring equals the sky's"
         )
         if np.allclose(clone[0], sky[0])
         else _(
-            "{who}: {sweeps} sweeps; the dark window stays {gap:.1f} below the pixel under it "
-            "({dark:.3f} against {below:.3f}); the clone's ring differs from the sky's"
+            "{who}: {sweeps} sweeps; the dark window stays {gap:.1f} darker than the pixel below "
+            "it ({dark:.3f} against {below:.3f}); the clone's ring differs from the sky's"
         )
     ).format(
         who=who,

@@ -7,9 +7,14 @@ its report shows the next step of them after each failure
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
-__all__ = ["Hint", "Hints", "failure_hint", "hint", "register_hints"]
+__all__ = ["Hint", "Hints", "failure_hint", "hint", "joined", "register_hints"]
+
+# A plain lowercase word opening a sentence (the article "a" included): not a variable (one
+# letter, or followed by "=", "(", "[", "." or "_"), which keeps its case.
+_PLAIN_WORD = re.compile(r"(?:[a-z]{2,}|a(?=\s+[a-z]{2,}))(?![\w(\[.]|\s*=)")
 
 
 @dataclass(frozen=True)
@@ -72,7 +77,7 @@ def hint(exercise: str, recipe: bool = False) -> Hint:
         known = ", ".join(sorted({name for name, _hints in _HINTS.values()}))
         raise ValueError(f"exercise must be one of {known}; got {exercise!r}")
     name, hints = found
-    return Hint(name, hints.recipe if recipe else f"{hints.where} {hints.more}")
+    return Hint(name, hints.recipe if recipe else joined(hints.where, hints.more))
 
 
 def failure_hint(exercise: str, hints: Hints, failures: int) -> str:
@@ -94,6 +99,31 @@ def failure_hint(exercise: str, hints: Hints, failures: int) -> str:
     if failures <= 1:
         return f'Hint: {hints.where}\n(More: check.hint("{name}").)'
     return (
-        f"Hint: {hints.where} {hints.more}\n"
+        f"Hint: {joined(hints.where, hints.more)}\n"
         f'(The recipe, if you want it: check.hint("{name}", recipe=True).)'
     )
+
+
+def joined(where: str, more: str) -> str:
+    """Two steps of a hint as one text: ``more`` starts a sentence after ``where``'s full stop.
+
+    Its first word is capitalised when it is a plain word; a variable keeps its case.
+
+    Examples
+    --------
+    >>> joined("look at the border.", "each pixel is a mean.")
+    'look at the border. Each pixel is a mean.'
+    >>> joined("look at t.", "t must reach 1.")
+    'look at t. t must reach 1.'
+    >>> joined("look at x", "twice x")
+    'look at x twice x'
+    """
+    if not isinstance(where, str) or not isinstance(more, str):
+        raise TypeError(
+            f"where and more must be str; got {type(where).__name__}, {type(more).__name__}"
+        )
+    if where.endswith(("。", "？", "！")):
+        return where + more
+    if where.endswith((".", "?", "!")) and _PLAIN_WORD.match(more):
+        more = more[0].upper() + more[1:]
+    return f"{where} {more}"

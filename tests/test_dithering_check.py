@@ -95,3 +95,15 @@ def test_a_flipped_sign_and_unread_errors_are_told_apart():
     assert flipped.mistake == "the error's sign flipped" and "case 1 is wrong" in str(flipped)
     unread = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, read_errors=False))
     assert unread.mistake == "the errors are never read" and "case 1 is wrong" in str(unread)
+
+
+def test_an_answer_in_0_and_255_is_named_in_both_checkers():
+    # A student used to 8-bit images writes 255 for a lit pixel; the lesson's range is 0 and 1.
+    ordered = check.dithering_ordered(lambda gray: 255 * nine_ifs(gray))
+    assert ordered.mistake == "0 and 255 for 0 and 1"
+    assert "your output holds the values 0, 255: the lesson's output is 0 (dark) or 1" in str(
+        ordered
+    )
+    diffused = check.dithering_error_diffuse(lambda gray: np.uint8(255) * floyd_steinberg(gray))
+    assert diffused.mistake == "0 and 255 for 0 and 1"
+    assert "Write 1.0 where you wrote 255" in str(diffused)

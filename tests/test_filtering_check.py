@@ -1,5 +1,7 @@
 """course.check.filtering: the lab's Blur and Edge, right and wrong."""
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -172,3 +174,33 @@ def test_an_interior_error_is_placed_inside_the_image():
     result = check.blur(off_by_one_pixel)
     assert "(x, y) = (5, 4), inside the image; 1 pixel differs" in result.message
     assert result.mistake is None
+
+
+def nan_padded(image, mean=np.mean, pad_colours=False):
+    """The handout's rule through NaN padding: right with np.nanmean, NaN on the border with
+    np.mean; np.pad(image, 1) also pads an RGB image's colour axis with NaN."""
+    border = 1 if pad_colours else [(1, 1), (1, 1)] + [(0, 0)] * (image.ndim - 2)
+    padded = np.pad(image, border, constant_values=np.nan)
+    output = np.zeros_like(image)
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for y in range(image.shape[0]):
+            for x in range(image.shape[1]):
+                window = padded[y : y + 3, x : x + 3]
+                output[y, x] = mean(window[..., :3] if image.ndim == 3 else window, axis=(0, 1))
+    return output
+
+
+def test_a_nan_output_says_which_pixel_where_and_why():
+    assert check.blur(lambda image: nan_padded(image, np.nanmean))
+    border = str(check.blur(nan_padded))
+    assert "case 1: your answer holds nan at [0, 0]" in border
+    assert "output pixel (x, y) = (0, 0) is NaN; it lies on the border" in border
+    assert "only 4 of its 9 neighbours are inside the image" in border
+    assert "12 of the 12 border pixels are NaN, 0 inside" in border
+    assert "np.nanmean skips it" in border
+    colours = str(check.blur(lambda image: nan_padded(image, np.nanmean, pad_colours=True)))
+    assert "case 8:" in colours  # the gray cases pass: only the RGB padding is wrong
+    assert "output pixel (x, y) = (0, 0), channel 0 (red), is NaN" in colours
+    assert "red at every pixel, inside the image too" in colours
+    assert "((1, 1), (1, 1), (0, 0))" in colours

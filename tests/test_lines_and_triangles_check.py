@@ -226,3 +226,30 @@ def test_draw_triangle_filled_names_each_known_mistake_with_a_pixel_picture():
     assert corners.mistake == "pixel corners for centres" and corners.picture is not None
     opened = check.draw_triangle_filled(precomputed(triangle, check._TRIANGLE_CASES, rule="open"))
     assert opened.mistake == "every edge open"
+
+
+def separate_steps(p0, p1):
+    """Bresenham with x and y stepped and painted one after the other: every diagonal step
+    becomes two, an extra pixel in its corner (a 4-connected staircase of its own kind)."""
+    (x, y), (x1, y1) = p0, p1
+    dx, dy = abs(x1 - x), abs(y1 - y)
+    sx, sy = (1 if x1 >= x else -1), (1 if y1 >= y else -1)
+    error, pixels = dx - dy, [(x, y)]
+    while (x, y) != (x1, y1):
+        e2 = 2 * error
+        if e2 > -dy:
+            error, x = error - dy, x + sx
+            pixels.append((x, y))
+        if e2 < dx:
+            error, y = error + dx, y + sy
+            pixels.append((x, y))
+    return pixels
+
+
+def test_any_4_connected_staircase_is_named_not_only_the_librarys():
+    # Its corners turn otherwise than course.raster.line_4connected's on case 1.
+    assert separate_steps((2, 3), (9, 5)) != line_4connected((2, 3), (9, 5)).tolist()
+    result = check.draw_line(separate_steps)
+    assert result.mistake == "the report's staircase"
+    assert "2 extra, first (4, 3)" in str(result)
+    assert "left an extra pixel in the corner: a 4-connected staircase" in str(result)

@@ -219,6 +219,7 @@ def run_cases(
     picture: Callable[[Case, Any, Any], bytes | None] | None = None,
     watch: Callable[[], AbstractContextManager[Any]] | None = None,
     explain: Callable[[Case, Any, Any], str] | None = None,
+    explain_nan: Callable[[Case, Any], str] | None = None,
     show: Callable[[Any], str] | None = None,
     answer: Callable[[Any, tuple[Any, ...]], Any] | None = None,
     writable: Sequence[str] = (),
@@ -246,7 +247,8 @@ def run_cases(
     before ``compare(expected, given)``. Stops at the first wrong answer, or
     at the first exception the student's code raises (naming their line),
     and reports that case: its inputs, both answers, ``difference(expected,
-    given)``, ``explain(case, expected, given)``, the mistake of
+    given)``, ``explain(case, expected, given)`` (``explain_nan(case, given)``
+    for an answer that holds NaN or inf: where, and why), the mistake of
     ``mistakes`` whose answer the student's matches, ``picture(case,
     expected, given)`` and the next step of ``hint``. ``watch()``, if given,
     makes a context manager the student's code runs under, each case anew
@@ -370,6 +372,9 @@ def run_cases(
         bad = non_finite(given)
         if bad is not None:
             lines = [f"case {count}: {bad}", f"  inputs: {inputs}"]
+            said = _quietly(explain_nan, case, given)
+            if said:
+                lines.append(f"  {said}")
             # A mistake with its own rule may expect NaN (an empty window's mean).
             known = _recognise([m for m in mistakes if m.matches], case, given, compare)
             if known is not None:

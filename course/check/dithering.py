@@ -72,6 +72,15 @@ def _first_wrong(expected: Any, given: Any) -> tuple[int, int] | None:
     return None if len(wrong) == 0 else (int(wrong[0][1]), int(wrong[0][0]))
 
 
+def _eight_bit(reference: Callable[..., Any]) -> Mistake:
+    return Mistake(
+        "0 and 255 for 0 and 1",
+        "your pixels are right, but lit is 255 and dark 0, as in an 8-bit image: the lesson's "
+        "images are floats in [0, 1], so a lit pixel is 1. Write 1.0 where you wrote 255.",
+        _in_255(reference),
+    )
+
+
 def _ordered_cases() -> list[dict[str, Any]]:
     rng = np.random.default_rng(9)
     levels = np.arange(10).reshape(2, 5) / 9  # exactly on M / 9: > and >= differ
@@ -98,6 +107,23 @@ def _one_per_pixel(gray: Any) -> np.ndarray:
     height, width = values.shape
     levels = np.tile(ORDERED_MATRIX / 9, (-(-height // 3), -(-width // 3)))[:height, :width]
     return (values > levels).astype(float)
+
+
+def _in_255(reference: Callable[..., Any]) -> Callable[..., np.ndarray]:
+    """The right dithering written as 8-bit levels, 0 and 255: the slip's answer."""
+    return lambda gray: 255 * np.asarray(reference(gray), dtype=float)
+
+
+def _levels(given: Any) -> str:
+    """What is wrong with an output whose values are not the lesson's 0 and 1, if anything."""
+    values = np.unique(_as_output(given))
+    if values.size == 0 or np.isin(values, (0.0, 1.0)).all():
+        return ""
+    shown = ", ".join(f"{v:g}" for v in values[:4]) + (", ..." if values.size > 4 else "")
+    return (
+        f"your output holds the values {shown}: the lesson's output is 0 (dark) or 1 (lit), "
+        "as its input is a gray level in [0, 1]"
+    )
 
 
 def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
@@ -135,6 +161,7 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
             "M. Ordered dithering here makes every pixel a 3 x 3 cell of nine comparisons.",
             _one_per_pixel,
         ),
+        _eight_bit(ordered),
     ]
     return run_cases(
         "DitheringOrdered",
@@ -146,6 +173,7 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
         hint=ORDERED_HINTS,
         mistakes=mistakes,
         picture=_picture,
+        explain=lambda case, expected, given: _levels(given),
         forbidden=_LIBRARY,
         pass_picture=_face_pass_picture,
     )
@@ -202,6 +230,9 @@ def _diffused(gray: Any, kernel: tuple = _KERNEL, sign: float = 1.0) -> np.ndarr
 
 def _carried(case: dict[str, Any], expected: Any, given: Any) -> str:
     """What the first wrong pixel held when the right loop thresholded it."""
+    levels = _levels(given)
+    if levels:
+        return levels
     where = _first_wrong(expected, given)
     if where is None:
         return "the output must have the input's shape, one value per pixel"
@@ -264,6 +295,7 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
             "(the report's inputcopy), and each pixel is thresholded with what it received.",
             threshold,
         ),
+        _eight_bit(_loop_reference),
     ]
     return run_cases(
         "DitheringErrorDiffuse",

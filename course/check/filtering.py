@@ -87,6 +87,53 @@ def _explain(case: dict[str, Any], expected: Any, given: Any) -> str:
     return f"the first wrong pixel is (x, y) = ({column}, {row}), {where}; {differ}"
 
 
+_CHANNELS = ("red", "green", "blue")
+
+
+def _explain_nan(case: dict[str, Any], given: Any) -> str:
+    """Which output pixel is NaN, where it lies, and the border slip that makes one."""
+    have = _as_float(given)
+    image = _as_float(case["image"])
+    if have.shape != image.shape:
+        return ""
+    bad = ~np.isfinite(have)
+    row, column, *channel = (int(i) for i in np.argwhere(bad)[0])
+    height, width = have.shape[:2]
+    inside = (min(row + 1, height - 1) - max(row - 1, 0) + 1) * (
+        min(column + 1, width - 1) - max(column - 1, 0) + 1
+    )
+    pixel = f"output pixel (x, y) = ({column}, {row})"
+    if channel:
+        pixel += f", channel {channel[0]} ({_CHANNELS[channel[0]]}),"
+        whole = [c for c in range(3) if bad[..., c].all()]
+        if whole and not bad[..., [c for c in range(3) if c not in whole]].any():
+            names = " and ".join(_CHANNELS[c] for c in whole)
+            return (
+                f"{pixel} is NaN, and so is {names} at every pixel, inside the image too: "
+                "your padding added NaN along the colour axis. np.pad(image, 1, ...) pads all "
+                "three axes of an RGB image, so each pixel gets 5 channels, the first and last "
+                "NaN; pad the rows and the columns only, ((1, 1), (1, 1), (0, 0)), and keep the "
+                "3 channels"
+            )
+    border = np.zeros((height, width), dtype=bool)
+    border[[0, -1], :] = border[:, [0, -1]] = True
+    nan_pixels = bad.any(axis=2) if bad.ndim == 3 else bad
+    on_border, off_border = int(nan_pixels[border].sum()), int(nan_pixels[~border].sum())
+    if inside == 9:
+        return (
+            f"{pixel} is NaN, inside the image, where all 9 of its neighbours exist: a NaN "
+            "there comes from your own arithmetic (0 / 0, or the mean of an empty window)"
+        )
+    return (
+        f"{pixel} is NaN; it lies on the border, where only {inside} of its 9 neighbours are "
+        f"inside the image ({on_border} of the {int(border.sum())} border pixels are NaN, "
+        f"{off_border} inside): NaN comes from what your window reads past the edge. "
+        "np.mean of a window that holds NaN padding is NaN (np.nanmean skips it), and the "
+        "mean of an empty slice is NaN (image[y - 1 : y + 2] is empty at y = 0: start at "
+        "max(y - 1, 0)). Average only the neighbours inside the image"
+    )
+
+
 def _frame_from(image: np.ndarray, inner: np.ndarray, fill: np.ndarray | None) -> np.ndarray:
     """``inner`` inside the one-pixel frame, ``fill`` (or 0) on it: a loop from 1 to size - 2."""
     output = np.zeros_like(image) if fill is None else fill.copy()
@@ -206,6 +253,7 @@ def blur(student: Callable[..., Any]) -> CheckResult:
         mistakes=BLUR_MISTAKES,
         picture=_picture,
         explain=_explain,
+        explain_nan=_explain_nan,
         show=_summary,
         forbidden=_LIBRARY,
         pass_picture=_pass_picture,
@@ -258,6 +306,7 @@ def edge(student: Callable[..., Any]) -> CheckResult:
         mistakes=EDGE_MISTAKES,
         picture=_picture,
         explain=_explain,
+        explain_nan=_explain_nan,
         show=_summary,
         forbidden=_LIBRARY,
         pass_picture=_pass_picture,

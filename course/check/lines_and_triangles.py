@@ -137,11 +137,13 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
     mistakes = [
         Mistake(
             "the report's staircase",
-            "every step of your line moves in x or in y, never both: the lab report's `else` "
-            "between the two tests. A line steps diagonally whenever both errors call for it, "
-            "so it has max(|dx|, |dy|) + 1 pixels, not |dx| + |dy| + 1.",
+            "every step of your line moves in x or in y, never both, so each diagonal step "
+            "became two and left an extra pixel in the corner: a 4-connected staircase (the lab "
+            "report's `else` between the two tests, or x and y stepped and painted one after "
+            "the other). A line steps diagonally whenever both errors call for it, so it has "
+            "max(|dx|, |dy|) + 1 pixels, not |dx| + |dy| + 1.",
             _staircase,
-            matches=_ordered_same,
+            matches=_is_staircase,
         ),
         Mistake(
             "drawn backwards",
@@ -180,6 +182,20 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
 
 def _staircase(p0: Any, p1: Any) -> Any:
     return line_4connected(p0, p1)
+
+
+def _is_staircase(staircase: Any, given: Any) -> bool:
+    """Whether ``given`` runs from the staircase's first pixel to its last in axis steps only.
+
+    Any 4-connected path of |dx| + |dy| + 1 pixels is one, whichever way its corners turn.
+    """
+    want, have = np.asarray(staircase, dtype=float), np.asarray(given, dtype=float)
+    if have.ndim != 2 or have.shape != want.shape or len(have) < 2:
+        return False
+    if tuple(have[0]) != tuple(want[0]) or tuple(have[-1]) != tuple(want[-1]):
+        return False
+    steps = np.abs(np.diff(have, axis=0))
+    return bool((steps.sum(axis=1) == 1).all())
 
 
 LINE_HINTS = register_hints(

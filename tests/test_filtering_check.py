@@ -5,7 +5,9 @@ import warnings
 import numpy as np
 import pytest
 
+import course
 from course import filters
+from course.check import base
 from course.check import filtering as check
 
 # The students below are written here, as a student would write them: the checkers fail
@@ -204,3 +206,24 @@ def test_a_nan_output_says_which_pixel_where_and_why():
     assert "output pixel (x, y) = (0, 0), channel 0 (red), is NaN" in colours
     assert "red at every pixel, inside the image too" in colours
     assert "((1, 1), (1, 1), (0, 0))" in colours
+
+
+@pytest.fixture
+def in_chinese(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    course.use_language("zh-CN")
+    yield
+    course.use_language("en")
+
+
+def test_blur_and_edge_report_in_chinese(in_chinese):
+    blurred = str(check.blur(lambda image: image))
+    assert blurred.startswith("未通过 Blur：用例 1 不对\n  输入：image=")
+    assert "第一个错误的像素是 (x, y) = (0, 0)，在边界上：9 个邻居中有 4 个在图像内" in blurred
+    edge = str(check.edge(lambda image: sobel_magnitude(image, "zero")))
+    assert "这是一个已知错误，零填充：" in edge and "Hint" not in edge
+    nan = str(check.blur(nan_padded))
+    assert "用例 1：你的答案在 [0, 0] 处是 nan：每个值都必须是有限数" in nan
+    assert "输出像素 (x, y) = (0, 0) 是 NaN；它在边界上，9 个邻居中只有 4 个在图像内" in nan
+    colours = str(check.blur(lambda image: nan_padded(image, np.nanmean, pad_colours=True)))
+    assert "输出像素 (x, y) = (0, 0) 的通道 0（红） 是 NaN，而且每个像素的红通道都是 NaN" in colours

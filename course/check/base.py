@@ -43,7 +43,7 @@ from course.check.answers import (
 )
 from course.check.comparisons import close, first_difference, pixel_difference, same_pixels
 from course.check.hints import Hint, Hints, failure_hint, hint, register_hints
-from course.check.references import CallBudget, call_budget, forbidden_message
+from course.check.references import CallBudget, call_budget, forbidden_message, known_mistake
 from course.check.sandbox import (
     CaseStopped,
     arity_problem,
@@ -53,6 +53,7 @@ from course.check.sandbox import (
     run_bounded,
     student_line,
 )
+from course.i18n import _
 
 # The names the checkers import from here, wherever they are defined.
 __all__ = [
@@ -133,8 +134,11 @@ class CheckResult:
         return self
 
     def __str__(self) -> str:
-        mark = "PASS" if self.passed else "FAIL"
-        return f"{mark} {self.exercise}: {self.message}"
+        if self.passed:
+            return _("PASS {exercise}: {message}").format(
+                exercise=self.exercise, message=self.message
+            )
+        return _("FAIL {exercise}: {message}").format(exercise=self.exercise, message=self.message)
 
     __repr__ = __str__
 
@@ -158,7 +162,7 @@ _FAILURES: Counter[str] = Counter()
 def _hint_line(exercise: str, hint: str | Hints) -> str:
     """The report's hint: a plain text, or the next step of an exercise's hints."""
     if isinstance(hint, str):
-        return f"Hint: {hint}"
+        return _("Hint: {hint}").format(hint=_(hint))
     _FAILURES[exercise] += 1
     return failure_hint(exercise, hint, _FAILURES[exercise])
 
@@ -188,9 +192,8 @@ class _Report:
         return CheckResult(self.exercise, False, count, text, **extra)
 
     def start(self) -> str:
-        if isinstance(self.hint, str):
-            return f"Start here: {self.hint}"
-        return f"Start here: {self.hint.where}"
+        where = self.hint if isinstance(self.hint, str) else self.hint.where
+        return _("Start here: {where}").format(where=_(where))
 
 
 def _quietly(function: Callable[..., Any] | None, *arguments: Any) -> Any:
@@ -263,7 +266,14 @@ def run_cases(
     parameters = tuple(cases[0]) if cases else ()
     mismatch = arity_problem(student, parameters)
     if mismatch is not None:
-        return report.fail(0, [f"your function cannot be called as the handout does: {mismatch}"])
+        return report.fail(
+            0,
+            [
+                _("your function cannot be called as the handout does: {mismatch}").format(
+                    mismatch=mismatch
+                )
+            ],
+        )
     forbidden = dict(forbidden or {})
     if forbidden:
         named = forbidden_message(student, forbidden)
@@ -282,6 +292,7 @@ def run_cases(
     count = 0
     for count, case in enumerate(cases, start=1):
         inputs = ", ".join(f"{name}={show_value(value)}" for name, value in case.items())
+        inputs_line = _("  inputs: {inputs}").format(inputs=inputs)
         expected = reference(**case)
         arguments = copies(tuple(case.values()))
         try:
@@ -293,27 +304,41 @@ def run_cases(
             )
         except CaseStopped as stopped:
             return report.fail(
-                count, [f"case {count} was stopped: {stopped}", f"  inputs: {inputs}"]
+                count,
+                [
+                    _("case {count} was stopped: {reason}").format(count=count, reason=stopped),
+                    inputs_line,
+                ],
             )
         except CallBudget as stopped:
             reason, *known = str(stopped).split("\n", 1)
-            lines = [f"case {count} was stopped: {reason}", f"  inputs: {inputs}", *known]
+            lines = [
+                _("case {count} was stopped: {reason}").format(count=count, reason=reason),
+                inputs_line,
+                *known,
+            ]
             return report.fail(count, lines, mistake=stopped.mistake)
         except NotImplementedError as error:
             return report.fail(
                 count,
                 [
-                    f"not written yet: your function raised NotImplementedError: {error}",
+                    _("not written yet: your function raised NotImplementedError: {error}").format(
+                        error=error
+                    ),
                     report.start(),
                 ],
                 hinted=False,
             )
         except Exception as error:  # the student's bug, reported, not raised
             line = student_line(error)
-            lines = [f"case {count} raised {type(error).__name__}: {error}"]
+            lines = [
+                _("case {count} raised {error_type}: {error}").format(
+                    count=count, error_type=type(error).__name__, error=error
+                )
+            ]
             if line is not None:
-                lines.append(f"  at {line}")
-            return report.fail(count, [*lines, f"  inputs: {inputs}"])
+                lines.append(_("  at {line}").format(line=line))
+            return report.fail(count, [*lines, inputs_line])
         names = tuple(name for name in parameters if name not in writable)
         keep = [i for i, name in enumerate(parameters) if name not in writable]
         changed = changed_argument(
@@ -321,32 +346,39 @@ def run_cases(
         )
         if changed is not None:
             lines = [
-                f"case {count} changed its input {changed}",
-                "  your function must leave its inputs as they were: work on a copy "
-                "(np.array(x, dtype=float) or x.copy())",
-                f"  inputs: {inputs}",
+                _("case {count} changed its input {changed}").format(count=count, changed=changed),
+                _(
+                    "  your function must leave its inputs as they were: work on a copy "
+                    "(np.array(x, dtype=float) or x.copy())"
+                ),
+                inputs_line,
             ]
             if on_change:
-                lines.append(f"  {on_change}")
+                lines.append(f"  {_(on_change)}")
             return report.fail(count, lines)
         if answer is None and returned is None:
             if is_stub(student):
                 return report.fail(
                     count,
-                    ["not written yet: your function returns nothing", report.start()],
+                    [_("not written yet: your function returns nothing"), report.start()],
                     hinted=False,
                 )
             return report.fail(
                 count,
-                [f"case {count} returned None: did you forget `return`?", f"  inputs: {inputs}"],
+                [
+                    _("case {count} returned None: did you forget `return`?").format(count=count),
+                    inputs_line,
+                ],
             )
         raw = answer(returned, arguments) if answer is not None else returned
         if holds_complex(raw):
             return report.fail(
                 count,
                 [
-                    f"case {count}: your answer holds complex numbers; the answer is real",
-                    f"  inputs: {inputs}",
+                    _("case {count}: your answer holds complex numbers; the answer is real").format(
+                        count=count
+                    ),
+                    inputs_line,
                 ],
             )
         try:
@@ -356,29 +388,43 @@ def run_cases(
         except AnswerError as unreadable:
             return report.fail(
                 count,
-                [f"case {count}: your answer cannot be read: {unreadable}", f"  inputs: {inputs}"],
+                [
+                    _("case {count}: your answer cannot be read: {reason}").format(
+                        count=count, reason=unreadable
+                    ),
+                    inputs_line,
+                ],
             )
         except Exception as unreadable:
             return report.fail(
                 count,
                 [
-                    f"case {count}: your answer, {described(raw)}, cannot be read as the "
-                    f"exercise's answer ({type(unreadable).__name__}: {unreadable})",
-                    "  (the checker raised this while reading your answer; your function ran "
-                    "without an error)",
-                    f"  inputs: {inputs}",
+                    _(
+                        "case {count}: your answer, {described}, cannot be read as the "
+                        "exercise's answer ({error_type}: {error})"
+                    ).format(
+                        count=count,
+                        described=described(raw),
+                        error_type=type(unreadable).__name__,
+                        error=unreadable,
+                    ),
+                    _(
+                        "  (the checker raised this while reading your answer; your function ran "
+                        "without an error)"
+                    ),
+                    inputs_line,
                 ],
             )
         bad = non_finite(given)
         if bad is not None:
-            lines = [f"case {count}: {bad}", f"  inputs: {inputs}"]
+            lines = [_("case {count}: {problem}").format(count=count, problem=bad), inputs_line]
             said = _quietly(explain_nan, case, given)
             if said:
                 lines.append(f"  {said}")
             # A mistake with its own rule may expect NaN (an empty window's mean).
             known = _recognise([m for m in mistakes if m.matches], case, given, compare)
             if known is not None:
-                lines.append(f"This is a known mistake, {known.name}: {known.explanation}")
+                lines.append(known_mistake(known))
             return report.fail(count, lines, mistake=None if known is None else known.name)
         try:
             same = compare(expected, given)
@@ -389,10 +435,10 @@ def run_cases(
             continue
         writer = show or show_value
         lines = [
-            f"case {count} is wrong",
-            f"  inputs: {inputs}",
-            f"  expected: {_quietly(writer, expected)}",
-            f"  given:    {_quietly(writer, given) or described(raw)}",
+            _("case {count} is wrong").format(count=count),
+            inputs_line,
+            _("  expected: {value}").format(value=_quietly(writer, expected)),
+            _("  given:    {value}").format(value=_quietly(writer, given) or described(raw)),
         ]
         for extra in (_quietly(difference, expected, given), narrow_float(raw, compare)):
             if extra:
@@ -403,13 +449,14 @@ def run_cases(
                 lines.append(f"  {said}")
         known = _recognise(mistakes, case, given, compare)
         if known is not None:
-            lines.append(f"This is a known mistake, {known.name}: {known.explanation}")
+            lines.append(known_mistake(known))
         drawn = _quietly(picture, case, expected, given)
         return report.fail(
             count, lines, picture=drawn, mistake=None if known is None else known.name
         )
     drawn = _quietly(pass_picture, results)
-    return CheckResult(exercise, True, count, f"all {count} cases pass", picture=drawn)
+    passed = _("all {count} cases pass").format(count=count)
+    return CheckResult(exercise, True, count, passed, picture=drawn)
 
 
 def _recognise(

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from course.check.answers import pixel_rows
+from course.i18n import _
 
 __all__ = ["close", "first_difference", "pixel_difference", "same_pixels"]
 
@@ -80,17 +81,21 @@ def first_difference(expected: Any, given: Any, atol: float = 1e-9, rtol: float 
             warnings.simplefilter("ignore")
             expected, given = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
     except (TypeError, ValueError):
-        return f"given a {type(given).__name__}, not numbers"
+        return _("given a {type}, not numbers").format(type=type(given).__name__)
     if expected.shape != given.shape:
-        return f"expected shape {expected.shape}, given shape {given.shape}"
+        return _("expected shape {expected}, given shape {given}").format(
+            expected=expected.shape, given=given.shape
+        )
     if expected.ndim == 0:
         return ""  # one value: the lines above say it all
     wrong = ~np.isclose(given, expected, atol=atol, rtol=rtol)
     if not wrong.any():
-        return "the values agree within the tolerance"
+        return _("the values agree within the tolerance")
     index = tuple(int(i) for i in np.argwhere(wrong)[0])
     where = "[" + ", ".join(map(str, index)) + "]"
-    return f"first wrong value: {where} expected {expected[index]:.6g}, given {given[index]:.6g}"
+    return _("first wrong value: {where} expected {expected:.6g}, given {given:.6g}").format(
+        where=where, expected=expected[index], given=given[index]
+    )
 
 
 def pixel_difference(expected: Any, given: Any) -> str:
@@ -109,19 +114,23 @@ def pixel_difference(expected: Any, given: Any) -> str:
     parts = []
     missing, extra = np.setdiff1d(want, have), np.setdiff1d(have, want)
     if len(missing):
-        plural = "pixel" if len(missing) == 1 else "pixels"
-        parts.append(f"{len(missing)} {plural} missing, first {_pixel_of(missing[0])}")
+        if len(missing) == 1:
+            missing_text = _("{count} pixel missing, first {pixel}")
+        else:
+            missing_text = _("{count} pixels missing, first {pixel}")
+        parts.append(missing_text.format(count=len(missing), pixel=_pixel_of(missing[0])))
     if len(extra):
-        parts.append(f"{len(extra)} extra, first {_pixel_of(extra[0])}")
+        parts.append(
+            _("{count} extra, first {pixel}").format(count=len(extra), pixel=_pixel_of(extra[0]))
+        )
     if parts:
-        return "; ".join(parts)
+        return _("; ").join(parts)
     rows = pixel_rows(given, "given")
     keys = (rows[:, 1] + _OFFSET) * _WIDE + (rows[:, 0] + _OFFSET)
     unique, counts = np.unique(keys, return_counts=True)
     repeated = unique[counts > 1]
     if len(repeated):
-        return (
-            f"the same pixels, but {len(repeated)} listed more than once, first "
-            f"{_pixel_of(repeated[0])}: each pixel once"
-        )
-    return "the same pixels"
+        return _(
+            "the same pixels, but {count} listed more than once, first {pixel}: each pixel once"
+        ).format(count=len(repeated), pixel=_pixel_of(repeated[0]))
+    return _("the same pixels")

@@ -10,6 +10,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from course.i18n import _
+
 __all__ = ["Hint", "Hints", "failure_hint", "hint", "joined", "register_hints"]
 
 # A plain lowercase word opening a sentence (the article "a" included): not a variable (one
@@ -20,6 +22,9 @@ _PLAIN_WORD = re.compile(r"(?:[a-z]{2,}|a(?=\s+[a-z]{2,}))(?![\w(\[.]|\s*=)")
 @dataclass(frozen=True)
 class Hints:
     """An exercise's hints, in steps: where to look, then the idea, then the recipe.
+
+    Each text is marked with :func:`~course.i18n.N_` where it is written, and
+    translated where it is shown.
 
     ``where`` comes with the first failure; ``more`` is added from the
     second failure on, and by :func:`hint`; ``recipe`` is shown only when
@@ -39,7 +44,7 @@ class Hint:
     text: str
 
     def __str__(self) -> str:
-        return f"Hint for {self.exercise}: {self.text}"
+        return _("Hint for {exercise}: {text}").format(exercise=self.exercise, text=self.text)
 
     __repr__ = __str__
 
@@ -71,13 +76,21 @@ def hint(exercise: str, recipe: bool = False) -> Hint:
     Hint for double: return 2 * x
     """
     if not isinstance(exercise, str):
-        raise TypeError(f"exercise must be an exercise's name; got {type(exercise).__name__}")
+        raise TypeError(
+            _("exercise must be an exercise's name; got {type}").format(
+                type=type(exercise).__name__
+            )
+        )
     found = _HINTS.get(exercise.lower())
     if found is None:
         known = ", ".join(sorted({name for name, _hints in _HINTS.values()}))
-        raise ValueError(f"exercise must be one of {known}; got {exercise!r}")
+        raise ValueError(
+            _("exercise must be one of {known}; got {exercise}").format(
+                known=known, exercise=repr(exercise)
+            )
+        )
     name, hints = found
-    return Hint(name, hints.recipe if recipe else joined(hints.where, hints.more))
+    return Hint(name, _(hints.recipe) if recipe else joined(_(hints.where), _(hints.more)))
 
 
 def failure_hint(exercise: str, hints: Hints, failures: int) -> str:
@@ -97,11 +110,12 @@ def failure_hint(exercise: str, hints: Hints, failures: int) -> str:
         raise TypeError(f"failures must be an int; got {type(failures).__name__}")
     name = _ASK_BY.get(str(exercise), str(exercise))
     if failures <= 1:
-        return f'Hint: {hints.where}\n(More: check.hint("{name}").)'
-    return (
-        f"Hint: {joined(hints.where, hints.more)}\n"
-        f'(The recipe, if you want it: check.hint("{name}", recipe=True).)'
-    )
+        return _('Hint: {where}\n(More: check.hint("{name}").)').format(
+            where=_(hints.where), name=name
+        )
+    return _(
+        'Hint: {where_and_more}\n(The recipe, if you want it: check.hint("{name}", recipe=True).)'
+    ).format(where_and_more=joined(_(hints.where), _(hints.more)), name=name)
 
 
 def joined(where: str, more: str) -> str:

@@ -15,7 +15,9 @@ from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from typing import Any
 
-__all__ = ["CallBudget", "call_budget", "forbidden_message"]
+from course.i18n import _
+
+__all__ = ["CallBudget", "call_budget", "forbidden_message", "known_mistake"]
 
 
 class CallBudget(Exception):
@@ -62,13 +64,10 @@ def call_budget(
                 raise CallBudget(forbidden_codes[frame.f_code])
             calls += 1
             if max_calls is not None and calls > max_calls:
-                message = f"more than {max_calls:,} Python function calls"
+                message = _("more than {count:,} Python function calls").format(count=max_calls)
                 if too_many is None:
                     raise CallBudget(message)
-                raise CallBudget(
-                    f"{message}\nThis is a known mistake, {too_many.name}: {too_many.explanation}",
-                    too_many.name,
-                )
+                raise CallBudget(f"{message}\n{known_mistake(too_many)}", too_many.name)
 
     previous = sys.getprofile()
     sys.setprofile(watch)
@@ -76,6 +75,23 @@ def call_budget(
         yield
     finally:
         sys.setprofile(previous)
+
+
+def known_mistake(mistake: Any) -> str:
+    """The report's line naming a known mistake (a :class:`~course.check.base.Mistake`).
+
+    Examples
+    --------
+    >>> from course.check.base import Mistake
+    >>> known_mistake(Mistake("drawn backwards", "your pixels run from p1 to p0.", abs))
+    'This is a known mistake, drawn backwards: your pixels run from p1 to p0.'
+    """
+    name, explanation = getattr(mistake, "name", None), getattr(mistake, "explanation", None)
+    if not isinstance(name, str) or not isinstance(explanation, str):
+        raise TypeError(f"mistake must be a Mistake; got {type(mistake).__name__}")
+    return _("This is a known mistake, {name}: {explanation}").format(
+        name=_(name), explanation=_(explanation)
+    )
 
 
 def forbidden_message(function: Any, forbidden: Mapping[Any, str]) -> str | None:

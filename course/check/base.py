@@ -260,7 +260,11 @@ def run_cases(
     ``pass_picture`` draws the (case, expected, given) of every case.
     """
     if not callable(student):
-        raise TypeError(f"{exercise}: expected a function to check; got {type(student).__name__}")
+        raise TypeError(
+            _("{exercise}: expected a function to check; got {type}").format(
+                exercise=exercise, type=type(student).__name__
+            )
+        )
     cases = _validated_cases(cases)
     report = _Report(exercise, hint)
     parameters = tuple(cases[0]) if cases else ()

@@ -21,6 +21,14 @@ Hints come in steps (:class:`Hints`): the first failure of an exercise says
 where to look; from the second failure on, the report says more;
 ``check.hint("name")`` says more at once, and only
 ``check.hint("name", recipe=True)`` gives the recipe.
+
+The report's parts have their own modules, re-exported here for the checkers:
+:mod:`~course.check.hints` (the steps), :mod:`~course.check.answers`
+(reading the student's answer), :mod:`~course.check.comparisons` (values and
+pixel sets) and :mod:`~course.check.references` (answers that call the
+library's own). Every sentence follows :func:`course.use_language`; a
+mistake's name, which :attr:`CheckResult.mistake` keeps in English, is
+translated where the report shows it.
 """
 
 from __future__ import annotations

@@ -1,5 +1,7 @@
 """course.check.dithering: a correct loop passes, the handout's slip fails by case."""
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -121,7 +123,12 @@ def in_chinese(monkeypatch):
 
 
 def test_both_checkers_report_in_chinese(in_chinese):
-    ordered = str(check.dithering_ordered(lambda gray: 255 * nine_ifs(gray)))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = check.dithering_ordered(lambda gray: 255 * nine_ifs(gray))
+    assert result.picture is not None  # its titles in Chinese, every glyph in the font
+    assert not [w for w in caught if "missing from font" in str(w.message)]
+    ordered = str(result)
     assert ordered.startswith("未通过 DitheringOrdered：用例 1 不对\n  输入：gray=")
     assert "你的输出含有这些值：0, 255；本课的输出是 0（暗）或 1（亮）" in ordered
     assert "这是一个已知错误，用 0 和 255 代替了 0 和 1：" in ordered

@@ -2,7 +2,9 @@
 
 Each public function validates once, at its boundary, with these helpers and
 then hands plain arrays to pure array code. Every message names the
-parameter, the expected shape or type, and what was given (:func:`describe`).
+parameter, the expected shape or type, and what was given (:func:`describe`),
+in the language the lesson set (:mod:`course.i18n`); the parameter's name stays
+as the code spells it.
 """
 
 from __future__ import annotations
@@ -13,12 +15,15 @@ from typing import Any
 import numpy as np
 
 from course import limits
+from course.i18n import N_, _
 
 
 def describe(value: Any) -> str:
     """A short description of a value for an error message."""
     if isinstance(value, np.ndarray):
-        return f"an array of shape {value.shape} and dtype {value.dtype}"
+        return _("an array of shape {shape} and dtype {dtype}").format(
+            shape=value.shape, dtype=value.dtype
+        )
     text = repr(value)
     if len(text) > 60:
         text = text[:57] + "..."
@@ -31,15 +36,18 @@ def as_float_array(value: Any, name: str) -> np.ndarray:
         array = np.array(value)
     except ValueError as error:  # ragged nested lists
         raise ValueError(
-            f"{name} must be a rectangular array of numbers; got a ragged sequence ({error})"
+            _(
+                "{name} must be a rectangular array of numbers; got a ragged sequence ({error})"
+            ).format(name=name, error=error)
         ) from None
     if array.dtype == bool or not (
         np.issubdtype(array.dtype, np.integer) or np.issubdtype(array.dtype, np.floating)
     ):
-        raise TypeError(
-            f"{name} must hold real numbers; got {describe(value)}"
-            + (f" with dtype {array.dtype}" if not isinstance(value, np.ndarray) else "")
-        )
+        if isinstance(value, np.ndarray):
+            message = _("{name} must hold real numbers; got {value}")
+        else:
+            message = _("{name} must hold real numbers; got {value} with dtype {dtype}")
+        raise TypeError(message.format(name=name, value=describe(value), dtype=array.dtype))
     return array.astype(float, copy=True)
 
 
@@ -48,15 +56,24 @@ def require_finite(array: np.ndarray, name: str) -> None:
     bad = ~np.isfinite(array)
     if bad.any():
         index = tuple(int(i) for i in np.argwhere(bad)[0])
-        where = f" at index {index}" if array.ndim else ""
-        raise ValueError(f"{name} must be finite; got {array[bad].flat[0]}{where}")
+        if array.ndim:
+            message = _("{name} must be finite; got {value} at index {index}")
+        else:
+            message = _("{name} must be finite; got {value}")
+        raise ValueError(message.format(name=name, value=array[bad].flat[0], index=index))
 
 
-def require_within(array: np.ndarray, name: str, bound: float, what: str = "coordinates") -> None:
+def require_within(
+    array: np.ndarray, name: str, bound: float, what: str = N_("coordinates")
+) -> None:
     """ValueError unless every entry of ``array`` lies within ``[-bound, bound]``."""
     if array.size and np.abs(array).max() > bound:
         worst = array.flat[int(np.abs(array).argmax())]
-        raise ValueError(f"{name} {what} must lie within +-{bound:g}; got {worst:g}")
+        raise ValueError(
+            _("{name} {what} must lie within +-{bound:g}; got {worst:g}").format(
+                name=name, what=_(what), bound=bound, worst=worst
+            )
+        )
 
 
 def as_points(points: Any, name: str = "points", bound: float | None = None) -> np.ndarray:
@@ -67,25 +84,36 @@ def as_points(points: Any, name: str = "points", bound: float | None = None) -> 
     """
     array = as_float_array(points, name)
     if array.ndim != 2:
-        hint = ""
         if array.ndim == 1 and array.size:
-            hint = (
-                "; a flat list of numbers is missing its second axis, "
-                f"e.g. {name}.reshape(-1, 2) for 2-D points"
+            message = _(
+                "{name} must be a 2-D array of shape (N, d), one row per point; got shape "
+                "{shape}; a flat list of numbers is missing its second axis, e.g. "
+                "{name}.reshape(-1, 2) for 2-D points"
             )
-        raise ValueError(
-            f"{name} must be a 2-D array of shape (N, d), one row per point; "
-            f"got shape {array.shape}{hint}"
-        )
+        else:
+            message = _(
+                "{name} must be a 2-D array of shape (N, d), one row per point; got shape {shape}"
+            )
+        raise ValueError(message.format(name=name, shape=array.shape))
     if array.shape[0] == 0:
-        raise ValueError(f"{name} must hold at least one point (N >= 1); got shape {array.shape}")
+        raise ValueError(
+            _("{name} must hold at least one point (N >= 1); got shape {shape}").format(
+                name=name, shape=array.shape
+            )
+        )
     if array.shape[1] == 0:
         raise ValueError(
-            f"{name} must have at least one coordinate per point (d >= 1); got shape {array.shape}"
+            _(
+                "{name} must have at least one coordinate per point (d >= 1); got shape {shape}"
+            ).format(name=name, shape=array.shape)
         )
     require_finite(array, name)
     if array.shape[0] > limits.MAX_SAMPLES:
-        raise ValueError(f"{name} must hold at most {limits.MAX_SAMPLES} points; got {len(array)}")
+        raise ValueError(
+            _("{name} must hold at most {limit} points; got {count}").format(
+                name=name, limit=limits.MAX_SAMPLES, count=len(array)
+            )
+        )
     if bound is not None:
         require_within(array, name, bound)
     return array
@@ -99,8 +127,10 @@ def as_curve(points: Any, name: str = "points") -> np.ndarray:
     control = as_points(points, name, bound=limits.MAX_COORDINATE)
     if control.shape[1] != 2:
         raise ValueError(
-            f"{name} must have shape (N, 2): (x, y) control points in image space; "
-            f"got shape {control.shape}"
+            _(
+                "{name} must have shape (N, 2): (x, y) control points in image space; got shape "
+                "{shape}"
+            ).format(name=name, shape=control.shape)
         )
     return control
 
@@ -117,8 +147,10 @@ def as_figure_curve(points: Any, name: str = "points") -> np.ndarray:
     control = as_curve(points, name)
     if len(control) > limits.MAX_FIGURE_POINTS:
         raise ValueError(
-            f"{name} must hold at most {limits.MAX_FIGURE_POINTS} control points for a figure "
-            f"that draws each of them; got {len(control)}"
+            _(
+                "{name} must hold at most {limit} control points for a figure that draws each of "
+                "them; got {count}"
+            ).format(name=name, limit=limits.MAX_FIGURE_POINTS, count=len(control))
         )
     return control
 
@@ -130,7 +162,11 @@ def as_point(
     array = as_float_array(point, name)
     if array.ndim != 1 or array.size == 0 or (dim is not None and array.size != dim):
         expected = f"({dim},)" if dim is not None else "(d,)"
-        raise ValueError(f"{name} must be one point of shape {expected}; got shape {array.shape}")
+        raise ValueError(
+            _("{name} must be one point of shape {expected}; got shape {shape}").format(
+                name=name, expected=expected, shape=array.shape
+            )
+        )
     require_finite(array, name)
     if bound is not None:
         require_within(array, name, bound)
@@ -144,11 +180,19 @@ def as_parameter(t: Any, name: str = "t") -> tuple[np.ndarray, bool]:
     """
     array = as_float_array(t, name)
     if array.ndim > 1:
-        raise ValueError(f"{name} must be a scalar or a 1-D array; got shape {array.shape}")
+        raise ValueError(
+            _("{name} must be a scalar or a 1-D array; got shape {shape}").format(
+                name=name, shape=array.shape
+            )
+        )
     require_finite(array, name)
-    require_within(array, name, limits.MAX_PARAMETER, "values")
+    require_within(array, name, limits.MAX_PARAMETER, N_("values"))
     if array.size > limits.MAX_SAMPLES:
-        raise ValueError(f"{name} must hold at most {limits.MAX_SAMPLES} values; got {array.size}")
+        raise ValueError(
+            _("{name} must hold at most {limit} values; got {count}").format(
+                name=name, limit=limits.MAX_SAMPLES, count=array.size
+            )
+        )
     return np.atleast_1d(array), array.ndim == 0
 
 
@@ -156,7 +200,11 @@ def as_scalar_parameter(t: Any, name: str = "t") -> float:
     """Validate a single finite real number."""
     values, is_scalar = as_parameter(t, name)
     if not is_scalar:
-        raise ValueError(f"{name} must be a single number; got an array of shape {values.shape}")
+        raise ValueError(
+            _("{name} must be a single number; got an array of shape {shape}").format(
+                name=name, shape=values.shape
+            )
+        )
     return float(values[0])
 
 
@@ -174,15 +222,23 @@ def as_positive_float(
     or width can work.
     """
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise TypeError(f"{name} must be a real number; got {describe(value)}")
+        raise TypeError(
+            _("{name} must be a real number; got {value}").format(name=name, value=describe(value))
+        )
     number = float(value)
     if not np.isfinite(number):
-        raise ValueError(f"{name} must be finite; got {number}")
+        raise ValueError(_("{name} must be finite; got {value}").format(name=name, value=number))
     if number < 0 or (number == 0 and not allow_zero):
         bound = ">= 0" if allow_zero else "> 0"
-        raise ValueError(f"{name} must be {bound}; got {number}")
+        raise ValueError(
+            _("{name} must be {bound}; got {value}").format(name=name, bound=bound, value=number)
+        )
     if number != 0 and not smallest <= number <= largest:
-        raise ValueError(f"{name} must lie between {smallest:g} and {largest:g}; got {number:g}")
+        raise ValueError(
+            _("{name} must lie between {smallest:g} and {largest:g}; got {value:g}").format(
+                name=name, smallest=smallest, largest=largest, value=number
+            )
+        )
     return number
 
 
@@ -194,13 +250,23 @@ def as_int(
     Without ``minimum``, it must also be at least ``-maximum``.
     """
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
-        raise TypeError(f"{name} must be an integer; got {describe(value)}")
+        raise TypeError(
+            _("{name} must be an integer; got {value}").format(name=name, value=describe(value))
+        )
     number = int(value)
     if minimum is not None and number < minimum:
-        raise ValueError(f"{name} must be >= {minimum}; got {number}")
+        raise ValueError(
+            _("{name} must be >= {minimum}; got {value}").format(
+                name=name, minimum=minimum, value=number
+            )
+        )
     if number > maximum or (minimum is None and number < -maximum):
         low = minimum if minimum is not None else -maximum
-        raise ValueError(f"{name} must be between {low} and {maximum}; got {number}")
+        raise ValueError(
+            _("{name} must be between {low} and {high}; got {value}").format(
+                name=name, low=low, high=maximum, value=number
+            )
+        )
     return number
 
 
@@ -210,13 +276,17 @@ def as_shape(
     """A canvas shape ``(H, W)`` of positive integers, at most ``max_pixels`` pixels."""
     if not isinstance(shape, (tuple, list)) or len(shape) != 2:
         raise ValueError(
-            f"{name} must be a pair (H, W) of positive integers; got {describe(shape)}"
+            _("{name} must be a pair (H, W) of positive integers; got {value}").format(
+                name=name, value=describe(shape)
+            )
         )
     height = as_int(shape[0], f"{name}[0] (height)", minimum=1, maximum=max_pixels)
     width = as_int(shape[1], f"{name}[1] (width)", minimum=1, maximum=max_pixels)
     if height * width > max_pixels:
         raise ValueError(
-            f"{name} must have at most {max_pixels} pixels (H * W); got {height} x {width}"
+            _("{name} must have at most {limit} pixels (H * W); got {height} x {width}").format(
+                name=name, limit=max_pixels, height=height, width=width
+            )
         )
     return height, width
 
@@ -228,12 +298,17 @@ def as_pixels(pixels: Any, name: str = "pixels") -> np.ndarray:
         array = array.reshape(0, 2).astype(np.int64)
     if array.dtype == bool or not np.issubdtype(array.dtype, np.integer):
         raise TypeError(
-            f"{name} must be an integer (K, 2) array of (x, y) pixels; got "
-            f"{describe(pixels)} (round or floor float coordinates first, "
-            "e.g. with course.raster.nearest_pixels)"
+            _(
+                "{name} must be an integer (K, 2) array of (x, y) pixels; got {value} (round or "
+                "floor float coordinates first, e.g. with course.raster.nearest_pixels)"
+            ).format(name=name, value=describe(pixels))
         )
     if array.ndim != 2 or array.shape[1] != 2:
-        raise ValueError(f"{name} must have shape (K, 2), one (x, y) per row; got {array.shape}")
+        raise ValueError(
+            _("{name} must have shape (K, 2), one (x, y) per row; got {shape}").format(
+                name=name, shape=array.shape
+            )
+        )
     return array
 
 
@@ -243,19 +318,27 @@ def as_image(image: Any, name: str = "image", copy: bool = True) -> np.ndarray:
     array = image if keep else as_float_array(image, name)
     if not (array.ndim == 2 or (array.ndim == 3 and array.shape[2] == 3)):
         raise ValueError(
-            f"{name} must be a gray (H, W) or RGB (H, W, 3) image; got shape {array.shape}"
+            _("{name} must be a gray (H, W) or RGB (H, W, 3) image; got shape {shape}").format(
+                name=name, shape=array.shape
+            )
         )
     if array.shape[0] == 0 or array.shape[1] == 0:
-        raise ValueError(f"{name} must not be empty; got shape {array.shape}")
+        raise ValueError(
+            _("{name} must not be empty; got shape {shape}").format(name=name, shape=array.shape)
+        )
     if array.shape[0] * array.shape[1] > limits.MAX_PIXELS:
         raise ValueError(
-            f"{name} must have at most {limits.MAX_PIXELS} pixels; got shape {array.shape}"
+            _("{name} must have at most {limit} pixels; got shape {shape}").format(
+                name=name, limit=limits.MAX_PIXELS, shape=array.shape
+            )
         )
     require_finite(array, name)
     if array.min() < 0 or array.max() > 1:
         raise ValueError(
-            f"{name} values must lie in [0, 1]; got values from {array.min():g} to "
-            f"{array.max():g} (divide uint8 images by 255)"
+            _(
+                "{name} values must lie in [0, 1]; got values from {low:g} to {high:g} (divide "
+                "uint8 images by 255)"
+            ).format(name=name, low=array.min(), high=array.max())
         )
     return array
 
@@ -265,8 +348,10 @@ def as_gray(image: Any, name: str = "gray") -> np.ndarray:
     array = as_image(image, name)
     if array.ndim != 2:
         raise ValueError(
-            f"{name} must be a gray (H, W) image; got shape {array.shape} "
-            "(convert colour images with course.images.to_gray)"
+            _(
+                "{name} must be a gray (H, W) image; got shape {shape} (convert colour images "
+                "with course.images.to_gray)"
+            ).format(name=name, shape=array.shape)
         )
     return array
 
@@ -275,7 +360,11 @@ def as_choice(value: Any, name: str, choices: tuple[str, ...] | list[str]) -> st
     """One of a fixed set of strings."""
     if not isinstance(value, str) or value not in choices:
         options = ", ".join(repr(c) for c in choices)
-        raise ValueError(f"{name} must be one of {options}; got {value!r}")
+        raise ValueError(
+            _("{name} must be one of {options}; got {value}").format(
+                name=name, options=options, value=repr(value)
+            )
+        )
     return value
 
 
@@ -285,8 +374,10 @@ def as_rng(rng: Any, name: str = "rng") -> np.random.Generator:
         return np.random.default_rng(0)
     if not isinstance(rng, np.random.Generator):
         raise TypeError(
-            f"{name} must be a numpy.random.Generator, e.g. numpy.random.default_rng(0); "
-            f"got {describe(rng)}"
+            _(
+                "{name} must be a numpy.random.Generator, e.g. numpy.random.default_rng(0); got "
+                "{value}"
+            ).format(name=name, value=describe(rng))
         )
     return rng
 
@@ -309,11 +400,21 @@ def as_app_points(
     points = as_points(value, name)
     if points.shape[1] != 2 or (count is not None and len(points) != count):
         expected = f"({count}, 2)" if count is not None else "(N, 2)"
-        raise ValueError(f"{name} must have shape {expected}, (x, y) rows; got {points.shape}")
+        raise ValueError(
+            _("{name} must have shape {expected}, (x, y) rows; got {shape}").format(
+                name=name, expected=expected, shape=points.shape
+            )
+        )
     if whole and (points != np.round(points)).any():
-        raise ValueError(f"{name} must be whole pixels; got {points.tolist()}")
+        raise ValueError(
+            _("{name} must be whole pixels; got {value}").format(name=name, value=points.tolist())
+        )
     if points.min() < low or points.max() > high:
-        raise ValueError(f"{name} must lie from {low:g} to {high:g}; got {points.tolist()}")
+        raise ValueError(
+            _("{name} must lie from {low:g} to {high:g}; got {value}").format(
+                name=name, low=low, high=high, value=points.tolist()
+            )
+        )
     return points
 
 
@@ -327,7 +428,9 @@ def as_unit(value: Any, name: str) -> float:
     """
     number = as_positive_float(value, name, allow_zero=True, smallest=0.0)
     if number > 1:
-        raise ValueError(f"{name} must lie in [0, 1]; got {number:g}")
+        raise ValueError(
+            _("{name} must lie in [0, 1]; got {value:g}").format(name=name, value=number)
+        )
     return number
 
 
@@ -343,7 +446,11 @@ def as_option(value: Any, name: str, options: Any) -> Any:
         if type(option) is type(value) and option == value:
             return value
     listed = ", ".join(repr(option) for option in options)
-    raise ValueError(f"{name} must be one of {listed}; got {value!r}")
+    raise ValueError(
+        _("{name} must be one of {options}; got {value}").format(
+            name=name, options=listed, value=repr(value)
+        )
+    )
 
 
 def require_bounded_flattening(control: np.ndarray, tolerance: float, max_step: float) -> None:
@@ -363,17 +470,25 @@ def require_bounded_flattening(control: np.ndarray, tolerance: float, max_step: 
             needed = max(needed, length / max_step)
     if not needed <= limits.MAX_SAMPLES:
         raise ValueError(
-            f"points, tolerance and max_step would need about {needed:.3g} vertices, more "
-            f"than the {limits.MAX_SAMPLES} allowed; raise tolerance (or max_step), or "
-            "bring the control points closer together"
+            _(
+                "points, tolerance and max_step would need about {needed:.3g} vertices, more than "
+                "the {limit} allowed; raise tolerance (or max_step), or bring the control points "
+                "closer together"
+            ).format(needed=needed, limit=limits.MAX_SAMPLES)
         )
     # Degree 4 and up is evaluated by de Casteljau, (degree + 1)**2 / 2 steps a vertex.
     if degree >= 4 and not needed * (degree + 1) ** 2 <= limits.MAX_EVALUATION_WORK:
         raise ValueError(
-            f"points: a curve of {degree + 1} control points within this tolerance would need "
-            f"about {needed:.3g} vertices of {(degree + 1) ** 2} interpolations each, more "
-            f"than the {limits.MAX_EVALUATION_WORK} allowed; split the curve into pieces of "
-            "low degree, or raise tolerance"
+            _(
+                "points: a curve of {count} control points within this tolerance would need about "
+                "{needed:.3g} vertices of {work} interpolations each, more than the {limit} "
+                "allowed; split the curve into pieces of low degree, or raise tolerance"
+            ).format(
+                count=degree + 1,
+                needed=needed,
+                work=(degree + 1) ** 2,
+                limit=limits.MAX_EVALUATION_WORK,
+            )
         )
 
 
@@ -384,12 +499,21 @@ def require_step_samples(step: float, name: str = "step", curves: int = 1) -> No
     """
     count = (np.floor(1 / step * (1 + 1e-12)) + 2) * curves
     if count > limits.MAX_STEP_SAMPLES:
-        per_curve = f" over {curves} curves" if curves > 1 else ""
+        per_curve = _(" over {curves} curves").format(curves=curves) if curves > 1 else ""
         room = limits.MAX_STEP_SAMPLES / curves - 2
-        smallest = f", a step of at least {1 / room:.3g}" if room >= 1 else ""
+        smallest = _(", a step of at least {step:.3g}").format(step=1 / room) if room >= 1 else ""
         raise ValueError(
-            f"{name} must give at most {limits.MAX_STEP_SAMPLES} samples{per_curve}{smallest}; "
-            f"got {step:g}, which gives about {count:.3g}"
+            _(
+                "{name} must give at most {limit} samples{per_curve}{smallest}; got {step:g}, "
+                "which gives about {count:.3g}"
+            ).format(
+                name=name,
+                limit=limits.MAX_STEP_SAMPLES,
+                per_curve=per_curve,
+                smallest=smallest,
+                step=step,
+                count=count,
+            )
         )
 
 
@@ -399,7 +523,15 @@ def require_bounded_evaluation(points: int, samples: int, name: str = "points") 
     work = float(samples) * points**2
     if work > limits.MAX_EVALUATION_WORK:
         raise ValueError(
-            f"{name}: {samples} samples of a curve of {points} control points would take about "
-            f"{work:.3g} interpolations, more than the {limits.MAX_EVALUATION_WORK} allowed; "
-            "split the curve into pieces of low degree, or raise the tolerance or step"
+            _(
+                "{name}: {samples} samples of a curve of {points} control points would take about "
+                "{work:.3g} interpolations, more than the {limit} allowed; split the curve into "
+                "pieces of low degree, or raise the tolerance or step"
+            ).format(
+                name=name,
+                samples=samples,
+                points=points,
+                work=work,
+                limit=limits.MAX_EVALUATION_WORK,
+            )
         )

@@ -422,3 +422,41 @@ def test_student_line_skips_frames_inside_the_course():
         calls_library(1)
     line = calls_library.__code__.co_firstlineno + 1
     assert sandbox.student_line(caught.value).startswith(f"line {line} of calls_library: return")
+
+
+def test_the_second_step_of_a_hint_starts_a_sentence_with_a_capital(monkeypatch):
+    # Lessons 06-08 read "... the comparison itself. each input pixel ...".
+    from course.check import dithering
+
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    wrong = lambda gray: np.zeros((3 * gray.shape[0], 3 * gray.shape[1]))  # noqa: E731
+    dithering.dithering_ordered(wrong)
+    second = str(dithering.dithering_ordered(wrong))
+    assert "the comparison itself. Each input pixel becomes a 3 x 3 cell" in second
+    assert "the comparison itself. Each input pixel" in str(hint("dithering_ordered"))
+    steps = Hints("look at t.", "t must reach 1; x = 2 is wrong.", "recipe")
+    register_hints("t_steps", steps)
+    assert str(hint("t_steps")).endswith("look at t. t must reach 1; x = 2 is wrong.")
+    for more, start in (("offset = (x, y) puts", "offset ="), ("a pixel is in", "A pixel")):
+        register_hints("steps", Hints("look.", more, "recipe"))
+        assert str(hint("steps")) == f"Hint for steps: look. {start}{more[len(start) :]}"
+
+
+def test_hints_and_a_pass_in_chinese_and_english_after(monkeypatch):
+    import course
+    from course.check import dithering  # noqa: F401 (registers the hints asked for)
+
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    course.use_language("zh-CN")
+    try:
+        text = str(hint("dithering_ordered"))
+        passed = str(run(lambda x: 2 * x))
+        wrong = str(run(lambda x: [x]))
+    finally:
+        course.use_language("en")
+    # Chinese steps join without a space after the full stop.
+    assert text.startswith("DitheringOrdered 的提示：看看输出的大小")
+    assert "以及比较本身。每个输入像素变成一个 3 x 3 单元" in text
+    assert passed == "通过 double：全部 3 个用例通过"
+    assert "用例 1 不对" in wrong and "  预期形状 ()，你的形状 (1,)" in wrong
+    assert str(run(lambda x: 2 * x)) == "PASS double: all 3 cases pass"

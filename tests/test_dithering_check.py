@@ -1,8 +1,13 @@
 """course.check.dithering: a correct loop passes, the handout's slip fails by case."""
 
-import numpy as np
+import warnings
 
+import numpy as np
+import pytest
+
+import course
 from course import dither
+from course.check import base
 from course.check import dithering as check
 
 
@@ -95,3 +100,39 @@ def test_a_flipped_sign_and_unread_errors_are_told_apart():
     assert flipped.mistake == "the error's sign flipped" and "case 1 is wrong" in str(flipped)
     unread = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, read_errors=False))
     assert unread.mistake == "the errors are never read" and "case 1 is wrong" in str(unread)
+
+
+def test_an_answer_in_0_and_255_is_named_in_both_checkers():
+    # A student used to 8-bit images writes 255 for a lit pixel; the lesson's range is 0 and 1.
+    ordered = check.dithering_ordered(lambda gray: 255 * nine_ifs(gray))
+    assert ordered.mistake == "0 and 255 for 0 and 1"
+    assert "your output holds the values 0, 255: the lesson's output is 0 (dark) or 1" in str(
+        ordered
+    )
+    diffused = check.dithering_error_diffuse(lambda gray: np.uint8(255) * floyd_steinberg(gray))
+    assert diffused.mistake == "0 and 255 for 0 and 1"
+    assert "Write 1.0 where you wrote 255" in str(diffused)
+
+
+@pytest.fixture
+def in_chinese(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    course.use_language("zh-CN")
+    yield
+    course.use_language("en")
+
+
+def test_both_checkers_report_in_chinese(in_chinese):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = check.dithering_ordered(lambda gray: 255 * nine_ifs(gray))
+    assert result.picture is not None  # its titles in Chinese, every glyph in the font
+    assert not [w for w in caught if "missing from font" in str(w.message)]
+    ordered = str(result)
+    assert ordered.startswith("未通过 DitheringOrdered：用例 1 不对\n  输入：gray=")
+    assert "你的输出含有这些值：0, 255；本课的输出是 0（暗）或 1（亮）" in ordered
+    assert "这是一个已知错误，用 0 和 255 代替了 0 和 1：" in ordered
+    assert "提示：看看输出的大小" in ordered and "Hint" not in ordered
+    unread = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, read_errors=False))
+    assert "这是一个已知错误，误差从未被读取：" in str(unread)
+    assert unread.mistake == "the errors are never read"  # the name stays an identifier

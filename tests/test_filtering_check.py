@@ -1,9 +1,13 @@
 """course.check.filtering: the lab's Blur and Edge, right and wrong."""
 
+import warnings
+
 import numpy as np
 import pytest
 
+import course
 from course import filters
+from course.check import base
 from course.check import filtering as check
 
 # The students below are written here, as a student would write them: the checkers fail
@@ -172,3 +176,54 @@ def test_an_interior_error_is_placed_inside_the_image():
     result = check.blur(off_by_one_pixel)
     assert "(x, y) = (5, 4), inside the image; 1 pixel differs" in result.message
     assert result.mistake is None
+
+
+def nan_padded(image, mean=np.mean, pad_colours=False):
+    """The handout's rule through NaN padding: right with np.nanmean, NaN on the border with
+    np.mean; np.pad(image, 1) also pads an RGB image's colour axis with NaN."""
+    border = 1 if pad_colours else [(1, 1), (1, 1)] + [(0, 0)] * (image.ndim - 2)
+    padded = np.pad(image, border, constant_values=np.nan)
+    output = np.zeros_like(image)
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for y in range(image.shape[0]):
+            for x in range(image.shape[1]):
+                window = padded[y : y + 3, x : x + 3]
+                output[y, x] = mean(window[..., :3] if image.ndim == 3 else window, axis=(0, 1))
+    return output
+
+
+def test_a_nan_output_says_which_pixel_where_and_why():
+    assert check.blur(lambda image: nan_padded(image, np.nanmean))
+    border = str(check.blur(nan_padded))
+    assert "case 1: your answer holds nan at [0, 0]" in border
+    assert "output pixel (x, y) = (0, 0) is NaN; it lies on the border" in border
+    assert "only 4 of its 9 neighbours are inside the image" in border
+    assert "12 of the 12 border pixels are NaN, 0 inside" in border
+    assert "np.nanmean skips it" in border
+    colours = str(check.blur(lambda image: nan_padded(image, np.nanmean, pad_colours=True)))
+    assert "case 8:" in colours  # the gray cases pass: only the RGB padding is wrong
+    assert "output pixel (x, y) = (0, 0), channel 0 (red), is NaN" in colours
+    assert "red at every pixel, inside the image too" in colours
+    assert "((1, 1), (1, 1), (0, 0))" in colours
+
+
+@pytest.fixture
+def in_chinese(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    course.use_language("zh-CN")
+    yield
+    course.use_language("en")
+
+
+def test_blur_and_edge_report_in_chinese(in_chinese):
+    blurred = str(check.blur(lambda image: image))
+    assert blurred.startswith("未通过 Blur：用例 1 不对\n  输入：image=")
+    assert "第一个错误的像素是 (x, y) = (0, 0)，在边界上：9 个邻居中有 4 个在图像内" in blurred
+    edge = str(check.edge(lambda image: sobel_magnitude(image, "zero")))
+    assert "这是一个已知错误，零填充：" in edge and "Hint" not in edge
+    nan = str(check.blur(nan_padded))
+    assert "用例 1：你的答案在 [0, 0] 处是 nan：每个值都必须是有限数" in nan
+    assert "输出像素 (x, y) = (0, 0) 是 NaN；它在边界上，9 个邻居中只有 4 个在图像内" in nan
+    colours = str(check.blur(lambda image: nan_padded(image, np.nanmean, pad_colours=True)))
+    assert "输出像素 (x, y) = (0, 0) 的通道 0（红） 是 NaN，而且每个像素的红通道都是 NaN" in colours

@@ -88,7 +88,7 @@ LEFT_OUT = {
         "makes a checker's failure picture from the checker's own reference; no student input"
     ),
     "course.classroom.cli.main": "runs whole commands; its argument parsing is argparse's",
-    "course.check.base.call_budget": "a context manager for checkers; no data input",
+    "course.check.references.call_budget": "a context manager for checkers; no data input",
     "course.widgets.antialiasing_figures.Table": "a str subclass: str's own constructor",
     "course.widgets.base.SliderApp.still": "the abstract base draws nothing: its apps' do",
     "course.widgets.poisson_figures.write_lab_sweeps": (
@@ -365,8 +365,8 @@ VALID: dict[str, Any] = {
     "course.widgets.poisson.half_size:image": lambda: GRAY.copy(),
     "course.widgets.lines_and_triangles.octant:dx": lambda: 3,
     "course.widgets.lines_and_triangles.octant:dy": lambda: 1,
-    "course.check.base.same_pixels:expected": lambda: np.array([[1, 2]]),
-    "course.check.base.same_pixels:given": lambda: np.array([[1, 2]]),
+    "course.check.comparisons.same_pixels:expected": lambda: np.array([[1, 2]]),
+    "course.check.comparisons.same_pixels:given": lambda: np.array([[1, 2]]),
     "course.check.pictures.pixel_picture:expected": lambda: np.array([[1, 2], [3, 4]]),
     "course.check.pictures.pixel_picture:given": lambda: np.array([[1, 2], [3, 5]]),
     "course.check.pictures.image_picture:expected": lambda: GRAY.copy(),

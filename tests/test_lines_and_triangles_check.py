@@ -5,6 +5,8 @@ import math
 import numpy as np
 import pytest
 
+import course
+from course.check import base
 from course.check import lines_and_triangles as check
 from course.raster import line, line_4connected, triangle
 
@@ -226,3 +228,60 @@ def test_draw_triangle_filled_names_each_known_mistake_with_a_pixel_picture():
     assert corners.mistake == "pixel corners for centres" and corners.picture is not None
     opened = check.draw_triangle_filled(precomputed(triangle, check._TRIANGLE_CASES, rule="open"))
     assert opened.mistake == "every edge open"
+
+
+def separate_steps(p0, p1):
+    """Bresenham with x and y stepped and painted one after the other: every diagonal step
+    becomes two, an extra pixel in its corner (a 4-connected staircase of its own kind)."""
+    (x, y), (x1, y1) = p0, p1
+    dx, dy = abs(x1 - x), abs(y1 - y)
+    sx, sy = (1 if x1 >= x else -1), (1 if y1 >= y else -1)
+    error, pixels = dx - dy, [(x, y)]
+    while (x, y) != (x1, y1):
+        e2 = 2 * error
+        if e2 > -dy:
+            error, x = error - dy, x + sx
+            pixels.append((x, y))
+        if e2 < dx:
+            error, y = error + dx, y + sy
+            pixels.append((x, y))
+    return pixels
+
+
+def test_any_4_connected_staircase_is_named_not_only_the_librarys():
+    # Its corners turn otherwise than course.raster.line_4connected's on case 1.
+    assert separate_steps((2, 3), (9, 5)) != line_4connected((2, 3), (9, 5)).tolist()
+    result = check.draw_line(separate_steps)
+    assert result.mistake == "the report's staircase"
+    assert "2 extra, first (4, 3)" in str(result)
+    assert "left an extra pixel in the corner: a 4-connected staircase" in str(result)
+
+
+@pytest.fixture
+def in_chinese(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    course.use_language("zh-CN")
+    yield
+    course.use_language("en")
+
+
+def test_line_and_triangle_report_in_chinese(in_chinese):
+    backwards = check.draw_line(
+        precomputed(lambda p0, p1: line(p0, p1)[::-1].tolist(), check._LINE_CASES)
+    )
+    assert str(backwards).startswith("未通过 DrawLine：用例 1 不对\n  输入：p0=(2, 3), p1=(9, 5)")
+    assert "这是一个已知错误，画反了方向：你的像素是从 p1 画到 p0 的" in str(backwards)
+    assert backwards.mistake == "drawn backwards"  # the name stays an identifier
+    staircase = str(check.draw_line(separate_steps))
+    assert "多了 2 个，第一个是 (4, 3)" in staircase and "4 连通的阶梯" in staircase
+    one = str(check.draw_triangle_filled(lambda p0, p1, p2: [p0]))
+    assert "缺了 " in one and "提示：看看你的循环填了哪些行" in one and "Hint" not in one
+
+    def stub(p0, p1):
+        raise NotImplementedError
+
+    assert str(check.draw_line(stub)).startswith(
+        "未通过 DrawLine：还没有写：你的函数抛出了 NotImplementedError"
+    )
+    refused = str(check.draw_line(lambda p0, p1: line(p0, p1).tolist()))
+    assert "你的函数调用了 course.raster.line，那是课程库自带的答案" in refused

@@ -33,19 +33,26 @@ from course.error_diffusion import (
     error_diffusion_values,
     error_diffusion_wraparound,
 )
+from course.i18n import N_, _
 from course.images import face, ramp
 
 __all__ = ["dithering_error_diffuse", "dithering_ordered", "hint"]
 
-_LIBRARY = {
-    function: f"your function calls {function.__module__}.{function.__name__}, the library's "
-    "own answer: this exercise writes it"
-    for function in (
-        dither.ordered,
-        diffusion.error_diffusion,
-        diffusion.error_diffusion_values,
-    )
-}
+_LIBRARY_FUNCTIONS = (
+    dither.ordered,
+    diffusion.error_diffusion,
+    diffusion.error_diffusion_values,
+)
+
+
+def _library() -> dict[Any, str]:
+    """The library's own answers, each with the report's words for a call to it."""
+    return {
+        function: _(
+            "your function calls {name}, the library's own answer: this exercise writes it"
+        ).format(name=f"{function.__module__}.{function.__name__}")
+        for function in _LIBRARY_FUNCTIONS
+    }
 
 
 @cache
@@ -56,7 +63,7 @@ def _small_face() -> np.ndarray:
 
 def _face_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
     _, expected, given = results[-1]
-    return side_by_side(expected, given, ("expected", "your dithered face"))
+    return side_by_side(expected, given, (N_("expected"), N_("your dithered face")))
 
 
 def _as_output(value: Any) -> np.ndarray:
@@ -70,6 +77,17 @@ def _first_wrong(expected: Any, given: Any) -> tuple[int, int] | None:
         return None
     wrong = np.argwhere(want != have)
     return None if len(wrong) == 0 else (int(wrong[0][1]), int(wrong[0][0]))
+
+
+def _eight_bit(reference: Callable[..., Any]) -> Mistake:
+    return Mistake(
+        N_("0 and 255 for 0 and 1"),
+        N_(
+            "your pixels are right, but lit is 255 and dark 0, as in an 8-bit image: the lesson's "
+            "images are floats in [0, 1], so a lit pixel is 1. Write 1.0 where you wrote 255."
+        ),
+        _in_255(reference),
+    )
 
 
 def _ordered_cases() -> list[dict[str, Any]]:
@@ -100,8 +118,25 @@ def _one_per_pixel(gray: Any) -> np.ndarray:
     return (values > levels).astype(float)
 
 
+def _in_255(reference: Callable[..., Any]) -> Callable[..., np.ndarray]:
+    """The right dithering written as 8-bit levels, 0 and 255: the slip's answer."""
+    return lambda gray: 255 * np.asarray(reference(gray), dtype=float)
+
+
+def _levels(given: Any) -> str:
+    """What is wrong with an output whose values are not the lesson's 0 and 1, if anything."""
+    values = np.unique(_as_output(given))
+    if values.size == 0 or np.isin(values, (0.0, 1.0)).all():
+        return ""
+    shown = ", ".join(f"{v:g}" for v in values[:4]) + (", ..." if values.size > 4 else "")
+    return _(
+        "your output holds the values {values}: the lesson's output is 0 (dark) or 1 (lit), "
+        "as its input is a gray level in [0, 1]"
+    ).format(values=shown)
+
+
 def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
-    return image_picture(expected, given, title="first case that differs")
+    return image_picture(expected, given, title=N_("first case that differs"))
 
 
 def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
@@ -117,24 +152,31 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
     """
     mistakes = [
         Mistake(
-            "the matrix transposed",
-            "your cells are the slide's patterns mirrored on the diagonal: you indexed "
-            "output[3 x + i, 3 y + j] (or read M[j][i]). Row i of a cell is row i of M: "
-            "output[3 y + i, 3 x + j] compares with M[i][j].",
+            N_("the matrix transposed"),
+            N_(
+                "your cells are the slide's patterns mirrored on the diagonal: you indexed "
+                "output[3 x + i, 3 y + j] (or read M[j][i]). Row i of a cell is row i of M: "
+                "output[3 y + i, 3 x + j] compares with M[i][j]."
+            ),
             _ordered_with(ORDERED_MATRIX.T, np.greater),
         ),
         Mistake(
-            ">= for >",
-            "you lit a sub-pixel where the value equals M[i][j] / 9: the lab's rule is "
-            "strictly greater, so a level of exactly k / 9 lights k sub-pixels, not k + 1.",
+            N_(">= for >"),
+            N_(
+                "you lit a sub-pixel where the value equals M[i][j] / 9: the lab's rule is "
+                "strictly greater, so a level of exactly k / 9 lights k sub-pixels, not k + 1."
+            ),
             _ordered_with(ORDERED_MATRIX, np.greater_equal),
         ),
         Mistake(
-            "one comparison per pixel",
-            "your output is the size of the input: you compared each pixel with one entry of "
-            "M. Ordered dithering here makes every pixel a 3 x 3 cell of nine comparisons.",
+            N_("one comparison per pixel"),
+            N_(
+                "your output is the size of the input: you compared each pixel with one entry of "
+                "M. Ordered dithering here makes every pixel a 3 x 3 cell of nine comparisons."
+            ),
             _one_per_pixel,
         ),
+        _eight_bit(ordered),
     ]
     return run_cases(
         "DitheringOrdered",
@@ -146,7 +188,8 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
         hint=ORDERED_HINTS,
         mistakes=mistakes,
         picture=_picture,
-        forbidden=_LIBRARY,
+        explain=lambda case, expected, given: _levels(given),
+        forbidden=_library(),
         pass_picture=_face_pass_picture,
     )
 
@@ -154,12 +197,18 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
 ORDERED_HINTS = register_hints(
     "DitheringOrdered",
     Hints(
-        where="look at the output's size, at which sub-pixel of a cell compares with which "
-        "entry of M, and at the comparison itself.",
-        more="each input pixel becomes a 3 x 3 cell; row i, column j of the cell compares "
-        "the pixel's value with M[i][j] / 9, lit only where the value is greater.",
-        recipe="output = zeros(3 H, 3 W); for each (x, y) and i, j in range(3): output[3 y + "
-        "i, 3 x + j] = 1 if gray[y, x] > M[i][j] / 9 else 0.",
+        where=N_(
+            "look at the output's size, at which sub-pixel of a cell compares with which "
+            "entry of M, and at the comparison itself."
+        ),
+        more=N_(
+            "each input pixel becomes a 3 x 3 cell; row i, column j of the cell compares "
+            "the pixel's value with M[i][j] / 9, lit only where the value is greater."
+        ),
+        recipe=N_(
+            "output = zeros(3 H, 3 W); for each (x, y) and i, j in range(3): output[3 y + "
+            "i, 3 x + j] = 1 if gray[y, x] > M[i][j] / 9 else 0."
+        ),
     ),
     "dithering_ordered",
 )
@@ -202,17 +251,20 @@ def _diffused(gray: Any, kernel: tuple = _KERNEL, sign: float = 1.0) -> np.ndarr
 
 def _carried(case: dict[str, Any], expected: Any, given: Any) -> str:
     """What the first wrong pixel held when the right loop thresholded it."""
+    levels = _levels(given)
+    if levels:
+        return levels
     where = _first_wrong(expected, given)
     if where is None:
-        return "the output must have the input's shape, one value per pixel"
+        return _("the output must have the input's shape, one value per pixel")
     x, y = where
     gray = np.asarray(case["gray"], dtype=float)
     value = float(error_diffusion_values(gray, method="loop")[y, x])
-    verdict = "lit, since it is > 0.5" if value > 0.5 else "dark, since it is not > 0.5"
-    return (
-        f"first wrong pixel (x={x}, y={y}): its value {gray[y, x]:.4f} plus the error carried "
-        f"into it, {value - gray[y, x]:+.4f}, is {value:.4f}: {verdict}"
-    )
+    verdict = _("lit, since it is > 0.5") if value > 0.5 else _("dark, since it is not > 0.5")
+    return _(
+        "first wrong pixel (x={x}, y={y}): its value {value:.4f} plus the error carried into it, "
+        "{carried:+.4f}, is {total:.4f}: {verdict}"
+    ).format(x=x, y=y, value=gray[y, x], carried=value - gray[y, x], total=value, verdict=verdict)
 
 
 def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
@@ -233,37 +285,48 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
     """
     mistakes = [
         Mistake(
-            "the left edge wraps around",
-            "at x = 0 your push to (x - 1, y + 1) went to buffer[y + 1, -1], the last pixel of "
-            "the next row: Python reads a negative index from the end. Check x - 1 >= 0, as the "
-            "lab report's unsigned x could not.",
+            N_("the left edge wraps around"),
+            N_(
+                "at x = 0 your push to (x - 1, y + 1) went to buffer[y + 1, -1], the last pixel of "
+                "the next row: Python reads a negative index from the end. Check x - 1 >= 0, as "
+                "the lab report's unsigned x could not."
+            ),
             error_diffusion_wraparound,
         ),
         Mistake(
-            "a serpentine scan",
-            "you ran every other row right to left: a fine variant, but the lab's loop runs "
-            "every row left to right, and the checker compares with it exactly.",
+            N_("a serpentine scan"),
+            N_(
+                "you ran every other row right to left: a fine variant, but the lab's loop runs "
+                "every row left to right, and the checker compares with it exactly."
+            ),
             lambda gray: error_diffusion(gray, serpentine=True, method="loop"),
         ),
         Mistake(
-            "the error's sign flipped",
-            "you pushed output - value instead of value - output: each neighbour then moves "
-            "away from the tone it should keep. The error is what the pixel wanted minus "
-            "what it got.",
+            N_("the error's sign flipped"),
+            N_(
+                "you pushed output - value instead of value - output: each neighbour then moves "
+                "away from the tone it should keep. The error is what the pixel wanted minus "
+                "what it got."
+            ),
             lambda gray: _diffused(gray, sign=-1.0),
         ),
         Mistake(
-            "the kernel mirrored",
-            "your 3/16 and 1/16 are swapped: 3/16 goes below left, (x - 1, y + 1), and 1/16 "
-            "below right, (x + 1, y + 1), as on the slide.",
+            N_("the kernel mirrored"),
+            N_(
+                "your 3/16 and 1/16 are swapped: 3/16 goes below left, (x - 1, y + 1), and 1/16 "
+                "below right, (x + 1, y + 1), as on the slide."
+            ),
             lambda gray: _diffused(gray, kernel=_MIRRORED),
         ),
         Mistake(
-            "the errors are never read",
-            "you thresholded the input itself: the errors must go into a copy of the image "
-            "(the report's inputcopy), and each pixel is thresholded with what it received.",
+            N_("the errors are never read"),
+            N_(
+                "you thresholded the input itself: the errors must go into a copy of the image "
+                "(the report's inputcopy), and each pixel is thresholded with what it received."
+            ),
             threshold,
         ),
+        _eight_bit(_loop_reference),
     ]
     return run_cases(
         "DitheringErrorDiffuse",
@@ -276,10 +339,12 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
         mistakes=mistakes,
         picture=_picture,
         explain=_carried,
-        forbidden=_LIBRARY,
-        on_change="This is the lab report's own slip: its loop pushes the errors into the "
-        "input image itself. Push them into a copy (buffer = gray.copy()), so that the "
-        "caller's image stays as it was.",
+        forbidden=_library(),
+        on_change=N_(
+            "This is the lab report's own slip: its loop pushes the errors into the "
+            "input image itself. Push them into a copy (buffer = gray.copy()), so that the "
+            "caller's image stays as it was."
+        ),
         pass_picture=_face_pass_picture,
     )
 
@@ -291,14 +356,20 @@ def _loop_reference(gray: Any) -> np.ndarray:
 DIFFUSION_HINTS = register_hints(
     "DitheringErrorDiffuse",
     Hints(
-        where="look at the order you visit the pixels in, at what each pixel is compared "
-        "with, and at where its error goes.",
-        more="visit the pixels row by row, left to right, in a copy of the image; each is "
-        "thresholded at 0.5 with the errors it has received, and its own error (what it "
-        "wanted minus what it got) is shared among the four neighbours not yet visited.",
-        recipe="buffer = gray.copy(); for y, for x: output = 1 if buffer[y, x] > 0.5 else 0; "
-        "error = buffer[y, x] - output; add 7/16 of it right, 3/16 below left, 5/16 below, "
-        "1/16 below right, skipping pushes off the image.",
+        where=N_(
+            "look at the order you visit the pixels in, at what each pixel is compared "
+            "with, and at where its error goes."
+        ),
+        more=N_(
+            "visit the pixels row by row, left to right, in a copy of the image; each is "
+            "thresholded at 0.5 with the errors it has received, and its own error (what it "
+            "wanted minus what it got) is shared among the four neighbours not yet visited."
+        ),
+        recipe=N_(
+            "buffer = gray.copy(); for y, for x: output = 1 if buffer[y, x] > 0.5 else 0; "
+            "error = buffer[y, x] - output; add 7/16 of it right, 3/16 below left, 5/16 below, "
+            "1/16 below right, skipping pushes off the image."
+        ),
     ),
     "dithering_error_diffuse",
 )

@@ -28,14 +28,21 @@ from course.check.base import CheckResult, Hints, Mistake, close, hint, register
 from course.check.pictures import image_picture, side_by_side
 from course.filters import BOX, SOBEL_X, convolve, sobel
 from course.filters import blur as reference_blur
+from course.i18n import N_, _
 
 __all__ = ["blur", "edge", "hint"]
 
-_LIBRARY = {
-    function: f"your function calls course.filters.{function.__name__}, the library's own "
-    "answer: this exercise writes it"
-    for function in (filters.blur, filters.sobel, filters.convolve)
-}
+_LIBRARY_FUNCTIONS = (filters.blur, filters.sobel, filters.convolve)
+
+
+def _library() -> dict[Any, str]:
+    """The library's own answers, each with the report's words for a call to it."""
+    return {
+        function: _(
+            "your function calls {name}, the library's own answer: this exercise writes it"
+        ).format(name=f"course.filters.{function.__name__}")
+        for function in _LIBRARY_FUNCTIONS
+    }
 
 
 def _cases() -> list[dict[str, Any]]:
@@ -62,29 +69,93 @@ def _summary(value: Any) -> str:
     """An output image in one line; the picture shows it pixel for pixel."""
     array = _as_float(value)
     if array.size == 0:
-        return f"an empty array of shape {array.shape}"
-    return f"shape {array.shape}, values {array.min():.4g} to {array.max():.4g} (see the map)"
+        return _("an empty array of shape {shape}").format(shape=array.shape)
+    return _("shape {shape}, values {low:.4g} to {high:.4g} (see the map)").format(
+        shape=array.shape, low=array.min(), high=array.max()
+    )
 
 
 def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
-    return image_picture(expected, given, title="the first case that differs, pixel for pixel")
+    return image_picture(expected, given, title=N_("the first case that differs, pixel for pixel"))
 
 
 def _explain(case: dict[str, Any], expected: Any, given: Any) -> str:
     """The first wrong pixel as (x, y), and how much of its window lies inside the image."""
     want, have = _as_float(expected), _as_float(given)
     if want.shape != have.shape:
-        return f"your output has shape {have.shape}; the image has shape {want.shape}"
+        return _("your output has shape {given}; the image has shape {expected}").format(
+            given=have.shape, expected=want.shape
+        )
     wrong = np.argwhere(~np.isclose(want, have, atol=1e-9, rtol=1e-9))
     row, column = int(wrong[0][0]), int(wrong[0][1])
     height, width = want.shape[:2]
     inside = (min(row + 1, height - 1) - max(row - 1, 0) + 1) * (
         min(column + 1, width - 1) - max(column - 1, 0) + 1
     )
-    where = "inside the image" if inside == 9 else f"on the border: {inside} of 9 inside"
-    count = len({(int(r), int(c)) for r, c, *_ in wrong})
-    differ = "1 pixel differs" if count == 1 else f"{count} pixels differ"
-    return f"the first wrong pixel is (x, y) = ({column}, {row}), {where}; {differ}"
+    if inside == 9:
+        where = _("inside the image")
+    else:
+        where = _("on the border: {inside} of 9 inside").format(inside=inside)
+    count = len({(int(r), int(c)) for r, c, *_rest in wrong})
+    differ = _("1 pixel differs") if count == 1 else _("{count} pixels differ").format(count=count)
+    return _("the first wrong pixel is (x, y) = ({x}, {y}), {where}; {differ}").format(
+        x=column, y=row, where=where, differ=differ
+    )
+
+
+_CHANNELS = (N_("red"), N_("green"), N_("blue"))
+
+
+def _explain_nan(case: dict[str, Any], given: Any) -> str:
+    """Which output pixel is NaN, where it lies, and the border slip that makes one."""
+    have = _as_float(given)
+    image = _as_float(case["image"])
+    if have.shape != image.shape:
+        return ""
+    bad = ~np.isfinite(have)
+    row, column, *channel = (int(i) for i in np.argwhere(bad)[0])
+    height, width = have.shape[:2]
+    inside = (min(row + 1, height - 1) - max(row - 1, 0) + 1) * (
+        min(column + 1, width - 1) - max(column - 1, 0) + 1
+    )
+    pixel = _("output pixel (x, y) = ({x}, {y})").format(x=column, y=row)
+    if channel:
+        pixel = _("output pixel (x, y) = ({x}, {y}), channel {channel} ({colour}),").format(
+            x=column, y=row, channel=channel[0], colour=_(_CHANNELS[channel[0]])
+        )
+        whole = [c for c in range(3) if bad[..., c].all()]
+        if whole and not bad[..., [c for c in range(3) if c not in whole]].any():
+            names = _(" and ").join(_(_CHANNELS[c]) for c in whole)
+            return _(
+                "{pixel} is NaN, and so is {channels} at every pixel, inside the image too: "
+                "your padding added NaN along the colour axis. np.pad(image, 1, ...) pads all "
+                "three axes of an RGB image, so each pixel gets 5 channels, the first and last "
+                "NaN; pad the rows and the columns only, ((1, 1), (1, 1), (0, 0)), and keep the "
+                "3 channels"
+            ).format(pixel=pixel, channels=names)
+    border = np.zeros((height, width), dtype=bool)
+    border[[0, -1], :] = border[:, [0, -1]] = True
+    nan_pixels = bad.any(axis=2) if bad.ndim == 3 else bad
+    on_border, off_border = int(nan_pixels[border].sum()), int(nan_pixels[~border].sum())
+    if inside == 9:
+        return _(
+            "{pixel} is NaN, inside the image, where all 9 of its neighbours exist: a NaN "
+            "there comes from your own arithmetic (0 / 0, or the mean of an empty window)"
+        ).format(pixel=pixel)
+    return _(
+        "{pixel} is NaN; it lies on the border, where only {inside} of its 9 neighbours are "
+        "inside the image ({on_border} of the {border} border pixels are NaN, {off_border} "
+        "inside): NaN comes from what your window reads past the edge. np.mean of a window "
+        "that holds NaN padding is NaN (np.nanmean skips it), and the mean of an empty slice "
+        "is NaN (image[y - 1 : y + 2] is empty at y = 0: start at max(y - 1, 0)). Average "
+        "only the neighbours inside the image"
+    ).format(
+        pixel=pixel,
+        inside=inside,
+        on_border=on_border,
+        border=int(border.sum()),
+        off_border=off_border,
+    )
 
 
 def _frame_from(image: np.ndarray, inner: np.ndarray, fill: np.ndarray | None) -> np.ndarray:
@@ -120,63 +191,81 @@ def _same_or_both_nan(expected: Any, given: Any) -> bool:
 
 BLUR_MISTAKES = (
     Mistake(
-        "a window sliced from y - 1 at y = 0",
-        "at y = 0 (or x = 0) your window image[y - 1 : y + 2] starts at -1, which Python "
-        "reads as the last row, so the slice is empty and its mean is NaN. Start the slice "
-        "at max(y - 1, 0).",
+        N_("a window sliced from y - 1 at y = 0"),
+        N_(
+            "at y = 0 (or x = 0) your window image[y - 1 : y + 2] starts at -1, which Python "
+            "reads as the last row, so the slice is empty and its mean is NaN. Start the slice "
+            "at max(y - 1, 0)."
+        ),
         _sliced_from_minus_one,
         matches=_same_or_both_nan,
     ),
     Mistake(
-        "zero padding",
-        "you divide by 9 everywhere, as if the pixels outside the image were black: the frame "
-        "darkens. The report averages only the neighbours inside the image (6 on an edge, 4 at "
-        "a corner).",
+        N_("zero padding"),
+        N_(
+            "you divide by 9 everywhere, as if the pixels outside the image were black: the frame "
+            "darkens. The report averages only the neighbours inside the image (6 on an edge, 4 at "
+            "a corner)."
+        ),
         lambda image: convolve(image, BOX, "zero"),
     ),
     Mistake(
-        "the frame skipped",
-        "your loops run from 1 to size - 2 and leave the frame at 0. Blur every pixel, "
-        "averaging the neighbours that exist.",
+        N_("the frame skipped"),
+        N_(
+            "your loops run from 1 to size - 2 and leave the frame at 0. Blur every pixel, "
+            "averaging the neighbours that exist."
+        ),
         lambda image: _frame_from(image, reference_blur(image), None),
     ),
     Mistake(
-        "the frame copied",
-        "your loops skip the one-pixel frame and copy it from the input. Blur every pixel, "
-        "averaging the neighbours that exist.",
+        N_("the frame copied"),
+        N_(
+            "your loops skip the one-pixel frame and copy it from the input. Blur every pixel, "
+            "averaging the neighbours that exist."
+        ),
         lambda image: _frame_from(image, reference_blur(image), np.asarray(image, dtype=float)),
     ),
     Mistake(
-        "the edge pixel repeated",
-        "outside the image you read the nearest pixel inside (replicate), so the edge row "
-        "counts twice. The report's rule averages only the pixels inside.",
+        N_("the edge pixel repeated"),
+        N_(
+            "outside the image you read the nearest pixel inside (replicate), so the edge row "
+            "counts twice. The report's rule averages only the pixels inside."
+        ),
         lambda image: convolve(image, BOX, "replicate"),
     ),
 )
 
 EDGE_MISTAKES = (
     Mistake(
-        "zero padding",
-        "you read the pixels outside the image as 0: the frame lights up as a false edge. "
-        "Read the nearest pixel inside (clamp the index).",
+        N_("zero padding"),
+        N_(
+            "you read the pixels outside the image as 0: the frame lights up as a false edge. "
+            "Read the nearest pixel inside (clamp the index)."
+        ),
         lambda image: sobel(image, border="zero"),
     ),
     Mistake(
-        "clipped to 1",
-        "your magnitude stops at 1, as writing it into an 8-bit image would: Sobel's runs up "
-        "to sqrt(20), about 4.47 (Gx = 4 with Gy = 2). Return sqrt(Gx^2 + Gy^2) as it is.",
+        N_("clipped to 1"),
+        N_(
+            "your magnitude stops at 1, as writing it into an 8-bit image would: Sobel's runs up "
+            "to sqrt(20), about 4.47 (Gx = 4 with Gy = 2). Return sqrt(Gx^2 + Gy^2) as it is."
+        ),
         lambda image: np.clip(sobel(image, border="replicate"), 0.0, 1.0),
     ),
     Mistake(
-        "Gx alone",
-        "your output is |Gx|: horizontal changes only. Add Gy, the same sum with the "
-        "transposed kernel, and take sqrt(Gx^2 + Gy^2).",
+        N_("Gx alone"),
+        N_(
+            "your output is |Gx|: horizontal changes only. Add Gy, the same sum with the "
+            "transposed kernel, and take sqrt(Gx^2 + Gy^2)."
+        ),
         lambda image: np.abs(_correlate(image, SOBEL_X, "replicate")),
     ),
     Mistake(
-        "the frame skipped",
-        "your loops run from 1 to size - 2 and leave the frame at 0. Compute every pixel, "
-        "reading outside pixels from the nearest one inside.",
+        N_("the frame skipped"),
+        N_(
+            "your loops run from 1 to size - 2 and leave the frame at 0. Compute every pixel, "
+            "reading outside pixels from the nearest one inside."
+        ),
         lambda image: _frame_from(image, sobel(image, border="replicate"), None),
     ),
 )
@@ -206,8 +295,9 @@ def blur(student: Callable[..., Any]) -> CheckResult:
         mistakes=BLUR_MISTAKES,
         picture=_picture,
         explain=_explain,
+        explain_nan=_explain_nan,
         show=_summary,
-        forbidden=_LIBRARY,
+        forbidden=_library(),
         pass_picture=_pass_picture,
     )
 
@@ -215,19 +305,25 @@ def blur(student: Callable[..., Any]) -> CheckResult:
 def _pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
     _, expected, given = results[1]  # the bright square
     top = max(float(np.max(expected)), 1.0)
-    return side_by_side(expected / top, _as_float(given) / top, ("expected", "your output"))
+    return side_by_side(expected / top, _as_float(given) / top, (N_("expected"), N_("your output")))
 
 
 BLUR_HINTS = register_hints(
     "Blur",
     Hints(
-        where="look at the pixels on the image's border: which neighbours you read there, "
-        "and what you divide by.",
-        more="each output pixel is the mean of those of its 3 x 3 neighbours that exist: 9 "
-        "inside, 6 on an edge, 4 at a corner; nothing outside the image is read, and the "
-        "input is left as it was.",
-        recipe="output = zeros_like(image); for each (x, y): window = image[max(y - 1, 0) : "
-        "y + 2, max(x - 1, 0) : x + 2]; output[y, x] = window.mean(axis=(0, 1)).",
+        where=N_(
+            "look at the pixels on the image's border: which neighbours you read there, "
+            "and what you divide by."
+        ),
+        more=N_(
+            "each output pixel is the mean of those of its 3 x 3 neighbours that exist: 9 "
+            "inside, 6 on an edge, 4 at a corner; nothing outside the image is read, and the "
+            "input is left as it was."
+        ),
+        recipe=N_(
+            "output = zeros_like(image); for each (x, y): window = image[max(y - 1, 0) : "
+            "y + 2, max(x - 1, 0) : x + 2]; output[y, x] = window.mean(axis=(0, 1))."
+        ),
     ),
     "blur_exercise",
 )
@@ -258,8 +354,9 @@ def edge(student: Callable[..., Any]) -> CheckResult:
         mistakes=EDGE_MISTAKES,
         picture=_picture,
         explain=_explain,
+        explain_nan=_explain_nan,
         show=_summary,
-        forbidden=_LIBRARY,
+        forbidden=_library(),
         pass_picture=_pass_picture,
     )
 
@@ -271,14 +368,20 @@ def _sobel_replicated(image: Any) -> np.ndarray:
 EDGE_HINTS = register_hints(
     "Edge",
     Hints(
-        where="look at the border pixels (what you read outside the image), and at how you "
-        "combine the two gradients.",
-        more="outside the image, read the nearest pixel inside; Gx and Gy are the dot "
-        "products of the two Sobel kernels with each 3 x 3 window, and the output is the "
-        "length of (Gx, Gy), not clipped.",
-        recipe="pad the image by one pixel with its edge values (np.pad, mode='edge'); for "
-        "each (x, y), window = padded[y : y + 3, x : x + 3]; gx, gy = the sums of SOBEL_X and "
-        "SOBEL_Y times window; output[y, x] = sqrt(gx**2 + gy**2).",
+        where=N_(
+            "look at the border pixels (what you read outside the image), and at how you "
+            "combine the two gradients."
+        ),
+        more=N_(
+            "outside the image, read the nearest pixel inside; Gx and Gy are the dot "
+            "products of the two Sobel kernels with each 3 x 3 window, and the output is the "
+            "length of (Gx, Gy), not clipped."
+        ),
+        recipe=N_(
+            "pad the image by one pixel with its edge values (np.pad, mode='edge'); for "
+            "each (x, y), window = padded[y : y + 3, x : x + 3]; gx, gy = the sums of SOBEL_X and "
+            "SOBEL_Y times window; output[y, x] = sqrt(gx**2 + gy**2)."
+        ),
     ),
     "edge_exercise",
 )

@@ -37,21 +37,29 @@ from course.check.base import (
     same_pixels,
 )
 from course.check.pictures import pixel_picture
+from course.i18n import N_, _
 from course.raster import line, line_4connected, triangle
 
 __all__ = ["draw_line", "draw_triangle_filled", "hint"]
 
-_RASTER = {
-    function: f"your function calls course.raster.{function.__name__}, the library's own "
-    "answer: this exercise writes it"
-    for function in (
-        raster.line,
-        raster.line_4connected,
-        raster.triangle,
-        raster.triangle_coverage,
-        raster.wu_line,
-    )
-}
+_RASTER_FUNCTIONS = (
+    raster.line,
+    raster.line_4connected,
+    raster.triangle,
+    raster.triangle_coverage,
+    raster.wu_line,
+)
+
+
+def _raster() -> dict[Any, str]:
+    """The library's own answers, each with the report's words for a call to it."""
+    return {
+        function: _(
+            "your function calls {name}, the library's own answer: this exercise writes it"
+        ).format(name=f"course.raster.{function.__name__}")
+        for function in _RASTER_FUNCTIONS
+    }
+
 
 # Every octant, both axes, a single pixel, slopes of exactly 1 and 1/2, and
 # lines with ties (the ideal line midway between two pixels).
@@ -97,7 +105,7 @@ def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:
     return pixel_picture(
         expected,
         given,
-        title="around the first difference",
+        title=N_("around the first difference"),
         outline=outline if len(outline) == 3 else None,
     )
 
@@ -110,7 +118,7 @@ def _pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
         given,
         window=14,
         zoom=12,
-        title="your pixels for case 1",
+        title=N_("your pixels for case 1"),
         outline=outline if len(outline) == 3 else None,
     )
 
@@ -136,28 +144,32 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
     cases = [{"p0": p0, "p1": p1} for p0, p1 in _LINE_CASES]
     mistakes = [
         Mistake(
-            "the report's staircase",
-            "every step of your line moves in x or in y, never both: the lab report's `else` "
-            "between the two tests. A line steps diagonally whenever both errors call for it, "
-            "so it has max(|dx|, |dy|) + 1 pixels, not |dx| + |dy| + 1.",
+            N_("the report's staircase"),
+            N_(
+                "every step of your line moves in x or in y, never both, so each diagonal step "
+                "became two and left an extra pixel in the corner: a 4-connected staircase (the "
+                "lab report's `else` between the two tests, or x and y stepped and painted one "
+                "after the other). A line steps diagonally whenever both errors call for it, so it "
+                "has max(|dx|, |dy|) + 1 pixels, not |dx| + |dy| + 1."
+            ),
             _staircase,
-            matches=_ordered_same,
+            matches=_is_staircase,
         ),
         Mistake(
-            "drawn backwards",
-            "your pixels run from p1 to p0: the lab's DrawLine starts at p0.",
+            N_("drawn backwards"),
+            N_("your pixels run from p1 to p0: the lab's DrawLine starts at p0."),
             lambda p0, p1: line(p0, p1)[::-1],
             matches=_ordered_same,
         ),
         Mistake(
-            "the last pixel missing",
-            "your loop stops one pixel before p1: a line includes both end pixels.",
+            N_("the last pixel missing"),
+            N_("your loop stops one pixel before p1: a line includes both end pixels."),
             lambda p0, p1: line(p0, p1)[:-1],
             matches=_ordered_same,
         ),
         Mistake(
-            "the first pixel missing",
-            "your line starts one pixel after p0: paint p0 before the first step.",
+            N_("the first pixel missing"),
+            N_("your line starts one pixel after p0: paint p0 before the first step."),
             lambda p0, p1: line(p0, p1)[1:],
             matches=_ordered_same,
         ),
@@ -173,7 +185,7 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
         mistakes=mistakes,
         difference=pixel_difference,
         picture=_picture,
-        forbidden=_RASTER,
+        forbidden=_raster(),
         pass_picture=_pass_picture,
     )
 
@@ -182,17 +194,37 @@ def _staircase(p0: Any, p1: Any) -> Any:
     return line_4connected(p0, p1)
 
 
+def _is_staircase(staircase: Any, given: Any) -> bool:
+    """Whether ``given`` runs from the staircase's first pixel to its last in axis steps only.
+
+    Any 4-connected path of |dx| + |dy| + 1 pixels is one, whichever way its corners turn.
+    """
+    want, have = np.asarray(staircase, dtype=float), np.asarray(given, dtype=float)
+    if have.ndim != 2 or have.shape != want.shape or len(have) < 2:
+        return False
+    if tuple(have[0]) != tuple(want[0]) or tuple(have[-1]) != tuple(want[-1]):
+        return False
+    steps = np.abs(np.diff(have, axis=0))
+    return bool((steps.sum(axis=1) == 1).all())
+
+
 LINE_HINTS = register_hints(
     "DrawLine",
     Hints(
-        where="look at the first and the last pixel, and at each step: how far it moves "
-        "along each axis, and when the loop stops.",
-        more="step one pixel at a time along the longer axis; an error term says when the "
-        "line has drifted half a pixel along the shorter one, and then that step moves "
-        "along both (diagonally). The loop stops at p1.",
-        recipe="dx = |x1 - x0|, dy = |y1 - y0|, sx and sy the signs, error = dx - dy; "
-        "paint (x, y); while not at p1: e2 = 2 error; if e2 > -dy: error -= dy, x += sx; "
-        "if e2 < dx: error += dx, y += sy; paint (x, y).",
+        where=N_(
+            "look at the first and the last pixel, and at each step: how far it moves "
+            "along each axis, and when the loop stops."
+        ),
+        more=N_(
+            "step one pixel at a time along the longer axis; an error term says when the "
+            "line has drifted half a pixel along the shorter one, and then that step moves "
+            "along both (diagonally). The loop stops at p1."
+        ),
+        recipe=N_(
+            "dx = |x1 - x0|, dy = |y1 - y0|, sx and sy the signs, error = dx - dy; "
+            "paint (x, y); while not at p1: e2 = 2 error; if e2 > -dy: error -= dy, x += sx; "
+            "if e2 < dx: error += dx, y += sy; paint (x, y)."
+        ),
     ),
     "draw_line",
 )
@@ -222,39 +254,49 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
     cases = [{"p0": p0, "p1": p1, "p2": p2} for p0, p1, p2 in _TRIANGLE_CASES]
     mistakes = [
         Mistake(
-            "every edge closed",
-            "you count a centre on any edge as inside: x_left <= x <= x_right, or <= on the "
-            "last row. Two triangles sharing that edge would both paint it. Take each row's "
-            "centres over [x_left, x_right) and the rows over [y_top, y_bottom).",
+            N_("every edge closed"),
+            N_(
+                "you count a centre on any edge as inside: x_left <= x <= x_right, or <= on the "
+                "last row. Two triangles sharing that edge would both paint it. Take each row's "
+                "centres over [x_left, x_right) and the rows over [y_top, y_bottom)."
+            ),
             lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed"),
         ),
         Mistake(
-            "the bottom row filled",
-            "your rows run over [y_top, y_bottom], the last one included: a row of centres "
-            "exactly on a flat bottom edge belongs to the triangle below. Take the rows over "
-            "[y_top, y_bottom).",
+            N_("the bottom row filled"),
+            N_(
+                "your rows run over [y_top, y_bottom], the last one included: a row of centres "
+                "exactly on a flat bottom edge belongs to the triangle below. Take the rows over "
+                "[y_top, y_bottom)."
+            ),
             _bottom_row_filled,
         ),
         Mistake(
-            "the vertices made whole",
-            "your triangle's vertices were cut to whole numbers (int() or a cast) before "
-            "filling: a vertex at (0.7, 0.2) moved to (0, 0). Keep them as floats; only the "
-            "pixels are whole.",
+            N_("the vertices made whole"),
+            N_(
+                "your triangle's vertices were cut to whole numbers (int() or a cast) before "
+                "filling: a vertex at (0.7, 0.2) moved to (0, 0). Keep them as floats; only the "
+                "pixels are whole."
+            ),
             lambda p0, p1, p2: triangle(
                 *(np.trunc(np.asarray(p, dtype=float)) for p in (p0, p1, p2))
             ),
         ),
         Mistake(
-            "every edge open",
-            "you leave out every centre that lies on an edge, so two triangles sharing that "
-            "edge would both skip it: a crack. Include the left and the top ones: "
-            "[x_left, x_right), rows over [y_top, y_bottom).",
+            N_("every edge open"),
+            N_(
+                "you leave out every centre that lies on an edge, so two triangles sharing that "
+                "edge would both skip it: a crack. Include the left and the top ones: "
+                "[x_left, x_right), rows over [y_top, y_bottom)."
+            ),
             lambda p0, p1, p2: triangle(p0, p1, p2, rule="open"),
         ),
         Mistake(
-            "pixel corners for centres",
-            "you tested the pixel's corner (x, y), not its centre (x + 0.5, y + 0.5): the whole "
-            "triangle is off by half a pixel, up and left.",
+            N_("pixel corners for centres"),
+            N_(
+                "you tested the pixel's corner (x, y), not its centre (x + 0.5, y + 0.5): the "
+                "whole triangle is off by half a pixel, up and left."
+            ),
             _corners_inside,
         ),
     ]
@@ -269,7 +311,7 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
         mistakes=mistakes,
         difference=pixel_difference,
         picture=_picture,
-        forbidden=_RASTER,
+        forbidden=_raster(),
         pass_picture=_pass_picture,
     )
 
@@ -287,14 +329,20 @@ def _bottom_row_filled(p0: Any, p1: Any, p2: Any) -> np.ndarray:
 TRIANGLE_HINTS = register_hints(
     "DrawTriangleFilled",
     Hints(
-        where="look at which rows your loop fills (the first and the last), and at the "
-        "pixels where a row of centres meets an edge.",
-        more="a pixel is in when its centre (x + 0.5, y + 0.5) is inside; a centre exactly "
-        "on an edge belongs to the triangle only on the left or the top edge, so a row on a "
-        "flat bottom edge, and a centre on a right edge, are left out.",
-        recipe="sort the vertices by y; for each row of centres from ceil(y_top - 0.5) to "
-        "ceil(y_bottom - 0.5) - 1, find the two edges' x at y + 0.5 and take the pixels "
-        "from ceil(x_left - 0.5) to ceil(x_right - 0.5) - 1, splitting at the middle vertex.",
+        where=N_(
+            "look at which rows your loop fills (the first and the last), and at the "
+            "pixels where a row of centres meets an edge."
+        ),
+        more=N_(
+            "a pixel is in when its centre (x + 0.5, y + 0.5) is inside; a centre exactly "
+            "on an edge belongs to the triangle only on the left or the top edge, so a row on a "
+            "flat bottom edge, and a centre on a right edge, are left out."
+        ),
+        recipe=N_(
+            "sort the vertices by y; for each row of centres from ceil(y_top - 0.5) to "
+            "ceil(y_bottom - 0.5) - 1, find the two edges' x at y + 0.5 and take the pixels "
+            "from ceil(x_left - 0.5) to ceil(x_right - 0.5) - 1, splitting at the middle vertex."
+        ),
     ),
     "draw_triangle_filled",
 )

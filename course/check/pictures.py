@@ -3,7 +3,9 @@
 Two kinds: a curve (the expected curve and the student's points along it,
 each from its t = 0 end) and a set of pixels (the pixels both have in gray,
 the missing ones in one colour and the extra ones in another, each pixel a
-flat square at a whole zoom). Colours are Okabe and Ito's, safe for
+flat square at a whole zoom). Titles and labels follow the language
+(:mod:`course.i18n`): a caller's title, marked with ``N_``, is translated
+here. Colours are Okabe and Ito's, safe for
 colour-blind readers, and every one has a legend entry.
 """
 
@@ -21,6 +23,7 @@ from matplotlib.patches import Patch
 
 from course import limits
 from course._validate import as_float_array, as_int, as_points, as_positive_float, require_finite
+from course.i18n import N_, _
 
 __all__ = [
     "EXPECTED",
@@ -57,7 +60,7 @@ def curve_picture(
     title: str = "",
     width_inches: float = 4.2,
     mark_start: bool = True,
-    given_label: str = "your points",
+    given_label: str = N_("your points"),
 ) -> bytes:
     """The control polygon, the expected curve and the student's points, as a PNG.
 
@@ -74,22 +77,22 @@ def curve_picture(
     width_inches = as_positive_float(width_inches, "width_inches", smallest=1.0, largest=20.0)
     figure = Figure(figsize=(width_inches, width_inches), dpi=100)
     axes = figure.add_subplot()
-    axes.plot(*control.T, "o--", color="0.6", linewidth=1, markersize=5, label="control polygon")
+    axes.plot(*control.T, "o--", color="0.6", linewidth=1, markersize=5, label=_("control polygon"))
     for index, point in enumerate(control):
         axes.annotate(f"P{index}", point, xytext=(5, 5), textcoords="offset points", fontsize=8)
-    axes.plot(*expected.T, "-", color=EXPECTED, linewidth=2, label="expected curve")
-    axes.plot(*given.T, "o", color=GIVEN, markersize=3.5, label=str(given_label))
+    axes.plot(*expected.T, "-", color=EXPECTED, linewidth=2, label=_("expected curve"))
+    axes.plot(*given.T, "o", color=GIVEN, markersize=3.5, label=_translated(str(given_label)))
     for points, colour in ((expected, EXPECTED), (given, GIVEN)) if mark_start else ():
         if len(points) and np.isfinite(points[0]).all():
             axes.plot(*points[0], "o", markersize=11, fillstyle="none", color=colour)
             axes.annotate(
-                "t = 0", points[0], xytext=(6, -12), textcoords="offset points", color=colour
+                _("t = 0"), points[0], xytext=(6, -12), textcoords="offset points", color=colour
             )
     axes.set_aspect("equal", adjustable="datalim")
     axes.invert_yaxis()
     axes.tick_params(labelsize=7)
     axes.legend(fontsize=7, loc="best")
-    axes.set_title(title, fontsize=9)
+    axes.set_title(_translated(title), fontsize=9)
     figure.tight_layout()
     return figure_png(figure)
 
@@ -156,7 +159,11 @@ def pixel_picture(
     axes.set_yticklabels([str(top + e) for e in range(0, window, every)], fontsize=6)
     axes.tick_params(length=2, pad=1)
     counts = (len(both), len(missing), len(extra))
-    labels = (f"in both ({counts[0]})", f"missing ({counts[1]})", f"extra ({counts[2]})")
+    labels = (
+        _("in both ({count})").format(count=counts[0]),
+        _("missing ({count})").format(count=counts[1]),
+        _("extra ({count})").format(count=counts[2]),
+    )
     figure.legend(
         handles=[
             Patch(color=colour, label=label)
@@ -167,9 +174,10 @@ def pixel_picture(
         fontsize=8,
         frameon=False,
     )
-    axes.set_title(
-        title or f"pixels ({left}..{left + window - 1}, {top}..{top + window - 1})", fontsize=8
+    around = _("pixels ({left}..{right}, {top}..{bottom})").format(
+        left=left, right=left + window - 1, top=top, bottom=top + window - 1
     )
+    axes.set_title(_translated(title) or around, fontsize=8)
     return figure_png(figure)
 
 
@@ -205,11 +213,15 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     limit = max(float(np.abs(np.nan_to_num(difference)).max(initial=0.0)), 1e-12)
     # Values past 1 (a gradient magnitude) get a gray scale that reaches them, named in the title.
     top = max(1.0, float(np.max(np.nan_to_num(want), initial=0.0)))
-    scale = "" if top == 1.0 else f", 0 to {top:.3g}"
+    if top == 1.0:
+        expected_title, given_title = _("expected"), _("yours")
+    else:
+        expected_title = _("expected, 0 to {top:.3g}").format(top=top)
+        given_title = _("yours, 0 to {top:.3g}").format(top=top)
     panels = (
-        (want, f"expected{scale}", {"cmap": "gray", "vmin": 0, "vmax": top}),
-        (have, f"yours{scale}", {"cmap": "gray", "vmin": 0, "vmax": top}),
-        (difference, "yours minus expected", {"cmap": "RdBu_r", "vmin": -limit, "vmax": limit}),
+        (want, expected_title, {"cmap": "gray", "vmin": 0, "vmax": top}),
+        (have, given_title, {"cmap": "gray", "vmin": 0, "vmax": top}),
+        (difference, _("yours minus expected"), {"cmap": "RdBu_r", "vmin": -limit, "vmax": limit}),
     )
     shown = None
     for index, (picture, name, style) in enumerate(panels):
@@ -232,7 +244,7 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     figure.colorbar(shown, cax=colour_bar)
     colour_bar.tick_params(labelsize=7)
     if title:
-        figure.suptitle(title, fontsize=9, y=1 - 6 / rows, va="top")
+        figure.suptitle(_translated(title), fontsize=9, y=1 - 6 / rows, va="top")
     return figure_png(figure)
 
 
@@ -265,7 +277,10 @@ def _pixel_at(key: Any) -> tuple[int, int]:
 
 
 def side_by_side(
-    left: Any, right: Any, titles: tuple[str, str] = ("expected", "yours"), shrink: str = "mean"
+    left: Any,
+    right: Any,
+    titles: tuple[str, str] = (N_("expected"), N_("yours")),
+    shrink: str = "mean",
 ) -> bytes:
     """Two images in [0, 1] side by side, each at most 160 screen pixels across, as a PNG.
 
@@ -289,9 +304,14 @@ def side_by_side(
         axes.imshow(np.clip(panel, 0, 1), interpolation="nearest", **style)
         axes.set_xticks([])
         axes.set_yticks([])
-        axes.set_title(str(name), fontsize=7, pad=2)
+        axes.set_title(_translated(str(name)), fontsize=7, pad=2)
         offset += w + 12
     return figure_png(figure)
+
+
+def _translated(text: str) -> str:
+    """A title or label in the current language; the empty title stays empty."""
+    return _(text) if text else text
 
 
 def _fitted(image: np.ndarray, shrink: str, largest: int = 160) -> np.ndarray:

@@ -1,0 +1,136 @@
+"""Comparing a student's answer with the reference's, and saying where they differ.
+
+Values within a tolerance (:func:`close`, :func:`first_difference`), and
+pixel sets in any order (:func:`same_pixels`, :func:`pixel_difference`).
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from course.check.answers import pixel_rows
+from course.i18n import _
+
+__all__ = ["close", "first_difference", "pixel_difference", "same_pixels"]
+
+
+def close(atol: float = 1e-9, rtol: float = 1e-9) -> Callable[[Any, Any], bool]:
+    """A comparison: same shape and equal within the tolerances.
+
+    The comparison carries its tolerances (``compare.atol``, ``compare.rtol``)
+    for the report.
+
+    Examples
+    --------
+    >>> close(atol=1e-3)([1.0, 2.0], (1.0, 2.0005))
+    True
+    """
+
+    def compare(expected: Any, given: Any) -> bool:
+        expected, given = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+        return expected.shape == given.shape and bool(
+            np.allclose(given, expected, atol=atol, rtol=rtol)
+        )
+
+    compare.atol, compare.rtol = atol, rtol  # type: ignore[attr-defined]
+    return compare
+
+
+# Pixels are compared as one int64 key each, in reading order: (y, x) -> y * _WIDE + x.
+_OFFSET = 2**21
+_WIDE = 2**22
+
+
+def _keys(pixels: Any, name: str) -> np.ndarray:
+    rows = pixels if isinstance(pixels, np.ndarray) and pixels.dtype == np.int64 else None
+    rows = pixel_rows(pixels, name) if rows is None else rows.reshape(-1, 2)
+    return np.unique((rows[:, 1] + _OFFSET) * _WIDE + (rows[:, 0] + _OFFSET))
+
+
+def _pixel_of(key: int) -> tuple[int, int]:
+    return int(key % _WIDE - _OFFSET), int(key // _WIDE - _OFFSET)
+
+
+def same_pixels(expected: Any, given: Any) -> bool:
+    """A comparison of pixel sets: the same (x, y) pixels, in any order, repeats ignored.
+
+    Examples
+    --------
+    >>> same_pixels([[1, 2], [3, 4]], [[3, 4], [1, 2], [1, 2]])
+    True
+    """
+    return bool(np.array_equal(_keys(expected, "expected"), _keys(given, "given")))
+
+
+def first_difference(expected: Any, given: Any, atol: float = 1e-9, rtol: float = 1e-9) -> str:
+    """Where two answers first differ, in words: the first wrong value and its index.
+
+    Examples
+    --------
+    >>> first_difference([1.0, 2.0, 3.0], [1.0, 2.5, 3.0])
+    'first wrong value: [1] expected 2, given 2.5'
+    >>> first_difference([[1.0, 2.0]], [1.0, 2.0])
+    'expected shape (1, 2), given shape (2,)'
+    """
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            expected, given = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+    except (TypeError, ValueError):
+        return _("given a {type}, not numbers").format(type=type(given).__name__)
+    if expected.shape != given.shape:
+        return _("expected shape {expected}, given shape {given}").format(
+            expected=expected.shape, given=given.shape
+        )
+    if expected.ndim == 0:
+        return ""  # one value: the lines above say it all
+    wrong = ~np.isclose(given, expected, atol=atol, rtol=rtol)
+    if not wrong.any():
+        return _("the values agree within the tolerance")
+    index = tuple(int(i) for i in np.argwhere(wrong)[0])
+    where = "[" + ", ".join(map(str, index)) + "]"
+    return _("first wrong value: {where} expected {expected:.6g}, given {given:.6g}").format(
+        where=where, expected=expected[index], given=given[index]
+    )
+
+
+def pixel_difference(expected: Any, given: Any) -> str:
+    """Missing and extra pixels, in words, each with its first pixel in reading order.
+
+    Repeated pixels are named: a pixel listed twice is painted twice.
+
+    Examples
+    --------
+    >>> pixel_difference([[0, 0], [1, 0], [2, 1]], [[0, 0], [1, 1], [2, 1]])
+    '1 pixel missing, first (1, 0); 1 extra, first (1, 1)'
+    >>> pixel_difference([[0, 0], [1, 0]], [[0, 0], [1, 0], [1, 0]])
+    'the same pixels, but 1 listed more than once, first (1, 0): each pixel once'
+    """
+    want, have = _keys(expected, "expected"), _keys(given, "given")
+    parts = []
+    missing, extra = np.setdiff1d(want, have), np.setdiff1d(have, want)
+    if len(missing):
+        if len(missing) == 1:
+            missing_text = _("{count} pixel missing, first {pixel}")
+        else:
+            missing_text = _("{count} pixels missing, first {pixel}")
+        parts.append(missing_text.format(count=len(missing), pixel=_pixel_of(missing[0])))
+    if len(extra):
+        parts.append(
+            _("{count} extra, first {pixel}").format(count=len(extra), pixel=_pixel_of(extra[0]))
+        )
+    if parts:
+        return _("; ").join(parts)
+    rows = pixel_rows(given, "given")
+    keys = (rows[:, 1] + _OFFSET) * _WIDE + (rows[:, 0] + _OFFSET)
+    unique, counts = np.unique(keys, return_counts=True)
+    repeated = unique[counts > 1]
+    if len(repeated):
+        return _(
+            "the same pixels, but {count} listed more than once, first {pixel}: each pixel once"
+        ).format(count=len(repeated), pixel=_pixel_of(repeated[0]))
+    return _("the same pixels")

@@ -3,9 +3,9 @@
 ``splat(x, y)`` returns the pixels one curve point lights and their weights;
 a failure names the first pixel whose weight is wrong, shows both splats as
 pixels around the point, and recognises the GAMES101 report's variants
-(corners made of the point itself, pixels taken to sit at their corners)
-and the usual slips (the rectangles' areas given to the wrong pixels, x and
-y swapped, the nearest pixel only).
+(corners made of the point itself, which gives the whole point to one
+pixel, and pixels taken to sit at their corners) and the usual slips (the
+rectangles' areas given to the wrong pixels, x and y swapped).
 
 ``arc_length_weights(samples)`` returns the length of curve each sample
 stands for; a failure plots both sets of weights along the curve and
@@ -36,7 +36,6 @@ from course.antialias import (
 from course.antialias import (
     bilinear_centres,
     bilinear_corners,
-    bilinear_zero_offset,
     curve_samples,
     nearest_round,
     normalised_centres,
@@ -228,6 +227,12 @@ def _swapped(x: float, y: float) -> np.ndarray:
     return splat_table(table[:, [1, 0]], table[:, 2])
 
 
+def _nearest_floor(samples: Any) -> tuple[np.ndarray, np.ndarray]:
+    """One pixel per sample, the one whose square holds it (floor); weight 1."""
+    points = np.asarray(samples, dtype=float).reshape(-1, 2)
+    return np.floor(points).astype(np.int64), np.ones(len(points))
+
+
 def _own_rectangles(x: float, y: float) -> np.ndarray:
     left, top = math.floor(x - 0.5), math.floor(y - 0.5)
     dx, dy = x - (left + 0.5), y - (top + 0.5)
@@ -245,11 +250,20 @@ def _truncated(x: float, y: float) -> np.ndarray:
 
 SPLAT_MISTAKES = (
     Mistake(
-        "the corners are the point itself",
-        "your splat gives the whole point to one pixel: the GAMES101 report's left addColor, "
-        "whose corners p1..p4 are built from the point itself (cv::Point2f p1(point.x, "
-        "point.y)), so dx = point.x - p1.x is always 0. Measure dx and dy from a pixel centre.",
-        _table_of(bilinear_zero_offset),
+        "the whole point to one pixel",
+        "your splat gives the whole point to one pixel, weight 1: no anti-aliasing. That is "
+        "the handout's plain loop, and also the GAMES101 report's left addColor, whose "
+        "corners p1..p4 are built from the point itself (cv::Point2f p1(point.x, point.y)), "
+        "so dx = point.x - p1.x is always 0. Share the point among the four pixels whose "
+        "centres surround it, with dx and dy measured from a pixel centre.",
+        _table_of(nearest_round),
+    ),
+    Mistake(
+        "the whole point to one pixel",
+        "your splat gives the whole point to one pixel, the one it falls in, weight 1: no "
+        "anti-aliasing. Share the point among the four pixels whose centres surround it, "
+        "with dx and dy measured from a pixel centre.",
+        _table_of(_nearest_floor),
     ),
     Mistake(
         "pixels at their corners",
@@ -257,13 +271,6 @@ SPLAT_MISTAKES = (
         "middle addColor (cv::Point truncates), which treats pixel (c, r) as if it sat at "
         "(c, r). Its centre is (c + 0.5, r + 0.5): the curve moves half a pixel right and down.",
         _table_of(bilinear_corners),
-    ),
-    Mistake(
-        "the nearest pixel only",
-        "your splat lights only the pixel nearest the point, with weight 1: that is the "
-        "handout's plain loop, no anti-aliasing. Share the point among the four pixels whose "
-        "centres surround it.",
-        _table_of(nearest_round),
     ),
     Mistake(
         "each pixel its own rectangle",
@@ -306,10 +313,10 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
     Examples
     --------
     >>> bilinear_splat(lambda x, y: ([(int(x), int(y))], [1.0])).mistake
-    'the corners are the point itself'
+    'the whole point to one pixel'
     """
     return run_cases(
-        "bilinear_splat",
+        "splat",
         student,
         CASES,
         reference=_table_of(bilinear_centres),
@@ -337,7 +344,7 @@ def _splat_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes
 
 
 SPLAT_HINTS = register_hints(
-    "bilinear_splat",
+    "splat",
     Hints(
         where="look at which four pixels you light, and from which point you measure the offsets.",
         more="pixel (c, r) is centred at (c + 0.5, r + 0.5); the four pixels are those whose "
@@ -348,6 +355,7 @@ SPLAT_HINTS = register_hints(
         "dx dy for (left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1).",
     ),
     "splat",
+    "bilinear_splat",
 )
 
 

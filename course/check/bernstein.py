@@ -15,8 +15,11 @@ more; ``check.hint("comb")`` says more at once and
 
 from __future__ import annotations
 
+import ast
+import inspect
 import math
 import sys
+import textwrap
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
@@ -42,6 +45,7 @@ from course.check.de_casteljau import (
     curve_pass_picture,
     point_picture,
 )
+from course.i18n import _
 
 __all__ = ["COMB_CASES", "MAX_CALLS", "comb", "hint", "naive_bezier"]
 
@@ -87,7 +91,57 @@ def _entry(row: np.ndarray, n: int) -> int:
 
 
 def _exact(expected: int, given: Any) -> bool:
-    return not isinstance(given, bool) and given == expected
+    """An integer equal to C(m, n): a float, even 10.0, is not a sum of integers."""
+    integer = isinstance(given, (int, np.integer)) and not isinstance(given, (bool, np.bool_))
+    return integer and given == expected
+
+
+def _multiplies(function: Callable[..., Any]) -> str | None:
+    """The first multiplication or division in ``function``'s code, and the helpers it calls.
+
+    Pascal's rule only adds; ``[0] * (m + 1)``, a list made longer, is not a product.
+    """
+    seen: set[Any] = set()
+    todo = [function]
+    while todo:
+        current = inspect.unwrap(todo.pop())
+        code = getattr(current, "__code__", None)
+        if code is None or code in seen or _is_library(current):
+            continue
+        seen.add(code)
+        try:
+            tree = ast.parse(textwrap.dedent(inspect.getsource(current)))
+        except (OSError, TypeError, SyntaxError):
+            continue
+        names = getattr(current, "__globals__", {})
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.BinOp, ast.AugAssign)) and isinstance(
+                node.op, (ast.Mult, ast.Div, ast.FloorDiv)
+            ):
+                operands = (
+                    [node.target, node.value]
+                    if isinstance(node, ast.AugAssign)
+                    else [
+                        node.left,
+                        node.right,
+                    ]
+                )
+                if not any(isinstance(o, (ast.List, ast.ListComp, ast.Tuple)) for o in operands):
+                    return ast.unparse(node).strip()
+            if isinstance(node, ast.Call):
+                called = node.func
+                if isinstance(called, ast.Name) and called.id in {"prod", "factorial"}:
+                    return ast.unparse(node)
+                if isinstance(called, ast.Attribute) and called.attr in {"prod", "factorial"}:
+                    return ast.unparse(node)
+                if isinstance(called, ast.Name) and callable(names.get(called.id)):
+                    todo.append(names[called.id])
+    return None
+
+
+def _is_library(function: Any) -> bool:
+    module = getattr(function, "__module__", "") or ""
+    return module.split(".")[0] in {"course", "numpy", "math", "builtins", "scipy"}
 
 
 _REFUSED = "this exercise builds the coefficients itself, by Pascal's rule"
@@ -161,12 +215,17 @@ def comb(function: Callable[..., Any]) -> CheckResult:
             lambda m, n: _entry(_row_with_overflow(m, np.int64), n),
         ),
         Mistake(
-            "floating point",
-            "your answer is a float: a float keeps about 16 significant digits, and C(67, 33) "
-            "has 20. Add integers only.",
-            lambda m, n: binomial(m, n),
+            _("floating point"),
+            _(
+                "your answer is a float: a float holds whole numbers exactly only up to "
+                "2^53, about 9 * 10^15, and C(67, 33) is about 1.4 * 10^19. A binomial "
+                "coefficient is an integer: add integers only (in Python, / makes a float "
+                "even when the division is exact; Pascal's rule needs no division)."
+            ),
+            lambda m, n: binomial(m, n) if n <= m else 0,
             matches=lambda exact, given: (
-                isinstance(given, float) and math.isclose(given, exact, rel_tol=1e-9)
+                isinstance(given, (float, np.floating))
+                and math.isclose(given, exact, rel_tol=1e-9, abs_tol=1e-9)
             ),
         ),
         Mistake(
@@ -187,7 +246,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
             lambda m, n: binomial(m + 1, n),
         ),
     ]
-    return run_cases(
+    result = run_cases(
         "comb",
         function,
         COMB_CASES,
@@ -197,6 +256,25 @@ def comb(function: Callable[..., Any]) -> CheckResult:
         mistakes=mistakes,
         watch=_pascal_only,
         forbidden=_binomials(),
+    )
+    product = _multiplies(function) if result.passed else None
+    if product is None:
+        return result
+    lines = [
+        _(
+            "your comb gives the right numbers, but not by Pascal's rule: it multiplies "
+            "or divides ({product}), as the formula m! / (n! (m - n)!) does."
+        ).format(product=product),
+        _(
+            "  The exercise builds each coefficient from the two above it, C(m, n) = "
+            "C(m - 1, n - 1) + C(m - 1, n), adding integers only: that is what the lesson's "
+            "Bernstein-to-de Casteljau step uses. Well done on the numbers; now try it with "
+            "additions."
+        ),
+        _('Hint: {where}\n(More: check.hint("comb").)').format(where=_(COMB_HINTS.where)),
+    ]
+    return CheckResult(
+        "comb", False, result.cases_run, "\n".join(lines), mistake=_("not Pascal's rule")
     )
 
 

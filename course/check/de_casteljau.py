@@ -45,6 +45,8 @@ from course.check.base import (
     same_pixels,
 )
 from course.check.pictures import curve_picture, pixel_picture, side_by_side
+from course.check.sandbox import run_bounded
+from course.i18n import _, ngettext
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 
@@ -323,13 +325,24 @@ def next_level(function: Callable[..., Any]) -> CheckResult:
 
 #: The drawing loop's windows: seed 000's curve on its 700 x 700 window, a curve that
 #: leaves a small window on every side (its pixels off the window must be skipped, and it
-#: crosses x = width and y = height, where a test `x <= width` indexes past the end), and
-#: a curve on a 24 x 24 window.
+#: crosses x = width and y = height, where a test `x <= width` indexes past the end), a
+#: curve on a 24 x 24 window, then lines along the window's edges, where a test one off
+#: (`0 < x`, `x <= width`, `0 < y`, `y <= height`, `-1 <= y`) paints too much or too little:
+#: x = 0 and y = 0 exactly (painted), x = width and y = height exactly (skipped), and
+#: y = -0.5 (skipped, although int(-0.5) is row 0).
 BEZIER_SHAPES = (
     (SEED_000_CUBIC, (700, 700)),
     (np.array([[-20.0, 50.0], [30.0, -40.0], [70.0, 90.0], [100.0, 20.0]]), (60, 80)),
     (np.array([[2.2, 20.5], [5.0, 1.5], [21.0, 3.5]]), (24, 24)),
+    (np.array([[0.0, 10.0], [0.0, 100.0]]), (700, 700)),
+    (np.array([[650.0, 100.0], [700.0, 100.0]]), (700, 700)),
+    (np.array([[100.0, 0.0], [300.0, 0.0]]), (700, 700)),
+    (np.array([[100.0, 700.0], [300.0, 700.0]]), (700, 700)),
+    (np.array([[100.0, -0.5], [300.0, -0.5]]), (700, 700)),
 )
+#: A curve that tells t accumulated in float steps from range(1000): it runs right to left
+#: two pixels per step, so t a few ulps above k / 1000 lands one pixel to the left.
+ACCUMULATION_PROBE = {"control_points": np.array([[699.0, 0.5], [-1301.0, 0.5]]), "shape": (2, 700)}
 GREEN = (0.0, 1.0, 0.0)
 
 
@@ -355,34 +368,60 @@ def _bezier_reference(control_points: np.ndarray, window: np.ndarray) -> np.ndar
     return _loop_pixels(control_points, window.shape, _every_t())
 
 
-def _wrapped(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
-    height, width = window.shape[:2]
-    pixels = nearest_pixels(de_casteljau(control_points, _every_t()))
-    # Python counts a negative index from the end; one past the end raises instead.
-    keep = (pixels[:, 0] >= -width) & (pixels[:, 0] < width)
-    keep &= (pixels[:, 1] >= -height) & (pixels[:, 1] < height)
-    return pixels[keep] % (width, height)
+def _wrapped(rounding: str) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
+    """The pixels of a loop that tests only ``x < width and y < height``.
+
+    A negative index counts from the end of the row or column, so a pixel
+    left of or above the window lands on its other side; ``int`` truncates
+    toward zero, so a point in (-1, 0) lands in column or row 0 instead.
+    """
+
+    def pixels(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
+        height, width = window.shape[:2]
+        curve = de_casteljau(control_points, _every_t())
+        kept = curve[(curve[:, 0] < width) & (curve[:, 1] < height)]
+        found = nearest_pixels(kept, rounding=rounding)
+        # Python raises past -length, so such a loop stops there: not this mistake.
+        inside = (found[:, 0] >= -width) & (found[:, 1] >= -height)
+        return found[inside] % (width, height)
+
+    return pixels
 
 
 class _Painting:
-    """The pixels a student painted (any channel not 0), and the first in the wrong colour."""
+    """The pixels a student painted (any channel not 0), and the first in the wrong colour.
 
-    def __init__(self, window: Any) -> None:
+    Made from ``(window, returned)``: the window after the call, and what the
+    function returned, kept to recognise a painted copy returned instead.
+    """
+
+    def __init__(self, answer: Any) -> None:
+        window, returned = answer
         image = np.asarray(window)
         if image.ndim != 3 or image.shape[2] != 3 or image.dtype.kind not in "biuf":
             raise AnswerError(
-                f"the window must stay an (H, W, 3) image of numbers; yours is {image.shape}"
+                _("the window must stay an (H, W, 3) image of numbers; yours is {shape}").format(
+                    shape=image.shape
+                )
             )
-        painted = (image != 0).any(axis=2)
-        rows, columns = np.nonzero(painted)
         self.window = image
-        self.pixels = np.column_stack([columns, rows]).astype(np.int64)
-        colours = image[rows, columns].astype(float)
-        wrong = ~(colours == GREEN).all(axis=1)
-        self.wrong_colour = None
-        if wrong.any():
-            k = int(np.argmax(wrong))
-            self.wrong_colour = (int(columns[k]), int(rows[k]), tuple(colours[k].tolist()))
+        self.pixels, self.wrong_colour = _painted(image)
+        self.returned_pixels = None
+        if isinstance(returned, np.ndarray) and returned.shape == image.shape:
+            self.returned_pixels = _painted(returned)[0]
+
+
+def _painted(image: np.ndarray) -> tuple[np.ndarray, tuple[int, int, tuple] | None]:
+    painted = (image != 0).any(axis=2)
+    rows, columns = np.nonzero(painted)
+    pixels = np.column_stack([columns, rows]).astype(np.int64)
+    colours = image[rows, columns].astype(float)
+    wrong = ~(colours == GREEN).all(axis=1)
+    wrong_colour = None
+    if wrong.any():
+        k = int(np.argmax(wrong))
+        wrong_colour = (int(columns[k]), int(rows[k]), tuple(colours[k].tolist()))
+    return pixels, wrong_colour
 
 
 def _same_painting(expected: np.ndarray, given: _Painting) -> bool:
@@ -393,75 +432,132 @@ def _painting_difference(expected: np.ndarray, given: _Painting) -> str:
     if given.wrong_colour is not None and same_pixels(expected, given.pixels):
         x, y, colour = given.wrong_colour
         shown = ", ".join(f"{c:g}" for c in colour)
-        return (
-            f"the right pixels, but pixel ({x}, {y}) is ({shown}): paint the curve green, (0, 1, 0)"
-        )
+        return _(
+            "the right pixels, but pixel ({x}, {y}) is ({colour}): paint the curve green, (0, 1, 0)"
+        ).format(x=x, y=y, colour=shown)
     return pixel_difference(expected, given.pixels)
 
 
 def _show_painting(answer: Any) -> str:
     if isinstance(answer, _Painting):
-        return f"{len(answer.pixels)} pixels painted"
-    return f"{len(np.unique(pixel_rows(answer, 'expected'), axis=0))} pixels painted"
+        count = len(answer.pixels)
+    else:
+        count = len(np.unique(pixel_rows(answer, "expected"), axis=0))
+    return ngettext("{count} pixel painted", "{count} pixels painted", count).format(count=count)
 
 
 def _pixels_of(answer: Any) -> Any:
     return answer.pixels if isinstance(answer, _Painting) else answer
 
 
-def _bezier_mistakes() -> list[Mistake]:
-    stops_short = uniform_parameters(STEP, accumulate="float64")
+def _accumulates(student: Callable[..., Any]) -> bool:
+    """Whether ``student`` paints the probe curve as t accumulated in float steps would."""
+    probe = ACCUMULATION_PROBE
+    window = np.zeros((*probe["shape"], 3))
+    run_bounded(lambda: student(probe["control_points"].copy(), window))
+    steps = uniform_parameters(STEP, accumulate="float64")
+    expected = _loop_pixels(probe["control_points"], window.shape, steps)
+    return bool(same_pixels(expected, _painted(window)[0]))
+
+
+def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
+    accumulated = uniform_parameters(STEP, accumulate="float64")
     float32_loop = uniform_parameters(STEP, accumulate="float32")
 
     def pixels_match(mistaken: Any, given: Any) -> bool:
         return same_pixels(mistaken, _pixels_of(given))
 
+    def accumulated_match(mistaken: Any, given: Any) -> bool:
+        return pixels_match(mistaken, given) and student is not None and _accumulates(student)
+
+    def copy_match(expected: Any, given: Any) -> bool:
+        returned = getattr(given, "returned_pixels", None)
+        return (
+            len(_pixels_of(given)) == 0
+            and returned is not None
+            and bool(same_pixels(expected, returned))
+        )
+
+    wraps = _(
+        "a pixel with x < 0 or y < 0 appeared on the other side of the window (or, through "
+        "int(), which rounds toward zero, in column or row 0): Python counts a negative index "
+        "from the end. Test 0 <= x < width and 0 <= y < height before you paint, and skip "
+        "every point off the window."
+    )
     return [
         Mistake(
-            "the loop stops before t = 1",
-            "your loop never reaches t = 1, so the curve's last pixel stays dark: range(1000) "
-            "and np.arange(0, 1, 0.001) stop at 0.999, and adding 0.001 to t a thousand times "
-            "passes 1 by a rounding error. Count whole steps, so that the last t is exactly 1.",
-            lambda control_points, window: _loop_pixels(control_points, window.shape, stops_short),
+            _("a painted copy"),
+            _(
+                "your function painted a copy of the window and returned it: the window it was "
+                "given stays black. Paint into window itself (window[y, x] = ...), the one "
+                "argument this exercise lets you change; there is nothing to return."
+            ),
+            _bezier_reference,
+            matches=copy_match,
+        ),
+        Mistake(
+            _("t accumulated in float steps"),
+            _(
+                "your t is a sum of 0.001 steps (t = 0.0; while t <= 1: ...; t += 0.001), as the "
+                "handouts' loop `for (t = 0; t <= 1; t += 0.001)` does: each addition rounds, the "
+                "sum ends a hair above 1 after a thousand steps, so t = 1 is never painted, and on "
+                "the way t drifts a few units in the last place. Count whole steps instead: "
+                "for k in range(1001): t = k / 1000."
+            ),
+            lambda control_points, window: _loop_pixels(control_points, window.shape, accumulated),
+            matches=accumulated_match,
+        ),
+        Mistake(
+            _("the loop stops before t = 1"),
+            _(
+                "your loop never reaches t = 1, so the curve's last pixel stays dark: range(1000) "
+                "and np.arange(0, 1, 0.001) stop at 0.999. Count whole steps up to and including "
+                "1000: for k in range(1001): t = k / 1000."
+            ),
+            lambda control_points, window: _loop_pixels(
+                control_points, window.shape, _every_t()[:-1]
+            ),
             matches=pixels_match,
         ),
         Mistake(
-            "the float32 loop of the GAMES101 handout",
-            "your t drifts: the handout's `float t` keeps about 7 digits, and a thousand "
-            "additions of 0.001 move the points enough to change pixels in the middle of the "
-            "curve. Compute each t from a whole count, in Python's float.",
+            _("the float32 loop of the GAMES101 handout"),
+            _(
+                "your t drifts: the handout's `float t` keeps about 7 digits, and a thousand "
+                "additions of 0.001 move the points enough to change pixels in the middle of the "
+                "curve. Compute each t from a whole count, in Python's float."
+            ),
             lambda control_points, window: _loop_pixels(control_points, window.shape, float32_loop),
             matches=pixels_match,
         ),
         Mistake(
-            "rounding to the nearest pixel",
-            "you rounded x and y, as OpenCV's cv::Point does in the GAMES101 report: that "
-            "paints the pixel whose corner is nearest, half a pixel off. The pixel that holds "
-            "(x, y) is the one whose square [x0, x0 + 1) x [y0, y0 + 1) contains it.",
+            _("rounding to the nearest pixel"),
+            _(
+                "you rounded x and y, as OpenCV's cv::Point does in the GAMES101 report: that "
+                "paints the pixel whose corner is nearest, half a pixel off. As the lesson says, "
+                "the pixel whose square holds the point (x, y) is (int(x), int(y)) for x, y >= 0: "
+                "the whole parts, not the rounded values."
+            ),
             lambda control_points, window: _loop_pixels(
                 control_points, window.shape, _every_t(), "round"
             ),
             matches=pixels_match,
         ),
         Mistake(
-            "x and y swapped",
-            "you wrote window[x, y]: an image is indexed by row first, window[y, x].",
+            _("x and y swapped"),
+            _("you wrote window[x, y]: an image is indexed by row first, window[y, x]."),
             lambda control_points, window: _loop_pixels(
                 control_points, window.shape[1::-1], _every_t()
             )[:, ::-1],
             matches=pixels_match,
         ),
+        Mistake(_("a negative index wraps around"), wraps, _wrapped("trunc"), matches=pixels_match),
+        Mistake(_("a negative index wraps around"), wraps, _wrapped("floor"), matches=pixels_match),
         Mistake(
-            "a negative index wraps around",
-            "a pixel with x < 0 or y < 0 appeared on the other side of the window: Python "
-            "counts a negative index from the end. Skip every point off the window.",
-            _wrapped,
-            matches=pixels_match,
-        ),
-        Mistake(
-            "a step of 0.01",
-            "your step is ten times too coarse: 101 points leave gaps on a curve about 1400 "
-            "pixels long. Use 0.001, as the handout does.",
+            _("a step of 0.01"),
+            _(
+                "your step is ten times too coarse: 101 points leave gaps on a curve about 1400 "
+                "pixels long. Use 0.001, as the handout does."
+            ),
             lambda control_points, window: _loop_pixels(
                 control_points, window.shape, np.arange(101) / 100
             ),
@@ -522,11 +618,11 @@ def bezier(function: Callable[..., Any]) -> CheckResult:
         compare=_same_painting,
         convert=_Painting,
         hint=BEZIER_HINTS,
-        mistakes=_bezier_mistakes(),
+        mistakes=_bezier_mistakes(function),
         difference=_painting_difference,
         picture=_bezier_picture,
         show=_show_painting,
-        answer=lambda returned, arguments: arguments[1],
+        answer=lambda returned, arguments: (arguments[1], returned),
         writable=("window",),
         forbidden=LIBRARY_CURVES,
         pass_picture=_bezier_pass_picture,

@@ -80,11 +80,11 @@ def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
     --------
     >>> zeros = lambda background, foreground, offset: foreground * 0
     >>> print(poisson_boundary(zeros))  # doctest: +ELLIPSIS
-    FAIL poisson_boundary: case 1 is wrong
+    FAIL boundary_exercise: case 1 is wrong
     ...
     """
     return run_cases(
-        "poisson_boundary",
+        "boundary_exercise",
         student,
         _cases(),
         poisson.correction_boundary,
@@ -101,7 +101,7 @@ def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
 
 
 BOUNDARY_HINTS = register_hints(
-    "poisson_boundary",
+    "boundary_exercise",
     Hints(
         where="look at the pixels of the foreground's outer ring, at where they sit in the "
         "background, and at the inside.",
@@ -112,6 +112,7 @@ BOUNDARY_HINTS = register_hints(
         "(a new array); g[1:-1, 1:-1] = 0.",
     ),
     "boundary_exercise",
+    "poisson_boundary",
 )
 
 
@@ -168,6 +169,8 @@ def _sweep_cases() -> list[dict[str, Any]]:
         {"g": ring(7, 12), "tolerance": 1e-6},
         {"g": ring(6, 9, 3), "tolerance": 1e-4},
         {"g": np.zeros((5, 5)), "tolerance": 1e-6},  # already harmonic: no sweep at all
+        # The residual is exactly the tolerance, 4: not below it, so one sweep (to zeros).
+        {"g": np.array([[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0]]), "tolerance": 4.0},
     ]
 
 
@@ -327,7 +330,7 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
     'in place: Gauss-Seidel'
     """
     return run_cases(
-        "jacobi_sweep",
+        "jacobi_exercise",
         student,
         _sweep_cases(),
         _jacobi_until,
@@ -345,7 +348,7 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
 
 
 SWEEP_HINTS = register_hints(
-    "jacobi_sweep",
+    "jacobi_exercise",
     Hints(
         where="look at when your loop tests the residual (before or after a sweep), at what "
         "each sweep reads, and at what you count.",
@@ -357,4 +360,5 @@ SWEEP_HINTS = register_hints(
         "g[1:-1, 1:-1] = n / 4.",
     ),
     "jacobi_exercise",
+    "jacobi_sweep",
 )

@@ -37,6 +37,8 @@ from typing import Any
 
 import numpy as np
 
+from course.i18n import _
+
 UNCHECKED = True  # see the module docstring
 
 __all__ = [
@@ -217,7 +219,7 @@ def run_bounded(
 
 def _stop(watchdog: _Watchdog) -> None:
     """Stop the watchdog, even if its last raise arrives while this runs."""
-    for _ in range(100):
+    for _attempt in range(100):
         try:
             watchdog.stop()
             return
@@ -374,8 +376,23 @@ def student_line(error: BaseException) -> str | None:
         return None
     frame = own[-1]
     text = (frame.line or "").strip()
-    where = f"line {frame.lineno} of {frame.name}"
+    if _is_cell(frame.filename):
+        # IPython compiles each cell on its own, so the line number counts from the cell's top.
+        where = _("line {line} of your cell, in {function}").format(
+            line=frame.lineno, function=frame.name
+        )
+    else:
+        where = _("line {line} of {function}").format(line=frame.lineno, function=frame.name)
     return f"{where}: {text}" if text else where
+
+
+def _is_cell(filename: str) -> bool:
+    """Whether ``filename`` is a notebook cell's: ipykernel's ``.../ipykernel_N/M.py``, or older
+    IPython's ``<ipython-input-N-...>``."""
+    if filename.startswith("<ipython-input-"):
+        return True
+    folder = os.path.basename(os.path.dirname(filename))
+    return folder.startswith("ipykernel_") and filename.endswith(".py")
 
 
 def describe_function(function: Any) -> str:

@@ -143,7 +143,7 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
         return side_by_side(expected, given, ("expected", "your supersample"))
 
     return run_cases(
-        "Supersampling",
+        "supersample",
         student,
         _cases(),
         supersample,
@@ -158,7 +158,7 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
 
 
 SUPERSAMPLE_HINTS = register_hints(
-    "Supersampling",
+    "supersample",
     Hints(
         where="look at where your samples sit inside each output pixel's square, and at "
         "what you divide the sum by.",
@@ -169,6 +169,8 @@ SUPERSAMPLE_HINTS = register_hints(
         "W / w, y = (r + (j + 0.5) / rate) H / h; add bilinear_sample(image, x, y) / rate**2.",
     ),
     "supersample",
+    "image_supersampling",
+    "supersampling",
 )
 
 
@@ -176,7 +178,7 @@ def _lookup_cases() -> list[dict[str, Any]]:
     gray = np.array([[0.0, 0.25, 1.0, 0.5], [1.0, 0.0, 0.75, 0.25], [0.5, 0.5, 0.0, 1.0]])
     colour = np.random.default_rng(3).random((2, 3, 3))
     points = [
-        (1.3, 0.9),  # between four centres: all four weights matter
+        (1.3, 0.8),  # between four centres: all four weights matter
         (0.5, 0.5),  # on a centre: that pixel alone
         (2.0, 1.5),  # midway between two centres in x, on a row of centres
         (3.2, 2.8),  # beyond the last centres: clamped to the corner pixel
@@ -229,11 +231,11 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
         Mistake(
             "x and y swapped",
             "you read image[x, y]: an image is indexed by row first, image[y, x].",
-            lambda image, x, y: bilinear(np.swapaxes(image, 0, 1), y, x),
+            lambda image, x, y: bilinear(image, y, x),
         ),
     ]
     return run_cases(
-        "bilinear",
+        "bilinear_sample",
         student,
         _lookup_cases(),
         bilinear,
@@ -258,7 +260,7 @@ def _unclamped(image: Any, x: float, y: float) -> np.ndarray:
 
 
 BILINEAR_HINTS = register_hints(
-    "bilinear",
+    "bilinear_sample",
     Hints(
         where="look at where your code puts pixel centres, and at points near the image's edges.",
         more="pixel (r, c) is centred at (c + 0.5, r + 0.5); the point lies between four "
@@ -270,4 +272,5 @@ BILINEAR_HINTS = register_hints(
     ),
     "bilinear_sample",
     "bilinear_lookup",
+    "bilinear",
 )

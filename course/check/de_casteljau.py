@@ -31,10 +31,10 @@ from course import bezier as library
 from course._validate import as_int
 from course.bezier import de_casteljau, de_casteljau_levels, uniform_parameters
 from course.bezier_handouts import de_casteljau_reversed
+from course.check._translated import TranslatedHints
 from course.check.base import (
     AnswerError,
     CheckResult,
-    Hints,
     Mistake,
     close,
     hint,
@@ -46,7 +46,7 @@ from course.check.base import (
 )
 from course.check.pictures import curve_picture, pixel_picture, side_by_side
 from course.check.sandbox import run_bounded
-from course.i18n import _, ngettext
+from course.i18n import N_, _, ngettext
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 
@@ -67,21 +67,31 @@ __all__ = [
 #: The t step of seed 000's loop, and the values it should take: 0, 0.001, ..., 1.
 STEP = 0.001
 _STEPS = round(1 / STEP)
-_WRITE_IT = "this exercise writes the curve itself, from the interpolation step"
-#: The library's own curves: an answer that calls one is told to write it.
-LIBRARY_CURVES = {
-    function: f"your function calls course.bezier.{function.__name__}, the library's own "
-    f"answer: {_WRITE_IT}"
-    for function in (
-        library.de_casteljau,
-        library.de_casteljau_recursive,
-        library.de_casteljau_levels,
-        library.bezier_bernstein,
-        library.bernstein_basis,
-        library.split,
-        library.sample_uniform,
-    )
-}
+_LIBRARY_FUNCTIONS = (
+    library.de_casteljau,
+    library.de_casteljau_recursive,
+    library.de_casteljau_levels,
+    library.bezier_bernstein,
+    library.bernstein_basis,
+    library.split,
+    library.sample_uniform,
+)
+
+
+def library_curves() -> dict[Any, str]:
+    """The library's own curves, each with what a student who calls it is told (in the
+    current language)."""
+    return {
+        function: _(
+            "your function calls course.bezier.{function}, the library's own answer: this "
+            "exercise writes the curve itself, from the interpolation step"
+        ).format(function=function.__name__)
+        for function in _LIBRARY_FUNCTIONS
+    }
+
+
+#: The library's own curves: an answer that calls one is told to write it (English).
+LIBRARY_CURVES = library_curves()
 
 
 def curve_cases(max_points: int) -> list[dict[str, Any]]:
@@ -112,7 +122,9 @@ def as_point(value: Any) -> np.ndarray:
         return np.asarray(value, dtype=float).reshape(-1)
     except (TypeError, ValueError):
         raise AnswerError(
-            f"a point is two numbers (x, y); yours is a {type(value).__name__} that is not"
+            _("a point is two numbers (x, y); yours is a {kind} that is not").format(
+                kind=type(value).__name__
+            )
         ) from None
 
 
@@ -130,9 +142,9 @@ def point_picture(
             control,
             curve,
             theirs,
-            f"{title}, t = {case['t']:g}",
+            _("{title}, t = {t}").format(title=_(title), t=f"{case['t']:g}"),
             mark_start=False,
-            given_label=f"your point at t = {case['t']:g}",
+            given_label=_("your point at t = {t}").format(t=f"{case['t']:g}"),
         )
 
     return draw
@@ -150,7 +162,11 @@ def curve_pass_picture(reference: Callable[..., Any], name: str) -> Callable[[li
         curve = reference(SEED_000_CUBIC, np.linspace(0.0, 1.0, 41))
         ts = ", ".join(f"{c['t']:g}" for c, _ in chosen)
         return curve_picture(
-            SEED_000_CUBIC, curve, theirs, f"your {name} at t = {ts}", width_inches=3.0
+            SEED_000_CUBIC,
+            curve,
+            theirs,
+            _("your {name} at t = {ts}").format(name=name, ts=ts),
+            width_inches=3.0,
         )
 
     return draw
@@ -160,22 +176,26 @@ def point_mistakes(curve: Callable[[np.ndarray, float], np.ndarray]) -> list[Mis
     """The mistakes of a function that returns the curve point at t."""
     return [
         Mistake(
-            "the reversed step",
-            "your curve runs backwards: you wrote t P[i] + (1 - t) P[i+1], as two of the "
-            "reports do. The point at t on an edge is t of the way from its first end, so "
-            "that B(0) = P0 and B(1) = Pn.",
+            _("the reversed step"),
+            _(
+                "your curve runs backwards: you wrote t P[i] + (1 - t) P[i+1], as two of the "
+                "reports do. The point at t on an edge is t of the way from its first end, so "
+                "that B(0) = P0 and B(1) = Pn."
+            ),
             lambda control_points, t: de_casteljau_reversed(control_points, t),
         ),
         Mistake(
-            "one level short",
-            "you stopped when two points were left and returned the first of them: that is a "
-            "point of the last level's segment, not B(t). Interpolate once more, down to one "
-            "point.",
+            _("one level short"),
+            _(
+                "you stopped when two points were left and returned the first of them: that is "
+                "a point of the last level's segment, not B(t). Interpolate once more, down to "
+                "one point."
+            ),
             lambda control_points, t: de_casteljau_levels(control_points, t)[-2][0],
         ),
         Mistake(
-            "x and y swapped",
-            "your point is (y, x): return x first, as the control points' columns are x, y.",
+            _("x and y swapped"),
+            _("your point is (y, x): return x first, as the control points' columns are x, y."),
             lambda control_points, t: curve(control_points, t)[::-1],
         ),
     ]
@@ -187,12 +207,16 @@ def _curve(control_points: np.ndarray, t: Any) -> np.ndarray:
 
 RECURSIVE_HINTS = register_hints(
     "recursive_bezier",
-    Hints(
-        where="look at what one call hands to the next, and at when the recursion stops.",
-        more="each call makes one level with one point fewer (your next_level), and passes "
-        "it on with the same t; the call that gets a single point has B(t).",
-        recipe="if len(control_points) == 1, return control_points[0]; otherwise return "
-        "recursive_bezier(next_level(control_points, t), t).",
+    TranslatedHints(
+        where=N_("look at what one call hands to the next, and at when the recursion stops."),
+        more=N_(
+            "each call makes one level with one point fewer (your next_level), and passes "
+            "it on with the same t; the call that gets a single point has B(t)."
+        ),
+        recipe=N_(
+            "if len(control_points) == 1, return control_points[0]; otherwise return "
+            "recursive_bezier(next_level(control_points, t), t)."
+        ),
     ),
 )
 
@@ -218,8 +242,8 @@ def recursive_bezier(function: Callable[..., Any]) -> CheckResult:
         convert=as_point,
         hint=RECURSIVE_HINTS,
         mistakes=point_mistakes(_curve),
-        picture=point_picture(_curve, "your recursive_bezier"),
-        forbidden=LIBRARY_CURVES,
+        picture=point_picture(_curve, N_("your recursive_bezier")),
+        forbidden=library_curves(),
         pass_picture=curve_pass_picture(_curve, "recursive_bezier"),
     )
 
@@ -231,28 +255,34 @@ def _reference_level(control_points: np.ndarray, t: float) -> np.ndarray:
 def _level_mistakes() -> list[Mistake]:
     return [
         Mistake(
-            "the reversed step",
-            "your points sit at 1 - t along each edge: you wrote t P[i] + (1 - t) P[i+1]. "
-            "The point at t on the edge from P[i] to P[i+1] is P[i] at t = 0.",
+            _("the reversed step"),
+            _(
+                "your points sit at 1 - t along each edge: you wrote t P[i] + (1 - t) P[i+1]. "
+                "The point at t on the edge from P[i] to P[i+1] is P[i] at t = 0."
+            ),
             lambda control_points, t: de_casteljau_levels(control_points, 1 - t)[1],
         ),
         Mistake(
-            "one point short",
-            "your level has N - 2 points: there is one new point per edge of the polygon, "
-            "and N points make N - 1 edges.",
+            _("one point short"),
+            _(
+                "your level has N - 2 points: there is one new point per edge of the polygon, "
+                "and N points make N - 1 edges."
+            ),
             lambda control_points, t: _reference_level(control_points, t)[:-1],
         ),
         Mistake(
-            "an edge from the last point back to the first",
-            "your level has N points: np.roll joins the last control point to the first, but "
-            "the control polygon is open; it has N - 1 edges.",
+            _("an edge from the last point back to the first"),
+            _(
+                "your level has N points: np.roll joins the last control point to the first, "
+                "but the control polygon is open; it has N - 1 edges."
+            ),
             lambda control_points, t: _reference_level(
                 np.vstack([control_points, control_points[:1]]), t
             ),
         ),
         Mistake(
-            "x and y swapped",
-            "your points are (y, x): keep the columns in the order x, y.",
+            _("x and y swapped"),
+            _("your points are (y, x): keep the columns in the order x, y."),
             lambda control_points, t: _reference_level(control_points, t)[:, ::-1],
         ),
     ]
@@ -263,7 +293,7 @@ def _as_level(value: Any) -> np.ndarray:
         return np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         raise AnswerError(
-            "a level is a list or array of (x, y) points, all of the same length"
+            _("a level is a list or array of (x, y) points, all of the same length")
         ) from None
 
 
@@ -278,22 +308,28 @@ def _level_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes
         SEED_000_CUBIC,
         _curve(SEED_000_CUBIC, np.linspace(0.0, 1.0, 41)),
         np.asarray(given, dtype=float).reshape(-1, 2),
-        "your next level of seed 000's cubic, t = 0.25",
+        _("your next level of seed 000's cubic, t = 0.25"),
         width_inches=3.0,
         mark_start=False,
-        given_label="your level",
+        given_label=_("your level"),
     )
 
 
 NEXT_LEVEL_HINTS = register_hints(
     "next_level",
-    Hints(
-        where="look at the edges of the control polygon: how many there are, and where on "
-        "each your new point sits.",
-        more="each edge from P[i] to P[i+1] gets one new point, t of the way from P[i]: "
-        "at t = 0 it is P[i], at t = 1 it is P[i+1].",
-        recipe="the new point on edge i is (1 - t) P[i] + t P[i+1], for i = 0 ... N - 2; "
-        "with numpy, the first N - 1 rows and the last N - 1 rows of control_points.",
+    TranslatedHints(
+        where=N_(
+            "look at the edges of the control polygon: how many there are, and where on "
+            "each your new point sits."
+        ),
+        more=N_(
+            "each edge from P[i] to P[i+1] gets one new point, t of the way from P[i]: "
+            "at t = 0 it is P[i], at t = 1 it is P[i+1]."
+        ),
+        recipe=N_(
+            "the new point on edge i is (1 - t) P[i] + t P[i+1], for i = 0 ... N - 2; "
+            "with numpy, the first N - 1 rows and the last N - 1 rows of control_points."
+        ),
     ),
 )
 
@@ -318,7 +354,7 @@ def next_level(function: Callable[..., Any]) -> CheckResult:
         convert=_as_level,
         hint=NEXT_LEVEL_HINTS,
         mistakes=_level_mistakes(),
-        forbidden=LIBRARY_CURVES,
+        forbidden=library_curves(),
         pass_picture=_level_pass_picture,
     )
 
@@ -567,26 +603,32 @@ def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]
 
 
 def _bezier_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
-    return pixel_picture(expected, _pixels_of(given), title="around the first difference")
+    return pixel_picture(expected, _pixels_of(given), title=_("around the first difference"))
 
 
 def _bezier_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
     case, expected, given = results[0]
     reference = np.zeros(case["window"].shape)
     reference[expected[:, 1], expected[:, 0]] = GREEN
-    return side_by_side(reference, given.window, ("expected", "your window"), shrink="max")
+    return side_by_side(reference, given.window, (_("expected"), _("your window")), shrink="max")
 
 
 BEZIER_HINTS = register_hints(
     "bezier",
-    Hints(
-        where="look at the values t takes (the first and the last), at which pixel each point "
-        "lands in, and at points off the window.",
-        more="t must run from 0 to exactly 1 in steps of 0.001; the pixel holding (x, y) has "
-        "the whole parts of x and y, rows first in the window; a point with x or y below 0, "
-        "or at width or height and beyond, is skipped.",
-        recipe="for k in range(1001): t = k / 1000; x, y = recursive_bezier(control_points, "
-        "t); if 0 <= x < width and 0 <= y < height: window[int(y), int(x)] = (0, 1, 0).",
+    TranslatedHints(
+        where=N_(
+            "look at the values t takes (the first and the last), at which pixel each point "
+            "lands in, and at points off the window."
+        ),
+        more=N_(
+            "t must run from 0 to exactly 1 in steps of 0.001; the pixel holding (x, y) has "
+            "the whole parts of x and y, rows first in the window; a point with x or y below "
+            "0, or at width or height and beyond, is skipped."
+        ),
+        recipe=N_(
+            "for k in range(1001): t = k / 1000; x, y = recursive_bezier(control_points, "
+            "t); if 0 <= x < width and 0 <= y < height: window[int(y), int(x)] = (0, 1, 0)."
+        ),
     ),
 )
 
@@ -624,6 +666,6 @@ def bezier(function: Callable[..., Any]) -> CheckResult:
         show=_show_painting,
         answer=lambda returned, arguments: (arguments[1], returned),
         writable=("window",),
-        forbidden=LIBRARY_CURVES,
+        forbidden=library_curves(),
         pass_picture=_bezier_pass_picture,
     )

@@ -37,7 +37,7 @@ from typing import Any
 
 import numpy as np
 
-from course.i18n import _
+from course.i18n import _, ngettext
 
 UNCHECKED = True  # see the module docstring
 
@@ -163,8 +163,10 @@ def _raise_in(thread_id: int, exception: type[BaseException] | None) -> None:
 
 def _reason(kind: str, seconds: float, memory: int) -> str:
     if kind == "memory":
-        return f"memory kept growing (past {memory / 2**20:g} MiB)"
-    return f"the loop did not stop within {seconds:g} s"
+        return _("memory kept growing (past {mebibytes} MiB)").format(
+            mebibytes=f"{memory / 2**20:g}"
+        )
+    return _("the loop did not stop within {seconds} s").format(seconds=f"{seconds:g}")
 
 
 def run_bounded(
@@ -260,14 +262,14 @@ def changed_argument(
     for name, old, new in zip(names, before, after, strict=True):
         where = _first_change(old, new)
         if where is not None:
-            return f"{name}: {where}"
+            return _("{name}: {where}").format(name=name, where=where)
     return None
 
 
 def _first_change(old: Any, new: Any) -> str | None:
     if isinstance(old, np.ndarray):
         if not isinstance(new, np.ndarray) or new.shape != old.shape:
-            return f"its shape was {old.shape}, is now {np.shape(new)}"
+            return _("its shape was {old}, is now {new}").format(old=old.shape, new=np.shape(new))
         if old.dtype.kind in "fc":
             differ = ~((old == new) | (np.isnan(old) & np.isnan(new)))
         else:
@@ -276,20 +278,24 @@ def _first_change(old: Any, new: Any) -> str | None:
             return None
         index = tuple(int(i) for i in np.argwhere(differ)[0])
         where = "[" + ", ".join(map(str, index)) + "]"
-        return f"element {where} was {old[index]:.6g}, is now {new[index]:.6g}"
+        return _("element {where} was {old}, is now {new}").format(
+            where=where, old=f"{old[index]:.6g}", new=f"{new[index]:.6g}"
+        )
     if isinstance(old, (list, tuple)):
         if not isinstance(new, type(old)) or len(new) != len(old):
-            return f"it was {_short(old)}, is now {_short(new)}"
+            return _("it was {old}, is now {new}").format(old=_short(old), new=_short(new))
         for index, (a, b) in enumerate(zip(old, new, strict=True)):
             inner = _first_change(a, b)
             if inner is not None:
-                return f"item [{index}]: {inner}"
+                return _("item [{index}]: {inner}").format(index=index, inner=inner)
         return None
     try:
         same = bool(old == new)
     except Exception:
         return None
-    return None if same else f"it was {_short(old)}, is now {_short(new)}"
+    if same:
+        return None
+    return _("it was {old}, is now {new}").format(old=_short(old), new=_short(new))
 
 
 def _short(value: Any) -> str:
@@ -322,11 +328,11 @@ def arity_problem(function: Callable[..., Any], parameters: tuple[str, ...]) -> 
         if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
     ]
     count = len(parameters)
-    plural = "parameter" if count == 1 else "parameters"
-    return (
-        f"expected {count} {plural}, ({', '.join(parameters)}); your function takes "
-        f"{len(names)}, ({', '.join(names)})"
-    )
+    return ngettext(
+        "expected {count} parameter, ({expected}); your function takes {taken}, ({names})",
+        "expected {count} parameters, ({expected}); your function takes {taken}, ({names})",
+        count,
+    ).format(count=count, expected=", ".join(parameters), taken=len(names), names=", ".join(names))
 
 
 def is_stub(function: Callable[..., Any]) -> bool:

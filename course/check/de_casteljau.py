@@ -46,7 +46,7 @@ from course.check.base import (
 )
 from course.check.pictures import curve_picture, pixel_picture, side_by_side
 from course.check.sandbox import run_bounded
-from course.i18n import N_, _, ngettext
+from course.i18n import N_, _
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 
@@ -479,7 +479,8 @@ def _show_painting(answer: Any) -> str:
         count = len(answer.pixels)
     else:
         count = len(np.unique(pixel_rows(answer, "expected"), axis=0))
-    return ngettext("{count} pixel painted", "{count} pixels painted", count).format(count=count)
+    # Always "pixels", as before the reports were translated: English stays what it was.
+    return _("{count} pixels painted").format(count=count)
 
 
 def _pixels_of(answer: Any) -> Any:

@@ -37,7 +37,7 @@ from typing import Any
 
 import numpy as np
 
-from course.i18n import _, ngettext
+from course.i18n import _
 
 UNCHECKED = True  # see the module docstring
 
@@ -328,11 +328,15 @@ def arity_problem(function: Callable[..., Any], parameters: tuple[str, ...]) -> 
         if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
     ]
     count = len(parameters)
-    return ngettext(
-        "expected {count} parameter, ({expected}); your function takes {taken}, ({names})",
-        "expected {count} parameters, ({expected}); your function takes {taken}, ({names})",
-        count,
-    ).format(count=count, expected=", ".join(parameters), taken=len(names), names=", ".join(names))
+    if count == 1:
+        text = _("expected {count} parameter, ({expected}); your function takes {taken}, ({names})")
+    else:
+        text = _(
+            "expected {count} parameters, ({expected}); your function takes {taken}, ({names})"
+        )
+    return text.format(
+        count=count, expected=", ".join(parameters), taken=len(names), names=", ".join(names)
+    )
 
 
 def is_stub(function: Callable[..., Any]) -> bool:

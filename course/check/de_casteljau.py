@@ -58,6 +58,7 @@ __all__ = [
     "curve_cases",
     "curve_pass_picture",
     "hint",
+    "library_curves",
     "next_level",
     "point_mistakes",
     "point_picture",

@@ -95,7 +95,7 @@ def swapped_xy(x, y):
     [
         (corners_at_integers, "pixels at their corners"),
         (weights_swapped, "each pixel its own rectangle"),
-        (zero_offset, "the corners are the point itself"),
+        (zero_offset, "the whole point to one pixel"),
         (swapped_xy, "x and y swapped"),
     ],
 )
@@ -108,11 +108,15 @@ def test_the_handouts_splat_mistakes_are_named_and_pictured(student, mistake):
     assert "dx = " in result.message  # where the point lies, in the case's numbers
 
 
-def test_the_nearest_pixel_alone_is_recognised_where_it_differs_from_zero_offset():
-    # nearest_round and the zero-offset splat light the same pixel, so either name is right.
-    result = check.bilinear_splat(nearest_only)
-    assert not result
-    assert result.mistake in {"the nearest pixel only", "the corners are the point itself"}
+def test_one_pixel_for_the_whole_point_has_one_name_rounded_or_floored():
+    # nearest_round and the zero-offset splat light the same pixel on every point: one name.
+    def falls_in(x, y):
+        return [(math.floor(x), math.floor(y))], [1.0]
+
+    for splat in (nearest_only, falls_in):
+        result = check.bilinear_splat(splat)
+        assert not result and result.mistake == "the whole point to one pixel"
+    assert "nearest pixel only" not in {m.name for m in check.SPLAT_MISTAKES}
 
 
 def test_the_first_wrong_pixel_is_named_with_both_weights():

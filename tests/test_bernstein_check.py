@@ -72,7 +72,7 @@ def test_pascal_rule_passes_in_one_line_by_rows_or_remembered_recursion():
         (handout_recursion, "the exponential recursion", 10),
         (numpy_row(np.int32), "32-bit integers", 11),
         (numpy_row(np.int64), "64-bit integers", 13),
-        (float_row, "floating point", 13),
+        (float_row, "floating point", 1),
         (one_row_short, "off by one row", 3),
     ],
 )
@@ -167,3 +167,81 @@ def test_int32_binomials_are_named_at_degree_40():
     result = check.naive_bezier(naive_int32)
     assert not result and result.mistake == "32-bit binomials"
     assert str(result).startswith("FAIL naive_bezier: case 56 is wrong")
+
+
+def product_formula(m, n):
+    if n > m:
+        return 0
+    result = 1
+    for i in range(n):
+        result = result * (m - i) // (i + 1)
+    return result
+
+
+def factorial(k):
+    value = 1
+    for i in range(1, k + 1):
+        value *= i
+    return value
+
+
+def by_factorials(m, n):
+    return factorial(m) // (factorial(n) * factorial(m - n)) if n <= m else 0
+
+
+def float_product(m, n):
+    if n > m:
+        return 0
+    result = 1
+    for i in range(n):
+        result = result * (m - i) / (i + 1)
+    return result
+
+
+@pytest.mark.parametrize(
+    ("solution", "product"),
+    [(product_formula, "result * (m - i) // (i + 1)"), (by_factorials, "value *= i")],
+)
+def test_a_comb_that_multiplies_is_told_to_use_pascals_rule(solution, product, monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    result = check.comb(solution)
+    assert not result and result.mistake == "not Pascal's rule"
+    assert str(result).startswith(
+        "FAIL comb: your comb gives the right numbers, but not by Pascal's rule"
+    )
+    assert f"({product})" in result.message or "fact" in result.message
+    assert "C(m, n) = C(m - 1, n - 1) + C(m - 1, n)" in result.message
+
+
+def test_pascal_rule_with_a_list_made_longer_is_not_a_product():
+    def in_place_row(m, n):
+        if n > m:
+            return 0
+        row = [1] + [0] * m
+        for k in range(1, m + 1):
+            for i in range(k, 0, -1):
+                row[i] += row[i - 1]
+        return row[n]
+
+    assert check.comb(in_place_row)
+
+
+def test_a_float_comb_is_named_at_once_not_by_the_call_budget(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    # C(1, 1) = 1.0 is already a float; so is the handout's recursion returning 1.0, which
+    # the call budget would otherwise stop first.
+    result = check.comb(float_product)
+    assert result.mistake == "floating point"
+    assert str(result).startswith("FAIL comb: case 3 is wrong")
+    assert "given:    1.0" in result.message
+
+    def float_recursion(m, n):
+        if m < n:
+            return 0.0
+        if n in (0, m):
+            return 1.0
+        return float_recursion(m - 1, n) + float_recursion(m - 1, n - 1)
+
+    result = check.comb(float_recursion)
+    assert result.mistake == "floating point"
+    assert str(result).startswith("FAIL comb: case 1 is wrong")

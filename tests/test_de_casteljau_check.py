@@ -2,6 +2,8 @@
 
 import io
 import itertools
+import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -117,6 +119,9 @@ def test_next_level_passes_and_names_each_mistake(solution, mistake):
     assert not result and result.mistake == mistake
 
 
+LESSON_01 = Path(__file__).resolve().parent.parent / "notebooks" / "01_de_casteljau.ipynb"
+
+
 def bezier_solution(control_points, window):
     height, width = window.shape[:2]
     for k in range(1001):
@@ -133,6 +138,14 @@ def float_loop(control_points, window):
         if 0 <= x < width and 0 <= y < height:
             window[int(y), int(x)] = (0, 1, 0)
         t += 0.001
+
+
+def stops_at_0_999(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1000):
+        x, y = recursive_solution(control_points, k / 1000)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x)] = (0, 1, 0)
 
 
 def rounded(control_points, window):
@@ -169,13 +182,14 @@ def coarse(control_points, window):
 
 def test_the_drawing_loop_passes_in_one_line():
     result = check.bezier(bezier_solution)
-    assert str(result) == "PASS bezier: all 3 cases pass"
+    assert str(result) == "PASS bezier: all 8 cases pass"
 
 
 @pytest.mark.parametrize(
     ("solution", "mistake", "case"),
     [
-        (float_loop, "the loop stops before t = 1", 1),
+        (float_loop, "t accumulated in float steps", 1),
+        (stops_at_0_999, "the loop stops before t = 1", 1),
         (rounded, "rounding to the nearest pixel", 1),
         (swapped_axes, "x and y swapped", 1),
         (unguarded_below, "a negative index wraps around", 2),
@@ -212,3 +226,82 @@ def test_a_loop_that_writes_off_the_window_is_told_where(monkeypatch):
     line = unguarded.__code__.co_firstlineno + 3
     assert f"at line {line} of unguarded: window[int(y), int(x)] = (0, 1, 0)" in message
     assert "and at points off the window." in message
+
+
+def test_a_negative_index_through_int_is_named_as_wrapping():
+    # int() truncates toward zero: (-0.5) lands in column 0, (-1.5) wraps to the last column.
+    def only_upper_bounds(control_points, window):
+        height, width = window.shape[:2]
+        for k in range(1001):
+            x, y = recursive_solution(control_points, k / 1000)
+            if x < width and y < height:
+                window[int(y), int(x)] = (0, 1, 0)
+
+    result = check.bezier(only_upper_bounds)
+    assert not result and result.mistake == "a negative index wraps around"
+    assert "Python counts a negative index from the end" in result.message
+
+
+def test_a_painted_copy_is_told_to_paint_the_window_it_was_given():
+    def painted_copy(control_points, window):
+        window = window.copy()
+        bezier_solution(control_points, window)
+        return window
+
+    result = check.bezier(painted_copy)
+    assert not result and result.mistake == "a painted copy"
+    assert "Paint into window itself" in result.message
+    assert "given:    0 pixels painted" in result.message
+
+
+def test_the_rounding_mistake_is_worded_as_the_lesson_words_the_pixel():
+    lesson = " ".join(
+        "".join(cell["source"])
+        for cell in json.loads(LESSON_01.read_text(encoding="utf-8"))["cells"]
+    )
+    # Line breaks in the Markdown fall anywhere: compare the words.
+    lesson = " ".join(lesson.lower().split())
+    assert "the pixel whose square holds the point $(x, y)$ is `(int(x), int(y))`" in lesson
+    assert "the pixel whose square holds the point (x, y) is (int(x), int(y))" in (
+        check.bezier(rounded).message
+    )
+
+
+@pytest.mark.parametrize(
+    ("points", "slip"),
+    [
+        ([[0.0, 10.0], [0.0, 100.0]], "0 < x"),
+        ([[650.0, 100.0], [700.0, 100.0]], "x <= width"),
+        ([[100.0, 0.0], [300.0, 0.0]], "0 < y"),
+        ([[100.0, 700.0], [300.0, 700.0]], "y <= height"),
+        ([[100.0, -0.5], [300.0, -0.5]], "-1 <= y"),
+    ],
+)
+def test_each_edge_of_the_window_is_a_case_that_a_test_one_off_fails(points, slip):
+    cases = [c for c in check._bezier_cases() if np.array_equal(c["control_points"], points)]
+    assert len(cases) == 1 and cases[0]["window"].shape == (700, 700, 3)
+    tests = {
+        "0 < x": lambda x, y, w, h: 0 < x < w and 0 <= y < h,
+        "x <= width": lambda x, y, w, h: 0 <= x <= w and 0 <= y < h,
+        "0 < y": lambda x, y, w, h: 0 <= x < w and 0 < y < h,
+        "y <= height": lambda x, y, w, h: 0 <= x < w and 0 <= y <= h,
+        "-1 <= y": lambda x, y, w, h: 0 <= x < w and -1 <= y < h,
+    }
+
+    def one_off(control_points, window):
+        height, width = window.shape[:2]
+        for k in range(1001):
+            x, y = recursive_solution(control_points, k / 1000)
+            if tests[slip](x, y, width, height):
+                window[int(y), int(x)] = (0, 1, 0)
+
+    window = np.zeros((700, 700, 3))
+    expected = np.zeros((700, 700, 3))
+    bezier_solution(np.array(points), expected)
+    try:
+        one_off(np.array(points), window)
+    except IndexError:
+        pass  # x == width or y == height indexes past the end: the check reports it
+    else:
+        assert not np.array_equal(window, expected)
+    assert not check.bezier(one_off)

@@ -5,9 +5,12 @@ tests/mutation.py makes every single-slip mutant of the 17 reference solutions
 a unary minus, a dropped line, an index off by one) and checks each in a process
 of its own under a hard timeout. :data:`SURVIVORS` lists every mutant that
 passes its checker, with the reason: "equivalent" (it computes the reference's
-answer on every input the exercise allows), "acceptable" (a tie between two
-pixels equally near the line, which the checker accepts by design), or "NOT
-ACCEPTABLE, listed until the checker catches it", with the case that would.
+answer on every input the exercise allows), or "acceptable" (a tie between two
+pixels equally near the line, which the checker accepts by design). A mutant
+that is neither is a checker to fix, with a case that fails it, not an entry
+here: the edge slips of ``bezier`` (``0 < x``, ``x <= width``, ``0 < y``,
+``y <= height``, ``-1 <= y``) and the ``<=`` of ``jacobi_sweep`` were listed
+until the checkers got the cases that fail them.
 
 A listed survivor that no longer survives, or a survivor that is not listed,
 fails the test: the list stays exact. So does a mutant that hangs (the checker
@@ -38,42 +41,6 @@ SURVIVORS: list[tuple[str, str, str]] = [
         "line 4: return control_points[0]  ->  return control_points[-1]",
         "equivalent: the line runs only when one point is left, and then [0] and [-1] are that "
         "point",
-    ),
-    (
-        "bezier",
-        "line 7: 0 <= x <  ->  0 < x <",
-        "NOT ACCEPTABLE, listed until the checker catches it: a curve with points at x == 0 "
-        "exactly (control points (0, 10), (0, 100)) paints nothing",
-    ),
-    (
-        "bezier",
-        "line 7: x < width and  ->  x <= width and",
-        "NOT ACCEPTABLE, listed until the checker catches it: a curve reaching x == width exactly "
-        "((650, 100) to (700, 100)) indexes column 700: IndexError",
-    ),
-    (
-        "bezier",
-        "line 7: 0 <= y <  ->  0 < y <",
-        "NOT ACCEPTABLE, listed until the checker catches it: a curve along y == 0 exactly ((100, "
-        "0) to (300, 0)) paints nothing",
-    ),
-    (
-        "bezier",
-        "line 7: y < height:  ->  y <= height:",
-        "NOT ACCEPTABLE, listed until the checker catches it: a curve reaching y == height exactly"
-        " ((100, 700) to (300, 700)) indexes row 700: IndexError",
-    ),
-    (
-        "bezier",
-        "line 7: and 0 <= y  ->  and 1 <= y",
-        "NOT ACCEPTABLE, listed until the checker catches it: a curve in row 0 ((100, 0.4) to "
-        "(300, 0.4)) paints nothing",
-    ),
-    (
-        "bezier",
-        "line 7: and 0 <= y  ->  and -1 <= y",
-        "NOT ACCEPTABLE, listed until the checker catches it: a curve in row 0 ((100, 0.4) to "
-        "(300, 0.4)) paints nothing",
     ),
     (
         "draw_line",
@@ -124,13 +91,6 @@ SURVIVORS: list[tuple[str, str, str]] = [
         "edge",
         "line 10: + gy ** 2)  ->  + (-gy) ** 2)",
         "equivalent: (-gy) ** 2 == gy ** 2",
-    ),
-    (
-        "jacobi_sweep",
-        "line 6: 1:-1]).max() < tolerance:  ->  1:-1]).max() <= tolerance:",
-        "NOT ACCEPTABLE, listed until the checker catches it: stops when the residual equals the "
-        "tolerance: g = [[0, 0, 0], [0, 1, 0], [0, 0, 0]], tolerance 4 (residual exactly 4): "
-        "expected 1 sweep, given 0",
     ),
 ]
 

@@ -188,3 +188,30 @@ def test_a_stop_on_the_change_between_sweeps_is_named_as_stopping_early():
     assert result.mistake == "a stop on the change between sweeps"
     assert "sweeps: expected 11, given 10" in result.message
     assert "up to four times the tolerance" in result.message
+
+
+def test_the_reports_name_the_exercises_as_the_lesson_does():
+    zero = np.zeros((3, 3))
+    assert str(check.poisson_boundary(lambda background, foreground, offset: zero)).startswith(
+        "FAIL boundary_exercise:"
+    )
+    assert str(check.jacobi_sweep(lambda g, tolerance: (g, 0))).startswith("FAIL jacobi_exercise:")
+
+
+def test_a_residual_equal_to_the_tolerance_still_gets_a_sweep():
+    g = np.array([[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0]])
+    swept, sweeps = check._jacobi_until(g, 4.0)
+    assert sweeps == 1 and np.array_equal(swept, np.zeros((3, 3)))
+
+    def stops_at_or_below(g, tolerance):
+        g = np.array(g, dtype=float)
+        sweeps = 0
+        while True:
+            n = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+            if np.abs(n - 4 * g[1:-1, 1:-1]).max() <= tolerance:
+                return g, sweeps
+            g[1:-1, 1:-1] = n / 4
+            sweeps += 1
+
+    result = check.jacobi_sweep(stops_at_or_below)
+    assert not result and "case 5 is wrong" in result.message

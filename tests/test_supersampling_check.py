@@ -131,3 +131,25 @@ def test_a_call_to_the_librarys_supersampling_or_lookup_is_told_to_write_it():
         assert not result
         assert result.message.startswith("your function calls course.resample.")
         assert "the library's own answer: this exercise writes it" in result.message
+
+
+def test_pixel_centres_at_whole_numbers_are_named_not_called_the_nearest_pixel():
+    result = check.bilinear_lookup(
+        lambda image, x, y: bilinear_sample(image, x, y, pixel_centre=0.0)
+    )
+    assert not result and result.mistake == "pixel centres at whole numbers"
+    assert str(result).startswith("FAIL bilinear_sample: case 1 is wrong")
+
+
+def test_x_and_y_swapped_differs_from_the_answer_and_is_named():
+    image = check._lookup_cases()[0]["image"]
+    assert not np.isclose(bilinear(image, 0.8, 1.3), bilinear(image, 1.3, 0.8))
+    result = check.bilinear_lookup(lambda image, x, y: bilinear_sample(image, y, x))
+    assert not result and result.mistake == "x and y swapped"
+
+
+def test_the_reports_name_the_exercises_as_the_lesson_does():
+    assert str(check.bilinear_lookup(lambda image, x, y: 0.0)).startswith("FAIL bilinear_sample:")
+    assert str(check.image_supersampling(lambda image, out_shape, rate: image)).startswith(
+        "FAIL supersample:"
+    )

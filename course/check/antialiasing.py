@@ -3,9 +3,9 @@
 ``splat(x, y)`` returns the pixels one curve point lights and their weights;
 a failure names the first pixel whose weight is wrong, shows both splats as
 pixels around the point, and recognises the GAMES101 report's variants
-(corners made of the point itself, pixels taken to sit at their corners)
-and the usual slips (the rectangles' areas given to the wrong pixels, x and
-y swapped, the nearest pixel only).
+(corners made of the point itself, which gives the whole point to one
+pixel, and pixels taken to sit at their corners) and the usual slips (the
+rectangles' areas given to the wrong pixels, x and y swapped).
 
 ``arc_length_weights(samples)`` returns the length of curve each sample
 stands for; a failure plots both sets of weights along the curve and
@@ -36,7 +36,6 @@ from course.antialias import (
 from course.antialias import (
     bilinear_centres,
     bilinear_corners,
-    bilinear_zero_offset,
     curve_samples,
     nearest_round,
     normalised_centres,
@@ -44,7 +43,6 @@ from course.antialias import (
 from course.check.base import (
     AnswerError,
     CheckResult,
-    Hints,
     Mistake,
     close,
     first_difference,
@@ -52,7 +50,9 @@ from course.check.base import (
     register_hints,
     run_cases,
 )
+from course.check.hints import Hints
 from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture, side_by_side
+from course.i18n import N_, _
 from course.images import SEED_000_CUBIC
 
 __all__ = [
@@ -62,17 +62,26 @@ __all__ = [
     "splat_table",
 ]
 
-_LIBRARY = {
-    function: f"your function calls course.splats.{function.__name__}, the library's own "
-    "answer: this exercise writes it"
-    for function in (
-        splats.splat,
-        splats.bilinear_centres,
-        splats.bilinear_corners,
-        splats.normalised_centres,
-        splats.arc_length_weights,
-    )
-}
+_LIBRARY_FUNCTIONS = (
+    splats.splat,
+    splats.bilinear_centres,
+    splats.bilinear_corners,
+    splats.normalised_centres,
+    splats.arc_length_weights,
+)
+
+
+def _library() -> dict[Any, str]:
+    """The library's own answers, each with what a student who calls it is told."""
+    return {
+        function: _(
+            "your function calls {function}, the library's own answer: this exercise writes it"
+        ).format(function=f"course.splats.{function.__name__}")
+        for function in _LIBRARY_FUNCTIONS
+    }
+
+
+_LIBRARY = _library()
 
 # Points that tell the common mistakes apart: a pixel centre (one pixel gets
 # everything), a pixel corner (four equal shares), generic points, points
@@ -134,10 +143,17 @@ def _student_table(answer: Any) -> np.ndarray:
     try:
         pixels, weights = answer
     except (TypeError, ValueError):
-        raise AnswerError(
-            f"return two things, the pixels and their weights; yours is a {type(answer).__name__}"
-            + (f" of {len(answer)} items" if isinstance(answer, (list, tuple)) else "")
-        ) from None
+        kind = type(answer).__name__
+        if isinstance(answer, (list, tuple)):
+            message = _(
+                "return two things, the pixels and their weights; yours is a {kind} of "
+                "{count} items"
+            ).format(kind=kind, count=len(answer))
+        else:
+            message = _(
+                "return two things, the pixels and their weights; yours is a {kind}"
+            ).format(kind=kind)
+        raise AnswerError(message) from None
     try:
         return splat_table(pixels, weights)
     except (TypeError, ValueError) as error:
@@ -161,9 +177,13 @@ def _splat_difference(expected: np.ndarray, given: np.ndarray) -> str:
         should, gets = want.get(pixel, 0.0), have.get(pixel, 0.0)
         if not math.isclose(should, gets, abs_tol=1e-9):
             if should == 0.0:
-                return f"first wrong pixel: {pixel} should not be lit, yours gets {gets:.4g}"
-            return f"first wrong pixel: {pixel} should get {should:.4g}, yours gets {gets:.4g}"
-    return "the same pixels and weights"
+                return _("first wrong pixel: {pixel} should not be lit, yours gets {gets}").format(
+                    pixel=pixel, gets=f"{gets:.4g}"
+                )
+            return _("first wrong pixel: {pixel} should get {should}, yours gets {gets}").format(
+                pixel=pixel, should=f"{should:.4g}", gets=f"{gets:.4g}"
+            )
+    return _("the same pixels and weights")
 
 
 def _show_splat(table: np.ndarray) -> str:
@@ -175,8 +195,9 @@ def _show_splat(table: np.ndarray) -> str:
     'pixel (2, 1) gets 0.75, pixel (3, 1) gets 0.25'
     """
     if len(table) == 0:
-        return "no pixel lit"
-    return ", ".join(f"pixel ({int(x)}, {int(y)}) gets {w:.4g}" for x, y, w in table)
+        return _("no pixel lit")
+    each = _("pixel ({x}, {y}) gets {weight}")
+    return ", ".join(each.format(x=int(x), y=int(y), weight=f"{w:.4g}") for x, y, w in table)
 
 
 def _window(case: dict[str, Any], tables: list[np.ndarray]) -> tuple[int, int, int, int]:
@@ -207,8 +228,14 @@ def _splat_picture(case: dict[str, Any], expected: np.ndarray, given: np.ndarray
     return image_picture(
         _painted(expected, window),
         _painted(given, window),
-        title=f"the splat of ({case['x']}, {case['y']}): pixels x {left}..{left + width - 1}, "
-        f"y {top}..{top + height - 1}",
+        title=_("the splat of ({x}, {y}): pixels x {left}..{right}, y {top}..{bottom}").format(
+            x=case["x"],
+            y=case["y"],
+            left=left,
+            right=left + width - 1,
+            top=top,
+            bottom=top + height - 1,
+        ),
     )
 
 
@@ -216,16 +243,33 @@ def _splat_explain(case: dict[str, Any], expected: np.ndarray, given: np.ndarray
     x, y = case["x"], case["y"]
     left, top = math.floor(x - 0.5), math.floor(y - 0.5)
     dx, dy = x - (left + 0.5), y - (top + 0.5)
-    return (
-        f"the point ({x}, {y}) lies between the centres of pixels x {left}..{left + 1}, "
-        f"y {top}..{top + 1}; from the top-left centre ({left + 0.5}, {top + 0.5}) "
-        f"dx = {dx:g}, dy = {dy:g}"
+    return _(
+        "the point ({x}, {y}) lies between the centres of pixels x {left}..{right}, "
+        "y {top}..{bottom}; from the top-left centre ({centre_x}, {centre_y}) "
+        "dx = {dx}, dy = {dy}"
+    ).format(
+        x=x,
+        y=y,
+        left=left,
+        right=left + 1,
+        top=top,
+        bottom=top + 1,
+        centre_x=left + 0.5,
+        centre_y=top + 0.5,
+        dx=f"{dx:g}",
+        dy=f"{dy:g}",
     )
 
 
 def _swapped(x: float, y: float) -> np.ndarray:
     table = splat_table(*bilinear_centres([[x, y]]))
     return splat_table(table[:, [1, 0]], table[:, 2])
+
+
+def _nearest_floor(samples: Any) -> tuple[np.ndarray, np.ndarray]:
+    """One pixel per sample, the one whose square holds it (floor); weight 1."""
+    points = np.asarray(samples, dtype=float).reshape(-1, 2)
+    return np.floor(points).astype(np.int64), np.ones(len(points))
 
 
 def _own_rectangles(x: float, y: float) -> np.ndarray:
@@ -243,55 +287,75 @@ def _truncated(x: float, y: float) -> np.ndarray:
     return splat_table(pixels, [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy])
 
 
-SPLAT_MISTAKES = (
-    Mistake(
-        "the corners are the point itself",
-        "your splat gives the whole point to one pixel: the GAMES101 report's left addColor, "
-        "whose corners p1..p4 are built from the point itself (cv::Point2f p1(point.x, "
-        "point.y)), so dx = point.x - p1.x is always 0. Measure dx and dy from a pixel centre.",
-        _table_of(bilinear_zero_offset),
-    ),
-    Mistake(
-        "pixels at their corners",
-        "your four pixels are those around the point's integer corner: the GAMES101 report's "
-        "middle addColor (cv::Point truncates), which treats pixel (c, r) as if it sat at "
-        "(c, r). Its centre is (c + 0.5, r + 0.5): the curve moves half a pixel right and down.",
-        _table_of(bilinear_corners),
-    ),
-    Mistake(
-        "the nearest pixel only",
-        "your splat lights only the pixel nearest the point, with weight 1: that is the "
-        "handout's plain loop, no anti-aliasing. Share the point among the four pixels whose "
-        "centres surround it.",
-        _table_of(nearest_round),
-    ),
-    Mistake(
-        "each pixel its own rectangle",
-        "each of your four pixels gets the rectangle between the point and its own centre: "
-        "the nearest pixel gets the least. A pixel's weight is the area of the rectangle "
-        "opposite it: (1 - dx)(1 - dy) for the top-left one.",
-        _own_rectangles,
-    ),
-    Mistake(
-        "x and y swapped",
-        "your pixels are (row, column): give each as (x, y), the column first.",
-        _swapped,
-    ),
-    Mistake(
-        "the normalised splat",
-        "your weights never vanish: a point at a pixel's centre still gives its neighbours "
-        "some. That is the VS2022 report's splat (seed 003): sqrt(2) minus each distance, "
-        "normalised. Bilinear weights are areas of rectangles, and give a centre's pixel "
-        "everything.",
-        _table_of(normalised_centres),
-    ),
-    Mistake(
-        "int() for floor",
-        "left of or above the first centres your pixels are one off: int() rounds toward "
-        "zero, so int(-0.75) is 0, while the pixel to the left is floor(-0.75) = -1.",
-        _truncated,
-    ),
-)
+def _splat_mistakes() -> tuple[Mistake, ...]:
+    """The known mistakes, in the current language."""
+    return (
+        Mistake(
+            _("the whole point to one pixel"),
+            _(
+                "your splat gives the whole point to one pixel, weight 1: no anti-aliasing. That "
+                "is the handout's plain loop, and also the GAMES101 report's left addColor, "
+                "whose corners p1..p4 are built from the point itself (cv::Point2f p1(point.x, "
+                "point.y)), so dx = point.x - p1.x is always 0. Share the point among the four "
+                "pixels whose centres surround it, with dx and dy measured from a pixel centre."
+            ),
+            _table_of(nearest_round),
+        ),
+        Mistake(
+            _("the whole point to one pixel"),
+            _(
+                "your splat gives the whole point to one pixel, the one it falls in, weight 1: no "
+                "anti-aliasing. Share the point among the four pixels whose centres surround it, "
+                "with dx and dy measured from a pixel centre."
+            ),
+            _table_of(_nearest_floor),
+        ),
+        Mistake(
+            _("pixels at their corners"),
+            _(
+                "your four pixels are those around the point's integer corner: the GAMES101 "
+                "report's middle addColor (cv::Point truncates), which treats pixel (c, r) as if "
+                "it sat at (c, r). Its centre is (c + 0.5, r + 0.5): the curve moves half a "
+                "pixel right and down."
+            ),
+            _table_of(bilinear_corners),
+        ),
+        Mistake(
+            _("each pixel its own rectangle"),
+            _(
+                "each of your four pixels gets the rectangle between the point and its own centre: "
+                "the nearest pixel gets the least. A pixel's weight is the area of the rectangle "
+                "opposite it: (1 - dx)(1 - dy) for the top-left one."
+            ),
+            _own_rectangles,
+        ),
+        Mistake(
+            _("x and y swapped"),
+            _("your pixels are (row, column): give each as (x, y), the column first."),
+            _swapped,
+        ),
+        Mistake(
+            _("the normalised splat"),
+            _(
+                "your weights never vanish: a point at a pixel's centre still gives its neighbours "
+                "some. That is the VS2022 report's splat (seed 003): sqrt(2) minus each distance, "
+                "normalised. Bilinear weights are areas of rectangles, and give a centre's pixel "
+                "everything."
+            ),
+            _table_of(normalised_centres),
+        ),
+        Mistake(
+            _("int() for floor"),
+            _(
+                "left of or above the first centres your pixels are one off: int() rounds toward "
+                "zero, so int(-0.75) is 0, while the pixel to the left is floor(-0.75) = -1."
+            ),
+            _truncated,
+        ),
+    )
+
+
+SPLAT_MISTAKES = _splat_mistakes()
 
 
 def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
@@ -306,22 +370,22 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
     Examples
     --------
     >>> bilinear_splat(lambda x, y: ([(int(x), int(y))], [1.0])).mistake
-    'the corners are the point itself'
+    'the whole point to one pixel'
     """
     return run_cases(
-        "bilinear_splat",
+        "splat",
         student,
         CASES,
         reference=_table_of(bilinear_centres),
         compare=close(atol=1e-9, rtol=0.0),
         convert=_student_table,
         hint=SPLAT_HINTS,
-        mistakes=SPLAT_MISTAKES,
+        mistakes=_splat_mistakes(),
         difference=_splat_difference,
         picture=_splat_picture,
         explain=_splat_explain,
         show=_show_splat,
-        forbidden=_LIBRARY,
+        forbidden=_library(),
         pass_picture=_splat_pass_picture,
     )
 
@@ -332,22 +396,29 @@ def _splat_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes
     return side_by_side(
         _painted(expected, window),
         _painted(given, window),
-        ("expected", f"your splat of ({case['x']}, {case['y']})"),
+        (_("expected"), _("your splat of ({x}, {y})").format(x=case["x"], y=case["y"])),
     )
 
 
 SPLAT_HINTS = register_hints(
-    "bilinear_splat",
+    "splat",
     Hints(
-        where="look at which four pixels you light, and from which point you measure the offsets.",
-        more="pixel (c, r) is centred at (c + 0.5, r + 0.5); the four pixels are those whose "
-        "centres surround the point, and each gets more the nearer the point is to its "
-        "centre: 1 at its own centre, 0 at a neighbour's.",
-        recipe="left = floor(x - 0.5), top = floor(y - 0.5); dx, dy = the point minus the "
-        "centre (left + 0.5, top + 0.5); weights (1 - dx)(1 - dy), dx (1 - dy), (1 - dx) dy, "
-        "dx dy for (left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1).",
+        where=N_(
+            "look at which four pixels you light, and from which point you measure the offsets."
+        ),
+        more=N_(
+            "pixel (c, r) is centred at (c + 0.5, r + 0.5); the four pixels are those whose "
+            "centres surround the point, and each gets more the nearer the point is to its "
+            "centre: 1 at its own centre, 0 at a neighbour's."
+        ),
+        recipe=N_(
+            "left = floor(x - 0.5), top = floor(y - 0.5); dx, dy = the point minus the "
+            "centre (left + 0.5, top + 0.5); weights (1 - dx)(1 - dy), dx (1 - dy), (1 - dx) dy, "
+            "dx dy for (left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)."
+        ),
     ),
     "splat",
+    "bilinear_splat",
 )
 
 
@@ -368,7 +439,7 @@ def _weights_picture(
     case: dict[str, Any],
     expected: Any,
     given: Any,
-    title: str = "the weight of each sample along the curve",
+    title: str = N_("the weight of each sample along the curve"),
 ) -> bytes | None:
     want, have = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
     if have.shape != want.shape:
@@ -376,13 +447,13 @@ def _weights_picture(
     figure = Figure(figsize=(4.6, 2.4), dpi=100)
     axes = figure.add_subplot()
     index = np.arange(len(want))
-    axes.plot(index, want, "o-", color=EXPECTED, label="expected", markersize=5)
-    axes.plot(index, have, "x--", color=GIVEN, label="yours", markersize=6)
-    axes.set_xlabel("sample", fontsize=8)
-    axes.set_ylabel("weight (px of curve)", fontsize=8)
+    axes.plot(index, want, "o-", color=EXPECTED, label=_("expected"), markersize=5)
+    axes.plot(index, have, "x--", color=GIVEN, label=_("yours"), markersize=6)
+    axes.set_xlabel(_("sample"), fontsize=8)
+    axes.set_ylabel(_("weight (px of curve)"), fontsize=8)
     axes.tick_params(labelsize=7)
     axes.legend(fontsize=7)
-    axes.set_title(title, fontsize=9)
+    axes.set_title(_(title), fontsize=9)
     figure.tight_layout()
     return figure_png(figure)
 
@@ -391,33 +462,47 @@ def _chords(samples: Any) -> np.ndarray:
     return np.hypot(*np.diff(np.asarray(samples, dtype=float), axis=0).T)
 
 
-WEIGHT_MISTAKES = (
-    Mistake(
-        "counting",
-        "every sample weighs 1, as in the handouts' loop: a pixel's brightness then counts "
-        "the samples in it, and follows the curve's speed. Weigh each by the length of curve "
-        "it stands for.",
-        lambda samples: np.ones(len(samples)),
-    ),
-    Mistake(
-        "the chord after each sample",
-        "each sample has the whole chord to the next one (and the last none): the curve "
-        "shifts its ink backwards by half a chord. Give each sample half the chord on each side.",
-        lambda samples: np.append(_chords(samples), 0.0),
-    ),
-    Mistake(
-        "the chord before each sample",
-        "each sample has the whole chord from the previous one (and the first none). Give "
-        "each sample half the chord on each side.",
-        lambda samples: np.insert(_chords(samples), 0, 0.0),
-    ),
-    Mistake(
-        "whole chords on both sides",
-        "each sample has both chords beside it in full: every piece of curve is counted twice. "
-        "Halve them.",
-        lambda samples: 2 * reference_weights(samples),
-    ),
-)
+def _weight_mistakes() -> tuple[Mistake, ...]:
+    """The known mistakes, in the current language."""
+    return (
+        Mistake(
+            _("counting"),
+            _(
+                "every sample weighs 1, as in the handouts' loop: a pixel's brightness then "
+                "counts the samples in it, and follows the curve's speed. Weigh each by the "
+                "length of curve it stands for."
+            ),
+            lambda samples: np.ones(len(samples)),
+        ),
+        Mistake(
+            _("the chord after each sample"),
+            _(
+                "each sample has the whole chord to the next one (and the last none): the curve "
+                "shifts its ink backwards by half a chord. Give each sample half the chord on "
+                "each side."
+            ),
+            lambda samples: np.append(_chords(samples), 0.0),
+        ),
+        Mistake(
+            _("the chord before each sample"),
+            _(
+                "each sample has the whole chord from the previous one (and the first none). Give "
+                "each sample half the chord on each side."
+            ),
+            lambda samples: np.insert(_chords(samples), 0, 0.0),
+        ),
+        Mistake(
+            _("whole chords on both sides"),
+            _(
+                "each sample has both chords beside it in full: every piece of curve is counted "
+                "twice. Halve them."
+            ),
+            lambda samples: 2 * reference_weights(samples),
+        ),
+    )
+
+
+WEIGHT_MISTAKES = _weight_mistakes()
 
 
 def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
@@ -439,10 +524,10 @@ def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
         compare=close(atol=1e-9, rtol=1e-9),
         convert=lambda answer: np.asarray(answer, dtype=float),
         hint=WEIGHT_HINTS,
-        mistakes=WEIGHT_MISTAKES,
+        mistakes=_weight_mistakes(),
         difference=first_difference,
         picture=_weights_picture,
-        forbidden=_LIBRARY,
+        forbidden=_library(),
         pass_picture=lambda results: _weights_picture(*results[2], "your weights along the cubic"),
     )
 
@@ -450,11 +535,15 @@ def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
 WEIGHT_HINTS = register_hints(
     "arc_length_weights",
     Hints(
-        where="look at the chords beside each sample, and at the first and the last sample.",
-        more="a sample stands for the curve from halfway to its previous sample to halfway "
-        "to its next one; the ends have one neighbour only, and all the weights add up to "
-        "the polyline's length.",
-        recipe="chords = the distances between neighbouring samples; pad them with 0 at "
-        "both ends; w[i] = (padded[i] + padded[i + 1]) / 2.",
+        where=N_("look at the chords beside each sample, and at the first and the last sample."),
+        more=N_(
+            "a sample stands for the curve from halfway to its previous sample to halfway "
+            "to its next one; the ends have one neighbour only, and all the weights add up to "
+            "the polyline's length."
+        ),
+        recipe=N_(
+            "chords = the distances between neighbouring samples; pad them with 0 at "
+            "both ends; w[i] = (padded[i] + padded[i + 1]) / 2."
+        ),
     ),
 )

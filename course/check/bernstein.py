@@ -15,8 +15,11 @@ more; ``check.hint("comb")`` says more at once and
 
 from __future__ import annotations
 
+import ast
+import inspect
 import math
 import sys
+import textwrap
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
@@ -27,7 +30,6 @@ from course.bezier import bernstein_basis, bezier_bernstein, binomial, pascal_ro
 from course.bezier_handouts import comb_recursive_calls, de_casteljau_reversed, pascal_row_int32
 from course.check.base import (
     CheckResult,
-    Hints,
     Mistake,
     call_budget,
     close,
@@ -36,12 +38,14 @@ from course.check.base import (
     run_cases,
 )
 from course.check.de_casteljau import (
-    LIBRARY_CURVES,
     as_point,
     curve_cases,
     curve_pass_picture,
+    library_curves,
     point_picture,
 )
+from course.check.hints import Hints
+from course.i18n import N_, _
 
 __all__ = ["COMB_CASES", "MAX_CALLS", "comb", "hint", "naive_bezier"]
 
@@ -87,38 +91,92 @@ def _entry(row: np.ndarray, n: int) -> int:
 
 
 def _exact(expected: int, given: Any) -> bool:
-    return not isinstance(given, bool) and given == expected
+    """An integer equal to C(m, n): a float, even 10.0, is not a sum of integers."""
+    integer = isinstance(given, (int, np.integer)) and not isinstance(given, (bool, np.bool_))
+    return integer and given == expected
 
 
-_REFUSED = "this exercise builds the coefficients itself, by Pascal's rule"
+def _multiplies(function: Callable[..., Any]) -> str | None:
+    """The first multiplication or division in ``function``'s code, and the helpers it calls.
+
+    Pascal's rule only adds; ``[0] * (m + 1)``, a list made longer, is not a product.
+    """
+    seen: set[Any] = set()
+    todo = [function]
+    while todo:
+        current = inspect.unwrap(todo.pop())
+        code = getattr(current, "__code__", None)
+        if code is None or code in seen or _is_library(current):
+            continue
+        seen.add(code)
+        try:
+            tree = ast.parse(textwrap.dedent(inspect.getsource(current)))
+        except (OSError, TypeError, SyntaxError):
+            continue
+        names = getattr(current, "__globals__", {})
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.BinOp, ast.AugAssign)) and isinstance(
+                node.op, (ast.Mult, ast.Div, ast.FloorDiv)
+            ):
+                operands = (
+                    [node.target, node.value]
+                    if isinstance(node, ast.AugAssign)
+                    else [
+                        node.left,
+                        node.right,
+                    ]
+                )
+                if not any(isinstance(o, (ast.List, ast.ListComp, ast.Tuple)) for o in operands):
+                    return ast.unparse(node).strip()
+            if isinstance(node, ast.Call):
+                called = node.func
+                if isinstance(called, ast.Name) and called.id in {"prod", "factorial"}:
+                    return ast.unparse(node)
+                if isinstance(called, ast.Attribute) and called.attr in {"prod", "factorial"}:
+                    return ast.unparse(node)
+                if isinstance(called, ast.Name) and callable(names.get(called.id)):
+                    todo.append(names[called.id])
+    return None
+
+
+def _is_library(function: Any) -> bool:
+    module = getattr(function, "__module__", "") or ""
+    return module.split(".")[0] in {"course", "numpy", "math", "builtins", "scipy"}
 
 
 def _binomials() -> dict[Any, str]:
     """The ready-made binomials a comb must not call: Python's, the library's, scipy's."""
+    refused = _("this exercise builds the coefficients itself, by Pascal's rule")
+    called = _("{function} was called: {refused}")
     forbidden = {
-        math.comb: f"math.comb was called: {_REFUSED}",
-        math.perm: f"math.perm was called: {_REFUSED}",
-        math.factorial: f"math.factorial was called: {_REFUSED}, not from factorials",
-        binomial: f"course.bezier.binomial was called: {_REFUSED}",
-        pascal_row: f"course.bezier.pascal_row was called: {_REFUSED}",
+        math.comb: called.format(function="math.comb", refused=refused),
+        math.perm: called.format(function="math.perm", refused=refused),
+        math.factorial: _("{function} was called: {refused}, not from factorials").format(
+            function="math.factorial", refused=refused
+        ),
+        binomial: called.format(function="course.bezier.binomial", refused=refused),
+        pascal_row: called.format(function="course.bezier.pascal_row", refused=refused),
     }
     special = sys.modules.get("scipy.special")  # not imported: the student cannot call it
     if special is not None:
         for name in ("comb", "binom", "perm", "factorial"):
             if hasattr(special, name):
-                forbidden[getattr(special, name)] = f"scipy.special.{name} was called: {_REFUSED}"
+                forbidden[getattr(special, name)] = called.format(
+                    function=f"scipy.special.{name}", refused=refused
+                )
     return forbidden
 
 
 @contextmanager
 def _pascal_only() -> Iterator[None]:
     exponential = Mistake(
-        "the exponential recursion",
-        "comb(m - 1, n) + comb(m - 1, n - 1) computes the same coefficients again and again, "
-        "as the any-degree report's comb does: comb(40, 20) alone would make "
-        f"{comb_recursive_calls(40, 20):.2g} calls. "
-        "Keep each coefficient once: build Pascal's triangle row by row (or remember the "
-        "coefficients already computed).",
+        _("the exponential recursion"),
+        _(
+            "comb(m - 1, n) + comb(m - 1, n - 1) computes the same coefficients again and "
+            "again, as the any-degree report's comb does: comb(40, 20) alone would make "
+            "{calls} calls. Keep each coefficient once: build Pascal's triangle row by row (or "
+            "remember the coefficients already computed)."
+        ).format(calls=f"{comb_recursive_calls(40, 20):.2g}"),
         lambda m, n: None,
     )
     with call_budget(MAX_CALLS, too_many=exponential):
@@ -128,11 +186,17 @@ def _pascal_only() -> Iterator[None]:
 COMB_HINTS = register_hints(
     "comb",
     Hints(
-        where="look at the first rows of Pascal's triangle, and at what your code does when n > m.",
-        more="row 0 is [1]; each next row is made from the one above it, entry by entry, so "
-        "each coefficient is computed once; C(m, n) is entry n of row m, and 0 when n > m.",
-        recipe="start from row = [1]; m times, make the next row: 1, then the sums of the "
-        "neighbouring pairs of the row above, then 1. Return row[n] (0 if n > m).",
+        where=N_(
+            "look at the first rows of Pascal's triangle, and at what your code does when n > m."
+        ),
+        more=N_(
+            "row 0 is [1]; each next row is made from the one above it, entry by entry, so "
+            "each coefficient is computed once; C(m, n) is entry n of row m, and 0 when n > m."
+        ),
+        recipe=N_(
+            "start from row = [1]; m times, make the next row: 1, then the sums of the "
+            "neighbouring pairs of the row above, then 1. Return row[n] (0 if n > m)."
+        ),
     ),
 )
 
@@ -148,46 +212,59 @@ def comb(function: Callable[..., Any]) -> CheckResult:
     """
     mistakes = [
         Mistake(
-            "32-bit integers",
-            "your coefficients wrapped around: C(34, 17) = 2,333,606,220 does not fit in a "
-            "32-bit int (the C++ handouts' int), and numpy's int32 wraps silently. Python's int "
-            "is exact at any size: keep the row in a list of Python ints.",
+            _("32-bit integers"),
+            _(
+                "your coefficients wrapped around: C(34, 17) = 2,333,606,220 does not fit in a "
+                "32-bit int (the C++ handouts' int), and numpy's int32 wraps silently. Python's "
+                "int is exact at any size: keep the row in a list of Python ints."
+            ),
             lambda m, n: _entry(_row_with_overflow(m, np.int32), n),
         ),
         Mistake(
-            "64-bit integers",
-            "your coefficients wrapped around at C(67, 33), which needs 65 bits: a numpy int64 "
-            "array overflows silently. Keep the row in a list of Python ints, which are exact.",
+            _("64-bit integers"),
+            _(
+                "your coefficients wrapped around at C(67, 33), which needs 65 bits: a numpy int64 "
+                "array overflows silently. Keep the row in a list of Python ints, which are exact."
+            ),
             lambda m, n: _entry(_row_with_overflow(m, np.int64), n),
         ),
         Mistake(
-            "floating point",
-            "your answer is a float: a float keeps about 16 significant digits, and C(67, 33) "
-            "has 20. Add integers only.",
-            lambda m, n: binomial(m, n),
+            _("floating point"),
+            _(
+                "your answer is a float: a float holds whole numbers exactly only up to "
+                "2^53, about 9 * 10^15, and C(67, 33) is about 1.4 * 10^19. A binomial "
+                "coefficient is an integer: add integers only (in Python, / makes a float "
+                "even when the division is exact; Pascal's rule needs no division)."
+            ),
+            lambda m, n: binomial(m, n) if n <= m else 0,
             matches=lambda exact, given: (
-                isinstance(given, float) and math.isclose(given, exact, rel_tol=1e-9)
+                isinstance(given, (float, np.floating))
+                and math.isclose(given, exact, rel_tol=1e-9, abs_tol=1e-9)
             ),
         ),
         Mistake(
-            "the arguments swapped",
-            "you computed C(n, m): comb(m, n) is entry n of row m, the row first.",
+            _("the arguments swapped"),
+            _("you computed C(n, m): comb(m, n) is entry n of row m, the row first."),
             lambda m, n: binomial(n, m) if m <= n else 0,
         ),
         Mistake(
-            "off by one row",
-            "you returned C(m - 1, n): the row of Pascal's triangle for m is reached after m "
-            "steps from the row [1] (row 0).",
+            _("off by one row"),
+            _(
+                "you returned C(m - 1, n): the row of Pascal's triangle for m is reached after m "
+                "steps from the row [1] (row 0)."
+            ),
             lambda m, n: binomial(m - 1, n) if m >= 1 else 0,
         ),
         Mistake(
-            "off by one row",
-            "you returned C(m + 1, n): the row of Pascal's triangle for m is reached after m "
-            "steps from the row [1] (row 0), not m + 1.",
+            _("off by one row"),
+            _(
+                "you returned C(m + 1, n): the row of Pascal's triangle for m is reached after m "
+                "steps from the row [1] (row 0), not m + 1."
+            ),
             lambda m, n: binomial(m + 1, n),
         ),
     ]
-    return run_cases(
+    result = run_cases(
         "comb",
         function,
         COMB_CASES,
@@ -197,6 +274,25 @@ def comb(function: Callable[..., Any]) -> CheckResult:
         mistakes=mistakes,
         watch=_pascal_only,
         forbidden=_binomials(),
+    )
+    product = _multiplies(function) if result.passed else None
+    if product is None:
+        return result
+    lines = [
+        _(
+            "your comb gives the right numbers, but not by Pascal's rule: it multiplies "
+            "or divides ({product}), as the formula m! / (n! (m - n)!) does."
+        ).format(product=product),
+        _(
+            "  The exercise builds each coefficient from the two above it, C(m, n) = "
+            "C(m - 1, n - 1) + C(m - 1, n), adding integers only: that is what the lesson's "
+            "Bernstein-to-de Casteljau step uses. Well done on the numbers; now try it with "
+            "additions."
+        ),
+        _('Hint: {where}\n(More: check.hint("comb").)').format(where=_(COMB_HINTS.where)),
+    ]
+    return CheckResult(
+        "comb", False, result.cases_run, "\n".join(lines), mistake=_("not Pascal's rule")
     )
 
 
@@ -222,13 +318,19 @@ def _high_degree_cases() -> list[dict[str, Any]]:
 NAIVE_HINTS = register_hints(
     "naive_bezier",
     Hints(
-        where="look at the degree n, at the weight each control point gets, and at where "
-        "your sum starts.",
-        more="a curve of N control points has degree n = N - 1; point i is weighted by "
-        "its Bernstein polynomial, built from your comb(n, i) and powers of t and 1 - t, "
-        "and the weights add up to 1. Each call starts its sum from zero.",
-        recipe="n = len(control_points) - 1; return the sum over i = 0 ... n of comb(n, i) "
-        "t^i (1 - t)^(n - i) control_points[i].",
+        where=N_(
+            "look at the degree n, at the weight each control point gets, and at where "
+            "your sum starts."
+        ),
+        more=N_(
+            "a curve of N control points has degree n = N - 1; point i is weighted by "
+            "its Bernstein polynomial, built from your comb(n, i) and powers of t and 1 - t, "
+            "and the weights add up to 1. Each call starts its sum from zero."
+        ),
+        recipe=N_(
+            "n = len(control_points) - 1; return the sum over i = 0 ... n of comb(n, i) "
+            "t^i (1 - t)^(n - i) control_points[i]."
+        ),
     ),
 )
 
@@ -255,33 +357,41 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
 
     mistakes = [
         Mistake(
-            "the reversed weights",
-            "your curve runs backwards: you weighted P[i] by C(n, i) t^(n-i) (1 - t)^i. The "
-            "Bernstein weight of P[i] is C(n, i) t^i (1 - t)^(n-i), so that B(0) = P0.",
+            _("the reversed weights"),
+            _(
+                "your curve runs backwards: you weighted P[i] by C(n, i) t^(n-i) (1 - t)^i. The "
+                "Bernstein weight of P[i] is C(n, i) t^i (1 - t)^(n-i), so that B(0) = P0."
+            ),
             lambda control_points, t: de_casteljau_reversed(control_points, t),
         ),
         Mistake(
-            "the degree off by one",
-            "you used n = len(control_points); the degree is one less, n = N - 1, so that "
-            "the N weights C(n, i) t^i (1 - t)^(n-i), i = 0 ... n, add up to 1.",
+            _("the degree off by one"),
+            _(
+                "you used n = len(control_points); the degree is one less, n = N - 1, so that "
+                "the N weights C(n, i) t^i (1 - t)^(n-i), i = 0 ... n, add up to 1."
+            ),
             _degree_off_by_one,
         ),
         Mistake(
-            "x and y swapped",
-            "your point is (y, x): return x first, as the control points' columns are x, y.",
+            _("x and y swapped"),
+            _("your point is (y, x): return x first, as the control points' columns are x, y."),
             lambda control_points, t: bezier_bernstein(control_points, t)[::-1],
         ),
         Mistake(
-            "32-bit binomials",
-            "your binomials wrapped around at degree 40: C(40, 20) does not fit in a 32-bit "
-            "int. Use your comb, which gives Python's exact ints.",
+            _("32-bit binomials"),
+            _(
+                "your binomials wrapped around at degree 40: C(40, 20) does not fit in a 32-bit "
+                "int. Use your comb, which gives Python's exact ints."
+            ),
             _int32_weights,
         ),
         Mistake(
-            "an accumulator not reset",
-            "your answer is the sum of this point and the ones before it: the sum must start "
-            "from zero at each call (the any-degree report's own remark about its point "
-            "declared outside the loop).",
+            _("an accumulator not reset"),
+            _(
+                "your answer is the sum of this point and the ones before it: the sum must start "
+                "from zero at each call (the any-degree report's own remark about its point "
+                "declared outside the loop)."
+            ),
             lambda control_points, t: np.sum(history, axis=0),
         ),
     ]
@@ -294,7 +404,7 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
         convert=as_point,
         hint=NAIVE_HINTS,
         mistakes=mistakes,
-        picture=point_picture(bezier_bernstein, "your naive_bezier"),
-        forbidden=LIBRARY_CURVES,
+        picture=point_picture(bezier_bernstein, N_("your naive_bezier")),
+        forbidden=library_curves(),
         pass_picture=curve_pass_picture(bezier_bernstein, "naive_bezier"),
     )

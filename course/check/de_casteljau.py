@@ -34,7 +34,6 @@ from course.bezier_handouts import de_casteljau_reversed
 from course.check.base import (
     AnswerError,
     CheckResult,
-    Hints,
     Mistake,
     close,
     hint,
@@ -44,7 +43,10 @@ from course.check.base import (
     run_cases,
     same_pixels,
 )
+from course.check.hints import Hints
 from course.check.pictures import curve_picture, pixel_picture, side_by_side
+from course.check.sandbox import run_bounded
+from course.i18n import N_, _
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 
@@ -56,6 +58,7 @@ __all__ = [
     "curve_cases",
     "curve_pass_picture",
     "hint",
+    "library_curves",
     "next_level",
     "point_mistakes",
     "point_picture",
@@ -65,21 +68,31 @@ __all__ = [
 #: The t step of seed 000's loop, and the values it should take: 0, 0.001, ..., 1.
 STEP = 0.001
 _STEPS = round(1 / STEP)
-_WRITE_IT = "this exercise writes the curve itself, from the interpolation step"
-#: The library's own curves: an answer that calls one is told to write it.
-LIBRARY_CURVES = {
-    function: f"your function calls course.bezier.{function.__name__}, the library's own "
-    f"answer: {_WRITE_IT}"
-    for function in (
-        library.de_casteljau,
-        library.de_casteljau_recursive,
-        library.de_casteljau_levels,
-        library.bezier_bernstein,
-        library.bernstein_basis,
-        library.split,
-        library.sample_uniform,
-    )
-}
+_LIBRARY_FUNCTIONS = (
+    library.de_casteljau,
+    library.de_casteljau_recursive,
+    library.de_casteljau_levels,
+    library.bezier_bernstein,
+    library.bernstein_basis,
+    library.split,
+    library.sample_uniform,
+)
+
+
+def library_curves() -> dict[Any, str]:
+    """The library's own curves, each with what a student who calls it is told (in the
+    current language)."""
+    return {
+        function: _(
+            "your function calls course.bezier.{function}, the library's own answer: this "
+            "exercise writes the curve itself, from the interpolation step"
+        ).format(function=function.__name__)
+        for function in _LIBRARY_FUNCTIONS
+    }
+
+
+#: The library's own curves: an answer that calls one is told to write it (English).
+LIBRARY_CURVES = library_curves()
 
 
 def curve_cases(max_points: int) -> list[dict[str, Any]]:
@@ -110,7 +123,9 @@ def as_point(value: Any) -> np.ndarray:
         return np.asarray(value, dtype=float).reshape(-1)
     except (TypeError, ValueError):
         raise AnswerError(
-            f"a point is two numbers (x, y); yours is a {type(value).__name__} that is not"
+            _("a point is two numbers (x, y); yours is a {kind} that is not").format(
+                kind=type(value).__name__
+            )
         ) from None
 
 
@@ -128,9 +143,9 @@ def point_picture(
             control,
             curve,
             theirs,
-            f"{title}, t = {case['t']:g}",
+            _("{title}, t = {t}").format(title=_(title), t=f"{case['t']:g}"),
             mark_start=False,
-            given_label=f"your point at t = {case['t']:g}",
+            given_label=_("your point at t = {t}").format(t=f"{case['t']:g}"),
         )
 
     return draw
@@ -148,7 +163,11 @@ def curve_pass_picture(reference: Callable[..., Any], name: str) -> Callable[[li
         curve = reference(SEED_000_CUBIC, np.linspace(0.0, 1.0, 41))
         ts = ", ".join(f"{c['t']:g}" for c, _ in chosen)
         return curve_picture(
-            SEED_000_CUBIC, curve, theirs, f"your {name} at t = {ts}", width_inches=3.0
+            SEED_000_CUBIC,
+            curve,
+            theirs,
+            _("your {name} at t = {ts}").format(name=name, ts=ts),
+            width_inches=3.0,
         )
 
     return draw
@@ -158,22 +177,26 @@ def point_mistakes(curve: Callable[[np.ndarray, float], np.ndarray]) -> list[Mis
     """The mistakes of a function that returns the curve point at t."""
     return [
         Mistake(
-            "the reversed step",
-            "your curve runs backwards: you wrote t P[i] + (1 - t) P[i+1], as two of the "
-            "reports do. The point at t on an edge is t of the way from its first end, so "
-            "that B(0) = P0 and B(1) = Pn.",
+            _("the reversed step"),
+            _(
+                "your curve runs backwards: you wrote t P[i] + (1 - t) P[i+1], as two of the "
+                "reports do. The point at t on an edge is t of the way from its first end, so "
+                "that B(0) = P0 and B(1) = Pn."
+            ),
             lambda control_points, t: de_casteljau_reversed(control_points, t),
         ),
         Mistake(
-            "one level short",
-            "you stopped when two points were left and returned the first of them: that is a "
-            "point of the last level's segment, not B(t). Interpolate once more, down to one "
-            "point.",
+            _("one level short"),
+            _(
+                "you stopped when two points were left and returned the first of them: that is "
+                "a point of the last level's segment, not B(t). Interpolate once more, down to "
+                "one point."
+            ),
             lambda control_points, t: de_casteljau_levels(control_points, t)[-2][0],
         ),
         Mistake(
-            "x and y swapped",
-            "your point is (y, x): return x first, as the control points' columns are x, y.",
+            _("x and y swapped"),
+            _("your point is (y, x): return x first, as the control points' columns are x, y."),
             lambda control_points, t: curve(control_points, t)[::-1],
         ),
     ]
@@ -186,11 +209,15 @@ def _curve(control_points: np.ndarray, t: Any) -> np.ndarray:
 RECURSIVE_HINTS = register_hints(
     "recursive_bezier",
     Hints(
-        where="look at what one call hands to the next, and at when the recursion stops.",
-        more="each call makes one level with one point fewer (your next_level), and passes "
-        "it on with the same t; the call that gets a single point has B(t).",
-        recipe="if len(control_points) == 1, return control_points[0]; otherwise return "
-        "recursive_bezier(next_level(control_points, t), t).",
+        where=N_("look at what one call hands to the next, and at when the recursion stops."),
+        more=N_(
+            "each call makes one level with one point fewer (your next_level), and passes "
+            "it on with the same t; the call that gets a single point has B(t)."
+        ),
+        recipe=N_(
+            "if len(control_points) == 1, return control_points[0]; otherwise return "
+            "recursive_bezier(next_level(control_points, t), t)."
+        ),
     ),
 )
 
@@ -216,8 +243,8 @@ def recursive_bezier(function: Callable[..., Any]) -> CheckResult:
         convert=as_point,
         hint=RECURSIVE_HINTS,
         mistakes=point_mistakes(_curve),
-        picture=point_picture(_curve, "your recursive_bezier"),
-        forbidden=LIBRARY_CURVES,
+        picture=point_picture(_curve, N_("your recursive_bezier")),
+        forbidden=library_curves(),
         pass_picture=curve_pass_picture(_curve, "recursive_bezier"),
     )
 
@@ -229,28 +256,34 @@ def _reference_level(control_points: np.ndarray, t: float) -> np.ndarray:
 def _level_mistakes() -> list[Mistake]:
     return [
         Mistake(
-            "the reversed step",
-            "your points sit at 1 - t along each edge: you wrote t P[i] + (1 - t) P[i+1]. "
-            "The point at t on the edge from P[i] to P[i+1] is P[i] at t = 0.",
+            _("the reversed step"),
+            _(
+                "your points sit at 1 - t along each edge: you wrote t P[i] + (1 - t) P[i+1]. "
+                "The point at t on the edge from P[i] to P[i+1] is P[i] at t = 0."
+            ),
             lambda control_points, t: de_casteljau_levels(control_points, 1 - t)[1],
         ),
         Mistake(
-            "one point short",
-            "your level has N - 2 points: there is one new point per edge of the polygon, "
-            "and N points make N - 1 edges.",
+            _("one point short"),
+            _(
+                "your level has N - 2 points: there is one new point per edge of the polygon, "
+                "and N points make N - 1 edges."
+            ),
             lambda control_points, t: _reference_level(control_points, t)[:-1],
         ),
         Mistake(
-            "an edge from the last point back to the first",
-            "your level has N points: np.roll joins the last control point to the first, but "
-            "the control polygon is open; it has N - 1 edges.",
+            _("an edge from the last point back to the first"),
+            _(
+                "your level has N points: np.roll joins the last control point to the first, "
+                "but the control polygon is open; it has N - 1 edges."
+            ),
             lambda control_points, t: _reference_level(
                 np.vstack([control_points, control_points[:1]]), t
             ),
         ),
         Mistake(
-            "x and y swapped",
-            "your points are (y, x): keep the columns in the order x, y.",
+            _("x and y swapped"),
+            _("your points are (y, x): keep the columns in the order x, y."),
             lambda control_points, t: _reference_level(control_points, t)[:, ::-1],
         ),
     ]
@@ -261,7 +294,7 @@ def _as_level(value: Any) -> np.ndarray:
         return np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         raise AnswerError(
-            "a level is a list or array of (x, y) points, all of the same length"
+            _("a level is a list or array of (x, y) points, all of the same length")
         ) from None
 
 
@@ -276,22 +309,28 @@ def _level_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes
         SEED_000_CUBIC,
         _curve(SEED_000_CUBIC, np.linspace(0.0, 1.0, 41)),
         np.asarray(given, dtype=float).reshape(-1, 2),
-        "your next level of seed 000's cubic, t = 0.25",
+        _("your next level of seed 000's cubic, t = 0.25"),
         width_inches=3.0,
         mark_start=False,
-        given_label="your level",
+        given_label=_("your level"),
     )
 
 
 NEXT_LEVEL_HINTS = register_hints(
     "next_level",
     Hints(
-        where="look at the edges of the control polygon: how many there are, and where on "
-        "each your new point sits.",
-        more="each edge from P[i] to P[i+1] gets one new point, t of the way from P[i]: "
-        "at t = 0 it is P[i], at t = 1 it is P[i+1].",
-        recipe="the new point on edge i is (1 - t) P[i] + t P[i+1], for i = 0 ... N - 2; "
-        "with numpy, the first N - 1 rows and the last N - 1 rows of control_points.",
+        where=N_(
+            "look at the edges of the control polygon: how many there are, and where on "
+            "each your new point sits."
+        ),
+        more=N_(
+            "each edge from P[i] to P[i+1] gets one new point, t of the way from P[i]: "
+            "at t = 0 it is P[i], at t = 1 it is P[i+1]."
+        ),
+        recipe=N_(
+            "the new point on edge i is (1 - t) P[i] + t P[i+1], for i = 0 ... N - 2; "
+            "with numpy, the first N - 1 rows and the last N - 1 rows of control_points."
+        ),
     ),
 )
 
@@ -316,20 +355,31 @@ def next_level(function: Callable[..., Any]) -> CheckResult:
         convert=_as_level,
         hint=NEXT_LEVEL_HINTS,
         mistakes=_level_mistakes(),
-        forbidden=LIBRARY_CURVES,
+        forbidden=library_curves(),
         pass_picture=_level_pass_picture,
     )
 
 
 #: The drawing loop's windows: seed 000's curve on its 700 x 700 window, a curve that
 #: leaves a small window on every side (its pixels off the window must be skipped, and it
-#: crosses x = width and y = height, where a test `x <= width` indexes past the end), and
-#: a curve on a 24 x 24 window.
+#: crosses x = width and y = height, where a test `x <= width` indexes past the end), a
+#: curve on a 24 x 24 window, then lines along the window's edges, where a test one off
+#: (`0 < x`, `x <= width`, `0 < y`, `y <= height`, `-1 <= y`) paints too much or too little:
+#: x = 0 and y = 0 exactly (painted), x = width and y = height exactly (skipped), and
+#: y = -0.5 (skipped, although int(-0.5) is row 0).
 BEZIER_SHAPES = (
     (SEED_000_CUBIC, (700, 700)),
     (np.array([[-20.0, 50.0], [30.0, -40.0], [70.0, 90.0], [100.0, 20.0]]), (60, 80)),
     (np.array([[2.2, 20.5], [5.0, 1.5], [21.0, 3.5]]), (24, 24)),
+    (np.array([[0.0, 10.0], [0.0, 100.0]]), (700, 700)),
+    (np.array([[650.0, 100.0], [700.0, 100.0]]), (700, 700)),
+    (np.array([[100.0, 0.0], [300.0, 0.0]]), (700, 700)),
+    (np.array([[100.0, 700.0], [300.0, 700.0]]), (700, 700)),
+    (np.array([[100.0, -0.5], [300.0, -0.5]]), (700, 700)),
 )
+#: A curve that tells t accumulated in float steps from range(1000): it runs right to left
+#: two pixels per step, so t a few ulps above k / 1000 lands one pixel to the left.
+ACCUMULATION_PROBE = {"control_points": np.array([[699.0, 0.5], [-1301.0, 0.5]]), "shape": (2, 700)}
 GREEN = (0.0, 1.0, 0.0)
 
 
@@ -355,34 +405,60 @@ def _bezier_reference(control_points: np.ndarray, window: np.ndarray) -> np.ndar
     return _loop_pixels(control_points, window.shape, _every_t())
 
 
-def _wrapped(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
-    height, width = window.shape[:2]
-    pixels = nearest_pixels(de_casteljau(control_points, _every_t()))
-    # Python counts a negative index from the end; one past the end raises instead.
-    keep = (pixels[:, 0] >= -width) & (pixels[:, 0] < width)
-    keep &= (pixels[:, 1] >= -height) & (pixels[:, 1] < height)
-    return pixels[keep] % (width, height)
+def _wrapped(rounding: str) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
+    """The pixels of a loop that tests only ``x < width and y < height``.
+
+    A negative index counts from the end of the row or column, so a pixel
+    left of or above the window lands on its other side; ``int`` truncates
+    toward zero, so a point in (-1, 0) lands in column or row 0 instead.
+    """
+
+    def pixels(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
+        height, width = window.shape[:2]
+        curve = de_casteljau(control_points, _every_t())
+        kept = curve[(curve[:, 0] < width) & (curve[:, 1] < height)]
+        found = nearest_pixels(kept, rounding=rounding)
+        # Python raises past -length, so such a loop stops there: not this mistake.
+        inside = (found[:, 0] >= -width) & (found[:, 1] >= -height)
+        return found[inside] % (width, height)
+
+    return pixels
 
 
 class _Painting:
-    """The pixels a student painted (any channel not 0), and the first in the wrong colour."""
+    """The pixels a student painted (any channel not 0), and the first in the wrong colour.
 
-    def __init__(self, window: Any) -> None:
+    Made from ``(window, returned)``: the window after the call, and what the
+    function returned, kept to recognise a painted copy returned instead.
+    """
+
+    def __init__(self, answer: Any) -> None:
+        window, returned = answer
         image = np.asarray(window)
         if image.ndim != 3 or image.shape[2] != 3 or image.dtype.kind not in "biuf":
             raise AnswerError(
-                f"the window must stay an (H, W, 3) image of numbers; yours is {image.shape}"
+                _("the window must stay an (H, W, 3) image of numbers; yours is {shape}").format(
+                    shape=image.shape
+                )
             )
-        painted = (image != 0).any(axis=2)
-        rows, columns = np.nonzero(painted)
         self.window = image
-        self.pixels = np.column_stack([columns, rows]).astype(np.int64)
-        colours = image[rows, columns].astype(float)
-        wrong = ~(colours == GREEN).all(axis=1)
-        self.wrong_colour = None
-        if wrong.any():
-            k = int(np.argmax(wrong))
-            self.wrong_colour = (int(columns[k]), int(rows[k]), tuple(colours[k].tolist()))
+        self.pixels, self.wrong_colour = _painted(image)
+        self.returned_pixels = None
+        if isinstance(returned, np.ndarray) and returned.shape == image.shape:
+            self.returned_pixels = _painted(returned)[0]
+
+
+def _painted(image: np.ndarray) -> tuple[np.ndarray, tuple[int, int, tuple] | None]:
+    painted = (image != 0).any(axis=2)
+    rows, columns = np.nonzero(painted)
+    pixels = np.column_stack([columns, rows]).astype(np.int64)
+    colours = image[rows, columns].astype(float)
+    wrong = ~(colours == GREEN).all(axis=1)
+    wrong_colour = None
+    if wrong.any():
+        k = int(np.argmax(wrong))
+        wrong_colour = (int(columns[k]), int(rows[k]), tuple(colours[k].tolist()))
+    return pixels, wrong_colour
 
 
 def _same_painting(expected: np.ndarray, given: _Painting) -> bool:
@@ -393,75 +469,133 @@ def _painting_difference(expected: np.ndarray, given: _Painting) -> str:
     if given.wrong_colour is not None and same_pixels(expected, given.pixels):
         x, y, colour = given.wrong_colour
         shown = ", ".join(f"{c:g}" for c in colour)
-        return (
-            f"the right pixels, but pixel ({x}, {y}) is ({shown}): paint the curve green, (0, 1, 0)"
-        )
+        return _(
+            "the right pixels, but pixel ({x}, {y}) is ({colour}): paint the curve green, (0, 1, 0)"
+        ).format(x=x, y=y, colour=shown)
     return pixel_difference(expected, given.pixels)
 
 
 def _show_painting(answer: Any) -> str:
     if isinstance(answer, _Painting):
-        return f"{len(answer.pixels)} pixels painted"
-    return f"{len(np.unique(pixel_rows(answer, 'expected'), axis=0))} pixels painted"
+        count = len(answer.pixels)
+    else:
+        count = len(np.unique(pixel_rows(answer, "expected"), axis=0))
+    # Always "pixels", as before the reports were translated: English stays what it was.
+    return _("{count} pixels painted").format(count=count)
 
 
 def _pixels_of(answer: Any) -> Any:
     return answer.pixels if isinstance(answer, _Painting) else answer
 
 
-def _bezier_mistakes() -> list[Mistake]:
-    stops_short = uniform_parameters(STEP, accumulate="float64")
+def _accumulates(student: Callable[..., Any]) -> bool:
+    """Whether ``student`` paints the probe curve as t accumulated in float steps would."""
+    probe = ACCUMULATION_PROBE
+    window = np.zeros((*probe["shape"], 3))
+    run_bounded(lambda: student(probe["control_points"].copy(), window))
+    steps = uniform_parameters(STEP, accumulate="float64")
+    expected = _loop_pixels(probe["control_points"], window.shape, steps)
+    return bool(same_pixels(expected, _painted(window)[0]))
+
+
+def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
+    accumulated = uniform_parameters(STEP, accumulate="float64")
     float32_loop = uniform_parameters(STEP, accumulate="float32")
 
     def pixels_match(mistaken: Any, given: Any) -> bool:
         return same_pixels(mistaken, _pixels_of(given))
 
+    def accumulated_match(mistaken: Any, given: Any) -> bool:
+        return pixels_match(mistaken, given) and student is not None and _accumulates(student)
+
+    def copy_match(expected: Any, given: Any) -> bool:
+        returned = getattr(given, "returned_pixels", None)
+        return (
+            len(_pixels_of(given)) == 0
+            and returned is not None
+            and bool(same_pixels(expected, returned))
+        )
+
+    wraps = _(
+        "a pixel with x < 0 or y < 0 appeared on the other side of the window (or, through "
+        "int(), which rounds toward zero, in column or row 0): Python counts a negative index "
+        "from the end. Test 0 <= x < width and 0 <= y < height before you paint, and skip "
+        "every point off the window."
+    )
     return [
         Mistake(
-            "the loop stops before t = 1",
-            "your loop never reaches t = 1, so the curve's last pixel stays dark: range(1000) "
-            "and np.arange(0, 1, 0.001) stop at 0.999, and adding 0.001 to t a thousand times "
-            "passes 1 by a rounding error. Count whole steps, so that the last t is exactly 1.",
-            lambda control_points, window: _loop_pixels(control_points, window.shape, stops_short),
+            _("a painted copy"),
+            _(
+                "your function painted a copy of the window and returned it: the window it was "
+                "given stays black. Paint into window itself (window[y, x] = ...), the one "
+                "argument this exercise lets you change; there is nothing to return."
+            ),
+            _bezier_reference,
+            matches=copy_match,
+        ),
+        Mistake(
+            _("t accumulated in float steps"),
+            _(
+                "your t is a sum of 0.001 steps (t = 0.0; while t <= 1: ...; t += 0.001), as the "
+                "handouts' loop `for (t = 0; t <= 1; t += 0.001)` does: each addition rounds, the "
+                "sum ends a hair above 1 after a thousand steps, so t = 1 is never painted, and on "
+                "the way t drifts a few units in the last place. Count whole steps instead: "
+                "for k in range(1001): t = k / 1000."
+            ),
+            lambda control_points, window: _loop_pixels(control_points, window.shape, accumulated),
+            matches=accumulated_match,
+        ),
+        Mistake(
+            _("the loop stops before t = 1"),
+            _(
+                "your loop never reaches t = 1, so the curve's last pixel stays dark: range(1000) "
+                "and np.arange(0, 1, 0.001) stop at 0.999. Count whole steps up to and including "
+                "1000: for k in range(1001): t = k / 1000."
+            ),
+            lambda control_points, window: _loop_pixels(
+                control_points, window.shape, _every_t()[:-1]
+            ),
             matches=pixels_match,
         ),
         Mistake(
-            "the float32 loop of the GAMES101 handout",
-            "your t drifts: the handout's `float t` keeps about 7 digits, and a thousand "
-            "additions of 0.001 move the points enough to change pixels in the middle of the "
-            "curve. Compute each t from a whole count, in Python's float.",
+            _("the float32 loop of the GAMES101 handout"),
+            _(
+                "your t drifts: the handout's `float t` keeps about 7 digits, and a thousand "
+                "additions of 0.001 move the points enough to change pixels in the middle of the "
+                "curve. Compute each t from a whole count, in Python's float."
+            ),
             lambda control_points, window: _loop_pixels(control_points, window.shape, float32_loop),
             matches=pixels_match,
         ),
         Mistake(
-            "rounding to the nearest pixel",
-            "you rounded x and y, as OpenCV's cv::Point does in the GAMES101 report: that "
-            "paints the pixel whose corner is nearest, half a pixel off. The pixel that holds "
-            "(x, y) is the one whose square [x0, x0 + 1) x [y0, y0 + 1) contains it.",
+            _("rounding to the nearest pixel"),
+            _(
+                "you rounded x and y, as OpenCV's cv::Point does in the GAMES101 report: that "
+                "paints the pixel whose corner is nearest, half a pixel off. As the lesson says, "
+                "the pixel whose square holds the point (x, y) is (int(x), int(y)) for x, y >= 0: "
+                "the whole parts, not the rounded values."
+            ),
             lambda control_points, window: _loop_pixels(
                 control_points, window.shape, _every_t(), "round"
             ),
             matches=pixels_match,
         ),
         Mistake(
-            "x and y swapped",
-            "you wrote window[x, y]: an image is indexed by row first, window[y, x].",
+            _("x and y swapped"),
+            _("you wrote window[x, y]: an image is indexed by row first, window[y, x]."),
             lambda control_points, window: _loop_pixels(
                 control_points, window.shape[1::-1], _every_t()
             )[:, ::-1],
             matches=pixels_match,
         ),
+        Mistake(_("a negative index wraps around"), wraps, _wrapped("trunc"), matches=pixels_match),
+        Mistake(_("a negative index wraps around"), wraps, _wrapped("floor"), matches=pixels_match),
         Mistake(
-            "a negative index wraps around",
-            "a pixel with x < 0 or y < 0 appeared on the other side of the window: Python "
-            "counts a negative index from the end. Skip every point off the window.",
-            _wrapped,
-            matches=pixels_match,
-        ),
-        Mistake(
-            "a step of 0.01",
-            "your step is ten times too coarse: 101 points leave gaps on a curve about 1400 "
-            "pixels long. Use 0.001, as the handout does.",
+            _("a step of 0.01"),
+            _(
+                "your step is ten times too coarse: 101 points leave gaps on a curve about 1400 "
+                "pixels long. Use 0.001, as the handout does."
+            ),
             lambda control_points, window: _loop_pixels(
                 control_points, window.shape, np.arange(101) / 100
             ),
@@ -471,26 +605,32 @@ def _bezier_mistakes() -> list[Mistake]:
 
 
 def _bezier_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
-    return pixel_picture(expected, _pixels_of(given), title="around the first difference")
+    return pixel_picture(expected, _pixels_of(given), title=_("around the first difference"))
 
 
 def _bezier_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
     case, expected, given = results[0]
     reference = np.zeros(case["window"].shape)
     reference[expected[:, 1], expected[:, 0]] = GREEN
-    return side_by_side(reference, given.window, ("expected", "your window"), shrink="max")
+    return side_by_side(reference, given.window, (_("expected"), _("your window")), shrink="max")
 
 
 BEZIER_HINTS = register_hints(
     "bezier",
     Hints(
-        where="look at the values t takes (the first and the last), at which pixel each point "
-        "lands in, and at points off the window.",
-        more="t must run from 0 to exactly 1 in steps of 0.001; the pixel holding (x, y) has "
-        "the whole parts of x and y, rows first in the window; a point with x or y below 0, "
-        "or at width or height and beyond, is skipped.",
-        recipe="for k in range(1001): t = k / 1000; x, y = recursive_bezier(control_points, "
-        "t); if 0 <= x < width and 0 <= y < height: window[int(y), int(x)] = (0, 1, 0).",
+        where=N_(
+            "look at the values t takes (the first and the last), at which pixel each point "
+            "lands in, and at points off the window."
+        ),
+        more=N_(
+            "t must run from 0 to exactly 1 in steps of 0.001; the pixel holding (x, y) has "
+            "the whole parts of x and y, rows first in the window; a point with x or y below "
+            "0, or at width or height and beyond, is skipped."
+        ),
+        recipe=N_(
+            "for k in range(1001): t = k / 1000; x, y = recursive_bezier(control_points, "
+            "t); if 0 <= x < width and 0 <= y < height: window[int(y), int(x)] = (0, 1, 0)."
+        ),
     ),
 )
 
@@ -522,12 +662,12 @@ def bezier(function: Callable[..., Any]) -> CheckResult:
         compare=_same_painting,
         convert=_Painting,
         hint=BEZIER_HINTS,
-        mistakes=_bezier_mistakes(),
+        mistakes=_bezier_mistakes(function),
         difference=_painting_difference,
         picture=_bezier_picture,
         show=_show_painting,
-        answer=lambda returned, arguments: arguments[1],
+        answer=lambda returned, arguments: (arguments[1], returned),
         writable=("window",),
-        forbidden=LIBRARY_CURVES,
+        forbidden=library_curves(),
         pass_picture=_bezier_pass_picture,
     )

@@ -25,24 +25,35 @@ from typing import Any
 import numpy as np
 
 from course import poisson, poisson_solvers
-from course.check.base import CheckResult, Hints, Mistake, close, hint, register_hints, run_cases
+from course.check.base import CheckResult, Mistake, close, hint, register_hints, run_cases
+from course.check.hints import Hints
 from course.check.pictures import image_picture, side_by_side
+from course.i18n import N_, _
 from course.poisson_problem import image_of, planes_of
 from course.poisson_solvers import jacobi_sweeps, residual
 
 __all__ = ["hint", "jacobi_sweep", "poisson_boundary"]
 
-_LIBRARY = {
-    function: f"your function calls {function.__module__}.{function.__name__}, the library's "
-    "own answer: this exercise writes it"
-    for function in (
-        poisson.correction_boundary,
-        poisson.seamless_clone,
-        poisson.solve,
-        poisson_solvers.jacobi_sweeps,
-        poisson_solvers.iterate,
-    )
-}
+_LIBRARY_FUNCTIONS = (
+    poisson.correction_boundary,
+    poisson.seamless_clone,
+    poisson.solve,
+    poisson_solvers.jacobi_sweeps,
+    poisson_solvers.iterate,
+)
+
+
+def _library() -> dict[Any, str]:
+    """The library's own answers, each with what a student who calls it is told."""
+    return {
+        function: _(
+            "your function calls {function}, the library's own answer: this exercise writes it"
+        ).format(function=f"{function.__module__}.{function.__name__}")
+        for function in _LIBRARY_FUNCTIONS
+    }
+
+
+_LIBRARY = _library()
 
 
 def _shown(g: Any) -> np.ndarray:
@@ -80,38 +91,45 @@ def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
     --------
     >>> zeros = lambda background, foreground, offset: foreground * 0
     >>> print(poisson_boundary(zeros))  # doctest: +ELLIPSIS
-    FAIL poisson_boundary: case 1 is wrong
+    FAIL boundary_exercise: case 1 is wrong
     ...
     """
     return run_cases(
-        "poisson_boundary",
+        "boundary_exercise",
         student,
         _cases(),
         poisson.correction_boundary,
         close(atol=1e-12, rtol=0),
         convert=lambda g: np.asarray(g, dtype=float),
         hint=BOUNDARY_HINTS,
-        mistakes=BOUNDARY_MISTAKES,
+        mistakes=_boundary_mistakes(),
         picture=_boundary_picture,
-        forbidden=_LIBRARY,
+        forbidden=_library(),
         pass_picture=lambda results: side_by_side(
-            _shown(results[2][1]), _shown(results[2][2]), ("expected g", "your g")
+            _shown(results[2][1]), _shown(results[2][2]), (_("expected g"), _("your g"))
         ),
     )
 
 
 BOUNDARY_HINTS = register_hints(
-    "poisson_boundary",
+    "boundary_exercise",
     Hints(
-        where="look at the pixels of the foreground's outer ring, at where they sit in the "
-        "background, and at the inside.",
-        more="offset = (x, y) puts the foreground's top-left pixel at background[y, x]; on "
-        "the ring, g is what the background has there minus the foreground; inside, 0. The "
-        "background and the foreground stay as they were.",
-        recipe="window = background[y : y + height, x : x + width]; g = window - foreground "
-        "(a new array); g[1:-1, 1:-1] = 0.",
+        where=N_(
+            "look at the pixels of the foreground's outer ring, at where they sit in the "
+            "background, and at the inside."
+        ),
+        more=N_(
+            "offset = (x, y) puts the foreground's top-left pixel at background[y, x]; on "
+            "the ring, g is what the background has there minus the foreground; inside, 0. The "
+            "background and the foreground stay as they were."
+        ),
+        recipe=N_(
+            "window = background[y : y + height, x : x + width]; g = window - foreground "
+            "(a new array); g[1:-1, 1:-1] = 0."
+        ),
     ),
     "boundary_exercise",
+    "poisson_boundary",
 )
 
 
@@ -120,7 +138,7 @@ def _boundary_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
     return image_picture(
         (np.asarray(expected, dtype=float) + 1) / 2,
         (np.asarray(given, dtype=float) + 1) / 2,
-        title="g, shown as (g + 1) / 2: 0 is mid-gray",
+        title=_("g, shown as (g + 1) / 2: 0 is mid-gray"),
     )
 
 
@@ -128,30 +146,41 @@ def _swapped_offset(background: Any, foreground: Any, offset: Any) -> np.ndarray
     return poisson.correction_boundary(background, foreground, (offset[1], offset[0]))
 
 
-BOUNDARY_MISTAKES = (
-    Mistake(
-        "the sign flipped",
-        "your ring holds foreground - background. The report's formula is right: "
-        "g = background - foreground, so that foreground + g is the background on the ring.",
-        lambda background, foreground, offset: (
-            -poisson.correction_boundary(background, foreground, offset)
+def _boundary_mistakes() -> tuple[Mistake, ...]:
+    """The known mistakes, in the current language."""
+    return (
+        Mistake(
+            _("the sign flipped"),
+            _(
+                "your ring holds foreground - background. The report's formula is right: "
+                "g = background - foreground, so that foreground + g is the background on the ring."
+            ),
+            lambda background, foreground, offset: (
+                -poisson.correction_boundary(background, foreground, offset)
+            ),
         ),
-    ),
-    Mistake(
-        "the background alone",
-        "your ring holds the background, without subtracting the foreground: the result "
-        "foreground + g is then the background plus the foreground on the ring.",
-        lambda background, foreground, offset: poisson.correction_boundary(
-            background, np.zeros_like(foreground), offset
+        Mistake(
+            _("the background alone"),
+            _(
+                "your ring holds the background, without subtracting the foreground: the result "
+                "foreground + g is then the background plus the foreground on the ring."
+            ),
+            lambda background, foreground, offset: poisson.correction_boundary(
+                background, np.zeros_like(foreground), offset
+            ),
         ),
-    ),
-    Mistake(
-        "x and y swapped",
-        "you read the background at (offset[1], offset[0]): offset is (x, y), the column "
-        "first, and background[y, x] is row y.",
-        _swapped_offset,
-    ),
-)
+        Mistake(
+            _("x and y swapped"),
+            _(
+                "you read the background at (offset[1], offset[0]): offset is (x, y), the column "
+                "first, and background[y, x] is row y."
+            ),
+            _swapped_offset,
+        ),
+    )
+
+
+BOUNDARY_MISTAKES = _boundary_mistakes()
 
 
 def _sweep_cases() -> list[dict[str, Any]]:
@@ -168,6 +197,8 @@ def _sweep_cases() -> list[dict[str, Any]]:
         {"g": ring(7, 12), "tolerance": 1e-6},
         {"g": ring(6, 9, 3), "tolerance": 1e-4},
         {"g": np.zeros((5, 5)), "tolerance": 1e-6},  # already harmonic: no sweep at all
+        # The residual is exactly the tolerance, 4: not below it, so one sweep (to zeros).
+        {"g": np.array([[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0]]), "tolerance": 4.0},
     ]
 
 
@@ -183,7 +214,7 @@ def _jacobi_until(g: Any, tolerance: float, late: int = 0) -> tuple[np.ndarray, 
     sweeps = jacobi_sweeps(planes, region, source)
     while residual(u, region, source) >= tolerance:
         u, count = next(sweeps), count + 1
-    for _ in range(late):
+    for _late in range(late):
         u, count = next(sweeps), count + 1
     return image_of(u, image), count
 
@@ -223,15 +254,27 @@ def _sweep_difference(expected: Any, given: Any) -> str:
         g, sweeps = given
         g = np.asarray(g, dtype=float)
     except (TypeError, ValueError):
-        return "return two things: the array g and the number of sweeps"
-    parts = [f"sweeps: expected {want_sweeps}, given {sweeps}"]
+        return _("return two things: the array g and the number of sweeps")
+    parts = [
+        _("sweeps: expected {expected}, given {given}").format(expected=want_sweeps, given=sweeps)
+    ]
     if g.shape != want_g.shape:
-        parts.append(f"g: expected shape {want_g.shape}, given {g.shape}")
+        parts.append(
+            _("g: expected shape {expected}, given {given}").format(
+                expected=want_g.shape, given=g.shape
+            )
+        )
     else:
         worst = np.unravel_index(np.abs(g - want_g).argmax(), g.shape)
         parts.append(
-            f"largest difference in g at [row, column] {list(map(int, worst[:2]))}: "
-            f"expected {want_g[worst]:.6g}, given {g[worst]:.6g}"
+            _(
+                "largest difference in g at [row, column] {where}: expected {expected}, "
+                "given {given}"
+            ).format(
+                where=list(map(int, worst[:2])),
+                expected=f"{want_g[worst]:.6g}",
+                given=f"{g[worst]:.6g}",
+            )
         )
     return "; ".join(parts)
 
@@ -242,16 +285,20 @@ def _sweep_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | N
     except (TypeError, ValueError, IndexError):
         return None
     return image_picture(
-        (expected[0] + 1) / 2, (g + 1) / 2, title="g after the sweeps, shown as (g + 1) / 2"
+        (expected[0] + 1) / 2, (g + 1) / 2, title=_("g after the sweeps, shown as (g + 1) / 2")
     )
 
 
 def _show_sweeps(answer: Any) -> str:
     try:
         g, sweeps = answer
-        return f"g of shape {np.shape(g)} after {sweeps} sweeps"
+        return _("g of shape {shape} after {sweeps} sweeps").format(
+            shape=np.shape(g), sweeps=sweeps
+        )
     except (TypeError, ValueError):
-        return f"{type(answer).__name__} (expected a pair: g and the number of sweeps)"
+        return _("{kind} (expected a pair: g and the number of sweeps)").format(
+            kind=type(answer).__name__
+        )
 
 
 def _until_change(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
@@ -276,39 +323,53 @@ def _fixed_count(expected: Any, given: Any) -> bool:
         return False
 
 
-SWEEP_MISTAKES = (
-    Mistake(
-        "in place: Gauss-Seidel",
-        "your sweep writes g as it goes, so each pixel already sees its new upper and left "
-        "neighbours: that is Gauss-Seidel, and so is the lab's loop, whatever its comment "
-        "says. Jacobi computes every new value from the old array (a copy, or all four "
-        "shifted slices at once).",
-        _gauss_seidel_until,
-    ),
-    Mistake(
-        "a fixed number of sweeps",
-        "you ran a fixed count of sweeps, as the lab's loop runs 8000: the exercise stops as "
-        "soon as the residual is below the tolerance, and returns how many sweeps that took.",
-        lambda g, tolerance: (np.asarray(g, dtype=float), 0),
-        matches=_fixed_count,
-    ),
-    # Before the stop on the change: on an array already harmonic both give one sweep, and
-    # only a loop that sweeps before it tests fails nothing else.
-    Mistake(
-        "one sweep late",
-        "you sweep before you test: the loop must stop as soon as the residual is below the "
-        "tolerance, so an array already within it gets no sweep at all.",
-        lambda g, tolerance: _jacobi_until(g, tolerance, late=1),
-    ),
-    Mistake(
-        "a stop on the change between sweeps",
-        "you stopped when one sweep changed g by less than the tolerance: that change is a "
-        "quarter of the residual, so your loop stops while the residual is still up to four "
-        "times the tolerance. Test the residual, max |up + down + left + right - 4 g| over "
-        "the inside, before each sweep.",
-        _until_change,
-    ),
-)
+def _sweep_mistakes() -> tuple[Mistake, ...]:
+    """The known mistakes, in the current language."""
+    return (
+        Mistake(
+            _("in place: Gauss-Seidel"),
+            _(
+                "your sweep writes g as it goes, so each pixel already sees its new upper and left "
+                "neighbours: that is Gauss-Seidel, and so is the lab's loop, whatever its comment "
+                "says. Jacobi computes every new value from the old array (a copy, or all four "
+                "shifted slices at once)."
+            ),
+            _gauss_seidel_until,
+        ),
+        Mistake(
+            _("a fixed number of sweeps"),
+            _(
+                "you ran a fixed count of sweeps, as the lab's loop runs 8000: the exercise "
+                "stops as soon as the residual is below the tolerance, and returns how many "
+                "sweeps that took."
+            ),
+            lambda g, tolerance: (np.asarray(g, dtype=float), 0),
+            matches=_fixed_count,
+        ),
+        # Before the stop on the change: on an array already harmonic both give one sweep, and
+        # only a loop that sweeps before it tests fails nothing else.
+        Mistake(
+            _("one sweep late"),
+            _(
+                "you sweep before you test: the loop must stop as soon as the residual is below "
+                "the tolerance, so an array already within it gets no sweep at all."
+            ),
+            lambda g, tolerance: _jacobi_until(g, tolerance, late=1),
+        ),
+        Mistake(
+            _("a stop on the change between sweeps"),
+            _(
+                "you stopped when one sweep changed g by less than the tolerance: that change is "
+                "a quarter of the residual, so your loop stops while the residual is still up to "
+                "four times the tolerance. Test the residual, max |up + down + left + right - 4 "
+                "g| over the inside, before each sweep."
+            ),
+            _until_change,
+        ),
+    )
+
+
+SWEEP_MISTAKES = _sweep_mistakes()
 
 
 def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
@@ -327,34 +388,41 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
     'in place: Gauss-Seidel'
     """
     return run_cases(
-        "jacobi_sweep",
+        "jacobi_exercise",
         student,
         _sweep_cases(),
         _jacobi_until,
         _same_sweeps,
         hint=SWEEP_HINTS,
-        mistakes=SWEEP_MISTAKES,
+        mistakes=_sweep_mistakes(),
         difference=_sweep_difference,
         picture=_sweep_picture,
         show=_show_sweeps,
-        forbidden=_LIBRARY,
+        forbidden=_library(),
         pass_picture=lambda results: side_by_side(
-            _shown(results[1][1][0]), _shown(results[1][2][0]), ("expected g", "your g")
+            _shown(results[1][1][0]), _shown(results[1][2][0]), (_("expected g"), _("your g"))
         ),
     )
 
 
 SWEEP_HINTS = register_hints(
-    "jacobi_sweep",
+    "jacobi_exercise",
     Hints(
-        where="look at when your loop tests the residual (before or after a sweep), at what "
-        "each sweep reads, and at what you count.",
-        more="before each sweep, the residual max |up + down + left + right - 4 g| over the "
-        "inside is compared with the tolerance; a sweep computes every new inside value "
-        "from the previous array only, and the ring never changes. Work on a copy of g.",
-        recipe="g = np.array(g, dtype=float); for sweeps in itertools.count(): n = the sum of "
-        "the four shifted slices; if max |n - 4 g[1:-1, 1:-1]| < tolerance: return g, sweeps; "
-        "g[1:-1, 1:-1] = n / 4.",
+        where=N_(
+            "look at when your loop tests the residual (before or after a sweep), at what "
+            "each sweep reads, and at what you count."
+        ),
+        more=N_(
+            "before each sweep, the residual max |up + down + left + right - 4 g| over the "
+            "inside is compared with the tolerance; a sweep computes every new inside value "
+            "from the previous array only, and the ring never changes. Work on a copy of g."
+        ),
+        recipe=N_(
+            "g = np.array(g, dtype=float); for sweeps in itertools.count(): n = the sum of "
+            "the four shifted slices; if max |n - 4 g[1:-1, 1:-1]| < tolerance: return g, sweeps; "
+            "g[1:-1, 1:-1] = n / 4."
+        ),
     ),
     "jacobi_exercise",
+    "jacobi_sweep",
 )

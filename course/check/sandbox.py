@@ -37,6 +37,8 @@ from typing import Any
 
 import numpy as np
 
+from course.i18n import _
+
 UNCHECKED = True  # see the module docstring
 
 __all__ = [
@@ -53,8 +55,14 @@ __all__ = [
     "student_line",
 ]
 
-#: Seconds one case may run before it is stopped as a loop that does not end.
+#: Seconds of computing one case may take before it is stopped as a loop that does not end.
+#: Counted on the case's own thread's CPU clock where the system has one (Linux, macOS), so a
+#: busy machine (a class on one server, a test run beside others) never stops a right answer;
+#: on the wall clock elsewhere.
 TIME_BUDGET = 3.0
+#: A case that waits rather than computes (``time.sleep``, ``input``) is stopped after this many
+#: times the budget on the wall clock.
+_WALL_FACTOR = 10
 #: Bytes one case may allocate (and keep) before it is stopped as memory that keeps growing.
 MEMORY_BUDGET = 512 * 2**20
 #: How often the watchdog looks, and how long it waits before raising again if it is caught.
@@ -103,13 +111,17 @@ class _Watchdog(threading.Thread):
             self.exited = True
 
     def _watch(self) -> None:
-        start = time.monotonic()
+        computing = _cpu_clock(self.target)
+        start, start_computing = time.monotonic(), computing()
         next_raise = 0.0
         while not self.done and _ACTIVE[0] is self:
             time.sleep(_POLL)
             now = time.monotonic()
             kind = None
-            if now - start > self.seconds:
+            if (
+                computing() - start_computing > self.seconds
+                or now - start > self.seconds * _WALL_FACTOR
+            ):
                 kind = "time"
             elif tracemalloc.is_tracing():
                 current, _ = tracemalloc.get_traced_memory()
@@ -130,6 +142,16 @@ class _Watchdog(threading.Thread):
             time.sleep(_POLL / 10)
         if self.kind is not None:
             _drain(self.target)
+
+
+def _cpu_clock(thread_id: int) -> Callable[[], float]:
+    """The CPU time of thread ``thread_id`` as a function, or the wall clock where there is none."""
+    try:
+        clock = time.pthread_getcpuclockid(thread_id)
+        time.clock_gettime(clock)
+    except (AttributeError, OSError, OverflowError):
+        return time.monotonic
+    return lambda: time.clock_gettime(clock)
 
 
 class _Drained(BaseException):
@@ -161,8 +183,10 @@ def _raise_in(thread_id: int, exception: type[BaseException] | None) -> None:
 
 def _reason(kind: str, seconds: float, memory: int) -> str:
     if kind == "memory":
-        return f"memory kept growing (past {memory / 2**20:g} MiB)"
-    return f"the loop did not stop within {seconds:g} s"
+        return _("memory kept growing (past {mebibytes} MiB)").format(
+            mebibytes=f"{memory / 2**20:g}"
+        )
+    return _("the loop did not stop within {seconds} s").format(seconds=f"{seconds:g}")
 
 
 def run_bounded(
@@ -217,7 +241,7 @@ def run_bounded(
 
 def _stop(watchdog: _Watchdog) -> None:
     """Stop the watchdog, even if its last raise arrives while this runs."""
-    for _ in range(100):
+    for _attempt in range(100):
         try:
             watchdog.stop()
             return
@@ -258,14 +282,14 @@ def changed_argument(
     for name, old, new in zip(names, before, after, strict=True):
         where = _first_change(old, new)
         if where is not None:
-            return f"{name}: {where}"
+            return _("{name}: {where}").format(name=name, where=where)
     return None
 
 
 def _first_change(old: Any, new: Any) -> str | None:
     if isinstance(old, np.ndarray):
         if not isinstance(new, np.ndarray) or new.shape != old.shape:
-            return f"its shape was {old.shape}, is now {np.shape(new)}"
+            return _("its shape was {old}, is now {new}").format(old=old.shape, new=np.shape(new))
         if old.dtype.kind in "fc":
             differ = ~((old == new) | (np.isnan(old) & np.isnan(new)))
         else:
@@ -274,20 +298,24 @@ def _first_change(old: Any, new: Any) -> str | None:
             return None
         index = tuple(int(i) for i in np.argwhere(differ)[0])
         where = "[" + ", ".join(map(str, index)) + "]"
-        return f"element {where} was {old[index]:.6g}, is now {new[index]:.6g}"
+        return _("element {where} was {old}, is now {new}").format(
+            where=where, old=f"{old[index]:.6g}", new=f"{new[index]:.6g}"
+        )
     if isinstance(old, (list, tuple)):
         if not isinstance(new, type(old)) or len(new) != len(old):
-            return f"it was {_short(old)}, is now {_short(new)}"
+            return _("it was {old}, is now {new}").format(old=_short(old), new=_short(new))
         for index, (a, b) in enumerate(zip(old, new, strict=True)):
             inner = _first_change(a, b)
             if inner is not None:
-                return f"item [{index}]: {inner}"
+                return _("item [{index}]: {inner}").format(index=index, inner=inner)
         return None
     try:
         same = bool(old == new)
     except Exception:
         return None
-    return None if same else f"it was {_short(old)}, is now {_short(new)}"
+    if same:
+        return None
+    return _("it was {old}, is now {new}").format(old=_short(old), new=_short(new))
 
 
 def _short(value: Any) -> str:
@@ -320,10 +348,14 @@ def arity_problem(function: Callable[..., Any], parameters: tuple[str, ...]) -> 
         if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
     ]
     count = len(parameters)
-    plural = "parameter" if count == 1 else "parameters"
-    return (
-        f"expected {count} {plural}, ({', '.join(parameters)}); your function takes "
-        f"{len(names)}, ({', '.join(names)})"
+    if count == 1:
+        text = _("expected {count} parameter, ({expected}); your function takes {taken}, ({names})")
+    else:
+        text = _(
+            "expected {count} parameters, ({expected}); your function takes {taken}, ({names})"
+        )
+    return text.format(
+        count=count, expected=", ".join(parameters), taken=len(names), names=", ".join(names)
     )
 
 
@@ -374,8 +406,23 @@ def student_line(error: BaseException) -> str | None:
         return None
     frame = own[-1]
     text = (frame.line or "").strip()
-    where = f"line {frame.lineno} of {frame.name}"
+    if _is_cell(frame.filename):
+        # IPython compiles each cell on its own, so the line number counts from the cell's top.
+        where = _("line {line} of your cell, in {function}").format(
+            line=frame.lineno, function=frame.name
+        )
+    else:
+        where = _("line {line} of {function}").format(line=frame.lineno, function=frame.name)
     return f"{where}: {text}" if text else where
+
+
+def _is_cell(filename: str) -> bool:
+    """Whether ``filename`` is a notebook cell's: ipykernel's ``.../ipykernel_N/M.py``, or older
+    IPython's ``<ipython-input-N-...>``."""
+    if filename.startswith("<ipython-input-"):
+        return True
+    folder = os.path.basename(os.path.dirname(filename))
+    return folder.startswith("ipykernel_") and filename.endswith(".py")
 
 
 def describe_function(function: Any) -> str:

@@ -20,8 +20,10 @@ from typing import Any
 import numpy as np
 
 from course import resample
-from course.check.base import CheckResult, Hints, Mistake, close, hint, register_hints, run_cases
+from course.check.base import CheckResult, Mistake, close, hint, register_hints, run_cases
+from course.check.hints import Hints
 from course.check.pictures import image_picture, side_by_side
+from course.i18n import N_, _
 from course.resample import (
     bilinear,
     supersample,
@@ -31,16 +33,25 @@ from course.resample import (
 
 __all__ = ["bilinear_lookup", "hint", "image_supersampling"]
 
-_LIBRARY = {
-    function: f"your function calls course.resample.{function.__name__}, the library's own "
-    "answer: this exercise writes it"
-    for function in (
-        resample.bilinear,
-        resample.supersample,
-        resample.supersample_shifted,
-        resample.supersample_without_offset,
-    )
-}
+_LIBRARY_FUNCTIONS = (
+    resample.bilinear,
+    resample.supersample,
+    resample.supersample_shifted,
+    resample.supersample_without_offset,
+)
+
+
+def _library() -> dict[Any, str]:
+    """The library's own answers, each with what a student who calls it is told."""
+    return {
+        function: _(
+            "your function calls {function}, the library's own answer: this exercise writes it"
+        ).format(function=f"course.resample.{function.__name__}")
+        for function in _LIBRARY_FUNCTIONS
+    }
+
+
+_LIBRARY = _library()
 
 
 def _as_image(value: Any) -> np.ndarray:
@@ -98,37 +109,48 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
     """
     mistakes = [
         Mistake(
-            "the scale made whole",
-            "you divided the sizes with //: 25 // 3 is 8, not 8.33, so the samples do not "
-            "cover the input. The scale W / w is a float.",
+            _("the scale made whole"),
+            _(
+                "you divided the sizes with //: 25 // 3 is 8, not 8.33, so the samples do not "
+                "cover the input. The scale W / w is a float."
+            ),
             lambda image, out_shape, rate: _variant(image, out_shape, rate, whole_scale=True),
         ),
         Mistake(
-            "divided by the rate, not its square",
-            "your pixels are rate times too bright: there are rate x rate samples per output "
-            "pixel, so their mean divides by rate squared.",
+            _("divided by the rate, not its square"),
+            _(
+                "your pixels are rate times too bright: there are rate x rate samples per output "
+                "pixel, so their mean divides by rate squared."
+            ),
             lambda image, out_shape, rate: _variant(image, out_shape, rate, divide="rate"),
         ),
         Mistake(
-            "the report's two shifts",
-            "your samples start at each sub-pixel's corner, i / rate, and your lookup takes "
-            "pixel centres at whole numbers (ix = int(fx)), as the lab report does: the picture "
-            "moves by (1/s - 1/rate) / 2 output pixels. Sample at (i + 0.5) / rate, and read "
-            "pixel k as centred at k + 0.5.",
+            _("the report's two shifts"),
+            _(
+                "your samples start at each sub-pixel's corner, i / rate, and your lookup takes "
+                "pixel centres at whole numbers (ix = int(fx)), as the lab report does: the "
+                "picture moves by (1/s - 1/rate) / 2 output pixels. Sample at (i + 0.5) / rate, "
+                "and read pixel k as centred at k + 0.5."
+            ),
             supersample_without_offset,
         ),
         Mistake(
-            "samples at the sub-pixel corners",
-            "your samples sit at (c + i / rate), each sub-pixel's corner, so the picture moves "
-            "half a sample spacing up and left. Sample at (c + (i + 0.5) / rate).",
+            _("samples at the sub-pixel corners"),
+            _(
+                "your samples sit at (c + i / rate), each sub-pixel's corner, so the picture moves "
+                "half a sample spacing up and left. Sample at (c + (i + 0.5) / rate)."
+            ),
             lambda image, out_shape, rate: supersample_shifted(
                 image, out_shape, rate, sample_offset=0.0
             ),
         ),
         Mistake(
-            "pixel centres at whole numbers",
-            "your bilinear lookup takes pixel k to sit at x = k (ix = int(fx), weight fx - ix): "
-            "its centre is at k + 0.5, so subtract 0.5 before splitting x into ix and the weight.",
+            _("pixel centres at whole numbers"),
+            _(
+                "your bilinear lookup takes pixel k to sit at x = k (ix = int(fx), weight fx - "
+                "ix): its centre is at k + 0.5, so subtract 0.5 before splitting x into ix and "
+                "the weight."
+            ),
             lambda image, out_shape, rate: supersample_shifted(
                 image, out_shape, rate, pixel_centre=0.0
             ),
@@ -136,14 +158,16 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
     ]
 
     def picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
-        return image_picture(expected, given, title=f"case: rate {case['rate']}")
+        return image_picture(
+            expected, given, title=_("case: rate {rate}").format(rate=case["rate"])
+        )
 
     def pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
         _, expected, given = results[3]  # the 25 x 25 noise shrunk to 3 x 3
-        return side_by_side(expected, given, ("expected", "your supersample"))
+        return side_by_side(expected, given, (_("expected"), _("your supersample")))
 
     return run_cases(
-        "Supersampling",
+        "supersample",
         student,
         _cases(),
         supersample,
@@ -152,23 +176,31 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
         hint=SUPERSAMPLE_HINTS,
         mistakes=mistakes,
         picture=picture,
-        forbidden=_LIBRARY,
+        forbidden=_library(),
         pass_picture=pass_picture,
     )
 
 
 SUPERSAMPLE_HINTS = register_hints(
-    "Supersampling",
+    "supersample",
     Hints(
-        where="look at where your samples sit inside each output pixel's square, and at "
-        "what you divide the sum by.",
-        more="output pixel (r, c) covers the input from c W / w to (c + 1) W / w (a float "
-        "scale); its rate x rate samples sit at the centres of a rate x rate grid on that "
-        "square, each read with your bilinear_sample, and the pixel is their mean.",
-        recipe="for each output pixel and i, j in range(rate): x = (c + (i + 0.5) / rate) "
-        "W / w, y = (r + (j + 0.5) / rate) H / h; add bilinear_sample(image, x, y) / rate**2.",
+        where=N_(
+            "look at where your samples sit inside each output pixel's square, and at "
+            "what you divide the sum by."
+        ),
+        more=N_(
+            "output pixel (r, c) covers the input from c W / w to (c + 1) W / w (a float "
+            "scale); its rate x rate samples sit at the centres of a rate x rate grid on that "
+            "square, each read with your bilinear_sample, and the pixel is their mean."
+        ),
+        recipe=N_(
+            "for each output pixel and i, j in range(rate): x = (c + (i + 0.5) / rate) "
+            "W / w, y = (r + (j + 0.5) / rate) H / h; add bilinear_sample(image, x, y) / rate**2."
+        ),
     ),
     "supersample",
+    "image_supersampling",
+    "supersampling",
 )
 
 
@@ -176,7 +208,7 @@ def _lookup_cases() -> list[dict[str, Any]]:
     gray = np.array([[0.0, 0.25, 1.0, 0.5], [1.0, 0.0, 0.75, 0.25], [0.5, 0.5, 0.0, 1.0]])
     colour = np.random.default_rng(3).random((2, 3, 3))
     points = [
-        (1.3, 0.9),  # between four centres: all four weights matter
+        (1.3, 0.8),  # between four centres: all four weights matter
         (0.5, 0.5),  # on a centre: that pixel alone
         (2.0, 1.5),  # midway between two centres in x, on a row of centres
         (3.2, 2.8),  # beyond the last centres: clamped to the corner pixel
@@ -205,35 +237,42 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
     """
     mistakes = [
         Mistake(
-            "no blending: the nearest pixel",
-            "you returned the pixel the point falls in; blend the four nearest centres, each "
-            "weighted by how near the point is to it along x and along y.",
+            _("no blending: the nearest pixel"),
+            _(
+                "you returned the pixel the point falls in; blend the four nearest centres, each "
+                "weighted by how near the point is to it along x and along y."
+            ),
             lambda image, x, y: image[
                 int(np.clip(np.floor(y), 0, image.shape[0] - 1)),
                 int(np.clip(np.floor(x), 0, image.shape[1] - 1)),
             ],
         ),
         Mistake(
-            "no clamp at the right or bottom edge",
-            "beyond the last pixel centres your blend reaches past the image (or extrapolates): "
-            "a point right of the last centre, or below it, takes the edge value.",
+            _("no clamp at the right or bottom edge"),
+            _(
+                "beyond the last pixel centres your blend reaches past the image (or "
+                "extrapolates): a point right of the last centre, or below it, takes the edge "
+                "value."
+            ),
             _unclamped,
         ),
         Mistake(
-            "pixel centres at whole numbers",
-            "you read pixel k as sitting at x = k, as the lab report's ix = int(fx) does: its "
-            "centre is at k + 0.5. Subtract 0.5 from x and y before taking the whole and the "
-            "fractional parts.",
+            _("pixel centres at whole numbers"),
+            _(
+                "you read pixel k as sitting at x = k, as the lab report's ix = int(fx) does: its "
+                "centre is at k + 0.5. Subtract 0.5 from x and y before taking the whole and the "
+                "fractional parts."
+            ),
             lambda image, x, y: bilinear(image, x + 0.5, y + 0.5),
         ),
         Mistake(
-            "x and y swapped",
-            "you read image[x, y]: an image is indexed by row first, image[y, x].",
-            lambda image, x, y: bilinear(np.swapaxes(image, 0, 1), y, x),
+            _("x and y swapped"),
+            _("you read image[x, y]: an image is indexed by row first, image[y, x]."),
+            lambda image, x, y: bilinear(image, y, x),
         ),
     ]
     return run_cases(
-        "bilinear",
+        "bilinear_sample",
         student,
         _lookup_cases(),
         bilinear,
@@ -241,7 +280,7 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
         _as_image,
         hint=BILINEAR_HINTS,
         mistakes=mistakes,
-        forbidden=_LIBRARY,
+        forbidden=_library(),
     )
 
 
@@ -258,16 +297,23 @@ def _unclamped(image: Any, x: float, y: float) -> np.ndarray:
 
 
 BILINEAR_HINTS = register_hints(
-    "bilinear",
+    "bilinear_sample",
     Hints(
-        where="look at where your code puts pixel centres, and at points near the image's edges.",
-        more="pixel (r, c) is centred at (c + 0.5, r + 0.5); the point lies between four "
-        "such centres and is their blend, each weighted by nearness along x and along y. A "
-        "point beyond the outer centres, on any side, takes the edge value.",
-        recipe="u = x - 0.5, v = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the centres "
-        "are floor(u), floor(u) + 1 and floor(v), floor(v) + 1 (kept inside the image); the "
-        "weights are u - floor(u) and v - floor(v).",
+        where=N_(
+            "look at where your code puts pixel centres, and at points near the image's edges."
+        ),
+        more=N_(
+            "pixel (r, c) is centred at (c + 0.5, r + 0.5); the point lies between four "
+            "such centres and is their blend, each weighted by nearness along x and along y. A "
+            "point beyond the outer centres, on any side, takes the edge value."
+        ),
+        recipe=N_(
+            "u = x - 0.5, v = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the centres "
+            "are floor(u), floor(u) + 1 and floor(v), floor(v) + 1 (kept inside the image); the "
+            "weights are u - floor(u) and v - floor(v)."
+        ),
     ),
     "bilinear_sample",
     "bilinear_lookup",
+    "bilinear",
 )

@@ -1,0 +1,194 @@
+"""The checkers speak Chinese: the reports of lessons 01, 02, 04, 05 and 08's checkers, with
+no sentence of ours left in English.
+
+Each checker gets a wrong answer with a known mistake, twice (the second report says more);
+the English report is the reference. Every message of the checkers' own modules (the
+catalog's entries for them, cut at their placeholders) that the English report shows must be
+gone from the Chinese one, which must hold Chinese. The report's frame ("case 1 is wrong",
+"inputs:", "Hint:") comes from course.check.base, whose messages are translated there.
+"""
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+from babel.messages.pofile import read_po
+
+import course
+from course.check import (
+    antialiasing,
+    base,
+    bernstein,
+    de_casteljau,
+    poisson,
+    sandbox,
+    supersampling,
+)
+
+CATALOG = Path(__file__).resolve().parent.parent / "course/locale/zh_CN/LC_MESSAGES/course.po"
+OURS = ("de_casteljau.py", "bernstein.py", "supersampling.py", "antialiasing.py", "poisson.py")
+OURS += ("sandbox.py",)
+CJK = re.compile(r"[\u4e00-\u9fff]")
+
+
+def _fragments() -> set[str]:
+    """Our messages' English, cut at their placeholders, the pieces long enough to be words."""
+    with CATALOG.open("rb") as file:
+        catalog = read_po(file)
+    pieces = set()
+    for message in catalog:
+        if not message.id or not any(
+            path.startswith("course/check/") and path.endswith(OURS)
+            for path, _ in message.locations
+        ):
+            continue
+        for text in message.id if isinstance(message.id, tuple) else (message.id,):
+            pieces.update(p.strip() for p in re.split(r"\{\w*\}", text) if len(p.strip()) >= 12)
+    # The pointer to more help is the report frame's too (course.check.base), in its language.
+    return {p for p in pieces if "check.hint(" not in p}
+
+
+@pytest.fixture(autouse=True)
+def english_after():
+    yield
+    course.use_language("en")
+
+
+def _reversed_level(control_points, t):
+    points = np.asarray(control_points, dtype=float)
+    return t * points[:-1] + (1 - t) * points[1:]
+
+
+def _reversed_point(control_points, t):
+    points = np.asarray(control_points, dtype=float)
+    while len(points) > 1:
+        points = _reversed_level(points, t)
+    return points[0]
+
+
+def _point(control_points, t):
+    points = np.asarray(control_points, dtype=float)
+    while len(points) > 1:
+        points = (1 - t) * points[:-1] + t * points[1:]
+    return points[0]
+
+
+def _copy_painter(control_points, window):
+    window = window.copy()
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = _point(control_points, k / 1000)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x)] = (0, 1, 0)
+    return window
+
+
+def _float_comb(m, n):
+    return 1.0
+
+
+def _whole_centres(image, x, y):
+    image = np.asarray(image, dtype=float)
+    height, width = image.shape[:2]
+    u, v = min(max(x, 0.0), width - 1.0), min(max(y, 0.0), height - 1.0)
+    left, top = min(int(u), width - 2), min(int(v), height - 2)
+    fx, fy = u - left, v - top
+    upper = image[top, left] * (1 - fx) + image[top, left + 1] * fx
+    lower = image[top + 1, left] * (1 - fx) + image[top + 1, left + 1] * fx
+    return upper * (1 - fy) + lower * fy
+
+
+def _divided_by_rate(image, out_shape, rate):
+    image = np.asarray(image, dtype=float)
+    height, width = out_shape
+    result = np.zeros((height, width, *image.shape[2:]))
+    for row in range(height):
+        for column in range(width):
+            for j in range(rate):
+                for i in range(rate):
+                    x = (column + (i + 0.5) / rate) * image.shape[1] / width
+                    y = (row + (j + 0.5) / rate) * image.shape[0] / height
+                    result[row, column] += _centred(image, x, y) / rate
+    return result
+
+
+def _centred(image, x, y):
+    return _whole_centres(image, x - 0.5, y - 0.5)
+
+
+def _one_pixel(x, y):
+    return [(int(x), int(y))], [1.0]
+
+
+def _counting(samples):
+    return np.ones(len(samples))
+
+
+def _flipped_ring(background, foreground, offset):
+    x, y = offset
+    height, width = np.shape(foreground)[:2]
+    g = np.asarray(foreground, dtype=float) - np.asarray(background)[y : y + height, x : x + width]
+    g[1:-1, 1:-1] = 0
+    return g
+
+
+def _sweep_then_test(g, tolerance):
+    g = np.array(g, dtype=float)
+    sweeps = 0
+    while True:
+        g[1:-1, 1:-1] = (g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]) / 4
+        sweeps += 1
+        n = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+        if np.abs(n - 4 * g[1:-1, 1:-1]).max() < tolerance:
+            return g, sweeps
+
+
+CHECKS = [
+    (de_casteljau.next_level, _reversed_level),
+    (de_casteljau.recursive_bezier, _reversed_point),
+    (de_casteljau.bezier, _copy_painter),
+    (bernstein.comb, _float_comb),
+    (bernstein.naive_bezier, _reversed_point),
+    (supersampling.bilinear_lookup, _whole_centres),
+    (supersampling.image_supersampling, _divided_by_rate),
+    (antialiasing.bilinear_splat, _one_pixel),
+    (antialiasing.arc_length_weights, _counting),
+    (poisson.poisson_boundary, _flipped_ring),
+    (poisson.jacobi_sweep, _sweep_then_test),
+]
+
+
+@pytest.mark.parametrize(("checker", "answer"), CHECKS, ids=[c.__name__ for c, _ in CHECKS])
+def test_a_report_in_chinese_keeps_no_english_sentence_of_its_checker(checker, answer, monkeypatch):
+    fragments = _fragments()
+    reports = {}
+    for language in ("en", "zh-CN"):
+        course.use_language(language)
+        monkeypatch.setattr(base, "_FAILURES", base.Counter())
+        first, second = checker(answer), checker(answer)
+        assert not first and first.mistake is not None
+        reports[language] = f"{first}\n{second}"
+    shown = [f for f in fragments if f in reports["en"]]
+    assert shown, "the English report shows none of the checker's own messages"
+    assert CJK.search(reports["zh-CN"])
+    assert [f for f in shown if f in reports["zh-CN"]] == []
+
+
+def test_the_sandbox_speaks_chinese_too():
+    course.use_language("zh-CN")
+    problem = sandbox.arity_problem(lambda p: p, ("control_points", "t"))
+    assert problem == "应有 2 个参数，(control_points, t)；你的函数接受 1 个，(p)"
+    course.use_language("en")
+    assert sandbox.arity_problem(lambda p: p, ("control_points", "t")) == (
+        "expected 2 parameters, (control_points, t); your function takes 1, (p)"
+    )
+
+
+def test_the_hints_follow_the_language_of_the_moment():
+    english = de_casteljau.BEZIER_HINTS.where
+    course.use_language("zh-CN")
+    assert CJK.search(de_casteljau.BEZIER_HINTS.where)
+    assert CJK.search(str(base.hint("bezier")))
+    course.use_language("en")
+    assert de_casteljau.BEZIER_HINTS.where == english

@@ -1,0 +1,66 @@
+"""course.check.sandbox.student_line: the line a student's error came from, as they see it."""
+
+import linecache
+
+import pytest
+
+from course.check import sandbox
+
+
+def _raised_from(filename: str, source: str) -> BaseException:
+    linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
+    namespace: dict = {}
+    exec(compile(source, filename, "exec"), namespace)
+    with pytest.raises(ZeroDivisionError) as caught:
+        namespace["f"](1)
+    return caught.value
+
+
+@pytest.mark.parametrize(
+    "filename", ["/tmp/ipykernel_4242/3141592653.py", "<ipython-input-7-0123456789ab>"]
+)
+def test_an_error_in_a_notebook_cell_is_placed_on_the_cells_own_line(filename):
+    # ipykernel compiles each cell on its own (nbconvert on a real kernel gives "line 6 of your
+    # cell" for an error on the cell's sixth line), so the number counts from the cell's top.
+    error = _raised_from(filename, "x = 1\n\n\ndef f(a):\n    y = 2\n    return a / 0\n")
+    assert sandbox.student_line(error) == "line 6 of your cell, in f: return a / 0"
+
+
+def test_an_error_in_a_file_keeps_the_files_line():
+    error = _raised_from("/tmp/their_module.py", "def f(a):\n    return a / 0\n")
+    assert sandbox.student_line(error) == "line 2 of f: return a / 0"
+
+
+CPU_CLOCK = pytest.mark.skipif(
+    not hasattr(sandbox.time, "pthread_getcpuclockid"), reason="no per-thread CPU clock here"
+)
+
+
+@CPU_CLOCK
+def test_a_case_that_waits_is_not_stopped_by_the_budget_for_computing():
+    # A right answer on a busy machine waits for a core: the budget counts its computing only.
+    def waits():
+        sandbox.time.sleep(0.3)
+        return "done"
+
+    assert sandbox.run_bounded(waits, seconds=0.1) == "done"
+
+
+def test_a_case_that_waits_forever_is_stopped_on_the_wall_clock():
+    def waits_forever():
+        while True:
+            sandbox.time.sleep(0.01)
+
+    with pytest.raises(sandbox.CaseStopped, match=r"did not stop within 0\.02 s"):
+        sandbox.run_bounded(waits_forever, seconds=0.02)
+
+
+def test_a_loop_that_computes_forever_is_stopped():
+    def computes_forever():
+        total = 0
+        while True:
+            total += 1
+
+    with pytest.raises(sandbox.CaseStopped) as stopped:
+        sandbox.run_bounded(computes_forever, seconds=0.05)
+    assert stopped.value.kind == "time"

@@ -20,8 +20,13 @@ TEACHER_SITE := build/site-teacher
 # MathJax for the website's formulas: npm's mathjax package, pinned.
 MATHJAX_VERSION := 3.2.2
 MATHJAX := build/mathjax-$(MATHJAX_VERSION)
-# Where `make nbgrader` writes the nbgrader course folder.
-NBGRADER := build/nbgrader
+# The editions' language: `make lab COURSE_LANG=zh-CN` (lab, teach, app, student, nbgrader,
+# site). Not LANG, which every shell sets for its own messages. English by default.
+COURSE_LANG ?= en
+# The folder of a language's edition inside an English one's: nothing for English.
+LANG_DIR := $(if $(filter-out en,$(COURSE_LANG)),/$(COURSE_LANG),)
+# Where `make nbgrader` writes the nbgrader course folder (build/nbgrader-zh-CN in Chinese).
+NBGRADER := build/nbgrader$(subst /,-,$(LANG_DIR))
 
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
@@ -98,26 +103,26 @@ messages: $(VENV)/.test-installed
 lab: $(VENV)/.lab-installed
 	@echo "make: JupyterLab opens at the course map; its address is printed below, under" \
 		"'Or copy and paste one of these URLs'. Stop it with Ctrl-C, twice."
-	$(BIN)/python -m course lab
+	$(BIN)/python -m course lab --language "$(COURSE_LANG)"
 
 ## teach: for teachers: the solved lessons in notebooks/, in JupyterLab
 teach: $(VENV)/.lab-installed
-	$(BIN)/python -m course lab --teacher
+	$(BIN)/python -m course lab --teacher --language "$(COURSE_LANG)"
 
 ## app: the lessons as apps for a projector: Voila, code hidden, sliders live
+# python -m course app runs voila on notebooks/ (notebooks/zh-CN/ in Chinese), with $(PROMPT).
 app: $(VENV)/.app-installed
-	$(BIN)/voila notebooks/ --no-browser --Voila.ip=127.0.0.1 --port=$(APP_PORT) \
-		--Voila.kernel_websocket_connection_class=$(PROMPT)
+	$(BIN)/python -m course app --language "$(COURSE_LANG)" --port $(APP_PORT)
 
 ## student: write or update the student edition in student/; a student's edits are kept
 student: $(VENV)/.lab-installed
-	$(BIN)/python -m course student --out student
+	$(BIN)/python -m course student --language "$(COURSE_LANG)" --out student$(LANG_DIR)
 
 ## nbgrader: write the nbgrader course folder build/nbgrader/ (see the README, For teachers)
 # Its source/ is rewritten from the lessons; release/, submitted/, the gradebook and an
 # nbgrader_config.py already there are left alone.
 nbgrader: $(VENV)/.grade-installed
-	$(BIN)/python -m course nbgrader --out $(NBGRADER) --force
+	$(BIN)/python -m course nbgrader --language "$(COURSE_LANG)" --out $(NBGRADER) --force
 	@echo "make: the nbgrader course is in $(NBGRADER)/; from there, with .venv/bin on PATH:" \
 		"nbgrader generate_assignment 01_de_casteljau"
 
@@ -225,7 +230,7 @@ HUB_PROXY := $(HUB_DATA)/node_modules/.bin/configurable-http-proxy
 # hub/jupyterhub_config.py is the file a teacher copies to a server (docs/hub.md). The
 # edition is rebuilt at each start; a student's folder only ever gains the files it lacks.
 hub: $(VENV)/.hub-installed $(HUB_PROXY)
-	$(BIN)/python -m course student --out $(HUB_DATA)/student-edition --force
+	$(BIN)/python -m course student --language "$(COURSE_LANG)" --out $(HUB_DATA)/student-edition --force
 	@echo "make: the hub opens at http://127.0.0.1:$(HUB_PORT); log in with any name and" \
 		"the password '$(HUB_PASSWORD)'. Stop it with Ctrl-C."
 	PATH="$(CURDIR)/$(BIN):$$PATH" COURSE_HUB_DATA=$(HUB_DATA) COURSE_HUB_PORT=$(HUB_PORT) \

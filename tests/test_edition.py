@@ -440,3 +440,37 @@ def test_the_published_source_shows_stubs_and_no_solution_and_the_teachers_keeps
     assert (bundled / "tex-mml-chtml.js").is_file()
     assert (bundled / "output" / "chtml" / "fonts" / "woff-v2" / "x.js").is_file()
     assert not (bundled / "sre").exists()
+
+
+def test_the_chinese_student_edition_is_the_english_one_with_the_chinese_text():
+    """The twins go through the same parser: the same stubs, hidden cells and tags."""
+    from course.classroom.notebooks import language_folder
+    from course.i18n import LANGUAGE_LINES
+
+    english_books = notebooks(index=True)
+    chinese_books = notebooks(language_folder(english_books[0].path.parent, "zh-CN"), index=True)
+    assert [book.path.name for book in chinese_books] == [book.path.name for book in english_books]
+    for english_book, chinese_book in zip(english_books, chinese_books, strict=True):
+        english = student_notebook(json.loads(english_book.path.read_text(encoding="utf-8")))
+        chinese = student_notebook(json.loads(chinese_book.path.read_text(encoding="utf-8")))
+        assert len(chinese["cells"]) == len(english["cells"]), chinese_book.path.name
+        first_code = True
+        for ours, theirs in zip(chinese["cells"], english["cells"], strict=True):
+            assert (ours["cell_type"], ours["metadata"]) == (
+                theirs["cell_type"],
+                theirs["metadata"],
+            )
+            if ours["cell_type"] != "code":
+                continue
+            source = "".join(ours["source"])
+            if first_code:
+                assert source.startswith(LANGUAGE_LINES), chinese_book.path.name
+                source, first_code = source[len(LANGUAGE_LINES) :], False
+            assert source == "".join(theirs["source"]), (chinese_book.path.name, ours["id"])
+            assert ours["outputs"] == [] and ours["execution_count"] is None
+        stubs = sum(STUB_LINE in "".join(cell["source"]) for cell in chinese["cells"])
+        assert stubs == sum(STUB_LINE in "".join(cell["source"]) for cell in english["cells"])
+        text = "".join(
+            "".join(cell["source"]) for cell in chinese["cells"] if cell["cell_type"] == "markdown"
+        )
+        assert sum("\u4e00" <= letter <= "\u9fff" for letter in text) > 100, chinese_book.path.name

@@ -152,10 +152,14 @@ fuzz: $(VENV)/.test-installed
 ## site: build the course's website in build/site/: the student edition, safe to publish
 # Exercises show their stubs; every other cell keeps its committed output (the notebooks are
 # not re-executed). MathJax is bundled from its npm package, so formulas render offline.
+# The Chinese lessons are a second build into its zh-CN/ folder; every page links its twin.
 site: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
 	$(BIN)/python site/stage.py --mathjax $(MATHJAX)/es5 build/site-source
 	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site build/site-source $(SITE)
-	@echo "make: the website is in $(SITE)/; open $(SITE)/index.html"
+	$(BIN)/python site/stage.py --language zh-CN --mathjax $(MATHJAX)/es5 build/site-source-zh-CN
+	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site -D language=zh_CN \
+		build/site-source-zh-CN $(SITE)/zh-CN
+	@echo "make: the website is in $(SITE)/; open $(SITE)/index.html ($(SITE)/zh-CN/index.html: 中文)"
 
 # MathJax, fetched once from npm's registry, then served by the site itself.
 $(MATHJAX)/es5/tex-mml-chtml.js:
@@ -169,6 +173,10 @@ site-teacher: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
 	$(BIN)/python site/stage.py --teacher --mathjax $(MATHJAX)/es5 build/site-teacher-source
 	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site build/site-teacher-source \
 		$(TEACHER_SITE)
+	$(BIN)/python site/stage.py --teacher --language zh-CN --mathjax $(MATHJAX)/es5 \
+		build/site-teacher-source-zh-CN
+	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site -D language=zh_CN \
+		build/site-teacher-source-zh-CN $(TEACHER_SITE)/zh-CN
 	@echo "make: the teacher's website is in $(TEACHER_SITE)/; do not publish it"
 
 ## test-browser: build the website, then check its pages and run every lesson in Chromium

@@ -5,6 +5,12 @@ notebooks; myst-nb renders their outputs as committed (nothing is executed), and
 build needs no network. Formulas are typeset by the MathJax that ``site/stage.py`` bundled
 into the source's ``_mathjax/`` (from npm's ``mathjax`` package): the pages load it from
 the site itself, never from a CDN, so they render offline.
+
+Two languages, two builds of this configuration: the English site from ``build/site-source/``
+into ``build/site/``, the Chinese from ``build/site-source-zh-CN/`` (``site/stage.py
+--language zh-CN``) into ``build/site/zh-CN/``, with ``-D language=zh_CN`` (Sphinx's and
+Furo's own words in Chinese, Chinese search). ``_templates/page.html`` puts a link to the
+page's twin at the top of every page.
 """
 
 from __future__ import annotations
@@ -35,6 +41,10 @@ myst_heading_anchors = 3
 nb_render_markdown_format = "myst"
 
 html_theme = "furo"
+templates_path = ["_templates"]
+# Furo shows its announcement bar when this is set: _templates/page.html fills the bar with
+# the language switch, so the text here is never shown.
+html_theme_options = {"announcement": "English · 中文"}
 html_show_sourcelink = False
 html_copy_source = False
 
@@ -58,7 +68,14 @@ def _bundle_mathjax(app, config) -> None:
     config.html_static_path = [*config.html_static_path, str(bundled)]
 
 
+def _chinese_title(app, config) -> None:
+    """The Chinese site's title, in Chinese (its pages' own titles come from the twins)."""
+    if config.language == "zh_CN":
+        config.html_title = "计算机图形学：贝塞尔曲线、像素与二维实验"
+
+
 def setup(app):
     app.connect("config-inited", _bundle_mathjax)
+    app.connect("config-inited", _chinese_title)
     app.connect("doctree-read", _set_alt_text)
     return {"parallel_read_safe": True}

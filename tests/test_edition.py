@@ -474,3 +474,27 @@ def test_the_chinese_student_edition_is_the_english_one_with_the_chinese_text():
             "".join(cell["source"]) for cell in chinese["cells"] if cell["cell_type"] == "markdown"
         )
         assert sum("\u4e00" <= letter <= "\u9fff" for letter in text) > 100, chinese_book.path.name
+
+
+def test_the_chinese_published_source_shows_stubs_and_no_solution(tmp_path):
+    from course.classroom.notebooks import language_folder
+
+    twins = language_folder(notebooks()[0].path.parent, "zh-CN")
+    pictures = stage.stage(tmp_path / "site", twins, captions={}, language="zh-CN")
+    assert pictures > 0
+    exercises = 0
+    for book in notebooks(twins, index=True):
+        teacher = json.loads(book.path.read_text(encoding="utf-8"))
+        name = "index.ipynb" if book.number == "00" else book.path.name
+        page = json.loads((tmp_path / "site" / name).read_text(encoding="utf-8"))
+        answers = set()
+        for before, after in zip(teacher["cells"], page["cells"], strict=False):
+            if "solution" in before.get("metadata", {}).get("tags", []):
+                exercises += 1
+                answers |= site_solution_triples(site_text(before["source"]))
+                assert STUB_LINE in after["source"] and after["outputs"] == []
+        assert not answers & shown_triples(page), name
+    assert exercises > 0
+    alt = json.loads((tmp_path / "site" / "alt.json").read_text(encoding="utf-8"))
+    # No caption given: each picture is described by its Chinese page's own words.
+    assert alt and all(any("\u4e00" <= c <= "\u9fff" for c in text) for text in alt.values())

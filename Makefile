@@ -41,6 +41,7 @@ help:
 	@sed -n 's/^## \([a-z-]*\): \(.*\)/  \1|\2/p' $(MAKEFILE_LIST) | awk -F'|' '{ printf "%-16s %s\n", $$1, $$2 }'
 	@echo
 	@echo "Python 3.10 or newer is needed: make lab PYTHON=python3.12 picks another one."
+	@echo "中文版: make lab COURSE_LANG=zh-CN (also teach, app, student, nbgrader, hub)."
 
 # The install sets: pyproject.toml's name for each (for `make lock` and `make test-latest`),
 # and the lock pip installs from by default. Students get `lab`; `test` is the developer's set;
@@ -98,6 +99,7 @@ messages: $(VENV)/.test-installed
 	$(BIN)/pybabel compile -d course/locale -D course --statistics
 
 ## lab: for students: update the student edition in student/, open its course map in JupyterLab
+# COURSE_LANG=zh-CN (any target): the Chinese edition, student/zh-CN/, notebooks/zh-CN/ ...
 # `python -m course lab` writes new and changed lessons into student/, never over one the
 # student edited (a changed lesson goes beside it), and adds --allow-root when run as root.
 lab: $(VENV)/.lab-installed
@@ -149,7 +151,7 @@ test-latest:
 fuzz: $(VENV)/.test-installed
 	COURSE_FUZZ=long $(BIN)/python -m pytest tests/test_fuzz.py -q -s -n 0 -p no:cacheprovider
 
-## site: build the course's website in build/site/: the student edition, safe to publish
+## site: build the course's website in build/site/ (Chinese: zh-CN/): the student edition
 # Exercises show their stubs; every other cell keeps its committed output (the notebooks are
 # not re-executed). MathJax is bundled from its npm package, so formulas render offline.
 # The Chinese lessons are a second build into its zh-CN/ folder; every page links its twin.

@@ -37,9 +37,9 @@ from pathlib import Path
 
 from course.classroom.edition import (
     EXERCISE_TAG,
-    HIDDEN_NOTE,
     SOLUTION_TAG,
     exercise_stub,
+    hidden_note,
     reveals,
 )
 from course.classroom.notebooks import DEFAULT_LANGUAGE, LANGUAGES, language_folder
@@ -133,11 +133,11 @@ def plain_heading(markdown: str) -> str | None:
     return re.sub(r"\[([^]]*)\]\([^)]*\)", r"\1", found.group(1)) if found else None
 
 
-def student_cells(cells: list[dict]) -> list[dict]:
+def student_cells(cells: list[dict], language: str = DEFAULT_LANGUAGE) -> list[dict]:
     """The cells as the student edition shows them, the other cells' outputs kept.
 
     An exercise shows its stub and no output (the solution's check said PASS); a cell
-    that reveals a solution is the student edition's note.
+    that reveals a solution is the student edition's note, in ``language``.
     """
     shown = []
     for number, cell in enumerate(cells):
@@ -147,7 +147,7 @@ def student_cells(cells: list[dict]) -> list[dict]:
                 "cell_type": "markdown",
                 "id": cell.get("id", f"hidden-{number}"),
                 "metadata": {"tags": ["hidden"]},
-                "source": HIDDEN_NOTE,
+                "source": hidden_note(language),
             }
         elif cell["cell_type"] == "code" and SOLUTION_TAG in tags:
             cell = dict(cell, source=exercise_stub(text(cell["source"])), outputs=[])
@@ -207,7 +207,7 @@ def stage(
         )
         count = 0
         if not teacher:
-            notebook["cells"] = student_cells(notebook["cells"])
+            notebook["cells"] = student_cells(notebook["cells"], language)
         # nbformat 4.5 cells carry ids; the committed ones are normalised without.
         notebook["nbformat_minor"] = max(notebook.get("nbformat_minor", 0), 5)
         for number, cell in enumerate(notebook["cells"]):

@@ -22,6 +22,7 @@ from course.classroom.edition import (
     MANIFEST,
     STUB_LINE,
     exercise_stub,
+    hidden_note,
     reveals,
     solution_cells,
     student_notebook,
@@ -460,6 +461,8 @@ def test_the_chinese_student_edition_is_the_english_one_with_the_chinese_text():
                 theirs["cell_type"],
                 theirs["metadata"],
             )
+            if "hidden" in ours["metadata"].get("tags", []):
+                assert ours["source"] == hidden_note("zh-CN") != theirs["source"] == HIDDEN_NOTE
             if ours["cell_type"] != "code":
                 continue
             source = "".join(ours["source"])

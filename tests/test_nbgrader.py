@@ -190,6 +190,10 @@ def test_the_release_shows_every_exercise_as_its_stub_and_no_solution(book, cour
     assert all(not cell.get("outputs") for cell in release["cells"])
 
 
+def code_only(source: str) -> list[str]:
+    return [line for line in source.splitlines() if not line.lstrip().startswith("#")]
+
+
 def graded_cells(notebook: dict) -> list[tuple]:
     """What a gradebook knows of a lesson: each nbgrader cell's id, grade id, kind and points."""
     return [
@@ -219,6 +223,12 @@ def test_the_chinese_release_grades_as_the_english_one_and_shows_no_solution(
     leaked = solution_lines(teacher) & shown_lines(chinese)
     assert solution_lines(teacher) and not leaked, f"solution lines: {sorted(leaked)[:2]}"
     assert all(not cell.get("outputs") for cell in chinese["cells"])
+    english_tests = [cell_source(c) for c in english["cells"] if c["id"].endswith("-test")]
+    chinese_tests = [cell_source(c) for c in chinese["cells"] if c["id"].endswith("-test")]
+    # The same code; only the comments differ, in Chinese.
+    for ours, theirs in zip(chinese_tests, english_tests, strict=True):
+        assert code_only(ours) == code_only(theirs) and ours != theirs
+        assert "自动评分测试" in ours
     markdown = "".join(cell_source(c) for c in chinese["cells"] if c["cell_type"] == "markdown")
     assert sum("\u4e00" <= letter <= "\u9fff" for letter in markdown) > 100
 

@@ -226,3 +226,19 @@ def test_make_passes_course_lang_to_every_edition_and_never_reads_lang():
     for command in ("lab", "lab --teacher", "app", "student", "nbgrader"):
         assert f'-m course {command} --language "$(COURSE_LANG)"' in makefile, command
     assert "$(LANG)" not in makefile and "${LANG}" not in makefile
+
+
+def test_the_english_edition_goes_beside_a_chinese_one_written_first(tmp_path, monkeypatch):
+    lessons = twin_folder(tmp_path)
+    monkeypatch.delenv("COURSE_LANG", raising=False)
+    student = tmp_path / "student"
+    chinese = ["student", "--notebooks", str(lessons), "--out", str(student / "zh-CN")]
+    assert main([*chinese, "--language", "zh-CN"]) == 0
+    assert main(["student", "--notebooks", str(lessons), "--out", str(student)]) == 0
+    assert (student / "00_index.ipynb").is_file() and (
+        student / "zh-CN" / "00_index.ipynb"
+    ).is_file()
+    # Anything else in the folder is still refused without --force.
+    (tmp_path / "other").mkdir()
+    (tmp_path / "other" / "notes.txt").write_text("mine")
+    assert main(["student", "--notebooks", str(lessons), "--out", str(tmp_path / "other")]) == 2

@@ -498,9 +498,21 @@ def _beside_name(out: Path, name: str, manifest: dict[str, str]) -> str:
 
 
 def _is_edition(out: Any) -> bool:
-    """Whether ``out`` holds a student edition this function wrote (its manifest)."""
+    """Whether ``out`` holds a student edition this function wrote (its manifest).
+
+    A folder that holds only other languages' editions (``student/zh-CN/``, written
+    before the English one) counts as one: the English edition goes beside them.
+    """
     try:
-        return isinstance(out, (str, os.PathLike)) and (Path(out) / MANIFEST).is_file()
+        if not isinstance(out, (str, os.PathLike)):
+            return False
+        out = Path(out)
+        if (out / MANIFEST).is_file():
+            return True
+        entries = list(out.iterdir()) if out.is_dir() else []
+        return bool(entries) and all(
+            entry.name in LANGUAGES and (entry / MANIFEST).is_file() for entry in entries
+        )
     except OSError:
         return False
 

@@ -7,8 +7,9 @@ No page may show three consecutive lines of an exercise's solution. Every HTML p
 build must load, every picture on it decode, and every link that stays inside the site
 reach a file, and an anchor the element it names. The landing page must be the course
 map, linking every lesson. A screenshot of the landing page and of lesson 01 goes to
-``docs/browser/``. The Chinese site, in ``zh-CN/``, is held to the same, and every page of
-either language links its twin in the other, which must exist.
+``docs/browser/``, and one of the Chinese landing page. The Chinese site, in ``zh-CN/``,
+is held to the same, and every page of either language links its twin in the other,
+which must exist.
 """
 
 from __future__ import annotations
@@ -164,6 +165,13 @@ def test_the_landing_page_is_the_course_map_and_links_every_lesson(offline_page:
     for lesson in CHINESE_LESSON_PAGES:
         assert f"{site}zh-CN/{lesson.name}" in links, f"the Chinese map does not link {lesson.name}"
     assert len(images) >= len(CHINESE_LESSON_PAGES), "the Chinese map shows a picture per lesson"
+    # The Chinese text is drawn in the font the site ships: Chromium here has no Chinese font.
+    loaded = offline_page.evaluate(
+        """async () => (await document.fonts.load('16px "Course CJK"', '课程地图'))
+            .map((face) => face.status)"""
+    )
+    assert loaded == ["loaded"], loaded
+    offline_page.screenshot(path=str(DOCS / "site_course_map_zh-CN.png"))
 
 
 def test_a_lesson_page_shows_its_apps_still_pictures_with_the_gallerys_captions(

@@ -20,8 +20,13 @@ TEACHER_SITE := build/site-teacher
 # MathJax for the website's formulas: npm's mathjax package, pinned.
 MATHJAX_VERSION := 3.2.2
 MATHJAX := build/mathjax-$(MATHJAX_VERSION)
-# Where `make nbgrader` writes the nbgrader course folder.
-NBGRADER := build/nbgrader
+# The editions' language: `make lab COURSE_LANG=zh-CN` (lab, teach, app, student, nbgrader,
+# site). Not LANG, which every shell sets for its own messages. English by default.
+COURSE_LANG ?= en
+# The folder of a language's edition inside an English one's: nothing for English.
+LANG_DIR := $(if $(filter-out en,$(COURSE_LANG)),/$(COURSE_LANG),)
+# Where `make nbgrader` writes the nbgrader course folder (build/nbgrader-zh-CN in Chinese).
+NBGRADER := build/nbgrader$(subst /,-,$(LANG_DIR))
 
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
@@ -36,6 +41,7 @@ help:
 	@sed -n 's/^## \([a-z-]*\): \(.*\)/  \1|\2/p' $(MAKEFILE_LIST) | awk -F'|' '{ printf "%-16s %s\n", $$1, $$2 }'
 	@echo
 	@echo "Python 3.10 or newer is needed: make lab PYTHON=python3.12 picks another one."
+	@echo "中文版: make lab COURSE_LANG=zh-CN (also teach, app, student, nbgrader, hub)."
 
 # The install sets: pyproject.toml's name for each (for `make lock` and `make test-latest`),
 # and the lock pip installs from by default. Students get `lab`; `test` is the developer's set;
@@ -93,31 +99,32 @@ messages: $(VENV)/.test-installed
 	$(BIN)/pybabel compile -d course/locale -D course --statistics
 
 ## lab: for students: update the student edition in student/, open its course map in JupyterLab
+# COURSE_LANG=zh-CN (any target): the Chinese edition, student/zh-CN/, notebooks/zh-CN/ ...
 # `python -m course lab` writes new and changed lessons into student/, never over one the
 # student edited (a changed lesson goes beside it), and adds --allow-root when run as root.
 lab: $(VENV)/.lab-installed
 	@echo "make: JupyterLab opens at the course map; its address is printed below, under" \
 		"'Or copy and paste one of these URLs'. Stop it with Ctrl-C, twice."
-	$(BIN)/python -m course lab
+	$(BIN)/python -m course lab --language "$(COURSE_LANG)"
 
 ## teach: for teachers: the solved lessons in notebooks/, in JupyterLab
 teach: $(VENV)/.lab-installed
-	$(BIN)/python -m course lab --teacher
+	$(BIN)/python -m course lab --teacher --language "$(COURSE_LANG)"
 
 ## app: the lessons as apps for a projector: Voila, code hidden, sliders live
+# python -m course app runs voila on notebooks/ (notebooks/zh-CN/ in Chinese), with $(PROMPT).
 app: $(VENV)/.app-installed
-	$(BIN)/voila notebooks/ --no-browser --Voila.ip=127.0.0.1 --port=$(APP_PORT) \
-		--Voila.kernel_websocket_connection_class=$(PROMPT)
+	$(BIN)/python -m course app --language "$(COURSE_LANG)" --port $(APP_PORT)
 
 ## student: write or update the student edition in student/; a student's edits are kept
 student: $(VENV)/.lab-installed
-	$(BIN)/python -m course student --out student
+	$(BIN)/python -m course student --language "$(COURSE_LANG)" --out student$(LANG_DIR)
 
 ## nbgrader: write the nbgrader course folder build/nbgrader/ (see the README, For teachers)
 # Its source/ is rewritten from the lessons; release/, submitted/, the gradebook and an
 # nbgrader_config.py already there are left alone.
 nbgrader: $(VENV)/.grade-installed
-	$(BIN)/python -m course nbgrader --out $(NBGRADER) --force
+	$(BIN)/python -m course nbgrader --language "$(COURSE_LANG)" --out $(NBGRADER) --force
 	@echo "make: the nbgrader course is in $(NBGRADER)/; from there, with .venv/bin on PATH:" \
 		"nbgrader generate_assignment 01_de_casteljau"
 
@@ -144,13 +151,17 @@ test-latest:
 fuzz: $(VENV)/.test-installed
 	COURSE_FUZZ=long $(BIN)/python -m pytest tests/test_fuzz.py -q -s -n 0 -p no:cacheprovider
 
-## site: build the course's website in build/site/: the student edition, safe to publish
+## site: build the course's website in build/site/ (Chinese: zh-CN/): the student edition
 # Exercises show their stubs; every other cell keeps its committed output (the notebooks are
 # not re-executed). MathJax is bundled from its npm package, so formulas render offline.
+# The Chinese lessons are a second build into its zh-CN/ folder; every page links its twin.
 site: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
 	$(BIN)/python site/stage.py --mathjax $(MATHJAX)/es5 build/site-source
 	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site build/site-source $(SITE)
-	@echo "make: the website is in $(SITE)/; open $(SITE)/index.html"
+	$(BIN)/python site/stage.py --language zh-CN --mathjax $(MATHJAX)/es5 build/site-source-zh-CN
+	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site -D language=zh_CN \
+		build/site-source-zh-CN $(SITE)/zh-CN
+	@echo "make: the website is in $(SITE)/; open $(SITE)/index.html ($(SITE)/zh-CN/index.html: 中文)"
 
 # MathJax, fetched once from npm's registry, then served by the site itself.
 $(MATHJAX)/es5/tex-mml-chtml.js:
@@ -164,6 +175,10 @@ site-teacher: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
 	$(BIN)/python site/stage.py --teacher --mathjax $(MATHJAX)/es5 build/site-teacher-source
 	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site build/site-teacher-source \
 		$(TEACHER_SITE)
+	$(BIN)/python site/stage.py --teacher --language zh-CN --mathjax $(MATHJAX)/es5 \
+		build/site-teacher-source-zh-CN
+	$(BIN)/python -m sphinx -b html -q -W --keep-going -c site -D language=zh_CN \
+		build/site-teacher-source-zh-CN $(TEACHER_SITE)/zh-CN
 	@echo "make: the teacher's website is in $(TEACHER_SITE)/; do not publish it"
 
 ## test-browser: build the website, then check its pages and run every lesson in Chromium
@@ -225,7 +240,7 @@ HUB_PROXY := $(HUB_DATA)/node_modules/.bin/configurable-http-proxy
 # hub/jupyterhub_config.py is the file a teacher copies to a server (docs/hub.md). The
 # edition is rebuilt at each start; a student's folder only ever gains the files it lacks.
 hub: $(VENV)/.hub-installed $(HUB_PROXY)
-	$(BIN)/python -m course student --out $(HUB_DATA)/student-edition --force
+	$(BIN)/python -m course student --language "$(COURSE_LANG)" --out $(HUB_DATA)/student-edition --force
 	@echo "make: the hub opens at http://127.0.0.1:$(HUB_PORT); log in with any name and" \
 		"the password '$(HUB_PASSWORD)'. Stop it with Ctrl-C."
 	PATH="$(CURDIR)/$(BIN):$$PATH" COURSE_HUB_DATA=$(HUB_DATA) COURSE_HUB_PORT=$(HUB_PORT) \

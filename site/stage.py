@@ -13,6 +13,11 @@ own copy. Staging
   myst-nb writes) its alt text: the gallery's caption when the picture is one of the gallery's
   (``python -m course gallery``, same pixels), else the output's own text, else a description
   from the lesson's title. ``site/conf.py`` sets it on the page's ``<img>``;
+- with ``--language zh-CN``, stages the Chinese twins of ``notebooks/zh-CN/`` instead, and
+  takes the gallery's captions in Chinese, as the twins' pictures are drawn. ``make site``
+  builds that source into the English site's ``zh-CN/`` folder, so that each page's twin is
+  the same file name one folder down or up: ``site/_templates/page.html`` links them, on
+  every page;
 - copies MathJax (``--mathjax``: the ``es5`` folder of npm's ``mathjax`` package, which
   ``make site`` fetches with ``npm pack``) into ``_mathjax/``, what a page loads to typeset
   its formulas and nothing more, so that formulas render offline.
@@ -32,11 +37,12 @@ from pathlib import Path
 
 from course.classroom.edition import (
     EXERCISE_TAG,
-    HIDDEN_NOTE,
     SOLUTION_TAG,
     exercise_stub,
+    hidden_note,
     reveals,
 )
+from course.classroom.notebooks import DEFAULT_LANGUAGE, LANGUAGES, language_folder
 
 REPOSITORY = Path(__file__).resolve().parent.parent
 #: What a page needs of MathJax's es5 folder: the combined TeX component, the TeX
@@ -85,15 +91,40 @@ def pixels_key(data: bytes) -> str:
         return hashlib.sha256(repr(rgb.size).encode() + rgb.tobytes()).hexdigest()
 
 
-def gallery_captions() -> dict[str, str]:
-    """The gallery's captions, by the pixels of the picture each one describes."""
+def gallery_captions(language: str = DEFAULT_LANGUAGE) -> dict[str, str]:
+    """The gallery's captions, by the pixels of the picture each one describes.
+
+    The pictures are drawn in ``language``, as a twin's pictures are, with that language's
+    titles and legends. A caption the library's catalog does not translate is left out
+    (the page's own text describes that picture), so that no English reaches another
+    language's pages.
+    """
     from course.classroom.registry import lessons
+    from course.i18n import _
+    from course.i18n import language as shown_in
 
     captions = {}
-    for lesson in lessons().values():
-        for picture in lesson.pictures:
-            captions[pixels_key(picture.render())] = picture.caption
+    with shown_in(language):
+        for lesson in lessons().values():
+            for picture in lesson.pictures:
+                caption = _(picture.caption)
+                if language == DEFAULT_LANGUAGE or caption != picture.caption:
+                    captions[pixels_key(picture.render())] = caption
     return captions
+
+
+def in_language(words: str, language: str) -> bool:
+    """Whether ``words`` can describe a picture on a page in ``language``.
+
+    A Chinese page's picture is not described in English: an output's text that has no
+    Chinese character (a caption the library does not translate) is not used there.
+
+    >>> in_language("B(t) = (5/4, 3/2)", "zh-CN"), in_language("贝塞尔曲线 B(t)", "zh-CN")
+    (False, True)
+    """
+    if language == DEFAULT_LANGUAGE:
+        return True
+    return any("\u4e00" <= letter <= "\u9fff" for letter in words)
 
 
 def plain_heading(markdown: str) -> str | None:
@@ -102,11 +133,11 @@ def plain_heading(markdown: str) -> str | None:
     return re.sub(r"\[([^]]*)\]\([^)]*\)", r"\1", found.group(1)) if found else None
 
 
-def student_cells(cells: list[dict]) -> list[dict]:
+def student_cells(cells: list[dict], language: str = DEFAULT_LANGUAGE) -> list[dict]:
     """The cells as the student edition shows them, the other cells' outputs kept.
 
     An exercise shows its stub and no output (the solution's check said PASS); a cell
-    that reveals a solution is the student edition's note.
+    that reveals a solution is the student edition's note, in ``language``.
     """
     shown = []
     for number, cell in enumerate(cells):
@@ -116,7 +147,7 @@ def student_cells(cells: list[dict]) -> list[dict]:
                 "cell_type": "markdown",
                 "id": cell.get("id", f"hidden-{number}"),
                 "metadata": {"tags": ["hidden"]},
-                "source": HIDDEN_NOTE,
+                "source": hidden_note(language),
             }
         elif cell["cell_type"] == "code" and SOLUTION_TAG in tags:
             cell = dict(cell, source=exercise_stub(text(cell["source"])), outputs=[])
@@ -150,10 +181,13 @@ def stage(
     captions: dict[str, str] | None = None,
     teacher: bool = False,
     mathjax: Path | None = None,
+    language: str = DEFAULT_LANGUAGE,
 ) -> int:
     """Write the website's source to ``out``; return the number of pictures.
 
     The student edition unless ``teacher``; MathJax bundled from ``mathjax`` if given.
+    ``language`` is the lessons' (``notebooks`` holds its twins): on its pages a picture is
+    described only by words in that language (:func:`in_language`), else by its page's.
     """
     captions = gallery_captions() if captions is None else captions
     if out.exists():
@@ -173,7 +207,7 @@ def stage(
         )
         count = 0
         if not teacher:
-            notebook["cells"] = student_cells(notebook["cells"])
+            notebook["cells"] = student_cells(notebook["cells"], language)
         # nbformat 4.5 cells carry ids; the committed ones are normalised without.
         notebook["nbformat_minor"] = max(notebook.get("nbformat_minor", 0), 5)
         for number, cell in enumerate(notebook["cells"]):
@@ -199,8 +233,10 @@ def stage(
                     said = text(data.get("text/plain", "")).strip().strip("'\"")
                     if pixels_key(raw) in captions:
                         description = captions[pixels_key(raw)]
-                    elif said and not UNINFORMATIVE.match(said):
+                    elif said and not UNINFORMATIVE.match(said) and in_language(said, language):
                         description = said
+                    elif language != DEFAULT_LANGUAGE:
+                        description = f"{described} ({count})"
                     elif described != title:
                         description = f"{described}: one panel of the lesson"
                     else:
@@ -234,8 +270,21 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--mathjax", type=Path, help="the es5 folder of npm's mathjax package, bundled"
     )
+    parser.add_argument(
+        "--language",
+        choices=LANGUAGES,
+        default=DEFAULT_LANGUAGE,
+        help="the lessons' language: another than English stages notebooks/<language>/",
+    )
     args = parser.parse_args(argv)
-    pictures = stage(args.out, args.notebooks, teacher=args.teacher, mathjax=args.mathjax)
+    pictures = stage(
+        args.out,
+        language_folder(args.notebooks, args.language),
+        gallery_captions(args.language),
+        teacher=args.teacher,
+        mathjax=args.mathjax,
+        language=args.language,
+    )
     print(f"site/stage.py: {pictures} pictures staged in {args.out}", file=sys.stderr)
     return 0
 

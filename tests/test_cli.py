@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from conftest import write_notebook
 
-from course.classroom.cli import lab_command, main
+from course.classroom.cli import app_command, lab_command, main
 from course.classroom.folders import inside_folder
 
 # Runs ``python -m course ARGS`` in a fresh interpreter, then reports which of the
@@ -135,3 +135,110 @@ def test_lab_takes_over_a_student_folder_written_before_the_manifest(tmp_path, m
     assert started and started[0][-1] == "--no-browser"
     assert json.loads(old.read_text())["cells"] == []  # the old copy is kept as the student's
     assert (tmp_path / "student" / "01_first.new.ipynb").is_file()
+
+
+def twin_folder(tmp_path: Path) -> Path:
+    """A course folder with one English lesson and its Chinese twin."""
+    lessons = tmp_path / "notebooks"
+    (lessons / "zh-CN").mkdir(parents=True)
+    write_notebook(lessons / "00_index.ipynb", "# Course map")
+    write_notebook(lessons / "zh-CN" / "00_index.ipynb", "# 课程地图")
+    return lessons
+
+
+def test_lab_in_chinese_writes_the_chinese_student_edition_and_opens_its_map(
+    tmp_path, monkeypatch, capsys
+):
+    lessons = twin_folder(tmp_path)
+    started = []
+    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    monkeypatch.delenv("COURSE_LANG", raising=False)
+    assert main(["lab", "--notebooks", str(lessons), "--language", "zh-CN"]) == 0
+    chinese = json.loads((tmp_path / "student" / "zh-CN" / "00_index.ipynb").read_text())
+    assert chinese["cells"][0]["source"] == "# 课程地图"
+    assert not (tmp_path / "student" / "00_index.ipynb").exists()
+    assert "--LabApp.default_url=/lab/tree/student/zh-CN/00_index.ipynb" in started[-1]
+    assert "student/zh-CN/: 1 notebooks written" in capsys.readouterr().err
+    # COURSE_LANG says the same when --language is not given; --language wins over it.
+    monkeypatch.setenv("COURSE_LANG", "zh-CN")
+    assert main(["lab", "--notebooks", str(lessons), "--teacher"]) == 0
+    assert "--LabApp.default_url=/lab/tree/notebooks/zh-CN/00_index.ipynb" in started[-1]
+    assert main(["lab", "--notebooks", str(lessons), "--language", "en"]) == 0
+    assert "--LabApp.default_url=/lab/tree/student/00_index.ipynb" in started[-1]
+    english = json.loads((tmp_path / "student" / "00_index.ipynb").read_text())
+    assert english["cells"][0]["source"] == "# Course map"
+
+
+@pytest.mark.parametrize(
+    ("arguments", "variable", "named"),
+    [
+        (["lab", "--language", "fr"], None, "--language"),
+        (["app", "--language", ""], None, "--language"),
+        (["student", "--out", "OUT"], "zh_CN", "COURSE_LANG"),
+        (["nbgrader", "--out", "OUT", "--language", "ZH-cn"], None, "--language"),
+    ],
+)
+def test_an_unknown_language_is_one_line_exit_2_naming_the_choices(
+    tmp_path, monkeypatch, capsys, arguments, variable, named
+):
+    lessons = twin_folder(tmp_path)
+    started = []
+    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    if variable is None:
+        monkeypatch.delenv("COURSE_LANG", raising=False)
+    else:
+        monkeypatch.setenv("COURSE_LANG", variable)
+    out = tmp_path / "out"
+    arguments = [str(out) if argument == "OUT" else argument for argument in arguments]
+    assert main([*arguments, "--notebooks", str(lessons)]) == 2
+    error = capsys.readouterr().err.strip()
+    assert len(error.splitlines()) == 1
+    assert error.startswith(f"python -m course {arguments[0]}: {named}: expected one of ")
+    assert "en, zh-CN" in error
+    assert not started and not out.exists() and not (tmp_path / "student").exists()
+
+
+def test_app_serves_a_languages_lessons_in_voila_with_the_prompt_connection(tmp_path, monkeypatch):
+    lessons = twin_folder(tmp_path)
+    started = []
+    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    monkeypatch.delenv("COURSE_LANG", raising=False)
+    assert (
+        main(["app", "--notebooks", str(lessons), "--port", "9000", "--show_tracebacks=True"]) == 0
+    )
+    assert main(["app", "--notebooks", str(lessons), "--language", "zh-CN"]) == 0
+    english, chinese = started
+    assert english[1:4] == ["-m", "voila", str(lessons)]
+    assert chinese[1:4] == ["-m", "voila", str(lessons / "zh-CN")]
+    assert "--port=9000" in english and "--show_tracebacks=True" in english
+    assert "--port=8866" in chinese
+    for command in started:
+        assert command[-1] == (
+            "--Voila.kernel_websocket_connection_class=course.classroom.serving.PromptConnection"
+        )
+    with pytest.raises(ValueError, match="port"):
+        app_command(lessons, 0, [])
+
+
+def test_make_passes_course_lang_to_every_edition_and_never_reads_lang():
+    makefile = (Path(__file__).resolve().parent.parent / "Makefile").read_text()
+    assert "\nCOURSE_LANG ?= en\n" in makefile
+    for command in ("lab", "lab --teacher", "app", "student", "nbgrader"):
+        assert f'-m course {command} --language "$(COURSE_LANG)"' in makefile, command
+    assert "$(LANG)" not in makefile and "${LANG}" not in makefile
+
+
+def test_the_english_edition_goes_beside_a_chinese_one_written_first(tmp_path, monkeypatch):
+    lessons = twin_folder(tmp_path)
+    monkeypatch.delenv("COURSE_LANG", raising=False)
+    student = tmp_path / "student"
+    chinese = ["student", "--notebooks", str(lessons), "--out", str(student / "zh-CN")]
+    assert main([*chinese, "--language", "zh-CN"]) == 0
+    assert main(["student", "--notebooks", str(lessons), "--out", str(student)]) == 0
+    assert (student / "00_index.ipynb").is_file() and (
+        student / "zh-CN" / "00_index.ipynb"
+    ).is_file()
+    # Anything else in the folder is still refused without --force.
+    (tmp_path / "other").mkdir()
+    (tmp_path / "other" / "notes.txt").write_text("mine")
+    assert main(["student", "--notebooks", str(lessons), "--out", str(tmp_path / "other")]) == 2

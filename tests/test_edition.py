@@ -22,6 +22,7 @@ from course.classroom.edition import (
     MANIFEST,
     STUB_LINE,
     exercise_stub,
+    hidden_note,
     reveals,
     solution_cells,
     student_notebook,
@@ -440,3 +441,63 @@ def test_the_published_source_shows_stubs_and_no_solution_and_the_teachers_keeps
     assert (bundled / "tex-mml-chtml.js").is_file()
     assert (bundled / "output" / "chtml" / "fonts" / "woff-v2" / "x.js").is_file()
     assert not (bundled / "sre").exists()
+
+
+def test_the_chinese_student_edition_is_the_english_one_with_the_chinese_text():
+    """The twins go through the same parser: the same stubs, hidden cells and tags."""
+    from course.classroom.notebooks import language_folder
+    from course.i18n import LANGUAGE_LINES
+
+    english_books = notebooks(index=True)
+    chinese_books = notebooks(language_folder(english_books[0].path.parent, "zh-CN"), index=True)
+    assert [book.path.name for book in chinese_books] == [book.path.name for book in english_books]
+    for english_book, chinese_book in zip(english_books, chinese_books, strict=True):
+        english = student_notebook(json.loads(english_book.path.read_text(encoding="utf-8")))
+        chinese = student_notebook(json.loads(chinese_book.path.read_text(encoding="utf-8")))
+        assert len(chinese["cells"]) == len(english["cells"]), chinese_book.path.name
+        first_code = True
+        for ours, theirs in zip(chinese["cells"], english["cells"], strict=True):
+            assert (ours["cell_type"], ours["metadata"]) == (
+                theirs["cell_type"],
+                theirs["metadata"],
+            )
+            if "hidden" in ours["metadata"].get("tags", []):
+                assert ours["source"] == hidden_note("zh-CN") != theirs["source"] == HIDDEN_NOTE
+            if ours["cell_type"] != "code":
+                continue
+            source = "".join(ours["source"])
+            if first_code:
+                assert source.startswith(LANGUAGE_LINES), chinese_book.path.name
+                source, first_code = source[len(LANGUAGE_LINES) :], False
+            assert source == "".join(theirs["source"]), (chinese_book.path.name, ours["id"])
+            assert ours["outputs"] == [] and ours["execution_count"] is None
+        stubs = sum(STUB_LINE in "".join(cell["source"]) for cell in chinese["cells"])
+        assert stubs == sum(STUB_LINE in "".join(cell["source"]) for cell in english["cells"])
+        text = "".join(
+            "".join(cell["source"]) for cell in chinese["cells"] if cell["cell_type"] == "markdown"
+        )
+        assert sum("\u4e00" <= letter <= "\u9fff" for letter in text) > 100, chinese_book.path.name
+
+
+def test_the_chinese_published_source_shows_stubs_and_no_solution(tmp_path):
+    from course.classroom.notebooks import language_folder
+
+    twins = language_folder(notebooks()[0].path.parent, "zh-CN")
+    pictures = stage.stage(tmp_path / "site", twins, captions={}, language="zh-CN")
+    assert pictures > 0
+    exercises = 0
+    for book in notebooks(twins, index=True):
+        teacher = json.loads(book.path.read_text(encoding="utf-8"))
+        name = "index.ipynb" if book.number == "00" else book.path.name
+        page = json.loads((tmp_path / "site" / name).read_text(encoding="utf-8"))
+        answers = set()
+        for before, after in zip(teacher["cells"], page["cells"], strict=False):
+            if "solution" in before.get("metadata", {}).get("tags", []):
+                exercises += 1
+                answers |= site_solution_triples(site_text(before["source"]))
+                assert STUB_LINE in after["source"] and after["outputs"] == []
+        assert not answers & shown_triples(page), name
+    assert exercises > 0
+    alt = json.loads((tmp_path / "site" / "alt.json").read_text(encoding="utf-8"))
+    # No caption given: each picture is described by its Chinese page's own words.
+    assert alt and all(any("\u4e00" <= c <= "\u9fff" for c in text) for text in alt.values())

@@ -229,6 +229,18 @@ def _valid_by_name(name: str, annotation: str, qualified: str) -> Any:
 VALID: dict[str, Any] = {
     # by parameter name
     "course.classroom.edition.solution_bodies:source": lambda: "def f(x):\n    return 2 * x\n",
+    "course.classroom.cli.app_command:notebooks": lambda: Path("notebooks") / "zh-CN",
+    "course.classroom.cli.app_command:port": lambda: 8866,
+    "course.classroom.cli.app_command:extra": lambda: ["--show_tracebacks=True"],
+    "course.classroom.cli.lab_command:notebooks": lambda: Path("notebooks"),
+    "course.classroom.cli.lab_command:teacher": lambda: False,
+    "course.classroom.cli.lab_command:extra": lambda: [],
+    "course.classroom.cli.lab_command:language": lambda: "zh-CN",
+    "course.classroom.notebooks.language_folder:language": lambda: "zh-CN",
+    "course.classroom.edition.translated:message": lambda: "RMS error",
+    "course.classroom.edition.translated:language": lambda: "zh-CN",
+    "course.classroom.edition.hidden_note:language": lambda: "zh-CN",
+    "course.classroom.edition.notebook_language:notebook": lambda: {"cells": [], "metadata": {}},
     "points": lambda: CURVE.copy(),
     "control": lambda: CURVE.copy(),
     "polyline": lambda: CURVE.copy(),

@@ -40,7 +40,7 @@ from course.classroom.nbgrader import (
     nbgrader_notebook,
     write_nbgrader_course,
 )
-from course.classroom.notebooks import notebooks
+from course.classroom.notebooks import NOTEBOOKS, language_folder, notebooks
 
 REPOSITORY = Path(__file__).resolve().parent.parent
 FULL = os.environ.get("COURSE_NBGRADER") == "full"
@@ -60,6 +60,21 @@ def course(tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
+def chinese_course(tmp_path_factory):
+    """The nbgrader course of the Chinese twins (make nbgrader COURSE_LANG=zh-CN)."""
+    folder = tmp_path_factory.mktemp("nbgrader-zh-CN")
+    write_nbgrader_course(folder, language_folder(NOTEBOOKS, "zh-CN"))
+    return folder
+
+
+def nbgrader_api(course: Path) -> NbGraderAPI:
+    config = Config()
+    config.merge(PyFileConfigLoader("nbgrader_config.py", str(course)).load_config())
+    config.CourseDirectory.root = str(course)
+    return NbGraderAPI(config=config)
+
+
+@pytest.fixture(scope="module")
 def api(course):
     # nbgrader runs `alembic` for its database, and the grading kernels import the
     # course and tests/mistakes.py.
@@ -67,10 +82,7 @@ def api(course):
     patch.setenv("PATH", f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}")
     paths = [str(REPOSITORY), str(REPOSITORY / "tests"), os.environ.get("PYTHONPATH", "")]
     patch.setenv("PYTHONPATH", os.pathsep.join(filter(None, paths)))
-    config = Config()
-    config.merge(PyFileConfigLoader("nbgrader_config.py", str(course)).load_config())
-    config.CourseDirectory.root = str(course)
-    yield NbGraderAPI(config=config)
+    yield nbgrader_api(course)
     patch.undo()
     if TABLE:
         print("\nlesson | available | solutions | stubs | each named mistake")
@@ -176,6 +188,49 @@ def test_the_release_shows_every_exercise_as_its_stub_and_no_solution(book, cour
     stubs = sum(STUB_LINE in cell_source(cell) for cell in release["cells"])
     assert stubs >= len(exercises(teacher))
     assert all(not cell.get("outputs") for cell in release["cells"])
+
+
+def code_only(source: str) -> list[str]:
+    return [line for line in source.splitlines() if not line.lstrip().startswith("#")]
+
+
+def graded_cells(notebook: dict) -> list[tuple]:
+    """What a gradebook knows of a lesson: each nbgrader cell's id, grade id, kind and points."""
+    return [
+        (
+            cell["cell_type"],
+            cell.get("id"),
+            *(cell["metadata"]["nbgrader"].get(key) for key in ("grade_id", "points")),
+            *(cell["metadata"]["nbgrader"][key] for key in ("grade", "solution", "locked")),
+        )
+        for cell in notebook["cells"]
+        if "nbgrader" in cell["metadata"]
+    ]
+
+
+@pytest.mark.parametrize("book", LESSONS, ids=lambda book: book.path.stem)
+def test_the_chinese_release_grades_as_the_english_one_and_shows_no_solution(
+    book, course, api, chinese_course
+):
+    """Same cell ids, grade ids and points: one gradebook could grade either language."""
+    lesson = book.path.stem
+    twin = language_folder(book.path.parent, "zh-CN") / book.path.name
+    teacher = json.loads(twin.read_text(encoding="utf-8"))
+    english = released(course, api, lesson)
+    chinese = released(chinese_course, nbgrader_api(chinese_course), lesson)
+    assert graded_cells(chinese) == graded_cells(english)
+    assert graded_cells(english), "the comparison above needs graded cells"
+    leaked = solution_lines(teacher) & shown_lines(chinese)
+    assert solution_lines(teacher) and not leaked, f"solution lines: {sorted(leaked)[:2]}"
+    assert all(not cell.get("outputs") for cell in chinese["cells"])
+    english_tests = [cell_source(c) for c in english["cells"] if c["id"].endswith("-test")]
+    chinese_tests = [cell_source(c) for c in chinese["cells"] if c["id"].endswith("-test")]
+    # The same code; only the comments differ, in Chinese.
+    for ours, theirs in zip(chinese_tests, english_tests, strict=True):
+        assert code_only(ours) == code_only(theirs) and ours != theirs
+        assert "自动评分测试" in ours
+    markdown = "".join(cell_source(c) for c in chinese["cells"] if c["cell_type"] == "markdown")
+    assert sum("\u4e00" <= letter <= "\u9fff" for letter in markdown) > 100
 
 
 @pytest.mark.parametrize(

@@ -5,7 +5,7 @@ from pathlib import Path
 from jupyter_server.services.kernels.connection.channels import ZMQChannelsWebsocketConnection
 from traitlets.utils.importstring import import_item
 
-from course.classroom.cli import lab_command
+from course.classroom.cli import app_command, lab_command
 from course.classroom.serving import CONNECTION_CLASS, PromptConnection
 
 
@@ -37,4 +37,7 @@ def test_make_lab_and_make_app_start_their_servers_with_it():
     assert "$(BIN)/python -m course lab" in makefile
     command = lab_command(Path("notebooks"), False, [])
     assert f"--ServerApp.kernel_websocket_connection_class={CONNECTION_CLASS}" in command
-    assert "--Voila.kernel_websocket_connection_class=$(PROMPT)" in makefile
+    # make app starts Voila through python -m course app.
+    assert "$(BIN)/python -m course app" in makefile
+    command = app_command(Path("notebooks"), 8866, [])
+    assert f"--Voila.kernel_websocket_connection_class={CONNECTION_CLASS}" in command

@@ -7,7 +7,9 @@ No page may show three consecutive lines of an exercise's solution. Every HTML p
 build must load, every picture on it decode, and every link that stays inside the site
 reach a file, and an anchor the element it names. The landing page must be the course
 map, linking every lesson. A screenshot of the landing page and of lesson 01 goes to
-``docs/browser/``.
+``docs/browser/``, and one of the Chinese landing page. The Chinese site, in ``zh-CN/``,
+is held to the same, and every page of either language links its twin in the other,
+which must exist.
 """
 
 from __future__ import annotations
@@ -31,6 +33,11 @@ from tests_browser.conftest import REPOSITORY, free_port
 SITE = Path(os.environ.get("SITE", REPOSITORY / "build" / "site")).resolve()
 DOCS = REPOSITORY / "docs" / "browser"
 LESSON_PAGES = sorted(SITE.glob("[0-9][0-9]_*.html"))
+#: The Chinese site's folder: the same page names as the English one's.
+CHINESE = SITE / "zh-CN"
+CHINESE_LESSON_PAGES = sorted(CHINESE.glob("[0-9][0-9]_*.html"))
+#: Every page of both languages.
+PAGES = sorted(SITE.glob("*.html")) + sorted(CHINESE.glob("*.html"))
 
 # For every <img>: whether it decoded, and its natural size.
 IMAGES = """async () => Promise.all([...document.images].map(async (image) => {
@@ -81,25 +88,45 @@ def visit(page: Page, url: str) -> tuple[list, list[str]]:
     return page.evaluate(IMAGES), page.evaluate(LINKS)
 
 
-def test_the_site_has_the_course_map_and_every_lesson():
-    assert (SITE / "index.html").is_file()
+def test_the_site_has_the_course_map_and_every_lesson_in_both_languages():
+    assert (SITE / "index.html").is_file() and (CHINESE / "index.html").is_file()
     lessons = sorted(path.stem for path in (REPOSITORY / "notebooks").glob("[0-9][0-9]_*.ipynb"))
     assert [page.stem for page in LESSON_PAGES] == [name for name in lessons if name[:2] != "00"]
+    assert [page.stem for page in CHINESE_LESSON_PAGES] == [page.stem for page in LESSON_PAGES]
+
+
+SWITCH = re.compile(r'<nav class="language-switch"[^>]*>(.*?)</nav>', re.DOTALL)
+
+
+def test_every_page_of_both_languages_links_its_twin_in_the_other():
+    """Read off the built files: the switch is in the page's HTML, whatever a script does."""
+    assert len(PAGES) >= 2 * (len(LESSON_PAGES) + 1)
+    for path in PAGES:
+        switches = SWITCH.findall(path.read_text(encoding="utf-8"))
+        assert len(switches) == 1, f"{path.relative_to(SITE)}: {len(switches)} language switches"
+        targets = re.findall(r'<a href="([^"]+)" hreflang="([^"]+)"', switches[0])
+        chinese = path.parent == CHINESE
+        assert [language for _, language in targets] == ["en" if chinese else "zh-CN"]
+        twin = (path.parent / targets[0][0]).resolve()
+        assert twin == (SITE if chinese else CHINESE).resolve() / path.name, path
+        assert twin.is_file(), f"{path.relative_to(SITE)} links {targets[0][0]}, which is missing"
+    chinese_page = (CHINESE / "01_de_casteljau.html").read_text(encoding="utf-8")
+    assert '<html class="no-js" lang="zh-CN"' in chinese_page
+    assert re.search(r"<h1>[^<]*[\u4e00-\u9fff]", chinese_page), "lesson 01's title in Chinese"
 
 
 def test_every_page_loads_every_picture_decodes_and_no_internal_link_is_broken(
     offline_page: Page, site: str
 ):
-    pages = sorted(SITE.glob("*.html"))
     links: set[str] = set()
     pictures = 0
-    for path in pages:
-        images, found = visit(offline_page, site + path.name)
+    for path in PAGES:
+        images, found = visit(offline_page, site + path.relative_to(SITE).as_posix())
         broken = [src for src, decoded, size in images if not (decoded and size > 0)]
         assert not broken, f"{path.name}: pictures that do not decode: {broken}"
         pictures += len(images)
         links.update(link for link in found if link.startswith(site))
-    assert pictures >= len(LESSON_PAGES) * 3, f"only {pictures} pictures on the whole site"
+    assert pictures >= len(LESSON_PAGES) * 6, f"only {pictures} pictures on the whole site"
 
     anchors: dict[str, set[str]] = {}
     missing = []
@@ -133,6 +160,18 @@ def test_the_landing_page_is_the_course_map_and_links_every_lesson(offline_page:
     assert len(images) >= len(LESSON_PAGES), "the course map shows one picture per lesson"
     DOCS.mkdir(parents=True, exist_ok=True)
     offline_page.screenshot(path=str(DOCS / "site_course_map.png"))
+    images, links = visit(offline_page, site + "zh-CN/")
+    assert offline_page.locator("h1").first.inner_text().startswith("课程地图")
+    for lesson in CHINESE_LESSON_PAGES:
+        assert f"{site}zh-CN/{lesson.name}" in links, f"the Chinese map does not link {lesson.name}"
+    assert len(images) >= len(CHINESE_LESSON_PAGES), "the Chinese map shows a picture per lesson"
+    # The Chinese text is drawn in the font the site ships: Chromium here has no Chinese font.
+    loaded = offline_page.evaluate(
+        """async () => (await document.fonts.load('16px "Course CJK"', '课程地图'))
+            .map((face) => face.status)"""
+    )
+    assert loaded == ["loaded"], loaded
+    offline_page.screenshot(path=str(DOCS / "site_course_map_zh-CN.png"))
 
 
 def test_a_lesson_page_shows_its_apps_still_pictures_with_the_gallerys_captions(
@@ -179,24 +218,26 @@ def test_no_page_of_the_published_site_shows_a_solution():
     answers = solution_triples()
     assert len(answers) > 30, "the solutions have lines to look for"
     leaking = []
-    for path in sorted(SITE.glob("*.html")):
+    for path in PAGES:
         lines = page_lines(path)
         shown = {tuple(lines[i : i + 3]) for i in range(len(lines) - 2)}
         if answers & shown:
-            leaking.append(path.name)
-    print(f"\npages of {SITE.name}/ containing a solution line: {len(leaking)}")
+            leaking.append(path.relative_to(SITE).as_posix())
+    print(f"\npages of {SITE.name}/ (both languages) containing a solution line: {len(leaking)}")
     assert leaking == []
-    assert any("your code here" in " ".join(page_lines(page)) for page in LESSON_PAGES)
+    for pages in (LESSON_PAGES, CHINESE_LESSON_PAGES):
+        assert any("your code here" in " ".join(page_lines(page)) for page in pages)
 
 
 def test_formulas_render_offline_from_the_sites_own_mathjax(offline_page: Page, site: str):
     """The browser may fetch nothing outside the site: MathJax must come from it."""
-    for path in sorted(SITE.glob("*.html")):
+    for path in PAGES:
         markup = path.read_text(encoding="utf-8")
         sources = re.findall(r"<script[^>]*\bsrc=\"([^\"]+)\"", markup)
         assert all(not urlparse(source).netloc for source in sources), (path.name, sources)
         assert "cdn.jsdelivr" not in markup and "cdnjs" not in markup, path.name
     assert (SITE / "_static" / "mathjax" / "tex-mml-chtml.js").is_file()
+    assert (CHINESE / "_static" / "mathjax" / "tex-mml-chtml.js").is_file()
     visit(offline_page, site + "01_de_casteljau.html")
     offline_page.wait_for_function(
         "() => document.querySelectorAll('mjx-container').length > 0", timeout=60_000

@@ -10,6 +10,11 @@ The lessons' notebooks are found beside the package in the course's repository (
 ``$COURSE_NOTEBOOKS``, or ``./notebooks``; ``--notebooks DIR`` says where). An installed
 package without them still draws the gallery, every registered lesson's pictures; the
 student edition and the map need the notebooks, and say so.
+
+Every edition comes in each language of :data:`course.classroom.notebooks.LANGUAGES`:
+``--language zh-CN`` (or ``$COURSE_LANG``; English by default) makes ``lab``, ``student``,
+``nbgrader`` and ``app`` use the Chinese twins in ``notebooks/zh-CN/``; ``lab`` writes
+their student edition into ``student/zh-CN/`` and opens its course map.
 """
 
 from __future__ import annotations
@@ -22,10 +27,20 @@ from pathlib import Path
 
 from course.classroom import edition, gallery, link, nbgrader
 from course.classroom.course_map import course_map, update_readme
-from course.classroom.notebooks import NOTEBOOKS_VARIABLE, find_notebooks
+from course.classroom.notebooks import (
+    DEFAULT_LANGUAGE,
+    LANGUAGES,
+    NOTEBOOKS_VARIABLE,
+    find_notebooks,
+    language_folder,
+)
 from course.classroom.registry import lessons
 
-__all__ = ["lab_command", "main"]
+__all__ = ["app_command", "lab_command", "main"]
+
+#: The environment variable that chooses the editions' language (``make lab COURSE_LANG=zh-CN``),
+#: not ``LANG``, which every shell sets for its own messages.
+LANGUAGE_VARIABLE = "COURSE_LANG"
 
 NOT_FOUND = (
     "the lessons' notebooks are not beside the installed package, nor in ./notebooks: "
@@ -38,8 +53,14 @@ NOT_FOUND = (
 PROMPT = "course.classroom.serving.PromptConnection"
 
 
-def lab_command(notebooks: str | Path, teacher: bool, extra: list[str]) -> list[str]:
+def lab_command(
+    notebooks: str | Path, teacher: bool, extra: list[str], language: str = DEFAULT_LANGUAGE
+) -> list[str]:
     """The ``jupyter lab`` command line: rooted at the repository, opening a course map.
+
+    The student edition's map is ``student/00_index.ipynb``, the teacher's
+    ``notebooks/00_index.ipynb``; another ``language`` than English opens the map of its
+    folder, ``student/zh-CN/`` or ``notebooks/zh-CN/``.
 
     Examples
     --------
@@ -48,6 +69,8 @@ def lab_command(notebooks: str | Path, teacher: bool, extra: list[str]) -> list[
     (['-m', 'jupyterlab', '--ServerApp.root_dir=/course'], '--no-browser')
     >>> command[4]
     '--LabApp.default_url=/lab/tree/student/00_index.ipynb'
+    >>> lab_command(Path("/course/notebooks"), False, [], "zh-CN")[4]
+    '--LabApp.default_url=/lab/tree/student/zh-CN/00_index.ipynb'
     """
     if isinstance(notebooks, bool) or not isinstance(notebooks, (str, os.PathLike)):
         raise TypeError(f"notebooks: expected a folder path; got {type(notebooks).__name__}")
@@ -57,7 +80,7 @@ def lab_command(notebooks: str | Path, teacher: bool, extra: list[str]) -> list[
         raise TypeError(f"extra: expected a list of jupyter lab options; got {extra!r:.60}")
     notebooks = Path(notebooks)
     root = notebooks.resolve().parent
-    opened = notebooks.resolve() if teacher else root / "student"
+    opened = language_folder(notebooks.resolve() if teacher else root / "student", language)
     command = [
         sys.executable,
         "-m",
@@ -69,6 +92,48 @@ def lab_command(notebooks: str | Path, teacher: bool, extra: list[str]) -> list[
     if hasattr(os, "geteuid") and os.geteuid() == 0:
         command.append("--allow-root")  # JupyterLab refuses root without it (containers)
     return command + extra
+
+
+def app_command(notebooks: str | Path, port: int, extra: list[str]) -> list[str]:
+    """The ``voila`` command line serving the lessons in ``notebooks`` as apps, code hidden.
+
+    ``notebooks`` is a language's folder (:func:`course.classroom.notebooks.language_folder`):
+    Voila's page lists its lessons, each opened at ``/voila/render/NN_topic.ipynb``.
+
+    Examples
+    --------
+    >>> command = app_command(Path("/course/notebooks/zh-CN"), 8866, [])
+    >>> command[1:4]
+    ['-m', 'voila', '/course/notebooks/zh-CN']
+    >>> command[-1]
+    '--Voila.kernel_websocket_connection_class=course.classroom.serving.PromptConnection'
+    """
+    if isinstance(notebooks, bool) or not isinstance(notebooks, (str, os.PathLike)):
+        raise TypeError(f"notebooks: expected a folder path; got {type(notebooks).__name__}")
+    if isinstance(port, bool) or not isinstance(port, int) or not 0 < port < 65536:
+        raise ValueError(f"port: expected a TCP port, an int from 1 to 65535; got {port!r:.60}")
+    if not isinstance(extra, list) or not all(isinstance(option, str) for option in extra):
+        raise TypeError(f"extra: expected a list of voila options; got {extra!r:.60}")
+    return [
+        sys.executable,
+        "-m",
+        "voila",
+        str(notebooks),
+        "--no-browser",
+        "--Voila.ip=127.0.0.1",
+        f"--port={port}",
+        *extra,
+        f"--Voila.kernel_websocket_connection_class={PROMPT}",
+    ]
+
+
+def _language(value: str | None) -> str:
+    """The ``--language`` asked for, else ``$COURSE_LANG``, else English; checked."""
+    language = value if value is not None else os.environ.get(LANGUAGE_VARIABLE) or DEFAULT_LANGUAGE
+    if language not in LANGUAGES:
+        named = "--language" if value is not None else LANGUAGE_VARIABLE
+        raise ValueError(f"{named}: expected one of {', '.join(LANGUAGES)}; got {language!r:.60}")
+    return language
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -83,6 +148,14 @@ def main(argv: list[str] | None = None) -> int:
         "--teacher", action="store_true", help="open the solved lessons in notebooks/ instead"
     )
     lab.add_argument(
+        "--notebooks", type=Path, help="the lessons' folder (default: the repository's notebooks/)"
+    )
+    app = commands.add_parser(
+        "app",
+        help="serve the lessons as apps in Voila, code hidden (other options go to voila)",
+    )
+    app.add_argument("--port", type=int, default=8866, help="the port (default: 8866)")
+    app.add_argument(
         "--notebooks", type=Path, help="the lessons' folder (default: the repository's notebooks/)"
     )
     grading = commands.add_parser(
@@ -137,9 +210,16 @@ def main(argv: list[str] | None = None) -> int:
     twins_command.add_argument("--notebooks", type=Path, help="the English lessons' folder")
     twins_command.add_argument("--update-po", action="store_true", help="merge new English first")
     twins_command.add_argument("--check", action="store_true", help="write nothing; fail on gaps")
+    for command in (lab, app, student_command, grading):
+        command.add_argument(
+            "--language",
+            metavar="LANGUAGE",
+            help=f"the edition's language: {', '.join(LANGUAGES)} (default: "
+            f"${LANGUAGE_VARIABLE}, else {DEFAULT_LANGUAGE})",
+        )
     link.add_command(commands)
     args, extra = parser.parse_known_args(argv)
-    if extra and args.command != "lab":
+    if extra and args.command not in ("lab", "app"):
         parser.error(f"unrecognized arguments: {' '.join(extra)}")
     if args.command == "link":
         try:
@@ -157,17 +237,25 @@ def main(argv: list[str] | None = None) -> int:
 
         return twins.run(args.notebooks, args.update_po, args.check)
     try:
+        language = DEFAULT_LANGUAGE
+        if args.command in ("lab", "app", "student", "nbgrader"):
+            language = _language(args.language)
+            lessons_folder = language_folder(args.notebooks, language)
         if args.command == "lab":
             if not args.teacher:
                 # student/ is the edition's own folder: one written before the edition kept
                 # a manifest is taken over (its notebooks count as the student's work).
-                report = edition.write_student_edition(
-                    args.notebooks.resolve().parent / "student", args.notebooks, force=True
-                )
+                student = language_folder(args.notebooks.resolve().parent / "student", language)
+                report = edition.write_student_edition(student, lessons_folder, force=True)
+                shown = student.relative_to(args.notebooks.resolve().parent).as_posix()
                 for line in report.lines():
-                    print(f"student/: {line}", file=sys.stderr)
-            command = lab_command(args.notebooks, args.teacher, extra)
+                    print(f"{shown}/: {line}", file=sys.stderr)
+            command = lab_command(args.notebooks, args.teacher, extra, language)
             return subprocess.call(command)
+        if args.command == "app":
+            if not lessons_folder.is_dir():
+                raise ValueError(f"notebooks: no lessons in {lessons_folder}")
+            return subprocess.call(app_command(lessons_folder, args.port, extra))
         if args.command == "map" and args.readme:
             changed = update_readme(args.readme, args.notebooks)
             print(f"{args.readme}: lesson table {'rewritten' if changed else 'unchanged'}")
@@ -184,9 +272,9 @@ def main(argv: list[str] | None = None) -> int:
                 pictures = gallery.named_pictures(pictures, args.only)
             written = gallery.write_gallery(args.out, args.force, pictures)
         elif args.command == "nbgrader":
-            written = nbgrader.write_nbgrader_course(args.out, args.notebooks, args.force)
+            written = nbgrader.write_nbgrader_course(args.out, lessons_folder, args.force)
         else:
-            report = edition.write_student_edition(args.out, args.notebooks, args.force)
+            report = edition.write_student_edition(args.out, lessons_folder, args.force)
             for line in report.lines():
                 print(f"{args.out}: {line}", file=sys.stderr)
             return 0

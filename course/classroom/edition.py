@@ -3,6 +3,10 @@
 Standard library only: ``python -m course student`` needs no numpy, matplotlib
 or ipywidgets.
 
+A Chinese twin (``notebooks/zh-CN/``) goes through the same parser; the notes the
+edition writes into it are in the language its first cell sets
+(:func:`notebook_language`), from the library's gettext catalog.
+
 An exercise cell in a lesson is tagged ``solution``: it defines the
 student's function and ends with the checker call, for example::
 
@@ -45,7 +49,9 @@ from pathlib import Path
 from typing import Any
 
 from course.classroom.folders import check_output_folder
-from course.classroom.notebooks import NOTEBOOKS, notebooks
+from course.classroom.notebooks import DEFAULT_LANGUAGE, LANGUAGES, NOTEBOOKS, notebooks
+from course.i18n import LANGUAGES as LOCALES
+from course.i18n import N_, gettext_catalog
 
 # The helpers below __all__'s names (cell_source, check_notebook, notebook_text,
 # read_notebook, solution_bodies, EditionReport) serve this package's other editions.
@@ -62,6 +68,8 @@ __all__ = [
     "cell_source",
     "check_notebook",
     "exercise_stub",
+    "hidden_note",
+    "notebook_language",
     "notebook_text",
     "parse_solution",
     "read_notebook",
@@ -69,6 +77,7 @@ __all__ = [
     "solution_bodies",
     "solution_cells",
     "student_notebook",
+    "translated",
     "write_student_edition",
 ]
 
@@ -80,7 +89,7 @@ STUB_LINE = 'raise NotImplementedError("your code here")'
 BEGIN_SOLUTION = "### BEGIN SOLUTION"
 END_SOLUTION = "### END SOLUTION"
 #: What the student edition shows instead of a cell that reveals a solution.
-HIDDEN_NOTE = (
+HIDDEN_NOTE = N_(
     "*Student edition: a cell here printed code that answers an exercise. "
     "Solve the exercise first; the teacher's edition has the cell.*"
 )
@@ -89,7 +98,46 @@ HIDDEN_NOTE = (
 KERNELSPEC = {"display_name": "Python 3 (ipykernel)", "language": "python", "name": "python3"}
 #: The student edition's record of what it wrote: a digest of each notebook's sources.
 MANIFEST = ".edition.json"
+_SETS_LANGUAGE = re.compile(r"""^\s*course\.use_language\(\s*["']([^"']+)["']\s*\)""", re.MULTILINE)
 _PRINTS_SOURCE = re.compile(r"\bsource_of\(|getsource\(|^\s*\S+\?\?\s*$|%psource", re.MULTILINE)
+
+
+def notebook_language(notebook: dict[str, Any]) -> str:
+    """The language a lesson shows: the one its first code cell sets, else English.
+
+    Examples
+    --------
+    >>> cell = {"cell_type": "code", "metadata": {}, "source": 'course.use_language("zh-CN")'}
+    >>> notebook_language({"cells": [cell]}), notebook_language({"cells": []})
+    ('zh-CN', 'en')
+    """
+    check_notebook(notebook)
+    code = [cell_source(cell) for cell in notebook["cells"] if cell["cell_type"] == "code"]
+    found = _SETS_LANGUAGE.search(code[0]) if code else None
+    return found.group(1) if found and found.group(1) in LANGUAGES else DEFAULT_LANGUAGE
+
+
+def translated(message: str, language: str) -> str:
+    """``message``, one of the library's English messages, in ``language``.
+
+    Examples
+    --------
+    >>> translated(HIDDEN_NOTE, "en") == HIDDEN_NOTE
+    True
+    >>> translated(HIDDEN_NOTE, "zh-CN")[:4]
+    '*学生版'
+    """
+    if not isinstance(message, str):
+        raise TypeError(f"message: expected a str; got {type(message).__name__}")
+    if language not in LANGUAGES:
+        raise ValueError(f"language: expected one of {', '.join(LANGUAGES)}; got {language!r:.60}")
+    locale = LOCALES[language]
+    return message if locale is None else gettext_catalog(locale).gettext(message)
+
+
+def hidden_note(language: str = DEFAULT_LANGUAGE) -> str:
+    """The student edition's note, in ``language``, in place of a cell that reveals a solution."""
+    return translated(HIDDEN_NOTE, language)
 
 
 def exercise_stub(source: str) -> str:
@@ -322,18 +370,20 @@ def solution_cells(notebook: dict[str, Any]) -> list[int]:
 def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
     """A copy of ``notebook`` (nbformat 4 JSON) with stubs for solutions and no outputs.
 
-    Cells that reveal a solution (:func:`reveals`) become a markdown note.
-    The kernelspec is JupyterLab's own (:data:`KERNELSPEC`).
+    Cells that reveal a solution (:func:`reveals`) become a markdown note, in the
+    notebook's language (:func:`notebook_language`). The kernelspec is JupyterLab's own
+    (:data:`KERNELSPEC`).
     """
     check_notebook(notebook)
     student = copy.deepcopy(notebook)
+    note = hidden_note(notebook_language(notebook))
     for index, cell in enumerate(student["cells"]):
         if reveals(cell):
             student["cells"][index] = {
                 "cell_type": "markdown",
                 "id": cell.get("id", f"hidden-{index}"),
                 "metadata": {"tags": ["hidden"]},
-                "source": HIDDEN_NOTE,
+                "source": note,
             }
     for index in solution_cells(student):
         cell = student["cells"][index]
@@ -448,9 +498,21 @@ def _beside_name(out: Path, name: str, manifest: dict[str, str]) -> str:
 
 
 def _is_edition(out: Any) -> bool:
-    """Whether ``out`` holds a student edition this function wrote (its manifest)."""
+    """Whether ``out`` holds a student edition this function wrote (its manifest).
+
+    A folder that holds only other languages' editions (``student/zh-CN/``, written
+    before the English one) counts as one: the English edition goes beside them.
+    """
     try:
-        return isinstance(out, (str, os.PathLike)) and (Path(out) / MANIFEST).is_file()
+        if not isinstance(out, (str, os.PathLike)):
+            return False
+        out = Path(out)
+        if (out / MANIFEST).is_file():
+            return True
+        entries = list(out.iterdir()) if out.is_dir() else []
+        return bool(entries) and all(
+            entry.name in LANGUAGES and (entry / MANIFEST).is_file() for entry in entries
+        )
     except OSError:
         return False
 

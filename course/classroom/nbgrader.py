@@ -40,20 +40,23 @@ from typing import Any
 from course.classroom.edition import (
     BEGIN_SOLUTION,
     END_SOLUTION,
-    HIDDEN_NOTE,
     KERNELSPEC,
     SOLUTION_TAG,
     STUB_LINE,
     cell_source,
+    hidden_note,
+    notebook_language,
     notebook_text,
     parse_solution,
     read_notebook,
     reveals,
     solution_bodies,
     solution_cells,
+    translated,
 )
 from course.classroom.folders import check_output_folder
-from course.classroom.notebooks import NOTEBOOKS, notebooks
+from course.classroom.notebooks import DEFAULT_LANGUAGE, NOTEBOOKS, notebooks
+from course.i18n import N_
 
 __all__ = [
     "EXERCISE_POINTS",
@@ -68,6 +71,18 @@ __all__ = [
 
 #: The points of each exercise's test cell.
 EXERCISE_POINTS = 1
+# The test cell's comments, in the lesson's language (edition.translated).
+_TEST_COMMENT = N_(
+    "Autograded test of {function} ({points} point): it raises, with the check's report, "
+    "if the answer is wrong."
+)
+_TEST_COMMENT_POINTS = N_(
+    "Autograded test of {function} ({points} points): it raises, with the check's report, "
+    "if the answer is wrong."
+)
+_EARLIER_COMMENT = N_(
+    "Graded with the library's {earlier}, so that a mistake there is not charged twice."
+)
 #: nbgrader's cell metadata schema.
 SCHEMA_VERSION = 3
 #: The library's answer to each exercise that a later one builds on, as "module:name":
@@ -109,19 +124,22 @@ class Exercise:
 
     @property
     def grade_cell(self) -> str:
-        """The source of the autograded test cell."""
+        """The source of the autograded test cell, its comments in English."""
+        return self.grade_source(DEFAULT_LANGUAGE)
+
+    def grade_source(self, language: str) -> str:
+        """The source of the autograded test cell, its comments in ``language``."""
         call = f"{self.check}.assert_passed()"
+        comment = _TEST_COMMENT if self.points == 1 else _TEST_COMMENT_POINTS
         lines = [
-            f"# Autograded test of {self.function} ({self.points} point"
-            f"{'s' if self.points != 1 else ''}): it raises, with the check's report, "
-            "if the answer is wrong."
+            "# " + translated(comment, language).format(function=self.function, points=self.points)
         ]
         if not self.uses:
             return "\n".join([*lines, call])
         names = ", ".join(repr(name) for name in self.uses)
+        earlier = translated(_EARLIER_COMMENT, language).format(earlier=" and ".join(self.uses))
         lines += [
-            f"# Graded with the library's {' and '.join(self.uses)}, so that a mistake "
-            "there is not charged twice.",
+            f"# {earlier}",
             "from course.classroom.nbgrader import earlier_exercises",
             "",
             f"with earlier_exercises({self.function}, {names}):",
@@ -198,9 +216,11 @@ def nbgrader_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
     """A copy of a lesson as nbgrader's source: solution cells, test cells, no outputs.
 
     Cells that reveal a solution another way become the student edition's
-    note; every output is cleared; the kernelspec is JupyterLab's.
+    note; the notes and the test cells' comments are in the lesson's language; every
+    output is cleared; the kernelspec is JupyterLab's.
     """
     found = exercises(notebook)
+    language = notebook_language(notebook)
     source = copy.deepcopy(notebook)
     cells = []
     by_cell = {exercise.cell: exercise for exercise in found}
@@ -210,7 +230,7 @@ def nbgrader_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
                 "cell_type": "markdown",
                 "id": cell.get("id", f"hidden-{index}"),
                 "metadata": {"tags": ["hidden"]},
-                "source": HIDDEN_NOTE,
+                "source": hidden_note(language),
             }
         if cell["cell_type"] == "code":
             cell["outputs"] = []
@@ -241,7 +261,7 @@ def nbgrader_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
                     )
                 },
                 "outputs": [],
-                "source": exercise.grade_cell,
+                "source": exercise.grade_source(language),
             }
         )
     source["cells"] = cells

@@ -2,7 +2,7 @@
 
 Everything that can be read off a notebook is read off it: a lesson exists
 when its notebook exists, its title is the notebook's first heading and its
-summary the paragraph after it. Standard library only.
+summary the paragraph after it. Standard library only (and :mod:`course.i18n`, which is).
 """
 
 from __future__ import annotations
@@ -13,13 +13,28 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["NOTEBOOKS", "Notebook", "find_notebooks", "notebooks"]
+from course.i18n import DEFAULT_LANGUAGE
+from course.i18n import LANGUAGES as _LIBRARY_LANGUAGES
+
+__all__ = [
+    "DEFAULT_LANGUAGE",
+    "LANGUAGES",
+    "NOTEBOOKS",
+    "Notebook",
+    "find_notebooks",
+    "language_folder",
+    "notebooks",
+]
 
 #: The lessons' folder when the package is used from its repository (``pip install -e``).
 #: An installed package (``pip install .``) has no such folder: see :func:`find_notebooks`.
 NOTEBOOKS = Path(__file__).resolve().parent.parent.parent / "notebooks"
 #: An environment variable naming the lessons' folder, for an installed package.
 NOTEBOOKS_VARIABLE = "COURSE_NOTEBOOKS"
+#: The editions' languages, the library's (:mod:`course.i18n`): English, the lessons in
+#: ``notebooks/``, is the default; every other language's lessons are their twins in
+#: ``notebooks/<language>/`` (``python -m course twins``).
+LANGUAGES = tuple(_LIBRARY_LANGUAGES)
 LESSON_FILE = re.compile(r"^(\d\d)_(\w+)\.ipynb$")
 _HEADING = re.compile(r"^#\s+(.+?)\s*$", re.MULTILINE)
 
@@ -49,6 +64,28 @@ def find_notebooks() -> Path | None:
         if folder.is_dir() and any(LESSON_FILE.match(path.name) for path in folder.iterdir()):
             return folder
     return None
+
+
+def language_folder(folder: str | Path, language: str) -> Path:
+    """The lessons of ``language``: ``folder`` itself for English, else its twins' folder.
+
+    Examples
+    --------
+    >>> language_folder("notebooks", "zh-CN").as_posix()
+    'notebooks/zh-CN'
+    >>> language_folder("notebooks", "en").as_posix()
+    'notebooks'
+    >>> language_folder("notebooks", "fr")
+    Traceback (most recent call last):
+    ...
+    ValueError: language: expected one of en, zh-CN; got 'fr'
+    """
+    if isinstance(folder, bool) or not isinstance(folder, (str, os.PathLike)):
+        raise TypeError(f"folder: expected a folder path; got {type(folder).__name__}")
+    if not isinstance(language, str) or language not in LANGUAGES:
+        raise ValueError(f"language: expected one of {', '.join(LANGUAGES)}; got {language!r:.60}")
+    folder = Path(folder)
+    return folder if language == DEFAULT_LANGUAGE else folder / language
 
 
 def notebooks(folder: str | Path = NOTEBOOKS, index: bool = False) -> list[Notebook]:

@@ -38,6 +38,7 @@ from PIL import Image as PILImage
 
 from course import limits
 from course._validate import as_int, describe
+from course.i18n import _
 
 __all__ = [
     "GRAY_PIXELS",
@@ -74,7 +75,8 @@ def rounding_level(value: float, bound: float = 1e-12, spec: str = ".1e") -> str
     """
     value = float(value)
     if abs(value) < bound:
-        return f"below {bound:.0e}".replace("e-0", "e-").replace("e+0", "e+")
+        shown = f"{bound:.0e}".replace("e-0", "e-").replace("e+0", "e+")
+        return _("below {bound}").format(bound=shown)
     return format(value, spec)
 
 
@@ -103,7 +105,9 @@ def png_bytes(pixels: np.ndarray) -> bytes:
         and pixels.shape[2] in (3, 4)
     ):
         raise ValueError(
-            f"pixels must be an (H, W, 3) or (H, W, 4) uint8 array; got {describe(pixels)}"
+            _("pixels must be an (H, W, 3) or (H, W, 4) uint8 array; got {given}").format(
+                given=describe(pixels)
+            )
         )
     height, width, channels = pixels.shape
     rows = np.zeros((height, 1 + channels * width), dtype=np.uint8)  # filter byte 0: none
@@ -178,7 +182,9 @@ class FigureView:
     ) -> None:
         rows, columns = shape
         if format not in ("png", "jpeg"):
-            raise ValueError(f"format must be one of 'png', 'jpeg'; got {format!r}")
+            raise ValueError(
+                _("format must be one of 'png', 'jpeg'; got {given}").format(given=repr(format))
+            )
         self.figure = Figure(figsize=(columns / dpi, rows / dpi), dpi=dpi)
         self.canvas = FigureCanvasAgg(self.figure)
         self.image = Picture(width=columns, height=rows, format=format)
@@ -231,8 +237,11 @@ class FigureView:
         height, width = image.shape[:2]
         if (round(box.width), round(box.height)) != (width, height):
             raise ValueError(
-                f"image: expected the axes' {round(box.height)} x {round(box.width)} pixels; "
-                f"got {height} x {width}"
+                _(
+                    "image: expected the axes' {rows} x {columns} pixels; got {height} x {width}"
+                ).format(
+                    rows=round(box.height), columns=round(box.width), height=height, width=width
+                )
             )
         canvas = np.asarray(self.canvas.buffer_rgba())
         canvas[top : top + height, left : left + width, :3] = image
@@ -344,17 +353,18 @@ class _GlyphCache:
         if original is None or isinstance(original, cls) or _RENDER_NORMAL is None:
             return
         renderer._draw_text_glyphs_and_boxes = cls(renderer, original)
+        renderer.draw_text = _LayoutCache(renderer, renderer.draw_text)
 
     def __call__(self, gc: Any, x: float, y: float, angle: float, glyphs: Any, boxes: Any) -> None:
         glyphs = list(glyphs)
-        plain = all(slant == 0 and extend == 1 for _, _, _, slant, extend, _, _ in glyphs)
+        plain = all(glyph[3] == 0 and glyph[4] == 1 for glyph in glyphs)  # no slant, no stretch
         if angle != 0 or boxes or not gc.get_antialiased() or not plain:
             self.original(gc, x, y, angle, glyphs, boxes)
             return
         flags = backend_agg.get_hinting_flag()
         renderer = self.renderer
         height = renderer.height
-        for font, size, glyph_index, _, _, dx, dy in glyphs:  # dy is upwards
+        for font, size, glyph_index, _slant, _extend, dx, dy in glyphs:  # dy is upwards
             # The glyph's origin in FreeType's 26.6 fixed point, y upwards, as Agg places it.
             origin_x = round(0x40 * (x + dx))
             origin_y = round(0x40 * (height - y + dy))
@@ -378,6 +388,58 @@ class _GlyphCache:
                 0,
                 gc,
             )
+
+
+class _LayoutCache:
+    """Agg's ``draw_text`` with each text's glyph layout computed once, then reused.
+
+    Matplotlib 3.11 lays a text out anew (shaping it, loading and hinting
+    every glyph) at every draw: a quarter of a millisecond for a point's
+    label "P1", which a drag redraws at every step. The layout (which glyphs
+    of which font, at which offsets from the text's origin) depends on the
+    string, the font, its size, the resolution and the hinting only, not on
+    where the text stands, so the cached one is the one Agg computes (the
+    tests compare the pixels). Mathtext and anything with font features or
+    a language go to Agg unchanged. At most :attr:`SIZE` layouts are kept:
+    a drag shows new numbers at every step, and they are not worth keeping.
+    """
+
+    SIZE = 256
+
+    def __init__(self, renderer: Any, original: Any) -> None:
+        self.renderer, self.original = renderer, original
+        self.layouts: dict[tuple, list[tuple]] = {}
+
+    def __call__(
+        self,
+        gc: Any,
+        x: float,
+        y: float,
+        s: str,
+        prop: Any,
+        angle: float,
+        ismath: Any = False,
+        mtext: Any = None,
+    ) -> None:
+        plain = mtext is None or (mtext.get_fontfeatures() is None and mtext.get_language() is None)
+        if ismath or not plain:
+            self.original(gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
+            return
+        renderer = self.renderer
+        font = renderer._prepare_font(prop)  # the font list rcParams give now, sized
+        size = prop.get_size_in_points()
+        flags = backend_agg.get_hinting_flag()
+        key = (font, s, size, renderer.dpi, flags)
+        glyphs = self.layouts.get(key)
+        if glyphs is None:
+            glyphs = [
+                (item.ft_object, size, item.glyph_index, 0, 1, item.x, item.y)
+                for item in font._layout(s, flags=flags)
+            ]
+            if len(self.layouts) >= self.SIZE:
+                self.layouts.clear()
+            self.layouts[key] = glyphs
+        renderer._draw_text_glyphs_and_boxes(gc, x, y, angle, glyphs, [])
 
 
 def _empty_line(artist: Any) -> bool:
@@ -501,8 +563,10 @@ def pixel_figure(
     rows = max(heights) + top + gap // 2
     if columns * rows > limits.MAX_FIGURE_PIXELS:
         raise ValueError(
-            f"windows at zoom {zoom} make a {columns} x {rows} picture, more than the "
-            f"{limits.MAX_FIGURE_PIXELS} pixels allowed: crop smaller windows or zoom less"
+            _(
+                "windows at zoom {zoom} make a {columns} x {rows} picture, more than the "
+                "{most} pixels allowed: crop smaller windows or zoom less"
+            ).format(zoom=zoom, columns=columns, rows=rows, most=limits.MAX_FIGURE_PIXELS)
         )
     figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
     axes_list = []

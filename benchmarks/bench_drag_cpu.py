@@ -45,6 +45,16 @@ from course.widgets.de_casteljau import DeCasteljauApp  # noqa: E402
 
 BATCH = 20
 GOAL = 0.5
+# Radians per step round the circle: not a fraction of a turn, so the path never comes
+# back to a point it passed, as a student's drag seldom does. (A path that came back
+# every 50 steps let matplotlib's cache of text sizes answer B(t)'s numbers from
+# memory, for every way: a millisecond a step that a real drag pays.)
+ANGLE_STEP = 0.1234
+
+
+def _draw_unrecorded(cls: type, line: object, renderer: object) -> None:
+    """The anchor draws every line as matplotlib does, at every step."""
+    line.draw(renderer)
 
 
 class Measured:
@@ -80,12 +90,16 @@ class Measured:
             yield
             return
         install, empty = picture._GlyphCache.install, picture._empty_line
+        record, origin = picture._LineReplay.record, picture.FixedText._origin
         picture._GlyphCache.install = classmethod(lambda cls, renderer: None)
         picture._empty_line = lambda artist: False
+        picture._LineReplay.record = classmethod(_draw_unrecorded)
+        picture.FixedText._origin = lambda text, renderer, shown: None  # drawn as Text
         try:
             yield
         finally:
             picture._GlyphCache.install, picture._empty_line = install, empty
+            picture._LineReplay.record, picture.FixedText._origin = record, origin
 
     def batch(self) -> None:
         value = self.app.view.image.value
@@ -93,7 +107,7 @@ class Measured:
             start = time.process_time()
             for _ in range(BATCH):
                 self.step += 1
-                angle = self.step * 2 * np.pi / 50
+                angle = self.step * ANGLE_STEP
                 self.app.pointer("move", *(self.centre + 40 * np.array([np.cos(angle), 1])))
                 self.app.pointer("move", *(self.centre + 40 * np.array([1, np.sin(angle)])))
             self.batches.append((time.process_time() - start) / (2 * BATCH))

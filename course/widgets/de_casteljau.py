@@ -21,6 +21,7 @@ from course.bezier import de_casteljau, de_casteljau_levels
 from course.i18n import _
 from course.images import EXAMPLE_POINTS
 from course.widgets.base import Handle, SliderApp, format_points, parse_points
+from course.widgets.picture import FixedText
 
 __all__ = ["DeCasteljauApp"]
 
@@ -131,11 +132,15 @@ class DeCasteljauApp(SliderApp):
         ]
         self.title = axes.set_title("", fontsize=10)
         # While a point is dragged only B(t)'s numbers change: the title's start is drawn
-        # once into the background and the numbers beside it (text costs the most to draw).
-        self.title_start, self.title_numbers = (
-            self.figure.text(0, 0, "", transform=IdentityTransform(), fontsize=10, visible=False)
-            for _ in range(2)
+        # once into the background and the numbers beside it (text costs the most to draw),
+        # placed once and laid out from their characters (FixedText).
+        self.title_start = self.figure.text(
+            0, 0, "", transform=IdentityTransform(), fontsize=10, visible=False
         )
+        self.title_numbers = FixedText(
+            0, 0, "", transform=IdentityTransform(), fontsize=10, visible=False
+        )
+        self.figure.add_artist(self.title_numbers)
         # Everything that moves is drawn over a cached background (blitting):
         # the axes, the ticks and the legend are drawn only when they change.
         self.animate(

@@ -27,6 +27,7 @@ import anywidget
 import matplotlib
 import numpy as np
 import traitlets
+from matplotlib import colors as mcolors
 from matplotlib import ft2font
 from matplotlib.axes import Axes
 from matplotlib.backends import backend_agg
@@ -34,6 +35,8 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
+from matplotlib.path import Path as MatplotlibPath
+from matplotlib.text import Text
 from PIL import Image as PILImage
 
 from course import limits
@@ -43,6 +46,7 @@ from course.i18n import _
 __all__ = [
     "GRAY_PIXELS",
     "FigureView",
+    "FixedText",
     "Picture",
     "PixelPanel",
     "Still",
@@ -189,6 +193,8 @@ class FigureView:
         self.canvas = FigureCanvasAgg(self.figure)
         self.image = Picture(width=columns, height=rows, format=format)
         self._background = None
+        # The moving lines' Agg calls, replayed at a drag's steps (render_moving).
+        self._replays: dict[Line2D, _LineReplay | None] = {}
         # The RGBA pixels the browser holds: the last whole picture and the patches since.
         self._shown: np.ndarray | None = None
 
@@ -213,7 +219,10 @@ class FigureView:
         in pixels: written into the picture as they are, under the artists,
         without matplotlib's resampling (for images shown pixel for pixel).
         ``patches`` sends only the changed rectangles (:meth:`publish_patches`),
-        for the steps of a drag; then the empty bytes are returned.
+        for the steps of a drag; then the empty bytes are returned. During
+        those steps a moving line is drawn by replaying the Agg calls of its
+        last full draw with its new data (:class:`_LineReplay`), as long as
+        its style and its axes' transform are the ones it was drawn with.
         """
         if self._background is None:
             self.canvas.draw()  # skips animated artists
@@ -222,9 +231,19 @@ class FigureView:
             self.canvas.restore_region(self._background)
         for axes, image in (images or {}).items():
             self.paste(axes, image)
-        _GlyphCache.install(self.canvas.get_renderer())
+        renderer = self.canvas.get_renderer()
+        _GlyphCache.install(renderer)
+        if not patches:
+            self._replays.clear()  # drawn in full: a line's style may have changed
         for artist in artists:
-            if not _empty_line(artist):  # an unused level of a construction: nothing to draw
+            if _empty_line(artist):  # an unused level of a construction: nothing to draw
+                continue
+            replay = self._replays.get(artist) if patches else None
+            if replay is not None and replay.draw(renderer):
+                continue
+            if patches and isinstance(artist, Line2D):
+                self._replays[artist] = _LineReplay.record(artist, renderer)
+            else:
                 self.figure.draw_artist(artist)
         if patches and self.publish_patches():
             return b""
@@ -250,6 +269,7 @@ class FigureView:
     def invalidate(self) -> None:
         """Forget the cached background; the next :meth:`render_moving` redraws it."""
         self._background = None
+        self._replays.clear()
 
     def publish(self) -> bytes:
         """Encode the canvas as it stands into the picture; return the encoded bytes."""
@@ -400,15 +420,25 @@ class _LayoutCache:
     string, the font, its size, the resolution and the hinting only, not on
     where the text stands, so the cached one is the one Agg computes (the
     tests compare the pixels). Mathtext and anything with font features or
-    a language go to Agg unchanged. At most :attr:`SIZE` layouts are kept:
-    a drag shows new numbers at every step, and they are not worth keeping.
+    a language go to Agg unchanged. At most :attr:`SIZE` layouts are kept.
+
+    A drag shows new numbers at every step ("(355.0, 213.8)" takes Agg a
+    millisecond to lay out): a string of :data:`COMPOSABLE` characters is
+    laid out from the layouts of its pairs of neighbours, each computed
+    once. Shaping such a string moves each glyph by its predecessor's
+    advance and their pair's kerning, which is what the pair's layout holds;
+    the sums are of multiples of 1/64 pixel, exact in floating point (the
+    tests compare with Agg's layout of every pair and of random strings).
     """
 
     SIZE = 256
+    #: Numbers and what surrounds them: no ligatures, nothing shaped beyond a pair.
+    COMPOSABLE = frozenset("0123456789.,-+() ")
 
     def __init__(self, renderer: Any, original: Any) -> None:
         self.renderer, self.original = renderer, original
         self.layouts: dict[tuple, list[tuple]] = {}
+        self.pairs: dict[tuple, tuple | None] = {}
 
     def __call__(
         self,
@@ -432,14 +462,260 @@ class _LayoutCache:
         key = (font, s, size, renderer.dpi, flags)
         glyphs = self.layouts.get(key)
         if glyphs is None:
-            glyphs = [
-                (item.ft_object, size, item.glyph_index, 0, 1, item.x, item.y)
-                for item in font._layout(s, flags=flags)
-            ]
+            glyphs = self._composed(font, s, size, flags)
+            if glyphs is None:
+                glyphs = [
+                    (item.ft_object, size, item.glyph_index, 0, 1, item.x, item.y)
+                    for item in font._layout(s, flags=flags)
+                ]
             if len(self.layouts) >= self.SIZE:
                 self.layouts.clear()
             self.layouts[key] = glyphs
         renderer._draw_text_glyphs_and_boxes(gc, x, y, angle, glyphs, [])
+
+    def _composed(self, font: Any, s: str, size: float, flags: Any) -> list[tuple] | None:
+        """The layout of ``s`` from its pairs' layouts; None unless every pair is plain."""
+        if len(s) < 2 or not self.COMPOSABLE.issuperset(s):
+            return None
+        glyphs, x, previous = [], 0.0, None
+        for index in range(len(s) - 1):
+            pair = self._pair(font, s[index : index + 2], size, flags)
+            if pair is None or (previous is not None and previous != pair[0]):
+                return None  # a pair shaped into something else: Agg lays the string out
+            glyphs.append((*pair[0], 0, 1, x, 0.0))
+            x += pair[2]
+            previous = pair[1]
+        glyphs.append((*previous, 0, 1, x, 0.0))
+        return glyphs
+
+    def _pair(self, font: Any, pair: str, size: float, flags: Any) -> tuple | None:
+        """((font, size, glyph), (font, size, glyph), advance) of a two-glyph layout, or None."""
+        key = (font, pair, size, self.renderer.dpi, flags)
+        if key not in self.pairs:
+            items = font._layout(pair, flags=flags)
+            plain = len(items) == 2 and items[0].x == 0 and items[0].y == 0 and items[1].y == 0
+            self.pairs[key] = (
+                (
+                    (items[0].ft_object, size, items[0].glyph_index),
+                    (items[1].ft_object, size, items[1].glyph_index),
+                    items[1].x,
+                )
+                if plain
+                else None
+            )
+        return self.pairs[key]
+
+
+class FixedText(Text):
+    """A one-line text that stays where it stands while its characters change: numbers.
+
+    ``Text.draw`` measures every new string to place it, and FreeType lays
+    it out and hints its glyphs to do so (a millisecond for "(355.0,
+    213.8)"), though a left-aligned text only moves when its ascent or
+    descent do. Those of a string are the largest of its characters' (its
+    box is the union of theirs), so a string of characters measured once
+    needs no measuring: it is drawn where ``Text.draw`` puts the first
+    string with the same ascent and descent, by the call ``Text.draw``
+    makes. Anything else (rotated, centred, several lines, mathtext, a box,
+    path effects) is drawn by ``Text.draw``.
+    """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._extents: dict[tuple, tuple[float, float]] = {}
+        self._origins: dict[tuple, tuple[float, float]] = {}
+
+    def draw(self, renderer: Any) -> None:
+        text = self.get_text()
+        plain = (
+            renderer is not None
+            and self.get_visible()
+            and text
+            and "\n" not in text
+            and self.get_rotation() == 0
+            and self.get_horizontalalignment() == "left"
+            and not self.get_usetex()
+            and not self.get_wrap()
+            and self._bbox_patch is None
+            and not self.get_path_effects()
+            and not self._preprocess_math(text)[1]
+        )
+        origin = self._origin(renderer, text) if plain else None
+        if origin is None:
+            super().draw(renderer)
+            return
+        self._renderer = renderer
+        renderer.open_group("text", self.get_gid())
+        gc = renderer.new_gc()  # set up as Text.draw sets it up
+        gc.set_foreground(mcolors.to_rgba(self.get_color()), isRGBA=True)
+        gc.set_alpha(self.get_alpha())
+        gc.set_url(self._url)
+        gc.set_antialiased(self._antialiased)
+        gc.set_snap(self.get_snap())
+        self._set_gc_clip(gc)
+        renderer.draw_text(
+            gc, *origin, text, self._fontproperties, self.get_rotation(), ismath=False, mtext=self
+        )
+        gc.restore()
+        renderer.close_group("text")
+        self.stale = False
+
+    def _origin(self, renderer: Any, text: str) -> tuple[float, float] | None:
+        """Where Text.draw would draw ``text``: measured for its ascent and descent once."""
+        place = (
+            id(renderer),
+            renderer.dpi,
+            hash(self._fontproperties),
+            self._x,
+            self._y,
+            self.get_verticalalignment(),
+            tuple(self.get_transform().get_matrix().ravel()),
+        )
+        ascent = descent = 0.0
+        for character in set(text):
+            key = (place[:3], character)
+            if key not in self._extents:
+                _, height, down = renderer.get_text_width_height_descent(
+                    character, self._fontproperties, False
+                )
+                self._extents[key] = (height - down, down)
+            up, down = self._extents[key]
+            ascent, descent = max(ascent, up), max(descent, down)
+        key = (*place, ascent, descent)
+        if key not in self._origins:
+            _, height, down = renderer.get_text_width_height_descent(
+                text, self._fontproperties, False
+            )
+            if (height - down, down) != (ascent, descent):
+                return None  # not the union of its characters' boxes: measured by Text.draw
+            # Text.draw's own arithmetic, on this text's layout.
+            _, info, _ = self._get_layout(renderer)
+            x, y = info[0][2]
+            posx, posy = self.get_transform().transform(
+                (float(self.convert_xunits(self._x)), float(self.convert_yunits(self._y)))
+            )
+            x, y = x + posx, y + posy
+            if renderer.flipy():
+                y = renderer.get_canvas_width_height()[1] - y
+            self._origins[key] = (x, y)
+        return self._origins[key]
+
+
+class _Recorder:
+    """A renderer that draws as ``renderer`` does and keeps the calls that draw paths."""
+
+    def __init__(self, renderer: Any) -> None:
+        self._renderer = renderer
+        self.calls: list[tuple] = []
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._renderer, name)
+
+    def draw_path(self, gc: Any, path: Any, transform: Any, rgbFace: Any = None) -> None:
+        self.calls.append(("path", gc, path, transform, rgbFace))
+        self._renderer.draw_path(gc, path, transform, rgbFace)
+
+    def draw_markers(
+        self,
+        gc: Any,
+        marker_path: Any,
+        marker_trans: Any,
+        path: Any,
+        trans: Any,
+        rgbFace: Any = None,
+    ) -> None:
+        self.calls.append(("markers", gc, marker_path, marker_trans, path, trans, rgbFace))
+        self._renderer.draw_markers(gc, marker_path, marker_trans, path, trans, rgbFace)
+
+
+def _line_style(line: Line2D) -> tuple:
+    """What a line's Agg calls depend on besides its data: a change means a new recording."""
+    return (
+        line.get_visible(),
+        str(line.get_color()),
+        line.get_linewidth(),
+        line.get_linestyle(),
+        str(line.get_marker()),
+        line.get_markersize(),
+        str(line.get_markerfacecolor()),
+        str(line.get_markeredgecolor()),
+        line.get_markeredgewidth(),
+        line.get_alpha(),
+        line.get_antialiased(),
+        line.get_clip_on(),
+        tuple(line.get_transform().get_affine().get_matrix().ravel()),
+    )
+
+
+class _LineReplay:
+    """A moving line drawn by replaying its Agg calls with new data.
+
+    ``Line2D.draw`` spends three quarters of its time in Python (unit
+    conversion, transform bookkeeping, a graphics context set up property by
+    property) for one or two calls into Agg: a drag of lesson 01's P1
+    redraws seven lines at every step. :meth:`record` draws the line as
+    matplotlib does through a :class:`_Recorder`; :meth:`draw` then makes
+    the same calls, with the same graphics contexts and transforms, on a
+    path built from the line's new data exactly as ``Line2D.recache`` builds
+    it, so Agg gets the same input a full draw gives it. A line is recorded
+    only where that holds: affine transforms (the path goes to Agg as it
+    is), the default draw style, no mark-every, gap colour, sketch, path
+    effects, filter or rasterization; and :meth:`draw` refuses (returns
+    False) once the line's style or its transform differ from the recorded.
+    """
+
+    def __init__(self, line: Line2D, calls: list[tuple], style: tuple) -> None:
+        self.line, self.calls, self.style = line, calls, style
+
+    @classmethod
+    def record(cls, line: Line2D, renderer: Any) -> _LineReplay | None:
+        """Draw ``line`` into ``renderer``; return its replay, or None if it cannot have one."""
+        plain = (
+            line.get_drawstyle() == "default"
+            and line.get_markevery() is None
+            and line.get_gapcolor() is None
+            and line.get_sketch_params() is None
+            and not line.get_path_effects()
+            and not line.get_rasterized()
+            and line.get_agg_filter() is None
+        )
+        if not plain:
+            line.draw(renderer)
+            return None
+        style = _line_style(line)
+        recorder = _Recorder(renderer)
+        line.draw(recorder)
+        data = line._path  # built by the draw's recache
+        calls = []
+        for call in recorder.calls:
+            path = call[2] if call[0] == "path" else call[4]
+            if path.vertices is not data.vertices or path.codes is not None:
+                return None  # transformed or cut on the way to Agg: not this line's data
+            if call[0] == "path" and path is not data:
+                return None
+            calls.append(call)
+        return cls(line, calls, style) if calls else None
+
+    def draw(self, renderer: Any) -> bool:
+        """Draw the line with its current data as its recorded draw would; False if it cannot."""
+        line = self.line
+        if _line_style(line) != self.style:
+            return False
+        if line._invalidx or line._invalidy:  # as Line2D.draw: the path from the new data
+            line.recache()
+        path = line._path
+        if len(path.vertices) == 0 or line._subslice:
+            return False
+        for call in self.calls:
+            if call[0] == "path":
+                _, gc, _, transform, face = call
+                renderer.draw_path(gc, path, transform, face)
+            else:
+                _, gc, marker_path, marker_trans, _, trans, face = call
+                points = MatplotlibPath._fast_from_codes_and_verts(path.vertices, None, path)
+                renderer.draw_markers(gc, marker_path, marker_trans, points, trans, face)
+        line.stale = False
+        return True
 
 
 def _empty_line(artist: Any) -> bool:

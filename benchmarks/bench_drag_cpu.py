@@ -67,6 +67,8 @@ class Measured:
         self.app.view.image.send = self.keep
         if name == "full":
             self.app.BLIT = False  # canvas.draw() and a whole picture at every step
+            for artist in self.app.moving:
+                artist.set_animated(False)  # else canvas.draw() leaves them out
         if name in ("full", "today"):
             self.app.view.publish_patches = lambda: False
             # The whole title redrawn at every step, as before.

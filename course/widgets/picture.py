@@ -566,6 +566,7 @@ class FixedText(Text):
             id(renderer),
             renderer.dpi,
             hash(self._fontproperties),
+            renderer.get_canvas_width_height(),
             self._x,
             self._y,
             self.get_verticalalignment(),

@@ -4,19 +4,24 @@ A drag step is one pointer move handled as the browser sends it
 (``app.pointer("move", x, y)``): the control point moves, the construction is
 updated, the picture redrawn and published. Its CPU time decides how many
 students a core holds. Three ways, timed in the same run, in interleaved
-batches of 20 steps along the same circle of 40 pixels around P1, with
-``time.process_time`` (CPU time, not wall time: the machine is shared):
+batches of 20 steps along a circle of 40 pixels around P1 that never comes
+back to a point it passed (:data:`ANGLE_STEP`), with ``time.process_time``
+(CPU time, not wall time: the machine is shared):
 
 - **full**: no blitting, the whole figure drawn by matplotlib and the whole
   picture encoded as PNG, at every step;
 - **today** (the anchor): blitting as it was before this issue, the moving
-  artists redrawn over a cached background, every glyph of the title and
-  the label rendered anew by FreeType, and the whole picture encoded as PNG
-  (with today's faster RGB copy, so the anchor is if anything too fast);
+  artists redrawn by matplotlib over a cached background, the whole title
+  laid out, measured and rendered anew by FreeType, and the whole picture
+  encoded as PNG (with today's faster RGB copy, so the anchor is if
+  anything too fast);
 - **now**: the moving artists over the cached background with Agg's glyph
-  bitmaps cached, unused level lines skipped, the title's start drawn once
-  into the background and only B(t)'s numbers redrawn, and only the changed
-  rectangles encoded and sent (``FigureView.publish_patches``).
+  bitmaps and text layouts cached (numbers laid out from their pairs),
+  unused level lines skipped, lines drawn by replaying their Agg calls
+  with their new data (``_LineReplay``), the title's start drawn once into
+  the background and only B(t)'s numbers redrawn, placed without being
+  measured (``FixedText``), and only the changed rectangles encoded and
+  sent (``FigureView.publish_patches``).
 
 Goal: **now** at most half of **today**. Prints each way's CPU time per step
 (the fastest batch and the median batch, in ms) and the ratios, and the bytes

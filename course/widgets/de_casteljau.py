@@ -127,6 +127,9 @@ class DeCasteljauApp(SliderApp):
                 fontsize=9,
                 color="0.2",
                 visible=False,
+                # Drawn wherever its point is (a drag stops at the view's edge): no test
+                # of the point against the axes at every step.
+                annotation_clip=False,
             )
             for i in range(MAX_POINTS)
         ]
@@ -207,7 +210,8 @@ class DeCasteljauApp(SliderApp):
         for line, level in zip(self.level_lines, levels[:-1], strict=False):
             line.set_data(level[:, 0], level[:, 1])
         for line in self.level_lines[len(levels) - 1 :]:
-            line.set_data([], [])
+            if len(line.get_xdata(orig=True)):  # emptied once: not again at every step
+                line.set_data([], [])
         point = levels[-1][0]
         self.point_marker.set_data([point[0]], [point[1]])
         traced = de_casteljau(points, np.linspace(0.0, t, _CURVE_SAMPLES))

@@ -431,7 +431,7 @@ def test_fixed_text_draws_what_text_draws_and_falls_back_where_it_cannot():
 
 
 def test_a_replayed_line_is_drawn_as_matplotlib_draws_it_and_a_restyled_one_anew():
-    def drag(restyle: bool, replay: bool) -> list[np.ndarray]:
+    def drag(change: str, replay: bool) -> list[np.ndarray]:
         view = FigureView(shape=(80, 120))
         axes = view.figure.add_axes((0.05, 0.05, 0.9, 0.9))
         axes.set_xlim(0, 10)
@@ -443,9 +443,12 @@ def test_a_replayed_line_is_drawn_as_matplotlib_draws_it_and_a_restyled_one_anew
         for step in range(1, 6):
             line.set_data([1, 5 + 0.37 * step, 9], [1, 8 - 0.61 * step, 2])
             tail.set_data(np.linspace(0, step, 30), np.sqrt(np.linspace(0, step, 30)))
-            if restyle and step == 3:
+            if change == "style" and step == 3:
                 line.set_color("C2")
                 line.set_markersize(9)
+            if change == "view" and step == 3:
+                axes.set_xlim(-2, 12)
+                view.invalidate()  # as an app does when its view changes
             if not replay:
                 view.invalidate()  # a whole draw at every step: no replay
             view.render_moving([line, tail], patches=replay)
@@ -454,8 +457,8 @@ def test_a_replayed_line_is_drawn_as_matplotlib_draws_it_and_a_restyled_one_anew
             assert set(view._replays) == {line, tail}  # both were replayed
         return frames
 
-    for restyle in (False, True):
-        for agg, replayed in zip(drag(restyle, False), drag(restyle, True), strict=True):
+    for change in ("", "style", "view"):
+        for agg, replayed in zip(drag(change, False), drag(change, True), strict=True):
             np.testing.assert_array_equal(replayed, agg)
 
 

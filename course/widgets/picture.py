@@ -222,7 +222,8 @@ class FigureView:
         for the steps of a drag; then the empty bytes are returned. During
         those steps a moving line is drawn by replaying the Agg calls of its
         last full draw with its new data (:class:`_LineReplay`), as long as
-        its style and its axes' transform are the ones it was drawn with.
+        its style is the one it was drawn with; :meth:`invalidate`, which a
+        new view calls for anyway, drops the recordings.
         """
         if self._background is None:
             self.canvas.draw()  # skips animated artists
@@ -566,6 +567,16 @@ class FixedText(Text):
     string with the same ascent and descent, by the call ``Text.draw``
     makes. Anything else (rotated, centred, several lines, mathtext, a box,
     path effects) is drawn by ``Text.draw``.
+
+    Examples
+    --------
+    >>> view = FigureView(shape=(30, 100))
+    >>> numbers = view.figure.add_artist(FixedText(0.05, 0.3, "(3.5, -2.0)", animated=True))
+    >>> _ = view.render_moving([numbers])
+    >>> numbers.set_text("(41.0, 7.5)")
+    >>> _ = view.render_moving([numbers])
+    >>> bool((view.pixels()[..., 0] < 128).any()), len(numbers._origins)
+    (True, 1)
     """
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
@@ -692,7 +703,7 @@ def _line_style(line: Line2D) -> tuple:
         line.get_alpha(),
         line.get_antialiased(),
         line.get_clip_on(),
-        tuple(line.get_transform().get_affine().get_matrix().ravel()),
+        id(line.get_transform()),
     )
 
 
@@ -710,7 +721,9 @@ class _LineReplay:
     only where that holds: affine transforms (the path goes to Agg as it
     is), the default draw style, no mark-every, gap colour, sketch, path
     effects, filter or rasterization; and :meth:`draw` refuses (returns
-    False) once the line's style or its transform differ from the recorded.
+    False) once the line's style differs from the recorded. A new view
+    (limits, axes moved) comes with :meth:`FigureView.invalidate`, as the
+    cached background needs it too, and that drops every recording.
     """
 
     def __init__(self, line: Line2D, calls: list[tuple], style: tuple) -> None:

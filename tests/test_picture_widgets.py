@@ -1,13 +1,18 @@
 """course.widgets.picture: the encoders, blitting and pixels written as they are."""
 
 import io
+import itertools
 import json
 import shutil
 import subprocess
 
 import numpy as np
 import pytest
+from matplotlib.backends import backend_agg
 from matplotlib.figure import Figure
+from matplotlib.font_manager import FontProperties
+from matplotlib.text import Text
+from matplotlib.transforms import IdentityTransform
 from PIL import Image
 
 from course.widgets import picture
@@ -241,14 +246,16 @@ def decoded_rgba(data: bytes) -> np.ndarray:
 
 
 def test_cached_glyphs_paint_exactly_what_agg_paints(monkeypatch):
+    # Layouts cached, and composed from pairs for the numbers of the last text.
     texts = ["degree 3, t = 0.50: B(t) = (355.0, 213.8)", "P1", "Wavy AV (12.3, 4.5)"]
+    texts.append("(-7.25, 1) + (40.0, 613.9)")
     pictures = []
     for cached in (False, True):
-        view = FigureView(shape=(90, 300))
+        view = FigureView(shape=(110, 300))
         axes = view.figure.add_axes((0, 0, 1, 1))
         axes.set_axis_off()
         artists = [
-            axes.text(0.013 + 0.1 * i, 0.2 + 0.27 * i, text, fontsize=9 + i, animated=True)
+            axes.text(0.013 + 0.1 * i, 0.1 + 0.22 * i, text, fontsize=9 + i, animated=True)
             for i, text in enumerate(texts)
         ]
         artists.append(axes.text(0.5, 0.5, "turned", rotation=30, animated=True))
@@ -370,3 +377,95 @@ def test_picture_js_paints_patches_in_order_and_a_new_picture_drops_the_stale_on
         "V1",
         "canvas:V0@0,0 P1@1,1 P2@3,2 V1@0,0 P4@2,2",
     ]
+
+
+def test_numbers_laid_out_from_their_pairs_are_laid_out_as_agg_lays_them_out():
+    view = FigureView(shape=(40, 40))
+    renderer = view.canvas.get_renderer()
+    picture._GlyphCache.install(renderer)
+    layouts = renderer.draw_text
+    flags = backend_agg.get_hinting_flag()
+    rng = np.random.default_rng(7)
+    alphabet = sorted(picture._LayoutCache.COMPOSABLE)
+    for size in (7, 10, 13.5):
+        font = renderer._prepare_font(FontProperties(size=size))
+        strings = ["".join(pair) for pair in itertools.product(alphabet, repeat=2)]
+        strings += ["".join(rng.choice(alphabet, rng.integers(3, 20))) for _ in range(150)]
+        for text in strings:
+            agg = [
+                (item.ft_object, size, item.glyph_index, 0, 1, item.x, item.y)
+                for item in font._layout(text, flags=flags)
+            ]
+            assert layouts._composed(font, text, size, flags) == agg, text
+    # Letters are shaped by Agg: ligatures and kerning reach beyond a pair.
+    assert layouts._composed(font, "ffi 1", 10, flags) is None
+
+
+def test_fixed_text_draws_what_text_draws_and_falls_back_where_it_cannot():
+    strings = ["(355.0, 213.8)", "(-4.5, 0.0)", "1", "(9, 9)", "--", ", .", "(0.1, 22.7)"]
+    drawn = {}
+    for kind in (Text, picture.FixedText):
+        view = FigureView(shape=(60, 200))
+        texts = [
+            kind(13.3, 21.7, "", transform=IdentityTransform(), fontsize=11, va="bottom"),
+            kind(100.6, 40.2, "", transform=IdentityTransform(), fontsize=9, va="baseline"),
+            kind(150, 30, "", transform=IdentityTransform(), fontsize=8, ha="center"),
+            kind(60, 10, "", transform=IdentityTransform(), fontsize=8, rotation=20),
+        ]
+        for text in texts:
+            text.set_animated(True)
+            view.figure.add_artist(text)
+        frames = []
+        for shown in strings:  # a text's ascent and descent change with its characters
+            for text in texts:
+                text.set_text(shown)
+            view.render_moving(texts)
+            frames.append(view.pixels())
+        drawn[kind] = frames
+        if kind is picture.FixedText:  # placed once per ascent and descent; the rest by Text
+            assert len(texts[0]._origins) > 1 and texts[1]._origins
+            assert not texts[2]._origins and not texts[3]._origins
+    for text_frame, fixed_frame in zip(drawn[Text], drawn[picture.FixedText], strict=True):
+        assert (text_frame[..., 0] < 200).any()
+        np.testing.assert_array_equal(fixed_frame, text_frame)
+
+
+def test_a_replayed_line_is_drawn_as_matplotlib_draws_it_and_a_restyled_one_anew():
+    def drag(change: str, replay: bool) -> list[np.ndarray]:
+        view = FigureView(shape=(80, 120))
+        axes = view.figure.add_axes((0.05, 0.05, 0.9, 0.9))
+        axes.set_xlim(0, 10)
+        axes.set_ylim(0, 10)
+        (line,) = axes.plot([1, 5, 9], [1, 8, 2], "o--", color="C0", animated=True)
+        (tail,) = axes.plot([], [], color="C3", linewidth=3, animated=True)
+        view.render_moving([line, tail])
+        frames = []
+        for step in range(1, 6):
+            line.set_data([1, 5 + 0.37 * step, 9], [1, 8 - 0.61 * step, 2])
+            tail.set_data(np.linspace(0, step, 30), np.sqrt(np.linspace(0, step, 30)))
+            if change == "style" and step == 3:
+                line.set_color("C2")
+                line.set_markersize(9)
+            if change == "view" and step == 3:
+                axes.set_xlim(-2, 12)
+                view.invalidate()  # as an app does when its view changes
+            if not replay:
+                view.invalidate()  # a whole draw at every step: no replay
+            view.render_moving([line, tail], patches=replay)
+            frames.append(view.pixels())
+        if replay:
+            assert set(view._replays) == {line, tail}  # both were replayed
+        return frames
+
+    for change in ("", "style", "view"):
+        for agg, replayed in zip(drag(change, False), drag(change, True), strict=True):
+            np.testing.assert_array_equal(replayed, agg)
+
+
+def test_lines_on_a_log_axis_are_drawn_by_matplotlib_not_replayed():
+    view = FigureView(shape=(60, 60))
+    axes = view.figure.add_axes((0.1, 0.1, 0.8, 0.8))
+    axes.set_yscale("log")
+    (line,) = axes.plot([1, 2, 3], [1, 10, 100], animated=True)
+    view.render_moving([line])
+    assert picture._LineReplay.record(line, view.canvas.get_renderer()) is None

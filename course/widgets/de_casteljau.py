@@ -21,6 +21,7 @@ from course.bezier import de_casteljau, de_casteljau_levels
 from course.i18n import _
 from course.images import EXAMPLE_POINTS
 from course.widgets.base import Handle, SliderApp, format_points, parse_points
+from course.widgets.picture import FixedText
 
 __all__ = ["DeCasteljauApp"]
 
@@ -126,16 +127,23 @@ class DeCasteljauApp(SliderApp):
                 fontsize=9,
                 color="0.2",
                 visible=False,
+                # Drawn wherever its point is (a drag stops at the view's edge): no test
+                # of the point against the axes at every step.
+                annotation_clip=False,
             )
             for i in range(MAX_POINTS)
         ]
         self.title = axes.set_title("", fontsize=10)
         # While a point is dragged only B(t)'s numbers change: the title's start is drawn
-        # once into the background and the numbers beside it (text costs the most to draw).
-        self.title_start, self.title_numbers = (
-            self.figure.text(0, 0, "", transform=IdentityTransform(), fontsize=10, visible=False)
-            for _ in range(2)
+        # once into the background and the numbers beside it (text costs the most to draw),
+        # placed once and laid out from their characters (FixedText).
+        self.title_start = self.figure.text(
+            0, 0, "", transform=IdentityTransform(), fontsize=10, visible=False
         )
+        self.title_numbers = FixedText(
+            0, 0, "", transform=IdentityTransform(), fontsize=10, visible=False
+        )
+        self.figure.add_artist(self.title_numbers)
         # Everything that moves is drawn over a cached background (blitting):
         # the axes, the ticks and the legend are drawn only when they change.
         self.animate(
@@ -202,7 +210,8 @@ class DeCasteljauApp(SliderApp):
         for line, level in zip(self.level_lines, levels[:-1], strict=False):
             line.set_data(level[:, 0], level[:, 1])
         for line in self.level_lines[len(levels) - 1 :]:
-            line.set_data([], [])
+            if len(line.get_xdata(orig=True)):  # emptied once: not again at every step
+                line.set_data([], [])
         point = levels[-1][0]
         self.point_marker.set_data([point[0]], [point[1]])
         traced = de_casteljau(points, np.linspace(0.0, t, _CURVE_SAMPLES))

@@ -27,6 +27,7 @@ import anywidget
 import matplotlib
 import numpy as np
 import traitlets
+from matplotlib import colors as mcolors
 from matplotlib import ft2font
 from matplotlib.axes import Axes
 from matplotlib.backends import backend_agg
@@ -34,14 +35,18 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
+from matplotlib.path import Path as MatplotlibPath
+from matplotlib.text import Text
 from PIL import Image as PILImage
 
 from course import limits
 from course._validate import as_int, describe
+from course.i18n import _
 
 __all__ = [
     "GRAY_PIXELS",
     "FigureView",
+    "FixedText",
     "Picture",
     "PixelPanel",
     "Still",
@@ -74,7 +79,8 @@ def rounding_level(value: float, bound: float = 1e-12, spec: str = ".1e") -> str
     """
     value = float(value)
     if abs(value) < bound:
-        return f"below {bound:.0e}".replace("e-0", "e-").replace("e+0", "e+")
+        shown = f"{bound:.0e}".replace("e-0", "e-").replace("e+0", "e+")
+        return _("below {bound}").format(bound=shown)
     return format(value, spec)
 
 
@@ -84,9 +90,9 @@ def png_bytes(pixels: np.ndarray) -> bytes:
     What a picture redrawn at every step of a drag needs: Pillow's encoder
     tries an adaptive filter on every row, and on the course's line art
     that costs three times as long (5.5 against 1.6 ms for lesson 01's
-    500 x 500 picture) for a file no smaller (41 against 33 kB). RGBA is
-    for rectangles cut from the canvas during a drag: its rows are copied
-    whole, where dropping the alpha channel costs more than encoding it.
+    500 x 500 picture) for a file no smaller (41 against 33 kB). RGBA rows
+    are copied whole; RGB from an RGBA canvas is best cut by
+    :func:`_opaque_rgb` first (numpy copies three bytes of four slowly).
 
     Examples
     --------
@@ -103,7 +109,9 @@ def png_bytes(pixels: np.ndarray) -> bytes:
         and pixels.shape[2] in (3, 4)
     ):
         raise ValueError(
-            f"pixels must be an (H, W, 3) or (H, W, 4) uint8 array; got {describe(pixels)}"
+            _("pixels must be an (H, W, 3) or (H, W, 4) uint8 array; got {given}").format(
+                given=describe(pixels)
+            )
         )
     height, width, channels = pixels.shape
     rows = np.zeros((height, 1 + channels * width), dtype=np.uint8)  # filter byte 0: none
@@ -178,11 +186,15 @@ class FigureView:
     ) -> None:
         rows, columns = shape
         if format not in ("png", "jpeg"):
-            raise ValueError(f"format must be one of 'png', 'jpeg'; got {format!r}")
+            raise ValueError(
+                _("format must be one of 'png', 'jpeg'; got {given}").format(given=repr(format))
+            )
         self.figure = Figure(figsize=(columns / dpi, rows / dpi), dpi=dpi)
         self.canvas = FigureCanvasAgg(self.figure)
         self.image = Picture(width=columns, height=rows, format=format)
         self._background = None
+        # The moving lines' Agg calls, replayed at a drag's steps (render_moving).
+        self._replays: dict[Line2D, _LineReplay | None] = {}
         # The RGBA pixels the browser holds: the last whole picture and the patches since.
         self._shown: np.ndarray | None = None
 
@@ -207,7 +219,11 @@ class FigureView:
         in pixels: written into the picture as they are, under the artists,
         without matplotlib's resampling (for images shown pixel for pixel).
         ``patches`` sends only the changed rectangles (:meth:`publish_patches`),
-        for the steps of a drag; then the empty bytes are returned.
+        for the steps of a drag; then the empty bytes are returned. During
+        those steps a moving line is drawn by replaying the Agg calls of its
+        last full draw with its new data (:class:`_LineReplay`), as long as
+        its style is the one it was drawn with; :meth:`invalidate`, which a
+        new view calls for anyway, drops the recordings.
         """
         if self._background is None:
             self.canvas.draw()  # skips animated artists
@@ -216,9 +232,19 @@ class FigureView:
             self.canvas.restore_region(self._background)
         for axes, image in (images or {}).items():
             self.paste(axes, image)
-        _GlyphCache.install(self.canvas.get_renderer())
+        renderer = self.canvas.get_renderer()
+        _GlyphCache.install(renderer)
+        if not patches:
+            self._replays.clear()  # drawn in full: a line's style may have changed
         for artist in artists:
-            if not _empty_line(artist):  # an unused level of a construction: nothing to draw
+            if _empty_line(artist):  # an unused level of a construction: nothing to draw
+                continue
+            replay = self._replays.get(artist) if patches else None
+            if replay is not None and replay.draw(renderer):
+                continue
+            if patches and isinstance(artist, Line2D):
+                self._replays[artist] = _LineReplay.record(artist, renderer)
+            else:
                 self.figure.draw_artist(artist)
         if patches and self.publish_patches():
             return b""
@@ -231,8 +257,11 @@ class FigureView:
         height, width = image.shape[:2]
         if (round(box.width), round(box.height)) != (width, height):
             raise ValueError(
-                f"image: expected the axes' {round(box.height)} x {round(box.width)} pixels; "
-                f"got {height} x {width}"
+                _(
+                    "image: expected the axes' {rows} x {columns} pixels; got {height} x {width}"
+                ).format(
+                    rows=round(box.height), columns=round(box.width), height=height, width=width
+                )
             )
         canvas = np.asarray(self.canvas.buffer_rgba())
         canvas[top : top + height, left : left + width, :3] = image
@@ -241,6 +270,7 @@ class FigureView:
     def invalidate(self) -> None:
         """Forget the cached background; the next :meth:`render_moving` redraws it."""
         self._background = None
+        self._replays.clear()
 
     def publish(self) -> bytes:
         """Encode the canvas as it stands into the picture; return the encoded bytes."""
@@ -265,7 +295,7 @@ class FigureView:
         every step costs more than drawing it. The changed pixels are found by
         comparing with the pixels the browser holds; the rows that changed are
         grouped into bands (split where :data:`PATCH_GAP` rows or more did not
-        change), each band cut to its changed columns and sent as a PNG in one
+        change), each band cut to its changed columns and sent as an RGB PNG in one
         message ``{"kind": "patch", "rectangles": [[left, top, width, height],
         ...]}`` with one buffer per rectangle, which ``picture.js`` paints over
         its picture. ``value`` keeps the last whole picture: the drag's end
@@ -283,7 +313,7 @@ class FigureView:
             columns = np.flatnonzero(changed[top:bottom].any(axis=0))
             left, right = int(columns[0]), int(columns[-1]) + 1
             rectangles.append([left, top, right - left, bottom - top])
-            buffers.append(png_bytes(current[top:bottom, left:right]))
+            buffers.append(png_bytes(_opaque_rgb(current[top:bottom, left:right])))
             self._shown[top:bottom, left:right] = current[top:bottom, left:right]
         if rectangles:
             self.image.send({"kind": "patch", "rectangles": rectangles}, buffers=buffers)
@@ -292,6 +322,23 @@ class FigureView:
 
 #: Unchanged rows that split a patch in two: fewer cost more in messages than they save.
 PATCH_GAP = 12
+
+
+def _opaque_rgb(pixels: np.ndarray) -> np.ndarray:
+    """(H, W, 4) uint8 pixels of an opaque picture as (H, W, 3): its alpha is 255 throughout.
+
+    Pillow drops the alpha channel at the speed of a copy, where numpy copies
+    three bytes of four one pixel at a time; zlib then has a quarter less to
+    read, which pays for the copy, and a patch is 9% smaller.
+
+    >>> _opaque_rgb(np.full((1, 2, 4), 7, dtype=np.uint8)).shape
+    (1, 2, 3)
+    """
+    height, width = pixels.shape[:2]
+    rgba = PILImage.frombuffer(
+        "RGBA", (width, height), np.ascontiguousarray(pixels), "raw", "RGBA", 0, 1
+    )
+    return np.asarray(rgba.convert("RGB"))
 
 
 def _as_words(pixels: np.ndarray) -> np.ndarray:
@@ -344,17 +391,19 @@ class _GlyphCache:
         if original is None or isinstance(original, cls) or _RENDER_NORMAL is None:
             return
         renderer._draw_text_glyphs_and_boxes = cls(renderer, original)
+        renderer.draw_text = _LayoutCache(renderer, renderer.draw_text)
 
     def __call__(self, gc: Any, x: float, y: float, angle: float, glyphs: Any, boxes: Any) -> None:
         glyphs = list(glyphs)
-        plain = all(slant == 0 and extend == 1 for _, _, _, slant, extend, _, _ in glyphs)
+        plain = all(glyph[3] == 0 and glyph[4] == 1 for glyph in glyphs)  # no slant, no stretch
         if angle != 0 or boxes or not gc.get_antialiased() or not plain:
             self.original(gc, x, y, angle, glyphs, boxes)
             return
         flags = backend_agg.get_hinting_flag()
         renderer = self.renderer
         height = renderer.height
-        for font, size, glyph_index, _, _, dx, dy in glyphs:  # dy is upwards
+        pieces = []  # (bitmap, left column, top row) per glyph
+        for font, size, glyph_index, _slant, _extend, dx, dy in glyphs:  # dy is upwards
             # The glyph's origin in FreeType's 26.6 fixed point, y upwards, as Agg places it.
             origin_x = round(0x40 * (x + dx))
             origin_y = round(0x40 * (height - y + dy))
@@ -371,13 +420,364 @@ class _GlyphCache:
                 )
                 self.bitmaps[key] = cached
             buffer, left, top = cached
-            renderer._renderer.draw_text_image(
-                buffer,
-                (origin_x >> 6) + left,
-                int(height) - ((origin_y >> 6) + top) + buffer.shape[0],
-                0,
-                gc,
+            pieces.append((buffer, (origin_x >> 6) + left, int(height) - ((origin_y >> 6) + top)))
+        # One call into Agg for the whole text where no two glyphs' inked pixels meet
+        # (each call converts the graphics context anew: a tenth of a millisecond for
+        # B(t)'s numbers); where they do, Agg blends each glyph over the last, as it does.
+        merged = _merged_bitmaps(pieces) if len(pieces) > 1 else None
+        for buffer, left, top in [merged] if merged is not None else pieces:
+            # draw_text_image's y is downwards, at the bitmap's bottom side.
+            renderer._renderer.draw_text_image(buffer, left, top + buffer.shape[0], 0, gc)
+
+
+def _merged_bitmaps(
+    pieces: list[tuple[np.ndarray, int, int]],
+) -> tuple[np.ndarray, int, int] | None:
+    """Glyph bitmaps placed at (left, top) as one bitmap; None if two inked pixels meet.
+
+    Agg leaves a pixel a bitmap does not cover (0) as it is, so one bitmap of
+    glyphs that share no inked pixel paints what painting them one by one does.
+
+    >>> dot = np.full((1, 1), 200, dtype=np.uint8)
+    >>> image, left, top = _merged_bitmaps([(dot, 3, 5), (dot, 5, 6)])
+    >>> image.tolist(), left, top
+    ([[200, 0, 0], [0, 0, 200]], 3, 5)
+    >>> _merged_bitmaps([(dot, 3, 5), (dot, 3, 5)]) is None
+    True
+    """
+    left = min(piece[1] for piece in pieces)
+    top = min(piece[2] for piece in pieces)
+    right = max(piece[1] + piece[0].shape[1] for piece in pieces)
+    bottom = max(piece[2] + piece[0].shape[0] for piece in pieces)
+    image = np.zeros((bottom - top, right - left), dtype=np.uint8)
+    for buffer, column, row in pieces:
+        height, width = buffer.shape
+        region = image[row - top : row - top + height, column - left : column - left + width]
+        if np.logical_and(region, buffer).any():
+            return None
+        region |= buffer
+    return image, left, top
+
+
+class _LayoutCache:
+    """Agg's ``draw_text`` with each text's glyph layout computed once, then reused.
+
+    Matplotlib 3.11 lays a text out anew (shaping it, loading and hinting
+    every glyph) at every draw: a quarter of a millisecond for a point's
+    label "P1", which a drag redraws at every step. The layout (which glyphs
+    of which font, at which offsets from the text's origin) depends on the
+    string, the font, its size, the resolution and the hinting only, not on
+    where the text stands, so the cached one is the one Agg computes (the
+    tests compare the pixels). Mathtext and anything with font features or
+    a language go to Agg unchanged. At most :attr:`SIZE` layouts are kept.
+
+    A drag shows new numbers at every step ("(355.0, 213.8)" takes Agg a
+    millisecond to lay out): a string of :data:`COMPOSABLE` characters is
+    laid out from the layouts of its pairs of neighbours, each computed
+    once. Shaping such a string moves each glyph by its predecessor's
+    advance and their pair's kerning, which is what the pair's layout holds;
+    the sums are of multiples of 1/64 pixel, exact in floating point (the
+    tests compare with Agg's layout of every pair and of random strings).
+    """
+
+    SIZE = 256
+    #: Numbers and what surrounds them: no ligatures, nothing shaped beyond a pair.
+    COMPOSABLE = frozenset("0123456789.,-+() ")
+
+    def __init__(self, renderer: Any, original: Any) -> None:
+        self.renderer, self.original = renderer, original
+        self.layouts: dict[tuple, list[tuple]] = {}
+        self.pairs: dict[tuple, tuple | None] = {}
+
+    def __call__(
+        self,
+        gc: Any,
+        x: float,
+        y: float,
+        s: str,
+        prop: Any,
+        angle: float,
+        ismath: Any = False,
+        mtext: Any = None,
+    ) -> None:
+        plain = mtext is None or (mtext.get_fontfeatures() is None and mtext.get_language() is None)
+        if ismath or not plain:
+            self.original(gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
+            return
+        renderer = self.renderer
+        font = renderer._prepare_font(prop)  # the font list rcParams give now, sized
+        size = prop.get_size_in_points()
+        flags = backend_agg.get_hinting_flag()
+        key = (font, s, size, renderer.dpi, flags)
+        glyphs = self.layouts.get(key)
+        if glyphs is None:
+            glyphs = self._composed(font, s, size, flags)
+            if glyphs is None:
+                glyphs = [
+                    (item.ft_object, size, item.glyph_index, 0, 1, item.x, item.y)
+                    for item in font._layout(s, flags=flags)
+                ]
+            if len(self.layouts) >= self.SIZE:
+                self.layouts.clear()
+            self.layouts[key] = glyphs
+        renderer._draw_text_glyphs_and_boxes(gc, x, y, angle, glyphs, [])
+
+    def _composed(self, font: Any, s: str, size: float, flags: Any) -> list[tuple] | None:
+        """The layout of ``s`` from its pairs' layouts; None unless every pair is plain."""
+        if len(s) < 2 or not self.COMPOSABLE.issuperset(s):
+            return None
+        glyphs, x, previous = [], 0.0, None
+        for index in range(len(s) - 1):
+            pair = self._pair(font, s[index : index + 2], size, flags)
+            if pair is None or (previous is not None and previous != pair[0]):
+                return None  # a pair shaped into something else: Agg lays the string out
+            glyphs.append((*pair[0], 0, 1, x, 0.0))
+            x += pair[2]
+            previous = pair[1]
+        glyphs.append((*previous, 0, 1, x, 0.0))
+        return glyphs
+
+    def _pair(self, font: Any, pair: str, size: float, flags: Any) -> tuple | None:
+        """((font, size, glyph), (font, size, glyph), advance) of a two-glyph layout, or None."""
+        key = (font, pair, size, self.renderer.dpi, flags)
+        if key not in self.pairs:
+            items = font._layout(pair, flags=flags)
+            plain = len(items) == 2 and items[0].x == 0 and items[0].y == 0 and items[1].y == 0
+            self.pairs[key] = (
+                (
+                    (items[0].ft_object, size, items[0].glyph_index),
+                    (items[1].ft_object, size, items[1].glyph_index),
+                    items[1].x,
+                )
+                if plain
+                else None
             )
+        return self.pairs[key]
+
+
+class FixedText(Text):
+    """A one-line text that stays where it stands while its characters change: numbers.
+
+    ``Text.draw`` measures every new string to place it, and FreeType lays
+    it out and hints its glyphs to do so (a millisecond for "(355.0,
+    213.8)"), though a left-aligned text only moves when its ascent or
+    descent do. Those of a string are the largest of its characters' (its
+    box is the union of theirs), so a string of characters measured once
+    needs no measuring: it is drawn where ``Text.draw`` puts the first
+    string with the same ascent and descent, by the call ``Text.draw``
+    makes. Anything else (rotated, centred, several lines, mathtext, a box,
+    path effects) is drawn by ``Text.draw``.
+
+    Examples
+    --------
+    >>> view = FigureView(shape=(30, 100))
+    >>> numbers = view.figure.add_artist(FixedText(0.05, 0.3, "(3.5, -2.0)", animated=True))
+    >>> _ = view.render_moving([numbers])
+    >>> numbers.set_text("(41.0, 7.5)")
+    >>> _ = view.render_moving([numbers])
+    >>> bool((view.pixels()[..., 0] < 128).any()), len(numbers._origins)
+    (True, 1)
+    """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._extents: dict[tuple, tuple[float, float]] = {}
+        self._origins: dict[tuple, tuple[float, float]] = {}
+
+    def draw(self, renderer: Any) -> None:
+        text = self.get_text()
+        plain = (
+            renderer is not None
+            and self.get_visible()
+            and text
+            and "\n" not in text
+            and self.get_rotation() == 0
+            and self.get_horizontalalignment() == "left"
+            and not self.get_usetex()
+            and not self.get_wrap()
+            and self._bbox_patch is None
+            and not self.get_path_effects()
+            and not self._preprocess_math(text)[1]
+        )
+        origin = self._origin(renderer, text) if plain else None
+        if origin is None:
+            super().draw(renderer)
+            return
+        self._renderer = renderer
+        renderer.open_group("text", self.get_gid())
+        gc = renderer.new_gc()  # set up as Text.draw sets it up
+        gc.set_foreground(mcolors.to_rgba(self.get_color()), isRGBA=True)
+        gc.set_alpha(self.get_alpha())
+        gc.set_url(self._url)
+        gc.set_antialiased(self._antialiased)
+        gc.set_snap(self.get_snap())
+        self._set_gc_clip(gc)
+        renderer.draw_text(
+            gc, *origin, text, self._fontproperties, self.get_rotation(), ismath=False, mtext=self
+        )
+        gc.restore()
+        renderer.close_group("text")
+        self.stale = False
+
+    def _origin(self, renderer: Any, text: str) -> tuple[float, float] | None:
+        """Where Text.draw would draw ``text``: measured for its ascent and descent once."""
+        place = (
+            id(renderer),
+            renderer.dpi,
+            hash(self._fontproperties),
+            renderer.get_canvas_width_height(),
+            self._x,
+            self._y,
+            self.get_verticalalignment(),
+            tuple(self.get_transform().get_matrix().ravel()),
+        )
+        ascent = descent = 0.0
+        for character in set(text):
+            key = (place[:3], character)
+            if key not in self._extents:
+                _, height, down = renderer.get_text_width_height_descent(
+                    character, self._fontproperties, False
+                )
+                self._extents[key] = (height - down, down)
+            up, down = self._extents[key]
+            ascent, descent = max(ascent, up), max(descent, down)
+        key = (*place, ascent, descent)
+        if key not in self._origins:
+            _, height, down = renderer.get_text_width_height_descent(
+                text, self._fontproperties, False
+            )
+            if (height - down, down) != (ascent, descent):
+                return None  # not the union of its characters' boxes: measured by Text.draw
+            # Text.draw's own arithmetic, on this text's layout.
+            _, info, _ = self._get_layout(renderer)
+            x, y = info[0][2]
+            posx, posy = self.get_transform().transform(
+                (float(self.convert_xunits(self._x)), float(self.convert_yunits(self._y)))
+            )
+            x, y = x + posx, y + posy
+            if renderer.flipy():
+                y = renderer.get_canvas_width_height()[1] - y
+            self._origins[key] = (x, y)
+        return self._origins[key]
+
+
+class _Recorder:
+    """A renderer that draws as ``renderer`` does and keeps the calls that draw paths."""
+
+    def __init__(self, renderer: Any) -> None:
+        self._renderer = renderer
+        self.calls: list[tuple] = []
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._renderer, name)
+
+    def draw_path(self, gc: Any, path: Any, transform: Any, rgbFace: Any = None) -> None:
+        self.calls.append(("path", gc, path, transform, rgbFace))
+        self._renderer.draw_path(gc, path, transform, rgbFace)
+
+    def draw_markers(
+        self,
+        gc: Any,
+        marker_path: Any,
+        marker_trans: Any,
+        path: Any,
+        trans: Any,
+        rgbFace: Any = None,
+    ) -> None:
+        self.calls.append(("markers", gc, marker_path, marker_trans, path, trans, rgbFace))
+        self._renderer.draw_markers(gc, marker_path, marker_trans, path, trans, rgbFace)
+
+
+def _line_style(line: Line2D) -> tuple:
+    """What a line's Agg calls depend on besides its data: a change means a new recording."""
+    return (
+        line.get_visible(),
+        str(line.get_color()),
+        line.get_linewidth(),
+        line.get_linestyle(),
+        str(line.get_marker()),
+        line.get_markersize(),
+        str(line.get_markerfacecolor()),
+        str(line.get_markeredgecolor()),
+        line.get_markeredgewidth(),
+        line.get_alpha(),
+        line.get_antialiased(),
+        line.get_clip_on(),
+        id(line.get_transform()),
+    )
+
+
+class _LineReplay:
+    """A moving line drawn by replaying its Agg calls with new data.
+
+    ``Line2D.draw`` spends three quarters of its time in Python (unit
+    conversion, transform bookkeeping, a graphics context set up property by
+    property) for one or two calls into Agg: a drag of lesson 01's P1
+    redraws seven lines at every step. :meth:`record` draws the line as
+    matplotlib does through a :class:`_Recorder`; :meth:`draw` then makes
+    the same calls, with the same graphics contexts and transforms, on a
+    path built from the line's new data exactly as ``Line2D.recache`` builds
+    it, so Agg gets the same input a full draw gives it. A line is recorded
+    only where that holds: affine transforms (the path goes to Agg as it
+    is), the default draw style, no mark-every, gap colour, sketch, path
+    effects, filter or rasterization; and :meth:`draw` refuses (returns
+    False) once the line's style differs from the recorded. A new view
+    (limits, axes moved) comes with :meth:`FigureView.invalidate`, as the
+    cached background needs it too, and that drops every recording.
+    """
+
+    def __init__(self, line: Line2D, calls: list[tuple], style: tuple) -> None:
+        self.line, self.calls, self.style = line, calls, style
+
+    @classmethod
+    def record(cls, line: Line2D, renderer: Any) -> _LineReplay | None:
+        """Draw ``line`` into ``renderer``; return its replay, or None if it cannot have one."""
+        plain = (
+            line.get_drawstyle() == "default"
+            and line.get_markevery() is None
+            and line.get_gapcolor() is None
+            and line.get_sketch_params() is None
+            and not line.get_path_effects()
+            and not line.get_rasterized()
+            and line.get_agg_filter() is None
+        )
+        if not plain:
+            line.draw(renderer)
+            return None
+        style = _line_style(line)
+        recorder = _Recorder(renderer)
+        line.draw(recorder)
+        data = line._path  # built by the draw's recache
+        calls = []
+        for call in recorder.calls:
+            path = call[2] if call[0] == "path" else call[4]
+            if path.vertices is not data.vertices or path.codes is not None:
+                return None  # transformed or cut on the way to Agg: not this line's data
+            if call[0] == "path" and path is not data:
+                return None
+            calls.append(call)
+        return cls(line, calls, style) if calls else None
+
+    def draw(self, renderer: Any) -> bool:
+        """Draw the line with its current data as its recorded draw would; False if it cannot."""
+        line = self.line
+        if _line_style(line) != self.style:
+            return False
+        if line._invalidx or line._invalidy:  # as Line2D.draw: the path from the new data
+            line.recache()
+        path = line._path
+        if len(path.vertices) == 0 or line._subslice:
+            return False
+        for call in self.calls:
+            if call[0] == "path":
+                _, gc, _, transform, face = call
+                renderer.draw_path(gc, path, transform, face)
+            else:
+                _, gc, marker_path, marker_trans, _, trans, face = call
+                points = MatplotlibPath._fast_from_codes_and_verts(path.vertices, None, path)
+                renderer.draw_markers(gc, marker_path, marker_trans, points, trans, face)
+        line.stale = False
+        return True
 
 
 def _empty_line(artist: Any) -> bool:
@@ -501,8 +901,10 @@ def pixel_figure(
     rows = max(heights) + top + gap // 2
     if columns * rows > limits.MAX_FIGURE_PIXELS:
         raise ValueError(
-            f"windows at zoom {zoom} make a {columns} x {rows} picture, more than the "
-            f"{limits.MAX_FIGURE_PIXELS} pixels allowed: crop smaller windows or zoom less"
+            _(
+                "windows at zoom {zoom} make a {columns} x {rows} picture, more than the "
+                "{most} pixels allowed: crop smaller windows or zoom less"
+            ).format(zoom=zoom, columns=columns, rows=rows, most=limits.MAX_FIGURE_PIXELS)
         )
     figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
     axes_list = []

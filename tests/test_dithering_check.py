@@ -136,3 +136,27 @@ def test_both_checkers_report_in_chinese(in_chinese):
     unread = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, read_errors=False))
     assert "这是一个已知错误，误差从未被读取：" in str(unread)
     assert unread.mistake == "the errors are never read"  # the name stays an identifier
+
+
+def in_place(gray):
+    """Floyd-Steinberg pushing its errors into the caller's image, with no copy."""
+    height, width = gray.shape
+    output = np.zeros_like(gray)
+    for y in range(height):
+        for x in range(width):
+            output[y, x] = 1.0 if gray[y, x] > 0.5 else 0.0
+            error = gray[y, x] - output[y, x]
+            for dx, dy, weight in ((1, 0, 7), (-1, 1, 3), (0, 1, 5), (1, 1, 1)):
+                if 0 <= x + dx < width and y + dy < height:
+                    gray[y + dy, x + dx] += error * weight / 16
+    return output
+
+
+def test_diffusing_into_the_input_fails_and_points_at_the_reports_copy():
+    # The output is right, but the caller's image changed. The report copies its const input,
+    # so the message must not call the in-place loop the report's own slip.
+    result = check.dithering_error_diffuse(in_place)
+    message = str(result)
+    assert not result and "gray" in message
+    assert "its input is const, so it pushes the errors into a copy (inputcopy)" in message
+    assert "own slip" not in message

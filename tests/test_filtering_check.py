@@ -143,9 +143,11 @@ def test_blur_mistakes_are_named_with_a_map_and_the_first_pixel(student, mistake
     assert not result
     assert result.mistake == mistake
     assert result.picture is not None and result.picture.startswith(b"\x89PNG")
-    # The first case's first wrong pixel is the top-left corner: 4 of its 9 neighbours inside.
+    # The first case's first wrong pixel is the top-left corner: 4 of its 9 neighbours inside;
+    # a border slip leaves the 4 x 4 case's inner 2 x 2 right, and the report says so.
     assert (
-        "the first wrong pixel is (x, y) = (0, 0), on the border: 4 of 9 inside" in result.message
+        "the first wrong pixel is (x, y) = (0, 0), on the border: 4 of 9 inside, and every pixel "
+        "inside the image is right; 12 pixels differ" in result.message
     )
 
 
@@ -164,6 +166,56 @@ def test_edge_mistakes_are_named_with_a_map(student, mistake):
     assert result.mistake == mistake
     assert result.picture is not None
     assert "pixels differ" in result.message
+
+
+def running_blur(image):
+    """The box blur written into a copy that it also reads: later windows see blurred pixels."""
+    output = np.array(image, dtype=float)
+    for y in range(output.shape[0]):
+        for x in range(output.shape[1]):
+            window = output[max(y - 1, 0) : y + 2, max(x - 1, 0) : x + 2]
+            output[y, x] = window.mean(axis=(0, 1))
+    return output
+
+
+def test_a_blur_reading_its_own_updated_values_is_named():
+    result = check.blur(running_blur)
+    assert not result and result.mistake == "a blur that reads its own updated values"
+    assert "Read every window from the input as it was" in result.message
+    # Its first wrong pixel, (1, 0), is on the border, but the cause is not: (1, 1) is wrong too.
+    assert "the first wrong pixel is (x, y) = (1, 0), on the border, but pixels inside" in str(
+        result
+    )
+
+
+def _kernel_sum(kernel_x, kernel_y, combine):
+    return lambda image: combine(correlate(image, kernel_x), correlate(image, kernel_y))
+
+
+PREWITT_X = np.array([[-1.0, 0.0, 1.0]] * 3)
+
+
+@pytest.mark.parametrize(
+    "student",
+    [
+        _kernel_sum(SOBEL_X, SOBEL_X.T, lambda gx, gy: np.abs(gx) + np.abs(gy)),
+        _kernel_sum(SOBEL_X, SOBEL_X.T, lambda gx, gy: gx**2 + gy**2),
+        _kernel_sum(SOBEL_X, SOBEL_X.T, lambda gx, gy: np.hypot(gx, gy) / 8),
+        _kernel_sum(PREWITT_X, PREWITT_X.T, np.hypot),
+        _kernel_sum(SOBEL_X, SOBEL_X, np.hypot),
+    ],
+    ids=["|Gx|+|Gy|", "no sqrt", "/8", "Prewitt", "Gy = Gx"],
+)
+def test_a_wrong_kernel_or_sum_is_sent_inside_the_image_not_to_the_border(student):
+    # On the 4 x 4 case the first wrong pixel in reading order is the corner (0, 0); a mistake
+    # unrelated to the border is wrong at (1, 1) too, and the report sends the student there.
+    message = str(check.edge(student))
+    assert (
+        "(x, y) = (0, 0), on the border, but pixels inside the image are wrong too, the first "
+        "at (x, y) = (1, 1), where all 9 neighbours exist: start there" in message
+    )
+    assert "every pixel inside the image is right" not in message
+    assert "Hint: first check one pixel inside the image by hand" in message
 
 
 def test_an_interior_error_is_placed_inside_the_image():
@@ -219,7 +271,9 @@ def in_chinese(monkeypatch):
 def test_blur_and_edge_report_in_chinese(in_chinese):
     blurred = str(check.blur(lambda image: image))
     assert blurred.startswith("未通过 Blur：用例 1 不对\n  输入：image=")
-    assert "第一个错误的像素是 (x, y) = (0, 0)，在边界上：9 个邻居中有 4 个在图像内" in blurred
+    assert "第一个错误的像素是 (x, y) = (0, 0)，在边界上，但图像内部也有像素不对" in blurred
+    border = str(check.blur(lambda image: box_blur(image, "zero")))
+    assert "(0, 0)，在边界上：9 个邻居中有 4 个在图像内，而图像内部的每个像素都是对的" in border
     edge = str(check.edge(lambda image: sobel_magnitude(image, "zero")))
     assert "这是一个已知错误，零填充：" in edge and "Hint" not in edge
     nan = str(check.blur(nan_padded))

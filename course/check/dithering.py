@@ -6,7 +6,7 @@ carried into it), and recognises the slips the lab's reports make or invite:
 the matrix read transposed, ``>=`` for ``>``, one comparison per pixel
 without the 3 x 3 enlargement; a left edge that wraps around, a serpentine
 scan, errors that are never read, the error's sign flipped, the kernel
-mirrored, and the input dithered in place (the lab report's missing copy).
+mirrored, and the input dithered in place (the report copies its const input).
 Both checkers end on a small face; a pass shows the student's dithered face
 beside the expected one.
 
@@ -341,8 +341,8 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
         explain=_carried,
         forbidden=_library(),
         on_change=N_(
-            "This is the lab report's own slip: its loop pushes the errors into the "
-            "input image itself. Push them into a copy (buffer = gray.copy()), so that the "
+            "The lab report avoids this slip: its input is const, so it pushes the errors "
+            "into a copy (inputcopy). Do the same (buffer = gray.copy()), so that the "
             "caller's image stays as it was."
         ),
         pass_picture=_face_pass_picture,

@@ -4,10 +4,12 @@ A failure names the first wrong pixel as (x, y) with its window (how many of
 its nine neighbours lie inside the image), draws a map of where the output
 differs, and recognises the usual border slips: zero padding (dividing by 9
 everywhere), the frame skipped or copied, the nearest pixel repeated where
-the report averages only the pixels inside, and a window sliced from
-``y - 1`` at y = 0 (Python reads ``image[-1:2]`` as empty); for Sobel also a
-clipped magnitude and Gx alone. A blur that writes into its input fails,
-however right its values. A pass shows the student's output beside the
+the report averages only the pixels inside, a window sliced from ``y - 1``
+at y = 0 (Python reads ``image[-1:2]`` as empty), and a blur that reads its
+own updated values; for Sobel also a clipped magnitude and Gx alone. The
+border is blamed only when every pixel inside the image is right; otherwise
+the report names the first wrong pixel inside. A blur that writes into its
+input fails, however right its values. A pass shows the student's output beside the
 expected one.
 
 Hints come in steps: a failure says where to look, the next failures say
@@ -86,17 +88,32 @@ def _explain(case: dict[str, Any], expected: Any, given: Any) -> str:
         return _("your output has shape {given}; the image has shape {expected}").format(
             given=have.shape, expected=want.shape
         )
-    wrong = np.argwhere(~np.isclose(want, have, atol=1e-9, rtol=1e-9))
-    row, column = int(wrong[0][0]), int(wrong[0][1])
+    wrong_values = ~np.isclose(want, have, atol=1e-9, rtol=1e-9)
+    wrong = wrong_values.any(axis=2) if wrong_values.ndim == 3 else wrong_values
     height, width = want.shape[:2]
+    interior = np.zeros((height, width), dtype=bool)
+    interior[1:-1, 1:-1] = True
+    row, column = (int(i) for i in np.argwhere(wrong)[0])
     inside = (min(row + 1, height - 1) - max(row - 1, 0) + 1) * (
         min(column + 1, width - 1) - max(column - 1, 0) + 1
     )
+    # The border is blamed only when every pixel inside is right: a wrong kernel or sum shows
+    # inside too, and the first wrong pixel in reading order is usually the corner (0, 0).
+    wrong_inside = np.argwhere(wrong & interior)
     if inside == 9:
         where = _("inside the image")
+    elif len(wrong_inside):
+        where = _(
+            "on the border, but pixels inside the image are wrong too, the first at "
+            "(x, y) = ({x}, {y}), where all 9 neighbours exist: start there"
+        ).format(x=int(wrong_inside[0][1]), y=int(wrong_inside[0][0]))
+    elif interior.any():
+        where = _(
+            "on the border: {inside} of 9 inside, and every pixel inside the image is right"
+        ).format(inside=inside)
     else:
         where = _("on the border: {inside} of 9 inside").format(inside=inside)
-    count = len({(int(r), int(c)) for r, c, *_rest in wrong})
+    count = int(wrong.sum())
     differ = _("1 pixel differs") if count == 1 else _("{count} pixels differ").format(count=count)
     return _("the first wrong pixel is (x, y) = ({x}, {y}), {where}; {differ}").format(
         x=column, y=row, where=where, differ=differ
@@ -189,6 +206,17 @@ def _same_or_both_nan(expected: Any, given: Any) -> bool:
     )
 
 
+def _running_blur(image: Any) -> np.ndarray:
+    """The box blur written into the array its windows are read from, row by row."""
+    output = np.array(image, dtype=float)
+    height, width = output.shape[:2]
+    for y in range(height):
+        for x in range(width):
+            window = output[max(y - 1, 0) : y + 2, max(x - 1, 0) : x + 2]
+            output[y, x] = window.mean(axis=(0, 1))
+    return output
+
+
 BLUR_MISTAKES = (
     Mistake(
         N_("a window sliced from y - 1 at y = 0"),
@@ -232,6 +260,16 @@ BLUR_MISTAKES = (
             "counts twice. The report's rule averages only the pixels inside."
         ),
         lambda image: convolve(image, BOX, "replicate"),
+    ),
+    Mistake(
+        N_("a blur that reads its own updated values"),
+        N_(
+            "your loop writes each blurred pixel into the array it reads its windows from, so "
+            "every later window averages pixels that are already blurred (the picture smears "
+            "down and to the right). Read every window from the input as it was, and write "
+            "into a separate output array."
+        ),
+        _running_blur,
     ),
 )
 
@@ -312,8 +350,9 @@ BLUR_HINTS = register_hints(
     "Blur",
     Hints(
         where=N_(
-            "look at the pixels on the image's border: which neighbours you read there, "
-            "and what you divide by."
+            "first check one pixel inside the image by hand (the mean of its 9 neighbours, "
+            "read from the input as it was); then the border: which neighbours you read "
+            "there, and what you divide by."
         ),
         more=N_(
             "each output pixel is the mean of those of its 3 x 3 neighbours that exist: 9 "
@@ -369,8 +408,9 @@ EDGE_HINTS = register_hints(
     "Edge",
     Hints(
         where=N_(
-            "look at the border pixels (what you read outside the image), and at how you "
-            "combine the two gradients."
+            "first check one pixel inside the image by hand: the two kernels, their signs, "
+            "and how you combine Gx and Gy; then the border pixels (what you read outside "
+            "the image)."
         ),
         more=N_(
             "outside the image, read the nearest pixel inside; Gx and Gy are the dot "

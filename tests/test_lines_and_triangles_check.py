@@ -275,6 +275,7 @@ def test_the_reference_rule_written_independently_passes():
     ("options", "mistake"),
     [
         ({"bottom": True}, "the bottom row filled"),
+        ({"top": False}, "the top row left out"),
         ({"left": False, "right": True}, "a centre on a left edge left out"),
         ({"left": False, "top": False}, "a centre on a left edge left out"),
         ({"snap": round}, "the vertices rounded"),
@@ -325,6 +326,16 @@ def test_the_lessons_first_octant_pseudocode_used_as_is_is_named_and_its_first_p
     assert not result and result.mistake == "the first octant only"
     # Case 2 runs from (9, 5) to (2, 3): the first missing pixel along the line is p0.
     assert "8 pixels missing, first (9, 5)" in str(result)
+
+
+def test_a_dda_that_truncates_with_int_is_named():
+    def truncating(p0, p1):
+        (x0, y0), (x1, y1) = p0, p1
+        n = max(abs(x1 - x0), abs(y1 - y0))
+        return [(int(x0 + i / n * (x1 - x0)), int(y0 + i / n * (y1 - y0))) for i in range(n + 1)]
+
+    result = check.draw_line(lambda p0, p1: truncating(p0, p1) if p0 != p1 else [p0])
+    assert not result and result.mistake == "truncated, not rounded"
 
 
 def test_a_line_returned_as_a_set_is_told_that_order_matters():

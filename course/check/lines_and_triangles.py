@@ -144,6 +144,17 @@ def _first_octant_only(p0: Any, p1: Any) -> list[tuple[int, int]]:
     return pixels
 
 
+def _truncated_steps(p0: Any, p1: Any) -> list[tuple[int, int]]:
+    """A DDA that steps t evenly and truncates each point with int() instead of rounding."""
+    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
+    steps = max(abs(x1 - x0), abs(y1 - y0))
+    if steps == 0:
+        return [(x0, y0)]
+    return [
+        (int(x0 + i / steps * (x1 - x0)), int(y0 + i / steps * (y1 - y0))) for i in range(steps + 1)
+    ]
+
+
 def _line_difference(expected: Any, given: Any) -> str:
     """Missing and extra pixels, each with its first one along the line (not in reading order).
 
@@ -214,6 +225,16 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
             N_("the first pixel missing"),
             N_("your line starts one pixel after p0: paint p0 before the first step."),
             lambda p0, p1: line(p0, p1)[1:],
+            matches=_ordered_same,
+        ),
+        Mistake(
+            N_("truncated, not rounded"),
+            N_(
+                "you stepped along the line and cut each coordinate with int(), which drops the "
+                "fraction: that takes the pixel on one side of the line, not the nearest one. "
+                "Round to the nearest pixel, or let an error term decide, as Bresenham does."
+            ),
+            _truncated_steps,
             matches=_ordered_same,
         ),
         Mistake(
@@ -315,6 +336,15 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
                 "centres over [x_left, x_right) and the rows over [y_top, y_bottom)."
             ),
             lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed"),
+        ),
+        Mistake(
+            N_("the top row left out"),
+            N_(
+                "your rows start after y_top: a row of centres exactly on a flat top edge "
+                "belongs to this triangle (the top-left rule), so the rows run over "
+                "[y_top, y_bottom), the first one included."
+            ),
+            _top_row_left_out,
         ),
         Mistake(
             N_("the vertices rounded"),
@@ -419,6 +449,16 @@ def _bottom_row_filled(p0: Any, p1: Any, p2: Any) -> np.ndarray:
     columns = np.arange(np.ceil(left - 0.5), np.ceil(right - 0.5), dtype=np.int64)
     row = np.column_stack([columns, np.full(len(columns), int(bottom - 0.5), dtype=np.int64)])
     return np.unique(np.vstack([np.asarray(inside, dtype=np.int64).reshape(-1, 2), row]), axis=0)
+
+
+def _top_row_left_out(p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    """The fill with rows over (top, bottom): a row of centres on a flat top edge dropped."""
+    inside = np.asarray(triangle(p0, p1, p2), dtype=np.int64).reshape(-1, 2)
+    corners = np.array([p0, p1, p2], dtype=float)
+    top = corners[:, 1].min()
+    if (corners[:, 1] == top).sum() != 2 or (top - 0.5) != np.floor(top - 0.5):
+        return inside
+    return inside[inside[:, 1] != int(top - 0.5)]
 
 
 def _open_rule(p0: Any, p1: Any, p2: Any) -> np.ndarray:

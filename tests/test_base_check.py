@@ -460,3 +460,26 @@ def test_hints_and_a_pass_in_chinese_and_english_after(monkeypatch):
     assert passed == "通过 double：全部 3 个用例通过"
     assert "用例 1 不对" in wrong and "  预期形状 ()，你的形状 (1,)" in wrong
     assert str(run(lambda x: 2 * x)) == "PASS double: all 3 cases pass"
+
+
+def test_a_colour_image_is_shown_by_shape_dtype_and_range_not_in_full():
+    from course.check.answers import show_value
+
+    image = np.linspace(0.0, 1.0, 8 * 10 * 3).reshape(8, 10, 3)
+    assert show_value(image) == "an array of shape (8, 10, 3), dtype float64, values 0 to 1"
+    small = np.zeros((2, 2, 3))  # 12 numbers: still shown in full
+    assert show_value(small).startswith("[[[0., 0., 0.]")
+
+
+def test_a_large_wrong_array_shows_a_small_window_around_its_first_wrong_value():
+    from course.check.comparisons import first_difference
+
+    expected = np.zeros((6, 7, 3))
+    given = expected.copy()
+    given[0, 6, 1] = 0.5
+    text = first_difference(expected, given)
+    assert text.startswith("first wrong value: [0, 6, 1] expected 0, given 0.5")
+    assert "rows 0-1 and columns 5-6" in text
+    # 2 rows x 2 columns x 3 channels each side: 12 numbers, not 126.
+    given_line = text.splitlines()[-1]
+    assert given_line.count(",") == 11 and "0.5" in given_line

@@ -227,7 +227,130 @@ def test_draw_triangle_filled_names_each_known_mistake_with_a_pixel_picture():
     )
     assert corners.mistake == "pixel corners for centres" and corners.picture is not None
     opened = check.draw_triangle_filled(precomputed(triangle, check._TRIANGLE_CASES, rule="open"))
-    assert opened.mistake == "every edge open"
+    # Case 1 fails first, and there open and mirrored rules both leave out one left-edge centre.
+    assert opened.mistake == "a centre on a left edge left out"
+
+
+def fill_by_rule(p0, p1, p2, left=True, right=False, top=True, bottom=False, snap=None):
+    """A centre-by-centre fill that says, per kind of edge, whether a centre on it is in.
+
+    Written independently of the library: each centre is tested against the three edges of the
+    triangle sorted by y, with a left, right, top and bottom edge told apart by their direction.
+    """
+    corners = [
+        tuple(map(float, p if snap is None else (snap(p[0]), snap(p[1])))) for p in (p0, p1, p2)
+    ]
+    (ax, ay), (bx, by), (cx, cy) = corners
+    area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    if area == 0:
+        return []
+    if area < 0:  # clockwise on screen (y down): the inside is left of each edge
+        corners = [corners[0], corners[2], corners[1]]
+    pixels = []
+    xs, ys = [c[0] for c in corners], [c[1] for c in corners]
+    for row in range(math.floor(min(ys)) - 1, math.ceil(max(ys)) + 1):
+        for column in range(math.floor(min(xs)) - 1, math.ceil(max(xs)) + 1):
+            px, py = column + 0.5, row + 0.5
+            inside = True
+            for (x0, y0), (x1, y1) in zip(corners, corners[1:] + corners[:1], strict=True):
+                side = (x1 - x0) * (py - y0) - (y1 - y0) * (px - x0)
+                if side == 0:
+                    if y0 == y1:  # horizontal: a top edge has the inside below it
+                        keep = top if x1 > x0 else bottom
+                    else:  # going down the screen on the right side: a right edge
+                        keep = right if y1 > y0 else left
+                    inside = inside and keep
+                else:
+                    inside = inside and side > 0
+            if inside:
+                pixels.append((column, row))
+    return pixels
+
+
+def test_the_reference_rule_written_independently_passes():
+    assert check.draw_triangle_filled(fill_by_rule)
+
+
+@pytest.mark.parametrize(
+    ("options", "mistake"),
+    [
+        ({"bottom": True}, "the bottom row filled"),
+        ({"top": False}, "the top row left out"),
+        ({"left": False, "right": True}, "a centre on a left edge left out"),
+        ({"left": False, "top": False}, "a centre on a left edge left out"),
+        ({"snap": round}, "the vertices rounded"),
+        ({"snap": int}, "the vertices made whole"),
+    ],
+)
+def test_each_fill_rule_mistake_gets_the_name_of_what_the_student_did(options, mistake):
+    result = check.draw_triangle_filled(lambda p0, p1, p2: fill_by_rule(p0, p1, p2, **options))
+    assert not result and result.mistake == mistake, str(result)
+
+
+def test_a_mirrored_rule_is_told_from_an_open_one_where_a_case_can_tell_them_apart():
+    # (0, 0), (8, 8), (0, 8) has centres only on its right edge: open leaves them out,
+    # the mirrored rule keeps them, so each is named for what it did.
+    case = {"p0": (0, 0), "p1": (8, 8), "p2": (0, 8)}
+    mirrored = check._unless_same(check._mirrored_rule, check._open_rule, **case)
+    opened = check._unless_same(check._open_rule, check._mirrored_rule, **case)
+    assert mirrored is not None and opened is not None
+    expected = fill_by_rule(**case, left=False, right=True)
+    assert check._same_or_nothing(mirrored, np.array(expected))
+    assert check._same_or_nothing(opened, np.array(fill_by_rule(**case, left=False, top=False)))
+    same = {"p0": (1, 1), "p1": (9, 2), "p2": (4, 8)}
+    assert check._unless_same(check._mirrored_rule, check._open_rule, **same) is None
+
+
+def test_the_bottom_row_mistake_adds_the_flat_bottom_row_over_half_open_spans():
+    # The issue's case: (0.5, 0.5), (0.5, 5.5), (7.5, 5.5) has 16 pixels, 7 more with row 5.
+    pixels = check._bottom_row_filled((0.5, 0.5), (0.5, 5.5), (7.5, 5.5))
+    assert len(pixels) == 23
+    assert sorted(map(tuple, pixels.tolist())) == sorted(
+        fill_by_rule((0.5, 0.5), (0.5, 5.5), (7.5, 5.5), bottom=True)
+    )
+
+
+def test_the_lessons_first_octant_pseudocode_used_as_is_is_named_and_its_first_pixel_is_p0():
+    def first_octant(p0, p1):
+        (x0, y0), (x1, y1) = p0, p1
+        dx, dy = x1 - x0, y1 - y0
+        decision, y, pixels = 2 * dy - dx, y0, []
+        for x in range(x0, x1 + 1):
+            pixels.append((x, y))
+            if decision > 0:
+                y, decision = y + 1, decision - 2 * dx
+            decision += 2 * dy
+        return pixels
+
+    result = check.draw_line(first_octant)
+    assert not result and result.mistake == "the first octant only"
+    # Case 2 runs from (9, 5) to (2, 3): the first missing pixel along the line is p0.
+    assert "8 pixels missing, first (9, 5)" in str(result)
+
+
+def test_a_dda_that_truncates_with_int_is_named():
+    def truncating(p0, p1):
+        (x0, y0), (x1, y1) = p0, p1
+        n = max(abs(x1 - x0), abs(y1 - y0))
+        return [(int(x0 + i / n * (x1 - x0)), int(y0 + i / n * (y1 - y0))) for i in range(n + 1)]
+
+    result = check.draw_line(lambda p0, p1: truncating(p0, p1) if p0 != p1 else [p0])
+    assert not result and result.mistake == "truncated, not rounded"
+
+
+def test_a_line_returned_as_a_set_is_told_that_order_matters():
+    as_set = precomputed(lambda p0, p1: set(map(tuple, line(p0, p1).tolist())), check._LINE_CASES)
+    result = check.draw_line(as_set)
+    assert not result and "no order" in str(result)
+
+
+def test_pixels_returned_as_ints_are_shown_as_ints():
+    short = precomputed(
+        lambda p0, p1: [tuple(p) for p in line(p0, p1).tolist()][:-1], check._LINE_CASES
+    )
+    result = check.draw_line(short)
+    assert "given:    [[2, 3], [3, 3]," in str(result) and "2., 3." not in str(result)
+    assert str(result).startswith("FAIL draw_line:")
 
 
 def separate_steps(p0, p1):
@@ -269,7 +392,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
     backwards = check.draw_line(
         precomputed(lambda p0, p1: line(p0, p1)[::-1].tolist(), check._LINE_CASES)
     )
-    assert str(backwards).startswith("未通过 DrawLine：用例 1 不对\n  输入：p0=(2, 3), p1=(9, 5)")
+    assert str(backwards).startswith("未通过 draw_line：用例 1 不对\n  输入：p0=(2, 3), p1=(9, 5)")
     assert "这是一个已知错误，画反了方向：你的像素是从 p1 画到 p0 的" in str(backwards)
     assert backwards.mistake == "drawn backwards"  # the name stays an identifier
     staircase = str(check.draw_line(separate_steps))
@@ -281,7 +404,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
         raise NotImplementedError
 
     assert str(check.draw_line(stub)).startswith(
-        "未通过 DrawLine：还没有写：你的函数抛出了 NotImplementedError"
+        "未通过 draw_line：还没有写：你的函数抛出了 NotImplementedError"
     )
     refused = str(check.draw_line(lambda p0, p1: line(p0, p1).tolist()))
     assert "你的函数调用了 course.raster.line，那是课程库自带的答案" in refused

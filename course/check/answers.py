@@ -28,6 +28,9 @@ __all__ = [
 #: Most numbers of a wrong answer the report reads in full; past it, only sizes are compared.
 _LARGEST_ANSWER = 2**20
 
+#: Most numbers of an image of three or more axes shown in full (a 2 x 4 colour image).
+_LARGEST_SHOWN_IMAGE = 24
+
 
 class AnswerError(ValueError):
     """A student's answer the checker cannot read, with a message in the student's terms."""
@@ -38,20 +41,32 @@ def show_value(value: Any) -> str:
 
     Examples
     --------
-    >>> show_value(np.float64(0.5)), show_value(np.zeros((30, 30)))
-    ('0.5', 'an array of shape (30, 30), dtype float64')
+    >>> show_value(np.float64(0.5)), show_value(np.zeros((30, 30), dtype=np.int64))
+    ('0.5', 'an array of shape (30, 30), dtype int64, values 0 to 0')
+    >>> show_value(np.full((8, 8, 3), 0.25))
+    'an array of shape (8, 8, 3), dtype float64, values 0.25 to 0.25'
     """
     if isinstance(value, np.generic):
         return repr(value.item())
     if isinstance(value, np.ndarray):
-        if value.size > 400:
-            return _("an array of shape {shape}, dtype {dtype}").format(
-                shape=value.shape, dtype=value.dtype
-            )
+        # A colour image's numbers fill screens: past a few pixels, its size and range say more.
+        if value.size > 400 or (value.ndim >= 3 and value.size > _LARGEST_SHOWN_IMAGE):
+            return _summary(value)
         text = np.array2string(value, precision=6, separator=", ", threshold=40)
         return " ".join(text.split())
     text = repr(value)
     return text if len(text) <= 300 else text[:297] + "..."
+
+
+def _summary(value: np.ndarray) -> str:
+    """An array by its shape, dtype and range (the range only when it is real and finite)."""
+    if value.size and value.dtype.kind in "biuf" and np.isfinite(value).all():
+        return _("an array of shape {shape}, dtype {dtype}, values {low:.6g} to {high:.6g}").format(
+            shape=value.shape, dtype=value.dtype, low=value.min(), high=value.max()
+        )
+    return _("an array of shape {shape}, dtype {dtype}").format(
+        shape=value.shape, dtype=value.dtype
+    )
 
 
 def pixel_rows(pixels: Any, name: str = "") -> np.ndarray:

@@ -75,6 +75,12 @@ def first_difference(expected: Any, given: Any, atol: float = 1e-9, rtol: float 
     'first wrong value: [1] expected 2, given 2.5'
     >>> first_difference([[1.0, 2.0]], [1.0, 2.0])
     'expected shape (1, 2), given shape (2,)'
+    >>> wrong = np.zeros((5, 5)); wrong[2, 3] = 1
+    >>> print(first_difference(np.zeros((5, 5)), wrong))
+    first wrong value: [2, 3] expected 0, given 1
+      around it, rows 1-3 and columns 2-4:
+        expected [[0., 0., 0.], [0., 0., 0.], [0., 0., 0.]]
+        given    [[0., 0., 0.], [0., 1., 0.], [0., 0., 0.]]
     """
     try:
         with warnings.catch_warnings():
@@ -93,8 +99,37 @@ def first_difference(expected: Any, given: Any, atol: float = 1e-9, rtol: float 
         return _("the values agree within the tolerance")
     index = tuple(int(i) for i in np.argwhere(wrong)[0])
     where = "[" + ", ".join(map(str, index)) + "]"
-    return _("first wrong value: {where} expected {expected:.6g}, given {given:.6g}").format(
+    first = _("first wrong value: {where} expected {expected:.6g}, given {given:.6g}").format(
         where=where, expected=expected[index], given=given[index]
+    )
+    if expected.ndim < 2 or expected.size <= _SHOWN_IN_FULL:
+        return first  # the report's lines above show every value
+    return first + _window(expected, given, index)
+
+
+#: Most numbers an answer's report line shows in full (see ``answers.show_value``).
+_SHOWN_IN_FULL = 24
+
+
+def _window(expected: np.ndarray, given: np.ndarray, index: tuple[int, ...]) -> str:
+    """The 3 x 3 pixels (rows and columns) around ``index``, expected and given, one line each."""
+    rows = slice(max(index[0] - 1, 0), min(index[0] + 2, expected.shape[0]))
+    columns = slice(max(index[1] - 1, 0), min(index[1] + 2, expected.shape[1]))
+
+    def shown(values: np.ndarray) -> str:
+        text = np.array2string(values[rows, columns], precision=4, separator=", ")
+        return " ".join(text.split())
+
+    return _(
+        "\n  around it, rows {first_row}-{last_row} and columns {first_column}-{last_column}:"
+        "\n    expected {expected}\n    given    {given}"
+    ).format(
+        first_row=rows.start,
+        last_row=rows.stop - 1,
+        first_column=columns.start,
+        last_column=columns.stop - 1,
+        expected=shown(expected),
+        given=shown(given),
     )
 
 

@@ -8,8 +8,8 @@ that takes the same pixels passes). A failure shows the missing and extra
 pixels as a picture and names the handouts' mistakes: the report's
 4-connected staircase, a line drawn backwards or short of an end, and for
 triangles the closed and open edge rules, the bottom row filled, vertices
-made whole and pixel corners taken for centres. Pictures count pixels on
-their axes and draw the triangle's edges. An answer that calls the
+rounded or made whole, the rule mirrored, and pixel corners taken for
+centres. Pictures count pixels on their axes and draw the triangle's edges. An answer that calls the
 library's own line or fill is told to write it.
 
 Hints come in steps: a failure says where to look, the next failures say
@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from course import raster
+from course.check.answers import AnswerError
 from course.check.base import (
     CheckResult,
     Hints,
@@ -124,8 +125,60 @@ def _pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
 
 
 def _ordered_same(expected: Any, given: Any) -> bool:
-    expected, given = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+    expected = np.asarray(expected, dtype=float).reshape(-1, 2)
+    given = np.asarray(given, dtype=float).reshape(-1, 2)
     return expected.shape == given.shape and bool(np.array_equal(expected, given))
+
+
+def _first_octant_only(p0: Any, p1: Any) -> list[tuple[int, int]]:
+    """The lesson's first-octant pseudocode used as is: x from x0 up to x1, y stepping up."""
+    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
+    dx, dy = x1 - x0, y1 - y0
+    decision, y, pixels = 2 * dy - dx, y0, []
+    for x in range(x0, x1 + 1):
+        pixels.append((x, y))
+        if decision > 0:
+            y += 1
+            decision -= 2 * dx
+        decision += 2 * dy
+    return pixels
+
+
+def _truncated_steps(p0: Any, p1: Any) -> list[tuple[int, int]]:
+    """A DDA that steps t evenly and truncates each point with int() instead of rounding."""
+    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
+    steps = max(abs(x1 - x0), abs(y1 - y0))
+    if steps == 0:
+        return [(x0, y0)]
+    return [
+        (int(x0 + i / steps * (x1 - x0)), int(y0 + i / steps * (y1 - y0))) for i in range(steps + 1)
+    ]
+
+
+def _line_difference(expected: Any, given: Any) -> str:
+    """Missing and extra pixels, each with its first one along the line (not in reading order).
+
+    Examples
+    --------
+    >>> _line_difference([[9, 5], [8, 5], [7, 4]], [])
+    '3 pixels missing, first (9, 5)'
+    """
+    want = [tuple(int(v) for v in pixel) for pixel in np.asarray(expected).reshape(-1, 2)]
+    have = [tuple(int(v) for v in pixel) for pixel in np.asarray(given).reshape(-1, 2)]
+    missing = [pixel for pixel in want if pixel not in set(have)]
+    extra = [pixel for pixel in have if pixel not in set(want)]
+    parts = []
+    if missing:
+        if len(missing) == 1:
+            missing_text = _("{count} pixel missing, first {pixel}")
+        else:
+            missing_text = _("{count} pixels missing, first {pixel}")
+        parts.append(missing_text.format(count=len(missing), pixel=missing[0]))
+    if extra:
+        parts.append(_("{count} extra, first {pixel}").format(count=len(extra), pixel=extra[0]))
+    if parts:
+        return _("; ").join(parts)
+    return pixel_difference(expected, given)
 
 
 def draw_line(student: Callable[..., Any]) -> CheckResult:
@@ -148,9 +201,10 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
             N_(
                 "every step of your line moves in x or in y, never both, so each diagonal step "
                 "became two and left an extra pixel in the corner: a 4-connected staircase (the "
-                "lab report's `else` between the two tests, or x and y stepped and painted one "
-                "after the other). A line steps diagonally whenever both errors call for it, so it "
-                "has max(|dx|, |dy|) + 1 pixels, not |dx| + |dy| + 1."
+                "lab report's one test, `if (err2 > -dy) ... else ...`, whose else replaces the "
+                "second test, or x and y stepped and painted one after the other). A line steps "
+                "diagonally whenever both errors call for it, so it has max(|dx|, |dy|) + 1 "
+                "pixels, not |dx| + |dy| + 1."
             ),
             _staircase,
             matches=_is_staircase,
@@ -173,17 +227,37 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
             lambda p0, p1: line(p0, p1)[1:],
             matches=_ordered_same,
         ),
+        Mistake(
+            N_("truncated, not rounded"),
+            N_(
+                "you stepped along the line and cut each coordinate with int(), which drops the "
+                "fraction: that takes the pixel on one side of the line, not the nearest one. "
+                "Round to the nearest pixel, or let an error term decide, as Bresenham does."
+            ),
+            _truncated_steps,
+            matches=_ordered_same,
+        ),
+        Mistake(
+            N_("the first octant only"),
+            N_(
+                "your line works only in the first octant (x1 >= x0 and 0 <= y1 - y0 <= x1 - x0): "
+                "the lesson's pseudocode, used as is. The other seven octants run the same loop: "
+                "a steep line swaps the roles of x and y, and a line going left or up steps by -1."
+            ),
+            _first_octant_only,
+            matches=_ordered_same,
+        ),
     ]
     return run_cases(
-        "DrawLine",
+        "draw_line",
         student,
         cases,
         line,
         _is_bresenham_line,
-        _as_pixel_array,
+        _as_line_pixels,
         hint=LINE_HINTS,
         mistakes=mistakes,
-        difference=pixel_difference,
+        difference=_line_difference,
         picture=_picture,
         forbidden=_raster(),
         pass_picture=_pass_picture,
@@ -209,7 +283,7 @@ def _is_staircase(staircase: Any, given: Any) -> bool:
 
 
 LINE_HINTS = register_hints(
-    "DrawLine",
+    "draw_line",
     Hints(
         where=N_(
             "look at the first and the last pixel, and at each step: how far it moves "
@@ -227,6 +301,7 @@ LINE_HINTS = register_hints(
         ),
     ),
     "draw_line",
+    "DrawLine",
 )
 
 
@@ -263,13 +338,24 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
             lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed"),
         ),
         Mistake(
-            N_("the bottom row filled"),
+            N_("the top row left out"),
             N_(
-                "your rows run over [y_top, y_bottom], the last one included: a row of centres "
-                "exactly on a flat bottom edge belongs to the triangle below. Take the rows over "
-                "[y_top, y_bottom)."
+                "your rows start after y_top: a row of centres exactly on a flat top edge "
+                "belongs to this triangle (the top-left rule), so the rows run over "
+                "[y_top, y_bottom), the first one included."
             ),
-            _bottom_row_filled,
+            _top_row_left_out,
+        ),
+        Mistake(
+            N_("the vertices rounded"),
+            N_(
+                "your triangle's vertices were rounded to whole numbers (round()) before "
+                "filling: a vertex at (1.25, 0.75) moved to (1, 1). Keep them as floats; only the "
+                "pixels are whole."
+            ),
+            lambda p0, p1, p2: triangle(
+                *(np.round(np.asarray(p, dtype=float)) for p in (p0, p1, p2))
+            ),
         ),
         Mistake(
             N_("the vertices made whole"),
@@ -283,13 +369,42 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
             ),
         ),
         Mistake(
+            N_("the bottom row filled"),
+            N_(
+                "your rows run over [y_top, y_bottom], the last one included: a row of centres "
+                "exactly on a flat bottom edge belongs to the triangle below. Take the rows over "
+                "[y_top, y_bottom)."
+            ),
+            _bottom_row_filled,
+        ),
+        Mistake(
+            N_("the rule mirrored"),
+            N_(
+                "you include a centre on a right edge and leave out one on a left edge: the rule "
+                "mirrored, x_left < x <= x_right. Two triangles still share the edge fairly, but "
+                "every other triangle of the mesh uses the lesson's rule: [x_left, x_right)."
+            ),
+            lambda p0, p1, p2: _unless_same(_mirrored_rule, _open_rule, p0, p1, p2),
+            matches=_same_or_nothing,
+        ),
+        Mistake(
             N_("every edge open"),
             N_(
                 "you leave out every centre that lies on an edge, so two triangles sharing that "
                 "edge would both skip it: a crack. Include the left and the top ones: "
                 "[x_left, x_right), rows over [y_top, y_bottom)."
             ),
-            lambda p0, p1, p2: triangle(p0, p1, p2, rule="open"),
+            lambda p0, p1, p2: _unless_same(_open_rule, _mirrored_rule, p0, p1, p2),
+            matches=_same_or_nothing,
+        ),
+        Mistake(
+            N_("a centre on a left edge left out"),
+            N_(
+                "you leave out a centre that lies exactly on a left edge (x_left < x): the left "
+                "edge is included and the right one left out, x_left <= x < x_right, so that two "
+                "triangles sharing an edge paint each of its centres once."
+            ),
+            _open_rule,
         ),
         Mistake(
             N_("pixel corners for centres"),
@@ -301,7 +416,7 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
         ),
     ]
     return run_cases(
-        "DrawTriangleFilled",
+        "draw_triangle_filled",
         student,
         cases,
         triangle,
@@ -317,17 +432,63 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
 
 
 def _bottom_row_filled(p0: Any, p1: Any, p2: Any) -> np.ndarray:
-    """The fill with each triangle's last row of centres taken too: rows over [top, bottom]."""
-    closed = triangle(p0, p1, p2, rule="closed")
+    """The fill with rows over [top, bottom]: a row of centres on a flat bottom edge taken too.
+
+    That row's centres are taken as any row's, over [x_left, x_right); a bottom that is
+    one vertex adds nothing.
+    """
     inside = triangle(p0, p1, p2)
-    bottom = max(float(p[1]) for p in (p0, p1, p2))
-    on_bottom = closed[(closed[:, 1] + 0.5 == bottom)]
-    rows = np.vstack([inside, on_bottom]) if len(on_bottom) else inside
-    return np.unique(rows, axis=0)
+    corners = np.array([p0, p1, p2], dtype=float)
+    bottom = corners[:, 1].max()
+    on_bottom = corners[corners[:, 1] == bottom]
+    (ux, uy), (vx, vy) = corners[1] - corners[0], corners[2] - corners[0]
+    twice_area = ux * vy - uy * vx
+    if len(on_bottom) != 2 or twice_area == 0 or (bottom - 0.5) != np.floor(bottom - 0.5):
+        return inside
+    left, right = np.sort(on_bottom[:, 0])
+    columns = np.arange(np.ceil(left - 0.5), np.ceil(right - 0.5), dtype=np.int64)
+    row = np.column_stack([columns, np.full(len(columns), int(bottom - 0.5), dtype=np.int64)])
+    return np.unique(np.vstack([np.asarray(inside, dtype=np.int64).reshape(-1, 2), row]), axis=0)
+
+
+def _top_row_left_out(p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    """The fill with rows over (top, bottom): a row of centres on a flat top edge dropped."""
+    inside = np.asarray(triangle(p0, p1, p2), dtype=np.int64).reshape(-1, 2)
+    corners = np.array([p0, p1, p2], dtype=float)
+    top = corners[:, 1].min()
+    if (corners[:, 1] == top).sum() != 2 or (top - 0.5) != np.floor(top - 0.5):
+        return inside
+    return inside[inside[:, 1] != int(top - 0.5)]
+
+
+def _open_rule(p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    return triangle(p0, p1, p2, rule="open")
+
+
+def _mirrored_rule(p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    """The lesson's rule seen in a mirror: right edges in, left edges out (top still in)."""
+    mirrored = [(-float(p[0]), float(p[1])) for p in (p0, p1, p2)]
+    pixels = np.asarray(triangle(*mirrored), dtype=np.int64).reshape(-1, 2).copy()
+    pixels[:, 0] = -pixels[:, 0] - 1  # pixel c's centre c + 1/2 mirrors to pixel -c - 1's
+    return pixels
+
+
+def _unless_same(
+    rule: Callable[..., Any], other: Callable[..., Any], p0: Any, p1: Any, p2: Any
+) -> np.ndarray | None:
+    """``rule``'s pixels when this case tells them from ``other``'s; None when it cannot."""
+    pixels = rule(p0, p1, p2)
+    return None if same_pixels(pixels, other(p0, p1, p2)) else pixels
+
+
+def _same_or_nothing(answer: Any, given: Any) -> bool:
+    return answer is not None and _same_pixel_set(
+        np.asarray(answer, dtype=np.int64).reshape(-1, 2), given
+    )
 
 
 TRIANGLE_HINTS = register_hints(
-    "DrawTriangleFilled",
+    "draw_triangle_filled",
     Hints(
         where=N_(
             "look at which rows your loop fills (the first and the last), and at the "
@@ -345,12 +506,25 @@ TRIANGLE_HINTS = register_hints(
         ),
     ),
     "draw_triangle_filled",
+    "DrawTriangleFilled",
 )
 
 
 def _as_pixel_array(given: Any) -> np.ndarray:
-    """The student's pixels as a (K, 2) array; a list of (x, y) pairs is fine."""
-    return pixel_rows(given).astype(float)
+    """The student's pixels as a (K, 2) int64 array; a list of (x, y) pairs is fine."""
+    return pixel_rows(given)
+
+
+def _as_line_pixels(given: Any) -> np.ndarray:
+    """A line's pixels in order; a set or a dict has none, so it is refused with why."""
+    if isinstance(given, (set, frozenset, dict)):
+        raise AnswerError(
+            _(
+                "you returned a {type}, which has no order; a line's pixels are a list, in order "
+                "from p0 to p1"
+            ).format(type=type(given).__name__)
+        )
+    return pixel_rows(given)
 
 
 def _is_bresenham_line(expected: np.ndarray, given: np.ndarray) -> bool:

@@ -1,0 +1,118 @@
+"""The lines the lessons print, in English exactly as the notebooks printed them before
+the printing moved into ``course.lessons``, and in Chinese under ``use_language("zh-CN")``.
+
+Each case is a function of a lesson module, its arguments as the lesson passes them, and
+the line the notebook printed (from its committed output); where the line states a number
+that is cheap to recompute, the argument is computed here from its definition instead of
+copied. Nothing here draws a figure except the opening pictures; the whole file takes
+about a second.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from course.i18n import current_language, language
+from course.lessons import l03_lines_and_triangles as l03
+from course.raster import wu_line
+
+CHINESE = re.compile("[\u4e00-\u9fff]")
+
+
+def shoelace_area(p0, p1, p2) -> float:
+    (x0, y0), (x1, y1), (x2, y2) = p0, p1, p2
+    return abs((x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0)) / 2
+
+
+def wu_image() -> np.ndarray:
+    """Lesson 03's Wu line from (0.5, 0.5) to (7.5, 3.5), its weights added into pixels."""
+    pixels, weights = wu_line((0.5, 0.5), (7.5, 3.5))
+    image = np.zeros((4, 8))
+    np.add.at(image, (pixels[:, 1], pixels[:, 0]), weights)
+    return image
+
+
+CASES = [
+    pytest.param(
+        l03.print_lines_agree,
+        (16**4, 16**4),
+        "65536 lines: the forms agree on 65536",
+        id="03-lines",
+    ),
+    pytest.param(
+        l03.print_triangles_agree,
+        (3000, 3000),
+        "the two forms agree on 3000 of 3000 triangles",
+        id="03-triangles",
+    ),
+    pytest.param(
+        l03.print_ink_per_column,
+        (wu_image(),),
+        "ink per column: [0.5 1.  1.  1.  1.  1.  1.  0.5]",
+        id="03-ink",
+    ),
+    pytest.param(
+        l03.print_exact_area,
+        (shoelace_area((1.3, 0.7), (14.2, 5.9), (4.1, 11.6)), 47),
+        "exact area 63.025; 47 edge pixels",
+        id="03-area",
+    ),
+    pytest.param(
+        l03.print_coverage_error,
+        (1, 0.2452, 0.494, 61.0),
+        "rate  1: RMS 0.2452, worst 0.494, total 61.0000",
+        id="03-rate",
+    ),
+    pytest.param(
+        l03.print_line_pixels,
+        ("report's loop", 10 + 10 + 1, np.hypot(0.5, 0.5)),
+        "report's loop: 21 pixels, farthest centre 0.71 px from the line",
+        id="03-report-loop",
+    ),
+    pytest.param(l03.print_line_pixels, ("Wu", 11), "Wu: 11 pixels", id="03-wu"),
+    pytest.param(
+        l03.print_segments_report,
+        (1, {"missed": 58, "off": 29, "twice": 0}),
+        " 1 segments: missed 58, off 29, twice 0",
+        id="03-segments",
+    ),
+]
+
+
+@pytest.mark.parametrize(("function", "arguments", "english"), CASES)
+def test_a_lesson_line_is_the_notebooks_in_english_and_chinese_in_chinese(
+    function, arguments, english, capsys
+):
+    function(*arguments)
+    assert capsys.readouterr().out == english + "\n"
+    with language("zh-CN"):
+        function(*arguments)
+    chinese = capsys.readouterr().out
+    assert current_language() == "en"
+    assert CHINESE.search(chinese), chinese
+    # The numbers stay; only the words change.
+    assert re.findall(r"\d+(?:\.\d+)?", chinese) == re.findall(r"\d+(?:\.\d+)?", english)
+
+
+def test_a_two_line_title_is_one_line_in_either_language():
+    title = "rule open: 42 + 48 pixels\n0 painted twice, 9 missed on the shared edge"
+    assert l03.title_on_one_line(title) == (
+        "rule open: 42 + 48 pixels: 0 painted twice, 9 missed on the shared edge"
+    )
+    with language("zh-CN"):
+        assert l03.title_on_one_line("规则 open：42 + 48 个像素\n0 个画了两次") == (
+            "规则 open：42 + 48 个像素；0 个画了两次"
+        )
+    assert l03.title_on_one_line("one line") == "one line"
+
+
+def test_the_opening_picture_is_captioned_in_the_language():
+    assert l03.opening_still().caption == (
+        "two triangles sharing an edge, and their 4 x 4 supersampled coverage"
+    )
+    with language("zh-CN"):
+        caption = l03.opening_still().caption
+    assert CHINESE.search(caption), caption

@@ -15,9 +15,12 @@ import re
 import numpy as np
 import pytest
 
+from course import filters
 from course.i18n import current_language, language
 from course.lessons import l03_lines_and_triangles as l03
+from course.lessons import l07_filtering as l07
 from course.raster import wu_line
+from course.widgets.filtering import RepeatedBlurApp
 
 CHINESE = re.compile("[\u4e00-\u9fff]")
 
@@ -33,6 +36,15 @@ def wu_image() -> np.ndarray:
     image = np.zeros((4, 8))
     np.add.at(image, (pixels[:, 1], pixels[:, 0]), weights)
     return image
+
+
+def sobel_x_row(sign: int) -> np.ndarray:
+    """Lesson 07's step row filtered by Sobel's x kernel: -1 0 1 across, weights 1 2 1 down,
+    summed here by hand (sign 1: correlation, the lab's; -1: convolution, the kernel flipped)."""
+    step = np.array([0.0, 0, 0, 1, 1, 1])
+    padded = np.concatenate([step[:1], step, step[-1:]])  # 'replicate'
+    right, left = (padded[2:], padded[:-2]) if sign > 0 else (padded[:-2], padded[2:])
+    return (1 + 2 + 1) * (right - left)
 
 
 CASES = [
@@ -79,6 +91,47 @@ CASES = [
         " 1 segments: missed 58, off 29, twice 0",
         id="03-segments",
     ),
+    pytest.param(
+        l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: True", id="07-loop"
+    ),
+    pytest.param(
+        l07.print_uniform_filter,
+        ("constant", "zero", True),
+        "uniform_filter constant against 'zero': equal below 1e-12: True",
+        id="07-uniform-filter",
+    ),
+    pytest.param(
+        l07.print_report_rule_against_scipy,
+        (True, 0.088),
+        "the report's rule against scipy's default: inside below 1e-12: True, "
+        "on the frame up to 0.088",
+        id="07-report-rule",
+    ),
+    pytest.param(
+        l07.print_sobel_against_scipy,
+        (True,),
+        "sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: True",
+        id="07-sobel",
+    ),
+    pytest.param(
+        l07.print_correlation_and_convolution,
+        (sobel_x_row(1), sobel_x_row(-1)),
+        "correlation (the lab): [0. 0. 4. 4. 0. 0.]\n"
+        "convolution:           [ 0.  0. -4. -4.  0.  0.]",
+        id="07-correlation",
+    ),
+    pytest.param(
+        l07.print_largest_magnitude,
+        (np.hypot(4, 2),),  # the window [[0 0 0] [0 0 1] [1 1 1]]: gx 3 + 1 = 4, gy 2
+        "largest 4.4721 = sqrt(20) 4.4721, on",
+        id="07-largest",
+    ),
+    pytest.param(
+        l07.print_frame_depth,
+        (5, 3),
+        " 5 blurs: zero padding's frame is 3 px deep on the right",
+        id="07-frame-depth",
+    ),
 ]
 
 
@@ -116,3 +169,40 @@ def test_the_opening_picture_is_captioned_in_the_language():
     with language("zh-CN"):
         caption = l03.opening_still().caption
     assert CHINESE.search(caption), caption
+
+
+def test_the_correlated_row_is_the_filters(capsys):
+    step = np.zeros((3, 6))
+    step[:, 3:] = 1
+    sobel_x = filters.SOBEL_X
+    assert np.array_equal(
+        filters.convolve(step, sobel_x[::-1, ::-1], "replicate")[1], sobel_x_row(1)
+    )
+    assert np.array_equal(filters.convolve(step, sobel_x, "replicate")[1], sobel_x_row(-1))
+
+
+def test_the_two_rows_line_up_in_chinese_too(capsys):
+    with language("zh-CN"):
+        l07.print_correlation_and_convolution(sobel_x_row(1), sobel_x_row(-1))
+    first, second = capsys.readouterr().out.splitlines()
+    # A Chinese character takes two columns: the rows start at the same column.
+    width = [
+        sum(2 if CHINESE.match(c) or c in "（）：" else 1 for c in line.split("[")[0])
+        for line in (first, second)
+    ]
+    assert width[0] == width[1] and CHINESE.search(second), (first, second)
+
+
+def test_the_border_titles_print_one_line_each(capsys):
+    app = RepeatedBlurApp(np.full((12, 12), 0.5), repeats=1, corner=4)
+    l07.print_border_titles(app)
+    english = capsys.readouterr().out.splitlines()
+    assert english == [
+        app.titles[border].get_text().replace("\n", ": ") for border in filters.BORDERS
+    ]
+    with language("zh-CN"):
+        app = RepeatedBlurApp(np.full((12, 12), 0.5), repeats=1, corner=4)
+        l07.print_border_titles(app)
+    chinese = capsys.readouterr().out.splitlines()
+    assert len(chinese) == len(filters.BORDERS)
+    assert all(CHINESE.search(line) and "\n" not in line for line in chinese), chinese

@@ -18,7 +18,9 @@ import pytest
 from course import filters
 from course.i18n import current_language, language
 from course.lessons import l03_lines_and_triangles as l03
+from course.lessons import l06_dithering as l06
 from course.lessons import l07_filtering as l07
+from course.lessons.printed import display_width
 from course.raster import wu_line
 from course.widgets.filtering import RepeatedBlurApp
 
@@ -90,6 +92,30 @@ CASES = [
         (1, {"missed": 58, "off": 29, "twice": 0}),
         " 1 segments: missed 58, off 29, twice 0",
         id="03-segments",
+    ),
+    pytest.param(
+        l06.print_method_table,
+        ([("threshold", -0.0152, 0.2204), ("Floyd-Steinberg serpentine", -0.0008, 0.0172)],),
+        "method                       mean difference  blurred error\n"
+        "threshold                            -0.0152         0.2204\n"
+        "Floyd-Steinberg serpentine           -0.0008         0.0172",
+        id="06-table",
+    ),
+    pytest.param(
+        l06.print_ordered_error, (0.0549, 0.11), "mean error +0.0549, worst 0.1100", id="06-ordered"
+    ),
+    pytest.param(l06.print_pixel_count, (300 * 256,), "76,800 pixels", id="06-pixels"),
+    pytest.param(
+        l06.print_equal_to_loop,
+        ("rows", True),
+        "     rows: equal to the loop bit for bit: True",
+        id="06-equal",
+    ),
+    pytest.param(
+        l06.print_wavefront_against_pillow,
+        (0.0791, 0.00051),
+        "wavefront 79.1 ms, Pillow 0.51 ms: 155x",
+        id="06-timing",
     ),
     pytest.param(
         l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: True", id="07-loop"
@@ -171,6 +197,14 @@ def test_the_opening_picture_is_captioned_in_the_language():
     assert CHINESE.search(caption), caption
 
 
+def test_the_method_table_lines_up_in_chinese(capsys):
+    with language("zh-CN"):
+        l06.print_method_table([("threshold", -0.0152, 0.2204), ("Atkinson", -0.0325, 0.0592)])
+    lines = capsys.readouterr().out.splitlines()
+    assert CHINESE.search(lines[0]) and CHINESE.search(lines[1]), lines
+    assert len({display_width(line) for line in lines}) == 1, lines
+
+
 def test_the_correlated_row_is_the_filters(capsys):
     step = np.zeros((3, 6))
     step[:, 3:] = 1
@@ -186,10 +220,7 @@ def test_the_two_rows_line_up_in_chinese_too(capsys):
         l07.print_correlation_and_convolution(sobel_x_row(1), sobel_x_row(-1))
     first, second = capsys.readouterr().out.splitlines()
     # A Chinese character takes two columns: the rows start at the same column.
-    width = [
-        sum(2 if CHINESE.match(c) or c in "（）：" else 1 for c in line.split("[")[0])
-        for line in (first, second)
-    ]
+    width = [display_width(line.split("[")[0]) for line in (first, second)]
     assert width[0] == width[1] and CHINESE.search(second), (first, second)
 
 

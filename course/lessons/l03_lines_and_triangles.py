@@ -26,6 +26,7 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
 from course.i18n import N_, _
+from course.lessons.printed import title_on_one_line as title_on_one_line  # the notebook's
 from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
 from course.triangles import EDGE_RULES
 from course.widgets import lines_and_triangles_figures as figures
@@ -141,21 +142,6 @@ def print_line_pixels(name: str, pixels: int, farthest: float | None = None) -> 
             name=_(name), pixels=pixels, farthest=farthest
         )
     )
-
-
-def title_on_one_line(title: str) -> str:
-    """An app's two-line panel title as one printed line, its lines joined as the language does.
-
-    Examples
-    --------
-    >>> title_on_one_line("rule open: 42 + 48 pixels\\n0 painted twice")
-    'rule open: 42 + 48 pixels: 0 painted twice'
-    """
-    heading, _newline, details = title.partition("\n")
-    if not details:
-        return heading
-    # A heading and its details on one line: English ": ", Chinese its own punctuation.
-    return _("{heading}: {details}").format(heading=heading, details=details)
 
 
 def print_segments_report(segments: int, report: dict[str, int]) -> None:

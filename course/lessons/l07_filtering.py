@@ -9,7 +9,6 @@ build validate their own input.
 from __future__ import annotations
 
 import functools
-import unicodedata
 
 import numpy as np
 
@@ -24,7 +23,7 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.i18n import N_, _
-from course.lessons.l03_lines_and_triangles import title_on_one_line
+from course.lessons.printed import display_width, title_on_one_line
 from course.widgets import filtering_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.filtering import KernelApp, RepeatedBlurApp, blurred
@@ -89,11 +88,6 @@ def print_sobel_against_scipy(same: bool) -> None:
     )
 
 
-def _display_width(text: str) -> int:
-    """Columns ``text`` takes in a monospaced font: a wide (CJK) character takes two."""
-    return sum(2 if unicodedata.east_asian_width(char) in "WF" else 1 for char in text)
-
-
 def print_correlation_and_convolution(correlation: np.ndarray, convolution: np.ndarray) -> None:
     """Print a row filtered by correlation (the lab's) and by convolution, aligned.
 
@@ -104,9 +98,9 @@ def print_correlation_and_convolution(correlation: np.ndarray, convolution: np.n
     convolution:           [ 0. -4.]
     """
     labels = (_("correlation (the lab):"), _("convolution:"))
-    width = max(_display_width(label) for label in labels)
+    width = max(display_width(label) for label in labels)
     for label, row in zip(labels, (correlation, convolution), strict=True):
-        print(label + " " * (width - _display_width(label)), row)
+        print(label + " " * (width - display_width(label)), row)
 
 
 def print_largest_magnitude(largest: float) -> None:

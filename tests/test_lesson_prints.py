@@ -18,6 +18,7 @@ import pytest
 from course import filters
 from course.i18n import current_language, language
 from course.lessons import l03_lines_and_triangles as l03
+from course.lessons import l05_antialiasing as l05
 from course.lessons import l06_dithering as l06
 from course.lessons import l07_filtering as l07
 from course.lessons import l08_poisson as l08
@@ -184,6 +185,30 @@ CASES = [
         "cloned at (420, 320): RGB [0.23 0.28 0.31]",
         id="08-cloned",
     ),
+    pytest.param(
+        l05.print_reference_against_finest,
+        (16, 0.00045, 0.03125),
+        "reference k=16 against k=64: RMSE 0.00045, max 0.0312",
+        id="05-reference",
+    ),
+    pytest.param(
+        l05.print_total_ink,
+        (1140.0 + np.pi / 4, 1140.0),
+        "total ink: exact 1140.8 = length 1140.0 + the round caps' 0.785",
+        id="05-ink",
+    ),
+    pytest.param(
+        l05.print_agg_error,
+        ("Agg, fine polyline", 0.0003, 0.032, 0.005),
+        "Agg, fine polyline   RMSE 0.0003, max 0.032, position 0.005 px",
+        id="05-agg",
+    ),
+    pytest.param(
+        l05.print_loop_position_error,
+        ("nearest_truncate", 0.267),
+        "plain loop, truncated: position error 0.267 px",
+        id="05-position",
+    ),
 ]
 
 
@@ -230,6 +255,15 @@ def test_the_method_table_lines_up_in_chinese(capsys):
     lines = capsys.readouterr().out.splitlines()
     assert CHINESE.search(lines[0]) and CHINESE.search(lines[1]), lines
     assert len({display_width(line) for line in lines}) == 1, lines
+
+
+def test_the_agg_lines_line_up_in_chinese(capsys):
+    with language("zh-CN"):
+        for name in l05.AGG_RENDERINGS:
+            l05.print_agg_error(name, 0.0037, 0.131, 0.05)
+    lines = capsys.readouterr().out.splitlines()
+    columns = [display_width(line.split(" 0.")[0]) for line in lines]
+    assert CHINESE.search(lines[0]) and columns[0] == columns[1], lines
 
 
 def test_the_correlated_row_is_the_filters(capsys):

@@ -209,6 +209,25 @@ CASES = [
         "plain loop, truncated: position error 0.267 px",
         id="05-position",
     ),
+    pytest.param(
+        l05.print_arc_length_step,
+        (0.000173, 0.35),
+        "by length: step 0.000173, samples at most 0.35 px apart",
+        id="05-step",
+    ),
+    pytest.param(
+        l05.print_closed_form_difference,
+        (64, 0.0002),
+        "k = 64: largest difference from the closed form 0.0002",
+        id="05-closed-form",
+    ),
+    pytest.param(
+        l08.print_sor_omega,
+        # Young's optimum for a square of side 100: 2 / (1 + sin(pi / 101)) = 1.94
+        (2 / (1 + np.sin(np.pi / 101)),),
+        "SOR's omega on this region: 1.94",
+        id="08-omega",
+    ),
 ]
 
 

@@ -37,6 +37,36 @@ UNCHECKED = True  # see the module docstring
 AGG_RENDERINGS = (N_("Agg, CURVE4 path"), N_("Agg, fine polyline"))
 
 
+def print_arc_length_step(step: float, gap: float) -> None:
+    """Print the arc-length parameter step and the largest gap between its samples, in pixels.
+
+    Examples
+    --------
+    >>> print_arc_length_step(0.0001734, 0.3512)
+    by length: step 0.000173, samples at most 0.35 px apart
+    """
+    print(
+        _("by length: step {step:.3g}, samples at most {gap:.2f} px apart").format(
+            step=step, gap=gap
+        )
+    )
+
+
+def print_closed_form_difference(k: int, difference: float) -> None:
+    """Print the reference at ``k`` x ``k`` subsamples against a band's closed-form coverage.
+
+    Examples
+    --------
+    >>> print_closed_form_difference(16, 0.0036)
+    k = 16: largest difference from the closed form 0.0036
+    """
+    print(
+        _("k = {k:2d}: largest difference from the closed form {difference:.4f}").format(
+            k=k, difference=difference
+        )
+    )
+
+
 def print_reference_against_finest(k: int, rmse: float, worst: float, finest: int = 64) -> None:
     """Print the exact reference at ``k`` x ``k`` subsamples against the finest one's.
 

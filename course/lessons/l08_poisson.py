@@ -28,6 +28,17 @@ from course.widgets.poisson import MARGIN, CloneApp, PoissonIterationApp, half_s
 UNCHECKED = True  # see the module docstring
 
 
+def print_sor_omega(omega: float) -> None:
+    """Print SOR's optimal relaxation factor omega for the app's region.
+
+    Examples
+    --------
+    >>> print_sor_omega(1.9612)
+    SOR's omega on this region: 1.96
+    """
+    print(_("SOR's omega on this region: {omega:.2f}").format(omega=omega))
+
+
 def print_residual_below(method: str, below: bool) -> None:
     """Print whether the solver ``method``'s residual is below 1e-10.
 

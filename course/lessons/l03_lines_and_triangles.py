@@ -1,4 +1,4 @@
-"""Lesson 03, lines and triangles: its registry entry, pictures and landmarks.
+"""Lesson 03, lines and triangles: its registry entry, pictures, landmarks and printed lines.
 
 A lesson's registry entry: the classroom tools call these with the registry's
 own arguments, never with a student's input, so this module checks none
@@ -25,7 +25,8 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_
+from course.i18n import N_, _
+from course.lessons.printed import title_on_one_line as title_on_one_line  # the notebook's
 from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
 from course.triangles import EDGE_RULES
 from course.widgets import lines_and_triangles_figures as figures
@@ -37,8 +38,127 @@ from course.widgets.lines_and_triangles import (
     LineApp,
     TriangleApp,
 )
+from course.widgets.picture import Still
 
 UNCHECKED = True  # see the module docstring
+
+#: The caption of the lesson's opening picture.
+OPENING_CAPTION = N_("two triangles sharing an edge, and their 4 x 4 supersampled coverage")
+#: The lines the lesson counts pixels of, as the notebook names them.
+LINE_NAMES = (N_("Bresenham"), N_("report's loop"), N_("Wu"))
+
+
+def opening_still() -> Still:
+    """The lesson's opening picture: :class:`TriangleApp`, captioned in the current language."""
+    return TriangleApp().still(_(OPENING_CAPTION))
+
+
+def print_lines_agree(lines: int, agree: int) -> None:
+    """Print on how many of ``lines`` lines the vectorized and the loop form agree.
+
+    Examples
+    --------
+    >>> print_lines_agree(256, 256)
+    256 lines: the forms agree on 256
+    """
+    print(_("{lines} lines: the forms agree on {agree}").format(lines=lines, agree=agree))
+
+
+def print_triangles_agree(agree: int, triangles: int) -> None:
+    """Print on how many of ``triangles`` triangles the two forms agree.
+
+    Examples
+    --------
+    >>> print_triangles_agree(9, 10)
+    the two forms agree on 9 of 10 triangles
+    """
+    print(
+        _("the two forms agree on {agree} of {triangles} triangles").format(
+            agree=agree, triangles=triangles
+        )
+    )
+
+
+def print_ink_per_column(image: np.ndarray) -> None:
+    """Print the ink of each column of ``image`` (rows summed), to 3 decimals.
+
+    Examples
+    --------
+    >>> print_ink_per_column(np.array([[0.25, 1.0], [0.25, 0.0]]))
+    ink per column: [0.5 1. ]
+    """
+    ink = np.asarray(image).sum(axis=0).round(3)
+    print(_("ink per column: {ink}").format(ink=ink))
+
+
+def print_exact_area(area: float, edge_pixels: int) -> None:
+    """Print a triangle's exact area and how many pixels its edges cross.
+
+    Examples
+    --------
+    >>> print_exact_area(63.0249, 47)
+    exact area 63.025; 47 edge pixels
+    """
+    print(
+        _("exact area {area:.3f}; {edge_pixels} edge pixels").format(
+            area=area, edge_pixels=edge_pixels
+        )
+    )
+
+
+def print_coverage_error(rate: int, rms: float, worst: float, total: float) -> None:
+    """Print one supersampling rate's coverage error on the edge pixels and its total ink.
+
+    Examples
+    --------
+    >>> print_coverage_error(4, 0.02114, 0.0521, 63.0625)
+    rate  4: RMS 0.0211, worst 0.052, total 63.0625
+    """
+    print(
+        _("rate {rate:>2}: RMS {rms:.4f}, worst {worst:.3f}, total {total:.4f}").format(
+            rate=rate, rms=rms, worst=worst, total=total
+        )
+    )
+
+
+def print_line_pixels(name: str, pixels: int, farthest: float | None = None) -> None:
+    """Print how many pixels a line drawn by ``name`` lights, and how far its farthest centre is.
+
+    ``name`` is one of :data:`LINE_NAMES`, shown in the current language; ``farthest``
+    (in pixels, from the ideal line) is left out when None.
+
+    Examples
+    --------
+    >>> print_line_pixels("Bresenham", 11, 0.0)
+    Bresenham: 11 pixels, farthest centre 0.00 px from the line
+    >>> print_line_pixels("Wu", 11)
+    Wu: 11 pixels
+    """
+    if farthest is None:
+        print(_("{name}: {pixels} pixels").format(name=_(name), pixels=pixels))
+        return
+    print(
+        _("{name}: {pixels} pixels, farthest centre {farthest:.2f} px from the line").format(
+            name=_(name), pixels=pixels, farthest=farthest
+        )
+    )
+
+
+def print_segments_report(segments: int, report: dict[str, int]) -> None:
+    """Print a curve drawn as ``segments`` Bresenham segments: pixels missed, off and twice.
+
+    ``report`` is :func:`course.bezier_handouts.segments_report`'s.
+
+    Examples
+    --------
+    >>> print_segments_report(4, {"missed": 0, "off": 28, "twice": 3})
+     4 segments: missed 0, off 28, twice 3
+    """
+    print(
+        _("{segments:>2} segments: missed {missed}, off {off}, twice {twice}").format(
+            segments=segments, missed=report["missed"], off=report["off"], twice=report["twice"]
+        )
+    )
 
 
 def line_landmarks(app: SliderApp) -> list[Landmark]:

@@ -1,4 +1,4 @@
-"""Lesson 05, anti-aliasing a curve: its registry entry, pictures and landmarks.
+"""Lesson 05, anti-aliasing a curve: its registry entry, pictures, landmarks and printed lines.
 
 A lesson's registry entry: the classroom tools call these with the registry's
 own arguments, never with a student's input, so this module checks none
@@ -24,13 +24,110 @@ from course.classroom.pictures import (
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.coverage import curve_polyline
 from course.curve_quality import REFERENCE, render_window
-from course.i18n import N_
+from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
+from course.lessons.printed import padded
 from course.widgets import antialiasing_figures as figures
 from course.widgets.antialiasing import ZOOM_PICKS, CurveWalk, StepApp, ZoomApp
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
+
+#: The two Agg renderings the lesson measures, as its notebook names them.
+AGG_RENDERINGS = (N_("Agg, CURVE4 path"), N_("Agg, fine polyline"))
+
+
+def print_arc_length_step(step: float, gap: float) -> None:
+    """Print the arc-length parameter step and the largest gap between its samples, in pixels.
+
+    Examples
+    --------
+    >>> print_arc_length_step(0.0001734, 0.3512)
+    by length: step 0.000173, samples at most 0.35 px apart
+    """
+    print(
+        _("by length: step {step:.3g}, samples at most {gap:.2f} px apart").format(
+            step=step, gap=gap
+        )
+    )
+
+
+def print_closed_form_difference(k: int, difference: float) -> None:
+    """Print the reference at ``k`` x ``k`` subsamples against a band's closed-form coverage.
+
+    Examples
+    --------
+    >>> print_closed_form_difference(16, 0.0036)
+    k = 16: largest difference from the closed form 0.0036
+    """
+    print(
+        _("k = {k:2d}: largest difference from the closed form {difference:.4f}").format(
+            k=k, difference=difference
+        )
+    )
+
+
+def print_reference_against_finest(k: int, rmse: float, worst: float, finest: int = 64) -> None:
+    """Print the exact reference at ``k`` x ``k`` subsamples against the finest one's.
+
+    Examples
+    --------
+    >>> print_reference_against_finest(16, 0.00045, 0.03125)
+    reference k=16 against k=64: RMSE 0.00045, max 0.0312
+    """
+    print(
+        _("reference k={k:2d} against k={finest}: RMSE {rmse:.5f}, max {worst:.4f}").format(
+            k=k, finest=finest, rmse=rmse, worst=worst
+        )
+    )
+
+
+def print_total_ink(exact: float, length: float) -> None:
+    """Print a unit-width stroke's total ink: its length plus its two round caps' pi/4.
+
+    Examples
+    --------
+    >>> print_total_ink(1140.85, 1140.05)
+    total ink: exact 1140.85 ≈ length 1140.05 + the round caps' 0.785
+    """
+    print(
+        _("total ink: exact {exact:.2f} ≈ length {length:.2f} + the round caps' {caps:.3f}").format(
+            exact=exact, length=length, caps=np.pi / 4
+        )
+    )
+
+
+def print_agg_error(name: str, rmse: float, worst: float, position: float) -> None:
+    """Print an Agg rendering's error against the exact coverage; ``name`` is an
+    :data:`AGG_RENDERINGS`, shown in the current language.
+
+    Examples
+    --------
+    >>> print_agg_error("Agg, CURVE4 path", 0.0037, 0.131, 0.05)
+    Agg, CURVE4 path     RMSE 0.0037, max 0.131, position 0.050 px
+    """
+    print(
+        _("{name} RMSE {rmse:.4f}, max {worst:.3f}, position {position:.3f} px").format(
+            name=padded(_(name), 20), rmse=rmse, worst=worst, position=position
+        )
+    )
+
+
+def print_loop_position_error(name: str, error: float) -> None:
+    """Print a rendering's position error in pixels; ``name`` is a key of
+    :data:`course.widgets.antialiasing_figures.ROLES`, shown by its role's name.
+
+    Examples
+    --------
+    >>> print_loop_position_error("nearest_round", 0.39)
+    plain loop, rounded: position error 0.390 px
+    """
+    print(
+        _("{role}: position error {error:.3f} px").format(
+            role=_(figures.ROLES[name][0]), error=error
+        )
+    )
+
 
 # Computed once for the lesson, its pictures and the tests that read them.
 seed_000_renderings = figures.seed_000_renderings

@@ -1,4 +1,4 @@
-"""Lesson 06, dithering: its registry entry, pictures and landmarks.
+"""Lesson 06, dithering: its registry entry, pictures, landmarks and printed lines.
 
 A lesson's registry entry: the classroom tools call these with the registry's
 own arguments, never with a student's input, so this module checks none
@@ -9,6 +9,7 @@ build validate their own input.
 from __future__ import annotations
 
 import functools
+from collections.abc import Iterable
 
 import numpy as np
 
@@ -21,12 +22,82 @@ from course.classroom.pictures import (
     read_only,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_
+from course.i18n import N_, _
+from course.lessons.printed import padded
 from course.widgets import dithering_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.dithering import GrayLevelApp, VoidAndClusterApp
 
 UNCHECKED = True  # see the module docstring
+
+
+def print_method_table(rows: Iterable[tuple[str, float, float]]) -> None:
+    """Print each dithering method's mean difference and blurred error, as a table.
+
+    ``rows`` are (method, mean difference, blurred error); a method's name is
+    :func:`course.dither.all_methods`'s, shown in the current language.
+
+    Examples
+    --------
+    >>> print_method_table([("threshold", -0.01524, 0.22041)])
+    method                       mean difference  blurred error
+    threshold                            -0.0152         0.2204
+    """
+    print(
+        padded(_("method"), 28)
+        + padded(_("mean difference"), 16, ">")
+        + padded(_("blurred error"), 15, ">")
+    )
+    for name, mean, blurred in rows:
+        print(f"{padded(_(name), 28)}{mean:>+16.4f}{blurred:>15.4f}")
+
+
+def print_ordered_error(mean: float, worst: float) -> None:
+    """Print the ordered 3x3 matrix's mean and worst error over the gray levels.
+
+    Examples
+    --------
+    >>> print_ordered_error(0.05494, 0.11)
+    mean error +0.0549, worst 0.1100
+    """
+    print(_("mean error {mean:+.4f}, worst {worst:.4f}").format(mean=mean, worst=worst))
+
+
+def print_pixel_count(pixels: int) -> None:
+    """Print how many pixels the image has, with thousands separators.
+
+    Examples
+    --------
+    >>> print_pixel_count(76800)
+    76,800 pixels
+    """
+    print(_("{pixels:,} pixels").format(pixels=pixels))  # an image: never one pixel
+
+
+def print_equal_to_loop(method: str, same: bool) -> None:
+    """Print whether error diffusion by ``method`` equals the loop's bit for bit.
+
+    Examples
+    --------
+    >>> print_equal_to_loop("rows", True)
+         rows: equal to the loop bit for bit: True
+    """
+    print(_("{method:>9}: equal to the loop bit for bit: {same}").format(method=method, same=same))
+
+
+def print_wavefront_against_pillow(wavefront: float, pillow: float) -> None:
+    """Print the wavefront's and Pillow's time for one dithering (in seconds), and their ratio.
+
+    Examples
+    --------
+    >>> print_wavefront_against_pillow(0.0791, 0.00051)
+    wavefront 79.1 ms, Pillow 0.51 ms: 155x
+    """
+    print(
+        _("wavefront {wavefront:.1f} ms, Pillow {pillow:.2f} ms: {ratio:.0f}x").format(
+            wavefront=wavefront * 1e3, pillow=pillow * 1e3, ratio=wavefront / pillow
+        )
+    )
 
 
 @functools.cache

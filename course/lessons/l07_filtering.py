@@ -1,4 +1,4 @@
-"""Lesson 07, filtering: its registry entry, pictures and landmarks.
+"""Lesson 07, filtering: its registry entry, pictures, landmarks and printed lines.
 
 A lesson's registry entry: the classroom tools call these with the registry's
 own arguments, never with a student's input, so this module checks none
@@ -22,12 +22,121 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_
+from course.i18n import N_, _
+from course.lessons.printed import display_width, title_on_one_line
 from course.widgets import filtering_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.filtering import KernelApp, RepeatedBlurApp, blurred
 
 UNCHECKED = True  # see the module docstring
+
+
+def print_loop_equals_fast(name: str, equal: bool) -> None:
+    """Print whether filter ``name``'s loop and fast forms give equal images.
+
+    Examples
+    --------
+    >>> print_loop_equals_fast("blur", True)
+    blur: loop == fast: True
+    """
+    print(_("{name}: loop == fast: {equal}").format(name=name, equal=equal))
+
+
+def print_uniform_filter(mode: str, border: str, same: bool) -> None:
+    """Print whether scipy's ``uniform_filter`` in ``mode`` equals the box blur with ``border``.
+
+    Examples
+    --------
+    >>> print_uniform_filter("mirror", "reflect", True)
+    uniform_filter   mirror against 'reflect': equal below 1e-12: True
+    """
+    print(
+        _("uniform_filter {mode:>8} against '{border}': equal below 1e-12: {same}").format(
+            mode=mode, border=border, same=same
+        )
+    )
+
+
+def print_report_rule_against_scipy(inside: bool, frame: float) -> None:
+    """Print the report's border rule against scipy's default: equal inside, and on the frame.
+
+    Examples
+    --------
+    >>> print_report_rule_against_scipy(True, 0.0881)
+    the report's rule against scipy's default: inside below 1e-12: True, on the frame up to 0.088
+    """
+    print(
+        _(
+            "the report's rule against scipy's default: inside below 1e-12: {inside}, "
+            "on the frame up to {frame:.3f}"
+        ).format(inside=inside, frame=frame)
+    )
+
+
+def print_sobel_against_scipy(same: bool) -> None:
+    """Print whether ``filters.sobel`` equals the hypot of ``ndimage.sobel`` in both directions.
+
+    Examples
+    --------
+    >>> print_sobel_against_scipy(True)
+    sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: True
+    """
+    print(
+        _("sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: {same}").format(
+            same=same
+        )
+    )
+
+
+def print_correlation_and_convolution(correlation: np.ndarray, convolution: np.ndarray) -> None:
+    """Print a row filtered by correlation (the lab's) and by convolution, aligned.
+
+    Examples
+    --------
+    >>> print_correlation_and_convolution(np.array([0.0, 4.0]), np.array([0.0, -4.0]))
+    correlation (the lab): [0. 4.]
+    convolution:           [ 0. -4.]
+    """
+    labels = (_("correlation (the lab):"), _("convolution:"))
+    width = max(display_width(label) for label in labels)
+    for label, row in zip(labels, (correlation, convolution), strict=True):
+        print(label + " " * (width - display_width(label)), row)
+
+
+def print_largest_magnitude(largest: float) -> None:
+    """Print the largest Sobel magnitude on a 0/1 window against sqrt(20); its window follows.
+
+    Examples
+    --------
+    >>> print_largest_magnitude(20**0.5)
+    largest 4.4721 = sqrt(20) 4.4721, on
+    """
+    print(
+        _("largest {largest:.4f} = sqrt(20) {root:.4f}, on").format(
+            largest=largest, root=np.sqrt(20)
+        )
+    )
+
+
+def print_border_titles(app: RepeatedBlurApp) -> None:
+    """Print each border's panel title of ``app``, each on one line (its two lines joined)."""
+    for border in filters.BORDERS:
+        print(title_on_one_line(app.titles[border].get_text()))
+
+
+def print_frame_depth(repeats: int, depth: int) -> None:
+    """Print how deep zero padding's dark frame reaches after ``repeats`` blurs.
+
+    Examples
+    --------
+    >>> print_frame_depth(5, 3)
+     5 blurs: zero padding's frame is 3 px deep on the right
+    """
+    print(
+        _("{repeats:2d} blurs: zero padding's frame is {depth} px deep on the right").format(
+            repeats=repeats, depth=depth
+        )
+    )
 
 
 @functools.cache
@@ -46,7 +155,7 @@ def repeated_blur_landmarks(app: SliderApp) -> list[Landmark]:
     landmarks = []
     for border in filters.BORDERS:
         result = half_size_photograph()
-        for _ in range(repeats):
+        for _repeat in range(repeats):
             result = blurred(result, border)
         window = result[:corner, -corner:]
         axes = app.crops[border].axes

@@ -1,4 +1,4 @@
-"""Lesson 08, Poisson image editing: its registry entry, pictures and landmarks.
+"""Lesson 08, Poisson image editing: its registry entry, pictures, landmarks and printed lines.
 
 A lesson's registry entry: the classroom tools call these with the registry's
 own arguments, never with a student's input, so this module checks none
@@ -20,12 +20,79 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_
+from course.i18n import N_, _
 from course.widgets import poisson_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.poisson import MARGIN, CloneApp, PoissonIterationApp, half_size
 
 UNCHECKED = True  # see the module docstring
+
+
+def print_sor_omega(omega: float) -> None:
+    """Print SOR's optimal relaxation factor omega for the app's region.
+
+    Examples
+    --------
+    >>> print_sor_omega(1.9612)
+    SOR's omega on this region: 1.96
+    """
+    print(_("SOR's omega on this region: {omega:.2f}").format(omega=omega))
+
+
+def print_residual_below(method: str, below: bool) -> None:
+    """Print whether the solver ``method``'s residual is below 1e-10.
+
+    Examples
+    --------
+    >>> print_residual_below("dst", True)
+             dst: residual below 1e-10: True
+    """
+    print(_("{method:>12}: residual below 1e-10: {below}").format(method=method, below=below))
+
+
+def print_lab_clone_time(per_pixel: float, pixels: int = 30302, sweeps: int = 8000) -> None:
+    """Print the lab's loop time per pixel per sweep (in seconds), per sweep of the plane's
+    ``pixels`` and for ``sweeps`` sweeps.
+
+    Examples
+    --------
+    >>> print_lab_clone_time(56.5e-6)
+    56.5 us per pixel per sweep: 1.712 s per sweep of the plane, 228 min for 8000
+    """
+    print(
+        _(
+            "{micro:.1f} us per pixel per sweep: {sweep:.3f} s per sweep of the plane, "
+            "{minutes:.0f} min for {sweeps}"
+        ).format(
+            micro=per_pixel * 1e6,
+            sweep=per_pixel * pixels,
+            minutes=per_pixel * pixels * sweeps / 60,
+            sweeps=sweeps,
+        )
+    )
+
+
+def print_plane_colour(colour: np.ndarray) -> None:
+    """Print the plane's own mean colour, RGB to 2 decimals.
+
+    Examples
+    --------
+    >>> print_plane_colour(np.array([0.721, 0.709, 0.78]))
+    the plane itself: RGB [0.72 0.71 0.78]
+    """
+    print(_("the plane itself: RGB {rgb}").format(rgb=np.round(colour, 2)))
+
+
+def print_cloned_colour(x: int, y: int, colour: np.ndarray) -> None:
+    """Print the mean colour of the plane cloned at ``(x, y)``, RGB to 2 decimals.
+
+    Examples
+    --------
+    >>> print_cloned_colour(420, 50, np.array([0.54, 0.551, 0.69]))
+    cloned at (420, 50): RGB [0.54 0.55 0.69]
+    """
+    print(_("cloned at ({x}, {y}): RGB {rgb}").format(x=x, y=y, rgb=np.round(colour, 2)))
+
 
 PLANE_OFFSET = (500, 300)
 

@@ -1,0 +1,320 @@
+"""course.lessons.printed, and the lines the lessons print with it (course.lessons.lNN).
+
+In English exactly as the notebooks printed them before the printing moved into
+``course.lessons``, and in Chinese under ``use_language("zh-CN")`` (English again after).
+Each case is a function of a lesson module, its arguments as the lesson passes them, and
+the line the notebook printed (from its committed output); where the line states a number
+that is cheap to recompute, the argument is computed here from its definition instead of
+copied. Nothing here draws a figure except the opening picture and a 12 x 12 blur app;
+the whole file takes about 5 s.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from course import filters
+from course.i18n import current_language, language
+from course.lessons import l03_lines_and_triangles as l03
+from course.lessons import l05_antialiasing as l05
+from course.lessons import l06_dithering as l06
+from course.lessons import l07_filtering as l07
+from course.lessons import l08_poisson as l08
+from course.lessons.printed import display_width
+from course.raster import wu_line
+from course.widgets.filtering import RepeatedBlurApp
+
+CHINESE = re.compile("[\u4e00-\u9fff]")
+
+
+def shoelace_area(p0, p1, p2) -> float:
+    (x0, y0), (x1, y1), (x2, y2) = p0, p1, p2
+    return abs((x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0)) / 2
+
+
+def wu_image() -> np.ndarray:
+    """Lesson 03's Wu line from (0.5, 0.5) to (7.5, 3.5), its weights added into pixels."""
+    pixels, weights = wu_line((0.5, 0.5), (7.5, 3.5))
+    image = np.zeros((4, 8))
+    np.add.at(image, (pixels[:, 1], pixels[:, 0]), weights)
+    return image
+
+
+def sobel_x_row(sign: int) -> np.ndarray:
+    """Lesson 07's step row filtered by Sobel's x kernel: -1 0 1 across, weights 1 2 1 down,
+    summed here by hand (sign 1: correlation, the lab's; -1: convolution, the kernel flipped)."""
+    step = np.array([0.0, 0, 0, 1, 1, 1])
+    padded = np.concatenate([step[:1], step, step[-1:]])  # 'replicate'
+    right, left = (padded[2:], padded[:-2]) if sign > 0 else (padded[:-2], padded[2:])
+    return (1 + 2 + 1) * (right - left)
+
+
+CASES = [
+    pytest.param(
+        l03.print_lines_agree,
+        (16**4, 16**4),
+        "65536 lines: the forms agree on 65536",
+        id="03-lines",
+    ),
+    pytest.param(
+        l03.print_triangles_agree,
+        (3000, 3000),
+        "the two forms agree on 3000 of 3000 triangles",
+        id="03-triangles",
+    ),
+    pytest.param(
+        l03.print_ink_per_column,
+        (wu_image(),),
+        "ink per column: [0.5 1.  1.  1.  1.  1.  1.  0.5]",
+        id="03-ink",
+    ),
+    pytest.param(
+        l03.print_exact_area,
+        (shoelace_area((1.3, 0.7), (14.2, 5.9), (4.1, 11.6)), 47),
+        "exact area 63.025; 47 edge pixels",
+        id="03-area",
+    ),
+    pytest.param(
+        l03.print_coverage_error,
+        (1, 0.2452, 0.494, 61.0),
+        "rate  1: RMS 0.2452, worst 0.494, total 61.0000",
+        id="03-rate",
+    ),
+    pytest.param(
+        l03.print_line_pixels,
+        ("report's loop", 10 + 10 + 1, np.hypot(0.5, 0.5)),
+        "report's loop: 21 pixels, farthest centre 0.71 px from the line",
+        id="03-report-loop",
+    ),
+    pytest.param(l03.print_line_pixels, ("Wu", 11), "Wu: 11 pixels", id="03-wu"),
+    pytest.param(
+        l03.print_segments_report,
+        (1, {"missed": 58, "off": 29, "twice": 0}),
+        " 1 segments: missed 58, off 29, twice 0",
+        id="03-segments",
+    ),
+    pytest.param(
+        l06.print_method_table,
+        ([("threshold", -0.0152, 0.2204), ("Floyd-Steinberg serpentine", -0.0008, 0.0172)],),
+        "method                       mean difference  blurred error\n"
+        "threshold                            -0.0152         0.2204\n"
+        "Floyd-Steinberg serpentine           -0.0008         0.0172",
+        id="06-table",
+    ),
+    pytest.param(
+        l06.print_ordered_error, (0.0549, 0.11), "mean error +0.0549, worst 0.1100", id="06-ordered"
+    ),
+    pytest.param(l06.print_pixel_count, (300 * 256,), "76,800 pixels", id="06-pixels"),
+    pytest.param(
+        l06.print_equal_to_loop,
+        ("rows", True),
+        "     rows: equal to the loop bit for bit: True",
+        id="06-equal",
+    ),
+    pytest.param(
+        l06.print_wavefront_against_pillow,
+        (0.0791, 0.00051),
+        "wavefront 79.1 ms, Pillow 0.51 ms: 155x",
+        id="06-timing",
+    ),
+    pytest.param(
+        l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: True", id="07-loop"
+    ),
+    pytest.param(
+        l07.print_uniform_filter,
+        ("constant", "zero", True),
+        "uniform_filter constant against 'zero': equal below 1e-12: True",
+        id="07-uniform-filter",
+    ),
+    pytest.param(
+        l07.print_report_rule_against_scipy,
+        (True, 0.088),
+        "the report's rule against scipy's default: inside below 1e-12: True, "
+        "on the frame up to 0.088",
+        id="07-report-rule",
+    ),
+    pytest.param(
+        l07.print_sobel_against_scipy,
+        (True,),
+        "sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: True",
+        id="07-sobel",
+    ),
+    pytest.param(
+        l07.print_correlation_and_convolution,
+        (sobel_x_row(1), sobel_x_row(-1)),
+        "correlation (the lab): [0. 0. 4. 4. 0. 0.]\n"
+        "convolution:           [ 0.  0. -4. -4.  0.  0.]",
+        id="07-correlation",
+    ),
+    pytest.param(
+        l07.print_largest_magnitude,
+        (np.hypot(4, 2),),  # the window [[0 0 0] [0 0 1] [1 1 1]]: gx 3 + 1 = 4, gy 2
+        "largest 4.4721 = sqrt(20) 4.4721, on",
+        id="07-largest",
+    ),
+    pytest.param(
+        l07.print_frame_depth,
+        (5, 3),
+        " 5 blurs: zero padding's frame is 3 px deep on the right",
+        id="07-frame-depth",
+    ),
+    pytest.param(
+        l08.print_residual_below,
+        ("capacitance", True),
+        " capacitance: residual below 1e-10: True",
+        id="08-residual",
+    ),
+    pytest.param(
+        l08.print_lab_clone_time,
+        (56.5e-6, 30302, 8000),
+        # 56.5e-6 s x 30302 pixels = 1.712 s a sweep; x 8000 sweeps / 60 = 228.3 min
+        "56.5 us per pixel per sweep: 1.712 s per sweep of the plane, 228 min for 8000",
+        id="08-time",
+    ),
+    pytest.param(
+        l08.print_plane_colour,
+        (np.array([0.7249, 0.705, 0.78]),),
+        "the plane itself: RGB [0.72 0.7  0.78]",
+        id="08-plane",
+    ),
+    pytest.param(
+        l08.print_cloned_colour,
+        (420, 320, np.array([0.23, 0.281, 0.309])),
+        "cloned at (420, 320): RGB [0.23 0.28 0.31]",
+        id="08-cloned",
+    ),
+    pytest.param(
+        l05.print_reference_against_finest,
+        (16, 0.00045, 0.03125),
+        "reference k=16 against k=64: RMSE 0.00045, max 0.0312",
+        id="05-reference",
+    ),
+    pytest.param(
+        l05.print_total_ink,
+        (1140.0 + np.pi / 4, 1140.0),
+        "total ink: exact 1140.79 ≈ length 1140.00 + the round caps' 0.785",
+        id="05-ink",
+    ),
+    pytest.param(
+        l05.print_agg_error,
+        ("Agg, fine polyline", 0.0003, 0.032, 0.005),
+        "Agg, fine polyline   RMSE 0.0003, max 0.032, position 0.005 px",
+        id="05-agg",
+    ),
+    pytest.param(
+        l05.print_loop_position_error,
+        ("nearest_truncate", 0.267),
+        "plain loop, truncated: position error 0.267 px",
+        id="05-position",
+    ),
+    pytest.param(
+        l05.print_arc_length_step,
+        (0.000173, 0.35),
+        "by length: step 0.000173, samples at most 0.35 px apart",
+        id="05-step",
+    ),
+    pytest.param(
+        l05.print_closed_form_difference,
+        (64, 0.0002),
+        "k = 64: largest difference from the closed form 0.0002",
+        id="05-closed-form",
+    ),
+    pytest.param(
+        l08.print_sor_omega,
+        # Young's optimum for a square of side 100: 2 / (1 + sin(pi / 101)) = 1.94
+        (2 / (1 + np.sin(np.pi / 101)),),
+        "SOR's omega on this region: 1.94",
+        id="08-omega",
+    ),
+]
+
+
+@pytest.mark.parametrize(("function", "arguments", "english"), CASES)
+def test_a_lesson_line_is_the_notebooks_in_english_and_chinese_in_chinese(
+    function, arguments, english, capsys
+):
+    function(*arguments)
+    assert capsys.readouterr().out == english + "\n"
+    with language("zh-CN"):
+        function(*arguments)
+    chinese = capsys.readouterr().out
+    assert current_language() == "en"
+    assert CHINESE.search(chinese), chinese
+    # The numbers stay, perhaps in another order; only the words change.
+    number = r"\d+(?:\.\d+)?"
+    assert sorted(re.findall(number, chinese)) == sorted(re.findall(number, english))
+
+
+def test_a_two_line_title_is_one_line_in_either_language():
+    title = "rule open: 42 + 48 pixels\n0 painted twice, 9 missed on the shared edge"
+    assert l03.title_on_one_line(title) == (
+        "rule open: 42 + 48 pixels: 0 painted twice, 9 missed on the shared edge"
+    )
+    with language("zh-CN"):
+        assert l03.title_on_one_line("规则 open：42 + 48 个像素\n0 个画了两次") == (
+            "规则 open：42 + 48 个像素；0 个画了两次"
+        )
+    assert l03.title_on_one_line("one line") == "one line"
+
+
+def test_the_opening_picture_is_captioned_in_the_language():
+    assert l03.opening_still().caption == (
+        "two triangles sharing an edge, and their 4 x 4 supersampled coverage"
+    )
+    with language("zh-CN"):
+        caption = l03.opening_still().caption
+    assert CHINESE.search(caption), caption
+
+
+def test_the_method_table_lines_up_in_chinese(capsys):
+    with language("zh-CN"):
+        l06.print_method_table([("threshold", -0.0152, 0.2204), ("Atkinson", -0.0325, 0.0592)])
+    lines = capsys.readouterr().out.splitlines()
+    assert CHINESE.search(lines[0]) and CHINESE.search(lines[1]), lines
+    assert len({display_width(line) for line in lines}) == 1, lines
+
+
+def test_the_agg_lines_line_up_in_chinese(capsys):
+    with language("zh-CN"):
+        for name in l05.AGG_RENDERINGS:
+            l05.print_agg_error(name, 0.0037, 0.131, 0.05)
+    lines = capsys.readouterr().out.splitlines()
+    columns = [display_width(line.split(" 0.")[0]) for line in lines]
+    assert CHINESE.search(lines[0]) and columns[0] == columns[1], lines
+
+
+def test_the_correlated_row_is_the_filters(capsys):
+    step = np.zeros((3, 6))
+    step[:, 3:] = 1
+    sobel_x = filters.SOBEL_X
+    assert np.array_equal(
+        filters.convolve(step, sobel_x[::-1, ::-1], "replicate")[1], sobel_x_row(1)
+    )
+    assert np.array_equal(filters.convolve(step, sobel_x, "replicate")[1], sobel_x_row(-1))
+
+
+def test_the_two_rows_line_up_in_chinese_too(capsys):
+    with language("zh-CN"):
+        l07.print_correlation_and_convolution(sobel_x_row(1), sobel_x_row(-1))
+    first, second = capsys.readouterr().out.splitlines()
+    # A Chinese character takes two columns: the rows start at the same column.
+    width = [display_width(line.split("[")[0]) for line in (first, second)]
+    assert width[0] == width[1] and CHINESE.search(second), (first, second)
+
+
+def test_the_border_titles_print_one_line_each(capsys):
+    app = RepeatedBlurApp(np.full((12, 12), 0.5), repeats=1, corner=4)
+    l07.print_border_titles(app)
+    english = capsys.readouterr().out.splitlines()
+    assert english == [
+        app.titles[border].get_text().replace("\n", ": ") for border in filters.BORDERS
+    ]
+    with language("zh-CN"):
+        app = RepeatedBlurApp(np.full((12, 12), 0.5), repeats=1, corner=4)
+        l07.print_border_titles(app)
+    chinese = capsys.readouterr().out.splitlines()
+    assert len(chinese) == len(filters.BORDERS)
+    assert all(CHINESE.search(line) and "\n" not in line for line in chinese), chinese

@@ -13,7 +13,8 @@ Each recognises the handouts' mistakes: the reversed step of seeds 002 and
 004, stopping one level early, x and y swapped, a loop that never reaches
 t = 1, the GAMES101 handout's float32 t, OpenCV's rounding to the nearest
 pixel, the two together (the GAMES101 report's loop), a negative index that
-wraps around to the other side of the window, and the wrong colour. An answer that calls the library's own curve is told to write it.
+wraps around to the other side of the window, and the wrong colour. An
+answer that calls the library's own curve is told to write it.
 
 Hints come in steps: a failure says where to look, the next failures say
 more; ``check.hint("bezier")`` says more at once and

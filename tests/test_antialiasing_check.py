@@ -173,3 +173,69 @@ def test_weights_summing_to_the_length_but_misplaced_fail():
 
     result = check.arc_length_weights(all_at_the_ends)
     assert not result and result.mistake is None
+
+
+def test_a_truncated_pixel_is_not_told_it_rounds_where_both_light_the_same_pixel():
+    def under_the_point(x, y):
+        return [(math.floor(x), math.floor(y))], [1]
+
+    result = check.bilinear_splat(under_the_point)
+    # Case 2, (3.0, 2.0): floor and round both give pixel (3, 2).
+    assert not result and "case 2 is wrong" in result.message
+    assert "are the same pixel" in result.message
+    assert "whose corners p1..p4 are built from the point itself" not in result.message
+
+
+def test_where_floor_and_round_differ_each_one_pixel_splat_gets_its_own_name():
+    def first_named(x, y, splat):
+        table = splat_table(*splat(x, y))
+        for mistake in check.SPLAT_MISTAKES:
+            answer = mistake.answer(x=x, y=y)
+            if answer is not None and np.array_equal(answer, table):
+                return mistake
+        return None
+
+    def under(x, y):
+        return [(math.floor(x), math.floor(y))], [1.0]
+
+    def nearest(x, y):
+        return [(round(x), round(y))], [1.0]
+
+    truncated = first_named(2.75, 1.25, under)
+    assert truncated.name == "the pixel under the point (truncated)"
+    assert "floor(x), floor(y)" in truncated.explanation
+    rounded = first_named(2.75, 1.25, nearest)
+    assert rounded.name == "the whole point to one pixel"
+    assert "GAMES101 report's left addColor" in rounded.explanation
+
+
+def test_the_normalised_splat_names_the_vs2022_report_not_a_file():
+    def normalised(x, y):
+        left, top = math.floor(x - 0.5), math.floor(y - 0.5)
+        pixels = [(left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)]
+        near = [math.sqrt(2) - math.hypot(x - (a + 0.5), y - (b + 0.5)) for a, b in pixels]
+        return pixels, [d / sum(near) for d in near]
+
+    result = check.bilinear_splat(normalised)
+    assert result.mistake == "the normalised splat"
+    assert "the VS2022 report's splat" in result.message
+    assert "seed 003" not in result.message
+
+
+@pytest.mark.parametrize(
+    ("wrap", "said"),
+    [
+        (lambda pixels, weights: {"pixels": pixels, "weights": weights}, "yours is a dict"),
+        (lambda pixels, weights: (p for p in (pixels, weights)), "yours is a generator"),
+        (
+            lambda pixels, weights: (iter(pixels), (w for w in weights)),
+            "yours are a list_iterator and a generator",
+        ),
+    ],
+)
+def test_a_dict_or_a_generator_is_told_to_return_two_lists(wrap, said):
+    result = check.bilinear_splat(lambda x, y: wrap(*correct(x, y)))
+    assert not result
+    assert f"return two lists: pixels, weights; {said}" in result.message
+    assert "could not convert" not in result.message and "float() argument" not in result.message
+    assert check.bilinear_splat(lambda x, y: tuple(np.asarray(v) for v in correct(x, y)))

@@ -155,7 +155,7 @@ def test_each_known_mistake_of_naive_bezier_is_named_with_its_picture(solution, 
 
 def test_int32_binomials_are_named_at_degree_40():
     def int32_comb(n, k):
-        value = math.comb(n, k) % 2**32
+        value = pascal(n, k) % 2**32  # not math.comb: naive_bezier refuses it
         return value - 2**32 if value >= 2**31 else value
 
     def naive_int32(points, t):
@@ -245,3 +245,48 @@ def test_a_float_comb_is_named_at_once_not_by_the_call_budget(monkeypatch):
     result = check.comb(float_recursion)
     assert result.mistake == "floating point"
     assert str(result).startswith("FAIL comb: case 1 is wrong")
+
+
+def rounded_float_product(m, n):
+    if n > m:
+        return 0
+    result = 1.0
+    for i in range(n):
+        result = result * (m - i) / (i + 1)
+    return int(round(result))  # noqa: RUF046 (the student's code, as written)
+
+
+def test_a_float_product_rounded_back_to_an_int_is_named_not_pascals_rule(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    result = check.comb(rounded_float_product)
+    # Exact up to 2^53: the first wrong answer is C(67, 33), case 13.
+    assert not result and result.mistake == "not Pascal's rule"
+    assert str(result).startswith("FAIL comb: case 13 is wrong")
+    assert "your comb multiplies or divides (result * (m - i) / (i + 1))" in result.message
+    assert "int(round(...)) cannot bring back the ones lost" in result.message
+    assert check.comb(pascal)
+
+
+def test_a_naive_bezier_with_math_comb_is_told_to_use_its_own_comb():
+    def with_math_comb(points, t):
+        n = len(points) - 1
+        return sum(math.comb(n, i) * t**i * (1 - t) ** (n - i) * p for i, p in enumerate(points))
+
+    result = check.naive_bezier(with_math_comb)
+    assert not result
+    assert str(result).startswith(
+        "FAIL naive_bezier: math.comb was called: this exercise weights the points with your "
+        "own comb"
+    )
+    assert check.naive_bezier(naive_solution)
+
+
+def test_the_any_degree_reports_upside_down_binomial_is_named():
+    def upside_down(points, t):
+        n = len(points) - 1
+        return sum(pascal(i, n) * t**i * (1 - t) ** (n - i) * p for i, p in enumerate(points))
+
+    result = check.naive_bezier(upside_down)
+    assert not result and result.mistake == "the binomial upside down"
+    assert "your curve is t^n P[n] alone" in result.message
+    assert result.picture is not None

@@ -305,3 +305,55 @@ def test_each_edge_of_the_window_is_a_case_that_a_test_one_off_fails(points, sli
     else:
         assert not np.array_equal(window, expected)
     assert not check.bezier(one_off)
+
+
+def test_a_point_in_a_list_of_one_fails_with_its_shape_named():
+    result = check.recursive_bezier(lambda p, t: np.array([recursive_solution(p, t)]))
+    assert not result
+    assert "the answer is the point (x, y), of shape (2,); yours has shape (1, 2)" in (
+        result.message
+    )
+    assert check.recursive_bezier(lambda p, t: tuple(recursive_solution(p, t)))
+
+
+def test_a_level_closed_by_a_modulo_index_is_told_of_the_modulo_too():
+    def modulo(p, t):
+        p = np.asarray(p, dtype=float)
+        return [(1 - t) * p[i] + t * p[(i + 1) % len(p)] for i in range(len(p))]
+
+    result = check.next_level(modulo)
+    assert result.mistake == "an edge from the last point back to the first"
+    assert "an index taken modulo N (P[(i + 1) % N]) or np.roll" in result.message
+
+
+def the_games101_reports_loop(control_points, window):
+    """float t advanced by 0.001 and cv::Point's rounding, both."""
+    height, width = window.shape[:2]
+    t = np.float32(0)
+    while t <= 1:
+        x, y = recursive_solution(control_points, float(t))
+        column, row = round(x), round(y)
+        if 0 <= column < width and 0 <= row < height:
+            window[row, column] = (0, 1, 0)
+        t = np.float32(t + np.float32(0.001))
+
+
+def test_the_games101_reports_own_loop_is_named_as_the_pair():
+    result = check.bezier(the_games101_reports_loop)
+    assert result.mistake == "the GAMES101 report's loop: float32 t and cv::Point rounding"
+    assert "case 1 is wrong" in result.message
+
+
+@pytest.mark.parametrize("colour", [(0, 255, 0), (1, 0, 0)])
+def test_a_wrong_colour_is_named_as_the_colour_never_as_wrapping(colour):
+    def painted_in(control_points, window):
+        height, width = window.shape[:2]
+        for k in range(1001):
+            x, y = recursive_solution(control_points, k / 1000)
+            if 0 <= x < width and 0 <= y < height:
+                window[int(y), int(x)] = colour
+
+    result = check.bezier(painted_in)
+    assert not result and result.mistake == "the wrong colour"
+    assert "the right pixels, but pixel (10, 10)" in result.message
+    assert "wraps around" not in result.message

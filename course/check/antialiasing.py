@@ -140,6 +140,14 @@ def _table_of(splat: Callable[..., Any]) -> Callable[[float, float], np.ndarray]
 
 def _student_table(answer: Any) -> np.ndarray:
     """The student's (pixels, weights) as a splat table; AnswerError in their terms."""
+    if not isinstance(answer, (list, tuple, np.ndarray)):
+        # A dict unpacks into its keys and a generator into whatever it yields: neither is
+        # the pair the exercise returns.
+        raise AnswerError(
+            _("return two lists: pixels, weights; yours is a {kind}").format(
+                kind=type(answer).__name__
+            )
+        )
     try:
         pixels, weights = answer
     except (TypeError, ValueError):
@@ -154,6 +162,13 @@ def _student_table(answer: Any) -> np.ndarray:
                 "return two things, the pixels and their weights; yours is a {kind}"
             ).format(kind=kind)
         raise AnswerError(message) from None
+    kinds = (list, tuple, np.ndarray)
+    if not isinstance(pixels, kinds) or not isinstance(weights, kinds):
+        raise AnswerError(
+            _("return two lists: pixels, weights; yours are a {pixels} and a {weights}").format(
+                pixels=type(pixels).__name__, weights=type(weights).__name__
+            )
+        )
     try:
         return splat_table(pixels, weights)
     except (TypeError, ValueError) as error:
@@ -272,6 +287,19 @@ def _nearest_floor(samples: Any) -> tuple[np.ndarray, np.ndarray]:
     return np.floor(points).astype(np.int64), np.ones(len(points))
 
 
+def _one_pixel_where_they_differ(
+    one_pixel: Callable[..., Any], other: Callable[..., Any]
+) -> Callable[[float, float], np.ndarray | None]:
+    """``one_pixel``'s splat where it lights another pixel than ``other`` (rounding and
+    truncation), else None, which matches nothing: such a point cannot tell them apart."""
+
+    def answer(x: float, y: float) -> np.ndarray | None:
+        table, rival = _table_of(one_pixel)(x, y), _table_of(other)(x, y)
+        return None if np.array_equal(table, rival) else table
+
+    return answer
+
+
 def _own_rectangles(x: float, y: float) -> np.ndarray:
     left, top = math.floor(x - 0.5), math.floor(y - 0.5)
     dx, dy = x - (left + 0.5), y - (top + 0.5)
@@ -299,16 +327,29 @@ def _splat_mistakes() -> tuple[Mistake, ...]:
                 "point.y)), so dx = point.x - p1.x is always 0. Share the point among the four "
                 "pixels whose centres surround it, with dx and dy measured from a pixel centre."
             ),
-            _table_of(nearest_round),
+            _one_pixel_where_they_differ(nearest_round, _nearest_floor),
         ),
+        Mistake(
+            _("the pixel under the point (truncated)"),
+            _(
+                "your splat gives the whole point to the pixel under it, (floor(x), floor(y)) as "
+                "int() or cv::Point truncates it, weight 1: no anti-aliasing. Share the point "
+                "among the four pixels whose centres surround it, with dx and dy measured from a "
+                "pixel centre."
+            ),
+            _one_pixel_where_they_differ(_nearest_floor, nearest_round),
+        ),
+        # Where rounding and truncation light the same pixel, the point cannot tell which.
         Mistake(
             _("the whole point to one pixel"),
             _(
-                "your splat gives the whole point to one pixel, the one it falls in, weight 1: no "
-                "anti-aliasing. Share the point among the four pixels whose centres surround it, "
-                "with dx and dy measured from a pixel centre."
+                "your splat gives the whole point to one pixel, weight 1: no anti-aliasing. At "
+                "this point the pixel under it (truncated) and the nearest one (rounded, as the "
+                "GAMES101 report's left addColor) are the same pixel. Share the point among the "
+                "four pixels whose centres surround it, with dx and dy measured from a pixel "
+                "centre."
             ),
-            _table_of(_nearest_floor),
+            _table_of(nearest_round),
         ),
         Mistake(
             _("pixels at their corners"),
@@ -338,7 +379,7 @@ def _splat_mistakes() -> tuple[Mistake, ...]:
             _("the normalised splat"),
             _(
                 "your weights never vanish: a point at a pixel's centre still gives its neighbours "
-                "some. That is the VS2022 report's splat (seed 003): sqrt(2) minus each distance, "
+                "some. That is the VS2022 report's splat: sqrt(2) minus each distance, "
                 "normalised. Bilinear weights are areas of rectangles, and give a centre's pixel "
                 "everything."
             ),

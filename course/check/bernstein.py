@@ -144,9 +144,13 @@ def _is_library(function: Any) -> bool:
     return module.split(".")[0] in {"course", "numpy", "math", "builtins", "scipy"}
 
 
-def _binomials() -> dict[Any, str]:
-    """The ready-made binomials a comb must not call: Python's, the library's, scipy's."""
-    refused = _("this exercise builds the coefficients itself, by Pascal's rule")
+def _binomials(refused: str | None = None) -> dict[Any, str]:
+    """The ready-made binomials a comb must not call: Python's, the library's, scipy's.
+
+    ``refused`` says why (by default, comb's own reason: Pascal's rule).
+    """
+    if refused is None:
+        refused = _("this exercise builds the coefficients itself, by Pascal's rule")
     called = _("{function} was called: {refused}")
     forbidden = {
         math.comb: called.format(function="math.comb", refused=refused),
@@ -210,6 +214,17 @@ def comb(function: Callable[..., Any]) -> CheckResult:
     >>> comb(math.comb).passed
     False
     """
+    product = _multiplies(function)
+    not_pascal = _(
+        "your comb multiplies or divides ({product}), as the formula m! / (n! (m - n)!) does, "
+        "and gets this case wrong. The exercise builds each coefficient from the two above it, "
+        "C(m, n) = C(m - 1, n - 1) + C(m - 1, n), adding integers only."
+    ).format(product=product)
+    if product is not None and "/" in product.replace("//", ""):
+        not_pascal += " " + _(
+            "With / the product is a float, which keeps about 16 significant digits, and "
+            "int(round(...)) cannot bring back the ones lost: C(67, 33) has 20."
+        )
     mistakes = [
         Mistake(
             _("32-bit integers"),
@@ -263,6 +278,14 @@ def comb(function: Callable[..., Any]) -> CheckResult:
             ),
             lambda m, n: binomial(m + 1, n),
         ),
+        # Last: a comb that multiplies and fails in a way none of the above explains (a float
+        # product rounded back to an int loses digits past 2^53).
+        Mistake(
+            _("not Pascal's rule"),
+            not_pascal,
+            lambda m, n: None,
+            matches=lambda expected, given: product is not None,
+        ),
     ]
     result = run_cases(
         "comb",
@@ -275,8 +298,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
         watch=_pascal_only,
         forbidden=_binomials(),
     )
-    product = _multiplies(function) if result.passed else None
-    if product is None:
+    if not result.passed or product is None:
         return result
     lines = [
         _(
@@ -365,6 +387,16 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
             lambda control_points, t: de_casteljau_reversed(control_points, t),
         ),
         Mistake(
+            _("the binomial upside down"),
+            _(
+                "you weighted P[i] by comb(i, n), the binomial upside down, as the any-degree "
+                "report's formula writes it (i on top, n - 1 below, for its n points): C(i, n) "
+                "is 0 for every i < n, so your curve is t^n P[n] alone. The weight of P[i] is "
+                "comb(n, i) t^i (1 - t)^(n - i): n choose i, the degree on top."
+            ),
+            lambda control_points, t: t ** (len(control_points) - 1) * control_points[-1],
+        ),
+        Mistake(
             _("the degree off by one"),
             _(
                 "you used n = len(control_points); the degree is one less, n = N - 1, so that "
@@ -405,6 +437,9 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
         hint=NAIVE_HINTS,
         mistakes=mistakes,
         picture=point_picture(bezier_bernstein, N_("your naive_bezier")),
-        forbidden=library_curves(),
+        forbidden={
+            **library_curves(),
+            **_binomials(_("this exercise weights the points with your own comb")),
+        },
         pass_picture=curve_pass_picture(bezier_bernstein, "naive_bezier"),
     )

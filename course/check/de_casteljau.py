@@ -12,8 +12,9 @@ an (H, W, 3) float image, in green, one pixel per t = 0, 0.001, ..., 1
 Each recognises the handouts' mistakes: the reversed step of seeds 002 and
 004, stopping one level early, x and y swapped, a loop that never reaches
 t = 1, the GAMES101 handout's float32 t, OpenCV's rounding to the nearest
-pixel, and a negative index that wraps around to the other side of the
-window. An answer that calls the library's own curve is told to write it.
+pixel, the two together (the GAMES101 report's loop), a negative index that
+wraps around to the other side of the window, and the wrong colour. An
+answer that calls the library's own curve is told to write it.
 
 Hints come in steps: a failure says where to look, the next failures say
 more; ``check.hint("bezier")`` says more at once and
@@ -120,13 +121,21 @@ def curve_cases(max_points: int) -> list[dict[str, Any]]:
 def as_point(value: Any) -> np.ndarray:
     """A student's point, whatever its container (array, tuple, list), as a flat float array."""
     try:
-        return np.asarray(value, dtype=float).reshape(-1)
+        point = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         raise AnswerError(
             _("a point is two numbers (x, y); yours is a {kind} that is not").format(
                 kind=type(value).__name__
             )
         ) from None
+    # A (1, 2) array holds the right numbers but is a list of one point, not the point.
+    if point.ndim != 1:
+        raise AnswerError(
+            _("the answer is the point (x, y), of shape (2,); yours has shape {shape}").format(
+                shape=point.shape
+            )
+        )
+    return point
 
 
 def point_picture(
@@ -274,8 +283,9 @@ def _level_mistakes() -> list[Mistake]:
         Mistake(
             _("an edge from the last point back to the first"),
             _(
-                "your level has N points: np.roll joins the last control point to the first, "
-                "but the control polygon is open; it has N - 1 edges."
+                "your level has N points: an index taken modulo N (P[(i + 1) % N]) or np.roll "
+                "joins the last control point to the first, but the control polygon is open; it "
+                "has N - 1 edges."
             ),
             lambda control_points, t: _reference_level(
                 np.vstack([control_points, control_points[:1]]), t
@@ -508,6 +518,11 @@ def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]
     def accumulated_match(mistaken: Any, given: Any) -> bool:
         return pixels_match(mistaken, given) and student is not None and _accumulates(student)
 
+    def colour_match(expected: Any, given: Any) -> bool:
+        return getattr(given, "wrong_colour", None) is not None and bool(
+            same_pixels(expected, _pixels_of(given))
+        )
+
     def copy_match(expected: Any, given: Any) -> bool:
         returned = getattr(given, "returned_pixels", None)
         return (
@@ -523,6 +538,19 @@ def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]
         "every point off the window."
     )
     return [
+        # First: with the right pixels in the wrong colour, every mistake that only compares
+        # pixels and agrees with the reference on this case (off-window points wrapped, when
+        # there are none) would match too.
+        Mistake(
+            _("the wrong colour"),
+            _(
+                "you painted the right pixels in another colour: the window holds floats from 0 "
+                "to 1 in the order red, green, blue, so green is (0, 1, 0); (0, 255, 0) is "
+                "OpenCV's 8-bit scale, and (1, 0, 0) is red."
+            ),
+            _bezier_reference,
+            matches=colour_match,
+        ),
         Mistake(
             _("a painted copy"),
             _(
@@ -577,6 +605,20 @@ def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]
             ),
             lambda control_points, window: _loop_pixels(
                 control_points, window.shape, _every_t(), "round"
+            ),
+            matches=pixels_match,
+        ),
+        Mistake(
+            _("the GAMES101 report's loop: float32 t and cv::Point rounding"),
+            _(
+                "your loop is the GAMES101 report's: a `float t` advanced by 0.001 a thousand "
+                "times, which drifts, and each point rounded to the nearest pixel as cv::Point "
+                "does, half a pixel off. Compute each t from a whole count (t = k / 1000, in "
+                "Python's float) and paint (int(x), int(y)), the pixel whose square holds the "
+                "point."
+            ),
+            lambda control_points, window: _loop_pixels(
+                control_points, window.shape, float32_loop, "round"
             ),
             matches=pixels_match,
         ),

@@ -7,7 +7,8 @@ harmonic inside, each pixel the mean of its four neighbours, until the
 residual is small (:func:`jacobi_sweep`). Failures draw the difference and
 recognise the sign flipped, x and y swapped, the sweep done in place (the
 lab's loop: Gauss-Seidel), a stop one sweep late, the lab's fixed count of
-sweeps and a stop on the change between sweeps. A function that writes into
+sweeps, a stop on the change between sweeps, on a quarter of the residual, on
+its mean or on its first channel alone. A function that writes into
 its inputs (``g = background[...]; g -= foreground`` changes the background)
 fails, however right its values. A pass shows the student's ``g`` beside the
 expected one.
@@ -192,14 +193,23 @@ def _sweep_cases() -> list[dict[str, Any]]:
         g[0], g[-1], g[:, 0], g[:, -1] = edge[0], edge[-1], edge[:, 0], edge[:, -1]
         return g
 
-    return [
-        {"g": ring(4, 5), "tolerance": 1e-3},
+    first = ring(4, 5)
+    cases = [
+        # 1e-4, where the residual's max (16 sweeps), its mean (15), a stop on the change (14)
+        # and a quarter of the residual (13) all stop at different sweeps: each is named.
+        {"g": first, "tolerance": 1e-4},
         {"g": ring(7, 12), "tolerance": 1e-6},
         {"g": ring(6, 9, 3), "tolerance": 1e-4},
         {"g": np.zeros((5, 5)), "tolerance": 1e-6},  # already harmonic: no sweep at all
         # The residual is exactly the tolerance, 4: not below it, so one sweep (to zeros).
         {"g": np.array([[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0]]), "tolerance": 4.0},
     ]
+    # RGB whose red ring is 16 times fainter: red converges first, so a residual of channel 0
+    # alone stops early (multiples of 1/256, still exact).
+    rgb = ring(5, 6, 3)
+    rgb[..., 0] /= 16
+    cases.append({"g": rgb, "tolerance": 1e-4})
+    return cases
 
 
 def _jacobi_until(g: Any, tolerance: float, late: int = 0) -> tuple[np.ndarray, int]:
@@ -258,6 +268,10 @@ def _sweep_difference(expected: Any, given: Any) -> str:
     parts = [
         _("sweeps: expected {expected}, given {given}").format(expected=want_sweeps, given=sweeps)
     ]
+    if g.shape == want_g.shape and np.allclose(g, want_g, atol=1e-12, rtol=0.0):
+        return _(
+            "g is right; only the number of sweeps differs (expected {expected}, given {given})"
+        ).format(expected=want_sweeps, given=sweeps)
     if g.shape != want_g.shape:
         parts.append(
             _("g: expected shape {expected}, given {given}").format(
@@ -314,6 +328,26 @@ def _until_change(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
         u = new
 
 
+def _until_residual_measure(
+    g: Any, tolerance: float, measure: Callable[[np.ndarray], float]
+) -> tuple[np.ndarray, int]:
+    """Jacobi sweeps until ``measure(|residual|)`` (over the inside, every channel) is below
+    ``tolerance``: the residual's mean, a quarter of its max, or its first channel's."""
+    u = np.array(g, dtype=float)
+    count = 0
+    while True:
+        neighbours = u[:-2, 1:-1] + u[2:, 1:-1] + u[1:-1, :-2] + u[1:-1, 2:]
+        if neighbours.size == 0 or measure(np.abs(neighbours - 4 * u[1:-1, 1:-1])) < tolerance:
+            return u, count
+        u = u.copy()
+        u[1:-1, 1:-1] = neighbours / 4
+        count += 1
+
+
+def _first_channel(size: np.ndarray) -> float:
+    return float((size[..., 0] if size.ndim == 3 else size).max())
+
+
 def _fixed_count(expected: Any, given: Any) -> bool:
     """A sweep count far past what the tolerance needs: the lab's fixed loop of 8000."""
     try:
@@ -365,6 +399,47 @@ def _sweep_mistakes() -> tuple[Mistake, ...]:
                 "g| over the inside, before each sweep."
             ),
             _until_change,
+        ),
+        Mistake(
+            _("the mean of the residual instead of its largest value"),
+            _(
+                "you compared the mean of |up + down + left + right - 4 g| over the inside with "
+                "the tolerance: the exercise compares its largest value, so the loop goes on "
+                "while any one pixel is still far from the mean of its neighbours."
+            ),
+            lambda g, tolerance: _until_residual_measure(g, tolerance, np.mean),
+        ),
+        # Before the quarter: on the residual equal to the tolerance (case 5) both stop at once.
+        Mistake(
+            _("a stop at a residual equal to the tolerance"),
+            _(
+                "your loop stops when the residual is at or below the tolerance (<=): it stops "
+                "only below it (<), so a residual equal to the tolerance still gets a sweep."
+            ),
+            lambda g, tolerance: _until_residual_measure(
+                g, tolerance, lambda size: float(np.nextafter(size.max(), -np.inf))
+            ),
+        ),
+        Mistake(
+            _("a quarter of the residual"),
+            _(
+                "you compared the residual divided by 4 (the mean of the four neighbours minus "
+                "g, which is the change the next sweep makes) with the tolerance: your loop "
+                "stops while the residual is still up to four times the tolerance. Compare the "
+                "residual itself, max |up + down + left + right - 4 g|."
+            ),
+            lambda g, tolerance: _until_residual_measure(
+                g, tolerance, lambda size: float(size.max()) / 4
+            ),
+        ),
+        Mistake(
+            _("the residual of the first channel only"),
+            _(
+                "your residual looks at channel 0 only: on an RGB g the loop goes on until the "
+                "residual of every channel is below the tolerance, the largest value over the "
+                "inside and all three channels."
+            ),
+            lambda g, tolerance: _until_residual_measure(g, tolerance, _first_channel),
         ),
     )
 

@@ -12,12 +12,15 @@ the whole file takes about 5 s.
 from __future__ import annotations
 
 import re
+import sys
 
 import numpy as np
 import pytest
 
 from course import filters
+from course.bezier import de_casteljau_recursive
 from course.i18n import current_language, language
+from course.lessons import l01_de_casteljau as l01
 from course.lessons import l03_lines_and_triangles as l03
 from course.lessons import l05_antialiasing as l05
 from course.lessons import l06_dithering as l06
@@ -52,7 +55,50 @@ def sobel_x_row(sign: int) -> np.ndarray:
     return (1 + 2 + 1) * (right - left)
 
 
+def recursion_error() -> RecursionError:
+    """Lesson 01's RecursionError: a degree-1999 curve asks for 2000 nested calls."""
+    try:
+        de_casteljau_recursive(np.zeros((2000, 2)), 0.5)
+    except RecursionError as error:
+        return error
+    raise AssertionError("de_casteljau_recursive accepted 2000 nested calls")
+
+
 CASES = [
+    pytest.param(
+        l01.print_yellow_check,
+        ("the GAMES101 report", 0.396, "green only"),
+        "    the GAMES101 report: 39.6% yellow, B(1)'s pixel green only",
+        id="01-yellow",
+    ),
+    pytest.param(
+        l01.print_yellow_check,
+        ("textbook step, float t", 0.99, "dark"),
+        " textbook step, float t: 99.0% yellow, B(1)'s pixel dark",
+        id="01-yellow-textbook",
+    ),
+    pytest.param(
+        l01.print_iterative_against,
+        (True, True),
+        "iterative == recursive: True\niterative == last level: True",
+        id="01-iterative",
+    ),
+    pytest.param(
+        l01.print_recursion_error,
+        (recursion_error(),),
+        "de_casteljau_recursive: a degree-1999 curve needs 2000 nested calls.\n"
+        f"Python's recursion limit is {sys.getrecursionlimit()}. Use de_casteljau (iterative).",
+        id="01-recursion",
+    ),
+    pytest.param(
+        l01.print_step_table,
+        # A step of 1/100 samples t = 0, 0.01, ..., 1: 101 points, 100 gaps between them.
+        ([(0.01, round(1 / 0.01) + 1, 101, 100, 1.0), (0.0001, 10000, 1324, 0, 7.55)],),
+        "    step  points  pixels  gaps  overdraw\n"
+        "    0.01     101     101   100      1.00\n"
+        "  0.0001   10000    1324     0      7.55",
+        id="01-steps",
+    ),
     pytest.param(
         l03.print_lines_agree,
         (16**4, 16**4),
@@ -246,6 +292,31 @@ def test_a_lesson_line_is_the_notebooks_in_english_and_chinese_in_chinese(
     # The numbers stay, perhaps in another order; only the words change.
     number = r"\d+(?:\.\d+)?"
     assert sorted(re.findall(number, chinese)) == sorted(re.findall(number, english))
+
+
+def test_the_step_table_heading_lines_up_in_chinese(capsys):
+    rows = [(0.0005, 2000, 1198, 1, 1.67)]
+    l01.print_step_table(rows)
+    english = capsys.readouterr().out.splitlines()
+    with language("zh-CN"):
+        l01.print_step_table(rows)
+    chinese = capsys.readouterr().out.splitlines()
+    assert chinese[1:] == english[1:] and CHINESE.search(chinese[0]), chinese
+
+    def column_ends(line):
+        return [display_width(line[: found.end()]) for found in re.finditer(r"\S+", line)]
+
+    # Each heading ends where its column of right-aligned numbers ends.
+    assert column_ends(chinese[0]) == column_ends(english[0]) == column_ends(english[1])
+
+
+def test_the_yellow_check_names_line_up_in_chinese(capsys):
+    with language("zh-CN"):
+        for name in l01.LOOP_NAMES:
+            l01.print_yellow_check(name, 0.5, "dark")
+    lines = capsys.readouterr().out.splitlines()
+    colons = {display_width(line.split("：")[0]) for line in lines}
+    assert colons == {23} and all(CHINESE.search(line) for line in lines), lines
 
 
 def test_a_two_line_title_is_one_line_in_either_language():

@@ -11,6 +11,7 @@ the whole file takes about 5 s.
 
 from __future__ import annotations
 
+import math
 import re
 import sys
 
@@ -21,6 +22,7 @@ from course import filters
 from course.bezier import de_casteljau_recursive
 from course.i18n import current_language, language
 from course.lessons import l01_de_casteljau as l01
+from course.lessons import l02_bernstein as l02
 from course.lessons import l03_lines_and_triangles as l03
 from course.lessons import l05_antialiasing as l05
 from course.lessons import l06_dithering as l06
@@ -64,6 +66,15 @@ def recursion_error() -> RecursionError:
     raise AssertionError("de_casteljau_recursive accepted 2000 nested calls")
 
 
+def float_overflow(m: int) -> OverflowError:
+    """The error Python raises converting C(m, m // 2) to a float."""
+    try:
+        float(math.comb(m, m // 2))
+    except OverflowError as error:
+        return error
+    raise AssertionError(f"C({m}, {m // 2}) fits a float")
+
+
 CASES = [
     pytest.param(
         l01.print_yellow_check,
@@ -98,6 +109,80 @@ CASES = [
         "    0.01     101     101   100      1.00\n"
         "  0.0001   10000    1324     0      7.55",
         id="01-steps",
+    ),
+    pytest.param(
+        l02.print_basis_properties,
+        (3, 2e-16, 0.0, True),
+        "degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: True",
+        id="02-basis",
+    ),
+    pytest.param(
+        l02.print_comb_calls,
+        (11, 419, math.comb(11, 5)),
+        "comb(11, 5): 419 calls for C(11, 5) = 462",
+        id="02-comb-calls",
+    ),
+    pytest.param(
+        l02.print_comb_calls_against_binomial,
+        (20, 184755, math.comb(20, 10)),
+        "comb(20, 10): 184,755 calls, C(20, 10) - 1 = 184,755",
+        id="02-comb-binomial",
+    ),
+    pytest.param(
+        l02.print_calls_growth,
+        (20, 24, 14.6),
+        "from m = 20 to 24: x14.6 (2^4 = 16)",
+        id="02-growth",
+    ),
+    pytest.param(
+        l02.print_calls_per_curve,
+        (20, 1001, 1049605557),
+        "naive_bezier at degree 20, 1001 points: 1,049,605,557 calls of comb",
+        id="02-per-curve",
+    ),
+    pytest.param(
+        l02.print_int32_binomial,
+        # 32 bits keep C(34, 17) modulo 2^32, read as signed: 2,333,606,220 - 2^32
+        (34, math.comb(34, 17) - 2**32, math.comb(34, 17)),
+        "C(34, 17) in 32 bits: -1,961,361,076   exact:  2,333,606,220",
+        id="02-int32",
+    ),
+    pytest.param(
+        l02.print_horner_gap,
+        (20, 3e-14),
+        "degree 20: Horner against the handout's sum: below 1e-10 px",
+        id="02-horner",
+    ),
+    pytest.param(
+        l02.print_comb_timing,
+        # 0.645 ms over 3431 calls: 188 ns a call
+        (14, 3431, 0.000645),
+        "m = 14:    3,431 calls,     0.6 ms,   188 ns a call",
+        id="02-timing",
+    ),
+    pytest.param(
+        l02.print_binomial_as_float,
+        (1029, float(math.comb(1029, 514))),
+        "C(1029, 514) as a float: 1.430e+308",
+        id="02-float",
+    ),
+    pytest.param(
+        l02.print_binomial_as_float,
+        (1030, float_overflow(1030)),
+        "C(1030, 515) as a float: int too large to convert to float",
+        id="02-overflow",
+    ),
+    pytest.param(
+        l02.print_de_casteljau_error,
+        (400, 4e-15),
+        "degree 400: de Casteljau's worst error below 1e-12 of the polygon's size",
+        id="02-de-casteljau",
+    ),
+    pytest.param(
+        l02.print_middle_peak,
+        (10, math.comb(10, 5) / 2**10),
+        "degree 10: the middle bump's peak B(n/2, n)(1/2) = 0.246",
+        id="02-peak",
     ),
     pytest.param(
         l03.print_lines_agree,

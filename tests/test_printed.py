@@ -24,6 +24,7 @@ from course.i18n import current_language, language
 from course.lessons import l01_de_casteljau as l01
 from course.lessons import l02_bernstein as l02
 from course.lessons import l03_lines_and_triangles as l03
+from course.lessons import l04_supersampling as l04
 from course.lessons import l05_antialiasing as l05
 from course.lessons import l06_dithering as l06
 from course.lessons import l07_filtering as l07
@@ -183,6 +184,43 @@ CASES = [
         (10, math.comb(10, 5) / 2**10),
         "degree 10: the middle bump's peak B(n/2, n)(1/2) = 0.246",
         id="02-peak",
+    ),
+    pytest.param(
+        l04.print_largest_difference,
+        (4e-16,),
+        "largest difference: below 1e-12",
+        id="04-difference",
+    ),
+    pytest.param(
+        l04.print_supersampled_row,
+        # At rate 3 the samples are the stripes' pixels: each output pixel their box average.
+        (3, np.array([[np.mean([0.0, 1.0, 0.0]), np.mean([1.0, 0.0, 1.0])]])),
+        "rate  3: [[0.3333, 0.6667]]",
+        id="04-stripes",
+    ),
+    pytest.param(
+        l04.print_errors_by_rate,
+        ("half as fine", [0.2233, 0.0208, 0.007]),
+        "half as fine: 0.2233 0.0208 0.0070",
+        id="04-errors",
+    ),
+    pytest.param(
+        l04.print_measured_shift,
+        (1, -0.436, (320 / 2500 - 1 / 1) / 2),
+        "rate  1: measured -0.4360, (1/s - 1/rate)/2 = -0.4360",
+        id="04-shift",
+    ),
+    pytest.param(
+        l04.print_centred_against_report,
+        (4, 0.0043, 0.0275),
+        "rate 4: RMS centred 0.0043, the report's 0.0275",
+        id="04-centred",
+    ),
+    pytest.param(
+        l04.print_rate_against_rate,
+        (1, 32, 0.2985),
+        "zone plate, rate 1 against rate 32: RMS 0.2985",
+        id="04-rates",
     ),
     pytest.param(
         l03.print_lines_agree,
@@ -402,6 +440,15 @@ def test_the_yellow_check_names_line_up_in_chinese(capsys):
     lines = capsys.readouterr().out.splitlines()
     colons = {display_width(line.split("：")[0]) for line in lines}
     assert colons == {23} and all(CHINESE.search(line) for line in lines), lines
+
+
+def test_the_zone_plate_names_line_up_in_chinese(capsys):
+    with language("zh-CN"):
+        for name in l04.ZONE_PLATE_NAMES:
+            l04.print_errors_by_rate(name, [0.1, 0.2])
+    lines = capsys.readouterr().out.splitlines()
+    colons = {display_width(line.split("：")[0]) for line in lines}
+    assert colons == {12} and all(CHINESE.search(line) for line in lines), lines
 
 
 def test_a_two_line_title_is_one_line_in_either_language():

@@ -11,14 +11,20 @@ the whole file takes about 5 s.
 
 from __future__ import annotations
 
+import math
 import re
+import sys
 
 import numpy as np
 import pytest
 
 from course import filters
+from course.bezier import de_casteljau_recursive
 from course.i18n import current_language, language
+from course.lessons import l01_de_casteljau as l01
+from course.lessons import l02_bernstein as l02
 from course.lessons import l03_lines_and_triangles as l03
+from course.lessons import l04_supersampling as l04
 from course.lessons import l05_antialiasing as l05
 from course.lessons import l06_dithering as l06
 from course.lessons import l07_filtering as l07
@@ -52,7 +58,170 @@ def sobel_x_row(sign: int) -> np.ndarray:
     return (1 + 2 + 1) * (right - left)
 
 
+def recursion_error() -> RecursionError:
+    """Lesson 01's RecursionError: a degree-1999 curve asks for 2000 nested calls."""
+    try:
+        de_casteljau_recursive(np.zeros((2000, 2)), 0.5)
+    except RecursionError as error:
+        return error
+    raise AssertionError("de_casteljau_recursive accepted 2000 nested calls")
+
+
+def float_overflow(m: int) -> OverflowError:
+    """The error Python raises converting C(m, m // 2) to a float."""
+    try:
+        float(math.comb(m, m // 2))
+    except OverflowError as error:
+        return error
+    raise AssertionError(f"C({m}, {m // 2}) fits a float")
+
+
 CASES = [
+    pytest.param(
+        l01.print_yellow_check,
+        ("the GAMES101 report", 0.396, "green only"),
+        "    the GAMES101 report: 39.6% yellow, B(1)'s pixel green only",
+        id="01-yellow",
+    ),
+    pytest.param(
+        l01.print_yellow_check,
+        ("textbook step, float t", 0.99, "dark"),
+        " textbook step, float t: 99.0% yellow, B(1)'s pixel dark",
+        id="01-yellow-textbook",
+    ),
+    pytest.param(
+        l01.print_iterative_against,
+        (True, True),
+        "iterative == recursive: True\niterative == last level: True",
+        id="01-iterative",
+    ),
+    pytest.param(
+        l01.print_recursion_error,
+        (recursion_error(),),
+        "de_casteljau_recursive: a degree-1999 curve needs 2000 nested calls.\n"
+        f"Python's recursion limit is {sys.getrecursionlimit()}. Use de_casteljau (iterative).",
+        id="01-recursion",
+    ),
+    pytest.param(
+        l01.print_step_table,
+        # A step of 1/100 samples t = 0, 0.01, ..., 1: 101 points, 100 gaps between them.
+        ([(0.01, round(1 / 0.01) + 1, 101, 100, 1.0), (0.0001, 10000, 1324, 0, 7.55)],),
+        "    step  points  pixels  gaps  overdraw\n"
+        "    0.01     101     101   100      1.00\n"
+        "  0.0001   10000    1324     0      7.55",
+        id="01-steps",
+    ),
+    pytest.param(
+        l02.print_basis_properties,
+        (3, 2e-16, 0.0, True),
+        "degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: True",
+        id="02-basis",
+    ),
+    pytest.param(
+        l02.print_comb_calls,
+        (11, 419, math.comb(11, 5)),
+        "comb(11, 5): 419 calls for C(11, 5) = 462",
+        id="02-comb-calls",
+    ),
+    pytest.param(
+        l02.print_comb_calls_against_binomial,
+        (20, 184755, math.comb(20, 10)),
+        "comb(20, 10): 184,755 calls, C(20, 10) - 1 = 184,755",
+        id="02-comb-binomial",
+    ),
+    pytest.param(
+        l02.print_calls_growth,
+        (20, 24, 14.6),
+        "from m = 20 to 24: x14.6 (2^4 = 16)",
+        id="02-growth",
+    ),
+    pytest.param(
+        l02.print_calls_per_curve,
+        (20, 1001, 1049605557),
+        "naive_bezier at degree 20, 1001 points: 1,049,605,557 calls of comb",
+        id="02-per-curve",
+    ),
+    pytest.param(
+        l02.print_int32_binomial,
+        # 32 bits keep C(34, 17) modulo 2^32, read as signed: 2,333,606,220 - 2^32
+        (34, math.comb(34, 17) - 2**32, math.comb(34, 17)),
+        "C(34, 17) in 32 bits: -1,961,361,076   exact:  2,333,606,220",
+        id="02-int32",
+    ),
+    pytest.param(
+        l02.print_horner_gap,
+        (20, 3e-14),
+        "degree 20: Horner against the handout's sum: below 1e-10 px",
+        id="02-horner",
+    ),
+    pytest.param(
+        l02.print_comb_timing,
+        # 0.645 ms over 3431 calls: 188 ns a call
+        (14, 3431, 0.000645),
+        "m = 14:    3,431 calls,     0.6 ms,   188 ns a call",
+        id="02-timing",
+    ),
+    pytest.param(
+        l02.print_binomial_as_float,
+        (1029, float(math.comb(1029, 514))),
+        "C(1029, 514) as a float: 1.430e+308",
+        id="02-float",
+    ),
+    pytest.param(
+        l02.print_binomial_as_float,
+        (1030, float_overflow(1030)),
+        "C(1030, 515) as a float: int too large to convert to float",
+        id="02-overflow",
+    ),
+    pytest.param(
+        l02.print_de_casteljau_error,
+        (400, 4e-15),
+        "degree 400: de Casteljau's worst error below 1e-12 of the polygon's size",
+        id="02-de-casteljau",
+    ),
+    pytest.param(
+        l02.print_middle_peak,
+        (10, math.comb(10, 5) / 2**10),
+        "degree 10: the middle bump's peak B(n/2, n)(1/2) = 0.246",
+        id="02-peak",
+    ),
+    pytest.param(
+        l04.print_largest_difference,
+        (4e-16,),
+        "largest difference: below 1e-12",
+        id="04-difference",
+    ),
+    pytest.param(
+        l04.print_supersampled_row,
+        # At rate 3 the samples are the stripes' pixels: each output pixel their box average.
+        (3, np.array([[np.mean([0.0, 1.0, 0.0]), np.mean([1.0, 0.0, 1.0])]])),
+        "rate  3: [[0.3333, 0.6667]]",
+        id="04-stripes",
+    ),
+    pytest.param(
+        l04.print_errors_by_rate,
+        ("half as fine", [0.2233, 0.0208, 0.007]),
+        "half as fine: 0.2233 0.0208 0.0070",
+        id="04-errors",
+    ),
+    pytest.param(
+        l04.print_measured_shift,
+        (1, -0.436, (320 / 2500 - 1 / 1) / 2),
+        "rate  1: measured -0.4360, (1/s - 1/rate)/2 = -0.4360",
+        id="04-shift",
+    ),
+    pytest.param(
+        l04.print_centred_against_report,
+        (4, 0.0043, 0.0275),
+        "rate 4: RMS centred 0.0043, the report's 0.0275",
+        id="04-centred",
+    ),
+    pytest.param(
+        l04.print_rate_against_rate,
+        (1, 32, 0.2985),
+        "zone plate, rate 1 against rate 32: RMS 0.2985",
+        id="04-rates",
+    ),
     pytest.param(
         l03.print_lines_agree,
         (16**4, 16**4),
@@ -246,6 +415,40 @@ def test_a_lesson_line_is_the_notebooks_in_english_and_chinese_in_chinese(
     # The numbers stay, perhaps in another order; only the words change.
     number = r"\d+(?:\.\d+)?"
     assert sorted(re.findall(number, chinese)) == sorted(re.findall(number, english))
+
+
+def test_the_step_table_heading_lines_up_in_chinese(capsys):
+    rows = [(0.0005, 2000, 1198, 1, 1.67)]
+    l01.print_step_table(rows)
+    english = capsys.readouterr().out.splitlines()
+    with language("zh-CN"):
+        l01.print_step_table(rows)
+    chinese = capsys.readouterr().out.splitlines()
+    assert chinese[1:] == english[1:] and CHINESE.search(chinese[0]), chinese
+
+    def column_ends(line):
+        return [display_width(line[: found.end()]) for found in re.finditer(r"\S+", line)]
+
+    # Each heading ends where its column of right-aligned numbers ends.
+    assert column_ends(chinese[0]) == column_ends(english[0]) == column_ends(english[1])
+
+
+def test_the_yellow_check_names_line_up_in_chinese(capsys):
+    with language("zh-CN"):
+        for name in l01.LOOP_NAMES:
+            l01.print_yellow_check(name, 0.5, "dark")
+    lines = capsys.readouterr().out.splitlines()
+    colons = {display_width(line.split("：")[0]) for line in lines}
+    assert colons == {23} and all(CHINESE.search(line) for line in lines), lines
+
+
+def test_the_zone_plate_names_line_up_in_chinese(capsys):
+    with language("zh-CN"):
+        for name in l04.ZONE_PLATE_NAMES:
+            l04.print_errors_by_rate(name, [0.1, 0.2])
+    lines = capsys.readouterr().out.splitlines()
+    colons = {display_width(line.split("：")[0]) for line in lines}
+    assert colons == {12} and all(CHINESE.search(line) for line in lines), lines
 
 
 def test_a_two_line_title_is_one_line_in_either_language():

@@ -1,4 +1,4 @@
-"""Lesson 01, de Casteljau's algorithm: its registry entry, pictures and landmarks.
+"""Lesson 01, de Casteljau's algorithm: its registry entry, pictures, landmarks and printed lines.
 
 A lesson's registry entry: the classroom tools call these with the registry's
 own arguments, never with a student's input, so this module checks none
@@ -8,16 +8,121 @@ build validate their own input.
 
 from __future__ import annotations
 
+import re
+
 from course.bezier import de_casteljau
 from course.classroom.pictures import CRIMSON, app_picture, landmark_at, still_picture
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_
+from course.i18n import N_, _
 from course.images import EXAMPLE_POINTS, SEED_000_CUBIC
+from course.lessons.printed import padded
 from course.widgets import de_casteljau_figures as figures
 from course.widgets.base import SliderApp, parse_points
 from course.widgets.de_casteljau import DeCasteljauApp
+from course.widgets.picture import Still
 
 UNCHECKED = True  # see the module docstring
+
+#: The caption of the lesson's opening picture.
+OPENING_CAPTION = N_("a cubic's construction at t = 0.5")
+#: The loops the yellow check runs, as ``HandoutLoop.name`` names them.
+LOOP_NAMES = (
+    N_("the GAMES101 report"),
+    N_("the any-degree report"),
+    N_("the VS2022 report"),
+    N_("the lab 6 report"),
+    N_("textbook step, float t"),
+)
+#: What the pixel holding B(1) shows, indexed by ``red + 2 * green``.
+END_PIXEL_STATES = (N_("dark"), N_("red only"), N_("green only"), N_("yellow"))
+
+
+def opening_still() -> Still:
+    """The lesson's opening picture: :class:`DeCasteljauApp` at t = 0.5, captioned."""
+    return DeCasteljauApp(t=0.5).still(_(OPENING_CAPTION))
+
+
+def print_yellow_check(name: str, fraction: float, state: str) -> None:
+    """Print one loop's yellow check: the share of yellow pixels and what B(1)'s pixel shows.
+
+    ``name`` is one of :data:`LOOP_NAMES` and ``state`` one of :data:`END_PIXEL_STATES`,
+    both shown in the current language.
+
+    Examples
+    --------
+    >>> print_yellow_check("the VS2022 report", 1.0, "dark")
+          the VS2022 report: 100.0% yellow, B(1)'s pixel dark
+    """
+    print(
+        _("{name}: {fraction:.1%} yellow, B(1)'s pixel {state}").format(
+            name=padded(_(name), 23, ">"), fraction=fraction, state=_(state)
+        )
+    )
+
+
+def print_iterative_against(recursive: bool, last_level: bool) -> None:
+    """Print whether ``de_casteljau`` equals the recursive form and the levels' last point.
+
+    Examples
+    --------
+    >>> print_iterative_against(True, False)
+    iterative == recursive: True
+    iterative == last level: False
+    """
+    print(_("iterative == recursive: {equal}").format(equal=recursive))
+    print(_("iterative == last level: {equal}").format(equal=last_level))
+
+
+def print_recursion_error(error: RecursionError) -> None:
+    """Print what ``de_casteljau_recursive``'s ``RecursionError`` says: degree, calls, limit.
+
+    The message also names the stack's depth, which varies with how the code is run,
+    so that part is not printed. A message of another form is printed whole.
+
+    Examples
+    --------
+    >>> print_recursion_error(RecursionError(
+    ...     "de_casteljau_recursive: a degree-1999 curve needs 2000 nested calls, and the "
+    ...     "stack is already 40 deep; Python's recursion limit is 1000. Use de_casteljau "
+    ...     "(iterative), or raise the limit with sys.setrecursionlimit(2140)."))
+    de_casteljau_recursive: a degree-1999 curve needs 2000 nested calls.
+    Python's recursion limit is 1000. Use de_casteljau (iterative).
+    """
+    message = str(error)
+    found = re.search(
+        r"degree-(\d+) curve needs (\d+) nested calls.*recursion limit is (\d+)", message
+    )
+    if found is None:
+        print(message)
+        return
+    degree, calls, limit = (int(number) for number in found.groups())
+    print(
+        _("de_casteljau_recursive: a degree-{degree} curve needs {calls} nested calls.").format(
+            degree=degree, calls=calls
+        )
+    )
+    print(
+        _("Python's recursion limit is {limit}. Use de_casteljau (iterative).").format(limit=limit)
+    )
+
+
+def print_step_table(rows: list[tuple[float, int, int, int, float]]) -> None:
+    """Print the step table: per t step, the points, pixels, gaps and overdraw of the loop.
+
+    Each row is ``(step, points, pixels, gaps, overdraw)``, as
+    :func:`course.bezier_handouts.step_report` counts them.
+
+    Examples
+    --------
+    >>> print_step_table([(0.01, 101, 101, 100, 1.0)])
+        step  points  pixels  gaps  overdraw
+        0.01     101     101   100      1.00
+    """
+    # One message for the whole heading: "points" here are samples, not control points,
+    # and a translation lines its words up with the columns itself.
+    print(padded(_("step  points  pixels  gaps  overdraw"), 40, ">"))
+    for step, points, pixels, gaps, overdraw in rows:
+        print(f"{step:>8} {points:>7} {pixels:>7} {gaps:>5} {overdraw:>9.2f}")
 
 
 def de_casteljau_landmarks(app: SliderApp) -> list[Landmark]:

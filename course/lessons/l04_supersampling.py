@@ -1,4 +1,4 @@
-"""Lesson 04, sampling and supersampling: its registry entry, pictures and landmarks.
+"""Lesson 04, sampling and supersampling: its registry entry, pictures, landmarks and printed lines.
 
 A lesson's registry entry: the classroom tools call these with the registry's
 own arguments, never with a student's input, so this module checks none
@@ -24,13 +24,103 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_
+from course.i18n import N_, _
+from course.lessons.printed import padded
 from course.resample import supersample, supersample_without_offset
 from course.widgets import supersampling_figures as figures
 from course.widgets.base import SliderApp
+from course.widgets.picture import rounding_level
 from course.widgets.supersampling import SupersampleApp
 
 UNCHECKED = True  # see the module docstring
+
+#: The zone plates whose error the lesson prints rate by rate, as the notebook names them.
+ZONE_PLATE_NAMES = (N_("the lab's"), N_("half as fine"))
+
+
+def print_largest_difference(difference: float) -> None:
+    """Print the largest difference between two forms of a computation, as a rounding level.
+
+    Examples
+    --------
+    >>> print_largest_difference(4e-16)
+    largest difference: below 1e-12
+    """
+    print(_("largest difference: {difference}").format(difference=rounding_level(difference)))
+
+
+def print_supersampled_row(rate: int, image: np.ndarray) -> None:
+    """Print an image supersampled at ``rate``, its values rounded to 4 decimals, as lists.
+
+    Examples
+    --------
+    >>> print_supersampled_row(3, np.array([[1 / 3, 2 / 3]]))
+    rate  3: [[0.3333, 0.6667]]
+    """
+    values = np.asarray(image).round(4).tolist()
+    print(_("rate {rate:>2}: {values}").format(rate=rate, values=values))
+
+
+def print_errors_by_rate(name: str, errors: list[float]) -> None:
+    """Print a zone plate's error against its exact downsample at each rate, 4 decimals.
+
+    ``name`` is one of :data:`ZONE_PLATE_NAMES`, shown in the current language.
+
+    Examples
+    --------
+    >>> print_errors_by_rate("the lab's", [0.29981, 0.1015])
+       the lab's: 0.2998 0.1015
+    """
+    print(
+        _("{name}: {errors}").format(
+            name=padded(_(name), 12, ">"), errors=" ".join(f"{error:.4f}" for error in errors)
+        )
+    )
+
+
+def print_measured_shift(rate: int, shift: float, predicted: float) -> None:
+    """Print the picture's shift measured at ``rate`` beside the formula's prediction.
+
+    Examples
+    --------
+    >>> print_measured_shift(8, 0.0015, 0.0015)
+    rate  8: measured +0.0015, (1/s - 1/rate)/2 = +0.0015
+    """
+    print(
+        _("rate {rate:>2}: measured {shift:+.4f}, (1/s - 1/rate)/2 = {predicted:+.4f}").format(
+            rate=rate, shift=shift, predicted=predicted
+        )
+    )
+
+
+def print_centred_against_report(rate: int, centred: float, shifted: float) -> None:
+    """Print the RMS error of centred supersampling at ``rate`` and of the report's shifted one.
+
+    Examples
+    --------
+    >>> print_centred_against_report(4, 0.0043, 0.0275)
+    rate 4: RMS centred 0.0043, the report's 0.0275
+    """
+    print(
+        _("rate {rate}: RMS centred {centred:.4f}, the report's {shifted:.4f}").format(
+            rate=rate, centred=centred, shifted=shifted
+        )
+    )
+
+
+def print_rate_against_rate(low: int, high: int, rms: float) -> None:
+    """Print the RMS difference of the zone plate supersampled at ``low`` and at ``high``.
+
+    Examples
+    --------
+    >>> print_rate_against_rate(1, 32, 0.29853)
+    zone plate, rate 1 against rate 32: RMS 0.2985
+    """
+    print(
+        _("zone plate, rate {low} against rate {high}: RMS {rms:.4f}").format(
+            low=low, high=high, rms=rms
+        )
+    )
 
 
 @functools.cache

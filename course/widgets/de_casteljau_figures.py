@@ -291,7 +291,7 @@ def end_of_curve_figure(
     for axes, (_window, extent, _title) in zip(axes_list, windows, strict=True):
         _pixel_grid(axes, extent)
         # B(1) often sits on a pixel corner: a "+" there would lie along the outline's edges.
-        axes.plot(*end, "x", color="black", markersize=12, markeredgewidth=2, zorder=6)
+        axes.plot(*end, "x", color="black", markersize=12, markeredgewidth=2, zorder=4)
         # The outline goes over the painted square and the cross: dashes on a white line,
         # so that they read on green, on white and across the cross alike.
         for colour, dashes, width in (("white", "-", 3.5), (VERMILLION, (0, (3, 2)), 2.0)):

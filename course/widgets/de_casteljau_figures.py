@@ -399,10 +399,12 @@ def _yellow_along(curve: np.ndarray, yellow: np.ndarray, odd: np.ndarray) -> np.
 def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     """The GAMES101 check for one handout loop: where the red and green curves part.
 
-    Left, the whole curve with every pixel that is not yellow marked (circled
-    when there are a few, a dot each when there are many) and the zoomed
-    window boxed; right, the pixels around the first of them at a whole
-    zoom, on the pixel grid. Red-only and green-only pixels also carry a
+    Left, the whole curve coloured by the share of its painted pixels that
+    are yellow, stretch by stretch (:func:`_yellow_along`; at 700 pixels in
+    192, a mark per pixel would merge into one band), the pixels that are not
+    yellow circled when there are at most 40, and the zoomed window boxed;
+    right, the pixels around the first of them at a whole zoom, on the pixel
+    grid. Red-only and green-only pixels also carry a
     mark of their own (a ring, a cross), so they are told apart without
     colour.
 

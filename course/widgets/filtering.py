@@ -149,6 +149,24 @@ def blurred(image: np.ndarray, border: str) -> np.ndarray:
 FRAME_SHARE = 0.95
 
 
+def _frame_depth(image: np.ndarray, reference: np.ndarray) -> int:
+    """How many columns in from the right edge have a mean below FRAME_SHARE of reference's.
+
+    The rule of :func:`course.widgets.filtering_figures.frame_depth`, without its division:
+    a black column of ``reference`` (a black image) counts as not darkened, with no warning.
+
+    Examples
+    --------
+    >>> _frame_depth(np.array([[1, 1, 1, 1, 0.9, 0.5]] * 2), np.ones((2, 6)))
+    2
+    >>> _frame_depth(np.zeros((2, 3)), np.zeros((2, 3)))
+    0
+    """
+    axes = (0, 2) if image.ndim == 3 else 0
+    dark = np.mean(image, axis=axes) < FRAME_SHARE * np.mean(reference, axis=axes)
+    return int(np.argmin(np.append(dark[::-1], False)))
+
+
 class RepeatedBlurApp(SliderApp):
     """Blur n times with each border rule; the corner crop shows the frame.
 
@@ -218,9 +236,6 @@ class RepeatedBlurApp(SliderApp):
         return self.results
 
     def update(self) -> None:
-        # Imported here: filtering_figures imports this module.
-        from course.widgets.filtering_figures import frame_depth
-
         repeats = int(self.value("repeats"))
         for border, result in self.blurred(repeats).items():
             self.wholes[border].set_data(result)
@@ -235,7 +250,7 @@ class RepeatedBlurApp(SliderApp):
             if border == "replicate":
                 frame = _("the frames' reference")
             else:
-                depth = frame_depth(result, self.results["replicate"], FRAME_SHARE)
+                depth = _frame_depth(result, self.results["replicate"])
                 frame = _("dark frame: {depth} px deep").format(depth=depth)
             self.titles[border].set_text(
                 _("{border}, {repeats} blurs\n{edge}").format(

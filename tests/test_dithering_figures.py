@@ -5,7 +5,9 @@ import re
 import numpy as np
 import pytest
 from chinese import check_chinese_figure
+from drawn_figures import figures_drawn
 
+from course import dither
 from course.i18n import language
 from course.widgets import dithering_figures as figures
 
@@ -39,3 +41,14 @@ def test_the_table_names_the_lab_methods_in_chinese_and_keeps_its_columns():
     assert columns(row) == 15 + 6 + 22 + 20
     # Each header ends where it ends in English, one column before its numbers.
     assert columns(header) == len(english_header) == columns(row) - 1
+
+
+def test_the_slip_s_difference_title_counts_the_whole_image_not_the_window(monkeypatch):
+    flat = np.full((40, 40), 0.3)
+    changed = dither.error_diffusion(flat) != dither.error_diffusion_wraparound(flat)
+    in_window = changed[12:28, 22:38].sum()  # crop of centre (30, 20), size 16
+    assert changed.sum() != in_window  # so the title's number tells which it counts
+    with figures_drawn(monkeypatch) as drawn:
+        figures.wraparound_figure(flat, (30, 20), 16)
+    titles = [axes.get_title() for axes in drawn[0].axes]
+    assert f"difference in the window\n({changed.sum()} pixels in the whole image)" in titles

@@ -3,6 +3,7 @@ computes them."""
 
 import numpy as np
 import pytest
+from scipy import ndimage
 
 from course import filters
 from course.widgets.filtering import (
@@ -137,3 +138,22 @@ def test_parse_kernel_reads_fractions_commas_and_lines():
 def test_kernel_app_rejects_a_colour_image_by_name():
     with pytest.raises(ValueError, match="image: expected a gray"):
         KernelApp(np.zeros((10, 10, 3)))
+
+
+def test_the_blur_app_titles_give_the_dark_frame_depth_as_lesson_07_measures_it():
+    # Lesson 07: the columns in from the right edge below 95% of the same column under
+    # 'replicate'. A flat image stays flat under 'replicate'; scipy's "constant" mode is
+    # zero padding.
+    flat = np.full((24, 24), 0.5)
+    app = RepeatedBlurApp(flat, repeats=0, corner=8)
+    for repeats in (0, 5, 10):
+        app.controls["repeats"].value = repeats
+        zero = flat.copy()
+        for _ in range(repeats):
+            zero = ndimage.uniform_filter(zero, 3, mode="constant")
+        dark = zero.mean(axis=0)[::-1] < 0.95 * 0.5
+        depth = len(dark) if dark.all() else int(np.argmin(dark))
+        assert app.titles["zero"].get_text().endswith(f"\ndark frame: {depth} px deep")
+        assert app.titles["reflect"].get_text().endswith("\ndark frame: 0 px deep")
+        assert app.titles["replicate"].get_text().endswith("\nthe frames' reference")
+    assert depth >= 2  # 10 blurs darken more than the outermost column

@@ -193,3 +193,14 @@ def test_every_colour_and_mark_of_the_pixel_panels_has_a_legend_entry():
     panel = triangles.left.get_tightbbox(renderer)
     legend = triangles.left.get_legend().get_window_extent(renderer)
     assert panel.x0 <= legend.x0 and legend.x1 <= panel.x1 and panel.y0 <= legend.y0
+
+
+def test_the_coverage_panel_has_a_key_for_black_grey_and_white():
+    app = TriangleApp()
+    key = app.right.get_legend()
+    labels = [text.get_text() for text in key.get_texts()]
+    assert labels == ["fully inside: 1", "grey: the share of its samples inside", "outside: 0"]
+    # Each entry is the colour the panel itself gives that coverage.
+    for patch, coverage in zip(key.get_patches(), (1.0, 0.5, 0.0), strict=True):
+        shown = app.coverage.colormap(coverage)
+        np.testing.assert_allclose(patch.get_facecolor(), shown)

@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 from chinese import check_chinese_figure
+from drawn_figures import figures_drawn
 
 from course import images, poisson
 from course.i18n import language
@@ -86,3 +87,29 @@ def test_a_printed_line_follows_the_language():
     assert chinese == (
         "3 x 3 正方形：0.7071；3 x 30 长条：0.8510；3 x 300 长条：0.8535；3 x 无穷：0.8536"
     )
+
+
+def test_the_tiny_clone_draws_g_on_a_scale_centred_on_0_that_tells_every_value_apart(monkeypatch):
+    # Issue 21: drawn as 0.5 + g, every g below -0.5 clipped to black. On the ring
+    # g = b - f = sky - 0.9, so its columns run 0.2 - 0.9 = -0.7 up to 0.6 - 0.9 = -0.3.
+    with figures_drawn(monkeypatch) as drawn:
+        figures.tiny_clone_figure(zoom=10)
+    (figure,) = drawn
+    (g_image,) = [
+        image for axes in figure.axes for image in axes.images if image.cmap.name == "PRGn"
+    ]
+    g = np.asarray(g_image.get_array())
+    np.testing.assert_allclose(g[0], [-0.7, -0.6, -0.5, -0.4, -0.3], atol=1e-9)
+    norm = g_image.norm
+    assert norm.vmin == -norm.vmax and norm.vmax >= np.abs(g).max()
+    colours = {tuple(g_image.to_rgba(value)) for value in g[0]}
+    assert len(colours) == 5  # five columns, five colours: none clipped together
+    assert any(axes.get_ylabel() == "g" for axes in figure.axes)  # the colour bar
+
+
+def test_the_lab_s_8000_sweeps_are_called_the_lab_skeleton_s(monkeypatch):
+    with figures_drawn(monkeypatch) as drawn:
+        still = figures.convergence_figure()
+    assert "after the lab skeleton's 8000 sweeps" in still.caption
+    texts = [text.get_text() for text in drawn[0].axes[0].texts]
+    assert "the lab skeleton's 8000" in texts

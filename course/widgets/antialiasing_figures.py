@@ -21,7 +21,7 @@ from matplotlib.patches import Patch, Polygon
 
 from course import limits
 from course._validate import as_positive_float, describe, require_step_samples
-from course.antialias import bilinear_centres, render
+from course.antialias import DEFAULT_STEP, arc_length_step, bilinear_centres, render
 from course.bezier import de_casteljau
 from course.canvas import crop
 from course.coverage import agg_render, curve_polyline, reference
@@ -354,26 +354,40 @@ def variants_table() -> Table:
     RMSE is over the whole 700 x 700 image; CV is the coefficient of
     variation of the ink per unit length, over pieces of 8 px along the
     curve (0 for an evenly bright curve). Counted at the handouts' step
-    0.001, and weighted by arc length.
+    0.001, and weighted by arc length at :func:`course.antialias.arc_length_step`'s
+    step, both named in the first line. The stroke's area and Agg are not
+    splats (neither counts nor weighs samples): their numbers have a column
+    of their own, and "—" stands where a row has no number.
+
+    Examples
+    --------
+    >>> print(variants_table().splitlines()[0])
+    splats counted at step 0.001, weighted by length at step 0.000173
     """
     names, counted, by_length, others = _variant_rows()
+    none = pad("—", 7, ">")
     variant, what_it_does = pad(_("variant"), 34), pad(_("what it does"), 40)
     counted_, by_length_ = pad(_("counted"), 15, ">"), pad(_("by length"), 15, ">")
+    area_ = pad(_("area, once"), 15, ">")
     rmse_, cv = pad(_("RMSE"), 7, ">"), pad(_("CV"), 7, ">")
     lines = [
-        f"{variant} {what_it_does} {counted_} {by_length_}",
-        f"{'':34s} {'':40s} {rmse_} {cv} {rmse_} {cv}",
+        _("splats counted at step {counted:g}, weighted by length at step {by_length:.3g}").format(
+            counted=DEFAULT_STEP, by_length=arc_length_step(SEED_000_CUBIC)
+        ),
+        f"{variant} {what_it_does} {counted_} {by_length_} {area_}",
+        f"{'':34s} {'':40s} {rmse_} {cv} {rmse_} {cv} {rmse_} {cv}",
     ]
     for name, count, length in zip(names, counted, by_length, strict=True):
         who, what = (_(text) for text in ROLES[name])
         lines.append(
             f"{pad(who, 34)} {pad(what, 40)} {count['rmse']:7.4f} {100 * count['cv']:6.1f}% "
-            f"{length['rmse']:7.4f} {100 * length['cv']:6.1f}%"
+            f"{length['rmse']:7.4f} {100 * length['cv']:6.1f}% {none} {none}"
         )
     for row in others:
         who, what = (_(text) for text in ROLES[row["name"]])
         lines.append(
-            f"{pad(who, 34)} {pad(what, 40)} {row['rmse']:7.4f} {100 * row['cv']:6.1f}% {'':>15s}"
+            f"{pad(who, 34)} {pad(what, 40)} {none} {none} {none} {none} "
+            f"{row['rmse']:7.4f} {100 * row['cv']:6.1f}%"
         )
     return Table("\n".join(lines))
 
@@ -394,28 +408,21 @@ def variants_figure() -> Still:
     error_axes, cv_axes = figure.subplots(1, 2, sharey=True)
     rows = np.arange(len(labels))[::-1]
     height = 0.38
-    for axes, key, scale in ((error_axes, "rmse", 1.0), (cv_axes, "cv", 100.0)):
-        axes.barh(
-            rows[: len(names)] + height / 2,
-            [scale * row[key] for row in counted],
-            height,
-            color="0.7",
-            label=_("counted (the handouts)"),
+    groups = (
+        (rows[: len(names)] + height / 2, counted, "0.55", "o", _("counted (the handouts)")),
+        (rows[: len(names)] - height / 2, by_length, BLUE, "s", _("weighted by length")),
+        (rows[len(names) :], others, GREEN, "D", _("not a splat: each pixel's area")),
+    )
+    for places, group, colour, marker, label in groups:
+        # A bar's length on a log axis depends on where the axis starts: a dot does not.
+        error_axes.plot(
+            [row["rmse"] for row in group], places, marker, color=colour, ms=5, ls="", label=label
         )
-        axes.barh(
-            rows[: len(names)] - height / 2,
-            [scale * row[key] for row in by_length],
-            height,
-            color=BLUE,
-            label=_("weighted by length"),
-        )
-        axes.barh(
-            rows[len(names) :],
-            [scale * row[key] for row in others],
-            height,
-            color=GREEN,
-            label=_("not a splat: each pixel's area"),
-        )
+        cv_axes.barh(places, [100 * row["cv"] for row in group], height, color=colour, label=label)
+    error_axes.legend(fontsize=7, loc="upper left")
+    error_axes.grid(axis="x", which="both", color="0.9", lw=0.6)
+    error_axes.set_axisbelow(True)
+    for axes in (error_axes, cv_axes):
         axes.tick_params(labelsize=7)
     error_axes.set_xscale("log")
     error_axes.set_xlabel(_("RMSE against the exact coverage (log scale)"), fontsize=8)

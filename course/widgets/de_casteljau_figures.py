@@ -15,10 +15,13 @@ from typing import Any
 
 import numpy as np
 from matplotlib.collections import LineCollection
+from matplotlib.colors import LinearSegmentedColormap, Normalize
 from matplotlib.figure import Figure
 from matplotlib.legend_handler import HandlerTuple
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
+from matplotlib.ticker import PercentFormatter
+from scipy.spatial import cKDTree
 
 from course._validate import as_choice, as_figure_curve, as_int
 from course.bezier import (
@@ -52,7 +55,11 @@ __all__ = [
 
 BLUE, VERMILLION, GREEN, ORANGE = "#0072B2", "#D55E00", "#009E73", "#E69F00"
 YELLOW = (0.95, 0.85, 0.0)
+#: The overview's scale: dark blue where no pixel is yellow, the check's yellow where all are.
+YELLOW_SHARE = LinearSegmentedColormap.from_list("yellow_share", [(0.0, 0.13, 0.3), YELLOW])
 _CANVAS = (700, 700)
+#: The end-of-curve figure's zoom: a 10-pixel window is 280 px, a pixel's outline readable.
+END_ZOOM = 28
 
 
 def _fraction(value: float) -> str:
@@ -280,27 +287,31 @@ def end_of_curve_figure(
         ("white", _("B(1)'s pixel")),
         ("white", "B(1)"),
     ]
-    figure, axes_list = pixel_figure(windows, zoom=18, legend=legend, title_height=44)
+    figure, axes_list = pixel_figure(windows, zoom=END_ZOOM, legend=legend, title_height=44)
     for axes, (_window, extent, _title) in zip(axes_list, windows, strict=True):
         _pixel_grid(axes, extent)
-        axes.add_patch(
-            Rectangle(
-                home,
-                1,
-                1,
-                fill=False,
-                edgecolor=VERMILLION,
-                linewidth=2.5,
-                linestyle="--",
-                zorder=3,
+        # B(1) often sits on a pixel corner: a "+" there would lie along the outline's edges.
+        axes.plot(*end, "x", color="black", markersize=12, markeredgewidth=2, zorder=4)
+        # The outline goes over the painted square and the cross: dashes on a white line,
+        # so that they read on green, on white and across the cross alike.
+        for colour, dashes, width in (("white", "-", 3.5), (VERMILLION, (0, (3, 2)), 2.0)):
+            axes.add_patch(
+                Rectangle(
+                    home,
+                    1,
+                    1,
+                    fill=False,
+                    edgecolor=colour,
+                    linewidth=width,
+                    linestyle=dashes,
+                    zorder=5,
+                )
             )
-        )
-        axes.plot(*end, "+", color=VERMILLION, markersize=16, markeredgewidth=2.5)
     handles = [
         Patch(facecolor=GREEN, edgecolor="0.5"),
         Patch(facecolor="white", edgecolor="0.5"),
-        Patch(facecolor="white", edgecolor=VERMILLION, linestyle="--", linewidth=1.5),
-        Line2D([], [], marker="+", color=VERMILLION, linestyle="", markersize=10, mew=2),
+        Patch(facecolor="white", edgecolor=VERMILLION, linestyle=(0, (3, 2)), linewidth=2),
+        Line2D([], [], marker="x", color="black", linestyle="", markersize=8, mew=2),
     ]
     _replace_legend(figure, handles, [label for _colour, label in legend])
     caption = _("B(1) = ({x:g}, {y:g}) in pixel {pixel}; {verdicts}").format(
@@ -365,13 +376,35 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
     return Still.of(figure, caption)
 
 
+def _yellow_along(curve: np.ndarray, yellow: np.ndarray, odd: np.ndarray) -> np.ndarray:
+    """The share of yellow pixels among the painted ones nearest each of 50 stretches of curve.
+
+    ``curve`` holds 401 points; each painted pixel (its centre) counts for the
+    curve point nearest it, and the points are taken eight at a time. A
+    stretch no pixel is nearest to takes its neighbour's share.
+    """
+    painted = np.vstack([yellow, odd]) + 0.5
+    is_yellow = np.arange(len(painted)) < len(yellow)
+    _distance, nearest = cKDTree(curve).query(painted)
+    stretch = np.minimum(nearest // 8, 49)
+    counts = np.bincount(stretch, minlength=50)
+    shares = np.bincount(stretch, weights=is_yellow, minlength=50) / np.maximum(counts, 1)
+    seen = np.flatnonzero(counts)
+    if len(seen) == 0:
+        return np.ones(50)
+    # A stretch with no pixel of its own (the curve sped past) borrows its nearest neighbour's.
+    return shares[seen[np.abs(np.arange(50)[:, None] - seen).argmin(axis=1)]]
+
+
 def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     """The GAMES101 check for one handout loop: where the red and green curves part.
 
-    Left, the whole curve with every pixel that is not yellow marked (circled
-    when there are a few, a dot each when there are many) and the zoomed
-    window boxed; right, the pixels around the first of them at a whole
-    zoom, on the pixel grid. Red-only and green-only pixels also carry a
+    Left, the whole curve coloured by the share of its painted pixels that
+    are yellow, stretch by stretch (:func:`_yellow_along`; at 700 pixels in
+    192, a mark per pixel would merge into one band), the pixels that are not
+    yellow circled when there are at most 40, and the zoomed window boxed;
+    right, the pixels around the first of them at a whole zoom, on the pixel
+    grid. Red-only and green-only pixels also carry a
     mark of their own (a ring, a cross), so they are told apart without
     colour.
 
@@ -393,6 +426,7 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     shown[yellow > 0] = YELLOW
     window, extent = crop(shown, first + 0.5, size)
     side = size * 16  # the overview is as tall as the zoomed panel
+    scale_room = 60  # the overview's colour bar and its label
     colours = [
         (YELLOW, _("both")),
         ((1, 0, 0), _("only red (ring)")),
@@ -403,7 +437,7 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
         zoom=16,
         legend=[*colours, ("white", _("not yellow"))],
         legend_height=44,
-        reserve_left=side + 18,
+        reserve_left=side + 18 + scale_room,
     )
     _pixel_grid(zoomed, extent)
     left, right, bottom, top = extent
@@ -416,19 +450,30 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
         ]
         zoomed.plot(*(inside + 0.5).T, marker, color="black", markersize=6, fillstyle="none")
     overview = pixel_axes(figure, 18, 9, side, side)
-    overview.plot(*curve.T, color="0.7", linewidth=1)
+    shares = _yellow_along(curve, np.argwhere(yellow > 0)[:, ::-1], odd)
+    pieces = LineCollection(
+        np.stack([curve[:-1], curve[1:]], axis=1),
+        array=np.repeat(shares, (len(curve) - 1) // len(shares)),
+        cmap=YELLOW_SHARE,
+        norm=Normalize(0.0, 1.0),
+        linewidths=4,
+        capstyle="round",
+    )
+    overview.add_collection(pieces)
+    scale = pixel_axes(figure, 18 + side + 8, 9, 10, side)
+    bar = figure.colorbar(
+        pieces, cax=scale, ticks=[0.0, 0.5, 1.0], format=PercentFormatter(1.0, decimals=0)
+    )
+    bar.set_label(_("share yellow nearby"), fontsize=8, labelpad=-2)
+    scale.tick_params(labelsize=7)
     few = len(odd) <= 40
-    if len(odd):
+    if few and len(odd):
         overview.plot(
-            *(odd + 0.5).T,
-            "o" if few else ".",
-            markersize=9 if few else 2,
-            fillstyle="none" if few else "full",
-            color=VERMILLION,
+            *(odd + 0.5).T, "o", markersize=9, fillstyle="none", color=VERMILLION, linestyle=""
         )
     overview.add_patch(
         Rectangle(
-            (left, top), right - left, bottom - top, fill=False, edgecolor=BLUE, linewidth=1.5
+            (left, top), right - left, bottom - top, fill=False, edgecolor="black", linewidth=1.5
         )
     )
     overview.set_xlim(0, _CANVAS[1])
@@ -451,17 +496,13 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
             Patch(facecolor=(0, 1, 0), edgecolor="0.5"),
             Line2D([], [], marker="x", color="black", linestyle=""),
         ),
-        Line2D(
-            [],
-            [],
-            marker="o" if few else ".",
-            color=VERMILLION,
-            fillstyle="none" if few else "full",
-            linestyle="",
-        ),
+        Patch(facecolor="none", edgecolor="black", linewidth=1.5),
     ]
     labels = [label for _colour, label in colours]
-    labels.append(_("not yellow (whole curve; box: the zoom)"))
+    labels.append(_("box: the zoom"))
+    if few and len(odd):
+        handles.append(Line2D([], [], marker="o", color=VERMILLION, fillstyle="none", linestyle=""))
+        labels.append(_("not yellow, circled"))
     _replace_legend(figure, handles, labels, ncols=2)
     caption = _(
         "{loop} against naive_bezier: {yellow:.1%} yellow, "

@@ -428,7 +428,12 @@ def wraparound_figure(
     for picture, name in (
         (good, _("correct")),
         (bad, _("with the slip")),
-        (difference, _("difference: {count} pixels in all").format(count=changed.sum())),
+        (
+            difference,
+            _("difference in the window\n({count} pixels in the whole image)").format(
+                count=changed.sum()
+            ),
+        ),
     ):
         window, extent = crop(picture, centre, size)
         windows.append((window, extent, name))
@@ -438,6 +443,7 @@ def wraparound_figure(
         windows,
         zoom=zoom,
         reserve_left=reserve,
+        title_height=44,  # the difference's title takes two lines
         legend=[
             ("0.5", _("same dot")),
             ("white", _("lit only with the slip")),

@@ -145,8 +145,35 @@ def blurred(image: np.ndarray, border: str) -> np.ndarray:
     return filters.convolve(image, filters.BOX, border)
 
 
+#: Lesson 07's measure of the dark frame: columns below this share of 'replicate''s.
+FRAME_SHARE = 0.95
+
+
+def _frame_depth(image: np.ndarray, reference: np.ndarray) -> int:
+    """How many columns in from the right edge have a mean below FRAME_SHARE of reference's.
+
+    The rule of :func:`course.widgets.filtering_figures.frame_depth`, without its division:
+    a black column of ``reference`` (a black image) counts as not darkened, with no warning.
+
+    Examples
+    --------
+    >>> _frame_depth(np.array([[1, 1, 1, 1, 0.9, 0.5]] * 2), np.ones((2, 6)))
+    2
+    >>> _frame_depth(np.zeros((2, 3)), np.zeros((2, 3)))
+    0
+    """
+    axes = (0, 2) if image.ndim == 3 else 0
+    dark = np.mean(image, axis=axes) < FRAME_SHARE * np.mean(reference, axis=axes)
+    return int(np.argmin(np.append(dark[::-1], False)))
+
+
 class RepeatedBlurApp(SliderApp):
     """Blur n times with each border rule; the corner crop shows the frame.
+
+    Each title gives the edge pixels' brightness against the original and the
+    depth of the rule's dark frame, as lesson 07 measures it: the columns in
+    from the right edge whose mean is below 95 % of the same column under
+    ``'replicate'`` (:func:`course.widgets.filtering_figures.frame_depth`).
 
     Parameters
     ----------
@@ -169,7 +196,18 @@ class RepeatedBlurApp(SliderApp):
         self.done = 0
         self.results = dict.fromkeys(filters.BORDERS, self.image)
         self.wholes, self.crops, self.titles = {}, {}, {}
-        grid = self.figure.add_gridspec(2, 4, left=0.01, right=0.99, top=0.9, bottom=0.01)
+        grid = self.figure.add_gridspec(2, 4, left=0.01, right=0.99, top=0.88, bottom=0.05)
+        self.figure.text(
+            0.5,
+            0.01,
+            _(
+                "dark frame: the columns in from the right edge whose mean is below "
+                "{share:.0%} of the same column's under 'replicate'"
+            ).format(share=FRAME_SHARE),
+            ha="center",
+            va="bottom",
+            fontsize=9,
+        )
         style = GRAY_PIXELS if self.image.ndim == 2 else {"interpolation": "nearest"}
         for column, border in enumerate(filters.BORDERS):
             top = bare_axes(self.figure.add_subplot(grid[0, column]))
@@ -209,10 +247,17 @@ class RepeatedBlurApp(SliderApp):
                 )
             else:  # a black frame: no ratio to show
                 edge = _("edge pixels' mean {mean:.2f} (the original's is 0)").format(mean=ring)
+            if border == "replicate":
+                frame = _("the frames' reference")
+            else:
+                depth = _frame_depth(result, self.results["replicate"])
+                frame = _("dark frame: {depth} px deep").format(depth=depth)
             self.titles[border].set_text(
                 _("{border}, {repeats} blurs\n{edge}").format(
                     border=repr(border), repeats=repeats, edge=edge
                 )
+                + "\n"
+                + frame
             )
 
 

@@ -12,6 +12,7 @@ typed too (``x, y; x, y``).
 from __future__ import annotations
 
 import ipywidgets as widgets
+import matplotlib
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
@@ -279,6 +280,25 @@ class TriangleApp(SliderApp):
             columnspacing=0.8,
         )
         self.coverage = PixelPanel(self, right, (size, size), zoom, "Greys")
+        greys = matplotlib.colormaps["Greys"]
+        right.legend(
+            handles=[
+                Patch(facecolor=greys(1.0), edgecolor="0.5", label=_("fully inside: 1")),
+                Patch(
+                    facecolor=greys(0.5),
+                    edgecolor="0.5",
+                    label=_("grey: the share of its samples inside"),
+                ),
+                Patch(facecolor=greys(0.0), edgecolor="0.5", label=_("outside: 0")),
+            ],
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.07),
+            ncols=2,
+            fontsize=7,
+            frameon=False,
+            handlelength=1.4,
+            columnspacing=0.8,
+        )
         self.outlines = [axes.plot([], [], color="navy", linewidth=1)[0] for axes in (left, right)]
         self.shared = [axes.plot([], [], color="navy", linewidth=2)[0] for axes in (left, right)]
         self.left, self.right = left, right

@@ -5,7 +5,7 @@ Each function returns a :class:`~course.widgets.picture.Still` whose caption
 states the numbers it shows; photographs are drawn pixel for pixel
 (:func:`~course.widgets.picture.pixel_figure`).
 
-The lab's 8000 Gauss-Seidel sweeps take about nine seconds, too long for a
+The lab skeleton's 8000 Gauss-Seidel sweeps take about nine seconds, too long for a
 lesson that runs in fifteen, so their record (residual and error every 50
 sweeps, for Jacobi, Gauss-Seidel and SOR) is stored in
 ``course/lessons/data/lab_sweeps.json``; :func:`compute_lab_sweeps` makes it
@@ -20,7 +20,10 @@ import os
 from pathlib import Path
 from typing import Any
 
+import matplotlib
 import numpy as np
+from matplotlib.cm import ScalarMappable
+from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
@@ -58,6 +61,8 @@ LAB_OFFSET = (500, 300)
 LAB_SWEEPS_FILE = Path(__file__).resolve().parent.parent / "lessons" / "data" / "lab_sweeps.json"
 _MARGIN = 30
 BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
+#: g has both signs: purple below 0, white at 0, green above (no orange, the inside's mark).
+G_COLOURS = "PRGn"
 
 
 def _read_only(*arrays: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -255,9 +260,9 @@ def convergence_figure() -> Still:
     Examples
     --------
     >>> convergence_figure()  # doctest: +NORMALIZE_WHITESPACE
-    rho = 0.99976 per Jacobi sweep; after the lab's 8000 sweeps: Jacobi 46 grey levels off,
-    Gauss-Seidel 7.3; SOR 7.5e-07 after 600; the lab's result is 3.0 grey levels off on average,
-    77% of its pixels by more than one
+    rho = 0.99976 per Jacobi sweep; after the lab skeleton's 8000 sweeps: Jacobi 46 grey levels
+    off, Gauss-Seidel 7.3; SOR 7.5e-07 after 600; the lab's result is 3.0 grey levels off on
+    average, 77% of its pixels by more than one
     """
     record = lab_sweeps()
     figure = Figure(figsize=(8.0, 3.0), dpi=100)
@@ -274,7 +279,7 @@ def convergence_figure() -> Still:
         )
     axes.axvline(8000, color="0.3", ls=":", lw=1)
     axes.annotate(
-        _("the lab's 8000"),
+        _("the lab skeleton's 8000"),
         (8000, 1e2),
         xytext=(-4, 0),
         textcoords="offset points",
@@ -296,7 +301,7 @@ def convergence_figure() -> Still:
     rho = solvers.jacobi_rate((height - 2, width - 2))  # the unknowns: inside the ring
     caption = _(
         "rho = {rho:.5f} per Jacobi sweep; "
-        "after the lab's 8000 sweeps: Jacobi {jacobi:.2g} grey levels off, "
+        "after the lab skeleton's 8000 sweeps: Jacobi {jacobi:.2g} grey levels off, "
         "Gauss-Seidel {gauss_seidel:.2g}; SOR {sor:.2g} after "
         "{sor_sweeps}; the lab's result is {mean:.1f} grey "
         "levels off on average, {share:.0%} of its pixels by "
@@ -460,21 +465,44 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
         (_("g: b - f on the ring,\nJacobi inside ({sweeps} sweeps)").format(sweeps=sweeps), g),
         (_("the clone f + g"), clone),
     )
-    side, gap, title = width * zoom, 22, 44
+    side, gap, title, scale_room = width * zoom, 22, 44, 64
+    # g's colours are symmetric about 0, so a value and its negative are equally strong.
+    reach = float(np.abs(g).max()) or 1.0
+    g_norm = Normalize(-reach, reach)
     figure = Figure(
-        figsize=((gap + len(panels) * (side + gap)) / 100, (height * zoom + title + 40) / 100)
-    )
-    for index, (name, values) in enumerate(panels):
-        axes = bare_axes(pixel_axes(figure, gap + index * (side + gap), 8, side, height * zoom))
-        shown = np.clip(values if values.min() >= 0 else 0.5 + values, 0.0, 1.0)
-        axes.imshow(
-            shown,
-            cmap="gray",
-            vmin=0,
-            vmax=1,
-            interpolation="nearest",
-            extent=(0, width, height, 0),
+        figsize=(
+            (gap + len(panels) * (side + gap) + scale_room) / 100,
+            (height * zoom + title + 40) / 100,
         )
+    )
+    left = gap
+    for name, values in panels:
+        axes = bare_axes(pixel_axes(figure, left, 8, side, height * zoom))
+        if values is g:
+            colours = matplotlib.colormaps[G_COLOURS](g_norm(values))
+            axes.imshow(
+                values,
+                cmap=G_COLOURS,
+                norm=g_norm,
+                interpolation="nearest",
+                extent=(0, width, height, 0),
+            )
+            scale = pixel_axes(figure, left + side + 8, 8, 12, height * zoom)
+            figure.colorbar(ScalarMappable(g_norm, G_COLOURS), cax=scale).set_label("g")
+            scale.tick_params(labelsize=8)
+            left += scale_room
+        else:
+            shown = np.clip(values, 0.0, 1.0)
+            colours = matplotlib.colormaps["gray"](shown)
+            axes.imshow(
+                shown,
+                cmap="gray",
+                vmin=0,
+                vmax=1,
+                interpolation="nearest",
+                extent=(0, width, height, 0),
+            )
+        lightness = colours[..., :3] @ (0.299, 0.587, 0.114)
         axes.add_patch(
             Rectangle((1, 1), width - 2, height - 2, fill=False, edgecolor=VERMILLION, lw=2)
         )
@@ -486,15 +514,17 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
                 ha="center",
                 va="center",
                 fontsize=8,
-                color="white" if shown[row, column] < 0.5 else "black",
+                color="white" if lightness[row, column] < 0.5 else "black",
             )
         axes.set_title(name, fontsize=9)
+        left += side + gap
     figure.text(
         0.5,
         0.98,
-        _("solved by {who}; orange: the inside, the six unknowns; g drawn as 0.5 + g").format(
-            who=who
-        ),
+        _(
+            "solved by {who}; orange: the inside, the six unknowns; "
+            "g in purple below 0 and green above, its scale beside it"
+        ).format(who=who),
         ha="center",
         va="top",
         fontsize=9,

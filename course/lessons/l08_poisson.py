@@ -184,8 +184,8 @@ LESSON = Lesson(
     minutes=60,
     preview=Picture("08_preview", "a plane cloned seamlessly into a lake's sky", preview),
     handout=N_(
-        "the lab report (Lab01 Report), Task 3: Poisson image editing, the plane pasted "
-        "into the lake with the lab's 8000 'Jacobi' sweeps"
+        "the lab report (Lab01 Report), Task 3 (titled 'Image Inpainting'): Poisson image "
+        "editing, the report's update and boundary ring, and the lab skeleton's 8000 sweeps"
     ),
     teaches=N_(
         "seamless cloning as a Poisson equation: the correction g over the ring's "

@@ -124,7 +124,7 @@ def test_every_translation_renders_without_a_missing_glyph(caplog):
         figure.text(0.01, 1 - (row + 0.5) / len(texts), text, fontsize=8)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        figure.savefig(__import__("io").BytesIO(), format="png")
+        figure.savefig(__import__("io").BytesIO(), format="png", dpi=10)  # glyphs, not pixels
     missing = [str(w.message) for w in caught if "missing from font" in str(w.message)]
     # Mathtext ($...$) has no fallback font: it logs its missing glyphs instead of warning.
     missing += [r.getMessage() for r in caplog.records if "does not have a glyph" in r.getMessage()]

@@ -39,15 +39,17 @@ def padded(text: str, width: int, align: str = "<") -> str:
 
 
 def title_on_one_line(title: str) -> str:
-    """An app's two-line panel title as one printed line, its lines joined as the language does.
+    """An app's panel title of several lines as one printed line, joined as the language does.
 
     Examples
     --------
     >>> title_on_one_line("rule open: 42 + 48 pixels\\n0 painted twice")
     'rule open: 42 + 48 pixels: 0 painted twice'
+    >>> title_on_one_line("'zero', 8 blurs\\nedge at 0.40\\ndark frame: 4 px deep")
+    "'zero', 8 blurs: edge at 0.40: dark frame: 4 px deep"
     """
-    heading, _newline, details = title.partition("\n")
-    if not details:
-        return heading
+    heading, *details = title.split("\n")
     # A heading and its details on one line: English ": ", Chinese its own punctuation.
-    return _("{heading}: {details}").format(heading=heading, details=details)
+    for detail in details:
+        heading = _("{heading}: {details}").format(heading=heading, details=detail)
+    return heading

@@ -205,6 +205,7 @@ class Student:
         self.hub, self.name = hub, name
         self.session = uuid.uuid4().hex
         self.replies: dict[str, asyncio.Future] = {}
+        self.idle: dict[str, asyncio.Future] = {}  # a cell's last iopub message: status idle
         self.outputs: dict[str, list[str]] = {}
         self.opened: dict[str, list[str]] = {}  # cell msg_id -> comms opened by it
         self.states: dict[str, dict] = {}
@@ -253,6 +254,8 @@ class Student:
         kind, content = received["header"]["msg_type"], received["content"]
         if kind == "execute_reply" and parent in self.replies:
             self.replies.pop(parent).set_result(content)
+        elif kind == "status" and content.get("execution_state") == "idle" and parent in self.idle:
+            self.idle.pop(parent).set_result(None)
         elif kind == "stream" and parent in self.outputs:
             self.outputs[parent].append(content["text"])
         elif kind == "error" and parent in self.outputs:
@@ -284,11 +287,15 @@ class Student:
             self.session,
         )
         msg_id = request["header"]["msg_id"]
-        self.replies[msg_id] = asyncio.get_running_loop().create_future()
+        loop = asyncio.get_running_loop()
+        self.replies[msg_id], self.idle[msg_id] = loop.create_future(), loop.create_future()
+        idle = self.idle[msg_id]
         self.outputs[msg_id] = []
         await self.socket.write_message(json.dumps(request))
         reply = await asyncio.wait_for(self.replies[msg_id], timeout)
-        await asyncio.sleep(0.05)  # the last iopub messages of the cell
+        # Its printed text comes on iopub, which may trail the reply on a busy machine: the
+        # kernel's "idle" for this cell is the last message the cell sends.
+        await asyncio.wait_for(idle, timeout)
         if reply["status"] != "ok":
             raise RuntimeError(f"{self.name}: a cell failed: {self.errors[-1:]}")
         return msg_id, "".join(self.outputs.pop(msg_id))

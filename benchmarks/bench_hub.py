@@ -39,7 +39,6 @@ from __future__ import annotations
 import argparse
 import asyncio
 import contextlib
-import itertools
 import json
 import math
 import os
@@ -47,7 +46,6 @@ import secrets
 import signal
 import socket
 import statistics
-import struct
 import subprocess
 import sys
 import tempfile
@@ -57,6 +55,10 @@ from datetime import datetime, timezone
 from pathlib import Path
 
 import psutil
+from jupyter_server.services.kernels.connection.base import (
+    deserialize_msg_from_ws_v1,
+    serialize_msg_to_ws_v1,
+)
 from tornado.httpclient import AsyncHTTPClient, HTTPClientError, HTTPRequest
 from tornado.websocket import websocket_connect
 
@@ -74,6 +76,7 @@ LIVE_P90 = 0.100
 GOAL_P90 = 0.150
 GOAL_STUDENT_GIB = 0.5
 MIB = 2**20
+PROTOCOL = "v1.kernel.websocket.jupyter.org"
 
 
 def free_port() -> int:
@@ -186,16 +189,31 @@ def message(msg_type: str, content: dict, session: str, channel: str = "shell") 
     }
 
 
-def decoded(frame: str | bytes) -> dict:
-    """A kernel message from the websocket: JSON text, or binary with buffers after it."""
-    if isinstance(frame, str):
-        return json.loads(frame)
-    count = struct.unpack("!I", frame[:4])[0]
-    offsets = [*struct.unpack("!" + "I" * count, frame[4 : 4 * (count + 1)]), len(frame)]
-    parts = [frame[start:stop] for start, stop in itertools.pairwise(offsets)]
-    decoded_message = json.loads(parts[0])
-    decoded_message["buffers"] = parts[1:]
-    return decoded_message
+def encoded(sent: dict) -> bytes:
+    """A kernel message for the websocket, in the protocol JupyterLab 4 speaks (v1).
+
+    The server passes its parts on to the kernel as they are, signing them, instead of
+    parsing the whole message and writing it anew as the older JSON protocol makes it.
+    """
+    return serialize_msg_to_ws_v1(sent, sent["channel"], pack=packed)
+
+
+def packed(part: dict) -> bytes:
+    return json.dumps(part).encode()
+
+
+def decoded(frame: bytes) -> dict:
+    """A kernel message from the websocket (v1): header, parents, metadata, content, buffers."""
+    channel, parts = deserialize_msg_from_ws_v1(frame)
+    header, parent, metadata, content = (json.loads(part) for part in parts[:4])
+    return {
+        "channel": channel,
+        "header": header,
+        "parent_header": parent,
+        "metadata": metadata,
+        "content": content,
+        "buffers": parts[4:],
+    }
 
 
 class Student:
@@ -239,7 +257,11 @@ class Student:
             headers={"Authorization": f"token {self.hub.token}"},
             request_timeout=120,
         )
-        self.socket = await websocket_connect(request, max_message_size=64 * MIB)
+        self.socket = await websocket_connect(
+            request, max_message_size=64 * MIB, subprotocols=[PROTOCOL]
+        )
+        if self.socket.selected_subprotocol != PROTOCOL:
+            raise RuntimeError(f"the server did not accept the websocket protocol {PROTOCOL}")
         self.reader = asyncio.ensure_future(self.read())
 
     async def read(self) -> None:
@@ -268,7 +290,8 @@ class Student:
             if data.get("method") == "update" and content["comm_id"] in self.states:
                 self.states[content["comm_id"]].update(data.get("state", {}))
             elif data.get("method") == "custom" and content["comm_id"] == self.picture:
-                if data["content"].get("kind") == "drawn":
+                answer = data["content"]
+                if answer.get("kind") == "drawn" or answer.get("drawn"):
                     self.drawn_at = time.monotonic()
                     self.drawn.set()
 
@@ -291,7 +314,7 @@ class Student:
         self.replies[msg_id], self.idle[msg_id] = loop.create_future(), loop.create_future()
         idle = self.idle[msg_id]
         self.outputs[msg_id] = []
-        await self.socket.write_message(json.dumps(request))
+        await self.socket.write_message(encoded(request), binary=True)
         reply = await asyncio.wait_for(self.replies[msg_id], timeout)
         # Its printed text comes on iopub, which may trail the reply on a busy machine: the
         # kernel's "idle" for this cell is the last message the cell sends.
@@ -328,7 +351,9 @@ class Student:
             "comm_id": self.picture,
             "data": {"method": "custom", "content": {"kind": kind, "x": x, "y": y}},
         }
-        await self.socket.write_message(json.dumps(message("comm_msg", content, self.session)))
+        await self.socket.write_message(
+            encoded(message("comm_msg", content, self.session)), binary=True
+        )
 
     async def drag(self) -> None:
         """Drag P1 round a circle at a move every 50 ms, never more than one move waiting."""
@@ -413,6 +438,31 @@ def memories(hub: Hub, names: list[str]) -> tuple[float, dict[str, float]]:
     return hub_bytes / MIB, {name: value / MIB for name, value in students.items()}
 
 
+ROLES = ("kernel", "server", "proxy", "hub", "browsers")
+
+
+def role(process: psutil.Process) -> str:
+    """Which part of the class a process under the hub is (see :data:`ROLES`)."""
+    command = " ".join(process.cmdline())
+    if "configurable-http-proxy" in command:
+        return "proxy"
+    if process.environ().get("JUPYTERHUB_USER") is None:
+        return "hub"  # the hub and its culler
+    return "kernel" if "ipykernel" in command else "server"
+
+
+def cpu_by_role(hub: Hub) -> dict[str, float]:
+    """CPU seconds (user and system) used so far by each role; ``browsers`` is this script."""
+    used = dict.fromkeys(ROLES, 0.0)
+    for process in hub.processes():
+        with contextlib.suppress(psutil.Error):
+            times = process.cpu_times()
+            used[role(process)] += times.user + times.system
+    times = psutil.Process().cpu_times()
+    used["browsers"] = times.user + times.system
+    return used
+
+
 def percentile(values: list[float], share: float) -> float:
     ordered = sorted(values)
     return ordered[min(len(ordered) - 1, int(share * len(ordered)))]
@@ -439,8 +489,12 @@ async def class_of(hub: Hub, counts: tuple[int, ...], gib_per_student: float) ->
             student.round_trips.clear()
             student.sent = student.merged = student.lost = 0
         load_before = os.getloadavg()[0]
+        cpu_before = cpu_by_role(hub)
         await asyncio.gather(*(student.drag() for student in students))
+        cpu_after = cpu_by_role(hub)
         trips = [trip for student in students for trip in student.round_trips]
+        # Every picture drawn: the moves, and each student's press and release.
+        pictures = len(trips) + 2 * len(students)
         row = {
             "N": count,
             "spawn_s": spawned,
@@ -456,6 +510,11 @@ async def class_of(hub: Hub, counts: tuple[int, ...], gib_per_student: float) ->
             "merged": sum(s.merged for s in students),
             "lost": sum(s.lost for s in students),
             "load": (load_before, os.getloadavg()[0]),
+            # The whole machine's CPU per picture drawn, by role (ms), the 4 cells'
+            # process_time readings included.
+            "cpu_role_ms": {
+                name: 1e3 * (cpu_after[name] - cpu_before[name]) / pictures for name in ROLES
+            },
             "available_gib": psutil.virtual_memory().available / 2**30,
         }
         rows.append(row)
@@ -485,6 +544,8 @@ def print_row(row: dict) -> None:
         f"{row['load'][0]:>11.1f} / {row['load'][1]:<9.1f}",
         flush=True,
     )
+    roles = ", ".join(f"{name} {value:.2f}" for name, value in row["cpu_role_ms"].items())
+    print(f"    machine CPU per drag step, ms: {roles}", flush=True)
 
 
 def summary(rows: list[dict]) -> None:

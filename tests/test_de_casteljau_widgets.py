@@ -250,3 +250,40 @@ def test_every_step_of_a_drag_shows_what_a_full_redraw_draws():
         expected = drawn_in_full(points, 0.35, held=2)
         np.testing.assert_array_equal(composed(whole, messages), expected, err_msg=f"step {step}")
     assert all(content["kind"] == "patch" for content, _ in messages)
+
+
+def test_a_drag_step_through_the_comm_is_answered_by_its_patch_alone():
+    app = DeCasteljauApp(t=0.5)
+    app.refresh()
+    sent = []
+    app.view.image.send = lambda content, buffers=None: sent.append(content)
+    start = app.picture_point(app.axes, app.points[1])
+    app._on_message(app.view.image, {"kind": "down", "x": start[0], "y": start[1]}, [])
+    sent.clear()
+    for step in range(1, 4):
+        app._on_message(app.view.image, {"kind": "move", "x": start[0] + step, "y": start[1]}, [])
+        assert [message["kind"] for message in sent] == ["patch"] and sent[0]["drawn"] is True
+        sent.clear()
+    # A move that changes nothing sends no patch: a lone "drawn" answers it.
+    app._on_message(app.view.image, {"kind": "move", "x": start[0] + 3, "y": start[1]}, [])
+    assert sent == [{"kind": "drawn"}] and not app.view.awaited
+    # Moves made from Python code wait for no answer: their patches say nothing of one.
+    app.pointer("move", start[0] + 9, start[1])
+    assert sent[-1]["kind"] == "patch" and "drawn" not in sent[-1]
+
+
+def test_the_points_text_reaches_the_browser_once_at_the_release_not_at_every_step():
+    app = DeCasteljauApp(t=0.5)
+    app.refresh()
+    control = app.controls["points"]
+    synced = []
+    control._send = lambda message, buffers=None: synced.append(message["state"])
+    start = app.picture_point(app.axes, app.points[1])
+    app.pointer("down", *start)
+    for step in range(1, 4):
+        app.pointer("move", start[0] + 5 * step, start[1])
+    assert synced == []  # the picture showed each step; the text waits
+    app.pointer("up", start[0] + 20, start[1])
+    assert synced == [{"value": control.value}] and app.points[1][0] > EXAMPLE_POINTS[1][0]
+    control.value = "1, 2; 3, 4"  # not held once released
+    assert synced[-1] == {"value": "1, 2; 3, 4"}

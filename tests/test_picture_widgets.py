@@ -379,6 +379,69 @@ def test_picture_js_paints_patches_in_order_and_a_new_picture_drops_the_stale_on
     ]
 
 
+DRAG_HARNESS = r"""
+const listeners = {};
+const image = {
+  addEventListener: (kind, listener) => { listeners[kind] = listener; },
+  getBoundingClientRect: () => ({ left: 0, top: 0, width: 5, height: 4 }),
+  setPointerCapture() {},
+  naturalWidth: 5,
+  naturalHeight: 4,
+  style: {},
+};
+globalThis.document = { createElement: () => image };
+globalThis.Blob = class {};
+globalThis.URL = { createObjectURL: () => "url", revokeObjectURL: () => {} };
+const handlers = {};
+const sent = [];
+const state = { value: new Uint8Array(), format: "png", width: 5, height: 4, handles: [] };
+const model = {
+  get: (key) => state[key],
+  on: (event, handler) => { handlers[event] = handler; },
+  send: (message) => sent.push(`${message.kind}@${message.x}`),
+};
+const { default: widget } = await import(process.argv[2]);
+widget.render({ model, el: { appendChild() {} } });
+const at = (x) => ({ button: 0, clientX: x, clientY: 1, pointerId: 1, preventDefault() {} });
+const steps = [];
+const step = (name, act) => { act(); steps.push(`${name}: ${sent.splice(0).join(" ")}`); };
+step("down", () => listeners.pointerdown(at(1)));
+step("two moves while the press is drawn", () => {
+  listeners.pointermove(at(2));
+  listeners.pointermove(at(3));
+});
+step("drawn", () => handlers["msg:custom"]({ kind: "drawn" }, []));
+step("a move", () => listeners.pointermove(at(4)));
+step("a patch that is not the answer", () =>
+  handlers["msg:custom"]({ kind: "patch", rectangles: [] }, []));
+step("the patch that answers", () =>
+  handlers["msg:custom"]({ kind: "patch", rectangles: [], drawn: true }, []));
+step("up", () => listeners.pointerup(at(5)));
+console.log(JSON.stringify(steps));
+"""
+
+
+@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
+def test_picture_js_sends_a_move_only_once_the_last_is_answered_by_drawn_or_its_patch(tmp_path):
+    module = tmp_path / "picture.mjs"
+    module.write_text(Picture._esm, encoding="utf-8")
+    harness = tmp_path / "drag.mjs"
+    harness.write_text(DRAG_HARNESS, encoding="utf-8")
+    done = subprocess.run(
+        [NODE, str(harness), module.as_uri()], capture_output=True, text=True, timeout=60
+    )
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout) == [
+        "down: down@1",
+        "two moves while the press is drawn: ",
+        "drawn: move@3",  # the latest position only: the one before it was merged
+        "a move: ",
+        "a patch that is not the answer: ",
+        "the patch that answers: move@4",
+        "up: up@5",
+    ]
+
+
 def test_numbers_laid_out_from_their_pairs_are_laid_out_as_agg_lays_them_out():
     view = FigureView(shape=(40, 40))
     renderer = view.canvas.get_renderer()

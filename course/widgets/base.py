@@ -24,7 +24,7 @@ import itertools
 import re
 import unicodedata
 from collections.abc import Iterator
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 from dataclasses import dataclass
 from typing import Any
 
@@ -237,6 +237,9 @@ class SliderApp:
         self.status = widgets.Label()
         self.grabbed: str | None = None
         self._grab: _Grab | None = None
+        # While a handle is held, the controls a drag sets are synced to the browser at
+        # the release only: one message less at every step (the picture shows them live).
+        self._held_sync = ExitStack()
         self._press: tuple[float, float] | None = None
         self._held = False
         self._restoring = False
@@ -442,7 +445,9 @@ class SliderApp:
 
         (x, y) is a pixel of the picture, x to the right, y down from the top;
         it may lie outside the picture (the browser keeps sending moves once
-        a drag leaves it). Redraws when anything changed.
+        a drag leaves it). Redraws when anything changed. The controls a drag
+        sets (the points as text) reach the browser at the release, in one
+        message: the picture shows every step.
         """
         if not isinstance(kind, str) or kind not in ("down", "move", "up", "double"):
             raise ValueError(f"kind must be one of 'down', 'move', 'up', 'double'; got {kind!r}")
@@ -460,6 +465,9 @@ class SliderApp:
             self._press = None if handle else (x, y)
             if handle:
                 offset = self.data_point(handle.axes, x, y) - np.asarray(handle.at, dtype=float)
+                self._held_sync.close()  # a release that never came
+                for control in self.controls.values():
+                    self._held_sync.enter_context(control.hold_sync())
                 self._grab = _Grab(handle, offset, (x, y))
                 self.grabbed = handle.name
                 self.grab_started(handle.name)
@@ -470,8 +478,12 @@ class SliderApp:
             if kind == "up":
                 self._grab, self.grabbed = None, None
                 self.grab_ended(grab.handle.name)
-            with self.holding():
-                self.drag(grab.handle.name, point)
+            try:
+                with self.holding():
+                    self.drag(grab.handle.name, point)
+            finally:
+                if kind == "up":
+                    self._held_sync.close()  # the controls' last values, in one message
         elif kind == "up" and self._press is not None:
             press, self._press = self._press, None
             axes = self.axes_at(x, y)
@@ -488,6 +500,8 @@ class SliderApp:
         # A message comes from the browser, or from any code that sends to the
         # widget: a malformed one (not a dict, a key missing, null, a string,
         # NaN) is reported on the status line, never raised out of the observer.
+        # It is answered once, by the step's patch if one is sent, else by "drawn".
+        self.view.awaited = True
         try:
             if not isinstance(content, dict):
                 raise TypeError(
@@ -502,7 +516,9 @@ class SliderApp:
         except (ValueError, TypeError) as error:
             self.status.value = _("Ignored a pointer message: {error}").format(error=error)
         finally:
-            self.view.image.send({"kind": "drawn"})
+            if self.view.awaited:
+                self.view.awaited = False
+                self.view.image.send({"kind": "drawn"})
 
     def data_point(self, axes: Axes, x: float, y: float) -> np.ndarray:
         """Picture pixel (x, y), y down, in ``axes``' data coordinates."""

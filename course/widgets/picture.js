@@ -8,7 +8,8 @@
 // The cursor shows what a press would do, from the grabbable places the
 // kernel lists in `handles`. During a drag the kernel sends only the rectangles
 // that changed ("patch" messages, one PNG buffer each): they are painted, in
-// order, over a canvas holding the picture, which the image then shows. The
+// order, over a canvas holding the picture, which the image then shows; a patch
+// that answers a move says so ("drawn": true), as a lone "drawn" does otherwise. The
 // release brings the whole picture back as `value`, and a new `value` drops
 // any patch still on its way.
 
@@ -109,7 +110,8 @@ function render({ model, el }) {
         .then(() => paint(message.rectangles, buffers ?? [], mine))
         .catch((error) => console.warn("course picture: a patch was not painted", error));
     }
-    if (message.kind === "drawn") {
+    // The kernel's answer to a move: alone, or with the step's patch.
+    if (message.kind === "drawn" || message.drawn) {
       waiting = false;
       flush();
     }

@@ -155,9 +155,11 @@ class Picture(anywidget.AnyWidget):
     hand over it: ``[x, y, radius, 0, 0, 0, 0]`` for a point and ``[0, 0, 0,
     left, top, right, bottom]`` for a box. Presses, moves and releases come
     back as messages ``{"kind", "x", "y"}`` in picture pixels; the kernel
-    answers each with ``{"kind": "drawn"}`` once its picture is published.
-    While a handle is held, the picture is published as ``{"kind": "patch"}``
-    messages of changed rectangles (:meth:`FigureView.publish_patches`).
+    answers each once its picture is published: with ``{"kind": "drawn"}``,
+    or, while a handle is held, with the step's ``{"kind": "patch", "drawn":
+    true}`` message of changed rectangles (:meth:`FigureView.publish_patches`),
+    which says both at once (each message is one more for the kernel, the
+    server and the browser to pass on at every step of a drag).
     """
 
     _esm = (Path(__file__).parent / "picture.js").read_text(encoding="utf-8")
@@ -197,6 +199,9 @@ class FigureView:
         self._replays: dict[Line2D, _LineReplay | None] = {}
         # The RGBA pixels the browser holds: the last whole picture and the patches since.
         self._shown: np.ndarray | None = None
+        #: True while the browser waits for the picture of its pointer message: the next
+        #: patch tells it the picture is drawn (``"drawn": true``), and clears this.
+        self.awaited = False
 
     def pixels(self) -> np.ndarray:
         """The picture as last rendered, RGBA pixels (height, width, 4) uint8, before encoding."""
@@ -316,7 +321,10 @@ class FigureView:
             buffers.append(png_bytes(_opaque_rgb(current[top:bottom, left:right])))
             self._shown[top:bottom, left:right] = current[top:bottom, left:right]
         if rectangles:
-            self.image.send({"kind": "patch", "rectangles": rectangles}, buffers=buffers)
+            content = {"kind": "patch", "rectangles": rectangles}
+            if self.awaited:
+                content["drawn"], self.awaited = True, False
+            self.image.send(content, buffers=buffers)
         return True
 
 

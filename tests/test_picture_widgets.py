@@ -359,18 +359,24 @@ console.log(JSON.stringify({ seen, warnings }));
 # picture.js in Node with a stand-in page (an image, a canvas that records what
 # is painted, blobs and bitmaps that carry their bytes as text): a browser is too
 # heavy for a unit test; tests_browser drives the real one.
-@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
-def test_picture_js_paints_patches_in_order_and_a_new_picture_drops_the_stale_ones(tmp_path):
+def picture_js_in_node(tmp_path, harness: str) -> object:
+    """What ``harness`` prints (JSON) after it imported picture.js in Node."""
     module = tmp_path / "picture.mjs"
     module.write_text(Picture._esm, encoding="utf-8")
-    harness = tmp_path / "harness.mjs"
-    harness.write_text(HARNESS, encoding="utf-8")
+    script = tmp_path / "harness.mjs"
+    script.write_text(harness, encoding="utf-8")
     done = subprocess.run(
-        [NODE, str(harness), module.as_uri()], capture_output=True, text=True, timeout=60
+        [NODE, str(script), module.as_uri()], capture_output=True, text=True, timeout=60
     )
     assert done.returncode == 0, done.stderr
-    assert json.loads(done.stdout)["warnings"] == []
-    assert json.loads(done.stdout)["seen"] == [
+    return json.loads(done.stdout)
+
+
+@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
+def test_picture_js_paints_patches_in_order_and_a_new_picture_drops_the_stale_ones(tmp_path):
+    printed = picture_js_in_node(tmp_path, HARNESS)
+    assert printed["warnings"] == []
+    assert printed["seen"] == [
         "V0",
         "canvas:V0@0,0 P1@1,1 P2@3,2",
         "V1",
@@ -423,15 +429,7 @@ console.log(JSON.stringify(steps));
 
 @pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
 def test_picture_js_sends_a_move_only_once_the_last_is_answered_by_drawn_or_its_patch(tmp_path):
-    module = tmp_path / "picture.mjs"
-    module.write_text(Picture._esm, encoding="utf-8")
-    harness = tmp_path / "drag.mjs"
-    harness.write_text(DRAG_HARNESS, encoding="utf-8")
-    done = subprocess.run(
-        [NODE, str(harness), module.as_uri()], capture_output=True, text=True, timeout=60
-    )
-    assert done.returncode == 0, done.stderr
-    assert json.loads(done.stdout) == [
+    assert picture_js_in_node(tmp_path, DRAG_HARNESS) == [
         "down: down@1",
         "two moves while the press is drawn: ",
         "drawn: move@3",  # the latest position only: the one before it was merged

@@ -20,6 +20,7 @@ from scipy.spatial import cKDTree
 
 from course import limits
 from course._segments import Segments
+from course.i18n import _
 from course.near_pixels import HALF_DIAGONAL, first_of_runs, pixels_near
 
 __all__ = [
@@ -49,9 +50,11 @@ def overlapping(segments: Segments, half: float) -> np.ndarray:
     first, second = _candidate_pairs(s, 2 * half)
     if len(first) > limits.MAX_OVERLAP_PAIRS:
         raise ValueError(
-            f"polyline: {len(first)} pairs of its segments come within the stroke's width of "
-            f"each other, more than the {limits.MAX_OVERLAP_PAIRS} the exact stroke examines; "
-            "a path that runs over itself this often is better drawn in pieces"
+            _(
+                "polyline: {first_count} pairs of its segments come within the stroke's width of "
+                "each other, more than the {most} the exact stroke examines; a path "
+                "that runs over itself this often is better drawn in pieces"
+            ).format(first_count=len(first), most=limits.MAX_OVERLAP_PAIRS)
         )
     # Neighbours meet at a join the outline draws.
     neighbours = (s.next[first] == second) | (s.next[second] == first)

@@ -22,6 +22,7 @@ from matplotlib.transforms import Affine2D
 
 from course import limits
 from course._validate import as_curve, as_points, as_positive_float, as_shape, describe
+from course.i18n import _
 from course.paths import as_path, matplotlib_path
 
 __all__ = ["agg_draw", "agg_path", "agg_render"]
@@ -75,8 +76,10 @@ def agg_path(control: np.ndarray) -> Path:
     codes = {2: Path.LINETO, 3: Path.CURVE3, 4: Path.CURVE4}
     if len(control) not in codes:
         raise ValueError(
-            "points: Agg draws Bézier curves of degree 1 to 3 (2 to 4 control points); "
-            f"got {len(control)} points"
+            _(
+                "points: Agg draws Bézier curves of degree 1 to 3 (2 to 4 control points); got "
+                "{control_count} points"
+            ).format(control_count=len(control))
         )
     return Path(control, [Path.MOVETO] + [codes[len(control)]] * (len(control) - 1))
 
@@ -89,10 +92,16 @@ def agg_draw(path: Path, shape: tuple[int, int], width: float) -> RendererAgg:
     caller reads ``renderer.buffer_rgba()``; its alpha channel is coverage.
     """
     if not isinstance(path, Path):
-        raise TypeError(f"path must be a matplotlib.path.Path; got {describe(path)}")
+        raise TypeError(
+            _("path must be a matplotlib.path.Path; got {path}").format(path=describe(path))
+        )
     vertices = as_points(path.vertices, "path.vertices", bound=limits.MAX_COORDINATE)
     if vertices.shape[1] != 2:
-        raise ValueError(f"path.vertices must have shape (N, 2); got {vertices.shape}")
+        raise ValueError(
+            _("path.vertices must have shape (N, 2); got {vertices_shape}").format(
+                vertices_shape=vertices.shape
+            )
+        )
     height, canvas_width = as_shape(shape)
     width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     renderer = RendererAgg(canvas_width, height, 72)

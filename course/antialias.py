@@ -47,6 +47,7 @@ from course._validate import (
 from course.bezier import bezier_bernstein, de_casteljau, uniform_parameters
 from course.canvas import painted
 from course.coverage import agg_render, reference
+from course.i18n import _
 from course.near_pixels import first_of_runs, pixels_near
 from course.paths import as_path, flatten_uniform, text_curves
 from course.splats import (
@@ -153,8 +154,10 @@ def _canvas(
     extent = np.ceil(polyline.max(axis=0) + reach + 2) - low
     if extent[0] * extent[1] > limits.MAX_PIXELS:
         raise ValueError(
-            f"polyline and width span {int(extent[1])} x {int(extent[0])} pixels; without shape "
-            f"at most {limits.MAX_PIXELS}: pass shape=(H, W) to clip the stroke to a canvas"
+            _(
+                "polyline and width span {width} x {height} pixels; without shape at most "
+                "{most}: pass shape=(H, W) to clip the stroke to a canvas"
+            ).format(width=int(extent[1]), height=int(extent[0]), most=limits.MAX_PIXELS)
         )
     return (int(extent[1]), int(extent[0])), (int(low[0]), int(low[1]))
 
@@ -162,7 +165,11 @@ def _canvas(
 def _as_polyline(polyline: Any, gaps: Any) -> tuple[np.ndarray, np.ndarray]:
     line = as_points(polyline, "polyline", bound=limits.MAX_COORDINATE)
     if line.shape[1] != 2:
-        raise ValueError(f"polyline must have shape (K, 2); got shape {line.shape}")
+        raise ValueError(
+            _("polyline must have shape (K, 2); got shape {line_shape}").format(
+                line_shape=line.shape
+            )
+        )
     if len(line) == 1:
         line = np.vstack([line, line])
     if gaps is None:
@@ -170,8 +177,9 @@ def _as_polyline(polyline: Any, gaps: Any) -> tuple[np.ndarray, np.ndarray]:
     mask = np.asarray(gaps)
     if mask.dtype != bool or mask.shape != (len(line) - 1,):
         raise ValueError(
-            f"gaps must be a bool array of shape ({len(line) - 1},), one per segment; "
-            f"got {describe(gaps)}"
+            _(
+                "gaps must be a bool array of shape ({line_count},), one per segment; got {gaps}"
+            ).format(line_count=len(line) - 1, gaps=describe(gaps))
         )
     return line, mask
 
@@ -377,9 +385,16 @@ def _require_few_samples(steps: list[float], given: bool) -> None:
     if total > limits.MAX_STEP_SAMPLES:
         cause = "step" if given else "points (a long curve takes a fine default step)"
         raise ValueError(
-            f"{cause}: the splat methods would take about {total:.3g} samples over "
-            f"{len(steps)} curves, more than the {limits.MAX_STEP_SAMPLES} allowed; use a "
-            "larger step, fewer or shorter curves, or a stroke method"
+            _(
+                "{cause}: the splat methods would take about {total:.3g} samples over "
+                "{steps_count} curves, more than the {most} allowed; use a larger "
+                "step, fewer or shorter curves, or a stroke method"
+            ).format(
+                cause=cause,
+                total=total,
+                steps_count=len(steps),
+                most=limits.MAX_STEP_SAMPLES,
+            )
         )
 
 

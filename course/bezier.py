@@ -39,6 +39,7 @@ from course._validate import (
     require_bounded_flattening,
     require_step_samples,
 )
+from course.i18n import _
 
 __all__ = [
     "BEZIER_BERNSTEIN_METHODS",
@@ -214,7 +215,7 @@ def clear_pascal_cache() -> None:
 @lru_cache(maxsize=64)
 def _pascal_row(n: int) -> tuple[int, ...]:
     row: tuple[int, ...] = (1,)
-    for _ in range(n):
+    for _row in range(n):
         row = (1, *(a + b for a, b in itertools.pairwise(row)), 1)
     return row
 
@@ -265,10 +266,12 @@ def bernstein_basis(n: int, t: Any) -> np.ndarray:
     n = as_int(n, "n", minimum=0)
     if n > MAX_BERNSTEIN_DEGREE:
         raise ValueError(
-            f"n must be <= {MAX_BERNSTEIN_DEGREE} for the float Bernstein form "
-            f"(C(n, n/2) overflows float64 beyond it); got {n}. Use de_casteljau."
+            _(
+                "n must be <= {most} for the float Bernstein form (C(n, n/2) "
+                "overflows float64 beyond it); got {n}. Use de_casteljau."
+            ).format(most=MAX_BERNSTEIN_DEGREE, n=n)
         )
-    values, _ = as_parameter(t)
+    values, _scalar = as_parameter(t)
     return _bernstein_basis(n, values)
 
 
@@ -318,9 +321,14 @@ def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
     degree = len(control) - 1
     if degree > MAX_BERNSTEIN_DEGREE:
         raise ValueError(
-            f"points: the float Bernstein form works up to degree "
-            f"{MAX_BERNSTEIN_DEGREE} ({MAX_BERNSTEIN_DEGREE + 1} points); got "
-            f"{len(control)} points. Use de_casteljau."
+            _(
+                "points: the float Bernstein form works up to degree {most} "
+                "({most_points} points); got {control_count} points. Use de_casteljau."
+            ).format(
+                most=MAX_BERNSTEIN_DEGREE,
+                most_points=MAX_BERNSTEIN_DEGREE + 1,
+                control_count=len(control),
+            )
         )
     if method == "loop":
         curve = _bezier_bernstein_loop(control, values)

@@ -32,6 +32,7 @@ from course._validate import (
     require_finite,
 )
 from course.bezier import bezier_bernstein, de_casteljau, pascal_row
+from course.i18n import _
 
 __all__ = [
     "ACCURACY_BY_DEGREE_METHODS",
@@ -110,8 +111,10 @@ def power_coefficients(points: Any) -> np.ndarray:
     # |a_j| reaches 4**n |P| / sqrt(n): past float64's 2**1024 near degree 500.
     if degree > MAX_POWER_DEGREE:
         raise ValueError(
-            f"points must be at most {MAX_POWER_DEGREE + 1} control points: the power basis' "
-            f"coefficients of higher degrees overflow float64; got {len(control)}"
+            _(
+                "points must be at most {most} control points: the power basis' "
+                "coefficients of higher degrees overflow float64; got {control_count}"
+            ).format(most=MAX_POWER_DEGREE + 1, control_count=len(control))
         )
     integers, denominator = _as_integers(control)
     coefficients = np.empty(control.shape)
@@ -125,8 +128,10 @@ def power_coefficients(points: Any) -> np.ndarray:
                 )
             except OverflowError:
                 raise ValueError(
-                    f"points: coefficient a_{j} of this degree-{degree} curve in the power "
-                    "basis overflows float64; bring the control points closer to the origin"
+                    _(
+                        "points: coefficient a_{index} of this degree-{degree} curve in the power "
+                        "basis overflows float64; bring the control points closer to the origin"
+                    ).format(index=j, degree=degree)
                 ) from None
     return coefficients
 
@@ -160,12 +165,14 @@ def relative_errors(points: Any, t: Any, computed: Any) -> np.ndarray:
     rounded once.
     """
     control = as_points(points)
-    values_t, _ = as_parameter(t)
+    values_t, _scalar = as_parameter(t)
     exact = bezier_exact(control, values_t)
     values = as_float_array(computed, "computed")
     if values.size != exact.size:
         raise ValueError(
-            f"computed must hold one point per t, shape {exact.shape}; got shape {values.shape}"
+            _(
+                "computed must hold one point per t, shape {exact_shape}; got shape {values_shape}"
+            ).format(exact_shape=exact.shape, values_shape=values.shape)
         )
     require_finite(values, "computed")
     values = values.reshape(exact.shape)
@@ -212,24 +219,32 @@ def accuracy_by_degree(
     }
     unknown = [m for m in methods if m not in evaluate]
     if unknown:
-        raise ValueError(f"methods must be among {ACCURACY_BY_DEGREE_METHODS}; got {unknown}")
+        raise ValueError(
+            _("methods must be among {choices}; got {unknown}").format(
+                choices=ACCURACY_BY_DEGREE_METHODS, unknown=unknown
+            )
+        )
     degree_list = [
         as_int(n, "degrees", minimum=0, maximum=limits.MAX_DEGREE)
         for n in np.atleast_1d(np.asarray(degrees, dtype=object)).tolist()
     ]
     if "power" in methods and max(degree_list, default=0) > MAX_POWER_DEGREE:
         raise ValueError(
-            f"degrees must be at most {MAX_POWER_DEGREE} with the method 'power', whose "
-            f"coefficients overflow float64 beyond; got {max(degree_list)}"
+            _(
+                "degrees must be at most {most} with the method 'power', whose "
+                "coefficients overflow float64 beyond; got {highest}"
+            ).format(most=MAX_POWER_DEGREE, highest=max(degree_list))
         )
     # Exact sums cost (degree + 1)**2 big-integer steps per sample, and each sample of each
     # degree about 150 more in Fractions, whatever its degree.
     work = samples * sum((degree + 1) ** 2 + 150 for degree in degree_list)
     if work > limits.MAX_CALLS:
         raise ValueError(
-            f"degrees and samples ask for {work} exact operations (samples * sum of "
-            f"((degree + 1)**2 + 150)); at most {limits.MAX_CALLS}: ask for fewer or lower "
-            "degrees, or fewer samples"
+            _(
+                "degrees and samples ask for {work} exact operations (samples * sum of ((degree + "
+                "1)**2 + 150)); at most {most}: ask for fewer or lower degrees, or fewer "
+                "samples"
+            ).format(work=work, most=limits.MAX_CALLS)
         )
     results: dict[str, list[float]] = {method: [] for method in methods}
     for degree in degree_list:

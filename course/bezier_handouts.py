@@ -23,6 +23,7 @@ import numpy as np
 from course import limits
 from course._validate import as_int, as_parameter, as_points, as_scalar_parameter, as_shape
 from course.bezier import bezier_bernstein, de_casteljau, flatten, uniform_parameters
+from course.i18n import _
 from course.raster import line, nearest_pixels
 
 __all__ = [
@@ -68,12 +69,15 @@ def comb_recursive(m: int, n: int) -> tuple[int, int]:
     m = as_int(m, "m", minimum=0)
     n = as_int(n, "n", minimum=0)
     if m > sys.getrecursionlimit() // 2:
-        raise ValueError(f"m must be <= {sys.getrecursionlimit() // 2}; got {m}")
+        raise ValueError(
+            _("m must be <= {most}; got {m}").format(most=sys.getrecursionlimit() // 2, m=m)
+        )
     if _calls(m, n) > limits.MAX_CALLS:
         raise ValueError(
-            f"m and n must ask for at most {limits.MAX_CALLS} recursive calls; "
-            f"comb_recursive({m}, {n}) would make {_calls(m, n)} "
-            "(count them with comb_recursive_calls)"
+            _(
+                "m and n must ask for at most {most} recursive calls; comb_recursive({m}, "
+                "{n}) would make {calls} (count them with comb_recursive_calls)"
+            ).format(most=limits.MAX_CALLS, m=m, n=n, calls=_calls(m, n))
         )
     calls = 0
 
@@ -114,7 +118,9 @@ def comb_recursive_calls(m: int, n: int) -> int:
     m = as_int(m, "m", minimum=0)
     n = as_int(n, "n", minimum=0)
     if m > sys.getrecursionlimit() // 2:
-        raise ValueError(f"m must be <= {sys.getrecursionlimit() // 2}; got {m}")
+        raise ValueError(
+            _("m must be <= {most}; got {m}").format(most=sys.getrecursionlimit() // 2, m=m)
+        )
     return _calls(m, n)
 
 
@@ -133,7 +139,7 @@ def pascal_row_int32(n: int) -> np.ndarray:
     """
     n = as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE)
     row = np.ones(1, dtype=np.int32)
-    for _ in range(n):
+    for _row in range(n):
         # numpy arrays wrap like C ints (numpy scalars would warn instead).
         row = np.concatenate([row[:1], row[:-1] + row[1:], row[-1:]])
     return row
@@ -191,9 +197,11 @@ def trace_recursive(points: Any, t: float) -> DeCasteljauCost:
     # One nested call per point: stay well inside Python's recursion limit.
     if len(control) > sys.getrecursionlimit() // 2:
         raise ValueError(
-            f"points must hold at most {sys.getrecursionlimit() // 2} control points (half of "
-            f"Python's recursion limit, one nested call each); got {len(control)}. "
-            "trace_iterative counts the same interpolations without recursion"
+            _(
+                "points must hold at most {most} control points (half of Python's "
+                "recursion limit, one nested call each); got {control_count}. trace_iterative "
+                "counts the same interpolations without recursion"
+            ).format(most=sys.getrecursionlimit() // 2, control_count=len(control))
         )
     calls = interpolations = peak = 0
 
@@ -231,8 +239,10 @@ def trace_iterative(points: Any, t: float) -> DeCasteljauCost:
     # N (N - 1) / 2 interpolations, one Python step each.
     if len(control) > limits.MAX_HANDOUT_POINTS:
         raise ValueError(
-            f"points must hold at most {limits.MAX_HANDOUT_POINTS} control points for the "
-            f"handout's loop; got {len(control)}"
+            _(
+                "points must hold at most {most} control points for the handout's "
+                "loop; got {control_count}"
+            ).format(most=limits.MAX_HANDOUT_POINTS, control_count=len(control))
         )
     interpolations = peak = 0
     point_list = list(control)
@@ -367,8 +377,10 @@ def loop_pixels(points: Any, loop: HandoutLoop, shape: Any = None) -> np.ndarray
 def _require_loop(loop: Any) -> None:
     if not isinstance(loop, HandoutLoop):
         raise TypeError(
-            "loop must be a HandoutLoop, e.g. HANDOUT_LOOPS['003'] or NAIVE_LOOP; "
-            f"got {type(loop).__name__} {loop!r:.60}"
+            _(
+                "loop must be a HandoutLoop, e.g. HANDOUT_LOOPS['003'] or NAIVE_LOOP; got "
+                "{loop_type} {loop:.60}"
+            ).format(loop_type=type(loop).__name__, loop=repr(loop))
         )
 
 
@@ -440,10 +452,18 @@ def bresenham_curve(points: Any, segments: int) -> np.ndarray:
     """
     control = as_points(points, bound=limits.MAX_COORDINATE)
     if control.shape[1] != 2:
-        raise ValueError(f"points must have shape (N, 2) for image space; got {control.shape}")
+        raise ValueError(
+            _("points must have shape (N, 2) for image space; got {control_shape}").format(
+                control_shape=control.shape
+            )
+        )
     segments = as_int(segments, "segments", minimum=1)
     if segments > MAX_SEGMENTS:
-        raise ValueError(f"segments must be <= {MAX_SEGMENTS}; got {segments}")
+        raise ValueError(
+            _("segments must be <= {most}; got {segments}").format(
+                most=MAX_SEGMENTS, segments=segments
+            )
+        )
     ends = nearest_pixels(de_casteljau(control, np.linspace(0.0, 1.0, segments + 1)))
     return np.concatenate([line(a, b) for a, b in itertools.pairwise(ends)])
 
@@ -464,12 +484,16 @@ def curve_pixels(points: Any) -> np.ndarray:
     """
     control = as_points(points, bound=limits.MAX_COORDINATE)
     if control.shape[1] != 2:
-        raise ValueError(f"points must have shape (N, 2) for image space; got {control.shape}")
+        raise ValueError(
+            _("points must have shape (N, 2) for image space; got {control_shape}").format(
+                control_shape=control.shape
+            )
+        )
     pixels = nearest_pixels(flatten(control, 0.01, max_step=0.5))
     keep = np.ones(len(pixels), dtype=bool)
     keep[1:] = (np.diff(pixels, axis=0) != 0).any(axis=1)
     pixels = pixels[keep]
-    _, first = np.unique(pixels, axis=0, return_index=True)
+    _unique, first = np.unique(pixels, axis=0, return_index=True)
     return pixels[np.sort(first)]
 
 

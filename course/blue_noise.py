@@ -29,6 +29,7 @@ from course._validate import (
     require_finite,
     require_within,
 )
+from course.i18n import _
 
 __all__ = [
     "blue_noise_mask",
@@ -81,14 +82,22 @@ def _as_dots(value: Any, name: str) -> np.ndarray:
     require_finite(array, name)
     require_within(array, name, limits.LARGEST, "values")
     if array.size > limits.MAX_PIXELS:
-        raise ValueError(f"{name} must have at most {limits.MAX_PIXELS} entries; got {array.size}")
+        raise ValueError(
+            _("{name} must have at most {most} entries; got {size}").format(
+                name=name, most=limits.MAX_PIXELS, size=array.size
+            )
+        )
     return array
 
 
 def _as_square_pattern(pattern: Any) -> np.ndarray:
     array = _as_dots(pattern, "pattern")
     if array.ndim != 2 or array.shape[0] != array.shape[1] or array.size == 0:
-        raise ValueError(f"pattern must be a square (N, N) array of dots; got shape {array.shape}")
+        raise ValueError(
+            _("pattern must be a square (N, N) array of dots; got shape {array_shape}").format(
+                array_shape=array.shape
+            )
+        )
     return array
 
 
@@ -139,7 +148,9 @@ def void_and_cluster(
     sigma = as_positive_float(sigma, "sigma")
     fraction = as_positive_float(initial_fraction, "initial_fraction")
     if fraction > 0.5:
-        raise ValueError(f"initial_fraction must be in (0, 0.5]; got {fraction}")
+        raise ValueError(
+            _("initial_fraction must be in (0, 0.5]; got {fraction}").format(fraction=fraction)
+        )
     total = size * size
     kernel = np.tile(torus_gaussian(size, sigma), (2, 2))
 
@@ -164,7 +175,7 @@ def void_and_cluster(
     # Initial pattern: move the tightest cluster to the largest void until
     # the void found is the spot just vacated. Each move lowers the total
     # energy, so it ends; the bound is a guard.
-    for _ in range(total):
+    for _move in range(total):
         cluster = tightest_cluster(dots, energy)
         dots[cluster] = False
         energy -= footprint(cluster)
@@ -209,7 +220,11 @@ def blue_noise_mask(size: int = 64, rng: np.random.Generator | None = None) -> n
 def _as_texture(image: Any) -> np.ndarray:
     array = _as_dots(image, "image")
     if array.ndim != 2 or min(array.shape, default=0) < 2:
-        raise ValueError(f"image must be a 2-D (H, W) array, H, W >= 2; got shape {array.shape}")
+        raise ValueError(
+            _("image must be a 2-D (H, W) array, H, W >= 2; got shape {array_shape}").format(
+                array_shape=array.shape
+            )
+        )
     return array
 
 
@@ -259,5 +274,5 @@ def low_frequency_fraction(image: Any, cutoff: float = 0.125) -> float:
     power = np.abs(np.fft.fft2(array - array.mean())) ** 2
     total = power.sum()
     if total == 0:
-        raise ValueError("image is constant: it has no power to split")
+        raise ValueError(_("image is constant: it has no power to split"))
     return float(power[_frequency_radius(array.shape) < cutoff].sum() / total)

@@ -25,6 +25,7 @@ from course._validate import (
     describe,
     require_finite,
 )
+from course.i18n import _
 
 __all__ = [
     "PAINT_MODES",
@@ -62,11 +63,21 @@ def blank(shape: Any, color: Any = 0.0) -> np.ndarray:
 def _as_color(color: Any, name: str, channels: int | None = None) -> np.ndarray:
     value = as_float_array(color, name)
     if value.shape not in ((), (3,)):
-        raise ValueError(f"{name} must be a number or an RGB triple; got shape {value.shape}")
+        raise ValueError(
+            _("{name} must be a number or an RGB triple; got shape {value_shape}").format(
+                name=name, value_shape=value.shape
+            )
+        )
     if not np.all(np.isfinite(value)) or value.min() < 0 or value.max() > 1:
-        raise ValueError(f"{name} values must be finite and in [0, 1]; got {value.tolist()}")
+        raise ValueError(
+            _("{name} values must be finite and in [0, 1]; got {value}").format(
+                name=name, value=value.tolist()
+            )
+        )
     if channels == 1 and value.shape == (3,):
-        raise ValueError(f"{name} must be a number for a gray image; got an RGB triple")
+        raise ValueError(
+            _("{name} must be a number for a gray image; got an RGB triple").format(name=name)
+        )
     return value
 
 
@@ -80,7 +91,9 @@ def inside(pixels: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
     """
     coordinates = as_pixels(pixels)
     if not isinstance(shape, (tuple, list)) or len(shape) not in (2, 3):
-        raise ValueError(f"shape must be (H, W) or (H, W, C); got {describe(shape)}")
+        raise ValueError(
+            _("shape must be (H, W) or (H, W, C); got {shape}").format(shape=describe(shape))
+        )
     height, width = as_shape(tuple(shape[:2]))
     x, y = coordinates[:, 0], coordinates[:, 1]
     return (x >= 0) & (x < width) & (y >= 0) & (y < height)
@@ -124,11 +137,16 @@ def paint(
     """
     if not isinstance(image, np.ndarray) or not np.issubdtype(image.dtype, np.floating):
         raise TypeError(
-            f"image must be a float numpy array (H, W) or (H, W, 3) to paint into; "
-            f"got {describe(image)}"
+            _(
+                "image must be a float numpy array (H, W) or (H, W, 3) to paint into; got {image}"
+            ).format(image=describe(image))
         )
     if not (image.ndim == 2 or (image.ndim == 3 and image.shape[2] == 3)):
-        raise ValueError(f"image must have shape (H, W) or (H, W, 3); got {image.shape}")
+        raise ValueError(
+            _("image must have shape (H, W) or (H, W, 3); got {image_shape}").format(
+                image_shape=image.shape
+            )
+        )
     require_finite(image, "image")
     coordinates, value, strength, mode = _paint_arguments(
         pixels, color, weight, mode, channels=1 if image.ndim == 2 else 3
@@ -163,13 +181,15 @@ def _paint_arguments(
     strength = as_float_array(weight, "weight")
     if strength.ndim > 1 or (strength.ndim == 1 and strength.shape[0] != len(coordinates)):
         raise ValueError(
-            f"weight must be a number or an array of shape ({len(coordinates)},), one per "
-            f"pixel; got shape {strength.shape}"
+            _(
+                "weight must be a number or an array of shape ({coordinates_count},), one per "
+                "pixel; got shape {strength_shape}"
+            ).format(coordinates_count=len(coordinates), strength_shape=strength.shape)
         )
     if not np.all(np.isfinite(strength)) or (
         strength.size and (strength.min() < 0 or strength.max() > 1)
     ):
-        raise ValueError("weight values must be finite and in [0, 1]")
+        raise ValueError(_("weight values must be finite and in [0, 1]"))
     mode = as_choice(mode, "mode", PAINT_MODES)
     return coordinates, value, strength, mode
 
@@ -255,11 +275,15 @@ def yellow_fraction(image: np.ndarray, threshold: float = 0.5) -> float:
     """
     array = as_image(image, "image", copy=False)
     if array.ndim != 3:
-        raise ValueError(f"image must be an RGB (H, W, 3) image; got shape {array.shape}")
+        raise ValueError(
+            _("image must be an RGB (H, W, 3) image; got shape {array_shape}").format(
+                array_shape=array.shape
+            )
+        )
     threshold = as_unit(threshold, "threshold")
     red = array[..., 0] > threshold
     green = array[..., 1] > threshold
     painted = int(np.count_nonzero(red | green))
     if painted == 0:
-        raise ValueError("image has no red or green pixels to compare")
+        raise ValueError(_("image has no red or green pixels to compare"))
     return float(np.count_nonzero(red & green) / painted)

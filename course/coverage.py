@@ -34,6 +34,7 @@ from course import limits
 from course._validate import as_curve, as_int, as_positive_float, as_shape, describe
 from course.agg import agg_draw, agg_path, agg_render
 from course.bezier import flatten
+from course.i18n import _
 from course.near_pixels import (
     HALF_DIAGONAL,
     NearPixels,
@@ -190,12 +191,16 @@ def _supersample(
         The fraction of its k x k samples inside.
     """
     if not isinstance(near, NearPixels):
-        raise TypeError(f"near must be NearPixels, from pixels_near; got {describe(near)}")
+        raise TypeError(
+            _("near must be NearPixels, from pixels_near; got {near}").format(near=describe(near))
+        )
     pairs = np.asarray(pairs)
     if pairs.dtype != bool or pairs.shape != near.flat.shape:
         raise ValueError(
-            f"pairs must be a boolean mask of shape {near.flat.shape}, one per pair of near; "
-            f"got {describe(pairs)}"
+            _(
+                "pairs must be a boolean mask of shape {flat_shape}, one per pair of near; got "
+                "{pairs}"
+            ).format(flat_shape=near.flat.shape, pairs=describe(pairs))
         )
     half = as_positive_float(half, "half")
     k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)

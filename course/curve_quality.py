@@ -25,6 +25,7 @@ from course._validate import as_choice, as_curve, as_gray, as_positive_float, as
 from course.antialias import RENDER_METHODS, SPLATS, render
 from course.canvas import crop_extent
 from course.coverage import agg_render, curve_polyline, first_of_runs, pixels_near, reference
+from course.i18n import _
 from course.metrics import max_error, rmse
 
 __all__ = [
@@ -112,11 +113,13 @@ def intensity_along(
     piece_length = as_positive_float(piece_length, "piece_length")
     position, intensity, length = _curve_positions(gray, control)
     if length <= 0:
-        raise ValueError("points: the curve has no length, so no intensity per unit length")
+        raise ValueError(_("points: the curve has no length, so no intensity per unit length"))
     if length / piece_length > limits.MAX_STEP_SAMPLES:
         raise ValueError(
-            f"piece_length must leave at most {limits.MAX_STEP_SAMPLES} knots along the "
-            f"{length:.4g} px curve; got {piece_length:g}"
+            _(
+                "piece_length must leave at most {most} knots along the {length:.4g} px curve; got "
+                "{piece_length:g}"
+            ).format(most=limits.MAX_STEP_SAMPLES, length=length, piece_length=piece_length)
         )
     count = max(2, round(length / piece_length))
     spacing = length / count
@@ -143,10 +146,10 @@ def uniformity(image: Any, points: Any, piece_length: float = 8.0) -> float:
     >>> round(uniformity(reference(line, (9, 40)), line, piece_length=6), 6)
     0.0
     """
-    _, density = intensity_along(image, points, piece_length)
+    _positions, density = intensity_along(image, points, piece_length)
     mean = density.mean()
     if mean <= 0:
-        raise ValueError("image: nothing is drawn along the curve, uniformity is undefined")
+        raise ValueError(_("image: nothing is drawn along the curve, uniformity is undefined"))
     return float(density.std() / mean)
 
 
@@ -245,7 +248,7 @@ def position_error(image: Any, points: Any, width: float = 1.0) -> float:
     """
     offsets = centroid_offsets(image, points, width).offset
     if len(offsets) == 0:
-        raise ValueError("image: no column or row near the curve is drawn")
+        raise ValueError(_("image: no column or row near the curve is drawn"))
     return float(np.mean(np.abs(offsets)))
 
 
@@ -337,7 +340,11 @@ def quality_table(
     control = as_curve(points)
     truth = as_gray(reference, "reference")
     if not isinstance(images, dict) or not all(isinstance(name, str) for name in images):
-        raise TypeError(f"images must map variant names to images; got {type(images).__name__}")
+        raise TypeError(
+            _("images must map variant names to images; got {images_type}").format(
+                images_type=type(images).__name__
+            )
+        )
     rows = []
     for name, image in images.items():
         rows.append(

@@ -37,6 +37,7 @@ from course.error_diffusion import (
     error_diffusion_values,
     error_diffusion_wraparound,
 )
+from course.i18n import _
 
 __all__ = [
     "ERROR_DIFFUSION_METHODS",
@@ -193,7 +194,9 @@ def bayer_matrix(size: int) -> np.ndarray:
     """
     size = as_int(size, "size", minimum=1, maximum=limits.MAX_BAYER_SIZE)
     if size & (size - 1):
-        raise ValueError(f"size must be a power of two (1, 2, 4, 8, ...); got {size}")
+        raise ValueError(
+            _("size must be a power of two (1, 2, 4, 8, ...); got {size}").format(size=size)
+        )
     matrix = np.zeros((1, 1), dtype=int)
     while matrix.shape[0] < size:
         matrix = np.block([[4 * matrix, 4 * matrix + 2], [4 * matrix + 3, 4 * matrix + 1]])
@@ -262,8 +265,10 @@ def _as_halftone(halftone: Any, gray: np.ndarray) -> tuple[np.ndarray, int]:
     factor = array.shape[0] // gray.shape[0]
     if factor < 1 or array.shape != (factor * gray.shape[0], factor * gray.shape[1]):
         raise ValueError(
-            f"halftone must have the shape of gray {gray.shape} times a whole factor "
-            f"(ordered dithering gives 3 times); got shape {array.shape}"
+            _(
+                "halftone must have the shape of gray {gray_shape} times a whole factor (ordered "
+                "dithering gives 3 times); got shape {array_shape}"
+            ).format(gray_shape=gray.shape, array_shape=array.shape)
         )
     return array, factor
 

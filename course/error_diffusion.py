@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from course._validate import as_choice, as_gray, describe
+from course.i18n import _
 
 __all__ = [
     "ERROR_DIFFUSION_METHODS",
@@ -127,16 +128,22 @@ def _run(
     array = as_gray(gray, "gray")
     offsets = diffusion_offsets(kernel)
     if not isinstance(serpentine, (bool, np.bool_)):
-        raise TypeError(f"serpentine must be True or False; got {describe(serpentine)}")
+        raise TypeError(
+            _("serpentine must be True or False; got {serpentine}").format(
+                serpentine=describe(serpentine)
+            )
+        )
     if method is None:
         method = "rows" if serpentine else "wavefront"
     method = as_choice(method, "method", ERROR_DIFFUSION_METHODS)
     if method == "wavefront":
         if serpentine:
             raise ValueError(
-                "method='wavefront' needs raster order: with serpentine=True each row "
-                "starts where the row above ended, so no two rows can run together; "
-                "use method='rows' (the default for serpentine)"
+                _(
+                    "method='wavefront' needs raster order: with serpentine=True each row starts "
+                    "where the row above ended, so no two rows can run together; use method='rows' "
+                    "(the default for serpentine)"
+                )
             )
         return _error_diffusion_wavefront(array, offsets)
     if method == "rows":
@@ -248,10 +255,10 @@ def _wavefront_skew(offsets: list[tuple[int, int, float]]) -> int:
     Floyd-Steinberg gives s = 2, Atkinson 3, Jarvis-Judice-Ninke and Stucki 4.
     """
     skew = 0
-    for dx, dy, _ in offsets:
+    for dx, dy, _weight in offsets:
         if dy > 0:
             skew = max(skew, -((dx - 1) // dy))  # ceil((1 - dx) / dy)
-        for other_dx, other_dy, _ in offsets:
+        for other_dx, other_dy, _other_weight in offsets:
             if dy > other_dy:
                 skew = max(skew, -(-(other_dx - dx) // (dy - other_dy)))
     return skew
@@ -312,7 +319,7 @@ def _wavefront_band(
     # row's contiguous dx range, so its targets are consecutive rows of
     # pending; ``targets[t : t + size, top:bottom]`` are those of wavefront t.
     weights, blocks = [], []
-    for dy in sorted({dy for _, dy, _ in offsets}, reverse=True):
+    for dy in sorted({dy for _dx, dy, _weight in offsets}, reverse=True):
         row = {dx: weight for dx, other_dy, weight in offsets if other_dy == dy}
         first, last = min(row), max(row)
         start = len(weights)

@@ -34,6 +34,7 @@ from course._validate import (
     require_finite,
     require_within,
 )
+from course.i18n import _
 
 __all__ = [
     "BLUR_METHODS",
@@ -142,7 +143,11 @@ def _blur_shifted_sums(array: np.ndarray) -> np.ndarray:
 def _as_kernel(kernel: Any) -> np.ndarray:
     array = as_float_array(kernel, "kernel")
     if array.shape != (3, 3):
-        raise ValueError(f"kernel must be a 3 x 3 array; got shape {array.shape}")
+        raise ValueError(
+            _("kernel must be a 3 x 3 array; got shape {array_shape}").format(
+                array_shape=array.shape
+            )
+        )
     require_finite(array, "kernel")
     require_within(array, "kernel", limits.LARGEST, "values")
     return array
@@ -164,9 +169,11 @@ def _correlate(array: np.ndarray, weights: np.ndarray, border: str) -> np.ndarra
         inside = _correlate(np.ones((height, width)), weights, "zero")
         if np.any(np.abs(inside) < 1e-12 * np.abs(weights).sum()):
             raise ValueError(
-                "border='handout' rescales the kernel to its in-image weights, but this "
-                f"kernel's weights cancel out on part of the border (sum {weights.sum():g}); "
-                "use border='zero', 'replicate' or 'reflect'"
+                _(
+                    "border='handout' rescales the kernel to its in-image weights, but this "
+                    "kernel's weights cancel out on part of the border (sum {total:g}); use "
+                    "border='zero', 'replicate' or 'reflect'"
+                ).format(total=weights.sum())
             )
         scale = weights.sum() / inside
         output *= scale[:, :, None] if array.ndim == 3 else scale

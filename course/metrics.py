@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from course._validate import as_image
+from course.i18n import _
 
 __all__ = ["max_error", "rmse"]
 
@@ -22,7 +23,9 @@ def _pair(image: Any, reference: Any) -> tuple[np.ndarray, np.ndarray]:
     second = as_image(reference, "reference", copy=False)
     if first.shape != second.shape:
         raise ValueError(
-            f"image and reference must have the same shape; got {first.shape} and {second.shape}"
+            _(
+                "image and reference must have the same shape; got {first_shape} and {second_shape}"
+            ).format(first_shape=first.shape, second_shape=second.shape)
         )
     return first, second
 

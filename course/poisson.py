@@ -44,6 +44,7 @@ from course import limits
 from course import poisson_capacitance as capacitance
 from course import poisson_solvers as solvers
 from course._validate import as_choice, as_image, as_int, as_positive_float
+from course.i18n import _
 from course.poisson_problem import (
     GUIDANCE,
     PoissonProblem,
@@ -468,24 +469,35 @@ def _solve_planes(
         for name, given in (("iterations", iterations), ("tolerance", tolerance), ("omega", omega)):
             if given is not None:
                 raise ValueError(
-                    f"{name} applies to the iterative methods {ITERATIVE_METHODS}; "
-                    f"method={method!r} is exact, so leave {name} unset (got {given!r})"
+                    _(
+                        "{name} applies to the iterative methods {most}; "
+                        "method={method} is exact, so leave {name} unset (got {given})"
+                    ).format(
+                        name=name,
+                        most=ITERATIVE_METHODS,
+                        method=repr(method),
+                        given=repr(given),
+                    )
                 )
         if method == "dst":
             if not problem.rectangular:
                 raise ValueError(
-                    "method='dst' needs a rectangular region (every pixel inside the "
-                    "foreground's outer ring); this mask is not a rectangle, so use "
-                    "method='capacitance', 'direct' or 'auto'"
+                    _(
+                        "method='dst' needs a rectangular region (every pixel inside the "
+                        "foreground's outer ring); this mask is not a rectangle, so use "
+                        "method='capacitance', 'direct' or 'auto'"
+                    )
                 )
             return solvers.solve_dst(values, region, source), 0
         if method == "capacitance":
             charges = capacitance.charge_pixels(capacitance.embedding(region))[0].size
             if charges > MAX_CHARGES:
                 raise ValueError(
-                    f"method='capacitance' needs a dense {charges} x {charges} matrix for this "
-                    f"region, whose border has {charges} pixels (at most {MAX_CHARGES}); use "
-                    "method='direct' or 'auto' for a ragged or scattered mask"
+                    _(
+                        "method='capacitance' needs a dense {charges} x {charges} matrix for this "
+                        "region, whose border has {charges} pixels (at most {most}); use "
+                        "method='direct' or 'auto' for a ragged or scattered mask"
+                    ).format(charges=charges, most=MAX_CHARGES)
                 )
             return capacitance.solve_capacitance(values, region, source), 0
         return solvers.solve_direct(values, region, source), 0
@@ -503,12 +515,16 @@ def _as_omega(omega: float | None, method: str, region: np.ndarray) -> float:
     if method != "sor":
         if omega is not None:
             raise ValueError(
-                f"omega applies only to method='sor'; got omega={omega!r} with {method!r}"
+                _("omega applies only to method='sor'; got omega={omega} with {method}").format(
+                    omega=repr(omega), method=repr(method)
+                )
             )
         return 1.0
     if omega is None:
         return solvers.optimal_omega(region)
     omega = as_positive_float(omega, "omega")
     if omega >= 2:
-        raise ValueError(f"omega must lie in (0, 2), where SOR converges; got {omega}")
+        raise ValueError(
+            _("omega must lie in (0, 2), where SOR converges; got {omega}").format(omega=omega)
+        )
     return omega

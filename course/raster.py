@@ -17,6 +17,7 @@ import numpy as np
 from course import limits
 from course._validate import as_choice, as_point, as_points, as_shape
 from course.canvas import inside
+from course.i18n import _
 from course.triangles import hit_counts, triangle, triangle_coverage
 
 __all__ = [
@@ -67,7 +68,11 @@ def nearest_pixels(points: Any, rounding: str = "floor", shape: Any = None) -> n
     """
     samples = as_points(points, bound=limits.MAX_COORDINATE)
     if samples.shape[1] != 2:
-        raise ValueError(f"points must have shape (K, 2) for image space; got {samples.shape}")
+        raise ValueError(
+            _("points must have shape (K, 2) for image space; got {samples_shape}").format(
+                samples_shape=samples.shape
+            )
+        )
     rounding = as_choice(rounding, "rounding", ROUNDING)
     if rounding == "floor":
         pixels = np.floor(samples)
@@ -98,13 +103,17 @@ def _as_pixel(point: Any, name: str) -> tuple[int, int]:
         array = as_point(point, name, dim=2)
         if not np.all(array == np.round(array)):
             raise ValueError(
-                f"{name} must be an integer pixel (x, y); got {array.tolist()} "
-                "(choose the pixel of a float point with course.raster.nearest_pixels)"
+                _(
+                    "{name} must be an integer pixel (x, y); got {array} (choose the pixel of a "
+                    "float point with course.raster.nearest_pixels)"
+                ).format(name=name, array=array.tolist())
             )
         x, y = (int(v) for v in array)
     if max(abs(x), abs(y)) > _MAX_PIXEL_COORDINATE:
         raise ValueError(
-            f"{name} coordinates must lie within +-{_MAX_PIXEL_COORDINATE}; got ({x}, {y})"
+            _("{name} coordinates must lie within +-{bound}; got ({x}, {y})").format(
+                name=name, bound=_MAX_PIXEL_COORDINATE, x=x, y=y
+            )
         )
     return x, y
 

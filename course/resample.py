@@ -38,6 +38,7 @@ from course._validate import (
     describe,
     require_finite,
 )
+from course.i18n import _
 
 __all__ = [
     "SUPERSAMPLE_METHODS",
@@ -84,7 +85,9 @@ def bilinear(image: Any, x: Any, y: Any) -> np.ndarray:
         xs, ys = np.broadcast_arrays(xs, ys)
     except ValueError:
         raise ValueError(
-            f"x and y must broadcast together; got shapes {xs.shape} and {ys.shape}"
+            _("x and y must broadcast together; got shapes {xs_shape} and {ys_shape}").format(
+                xs_shape=xs.shape, ys_shape=ys.shape
+            )
         ) from None
     return _bilinear(pixels, xs, ys)
 
@@ -298,7 +301,11 @@ def measure_shift(
     -0.436
     """
     if not callable(resampler):
-        raise TypeError(f"resampler must be a function like supersample; got {describe(resampler)}")
+        raise TypeError(
+            _("resampler must be a function like supersample; got {resampler}").format(
+                resampler=describe(resampler)
+            )
+        )
     in_size = as_int(in_size, "in_size", minimum=2, maximum=limits.MAX_SIDE)
     out_size = as_int(out_size, "out_size", minimum=3, maximum=limits.MAX_SIDE)
     rate = as_int(rate, "rate", minimum=1, maximum=limits.MAX_RATE)
@@ -317,13 +324,16 @@ def _checked_row(answer: Any, out_size: int) -> np.ndarray:
         array = np.asarray(answer, dtype=float)
     except (TypeError, ValueError):
         raise TypeError(
-            f"resampler must return a (1, {out_size}) image of numbers; it returned "
-            f"{describe(answer)}"
+            _(
+                "resampler must return a (1, {out_size}) image of numbers; it returned {answer}"
+            ).format(out_size=out_size, answer=describe(answer))
         ) from None
     if array.shape != (1, out_size):
         raise ValueError(
-            f"resampler must return an image of shape (1, {out_size}), the out_shape it was "
-            f"given; it returned shape {array.shape}"
+            _(
+                "resampler must return an image of shape (1, {out_size}), the out_shape it was "
+                "given; it returned shape {array_shape}"
+            ).format(out_size=out_size, array_shape=array.shape)
         )
     require_finite(array, "resampler's result")
     return array[0]
@@ -332,6 +342,8 @@ def _checked_row(answer: Any, out_size: int) -> np.ndarray:
 def _require_bounded_samples(height: int, width: int, rate: int) -> None:
     if height * width * rate**2 > limits.MAX_SUPERSAMPLES:
         raise ValueError(
-            f"out_shape and rate must ask for at most {limits.MAX_SUPERSAMPLES} samples "
-            f"(H * W * rate**2); got {height} x {width} x {rate}**2"
+            _(
+                "out_shape and rate must ask for at most {most} samples (H * W * rate**2); got "
+                "{height} x {width} x {rate}**2"
+            ).format(most=limits.MAX_SUPERSAMPLES, height=height, width=width, rate=rate)
         )

@@ -33,6 +33,7 @@ from course._validate import (
     require_finite,
     require_within,
 )
+from course.i18n import _
 
 __all__ = ["alias_frequency", "box_response", "cosine_samples", "spectrum"]
 
@@ -92,7 +93,9 @@ def spectrum(samples: Any, rate: float) -> tuple[np.ndarray, np.ndarray]:
     require_within(values, "samples", limits.LARGEST, "values")
     if values.ndim != 1 or len(values) < 2:
         raise ValueError(
-            f"samples must be a 1-D array of at least 2 values; got shape {values.shape}"
+            _("samples must be a 1-D array of at least 2 values; got shape {values_shape}").format(
+                values_shape=values.shape
+            )
         )
     amplitudes = np.abs(np.fft.rfft(values)) * 2 / len(values)
     amplitudes[0] /= 2

@@ -31,6 +31,7 @@ import numpy as np
 from course import limits
 from course._validate import as_choice, as_points, as_shape
 from course.canvas import inside
+from course.i18n import _
 
 __all__ = [
     "ONE_SAMPLE",
@@ -57,8 +58,10 @@ def _as_samples(samples: Any) -> np.ndarray:
     array = as_points(samples, "samples", bound=limits.MAX_COORDINATE)
     if array.shape[1] != 2:
         raise ValueError(
-            f"samples must have shape (M, 2): (x, y) curve points in image space; "
-            f"got shape {array.shape}"
+            _(
+                "samples must have shape (M, 2): (x, y) curve points in image space; got shape "
+                "{array_shape}"
+            ).format(array_shape=array.shape)
         )
     return array
 

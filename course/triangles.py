@@ -45,6 +45,7 @@ from course._validate import (
     describe,
 )
 from course.canvas import inside
+from course.i18n import _
 
 __all__ = [
     "EDGE_RULES",
@@ -141,8 +142,10 @@ def _require_bounded_box(vertices: list[tuple[int, int]]) -> None:
     rows = (max(ys) - min(ys)) // SUBPIXEL + 2
     if rows * columns > limits.MAX_PIXELS:
         raise ValueError(
-            f"p0, p1, p2 span about {rows} x {columns} pixels; without shape at most "
-            f"{limits.MAX_PIXELS}: pass shape=(H, W) to clip the triangle to a canvas"
+            _(
+                "p0, p1, p2 span about {rows} x {columns} pixels; without shape at most "
+                "{most}: pass shape=(H, W) to clip the triangle to a canvas"
+            ).format(rows=rows, columns=columns, most=limits.MAX_PIXELS)
         )
 
 
@@ -153,8 +156,9 @@ def _snap(p0: Any, p1: Any, p2: Any) -> list[tuple[int, int]]:
         array = as_point(point, name, dim=2)
         if np.abs(array).max() > _MAX_VERTEX_COORDINATE:
             raise ValueError(
-                f"{name} coordinates must lie within +-{_MAX_VERTEX_COORDINATE}; "
-                f"got {array.tolist()}"
+                _("{name} coordinates must lie within +-{most}; got {array}").format(
+                    name=name, most=_MAX_VERTEX_COORDINATE, array=array.tolist()
+                )
             )
         x, y = (int(v) for v in np.rint(array * SUBPIXEL))
         vertices.append((x, y))
@@ -323,8 +327,10 @@ def triangle_coverage(
     rate = as_int(rate, "rate", minimum=1, maximum=limits.MAX_RATE)
     if height * width * rate**2 > limits.MAX_PIXELS:
         raise ValueError(
-            f"shape and rate must give at most {limits.MAX_PIXELS} samples (H * W * rate**2); "
-            f"got {height} x {width} x {rate}**2"
+            _(
+                "shape and rate must give at most {most} samples (H * W * rate**2); got "
+                "{height} x {width} x {rate}**2"
+            ).format(most=limits.MAX_PIXELS, height=height, width=width, rate=rate)
         )
     scaled = [
         rate * as_point(point, name, dim=2)
@@ -383,12 +389,15 @@ def barycentric(p0: Any, p1: Any, p2: Any, points: Any) -> np.ndarray:
     else:
         at = as_points(points, "points", bound=limits.MAX_COORDINATE)
     if at.shape[1] != 2:
-        raise ValueError(f"points must have shape (K, 2); got shape {at.shape}")
+        raise ValueError(
+            _("points must have shape (K, 2); got shape {at_shape}").format(at_shape=at.shape)
+        )
     twice_area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
     if twice_area == 0:
         raise ValueError(
-            f"p0, p1, p2 must span a triangle of non-zero area; got {tuple(a)}, {tuple(b)}, "
-            f"{tuple(c)} on one line"
+            _(
+                "p0, p1, p2 must span a triangle of non-zero area; got {a}, {b}, {c} on one line"
+            ).format(a=tuple(a), b=tuple(b), c=tuple(c))
         )
 
     def edge(start: np.ndarray, end: np.ndarray) -> np.ndarray:
@@ -420,8 +429,10 @@ def interpolate(
     table = np.asarray(values, dtype=float)
     if table.ndim not in (1, 2) or table.shape[0] != 3 or not np.isfinite(table).all():
         raise ValueError(
-            f"values must be finite numbers, one row per vertex: shape (3,) or (3, C); "
-            f"got {describe(values)}"
+            _(
+                "values must be finite numbers, one row per vertex: shape (3,) or (3, C); got "
+                "{values}"
+            ).format(values=describe(values))
         )
     pixels = triangle(p0, p1, p2, shape=shape, rule=rule)
     if len(pixels) == 0:

@@ -2,19 +2,26 @@
 
 from __future__ import annotations
 
+import ast
 import shutil
 import warnings
 from pathlib import Path
 
+import numpy as np
 import pytest
 from babel.messages.extract import extract_from_dir
 from babel.messages.pofile import read_po
 from matplotlib.figure import Figure
 
 import course
+import course.filters
+import course.metrics
+import course.raster
 from course import i18n
 from course.classroom.twins import placeholders
 from course.widgets import supersampling_figures
+from course.widgets.base import parse_points
+from course.widgets.supersampling import SupersampleApp
 
 ROOT = Path(__file__).resolve().parents[1]
 POT = ROOT / "course" / "locale" / "course.pot"
@@ -176,3 +183,63 @@ def test_no_english_message_holds_chinese_but_a_quoted_handout():
 
     assert [m.id for m in catalog(POT) if m.id and chinese(m.id)] == []
     assert chinese("the basic part 基础部分") and not chinese("the basic part (基础部分)")
+
+
+def _binds_underscore(function: ast.AST) -> bool:
+    """Whether ``function`` assigns the name ``_`` in its own scope (not a comprehension's)."""
+    stack = list(ast.iter_child_nodes(function))
+    while stack:
+        node = stack.pop()
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
+            continue
+        if isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
+            continue
+        if isinstance(node, ast.Name) and node.id == "_" and isinstance(node.ctx, ast.Store):
+            return True
+        stack.extend(ast.iter_child_nodes(node))
+    return False
+
+
+def _calls_underscore(function: ast.AST) -> bool:
+    return any(
+        isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "_"
+        for node in ast.walk(function)
+    )
+
+
+def test_no_function_hides_the_translation_function_behind_a_throwaway_name():
+    # `_, density = ...` then `_("...")` calls the first value: a TypeError where a
+    # message was meant (one hid in a checker's pass picture, one in a new message).
+    hiding = [
+        f"{path.relative_to(ROOT)}:{node.lineno} {node.name}"
+        for path in sorted((ROOT / "course").rglob("*.py"))
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8")))
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+        and _binds_underscore(node)
+        and _calls_underscore(node)
+    ]
+    assert hiding == []
+
+
+@pytest.mark.parametrize(
+    ("call", "english"),
+    [
+        (lambda: course.raster.nearest_pixels([[1, 2, 3]]), "points must have shape (K, 2)"),
+        (
+            lambda: course.filters.convolve(np.zeros((4, 4)), np.ones((2, 2))),
+            "must be a 3 x 3 array",
+        ),
+        (lambda: course.metrics.rmse(np.zeros((2, 2)), np.zeros((3, 3))), "same shape"),
+        (lambda: parse_points(None), "text must be a string such as"),
+        (lambda: SupersampleApp(size=1000, out_size=1), "out_size must be at least"),
+    ],
+)
+def test_an_error_raised_to_a_student_speaks_their_language(call, english):
+    with pytest.raises((ValueError, TypeError)) as raised:
+        call()
+    assert english in str(raised.value)
+    course.use_language("zh-CN")
+    with pytest.raises(type(raised.value)) as translated:
+        call()
+    shown = str(translated.value)
+    assert english not in shown and any("\u4e00" <= c <= "\u9fff" for c in shown), shown

@@ -117,17 +117,23 @@ def splat_table(pixels: Any, weights: Any) -> np.ndarray:
     if coordinates.size == 0:
         return np.zeros((0, 3))
     if not np.issubdtype(coordinates.dtype, np.number):
-        raise TypeError(f"pixels must be numbers; got dtype {coordinates.dtype}")
+        raise TypeError(
+            _("pixels must be numbers; got dtype {dtype}").format(dtype=coordinates.dtype)
+        )
     coordinates = coordinates.reshape(-1, 2)
     if len(coordinates) != len(amounts):
         raise ValueError(
-            f"pixels and weights must match: {len(coordinates)} pixels, {len(amounts)} weights"
+            _(
+                "pixels and weights must match: {coordinates_count} pixels, {amounts_count} weights"
+            ).format(coordinates_count=len(coordinates), amounts_count=len(amounts))
         )
     require_finite(amounts, "weights")
     if not np.isfinite(coordinates).all() or not np.array_equal(coordinates, np.round(coordinates)):
-        raise ValueError("pixels must be whole numbers (x, y)")
+        raise ValueError(_("pixels must be whole numbers (x, y)"))
     if np.abs(coordinates).max() > limits.MAX_COORDINATE:
-        raise ValueError(f"pixels must lie within +-{limits.MAX_COORDINATE:g}")
+        raise ValueError(
+            _("pixels must lie within +-{bound:g}").format(bound=limits.MAX_COORDINATE)
+        )
     unique, index = np.unique(coordinates.astype(np.int64), axis=0, return_inverse=True)
     totals = np.bincount(index.ravel(), amounts, minlength=len(unique))
     keep = np.abs(totals) > 1e-12

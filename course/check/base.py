@@ -178,14 +178,18 @@ def _hint_line(exercise: str, hint: str | Hints) -> str:
 def _validated_cases(cases: Any) -> list[Case]:
     if isinstance(cases, (str, bytes, Mapping)) or not isinstance(cases, Iterable):
         raise TypeError(
-            f"cases must be a list of mappings, one per case; got {type(cases).__name__}"
+            _("cases must be a list of mappings, one per case; got {cases_type}").format(
+                cases_type=type(cases).__name__
+            )
         )
     listed = list(cases)
     for index, case in enumerate(listed):
         if not isinstance(case, Mapping) or not all(isinstance(k, str) for k in case):
             raise TypeError(
-                f"cases must be a list of mappings from parameter names to inputs; case [{index}] "
-                f"is {type(case).__name__}"
+                _(
+                    "cases must be a list of mappings from parameter names to inputs; case "
+                    "[{index}] is {case_type}"
+                ).format(index=index, case_type=type(case).__name__)
             )
     return listed
 

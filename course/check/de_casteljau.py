@@ -314,13 +314,13 @@ def _level_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes
         for c, _, g in results
         if np.array_equal(c["control_points"], SEED_000_CUBIC) and c["t"] == 0.25
     ]
-    _, given = chosen[0]
+    _case, given = chosen[0]
     return curve_picture(
         SEED_000_CUBIC,
         _curve(SEED_000_CUBIC, np.linspace(0.0, 1.0, 41)),
         np.asarray(given, dtype=float).reshape(-1, 2),
         _("your next level of seed 000's cubic, t = 0.25"),
-        width_inches=3.0,
+        width_inches=3.8,
         mark_start=False,
         given_label=_("your level"),
     )

@@ -56,7 +56,9 @@ _ASK_BY: dict[str, str] = {}  # exercise -> the name a student asks check.hint()
 def register_hints(exercise: str, hints: Hints, *names: str) -> Hints:
     """Make ``hints`` those of ``exercise``, found by :func:`hint` under ``names`` too."""
     if not isinstance(hints, Hints):
-        raise TypeError(f"hints must be a Hints; got {type(hints).__name__}")
+        raise TypeError(
+            _("hints must be a Hints; got {hints_type}").format(hints_type=type(hints).__name__)
+        )
     for name in (exercise, *names):
         _HINTS[name.lower()] = (exercise, hints)
     _ASK_BY[exercise] = names[0] if names else exercise
@@ -105,9 +107,15 @@ def failure_hint(exercise: str, hints: Hints, failures: int) -> str:
     (More: check.hint("doubling").)
     """
     if not isinstance(hints, Hints):
-        raise TypeError(f"hints must be a Hints; got {type(hints).__name__}")
+        raise TypeError(
+            _("hints must be a Hints; got {hints_type}").format(hints_type=type(hints).__name__)
+        )
     if isinstance(failures, bool) or not isinstance(failures, int):
-        raise TypeError(f"failures must be an int; got {type(failures).__name__}")
+        raise TypeError(
+            _("failures must be an int; got {failures_type}").format(
+                failures_type=type(failures).__name__
+            )
+        )
     name = _ASK_BY.get(str(exercise), str(exercise))
     if failures <= 1:
         return _('Hint: {where}\n(More: check.hint("{name}").)').format(
@@ -134,7 +142,9 @@ def joined(where: str, more: str) -> str:
     """
     if not isinstance(where, str) or not isinstance(more, str):
         raise TypeError(
-            f"where and more must be str; got {type(where).__name__}, {type(more).__name__}"
+            _("where and more must be str; got {where_type}, {more_type}").format(
+                where_type=type(where).__name__, more_type=type(more).__name__
+            )
         )
     if where.endswith(("。", "？", "！")):
         return where + more

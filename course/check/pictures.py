@@ -47,7 +47,11 @@ _BOTH = "#999999"
 def figure_png(figure: Figure) -> bytes:
     """A matplotlib figure as PNG bytes, drawn with Agg."""
     if not isinstance(figure, Figure):
-        raise TypeError(f"figure must be a matplotlib Figure; got {type(figure).__name__}")
+        raise TypeError(
+            _("figure must be a matplotlib Figure; got {figure_type}").format(
+                figure_type=type(figure).__name__
+            )
+        )
     buffer = io.BytesIO()
     FigureCanvasAgg(figure).print_png(buffer)
     return buffer.getvalue()
@@ -70,7 +74,11 @@ def curve_picture(
     """
     control = as_points(control, "control", bound=limits.MAX_COORDINATE)
     if len(control) > 100:  # each control point is labelled: a picture has room for 100
-        raise ValueError(f"control must hold at most 100 points; got {len(control)}")
+        raise ValueError(
+            _("control must hold at most 100 points; got {control_count}").format(
+                control_count=len(control)
+            )
+        )
     expected = _as_pairs(expected, "expected")
     require_finite(expected, "expected")
     given = _as_pairs(given, "given")  # a student's points: NaN shows as a gap
@@ -193,7 +201,9 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     have = np.asarray(given, dtype=float)
     if want.ndim not in (2, 3) or want.size == 0 or max(want.shape[:2]) > limits.MAX_SIDE:
         raise ValueError(
-            f"expected must be a non-empty image (H, W) or (H, W, 3); got {want.shape}"
+            _("expected must be a non-empty image (H, W) or (H, W, 3); got {want_shape}").format(
+                want_shape=want.shape
+            )
         )
     if have.shape != want.shape:
         have = np.zeros_like(want)  # the report names the shapes; draw what can be drawn
@@ -252,9 +262,15 @@ def _as_pairs(points: Any, name: str) -> np.ndarray:
     """(M, 2) float points from any array of an even number of values."""
     array = as_float_array(points, name)
     if array.size % 2:
-        raise ValueError(f"{name} must hold (x, y) pairs; got {array.size} numbers")
+        raise ValueError(
+            _("{name} must hold (x, y) pairs; got {size} numbers").format(
+                name=name, size=array.size
+            )
+        )
     if array.size > 2 * limits.MAX_SAMPLES:
-        raise ValueError(f"{name} must hold at most {limits.MAX_SAMPLES} points")
+        raise ValueError(
+            _("{name} must hold at most {most} points").format(name=name, most=limits.MAX_SAMPLES)
+        )
     with np.errstate(invalid="ignore"):
         array[np.abs(array) > limits.MAX_COORDINATE] = np.nan  # off any picture: not drawn
     return array.reshape(-1, 2)
@@ -291,7 +307,9 @@ def side_by_side(
     """
     shrink = str(shrink)
     if shrink not in ("mean", "max"):
-        raise ValueError(f"shrink must be 'mean' or 'max'; got {shrink!r}")
+        raise ValueError(
+            _("shrink must be 'mean' or 'max'; got {shrink}").format(shrink=repr(shrink))
+        )
     panels = [_fitted(np.asarray(image, dtype=float), shrink) for image in (left, right)]
     height = max(p.shape[0] for p in panels)
     width = sum(p.shape[1] for p in panels) + 36

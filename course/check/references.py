@@ -88,7 +88,11 @@ def known_mistake(mistake: Any) -> str:
     """
     name, explanation = getattr(mistake, "name", None), getattr(mistake, "explanation", None)
     if not isinstance(name, str) or not isinstance(explanation, str):
-        raise TypeError(f"mistake must be a Mistake; got {type(mistake).__name__}")
+        raise TypeError(
+            _("mistake must be a Mistake; got {mistake_type}").format(
+                mistake_type=type(mistake).__name__
+            )
+        )
     return _("This is a known mistake, {name}: {explanation}").format(
         name=_(name), explanation=_(explanation)
     )
@@ -104,7 +108,11 @@ def forbidden_message(function: Any, forbidden: Mapping[Any, str]) -> str | None
     'write comb'
     """
     if not isinstance(forbidden, Mapping):
-        raise TypeError(f"forbidden must be a mapping; got {type(forbidden).__name__}")
+        raise TypeError(
+            _("forbidden must be a mapping; got {forbidden_type}").format(
+                forbidden_type=type(forbidden).__name__
+            )
+        )
     named = forbidden.get(function) if _hashable(function) else None
     return named or _references(function, forbidden)
 

@@ -163,7 +163,7 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
         )
 
     def pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
-        _, expected, given = results[3]  # the 25 x 25 noise shrunk to 3 x 3
+        _case, expected, given = results[3]  # the 25 x 25 noise shrunk to 3 x 3
         return side_by_side(expected, given, (_("expected"), _("your supersample")))
 
     return run_cases(

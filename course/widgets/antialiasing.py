@@ -104,7 +104,9 @@ def label_of(name: str) -> str:
         return _(VARIANT_LABELS[name])
     names = ", ".join(repr(key) for key in VARIANT_LABELS)
     raise ValueError(
-        f"name must be one of {names}, or one of them followed by {ARC_LENGTH!r}; got {name!r}"
+        _("name must be one of {names}, or one of them followed by {suffix}; got {name}").format(
+            names=names, suffix=repr(ARC_LENGTH), name=repr(name)
+        )
     )
 
 
@@ -149,9 +151,13 @@ class ZoomPanel:
 
     def __init__(self, axes: Axes, curve: np.ndarray, app: SliderApp | None = None) -> None:
         if not isinstance(axes, Axes):
-            raise TypeError(f"axes must be a matplotlib Axes; got {describe(axes)}")
+            raise TypeError(
+                _("axes must be a matplotlib Axes; got {axes}").format(axes=describe(axes))
+            )
         if app is not None and not isinstance(app, SliderApp):
-            raise TypeError(f"app must be a SliderApp or None; got {describe(app)}")
+            raise TypeError(
+                _("app must be a SliderApp or None; got {app}").format(app=describe(app))
+            )
         curve = as_curve(curve, "curve")  # the polyline drawn over the pixels
         self.axes = axes
         self.app = app
@@ -189,18 +195,31 @@ class ZoomPanel:
         """
         window = as_float_array(window, "window")
         if window.ndim != 2 or 0 in window.shape:
-            raise ValueError(f"window must be a gray (H, W) crop; got shape {window.shape}")
+            raise ValueError(
+                _("window must be a gray (H, W) crop; got shape {window_shape}").format(
+                    window_shape=window.shape
+                )
+            )
         require_finite(window, "window")  # values past 1 are ink piled up, drawn as 1
         if not isinstance(extent, (tuple, list)) or len(extent) != 4:
             raise ValueError(
-                f"extent must be (left, right, bottom, top) in pixels; got {describe(extent)}"
+                _("extent must be (left, right, bottom, top) in pixels; got {extent}").format(
+                    extent=describe(extent)
+                )
             )
         bound = limits.MAX_COORDINATE
         x0, x1, y1, y0 = (as_int(v, f"extent[{i}]", maximum=bound) for i, v in enumerate(extent))
         if (x1 - x0, y1 - y0) != (window.shape[1], window.shape[0]):
             raise ValueError(
-                f"extent must span the window's {window.shape[1]} columns and "
-                f"{window.shape[0]} rows; got {x1 - x0} x {y1 - y0}"
+                _(
+                    "extent must span the window's {window_columns} columns and {window_rows} "
+                    "rows; got {width} x {height}"
+                ).format(
+                    window_columns=window.shape[1],
+                    window_rows=window.shape[0],
+                    width=x1 - x0,
+                    height=y1 - y0,
+                )
             )
         if self.app is None:
             self.picture.set_data(window)
@@ -241,14 +260,20 @@ def zoom_figure(
     1
     """
     if not isinstance(images, Mapping) or not images:
-        raise TypeError(f"images must map names to images; got {describe(images)}")
+        raise TypeError(
+            _("images must map names to images; got {images}").format(images=describe(images))
+        )
     images = {str(name): as_image(image, f"images[{name!r}]") for name, image in images.items()}
     as_point(centre, "centre", dim=2, bound=limits.MAX_COORDINATE)
     size = as_int(size, "size", minimum=1, maximum=1000)
     columns = as_int(columns, "columns", minimum=1, maximum=100)
     panel_inches = as_positive_float(panel_inches, "panel_inches", smallest=0.1, largest=20.0)
     if figure is not None and not isinstance(figure, Figure):
-        raise TypeError(f"figure must be a matplotlib Figure or None; got {describe(figure)}")
+        raise TypeError(
+            _("figure must be a matplotlib Figure or None; got {figure}").format(
+                figure=describe(figure)
+            )
+        )
     curve = CurveWalk(points).polyline
     rows = -(-len(images) // columns)
     inches = (panel_inches * columns, (panel_inches + 0.3) * rows)
@@ -292,7 +317,9 @@ class ZoomApp(SliderApp):
         unknown = [name for name in picks if name not in VARIANTS] if valid else [picks]
         if unknown or not valid:
             raise ValueError(
-                f"picks must be three names from course.curve_quality.VARIANTS; got {picks!r}"
+                _(
+                    "picks must be three names from course.curve_quality.VARIANTS; got {picks}"
+                ).format(picks=repr(picks))
             )
         self.shape = as_shape(shape)
         self.points, clipped = self._on_canvas(as_curve(points))

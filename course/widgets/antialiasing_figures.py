@@ -317,15 +317,25 @@ def brightness_figure(
 def _as_steps(steps: Any) -> tuple[float, ...]:
     """One to eight t steps, each drawn twice: at most MAX_STEP_SAMPLES / 4 samples in all."""
     if isinstance(steps, (str, bytes)) or not isinstance(steps, (tuple, list, np.ndarray)):
-        raise TypeError(f"steps must be a sequence of t steps; got {describe(steps)}")
+        raise TypeError(
+            _("steps must be a sequence of t steps; got {steps}").format(steps=describe(steps))
+        )
     if not 1 <= len(steps) <= 8:
-        raise ValueError(f"steps must hold 1 to 8 t steps; got {len(steps)}")
+        raise ValueError(
+            _("steps must hold 1 to 8 t steps; got {steps_count}").format(steps_count=len(steps))
+        )
     checked = tuple(as_positive_float(step, f"steps[{i}]") for i, step in enumerate(steps))
     samples = sum(np.floor(1 / step) + 1 for step in checked)
     if samples > limits.MAX_STEP_SAMPLES // 4:
         raise ValueError(
-            f"steps must give at most {limits.MAX_STEP_SAMPLES // 4} samples in all, each "
-            f"drawn twice; {list(checked)} give {samples:.3g}"
+            _(
+                "steps must give at most {most} samples in all, each drawn twice; {checked} give "
+                "{samples:.3g}"
+            ).format(
+                most=limits.MAX_STEP_SAMPLES // 4,
+                checked=list(checked),
+                samples=samples,
+            )
         )
     return checked
 
@@ -539,7 +549,9 @@ def step_study(
     """
     if not isinstance(steps, (tuple, list)) or not 1 <= len(steps) <= _STUDY_STEPS:
         raise ValueError(
-            f"steps must be a tuple of 1 to {_STUDY_STEPS} t steps; got {describe(steps)}"
+            _("steps must be a tuple of 1 to {most} t steps; got {steps}").format(
+                most=_STUDY_STEPS, steps=describe(steps)
+            )
         )
     steps = tuple(
         as_positive_float(step, f"steps[{i}]", largest=1.0) for i, step in enumerate(steps)
@@ -620,9 +632,10 @@ def text_figure(text: str = "Bé", size: float = 40.0, zoom: int = 6) -> Still:
     size = as_positive_float(size, "size")
     if not isinstance(text, str) or len(text) * size > limits.MAX_STROKED_TEXT:
         raise ValueError(
-            f"text and size must have len(text) * size at most {limits.MAX_STROKED_TEXT} "
-            f"(the exact coverage samples every pixel along the outlines); got {describe(text)} "
-            f"at {size:g} px"
+            _(
+                "text and size must have len(text) * size at most {most} (the exact coverage "
+                "samples every pixel along the outlines); got {text} at {size:g} px"
+            ).format(most=limits.MAX_STROKED_TEXT, text=describe(text), size=size)
         )
     curves = text_curves(text, size=size)
     shape = canvas_for(curves)

@@ -74,7 +74,7 @@ def pad(text: str, width: int, align: str = "<") -> str:
     ('  RMSE|', '均方根  |')
     """
     if not isinstance(text, str):
-        raise TypeError(f"text must be a str; got {describe(text)}")
+        raise TypeError(_("text must be a str; got {text}").format(text=describe(text)))
     width = as_int(width, "width", minimum=0, maximum=1000)
     align = as_choice(align, "align", ("<", ">"))
     columns = sum(2 if unicodedata.east_asian_width(c) in "WF" else 1 for c in text)
@@ -118,7 +118,11 @@ def parse_points(text: str) -> np.ndarray:
 write 90.5, not 90,5 (write each point as x, y and separate points with ';' or a new line)
     """
     if not isinstance(text, str):
-        raise TypeError(f"text must be a string such as '10, 10; 690, 10'; got {describe(text)}")
+        raise TypeError(
+            _("text must be a string such as '10, 10; 690, 10'; got {text}").format(
+                text=describe(text)
+            )
+        )
     pieces = [piece.strip() for piece in re.split(r"[;\n]", text)]
     pieces = [piece for piece in pieces if piece]
     if not pieces:
@@ -225,7 +229,9 @@ class SliderApp:
             isinstance(control, widgets.ValueWidget) for control in controls.values()
         ):
             raise TypeError(
-                f"controls must map names to ipywidgets controls; got {describe(controls)}"
+                _("controls must map names to ipywidgets controls; got {controls}").format(
+                    controls=describe(controls)
+                )
             )
         shape = as_shape(shape, max_pixels=limits.MAX_FIGURE_PIXELS)
         dpi = as_int(dpi, "dpi", minimum=10, maximum=1000)
@@ -450,15 +456,23 @@ class SliderApp:
         message: the picture shows every step.
         """
         if not isinstance(kind, str) or kind not in ("down", "move", "up", "double"):
-            raise ValueError(f"kind must be one of 'down', 'move', 'up', 'double'; got {kind!r}")
+            raise ValueError(
+                _("kind must be one of 'down', 'move', 'up', 'double'; got {kind}").format(
+                    kind=repr(kind)
+                )
+            )
         for name, number in (("x", x), ("y", y)):
             if isinstance(number, bool) or not isinstance(number, (int, float, np.number)):
                 raise TypeError(
-                    f"{name} must be a number of picture pixels; got {describe(number)}"
+                    _("{name} must be a number of picture pixels; got {number}").format(
+                        name=name, number=describe(number)
+                    )
                 )
         x, y = float(x), float(y)
         if not (np.isfinite(x) and np.isfinite(y)):
-            raise ValueError(f"x and y must be finite picture pixels; got ({x}, {y})")
+            raise ValueError(
+                _("x and y must be finite picture pixels; got ({x}, {y})").format(x=x, y=y)
+            )
         if kind == "down":
             self.status.value = ""
             handle = self.handle_at(x, y)
@@ -544,7 +558,11 @@ class SliderApp:
             if handle.name == name:
                 return handle
         names = sorted({handle.name for handle in self.handles()})
-        raise KeyError(f"name: expected one of the handles {names}; got {name!r}")
+        raise KeyError(
+            _("name: expected one of the handles {names}; got {name}").format(
+                names=names, name=repr(name)
+            )
+        )
 
     def press_point(self, name: str) -> np.ndarray:
         """Where to press to grab handle ``name``: its point, or its box's middle (pixels)."""

@@ -115,7 +115,9 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
     control = as_figure_curve(points)
     if np.size(ts) > limits.MAX_FIGURE_POINTS:  # one arrow and label each
         raise ValueError(
-            f"ts must hold at most {limits.MAX_FIGURE_POINTS} values; got {np.size(ts)}"
+            _("ts must hold at most {most} values; got {size}").format(
+                most=limits.MAX_FIGURE_POINTS, size=np.size(ts)
+            )
         )
     hodograph = derivative(control)
     velocities = de_casteljau(hodograph, np.asarray(ts, dtype=float))
@@ -333,15 +335,21 @@ def accuracy_figure(degrees: Sequence[int] = tuple(range(1, 61)), samples: int =
 
 def _as_list(values: Any, name: str) -> list[Any]:
     if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
-        raise TypeError(f"{name} must be a sequence of integers; got {type(values).__name__}")
+        raise TypeError(
+            _("{name} must be a sequence of integers; got {values_type}").format(
+                name=name, values_type=type(values).__name__
+            )
+        )
     listed = list(values)
     if not listed:
-        raise ValueError(f"{name} must not be empty")
+        raise ValueError(_("{name} must not be empty").format(name=name))
     return listed
 
 
 def _pair(entry: Any) -> list[Any]:
     listed = _as_list(entry, "entry")
     if len(listed) != 2:
-        raise ValueError(f"entry must be a pair (row, column); got {entry!r}")
+        raise ValueError(
+            _("entry must be a pair (row, column); got {entry}").format(entry=repr(entry))
+        )
     return listed

@@ -128,7 +128,7 @@ def points_held_figure(counts: Sequence[int] = (4, 10, 20, 50, 100, 200)) -> Sti
     """
     counts = [as_int(count, "counts", minimum=1, maximum=300) for count in counts]
     if not counts:
-        raise ValueError("counts must not be empty")
+        raise ValueError(_("counts must not be empty"))
     rng = np.random.default_rng(1)
     recursive, iterative = [], []
     for count in counts:
@@ -253,7 +253,11 @@ def end_of_curve_figure(
     """
     control = as_figure_curve(points)
     if isinstance(seeds, str) or not hasattr(seeds, "__iter__"):
-        raise TypeError(f"seeds must be a sequence of handout seeds; got {type(seeds).__name__}")
+        raise TypeError(
+            _("seeds must be a sequence of handout seeds; got {seeds_type}").format(
+                seeds_type=type(seeds).__name__
+            )
+        )
     seeds = [as_choice(seed, "seeds", tuple(HANDOUT_LOOPS)) for seed in seeds]
     size = as_int(size, "size", minimum=2, maximum=100)
     end = de_casteljau(control, 1.0)

@@ -75,7 +75,11 @@ class DitherComparisonApp(SliderApp):
         self.size = as_int(size, "size", minimum=4, maximum=min(self.gray.shape))
         self.zoom = as_int(zoom, "zoom", minimum=3, maximum=30)
         if self.zoom % 3:
-            raise ValueError(f"zoom must be a multiple of 3 (ordered dithering is 3x); got {zoom}")
+            raise ValueError(
+                _("zoom must be a multiple of 3 (ordered dithering is 3x); got {zoom}").format(
+                    zoom=zoom
+                )
+            )
         height, width = self.gray.shape
         self.results = {"original": self.gray, **dither.all_methods(self.gray)}
         self.at = np.array([width // 2, height // 2])

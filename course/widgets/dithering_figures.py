@@ -84,9 +84,17 @@ def methods_figure(
     columns = as_int(columns, "columns", minimum=1, maximum=20)
     as_point(centre, "centre", dim=2)
     if not isinstance(images, Mapping) or not images:
-        raise TypeError(f"images must map names to gray images; got {type(images).__name__}")
+        raise TypeError(
+            _("images must map names to gray images; got {images_type}").format(
+                images_type=type(images).__name__
+            )
+        )
     if zoom % 3:
-        raise ValueError(f"zoom must be a multiple of 3 (ordered dithering is 3x); got {zoom}")
+        raise ValueError(
+            _("zoom must be a multiple of 3 (ordered dithering is 3x); got {zoom}").format(
+                zoom=zoom
+            )
+        )
     arrays = {name: as_gray(image, f"images[{name!r}]") for name, image in images.items()}
     reference = next(iter(arrays.values()))
     height, width = reference.shape
@@ -257,8 +265,10 @@ def by_hand_figure(gray: np.ndarray = BY_HAND, zoom: int = 52) -> Still:
     height, width = gray.shape
     if height * width > _BY_HAND_PIXELS:
         raise ValueError(
-            f"gray must be small enough to work by hand, at most {_BY_HAND_PIXELS} pixels; "
-            f"got {height} x {width}"
+            _(
+                "gray must be small enough to work by hand, at most {most} pixels; got {height} x "
+                "{width}"
+            ).format(most=_BY_HAND_PIXELS, height=height, width=width)
         )
     zoom = as_int(zoom, "zoom", minimum=8, maximum=limits.MAX_ZOOM)
     steps = _diffusion_steps(gray)
@@ -373,7 +383,9 @@ def wavefront_figure(height: int = 6, width: int = 10, pixel: tuple[int, int] = 
     height = as_int(height, "height", minimum=2, maximum=64)
     width = as_int(width, "width", minimum=3, maximum=64)
     if isinstance(pixel, (str, bytes)) or not hasattr(pixel, "__len__") or len(pixel) != 2:
-        raise ValueError(f"pixel must be a pair (x, y) of integers; got {pixel!r:.60}")
+        raise ValueError(
+            _("pixel must be a pair (x, y) of integers; got {pixel:.60}").format(pixel=repr(pixel))
+        )
     x = as_int(pixel[0], "pixel[0] (x)", minimum=1, maximum=width - 2)
     y = as_int(pixel[1], "pixel[1] (y)", minimum=1, maximum=height - 1)
     t = np.add.outer(2 * np.arange(height), np.arange(width))

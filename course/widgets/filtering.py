@@ -66,8 +66,10 @@ def _kernel_row(row: str) -> list[str]:
     entries = [entry.strip() for entry in row.split(",")]
     if any(len(entry.split()) != 1 for entry in entries):
         raise ValueError(
-            f"kernel: the row {row.strip()!r} mixes commas and spaces: separate its numbers "
-            "by spaces or by commas, and write decimals with a point (0.5, not 0,5)"
+            _(
+                "kernel: the row {strip} mixes commas and spaces: separate its numbers by spaces "
+                "or by commas, and write decimals with a point (0.5, not 0,5)"
+            ).format(strip=repr(row.strip()))
         )
     return entries
 
@@ -86,26 +88,36 @@ def parse_kernel(text: str) -> np.ndarray:
     """
     if not isinstance(text, str):
         raise TypeError(
-            f"kernel: expected text such as '1 1 1; 1 1 1; 1 1 1'; got {describe(text)}"
+            _("kernel: expected text such as '1 1 1; 1 1 1; 1 1 1'; got {text}").format(
+                text=describe(text)
+            )
         )
     rows = [_kernel_row(row) for row in re.split(r"[;\n]+", text) if row.strip()]
     if len(rows) != 3 or any(len(row) != 3 for row in rows):
         lengths = ", ".join(str(len(row)) for row in rows) or "nothing"
-        raise ValueError(f"kernel: expected 3 rows of 3 numbers; got rows of {lengths}")
+        raise ValueError(
+            _("kernel: expected 3 rows of 3 numbers; got rows of {lengths}").format(lengths=lengths)
+        )
     for token in (token for row in rows for token in row):
         if not _KERNEL_ENTRY.fullmatch(token):
             raise ValueError(
-                f"kernel: every entry must be a decimal number like 2, -0.5 or 1/9; got {token!r}"
+                _(
+                    "kernel: every entry must be a decimal number like 2, -0.5 or 1/9; got {token}"
+                ).format(token=repr(token))
             )
     try:
         values = [[float(Fraction(token)) for token in row] for row in rows]
     except (ValueError, ZeroDivisionError, OverflowError) as error:
         raise ValueError(
-            f"kernel: every entry must be a number like 2, -0.5 or 1/9 ({error})"
+            _("kernel: every entry must be a number like 2, -0.5 or 1/9 ({error})").format(
+                error=error
+            )
         ) from None
     kernel = np.array(values)
     if not np.isfinite(kernel).all() or np.abs(kernel).max() > limits.LARGEST:
-        raise ValueError(f"kernel: every entry must lie within +-{limits.LARGEST:g}")
+        raise ValueError(
+            _("kernel: every entry must lie within +-{largest:g}").format(largest=limits.LARGEST)
+        )
     return kernel
 
 
@@ -288,12 +300,18 @@ class KernelApp(SliderApp):
             image = images.face()  # its right edge is the light wall, where the border shows
         self.image = as_image(image, "image")
         if self.image.ndim != 2:
-            raise ValueError(f"image: expected a gray (H, W) image; got shape {self.image.shape}")
+            raise ValueError(
+                _("image: expected a gray (H, W) image; got shape {image_shape}").format(
+                    image_shape=self.image.shape
+                )
+            )
         kernel = as_option(kernel, "kernel", tuple(KERNELS))
         border = as_option(border, "border", filters.BORDERS)
         if not isinstance(window, (tuple, list)) or len(window) != 2:
             raise ValueError(
-                f"window must be a pair (row, column) of integers; got {describe(window)}"
+                _("window must be a pair (row, column) of integers; got {window}").format(
+                    window=describe(window)
+                )
             )
         window = (as_int(window[0], "window[0] (row)"), as_int(window[1], "window[1] (column)"))
         controls = {
@@ -383,7 +401,11 @@ class KernelApp(SliderApp):
         """The lab's dot product of ``kernel`` with each window, under ``border``."""
         kernel = as_float_array(kernel, "kernel")
         if kernel.shape != (3, 3):
-            raise ValueError(f"kernel must be 3 x 3; got shape {kernel.shape}")
+            raise ValueError(
+                _("kernel must be 3 x 3; got shape {kernel_shape}").format(
+                    kernel_shape=kernel.shape
+                )
+            )
         return filters.convolve(self.image, kernel[::-1, ::-1], border)
 
     def update(self) -> None:

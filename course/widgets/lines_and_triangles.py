@@ -55,7 +55,7 @@ def pixel_grid(axes: Axes, size: int, title: str = "") -> LineCollection:
     redraws them after its image, as they are not part of its background.
     """
     if not isinstance(axes, Axes):
-        raise TypeError(f"axes must be matplotlib Axes; got {describe(axes)}")
+        raise TypeError(_("axes must be matplotlib Axes; got {axes}").format(axes=describe(axes)))
     size = as_int(size, "size", minimum=1, maximum=1000)
     axes.set_xlim(0, size)
     axes.set_ylim(size, 0)
@@ -404,7 +404,11 @@ class CurveSegmentsApp(SliderApp):
         else:
             start = as_app_points(points, "points", low=0, high=CURVE_GRID)
             if len(start) < 2:
-                raise ValueError(f"points must hold at least 2 points; got {len(start)}")
+                raise ValueError(
+                    _("points must hold at least 2 points; got {start_count}").format(
+                        start_count=len(start)
+                    )
+                )
         segments = as_int(segments, "segments", minimum=1, maximum=max(_SEGMENT_COUNTS))
         self.control = np.round(np.asarray(start, dtype=float), 1)
         controls = {

@@ -334,15 +334,19 @@ def colour_figure(
     """
     size = as_shape(size, "size", max_pixels=128 * 128)
     if max(size) > 128:  # zoomed 16 times, a side of 128 pixels is a 2048-pixel picture
-        raise ValueError(f"size must have sides of at most 128 pixels; got {size}")
+        raise ValueError(
+            _("size must have sides of at most 128 pixels; got {size}").format(size=size)
+        )
     p0, p1, p2 = (
         as_point(p, name, dim=2, bound=256.0) for p, name in ((p0, "p0"), (p1, "p1"), (p2, "p2"))
     )
     pixels, colours = interpolate(p0, p1, p2, np.eye(3), shape=size)
     if len(pixels) == 0:
         raise ValueError(
-            f"p0, p1 and p2 must enclose at least one pixel centre of the {size} canvas to "
-            f"colour; got {p0.tolist()}, {p1.tolist()}, {p2.tolist()}"
+            _(
+                "p0, p1 and p2 must enclose at least one pixel centre of the {size} canvas to "
+                "colour; got {p0}, {p1}, {p2}"
+            ).format(size=size, p0=p0.tolist(), p1=p1.tolist(), p2=p2.tolist())
         )
     image = blank(size, (1.0, 1.0, 1.0))
     image[pixels[:, 1], pixels[:, 0]] = colours
@@ -385,5 +389,9 @@ def _small_pixel(point: Any, name: str) -> tuple[int, int]:
     """A whole pixel (x, y) within 64 of the origin: a figure draws every pixel between two."""
     array = as_point(point, name, dim=2, bound=64.0)
     if (array != np.round(array)).any():
-        raise ValueError(f"{name} must be a whole pixel (x, y); got {array.tolist()}")
+        raise ValueError(
+            _("{name} must be a whole pixel (x, y); got {array}").format(
+                name=name, array=array.tolist()
+            )
+        )
     return int(array[0]), int(array[1])

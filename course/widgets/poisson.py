@@ -186,8 +186,12 @@ class CloneApp(SliderApp):
         self.foreground = as_image(images.plane() if foreground is None else foreground)
         if self.background.ndim != self.foreground.ndim:
             raise ValueError(
-                "foreground: expected a gray foreground for a gray background and RGB for RGB; "
-                f"got shapes {self.foreground.shape} and {self.background.shape}"
+                _(
+                    "foreground: expected a gray foreground for a gray background and RGB for RGB; "
+                    "got shapes {foreground_shape} and {background_shape}"
+                ).format(
+                    foreground_shape=self.foreground.shape, background_shape=self.background.shape
+                )
             )
         self.half_background = half_size(self.background)
         self.offset = as_app_points([offset], "offset", 1, whole=True)[0].astype(int)
@@ -292,7 +296,11 @@ def half_size(image: np.ndarray) -> np.ndarray:
     """
     image = _as_finite_image(image)
     if min(image.shape[:2]) < 2:
-        raise ValueError(f"image must be at least 2 x 2; got shape {image.shape}")
+        raise ValueError(
+            _("image must be at least 2 x 2; got shape {image_shape}").format(
+                image_shape=image.shape
+            )
+        )
     height, width = (side // 2 * 2 for side in image.shape[:2])
     blocks = image[:height, :width].reshape(height // 2, 2, width // 2, 2, *image.shape[2:])
     return blocks.mean(axis=(1, 3))
@@ -302,18 +310,26 @@ def _as_finite_image(image: Any) -> np.ndarray:
     """A finite float (H, W) or (H, W, 3) array; values may stray from [0, 1]."""
     array = as_float_array(image, "image")
     if not (array.ndim == 2 or (array.ndim == 3 and array.shape[2] == 3)) or not array.size:
-        raise ValueError(f"image must be a gray (H, W) or RGB (H, W, 3) image; got {array.shape}")
+        raise ValueError(
+            _("image must be a gray (H, W) or RGB (H, W, 3) image; got {array_shape}").format(
+                array_shape=array.shape
+            )
+        )
     require_finite(array, "image")
     return array
 
 
 def _as_stops(stops: Any) -> tuple[int, ...]:
     if not isinstance(stops, (tuple, list)) or not stops:
-        raise TypeError(f"stops must be a tuple of sweep counts; got {describe(stops)}")
+        raise TypeError(
+            _("stops must be a tuple of sweep counts; got {stops}").format(stops=describe(stops))
+        )
     counts = tuple(
         as_int(stop, f"stops[{index}]", minimum=0, maximum=limits.MAX_ITERATIONS)
         for index, stop in enumerate(stops)
     )
     if list(counts) != sorted(set(counts)):
-        raise ValueError(f"stops must be increasing sweep counts; got {counts}")
+        raise ValueError(
+            _("stops must be increasing sweep counts; got {counts}").format(counts=counts)
+        )
     return counts

@@ -242,11 +242,15 @@ def write_lab_sweeps(path: str | os.PathLike[str] = LAB_SWEEPS_FILE) -> None:
     """
     if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
         raise TypeError(
-            f"path must be a file path (str or pathlib.Path); got {type(path).__name__} {path!r}"
+            _("path must be a file path (str or pathlib.Path); got {path_type} {path}").format(
+                path_type=type(path).__name__, path=repr(path)
+            )
         )
     path = Path(path)
     if path.is_dir():
-        raise ValueError(f"path must name a file; {str(path)!r} is a folder")
+        raise ValueError(
+            _("path must name a file; {path} is a folder").format(path=repr(str(path)))
+        )
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(compute_lab_sweeps(), indent=1) + "\n")
 

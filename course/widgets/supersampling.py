@@ -56,8 +56,10 @@ class SupersampleApp(SliderApp):
         )
         if round(_PHOTO_SIDE * out_size / size) < 1:
             raise ValueError(
-                f"out_size must be at least size / {2 * _PHOTO_SIDE} so the photograph keeps a "
-                f"pixel; got out_size={out_size} for size={size}"
+                _(
+                    "out_size must be at least size / {divisor} so the photograph keeps a pixel; "
+                    "got out_size={out_size} for size={size}"
+                ).format(divisor=2 * _PHOTO_SIDE, out_size=out_size, size=size)
             )
         controls = {
             "rate": widgets.IntSlider(value=rate, min=1, max=max_rate, description=_("rate")),

@@ -155,7 +155,11 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
     height, width = image.shape
     x, y = as_point((x, y), "(x, y)", dim=2)
     if not (0 <= x <= width and 0 <= y <= height):
-        raise ValueError(f"x and y must lie on the {width} x {height} image; got ({x:g}, {y:g})")
+        raise ValueError(
+            _("x and y must lie on the {width} x {height} image; got ({x:g}, {y:g})").format(
+                width=width, height=height, x=x, y=y
+            )
+        )
     figure, (axes,) = pixel_figure(
         [
             (

@@ -43,6 +43,7 @@ from course._validate import (
     require_within,
 )
 from course.bezier import de_casteljau
+from course.i18n import _
 
 __all__ = [
     "FONT",
@@ -96,18 +97,36 @@ class Curves:
         """
         points, sizes = self.points, self.sizes
         if not isinstance(points, np.ndarray) or points.dtype.kind not in "iuf":
-            raise TypeError(f"points must be a numpy array of real numbers; got {describe(points)}")
+            raise TypeError(
+                _("points must be a numpy array of real numbers; got {points}").format(
+                    points=describe(points)
+                )
+            )
         if points.ndim != 2 or points.shape[1] != 2:
-            raise ValueError(f"points must have shape (P, 2); got {points.shape}")
+            raise ValueError(
+                _("points must have shape (P, 2); got {points_shape}").format(
+                    points_shape=points.shape
+                )
+            )
         require_finite(points, "points")
         require_within(points, "points", limits.MAX_COORDINATE)
         if not isinstance(sizes, np.ndarray) or sizes.dtype.kind not in "iu" or sizes.ndim != 1:
-            raise TypeError(f"sizes must be a 1-D integer numpy array; got {describe(sizes)}")
+            raise TypeError(
+                _("sizes must be a 1-D integer numpy array; got {sizes}").format(
+                    sizes=describe(sizes)
+                )
+            )
         if sizes.size and sizes.min() < 1:
-            raise ValueError(f"sizes must be >= 1 (control points per curve); got {sizes.min()}")
+            raise ValueError(
+                _("sizes must be >= 1 (control points per curve); got {smallest}").format(
+                    smallest=sizes.min()
+                )
+            )
         if int(sizes.sum()) != len(points):
             raise ValueError(
-                f"sizes must add up to the {len(points)} points; they add up to {int(sizes.sum())}"
+                _("sizes must add up to the {points_count} points; they add up to {total}").format(
+                    points_count=len(points), total=int(sizes.sum())
+                )
             )
 
     @property
@@ -142,7 +161,9 @@ class Curves:
         points = self.points - shift
         if points.size and np.abs(points).max() > limits.MAX_COORDINATE:
             raise ValueError(
-                f"offset {shift.tolist()} moves the points beyond +-{limits.MAX_COORDINATE:g}"
+                _("offset {shift} moves the points beyond +-{most:g}").format(
+                    shift=shift.tolist(), most=limits.MAX_COORDINATE
+                )
             )
         return Curves(points, self.sizes)
 
@@ -190,7 +211,11 @@ def _nested_twice(value: Any) -> bool:
 
 def _curve_list(curves: Any, name: str) -> Curves:
     if len(curves) == 0:
-        raise ValueError(f"{name} must hold at least one curve; got {describe(curves)}")
+        raise ValueError(
+            _("{name} must hold at least one curve; got {curves}").format(
+                name=name, curves=describe(curves)
+            )
+        )
     arrays = []
     for index, curve in enumerate(curves):
         array = curve if isinstance(curve, np.ndarray) else None
@@ -228,13 +253,19 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
     [[[0.0, 0.0], [2.0, 0.0]], [[2.0, 0.0], [2.0, 2.0]], [[2.0, 2.0], [0.0, 0.0]]]
     """
     if not isinstance(path, Path):
-        raise TypeError(f"{name} must be a matplotlib.path.Path; got {describe(path)}")
+        raise TypeError(
+            _("{name} must be a matplotlib.path.Path; got {path}").format(
+                name=name, path=describe(path)
+            )
+        )
     if height is not None:
         height = as_positive_float(height, "height", allow_zero=True)
     vertices = as_float_array(path.vertices, f"{name}.vertices")
     if vertices.ndim != 2 or vertices.shape[1] != 2:
         raise ValueError(
-            f"{name}.vertices must have shape (V, 2) in the plane; got shape {vertices.shape}"
+            _(
+                "{name}.vertices must have shape (V, 2) in the plane; got shape {vertices_shape}"
+            ).format(name=name, vertices_shape=vertices.shape)
         )
     codes = path.codes
     if codes is None:
@@ -243,8 +274,10 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
     codes = np.asarray(codes)
     if codes.shape != (len(vertices),):
         raise ValueError(
-            f"{name}.codes must have shape ({len(vertices)},), one code per vertex; "
-            f"got shape {codes.shape}"
+            _(
+                "{name}.codes must have shape ({vertices_count},), one code per vertex; got shape "
+                "{codes_shape}"
+            ).format(name=name, vertices_count=len(vertices), codes_shape=codes.shape)
         )
     stop = np.flatnonzero(codes == Path.STOP)
     if len(stop):
@@ -255,10 +288,16 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
     if not known.all():
         index = int(np.flatnonzero(~known)[0])
         raise ValueError(
-            f"{name}.codes must hold only {_CODE_NAMES}; got code {codes[index]} at vertex {index}"
+            _("{name}.codes must hold only {most}; got code {codes} at vertex {index}").format(
+                name=name, most=_CODE_NAMES, codes=codes[index], index=index
+            )
         )
     if codes[0] != Path.MOVETO:
-        raise ValueError(f"{name}.codes must start with MOVETO (1); got code {codes[0]}")
+        raise ValueError(
+            _("{name}.codes must start with MOVETO (1); got code {codes}").format(
+                name=name, codes=codes[0]
+            )
+        )
     require_finite(vertices[codes != Path.CLOSEPOLY], f"{name}.vertices")
     # CLOSEPOLY's vertex is ignored, whatever it holds (often 0 or NaN).
     require_finite(np.where((codes == Path.CLOSEPOLY)[:, None], 0.0, vertices), f"{name}.vertices")
@@ -274,9 +313,15 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
     )
     if broken.any():
         raise ValueError(
-            f"{name}.codes: CURVE3 vertices come in pairs and CURVE4 vertices in threes; "
-            f"a run of {lengths[broken][0]} code-{run_codes[broken][0]} vertices ends at vertex "
-            f"{int(np.cumsum(lengths)[broken][0]) - 1}"
+            _(
+                "{name}.codes: CURVE3 vertices come in pairs and CURVE4 vertices in threes; a run "
+                "of {length} code-{code} vertices ends at vertex {end}"
+            ).format(
+                name=name,
+                length=lengths[broken][0],
+                code=run_codes[broken][0],
+                end=int(np.cumsum(lengths)[broken][0]) - 1,
+            )
         )
     subpath_start = np.maximum.accumulate(np.where(codes == Path.MOVETO, index, 0))
     command = (
@@ -321,8 +366,10 @@ def matplotlib_path(curves: Curves) -> Path:
     if not drawable.all():
         bad = int(np.flatnonzero(~drawable)[0])
         raise ValueError(
-            "points: Agg draws Bézier curves of degree 1 to 3 (2 to 4 control points); "
-            f"curve {bad} has {sizes[bad]} points"
+            _(
+                "points: Agg draws Bézier curves of degree 1 to 3 (2 to 4 control points); curve "
+                "{bad} has {sizes} points"
+            ).format(bad=bad, sizes=sizes[bad])
         )
     joined = curves.joined()
     first = np.zeros(len(curves.points), dtype=bool)
@@ -350,7 +397,11 @@ def wang_counts(control: np.ndarray, tolerance: float) -> np.ndarray:
     """
     control = as_float_array(control, "control")
     if control.ndim != 3 or control.shape[1] == 0 or control.shape[2] != 2:
-        raise ValueError(f"control must be a stack (M, N, 2) of curves; got shape {control.shape}")
+        raise ValueError(
+            _("control must be a stack (M, N, 2) of curves; got shape {control_shape}").format(
+                control_shape=control.shape
+            )
+        )
     require_finite(control, "control")
     tolerance = as_positive_float(tolerance, "tolerance")
     degree = control.shape[1] - 1
@@ -381,8 +432,10 @@ def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.nd
         require_bounded_evaluation(size, int(count.sum()) + len(count), "curves")
         if count.sum() > limits.MAX_SAMPLES:
             raise ValueError(
-                f"tolerance {tolerance:g} would need {count.sum()} vertices, more than the "
-                f"{limits.MAX_SAMPLES} allowed: raise it"
+                _(
+                    "tolerance {tolerance:g} would need {total} vertices, more than the {most} "
+                    "allowed: raise it"
+                ).format(tolerance=tolerance, total=count.sum(), most=limits.MAX_SAMPLES)
             )
         counts[which] = count
         pieces[size] = (which, _uniform_points(control, count))
@@ -425,7 +478,9 @@ def flatten_each(
     curves = _as_curves(curves)
     if not callable(flatten_one):
         raise TypeError(
-            f"flatten_one must be a function of the control points; got {describe(flatten_one)}"
+            _("flatten_one must be a function of the control points; got {flatten_one}").format(
+                flatten_one=describe(flatten_one)
+            )
         )
     parts = [_vertices_of(flatten_one(control), control) for control in curves.split()]
     counts = np.array([len(part) for part in parts], dtype=np.int64)
@@ -440,20 +495,25 @@ def _vertices_of(part: Any, control: np.ndarray) -> np.ndarray:
         array = np.asarray(part, dtype=float)
     except (TypeError, ValueError):
         raise TypeError(
-            f"flatten_one must return (K, 2) vertices; for control {control.tolist()} it "
-            f"returned {describe(part)}"
+            _(
+                "flatten_one must return (K, 2) vertices; for control {control} it returned {part}"
+            ).format(control=control.tolist(), part=describe(part))
         ) from None
     if array.ndim != 2 or array.shape[1] != 2 or len(array) == 0:
         raise ValueError(
-            f"flatten_one must return (K, 2) vertices, K >= 1; for control {control.tolist()} "
-            f"it returned shape {array.shape}"
+            _(
+                "flatten_one must return (K, 2) vertices, K >= 1; for control {control} it "
+                "returned shape {array_shape}"
+            ).format(control=control.tolist(), array_shape=array.shape)
         )
     bad = ~np.isfinite(array)
     if bad.any() or np.abs(array).max() > limits.MAX_COORDINATE:
         worst = array[bad][0] if bad.any() else array.flat[int(np.abs(array).argmax())]
         raise ValueError(
-            f"flatten_one must return finite vertices within +-{limits.MAX_COORDINATE:g}; for "
-            f"control {control.tolist()} it returned a vertex coordinate {worst:g}"
+            _(
+                "flatten_one must return finite vertices within +-{most:g}; for control {control} "
+                "it returned a vertex coordinate {worst:g}"
+            ).format(most=limits.MAX_COORDINATE, control=control.tolist(), worst=worst)
         )
     return array
 
@@ -499,7 +559,9 @@ def path_curves(path: Any, height: float) -> list[np.ndarray]:
     [[[0.0, 5.0], [4.0, 5.0]], [[4.0, 5.0], [0.0, 2.0]], [[0.0, 2.0], [0.0, 5.0]]]
     """
     if not isinstance(path, Path):
-        raise TypeError(f"path must be a matplotlib.path.Path; got {describe(path)}")
+        raise TypeError(
+            _("path must be a matplotlib.path.Path; got {path}").format(path=describe(path))
+        )
     height = as_positive_float(height, "height", allow_zero=True)
     return curves_of_path(path, height=height, name="path").split()
 
@@ -525,19 +587,31 @@ def text_curves(
     1.0
     """
     if not isinstance(text, str) or not text.strip():
-        raise ValueError(f"text must be a non-empty string with some ink; got {describe(text)}")
+        raise ValueError(
+            _("text must be a non-empty string with some ink; got {text}").format(
+                text=describe(text)
+            )
+        )
     if len(text) > limits.MAX_TEXT_LENGTH:
         raise ValueError(
-            f"text must be at most {limits.MAX_TEXT_LENGTH} characters; got {len(text)}"
+            _("text must be at most {most} characters; got {text_count}").format(
+                most=limits.MAX_TEXT_LENGTH, text_count=len(text)
+            )
         )
     size = as_positive_float(size, "size")
     margin = as_positive_float(margin, "margin", allow_zero=True)
     if not isinstance(family, str):
-        raise TypeError(f"family must be a font family name (str); got {describe(family)}")
+        raise TypeError(
+            _("family must be a font family name (str); got {family}").format(
+                family=describe(family)
+            )
+        )
     outline = TextPath((0.0, 0.0), text, size=size, prop=FontProperties(family=family))
     curves = curves_of_path(outline, height=0.0, name="text")
     if len(curves.sizes) == 0:
-        raise ValueError(f"text must hold some ink; {text!r} has no outline")
+        raise ValueError(
+            _("text must hold some ink; {text} has no outline").format(text=repr(text))
+        )
     low = curves.points.min(axis=0)
     return curves.moved(low - margin).split()
 
@@ -558,5 +632,9 @@ def canvas_for(curves: Any, margin: float = 2.0) -> tuple[int, int]:
 
 def _as_curves(curves: Any) -> Curves:
     if not isinstance(curves, Curves):
-        raise TypeError(f"curves must be Curves, e.g. from as_path(points); got {describe(curves)}")
+        raise TypeError(
+            _("curves must be Curves, e.g. from as_path(points); got {curves}").format(
+                curves=describe(curves)
+            )
+        )
     return curves

@@ -25,6 +25,7 @@ from course._validate import (
     describe,
     require_finite,
 )
+from course.i18n import _
 
 __all__ = [
     "GUIDANCE",
@@ -72,35 +73,55 @@ class PoissonProblem:
             array = getattr(self, name)
             if not isinstance(array, np.ndarray) or array.dtype.kind not in "fiu":
                 raise TypeError(
-                    f"{name} must be a numpy array of real numbers; got {describe(array)}"
+                    _("{name} must be a numpy array of real numbers; got {array}").format(
+                        name=name, array=describe(array)
+                    )
                 )
             require_finite(array, name)
         values, region, source = self.values, self.region, self.source
         if not (values.ndim == 2 or (values.ndim == 3 and values.shape[2] == 3)):
-            raise ValueError(f"values must have shape (h, w) or (h, w, 3); got {values.shape}")
+            raise ValueError(
+                _("values must have shape (h, w) or (h, w, 3); got {values_shape}").format(
+                    values_shape=values.shape
+                )
+            )
         if min(values.shape[:2]) < 3 or values.size > limits.MAX_PIXELS * 3:
             raise ValueError(
-                f"values must be at least 3 x 3 and at most {limits.MAX_PIXELS} pixels; "
-                f"got shape {values.shape}"
+                _(
+                    "values must be at least 3 x 3 and at most {most} pixels; got shape "
+                    "{values_shape}"
+                ).format(most=limits.MAX_PIXELS, values_shape=values.shape)
             )
         if source.shape != values.shape:
             raise ValueError(
-                f"source must have the shape of values, {values.shape}; got {source.shape}"
+                _(
+                    "source must have the shape of values, {values_shape}; got {source_shape}"
+                ).format(values_shape=values.shape, source_shape=source.shape)
             )
         if not isinstance(region, np.ndarray) or region.dtype != bool:
-            raise TypeError(f"region must be a boolean numpy array; got {describe(region)}")
+            raise TypeError(
+                _("region must be a boolean numpy array; got {region}").format(
+                    region=describe(region)
+                )
+            )
         if region.shape != values.shape[:2]:
-            raise ValueError(f"region must have shape {values.shape[:2]}; got {region.shape}")
+            raise ValueError(
+                _("region must have shape {values_size}; got {region_shape}").format(
+                    values_size=values.shape[:2], region_shape=region.shape
+                )
+            )
         ring = np.concatenate([region[0], region[-1], region[:, 0], region[:, -1]])
         if ring.any():
             raise ValueError(
-                "region must be False on the outer ring, so each pixel has 4 neighbours"
+                _("region must be False on the outer ring, so each pixel has 4 neighbours")
             )
         if not region.any():
-            raise ValueError("region selects no pixel: there is nothing to solve")
+            raise ValueError(_("region selects no pixel: there is nothing to solve"))
         if not isinstance(self.corner, tuple) or len(self.corner) != 2:
             raise ValueError(
-                f"corner must be a pair (x, y) of integers; got {describe(self.corner)}"
+                _("corner must be a pair (x, y) of integers; got {corner}").format(
+                    corner=describe(self.corner)
+                )
             )
         as_int(self.corner[0], "corner[0] (x)")
         as_int(self.corner[1], "corner[1] (y)")
@@ -185,15 +206,23 @@ class PoissonProblem:
         kind = "(H, W)" if self.values.ndim == 2 else "(H, W, 3)"
         if array.ndim != self.values.ndim or array.shape[2:] != self.values.shape[2:]:
             raise ValueError(
-                f"{name} must be an image of shape {kind}, like the problem's values "
-                f"{self.values.shape}; got shape {array.shape}"
+                _(
+                    "{name} must be an image of shape {kind}, like the problem's values "
+                    "{values_shape}; got shape {array_shape}"
+                ).format(
+                    name=name, kind=kind, values_shape=self.values.shape, array_shape=array.shape
+                )
             )
         x, y = self.corner
         height, width = self.region.shape
         if not (0 <= x and x + width <= array.shape[1] and 0 <= y and y + height <= array.shape[0]):
             raise ValueError(
-                f"{name} of shape {array.shape[:2]} must hold the problem's window, "
-                f"{height} x {width} pixels at (x, y) = ({x}, {y})"
+                _(
+                    "{name} of shape {array_size} must hold the problem's window, {height} x "
+                    "{width} pixels at (x, y) = ({x}, {y})"
+                ).format(
+                    name=name, array_size=array.shape[:2], height=height, width=width, x=x, y=y
+                )
             )
         require_finite(array, name)
         return array
@@ -202,7 +231,9 @@ class PoissonProblem:
         array = as_float_array(solution, "solution")
         if array.shape != self.values.shape:
             raise ValueError(
-                f"solution must have the problem's shape {self.values.shape}; got {array.shape}"
+                _(
+                    "solution must have the problem's shape {values_shape}; got {array_shape}"
+                ).format(values_shape=self.values.shape, array_shape=array.shape)
             )
         require_finite(array, "solution")
         return array
@@ -245,9 +276,11 @@ def inpaint_problem(image: Any, mask: Any) -> PoissonProblem:
     if edge.any():
         where = (int(columns[edge][0]), int(rows[edge][0]))
         raise ValueError(
-            f"mask touches the image border, e.g. at (x, y) = {where}: inpaint needs known "
-            "pixels all around the hole, so leave the first and last rows and columns "
-            "unmasked (or pad the image)"
+            _(
+                "mask touches the image border, e.g. at (x, y) = {where}: inpaint needs known "
+                "pixels all around the hole, so leave the first and last rows and columns unmasked "
+                "(or pad the image)"
+            ).format(where=where)
         )
     top, left = rows.min() - 1, columns.min() - 1
     window = (slice(top, rows.max() + 2), slice(left, columns.max() + 2))
@@ -343,7 +376,9 @@ def paste_window(problem: PoissonProblem, image: Any, window: Any) -> np.ndarray
     window = as_float_array(window, "window")
     if window.shape != problem.values.shape:
         raise ValueError(
-            f"window must have the problem's shape {problem.values.shape}; got {window.shape}"
+            _("window must have the problem's shape {values_shape}; got {window_shape}").format(
+                values_shape=problem.values.shape, window_shape=window.shape
+            )
         )
     require_finite(window, "window")
     return _paste_window(problem, image, window)
@@ -382,14 +417,25 @@ def window_in(problem: PoissonProblem, image: Any, corner: Any) -> np.ndarray:
     height, width = problem.region.shape
     if array.ndim != problem.values.ndim or array.shape[2:] != problem.values.shape[2:]:
         raise ValueError(
-            f"image must have the layout of the problem's values {problem.values.shape}; "
-            f"got shape {array.shape}"
+            _(
+                "image must have the layout of the problem's values {values_shape}; got shape "
+                "{array_shape}"
+            ).format(values_shape=problem.values.shape, array_shape=array.shape)
         )
     if not (0 <= x and x + width <= array.shape[1] and 0 <= y and y + height <= array.shape[0]):
         raise ValueError(
-            f"image of shape {array.shape[:2]} at corner (x, y) = ({x0}, {y0}) does not hold "
-            f"the problem's window, {height} x {width} pixels at ({problem.corner[0]}, "
-            f"{problem.corner[1]})"
+            _(
+                "image of shape {array_size} at corner (x, y) = ({x0}, {y0}) does not hold the "
+                "problem's window, {height} x {width} pixels at ({corner_x}, {corner_y})"
+            ).format(
+                array_size=array.shape[:2],
+                x0=x0,
+                y0=y0,
+                height=height,
+                width=width,
+                corner_x=problem.corner[0],
+                corner_y=problem.corner[1],
+            )
         )
     window = array[y : y + height, x : x + width]
     require_finite(window, "image")
@@ -414,7 +460,11 @@ def window_at(image: Any, corner: Any, shape: Any) -> np.ndarray:
     """
     array = as_float_array(image, "image")
     if array.ndim not in (2, 3):
-        raise ValueError(f"image must be (H, W) or (H, W, C); got shape {array.shape}")
+        raise ValueError(
+            _("image must be (H, W) or (H, W, C); got shape {array_shape}").format(
+                array_shape=array.shape
+            )
+        )
     x, y = _as_corner(corner, "corner")
     height, width = as_shape(shape, "shape")
     window = _window_at(array, (x, y), (height, width))
@@ -433,7 +483,11 @@ def _window_at(image: np.ndarray, corner: tuple[int, int], shape: tuple[int, int
 
 def _as_corner(corner: Any, name: str) -> tuple[int, int]:
     if isinstance(corner, (str, bytes)) or not hasattr(corner, "__len__") or len(corner) != 2:
-        raise ValueError(f"{name} must be a pair (x, y) of integers; got {describe(corner)}")
+        raise ValueError(
+            _("{name} must be a pair (x, y) of integers; got {corner}").format(
+                name=name, corner=describe(corner)
+            )
+        )
     return as_int(corner[0], f"{name}[0] (x)"), as_int(corner[1], f"{name}[1] (y)")
 
 
@@ -452,7 +506,9 @@ def planes_of(image: Any) -> np.ndarray:
     array = as_float_array(image, "image")
     if array.ndim not in (2, 3) or 0 in array.shape:
         raise ValueError(
-            f"image must be a non-empty (h, w) or (h, w, C) array; got shape {array.shape}"
+            _(
+                "image must be a non-empty (h, w) or (h, w, C) array; got shape {array_shape}"
+            ).format(array_shape=array.shape)
         )
     require_finite(array, "image")
     return array[None] if array.ndim == 2 else np.ascontiguousarray(np.moveaxis(array, -1, 0))
@@ -474,15 +530,23 @@ def image_of(planes: Any, like: Any) -> np.ndarray:
     """
     array = as_float_array(planes, "planes")
     if array.ndim != 3 or 0 in array.shape:
-        raise ValueError(f"planes must be a non-empty (C, h, w) array; got shape {array.shape}")
+        raise ValueError(
+            _("planes must be a non-empty (C, h, w) array; got shape {array_shape}").format(
+                array_shape=array.shape
+            )
+        )
     layout = np.shape(like) if isinstance(like, np.ndarray) else None
     if layout is None or len(layout) not in (2, 3):
-        raise TypeError(f"like must be an (h, w) or (h, w, C) array; got {describe(like)}")
+        raise TypeError(
+            _("like must be an (h, w) or (h, w, C) array; got {like}").format(like=describe(like))
+        )
     expected = (1, *layout) if len(layout) == 2 else (layout[2], *layout[:2])
     if array.shape != expected:
         raise ValueError(
-            f"planes must have shape {expected}, channels first, for like of shape {layout}; "
-            f"got {array.shape}"
+            _(
+                "planes must have shape {expected}, channels first, for like of shape {layout}; "
+                "got {array_shape}"
+            ).format(expected=expected, layout=layout, array_shape=array.shape)
         )
     require_finite(array, "planes")
     return _image_of(array, like)
@@ -498,8 +562,10 @@ def as_problem(problem: Any) -> PoissonProblem:
     """``problem`` itself, if it is a :class:`PoissonProblem`; else TypeError."""
     if not isinstance(problem, PoissonProblem):
         raise TypeError(
-            "problem must be a PoissonProblem, e.g. from clone_problem or inpaint_problem; "
-            f"got {describe(problem)}"
+            _(
+                "problem must be a PoissonProblem, e.g. from clone_problem or inpaint_problem; got "
+                "{problem}"
+            ).format(problem=describe(problem))
         )
     return problem
 
@@ -515,26 +581,49 @@ def clone_inputs(
     background = _as_float_image(background, "background")
     foreground = _as_float_image(foreground, "foreground")
     if background.ndim != foreground.ndim:
-        kinds = {2: "gray", 3: "RGB"}
+        kinds = {2: _("gray"), 3: "RGB"}
         raise ValueError(
-            f"foreground is {kinds[foreground.ndim]} (shape {foreground.shape}) but background "
-            f"is {kinds[background.ndim]} (shape {background.shape}): both must be gray or "
-            "both RGB (course.images.to_gray converts)"
+            _(
+                "foreground is {foreground_kind} (shape {foreground_shape}) but background is "
+                "{background_kind} "
+                "(shape {background_shape}): both must be gray or both RGB (course.images.to_gray "
+                "converts)"
+            ).format(
+                foreground_kind=kinds[foreground.ndim],
+                foreground_shape=foreground.shape,
+                background_kind=kinds[background.ndim],
+                background_shape=background.shape,
+            )
         )
     x, y = _as_offset(offset)
     height, width = foreground.shape[:2]
     full_height, full_width = background.shape[:2]
     if not (0 <= x and x + width <= full_width and 0 <= y and y + height <= full_height):
         raise ValueError(
-            f"foreground of shape {foreground.shape[:2]} at offset (x, y) = ({x}, {y}) does not "
-            f"fit inside background of shape {background.shape[:2]}: it would cover columns "
-            f"{x} to {x + width - 1} and rows {y} to {y + height - 1}; the background has "
-            f"columns 0 to {full_width - 1} and rows 0 to {full_height - 1}"
+            _(
+                "foreground of shape {foreground_size} at offset (x, y) = ({x}, {y}) does not fit "
+                "inside background of shape {background_size}: it would cover columns {x} to "
+                "{right} "
+                "and rows {y} to {bottom}; the background has columns 0 to {full_width} and rows 0 "
+                "to "
+                "{full_height}"
+            ).format(
+                foreground_size=foreground.shape[:2],
+                x=x,
+                y=y,
+                background_size=background.shape[:2],
+                right=x + width - 1,
+                bottom=y + height - 1,
+                full_width=full_width - 1,
+                full_height=full_height - 1,
+            )
         )
     if height < 3 or width < 3:
         raise ValueError(
-            f"foreground must be at least 3 x 3 pixels: its outer ring is the boundary and the "
-            f"region lies inside it; got shape {foreground.shape[:2]}"
+            _(
+                "foreground must be at least 3 x 3 pixels: its outer ring is the boundary and the "
+                "region lies inside it; got shape {foreground_size}"
+            ).format(foreground_size=foreground.shape[:2])
         )
     if mask is not None:
         mask = _as_mask(mask, "mask", (height, width), "the foreground's (h, w)")
@@ -543,9 +632,11 @@ def clone_inputs(
         if ring.any():
             rows, columns = np.nonzero(ring)
             raise ValueError(
-                "mask must be False on the foreground's outer ring (its first and last rows "
-                "and columns), which is the boundary and takes the background's values; got "
-                f"{rows.size} masked pixels there, e.g. (x, y) = ({columns[0]}, {rows[0]})"
+                _(
+                    "mask must be False on the foreground's outer ring (its first and last rows "
+                    "and columns), which is the boundary and takes the background's values; got "
+                    "{size} masked pixels there, e.g. (x, y) = ({columns}, {rows})"
+                ).format(size=rows.size, columns=columns[0], rows=rows[0])
             )
     return background, foreground, (x, y), mask
 
@@ -577,16 +668,21 @@ def _same_kind_of_dtype(background: Any, foreground: Any) -> None:
     floating = [np.issubdtype(kind, np.floating) for kind in kinds]
     if floating[0] != floating[1]:
         raise TypeError(
-            f"foreground has dtype {kinds[1]} but background has dtype {kinds[0]}: convert both "
-            "to float images in [0, 1] (a uint8 image / 255)"
+            _(
+                "foreground has dtype {foreground_dtype} but background has dtype "
+                "{background_dtype}: convert both to "
+                "float images in [0, 1] (a uint8 image / 255)"
+            ).format(foreground_dtype=kinds[1], background_dtype=kinds[0])
         )
 
 
 def _as_offset(offset: Any) -> tuple[int, int]:
     if isinstance(offset, (str, bytes)) or not hasattr(offset, "__len__") or len(offset) != 2:
         raise ValueError(
-            "offset must be a pair (x, y) of integers, the column and row of the foreground's "
-            f"top-left pixel in the background; got {describe(offset)}"
+            _(
+                "offset must be a pair (x, y) of integers, the column and row of the foreground's "
+                "top-left pixel in the background; got {offset}"
+            ).format(offset=describe(offset))
         )
     return as_int(offset[0], "offset[0] (x)"), as_int(offset[1], "offset[1] (y)")
 
@@ -598,12 +694,21 @@ def _as_mask(mask: Any, name: str, shape: tuple[int, int], what: str) -> np.ndar
         require_finite(values, name)
         if not np.isin(values, (0.0, 1.0)).all():
             raise ValueError(
-                f"{name} must be boolean (or 0 and 1); got values from {values.min():g} to "
-                f"{values.max():g}"
+                _(
+                    "{name} must be boolean (or 0 and 1); got values from {lowest:g} to {highest:g}"
+                ).format(name=name, lowest=values.min(), highest=values.max())
             )
         array = values == 1.0
     if array.shape != shape:
-        raise ValueError(f"{name} must have shape {shape}, {what}; got shape {array.shape}")
+        raise ValueError(
+            _("{name} must have shape {shape}, {what}; got shape {array_shape}").format(
+                name=name, shape=shape, what=what, array_shape=array.shape
+            )
+        )
     if not array.any():
-        raise ValueError(f"{name} is empty: it selects no pixel, so there is nothing to solve")
+        raise ValueError(
+            _("{name} is empty: it selects no pixel, so there is nothing to solve").format(
+                name=name
+            )
+        )
     return array.copy()

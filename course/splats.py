@@ -260,8 +260,9 @@ def normalised_centres(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.
     p0 - (1, 1), whose centres (+0.5) are the four around the point. Each
     gets ``sqrt(2) - d`` (d: distance from the point to its centre; sqrt(2)
     is the largest possible), divided by their sum, so the weights add to 1.
-    Unlike bilinear weights they never vanish: a point at a pixel's centre
-    still gives its three neighbours about 0.19 each.
+    Unlike bilinear weights, which give a point at a pixel's centre to that
+    pixel alone, these still give its two edge neighbours about 0.18 each
+    (the diagonal one gets 0).
 
     Examples
     --------

@@ -164,6 +164,16 @@ def test_arc_length_mistakes_are_named_and_plotted(student, mistake):
     assert "first wrong value" in result.message
 
 
+def test_a_lone_sample_weighted_1_is_not_called_counting():
+    # Right everywhere but the last case, one sample: counting would have failed case 1.
+    def lone_gets_one(samples):
+        return correct_weights(samples) if len(samples) > 1 else np.array([1.0])
+
+    result = check.arc_length_weights(lone_gets_one)
+    assert not result and result.mistake is None
+    assert "case 5" in result.message
+
+
 def test_weights_summing_to_the_length_but_misplaced_fail():
     def all_at_the_ends(samples):
         weights = np.zeros(len(samples))

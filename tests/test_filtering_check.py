@@ -53,6 +53,17 @@ def sobel_magnitude(image, border="replicate"):
     return np.hypot(correlate(image, SOBEL_X, border), correlate(image, SOBEL_X.T, border))
 
 
+def numpy_reflect_sobel(image):
+    """Sobel on np.pad(mode="reflect"), the mirror about the edge pixel: a naming trap."""
+    array = np.asarray(image, dtype=float)
+    padded = np.pad(array, [(1, 1), (1, 1)] + [(0, 0)] * (array.ndim - 2), mode="reflect")
+    height, width = array.shape[:2]
+    windows = [[padded[dy : dy + height, dx : dx + width] for dx in range(3)] for dy in range(3)]
+    gx = sum(SOBEL_X[dy, dx] * windows[dy][dx] for dy in range(3) for dx in range(3))
+    gy = sum(SOBEL_X.T[dy, dx] * windows[dy][dx] for dy in range(3) for dx in range(3))
+    return np.hypot(gx, gy)
+
+
 def test_the_test_students_agree_with_the_library():
     rng = np.random.default_rng(0)
     for image in (rng.random((5, 7)), rng.random((1, 1)), rng.random((4, 5, 3))):
@@ -158,6 +169,7 @@ def test_blur_mistakes_are_named_with_a_map_and_the_first_pixel(student, mistake
         (lambda image: np.clip(sobel_magnitude(image), 0, 1), "clipped to 1"),
         (lambda image: np.abs(correlate(image, SOBEL_X)), "Gx alone"),
         (_frame_zero(sobel_magnitude), "the frame skipped"),
+        (numpy_reflect_sobel, "numpy's 'reflect' padding"),
     ],
 )
 def test_edge_mistakes_are_named_with_a_map(student, mistake):

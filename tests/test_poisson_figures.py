@@ -1,5 +1,7 @@
 """Lesson 08's figures: the stored record of the lab's sweeps is what the solvers compute."""
 
+from functools import partial
+
 import numpy as np
 import pytest
 from chinese import check_chinese_figure
@@ -113,3 +115,36 @@ def test_the_lab_s_8000_sweeps_are_called_the_lab_skeleton_s(monkeypatch):
     assert "after the lab skeleton's 8000 sweeps" in still.caption
     texts = [text.get_text() for text in drawn[0].axes[0].texts]
     assert "the lab skeleton's 8000" in texts
+
+
+def _boundary(background, foreground, offset):
+    return poisson.correction_boundary(background, foreground, offset)
+
+
+def _jacobi(g, tolerance, in_place=False):
+    g = np.array(g, dtype=float)
+    sweeps = 0
+    while True:
+        around = g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]
+        if np.abs(around - 4 * g[1:-1, 1:-1]).max() < tolerance:
+            return g, sweeps
+        if in_place:  # Gauss-Seidel: each update read by the next, the lab's loop
+            for y in range(1, g.shape[0] - 1):
+                for x in range(1, g.shape[1] - 1):
+                    g[y, x] = (g[y - 1, x] + g[y + 1, x] + g[y, x - 1] + g[y, x + 1]) / 4
+        else:
+            g[1:-1, 1:-1] = around / 4
+        sweeps += 1
+
+
+def test_the_tiny_clone_draws_the_student_s_functions_only_when_they_do_what_the_checks_ask():
+    ok = str(figures.tiny_clone_figure(_boundary, _jacobi, zoom=10))
+    assert ok.startswith("your boundary_exercise and jacobi_exercise: 28 sweeps")
+    gauss_seidel = partial(_jacobi, in_place=True)
+    ring = poisson.correction_boundary(
+        figures.TINY_BACKGROUND, figures.TINY_FOREGROUND, figures.TINY_OFFSET
+    )
+    assert gauss_seidel(ring, 1e-6)[1] < 28
+    for boundary, jacobi in ((_boundary, gauss_seidel), (None, None), (_boundary, None)):
+        shown = str(figures.tiny_clone_figure(boundary, jacobi, zoom=10))
+        assert shown.startswith("the library's (yours do not pass their checks yet): 28 sweeps")

@@ -519,7 +519,8 @@ def _weight_mistakes() -> tuple[Mistake, ...]:
                 "counts the samples in it, and follows the curve's speed. Weigh each by the "
                 "length of curve it stands for."
             ),
-            lambda samples: np.ones(len(samples)),
+            # A lone sample cannot tell counting from a slip at the ends alone: no answer.
+            lambda samples: np.ones(len(samples)) if len(samples) > 1 else None,
         ),
         Mistake(
             _("the chord after each sample"),

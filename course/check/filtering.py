@@ -283,6 +283,16 @@ EDGE_MISTAKES = (
         lambda image: sobel(image, border="zero"),
     ),
     Mistake(
+        N_("numpy's 'reflect' padding"),
+        N_(
+            "you padded like np.pad(mode='reflect'), which mirrors about the edge pixel "
+            "(d c b | a b c d): on the left and right edges Gx comes out 0, on the top and bottom "
+            "Gy. Repeat the edge pixel instead: np.pad's mode='edge' (scipy calls that rule "
+            "'reflect'; the two libraries use the name for different rules)."
+        ),
+        lambda image: sobel(image, border="reflect"),
+    ),
+    Mistake(
         N_("clipped to 1"),
         N_(
             "your magnitude stops at 1, as writing it into an 8-bit image would: Sobel's runs up "

@@ -158,8 +158,8 @@ class GrayLevelApp(SliderApp):
     Parameters
     ----------
     level : float
-        Initial slider value in [0, 1], rounded to the slider's steps of 1/72
-        (eight per ninth), as the browser rounds it when it shows the slider.
+        Initial slider value in [0, 1], rounded to the slider's steps of 1/360
+        (forty per ninth), as the browser rounds it when it shows the slider.
     size : int
         Side of the flat patch in pixels (ordered dithering shows 3 times more).
     """

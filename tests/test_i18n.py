@@ -18,6 +18,7 @@ import course.filters
 import course.metrics
 import course.raster
 from course import i18n
+from course.classroom.folders import check_output_folder
 from course.classroom.twins import placeholders
 from course.widgets import supersampling_figures
 from course.widgets.base import parse_points
@@ -232,6 +233,7 @@ def test_no_function_hides_the_translation_function_behind_a_throwaway_name():
         (lambda: course.metrics.rmse(np.zeros((2, 2)), np.zeros((3, 3))), "same shape"),
         (lambda: parse_points(None), "text must be a string such as"),
         (lambda: SupersampleApp(size=1000, out_size=1), "out_size must be at least"),
+        (lambda: check_output_folder(3, False), "out: expected a folder path"),
     ],
 )
 def test_an_error_raised_to_a_student_speaks_their_language(call, english):

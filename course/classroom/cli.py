@@ -35,6 +35,7 @@ from course.classroom.notebooks import (
     language_folder,
 )
 from course.classroom.registry import lessons
+from course.i18n import _
 
 __all__ = ["app_command", "lab_command", "main"]
 
@@ -73,11 +74,23 @@ def lab_command(
     '--LabApp.default_url=/lab/tree/student/zh-CN/00_index.ipynb'
     """
     if isinstance(notebooks, bool) or not isinstance(notebooks, (str, os.PathLike)):
-        raise TypeError(f"notebooks: expected a folder path; got {type(notebooks).__name__}")
+        raise TypeError(
+            _("notebooks: expected a folder path; got {notebooks_type}").format(
+                notebooks_type=type(notebooks).__name__
+            )
+        )
     if not isinstance(teacher, bool):
-        raise TypeError(f"teacher: expected True or False; got {type(teacher).__name__}")
+        raise TypeError(
+            _("teacher: expected True or False; got {teacher_type}").format(
+                teacher_type=type(teacher).__name__
+            )
+        )
     if not isinstance(extra, list) or not all(isinstance(option, str) for option in extra):
-        raise TypeError(f"extra: expected a list of jupyter lab options; got {extra!r:.60}")
+        raise TypeError(
+            _("extra: expected a list of jupyter lab options; got {extra:.60}").format(
+                extra=repr(extra)
+            )
+        )
     notebooks = Path(notebooks)
     root = notebooks.resolve().parent
     opened = language_folder(notebooks.resolve() if teacher else root / "student", language)
@@ -109,11 +122,21 @@ def app_command(notebooks: str | Path, port: int, extra: list[str]) -> list[str]
     '--Voila.kernel_websocket_connection_class=course.classroom.serving.PromptConnection'
     """
     if isinstance(notebooks, bool) or not isinstance(notebooks, (str, os.PathLike)):
-        raise TypeError(f"notebooks: expected a folder path; got {type(notebooks).__name__}")
+        raise TypeError(
+            _("notebooks: expected a folder path; got {notebooks_type}").format(
+                notebooks_type=type(notebooks).__name__
+            )
+        )
     if isinstance(port, bool) or not isinstance(port, int) or not 0 < port < 65536:
-        raise ValueError(f"port: expected a TCP port, an int from 1 to 65535; got {port!r:.60}")
+        raise ValueError(
+            _("port: expected a TCP port, an int from 1 to 65535; got {port:.60}").format(
+                port=repr(port)
+            )
+        )
     if not isinstance(extra, list) or not all(isinstance(option, str) for option in extra):
-        raise TypeError(f"extra: expected a list of voila options; got {extra!r:.60}")
+        raise TypeError(
+            _("extra: expected a list of voila options; got {extra:.60}").format(extra=repr(extra))
+        )
     return [
         sys.executable,
         "-m",
@@ -132,7 +155,11 @@ def _language(value: str | None) -> str:
     language = value if value is not None else os.environ.get(LANGUAGE_VARIABLE) or DEFAULT_LANGUAGE
     if language not in LANGUAGES:
         named = "--language" if value is not None else LANGUAGE_VARIABLE
-        raise ValueError(f"{named}: expected one of {', '.join(LANGUAGES)}; got {language!r:.60}")
+        raise ValueError(
+            _("{named}: expected one of {choices}; got {language:.60}").format(
+                named=named, choices=", ".join(LANGUAGES), language=repr(language)
+            )
+        )
     return language
 
 
@@ -254,7 +281,11 @@ def main(argv: list[str] | None = None) -> int:
             return subprocess.call(command)
         if args.command == "app":
             if not lessons_folder.is_dir():
-                raise ValueError(f"notebooks: no lessons in {lessons_folder}")
+                raise ValueError(
+                    _("notebooks: no lessons in {lessons_folder}").format(
+                        lessons_folder=lessons_folder
+                    )
+                )
             return subprocess.call(app_command(lessons_folder, args.port, extra))
         if args.command == "map" and args.readme:
             changed = update_readme(args.readme, args.notebooks)

@@ -268,18 +268,28 @@ def update_readme(readme: str | Path, folder: str | Path = NOTEBOOKS) -> bool:
     """
     readme = Path(readme)
     if not readme.is_file():
-        what = "a folder" if readme.is_dir() else "missing"
-        raise ValueError(f"readme: expected a README file; {readme} is {what}")
+        message = (
+            _("readme: expected a README file; {readme} is a folder")
+            if readme.is_dir()
+            else _("readme: expected a README file; {readme} is missing")
+        )
+        raise ValueError(message.format(readme=readme))
     if not os.access(readme, os.R_OK | os.W_OK):
-        raise ValueError(f"readme: cannot rewrite {readme} (permission denied)")
+        raise ValueError(
+            _("readme: cannot rewrite {readme} (permission denied)").format(readme=readme)
+        )
     try:
         text = readme.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as error:
-        raise ValueError(f"readme: cannot read {readme} ({error})") from None
+        raise ValueError(
+            _("readme: cannot read {readme} ({error})").format(readme=readme, error=error)
+        ) from None
     start, end = README_MARKERS
     if text.count(start) != 1 or text.count(end) != 1 or text.index(start) > text.index(end):
         raise ValueError(
-            f"readme: expected one line {start!r} and, after it, one line {end!r} in {readme}"
+            _("readme: expected one line {start} and, after it, one line {end} in {readme}").format(
+                start=repr(start), end=repr(end), readme=readme
+            )
         )
     prefix = Path(os.path.relpath(Path(folder).resolve(), readme.resolve().parent)).as_posix()
     table = readme_lessons(folder, link_prefix=f"{prefix}/")
@@ -294,7 +304,11 @@ def update_readme(readme: str | Path, folder: str | Path = NOTEBOOKS) -> bool:
         os.replace(temporary, readme)
     except OSError as error:
         temporary.unlink(missing_ok=True)
-        raise ValueError(f"readme: cannot rewrite {readme} ({error.strerror or error})") from None
+        raise ValueError(
+            _("readme: cannot rewrite {readme} ({reason})").format(
+                readme=readme, reason=error.strerror or error
+            )
+        ) from None
     return True
 
 

@@ -51,7 +51,7 @@ from typing import Any
 from course.classroom.folders import check_output_folder
 from course.classroom.notebooks import DEFAULT_LANGUAGE, LANGUAGES, NOTEBOOKS, notebooks
 from course.i18n import LANGUAGES as LOCALES
-from course.i18n import N_, gettext_catalog
+from course.i18n import N_, _, gettext_catalog
 
 # The helpers below __all__'s names (cell_source, check_notebook, notebook_text,
 # read_notebook, solution_bodies, EditionReport) serve this package's other editions.
@@ -128,9 +128,17 @@ def translated(message: str, language: str) -> str:
     '*学生版'
     """
     if not isinstance(message, str):
-        raise TypeError(f"message: expected a str; got {type(message).__name__}")
+        raise TypeError(
+            _("message: expected a str; got {message_type}").format(
+                message_type=type(message).__name__
+            )
+        )
     if language not in LANGUAGES:
-        raise ValueError(f"language: expected one of {', '.join(LANGUAGES)}; got {language!r:.60}")
+        raise ValueError(
+            _("language: expected one of {choices}; got {language:.60}").format(
+                choices=", ".join(LANGUAGES), language=repr(language)
+            )
+        )
     locale = LOCALES[language]
     return message if locale is None else gettext_catalog(locale).gettext(message)
 
@@ -163,7 +171,11 @@ def exercise_stub(source: str) -> str:
     check.area(area)
     """
     if not isinstance(source, str):
-        raise TypeError(f"source: expected a cell's source text; got {type(source).__name__}")
+        raise TypeError(
+            _("source: expected a cell's source text; got {source_type}").format(
+                source_type=type(source).__name__
+            )
+        )
     if BEGIN_SOLUTION in source or END_SOLUTION in source:
         return _scaffold_stub(source)
     lines = source.splitlines()
@@ -184,13 +196,20 @@ def parse_solution(source: str, where: str) -> ast.Module:
     ValueError: cell 3: a solution cell must be valid Python; line 1: invalid syntax
     """
     if not isinstance(source, str):
-        raise TypeError(f"source: expected a cell's source text; got {type(source).__name__}")
+        raise TypeError(
+            _("source: expected a cell's source text; got {source_type}").format(
+                source_type=type(source).__name__
+            )
+        )
     try:
         return ast.parse(source)
     except (SyntaxError, ValueError) as error:  # ValueError: a NUL byte
         raise ValueError(
-            f"{where}: a solution cell must be valid Python; "
-            f"line {getattr(error, 'lineno', '?')}: {getattr(error, 'msg', error)}"
+            _("{where}: a solution cell must be valid Python; line {line}: {problem}").format(
+                where=where,
+                line=getattr(error, "lineno", "?"),
+                problem=getattr(error, "msg", error),
+            )
         ) from None
 
 
@@ -213,8 +232,10 @@ def solution_bodies(source: str) -> list[tuple[int, int, str]]:
     ]
     if not functions:
         raise ValueError(
-            "source: a solution cell must define the exercise's function at top level "
-            f"(def name(...): ...); got no def in:\n{source}"
+            _(
+                "source: a solution cell must define the exercise's function at top level (def "
+                "name(...): ...); got no def in:\n{source}"
+            ).format(source=source)
         )
     lines = source.splitlines()
     bodies = []
@@ -228,8 +249,10 @@ def solution_bodies(source: str) -> list[tuple[int, int, str]]:
         )
         if first.lineno == function.lineno:
             raise ValueError(
-                f"source: put the body of {function.name} on its own lines, not after "
-                f"'def ...:' (line {function.lineno})"
+                _(
+                    "source: put the body of {name} on its own lines, not after 'def ...:' (line "
+                    "{lineno})"
+                ).format(name=function.name, lineno=function.lineno)
             )
         indent = " " * first.col_offset
         if has_docstring:
@@ -265,17 +288,25 @@ def _scaffold_stub(source: str) -> str:
         marker = line.strip()
         if marker == BEGIN_SOLUTION:
             if inside:
-                raise ValueError(f"source: line {number} opens a solution inside another")
+                raise ValueError(
+                    _("source: line {number} opens a solution inside another").format(number=number)
+                )
             inside = True
             kept.append(line[: len(line) - len(line.lstrip())] + STUB_LINE)
         elif marker == END_SOLUTION:
             if not inside:
-                raise ValueError(f"source: line {number} closes a solution never opened")
+                raise ValueError(
+                    _("source: line {number} closes a solution never opened").format(number=number)
+                )
             inside = False
         elif not inside:
             kept.append(line)
     if inside:
-        raise ValueError(f"source: {BEGIN_SOLUTION!r} without {END_SOLUTION!r}")
+        raise ValueError(
+            _("source: {begin} without {end}").format(
+                begin=repr(BEGIN_SOLUTION), end=repr(END_SOLUTION)
+            )
+        )
     return "\n".join(kept)
 
 
@@ -313,23 +344,40 @@ def _tags(cell: dict[str, Any]) -> list[str]:
 def _check_cell(cell: Any, name: str) -> None:
     """Refuse, with a ValueError naming ``name``, a cell nbformat 4 would not read."""
     if not isinstance(cell, dict):
-        raise ValueError(f"{name}: expected a notebook cell (a JSON object); got {cell!r:.60}")
+        raise ValueError(
+            _("{name}: expected a notebook cell (a JSON object); got {cell:.60}").format(
+                name=name, cell=repr(cell)
+            )
+        )
     if cell.get("cell_type") not in ("code", "markdown", "raw"):
         raise ValueError(
-            f"{name}: expected a cell_type of 'code', 'markdown' or 'raw'; "
-            f"got {cell.get('cell_type')!r:.60}"
+            _(
+                "{name}: expected a cell_type of 'code', 'markdown' or 'raw'; got {cell_type:.60}"
+            ).format(name=name, cell_type=repr(cell.get("cell_type")))
         )
     source = cell.get("source")
     if not isinstance(source, str) and not (
         isinstance(source, list) and all(isinstance(line, str) for line in source)
     ):
-        raise ValueError(f"{name}: expected a source (text or a list of lines); got {source!r:.60}")
+        raise ValueError(
+            _("{name}: expected a source (text or a list of lines); got {source:.60}").format(
+                name=name, source=repr(source)
+            )
+        )
     metadata = cell.get("metadata", {})
     if not isinstance(metadata, dict):
-        raise ValueError(f"{name}: expected metadata as a JSON object; got {metadata!r:.60}")
+        raise ValueError(
+            _("{name}: expected metadata as a JSON object; got {metadata:.60}").format(
+                name=name, metadata=repr(metadata)
+            )
+        )
     tags = metadata.get("tags", [])
     if not isinstance(tags, list) or not all(isinstance(tag, str) for tag in tags):
-        raise ValueError(f"{name}: expected metadata.tags as a list of text; got {tags!r:.60}")
+        raise ValueError(
+            _("{name}: expected metadata.tags as a list of text; got {tags:.60}").format(
+                name=name, tags=repr(tags)
+            )
+        )
 
 
 def check_notebook(notebook: Any) -> None:
@@ -344,8 +392,10 @@ def check_notebook(notebook: Any) -> None:
     """
     if not isinstance(notebook, dict) or not isinstance(notebook.get("cells"), list):
         raise ValueError(
-            f"notebook: expected an nbformat 4 notebook, a JSON object with a list of cells; "
-            f"got {notebook!r:.60}"
+            _(
+                "notebook: expected an nbformat 4 notebook, a JSON object with a list of cells; "
+                "got {notebook:.60}"
+            ).format(notebook=repr(notebook))
         )
     for index, cell in enumerate(notebook["cells"]):
         _check_cell(cell, f"notebook cell {index}")
@@ -390,7 +440,11 @@ def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
         try:
             cell["source"] = exercise_stub(cell_source(cell))
         except ValueError as error:
-            raise ValueError(f"notebook cell {index} (tagged {SOLUTION_TAG!r}): {error}") from None
+            raise ValueError(
+                _("notebook cell {index} (tagged {tag}): {error}").format(
+                    index=index, tag=repr(SOLUTION_TAG), error=error
+                )
+            ) from None
         tags = [EXERCISE_TAG if tag == SOLUTION_TAG else tag for tag in _tags(cell)]
         cell["metadata"]["tags"] = tags
     for cell in student["cells"]:
@@ -429,18 +483,26 @@ class EditionReport:
 def read_notebook(path: str | Path) -> dict[str, Any]:
     """The notebook JSON at ``path``, or a ValueError naming the file and what is wrong."""
     if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
-        raise TypeError(f"path: expected a notebook file's path; got {type(path).__name__}")
+        raise TypeError(
+            _("path: expected a notebook file's path; got {path_type}").format(
+                path_type=type(path).__name__
+            )
+        )
     path = Path(path)
     try:
         notebook = json.loads(path.read_text(encoding="utf-8"))
     except (json.JSONDecodeError, UnicodeDecodeError) as error:
-        raise ValueError(f"{path}: not a notebook file ({error})") from None
+        raise ValueError(
+            _("{path}: not a notebook file ({error})").format(path=path, error=error)
+        ) from None
     except OSError as error:
-        raise ValueError(f"{path}: cannot be read ({error.strerror})") from None
+        raise ValueError(
+            _("{path}: cannot be read ({strerror})").format(path=path, strerror=error.strerror)
+        ) from None
     try:
         check_notebook(notebook)
     except ValueError as error:
-        raise ValueError(f"{path}: {error}") from None
+        raise ValueError(_("{path}: {error}").format(path=path, error=error)) from None
     return notebook
 
 
@@ -453,7 +515,9 @@ def notebook_text(notebook: dict[str, Any]) -> str:
             + "\n"
         )
     except (TypeError, ValueError) as error:
-        raise ValueError(f"notebook: not JSON that a notebook file can hold ({error})") from None
+        raise ValueError(
+            _("notebook: not JSON that a notebook file can hold ({error})").format(error=error)
+        ) from None
 
 
 def _work(text: str) -> str:
@@ -494,7 +558,9 @@ def _beside_name(out: Path, name: str, manifest: dict[str, str]) -> str:
             path.is_file() and manifest.get(candidate) == _work(_read_text(path))
         ):
             return candidate
-    raise ValueError(f"out: {out} holds 999 new editions of {name}; remove some")
+    raise ValueError(
+        _("out: {out} holds 999 new editions of {name}; remove some").format(out=out, name=name)
+    )
 
 
 def _is_edition(out: Any) -> bool:
@@ -541,7 +607,11 @@ def write_student_edition(
     temporary file, then moved into place).
     """
     if not isinstance(force, bool):
-        raise TypeError(f"force: expected True or False; got {type(force).__name__} {force!r:.60}")
+        raise TypeError(
+            _("force: expected True or False; got {force_type} {force:.60}").format(
+                force_type=type(force).__name__, force=repr(force)
+            )
+        )
     check_output_folder(out, force or _is_edition(out))
     out = Path(out)
     editions = []
@@ -550,7 +620,7 @@ def write_student_edition(
         try:
             edition = student_notebook(notebook)
         except ValueError as error:
-            raise ValueError(f"{book.path}: {error}") from None
+            raise ValueError(_("{path}: {error}").format(path=book.path, error=error)) from None
         editions.append((book.path.name, notebook_text(edition)))
     manifest = _read_manifest(out)
     report = EditionReport()
@@ -559,7 +629,11 @@ def write_student_edition(
         path = out / name
         work = _work(text)
         if path.is_dir():
-            raise ValueError(f"out: {path} is a folder; the edition needs that name for a notebook")
+            raise ValueError(
+                _("out: {path} is a folder; the edition needs that name for a notebook").format(
+                    path=path
+                )
+            )
         if not path.exists():
             plan.append((name, text))
             report.written.append(path)
@@ -586,11 +660,15 @@ def write_student_edition(
         for name, text in plan:
             (staging / name).write_text(text, encoding="utf-8")
         (staging / MANIFEST).write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
-        for name, _ in plan:
+        for name, _edition in plan:
             os.replace(staging / name, out / name)
         os.replace(staging / MANIFEST, out / MANIFEST)
     except OSError as error:
-        raise ValueError(f"out: cannot write into {out} ({error.strerror or error})") from None
+        raise ValueError(
+            _("out: cannot write into {out} ({reason})").format(
+                out=out, reason=error.strerror or error
+            )
+        ) from None
     finally:
         shutil.rmtree(staging, ignore_errors=True)
     return report

@@ -5,6 +5,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from course.i18n import _
+
 __all__ = ["check_output_folder", "inside_folder"]
 
 # The longest file or folder name most file systems take (NAME_MAX).
@@ -19,17 +21,27 @@ def check_output_folder(out: str | Path, force: bool) -> None:
     made) that cannot be written.
     """
     if isinstance(out, bool) or not isinstance(out, (str, os.PathLike)):
-        raise TypeError(f"out: expected a folder path; got {type(out).__name__} {out!r:.60}")
+        raise TypeError(
+            _("out: expected a folder path; got {out_type} {out:.60}").format(
+                out_type=type(out).__name__, out=repr(out)
+            )
+        )
     if not isinstance(force, bool):
-        raise TypeError(f"force: expected True or False; got {type(force).__name__} {force!r:.60}")
+        raise TypeError(
+            _("force: expected True or False; got {force_type} {force:.60}").format(
+                force_type=type(force).__name__, force=repr(force)
+            )
+        )
     out = Path(out)
     if not str(out) or "\0" in str(out):
-        raise ValueError(f"out: expected a folder path; got {str(out)!r}")
+        raise ValueError(_("out: expected a folder path; got {out}").format(out=repr(str(out))))
     long = [part for part in out.parts if len(os.fsencode(part)) > _NAME_MAX]
     if long:
         raise ValueError(
-            f"out: the name {long[0][:40]!r}... has {len(long[0])} characters; "
-            f"folder names may have at most {_NAME_MAX}"
+            _(
+                "out: the name {start}... has {length} characters; folder names may have at "
+                "most {most}"
+            ).format(start=repr(long[0][:40]), length=len(long[0]), most=_NAME_MAX)
         )
     try:
         existing = out
@@ -39,7 +51,9 @@ def check_output_folder(out: str | Path, force: bool) -> None:
             raise NotADirectoryError(f"out: {existing}, a parent of {out}, is a file, not a folder")
         if existing.is_dir() and not os.access(existing, os.W_OK | os.X_OK):
             raise ValueError(
-                f"out: cannot write into {existing} (permission denied); choose another folder"
+                _(
+                    "out: cannot write into {existing} (permission denied); choose another folder"
+                ).format(existing=existing)
             )
         if out.exists() and not out.is_dir():
             raise NotADirectoryError(f"out: expected a folder; got the file {out}")
@@ -48,13 +62,17 @@ def check_output_folder(out: str | Path, force: bool) -> None:
         if isinstance(error, NotADirectoryError) and str(error).startswith("out: "):
             raise
         raise ValueError(
-            f"out: cannot use {out} ({error.strerror or error}); choose another folder"
+            _("out: cannot use {out} ({reason}); choose another folder").format(
+                out=out, reason=error.strerror or error
+            )
         ) from None
     if holds_files and not force:
         raise FileExistsError(
-            f"out: {out} is not empty; choose an empty folder, or pass force=True "
-            "(--force) to add these files to it (files of the same names are replaced, "
-            "nothing is deleted)"
+            _(
+                "out: {out} is not empty; choose an empty folder, or pass force=True "
+                "(--force) to add these files to it (files of the same names are replaced, "
+                "nothing is deleted)"
+            ).format(out=out)
         )
 
 
@@ -75,7 +93,11 @@ def inside_folder(folder: Path, name: str, suffix: str) -> Path:
     ValueError: suffix: expected a file name ending such as '.png'; got '/../../x'
     """
     if not isinstance(suffix, str) or not _plain(suffix) or suffix == ".":
-        raise ValueError(f"suffix: expected a file name ending such as '.png'; got {suffix!r:.60}")
+        raise ValueError(
+            _("suffix: expected a file name ending such as '.png'; got {suffix:.60}").format(
+                suffix=repr(suffix)
+            )
+        )
     if (
         not isinstance(name, str)
         or not name
@@ -83,7 +105,11 @@ def inside_folder(folder: Path, name: str, suffix: str) -> Path:
         or name + suffix in (".", "..")
         or len(os.fsencode(name + suffix)) > _NAME_MAX
     ):
-        raise ValueError(f"name: expected a plain file name inside {folder}; got {name!r}")
+        raise ValueError(
+            _("name: expected a plain file name inside {folder}; got {name}").format(
+                folder=folder, name=repr(name)
+            )
+        )
     return folder / f"{name}{suffix}"
 
 

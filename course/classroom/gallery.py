@@ -16,6 +16,7 @@ from typing import TextIO
 from course.classroom.folders import check_output_folder, inside_folder
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 from course.classroom.registry import Picture, lessons
+from course.i18n import _
 
 __all__ = ["ProgressBar", "gallery_pictures", "named_pictures", "write_gallery"]
 
@@ -37,12 +38,22 @@ class ProgressBar:
         for name, value, most in (("total", total, 10**6), ("length", length, 200)):
             if isinstance(value, bool) or not isinstance(value, int):
                 raise TypeError(
-                    f"{name}: expected an integer; got {type(value).__name__} {value!r}"
+                    _("{name}: expected an integer; got {value_type} {value}").format(
+                        name=name, value_type=type(value).__name__, value=repr(value)
+                    )
                 )
             if not 0 <= value <= most:
-                raise ValueError(f"{name}: expected an integer from 0 to {most}; got {value}")
+                raise ValueError(
+                    _("{name}: expected an integer from 0 to {most}; got {value}").format(
+                        name=name, most=most, value=value
+                    )
+                )
         if stream is not None and not callable(getattr(stream, "write", None)):
-            raise TypeError(f"stream: expected a text stream or None; got {type(stream).__name__}")
+            raise TypeError(
+                _("stream: expected a text stream or None; got {stream_type}").format(
+                    stream_type=type(stream).__name__
+                )
+            )
         self.total, self.done, self.length = total, 0, length
         self.stream = sys.stderr if stream is None else stream
         self._last_length = 0
@@ -87,10 +98,16 @@ def named_pictures(pictures: list[Picture], names: list[str]) -> list[Picture]:
     """
     by_name = {picture.name: picture for picture in _as_pictures(pictures)}
     if not isinstance(names, (list, tuple)) or not all(isinstance(name, str) for name in names):
-        raise TypeError(f"names: expected a list of picture names; got {names!r:.60}")
+        raise TypeError(
+            _("names: expected a list of picture names; got {names:.60}").format(names=repr(names))
+        )
     for name in names:
         if name not in by_name:
-            raise ValueError(f"no picture named {name!r}; the pictures are: {', '.join(by_name)}")
+            raise ValueError(
+                _("no picture named {name}; the pictures are: {names}").format(
+                    name=repr(name), names=", ".join(by_name)
+                )
+            )
     return [by_name[name] for name in names]
 
 
@@ -130,7 +147,7 @@ def write_gallery(
     pictures = gallery_pictures() if pictures is None else _as_pictures(pictures)
     names = [picture.name for picture in pictures]
     if len(set(names)) != len(names):
-        raise ValueError(f"pictures: expected distinct names; got {names}")
+        raise ValueError(_("pictures: expected distinct names; got {names}").format(names=names))
     paths = [inside_folder(out, name, ".png") for name in names]  # all, before writing any
     out.mkdir(parents=True, exist_ok=True)
     bar = ProgressBar(len(pictures), stream)
@@ -147,5 +164,9 @@ def _as_pictures(pictures: object) -> list[Picture]:
     if not isinstance(pictures, (list, tuple)) or not all(
         isinstance(picture, Picture) for picture in pictures
     ):
-        raise TypeError(f"pictures: expected a list of registry Pictures; got {pictures!r:.60}")
+        raise TypeError(
+            _("pictures: expected a list of registry Pictures; got {pictures:.60}").format(
+                pictures=repr(pictures)
+            )
+        )
     return list(pictures)

@@ -18,6 +18,8 @@ import posixpath
 import re
 from urllib.parse import quote, urlencode, urlsplit
 
+from course.i18n import _
+
 # The command-line helpers (add_command, run) are for cli.py only.
 __all__ = [
     "add_command",
@@ -58,7 +60,11 @@ def nbgitpuller_link(
     if folder is None:
         folder = posixpath.basename(urlsplit(repository).path.rstrip("/")).removesuffix(".git")
         if not folder:
-            raise ValueError(f"repository must end in the repository's name; got {repository!r}")
+            raise ValueError(
+                _("repository must end in the repository's name; got {repository}").format(
+                    repository=repr(repository)
+                )
+            )
         query = {"repo": repository, "branch": branch}
     else:
         folder = _name(folder, "folder")
@@ -70,24 +76,34 @@ def nbgitpuller_link(
 def _web_address(value: object, name: str) -> str:
     if not isinstance(value, str):
         raise TypeError(
-            f"{name} must be an http(s) address as a string; got {type(value).__name__}"
+            _("{name} must be an http(s) address as a string; got {value_type}").format(
+                name=name, value_type=type(value).__name__
+            )
         )
     parts = urlsplit(value)
     if parts.scheme not in ("http", "https") or not parts.netloc or parts.query or parts.fragment:
         raise ValueError(
-            f"{name} must be an http(s) address with a host, no query or fragment; got {value!r}"
+            _(
+                "{name} must be an http(s) address with a host, no query or fragment; got {value}"
+            ).format(name=name, value=repr(value))
         )
     return value
 
 
 def _name(value: object, name: str) -> str:
     if not isinstance(value, str):
-        raise TypeError(f"{name} must be a string; got {type(value).__name__}")
+        raise TypeError(
+            _("{name} must be a string; got {value_type}").format(
+                name=name, value_type=type(value).__name__
+            )
+        )
     parts = value.split("/")
     if not _NAME.match(value) or ".." in parts or "" in parts:
         raise ValueError(
-            f"{name} must be a relative name of letters, digits, '.', '_', '-' and '/' "
-            f"(no '..'); got {value!r}"
+            _(
+                "{name} must be a relative name of letters, digits, '.', '_', '-' and '/' (no "
+                "'..'); got {value}"
+            ).format(name=name, value=repr(value))
         )
     return value
 

@@ -56,7 +56,7 @@ from course.classroom.edition import (
 )
 from course.classroom.folders import check_output_folder
 from course.classroom.notebooks import DEFAULT_LANGUAGE, NOTEBOOKS, notebooks
-from course.i18n import N_
+from course.i18n import N_, _
 
 __all__ = [
     "EXERCISE_POINTS",
@@ -170,20 +170,28 @@ def exercises(notebook: dict[str, Any]) -> list[Exercise]:
             or not isinstance(call.args[0], ast.Name)
         ):
             raise ValueError(
-                f"notebook cell {index}: a solution cell defines the exercise's function and "
-                "ends with its check, check.<name>(<function>)"
+                _(
+                    "notebook cell {index}: a solution cell defines the exercise's function and "
+                    "ends with its check, check.<name>(<function>)"
+                ).format(index=index)
             )
         function = call.args[0].id
         body = next((node for node in functions if node.name == function), None)
         if body is None:
-            raise ValueError(f"notebook cell {index}: the check's {function} is not defined here")
+            raise ValueError(
+                _("notebook cell {index}: the check's {function} is not defined here").format(
+                    index=index, function=function
+                )
+            )
         called = {node.id for node in ast.walk(body) if isinstance(node, ast.Name)}
         uses = tuple(earlier.function for earlier in found if earlier.function in called)
         unreferenced = [name for name in uses if name not in REFERENCES]
         if unreferenced:
             raise ValueError(
-                f"notebook cell {index}: {function} calls the earlier exercise "
-                f"{unreferenced[0]}, which has no reference in REFERENCES to grade it with"
+                _(
+                    "notebook cell {index}: {function} calls the earlier exercise {unreferenced}, "
+                    "which has no reference in REFERENCES to grade it with"
+                ).format(index=index, function=function, unreferenced=unreferenced[0])
             )
         found.append(Exercise(function, ast.unparse(call), uses, index))
     return found
@@ -242,7 +250,9 @@ def nbgrader_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
         try:
             cell["source"] = _marked(cell_source(cell))
         except ValueError as error:
-            raise ValueError(f"notebook cell {index}: {error}") from None
+            raise ValueError(
+                _("notebook cell {index}: {error}").format(index=index, error=error)
+            ) from None
         metadata = cell.setdefault("metadata", {})
         metadata["tags"] = [tag for tag in metadata.get("tags", []) if tag != SOLUTION_TAG]
         metadata["nbgrader"] = _nbgrader(exercise.function, solution=True, grade=False)
@@ -293,7 +303,7 @@ def write_nbgrader_course(
                 continue
             converted = nbgrader_notebook(notebook)
         except ValueError as error:
-            raise ValueError(f"{book.path}: {error}") from None
+            raise ValueError(_("{path}: {error}").format(path=book.path, error=error)) from None
         lesson = book.path.stem
         files[f"source/{lesson}/{lesson}.ipynb"] = notebook_text(converted)
     out.mkdir(parents=True, exist_ok=True)
@@ -306,12 +316,20 @@ def write_nbgrader_course(
         for name in files:
             target = out / name
             if target.is_dir():
-                raise ValueError(f"out: {target} is a folder; the course needs it for a file")
+                raise ValueError(
+                    _("out: {target} is a folder; the course needs it for a file").format(
+                        target=target
+                    )
+                )
             target.parent.mkdir(parents=True, exist_ok=True)
             os.replace(staging / name, target)
             written.append(target)
     except OSError as error:
-        raise ValueError(f"out: cannot write into {out} ({error.strerror or error})") from None
+        raise ValueError(
+            _("out: cannot write into {out} ({reason})").format(
+                out=out, reason=error.strerror or error
+            )
+        ) from None
     finally:
         shutil.rmtree(staging, ignore_errors=True)
     return written
@@ -326,7 +344,11 @@ def reference(name: str) -> Callable[..., Any]:
     10
     """
     if not isinstance(name, str) or name not in REFERENCES:
-        raise ValueError(f"name: expected one of {sorted(REFERENCES)}; got {name!r:.60}")
+        raise ValueError(
+            _("name: expected one of {choices}; got {name:.60}").format(
+                choices=sorted(REFERENCES), name=repr(name)
+            )
+        )
     module, attribute = REFERENCES[name].split(":")
     return getattr(importlib.import_module(module), attribute)
 
@@ -393,7 +415,7 @@ def _recursive_bezier(control_points: Any, t: float) -> Any:
 def _comb(m: int, n: int) -> int:
     """The answer to lesson 02's ``comb``: row m of Pascal's triangle, exact integers."""
     row = [1]
-    for _ in range(m):
+    for _row in range(m):
         row = [1, *(a + b for a, b in itertools.pairwise(row)), 1]
     return row[n] if 0 <= n <= m else 0
 

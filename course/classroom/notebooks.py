@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from course.i18n import DEFAULT_LANGUAGE
+from course.i18n import DEFAULT_LANGUAGE, _
 from course.i18n import LANGUAGES as _LIBRARY_LANGUAGES
 
 __all__ = [
@@ -81,9 +81,17 @@ def language_folder(folder: str | Path, language: str) -> Path:
     ValueError: language: expected one of en, zh-CN; got 'fr'
     """
     if isinstance(folder, bool) or not isinstance(folder, (str, os.PathLike)):
-        raise TypeError(f"folder: expected a folder path; got {type(folder).__name__}")
+        raise TypeError(
+            _("folder: expected a folder path; got {folder_type}").format(
+                folder_type=type(folder).__name__
+            )
+        )
     if not isinstance(language, str) or language not in LANGUAGES:
-        raise ValueError(f"language: expected one of {', '.join(LANGUAGES)}; got {language!r:.60}")
+        raise ValueError(
+            _("language: expected one of {choices}; got {language:.60}").format(
+                choices=", ".join(LANGUAGES), language=repr(language)
+            )
+        )
     folder = Path(folder)
     return folder if language == DEFAULT_LANGUAGE else folder / language
 
@@ -100,7 +108,11 @@ def notebooks(folder: str | Path = NOTEBOOKS, index: bool = False) -> list[Noteb
     """
     folder = Path(folder)
     if not folder.is_dir():
-        raise ValueError(f"notebooks: expected a folder of NN_topic.ipynb files; got {folder}")
+        raise ValueError(
+            _("notebooks: expected a folder of NN_topic.ipynb files; got {folder}").format(
+                folder=folder
+            )
+        )
     found = []
     for path in sorted(folder.iterdir()):
         match = LESSON_FILE.match(path.name)
@@ -117,11 +129,15 @@ def _title_and_summary(path: Path) -> tuple[str, str]:
         cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
         markdown = ["".join(cell["source"]) for cell in cells if cell["cell_type"] == "markdown"]
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
-        raise ValueError(f"{path}: not a notebook file ({error})") from None
+        raise ValueError(
+            _("{path}: not a notebook file ({error})").format(path=path, error=error)
+        ) from None
     except (KeyError, TypeError, AttributeError) as error:
         raise ValueError(
-            f"{path}: not an nbformat 4 notebook (a JSON object whose cells each have a "
-            f"cell_type and a source); reading it failed at {error!r}"
+            _(
+                "{path}: not an nbformat 4 notebook (a JSON object whose cells each have a "
+                "cell_type and a source); reading it failed at {error}"
+            ).format(path=path, error=repr(error))
         ) from None
     for text in markdown:
         heading = _HEADING.search(text)
@@ -129,4 +145,8 @@ def _title_and_summary(path: Path) -> tuple[str, str]:
             rest = text[heading.end() :].strip()
             paragraph = rest.split("\n\n")[0] if rest else ""
             return heading.group(1), " ".join(paragraph.split())
-    raise ValueError(f"{path.name}: a lesson notebook starts with a '# Title' markdown heading")
+    raise ValueError(
+        _("{name}: a lesson notebook starts with a '# Title' markdown heading").format(
+            name=path.name
+        )
+    )

@@ -26,6 +26,7 @@ from PIL import Image as PILImage
 
 from course.classroom.registry import Landmark, Picture
 from course.coverage import segment_distance
+from course.i18n import _
 from course.widgets.base import SliderApp
 from course.widgets.picture import Still
 
@@ -146,8 +147,10 @@ def differing_share(picture: np.ndarray, expected: np.ndarray) -> float:
     """
     if picture.shape != expected.shape:
         raise ValueError(
-            f"picture: expected the shape of the library's picture {expected.shape}; "
-            f"got {picture.shape}"
+            _(
+                "picture: expected the shape of the library's picture {expected_shape}; got "
+                "{picture_shape}"
+            ).format(expected_shape=expected.shape, picture_shape=picture.shape)
         )
     differing = np.abs(picture.astype(int) - expected.astype(int)) > PIXEL_TOLERANCE
     return float(differing.any(axis=2).mean())

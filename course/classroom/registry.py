@@ -170,7 +170,11 @@ def lesson_modules() -> dict[str, str]:
             continue
         number, name = match.group(1), f"{LESSONS_PACKAGE}.{module.name}"
         if number in found:
-            raise ValueError(f"lesson {number}: two modules claim it, {found[number]} and {name}")
+            raise ValueError(
+                _("lesson {number}: two modules claim it, {found} and {name}").format(
+                    number=number, found=found[number], name=name
+                )
+            )
         found[number] = name
     return dict(sorted(found.items()))
 
@@ -190,7 +194,9 @@ def lessons() -> dict[str, Lesson]:
         lesson = getattr(importlib.import_module(name), "LESSON", None)
         if not isinstance(lesson, Lesson):
             raise TypeError(
-                f"{name}: expected a module-level LESSON = Lesson(...); got {type(lesson).__name__}"
+                _("{name}: expected a module-level LESSON = Lesson(...); got {lesson_type}").format(
+                    name=name, lesson_type=type(lesson).__name__
+                )
             )
         entries[number] = dataclasses.replace(
             lesson,

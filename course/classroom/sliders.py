@@ -17,6 +17,8 @@ from typing import Any
 import ipywidgets as widgets
 import numpy as np
 
+from course.i18n import _
+
 __all__ = [
     "KEY_STEPS",
     "nearest_stop",
@@ -48,8 +50,9 @@ def slider_stops(control: widgets.ValueWidget) -> list[Any]:
         stops = control.min + np.arange(count + 1) * control.step
         return [float(value) for value in np.minimum(stops, control.max)]
     raise TypeError(
-        "control: expected an IntSlider, FloatSlider or SelectionSlider; "
-        f"got {type(control).__name__}"
+        _(
+            "control: expected an IntSlider, FloatSlider or SelectionSlider; got {control_type}"
+        ).format(control_type=type(control).__name__)
     )
 
 
@@ -92,7 +95,11 @@ def value_after_keys(control: widgets.ValueWidget, start: Any, keys: tuple[str, 
 def _after_keys(grid: list[Any], step: Any, position: Any, keys: tuple[str, ...]) -> Any:
     for key in keys:
         if key not in KEY_STEPS:
-            raise ValueError(f"keys: expected keys among {sorted(KEY_STEPS)}; got {key!r}")
+            raise ValueError(
+                _("keys: expected keys among {choices}; got {key}").format(
+                    choices=sorted(KEY_STEPS), key=repr(key)
+                )
+            )
         if key == "Home":
             position = grid[0]
         elif key == "End":

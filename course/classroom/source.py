@@ -21,6 +21,8 @@ import types
 from collections.abc import Callable, Iterator
 from typing import Any
 
+from course.i18n import _
+
 __all__ = ["form_of", "source_of"]
 
 UNCHECKED = True  # see the module docstring
@@ -42,11 +44,18 @@ def form_of(function: Callable[..., Any], method: str) -> Callable[..., Any]:
     choices = getattr(module, f"{function.__name__.upper()}_METHODS", None)
     if choices is None:
         raise ValueError(
-            f"function: {function.__module__}.{function.__name__} has no method choices "
-            f"({function.__name__.upper()}_METHODS)"
+            _("function: {module}.{function} has no method choices ({upper}_METHODS)").format(
+                module=function.__module__,
+                function=function.__name__,
+                upper=function.__name__.upper(),
+            )
         )
     if method not in choices:
-        raise ValueError(f"method must be one of {', '.join(map(repr, choices))}; got {method!r}")
+        raise ValueError(
+            _("method must be one of {choices}; got {method}").format(
+                choices=", ".join(map(repr, choices)), method=repr(method)
+            )
+        )
     return getattr(module, f"_{function.__name__}_{method}")
 
 

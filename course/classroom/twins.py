@@ -25,7 +25,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from course.i18n import LANGUAGE_LINES
+from course.i18n import LANGUAGE_LINES, _
 
 UNCHECKED = True  # see the module docstring
 
@@ -195,7 +195,7 @@ def english_code(twin: dict) -> list[str]:
     """
     sources = [cell_source(cell) for cell in twin["cells"] if cell["cell_type"] == "code"]
     if not sources or not sources[0].startswith(LANGUAGE_LINES):
-        raise ValueError("twin: the first code cell must start with the language lines")
+        raise ValueError(_("twin: the first code cell must start with the language lines"))
     sources[0] = sources[0][len(LANGUAGE_LINES) :]
     return sources
 

@@ -176,7 +176,11 @@ def pixel_area_figure(zoom: int = 64) -> Still:
         [
             Line2D([], [], color=VERMILLION, lw=1.5, label=_("the stroke's edges (width 1)")),
             Line2D([], [], color=BLUE, lw=0.8, label=_("pixel edges")),
-            Patch(facecolor="0.6", edgecolor="0.5", label=_("grey: the area covered, its number written in")),
+            Patch(
+                facecolor="0.6",
+                edgecolor="0.5",
+                label=_("grey: the area covered, its number written in"),
+            ),
         ],
         ncols=2,
     )
@@ -226,7 +230,9 @@ def splat_figure(x: float = 3.3, y: float = 2.8, zoom: int = 96) -> Still:
             Line2D([], [], ls="", marker="o", color=VERMILLION, label=_("the curve point")),
             Line2D([], [], ls="", marker="+", color=BLUE, mew=1.5, label=_("pixel centres")),
             Line2D([], [], ls=":", color=GREEN, lw=1.5, label=_("its offset dx, dy")),
-            Patch(facecolor="0.6", edgecolor="0.5", label=_("grey: the weight, its number written in")),
+            Patch(
+                facecolor="0.6", edgecolor="0.5", label=_("grey: the weight, its number written in")
+            ),
         ],
         ncols=2,
     )

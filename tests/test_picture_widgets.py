@@ -1,5 +1,6 @@
 """course.widgets.picture: the encoders, blitting and pixels written as they are."""
 
+import base64
 import io
 import itertools
 import json
@@ -530,3 +531,14 @@ def test_lines_on_a_log_axis_are_drawn_by_matplotlib_not_replayed():
     (line,) = axes.plot([1, 2, 3], [1, 10, 100], animated=True)
     view.render_moving([line])
     assert picture._LineReplay.record(line, view.canvas.get_renderer()) is None
+
+
+def test_a_still_in_a_notebook_shows_its_picture_then_its_caption_as_text(monkeypatch, capsys):
+    shown = []
+    monkeypatch.setattr(picture, "display", lambda bundle, raw: shown.append((bundle, raw)))
+    still = Still(png_bytes(np.zeros((2, 3, 3), dtype=np.uint8)), "two by three, all black")
+    still._ipython_display_()
+    ((bundle, raw),) = shown
+    assert raw and bundle["text/plain"] == "two by three, all black"  # the site's alt text
+    assert decoded(base64.b64decode(bundle["image/png"])).shape == (2, 3, 3)
+    assert capsys.readouterr().out == "two by three, all black\n"  # what a student reads

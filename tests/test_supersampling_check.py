@@ -153,3 +153,30 @@ def test_the_reports_name_the_exercises_as_the_lesson_does():
     assert str(check.image_supersampling(lambda image, out_shape, rate: image)).startswith(
         "FAIL supersample:"
     )
+
+
+def _blend(swap: bool = False, flip: bool = False):
+    """A student's bilinear lookup, with x and y swapped or the weights flipped if asked."""
+
+    def lookup(image, x, y):
+        image = np.asarray(image, dtype=float)
+        height, width = image.shape[:2]
+        if swap:
+            x, y = y, x
+        u, v = min(max(x - 0.5, 0), width - 1), min(max(y - 0.5, 0), height - 1)
+        left, top = min(int(u), width - 2), min(int(v), height - 2)
+        fx, fy = u - left, v - top
+        if flip:
+            fx, fy = 1 - fx, 1 - fy
+        upper = image[top, left] * (1 - fx) + image[top, left + 1] * fx
+        lower = image[top + 1, left] * (1 - fx) + image[top + 1, left + 1] * fx
+        return upper * (1 - fy) + lower * fy
+
+    return lookup
+
+
+def test_flipped_weights_and_swapped_axes_are_told_apart():
+    # At (1.3, 0.8) both give 0.575: the first case is one where they differ.
+    assert check.bilinear_lookup(_blend())
+    assert check.bilinear_lookup(_blend(swap=True)).mistake == "x and y swapped"
+    assert check.bilinear_lookup(_blend(flip=True)).mistake == "the weights flipped"

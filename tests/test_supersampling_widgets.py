@@ -47,3 +47,18 @@ def test_supersample_app_switches_to_the_photograph(small_supersample_app):
         app.result.get_array(), supersample(app.sources["photograph"], (64, 64), 2)
     )
     assert "rate 8" in app.difference_axes.get_title()
+
+
+def test_the_difference_s_colour_scale_follows_the_error(small_supersample_app):
+    app = small_supersample_app
+    for rate, version in ((1, "centred"), (4, "report's"), (6, "centred")):
+        set_values(app, image="zone plate", version=version, rate=rate)
+        app.refresh()  # drawn even when the controls already held these values
+        low, high = app.difference.get_clim()
+        largest = np.abs(app.difference.get_array()).max()
+        assert low == -high and (largest <= high or high == 0.5)  # 0.5 at most: clipped past it
+        smaller = [step for step in (0.5, 0.2, 0.1, 0.05, 0.02, 0.01) if step < high]
+        assert not smaller or largest > smaller[0]  # the tightest scale that holds it
+    set_values(app, rate=1)
+    app.refresh()
+    assert app.difference.get_clim() == (-0.5, 0.5)  # aliasing at rate 1 fills the scale

@@ -11,7 +11,7 @@ an (H, W, 3) float image, in green, one pixel per t = 0, 0.001, ..., 1
 
 Each recognises the handouts' mistakes: the reversed step of seeds 002 and
 004, stopping one level early, x and y swapped, a loop that never reaches
-t = 1, the GAMES101 handout's float32 t, OpenCV's rounding to the nearest
+t = 1, the GAMES101 report's float32 t, OpenCV's rounding to the nearest
 pixel, the two together (the GAMES101 report's loop), a negative index that
 wraps around to the other side of the window, and the wrong colour. An
 answer that calls the library's own curve is told to write it.
@@ -586,7 +586,7 @@ def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]
             matches=pixels_match,
         ),
         Mistake(
-            _("the float32 loop of the GAMES101 handout"),
+            _("the float32 loop of the GAMES101 report"),
             _(
                 "your t drifts: the handout's `float t` keeps about 7 digits, and a thousand "
                 "additions of 0.001 move the points enough to change pixels in the middle of the "

@@ -208,7 +208,10 @@ def _lookup_cases() -> list[dict[str, Any]]:
     gray = np.array([[0.0, 0.25, 1.0, 0.5], [1.0, 0.0, 0.75, 0.25], [0.5, 0.5, 0.0, 1.0]])
     colour = np.random.default_rng(3).random((2, 3, 3))
     points = [
-        (1.3, 0.8),  # between four centres: all four weights matter
+        # Between four centres, all four weights matter; here, unlike at (1.3, 0.8), reading
+        # image[x, y] and weighting each centre by its distance give different values.
+        (2.2, 1.3),
+        (1.3, 0.8),
         (0.5, 0.5),  # on a centre: that pixel alone
         (2.0, 1.5),  # midway between two centres in x, on a row of centres
         (3.2, 2.8),  # beyond the last centres: clamped to the corner pixel
@@ -266,6 +269,15 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
             lambda image, x, y: bilinear(image, x + 0.5, y + 0.5),
         ),
         Mistake(
+            _("the weights flipped"),
+            _(
+                "you weighted each centre by its distance from the point, not by its nearness: "
+                "the farther centre gets the larger share. The centre left of the point gets "
+                "1 - fx and the one right of it fx, and the same along y."
+            ),
+            _flipped,
+        ),
+        Mistake(
             _("x and y swapped"),
             _("you read image[x, y]: an image is indexed by row first, image[y, x]."),
             lambda image, x, y: bilinear(image, y, x),
@@ -282,6 +294,20 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
         mistakes=mistakes,
         forbidden=_library(),
     )
+
+
+def _flipped(image: Any, x: float, y: float) -> np.ndarray:
+    """The blend with each centre weighted by its distance: 1 - fx where fx belongs."""
+    image = np.asarray(image, dtype=float)
+    height, width = image.shape[:2]
+    u = float(np.clip(x - 0.5, 0, width - 1))
+    v = float(np.clip(y - 0.5, 0, height - 1))
+    left, top = min(int(u), max(width - 2, 0)), min(int(v), max(height - 2, 0))
+    right, bottom = min(left + 1, width - 1), min(top + 1, height - 1)
+    fx, fy = u - left, v - top
+    upper = image[top, left] * fx + image[top, right] * (1 - fx)
+    lower = image[bottom, left] * fx + image[bottom, right] * (1 - fx)
+    return upper * fy + lower * (1 - fy)
 
 
 def _unclamped(image: Any, x: float, y: float) -> np.ndarray:

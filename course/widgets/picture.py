@@ -17,6 +17,7 @@ passes on from its own caller.
 
 from __future__ import annotations
 
+import base64
 import io
 import struct
 import zlib
@@ -27,6 +28,7 @@ import anywidget
 import matplotlib
 import numpy as np
 import traitlets
+from IPython.display import display
 from matplotlib import colors as mcolors
 from matplotlib import ft2font
 from matplotlib.axes import Axes
@@ -869,6 +871,18 @@ class Still:
 
     def _repr_png_(self) -> bytes | None:
         return self.png
+
+    def _ipython_display_(self) -> None:
+        """In a notebook: the picture, then its caption as a line a student can read.
+
+        JupyterLab and Voila show only a picture's richest form, so a caption kept as
+        its text form alone is never seen, and the lessons' text quotes it. The
+        picture keeps the caption as its text form too: the website's alt text.
+        """
+        kind = "image/png" if self.png is not None else "image/jpeg"
+        encoded = base64.b64encode(self.data).decode("ascii")
+        display({kind: encoded, "text/plain": self.caption}, raw=True)
+        print(self.caption)
 
     def _repr_jpeg_(self) -> bytes | None:
         return None if self.png is not None else self.data

@@ -31,6 +31,10 @@ _PHOTO_SIDE = 500
 _PANEL = 320  # pixels on screen for each picture
 
 
+#: The difference panel's colour scales, +-: the smallest that holds the largest difference.
+DIFFERENCE_SCALES = (0.5, 0.2, 0.1, 0.05, 0.02, 0.01)
+
+
 class SupersampleApp(SliderApp):
     """Supersampling from rate 1 to ``max_rate``, against the exact downsample.
 
@@ -174,6 +178,10 @@ class SupersampleApp(SliderApp):
             difference = difference.mean(axis=2)
         self.difference.set_data(difference)
         self.difference.set_extent(extent)
+        # The colour scale follows the error, so a small one still shows its pattern.
+        largest = float(np.abs(difference).max())
+        scale = min((step for step in DIFFERENCE_SCALES if step >= largest), default=0.5)
+        self.difference.set_clim(-scale, scale)
         error = rmse(result, reference)
         self.result_axes.set_title(
             _("{width} x {height} at rate {rate} ({version})").format(

@@ -25,6 +25,7 @@ from course.check import (
     sandbox,
     supersampling,
 )
+from course.check.pictures import curve_picture
 
 CATALOG = Path(__file__).resolve().parent.parent / "course/locale/zh_CN/LC_MESSAGES/course.po"
 OURS = ("de_casteljau.py", "bernstein.py", "supersampling.py", "antialiasing.py", "poisson.py")
@@ -197,3 +198,14 @@ def test_the_hints_follow_the_language_of_the_moment():
     finally:
         course.use_language("en")
     assert str(base.hint("bezier")) == english
+
+
+def test_a_single_point_s_picture_marks_where_it_should_be():
+    control = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0]])
+    curve = np.array([[0.0, 0.0], [7.5, 2.5], [10.0, 10.0]])
+    mine = np.array([[7.5, 2.5]])  # on the curve, at the wrong t: it looks right alone
+    plain = curve_picture(control, curve, mine, "t = 0.25")
+    marked = curve_picture(control, curve, mine, "t = 0.25", expected_point=[[2.8, 0.3]])
+    assert plain.startswith(b"\x89PNG") and marked != plain
+    with pytest.raises(ValueError, match="expected_point must be finite"):
+        curve_picture(control, curve, mine, expected_point=[[np.nan, 0.0]])

@@ -155,6 +155,7 @@ def point_picture(
             _("{title}, t = {t}").format(title=_(title), t=f"{case['t']:g}"),
             mark_start=False,
             given_label=_("your point at t = {t}").format(t=f"{case['t']:g}"),
+            expected_point=np.asarray(expected, dtype=float).reshape(1, 2),
         )
 
     return draw

@@ -65,12 +65,15 @@ def curve_picture(
     width_inches: float = 4.2,
     mark_start: bool = True,
     given_label: str = N_("your points"),
+    expected_point: Any = None,
 ) -> bytes:
     """The control polygon, the expected curve and the student's points, as a PNG.
 
     ``expected`` and ``given`` are (M, 2) points at the same parameters, from
     t = 0 to t = 1; the first of each is ringed and labelled t = 0, so a
     curve run backwards shows at a glance. Image space: y points down.
+    ``expected_point``, if given, is the (1, 2) point the student's single point
+    should be, drawn as a cross: a wrong point can lie on the curve itself.
     """
     control = as_points(control, "control", bound=limits.MAX_COORDINATE)
     if len(control) > 100:  # each control point is labelled: a picture has room for 100
@@ -83,6 +86,9 @@ def curve_picture(
     require_finite(expected, "expected")
     given = _as_pairs(given, "given")  # a student's points: NaN shows as a gap
     width_inches = as_positive_float(width_inches, "width_inches", smallest=1.0, largest=20.0)
+    if expected_point is not None:
+        expected_point = _as_pairs(expected_point, "expected_point")
+        require_finite(expected_point, "expected_point")
     figure = Figure(figsize=(width_inches, width_inches), dpi=100)
     axes = figure.add_subplot()
     axes.plot(*control.T, "o--", color="0.6", linewidth=1, markersize=5, label=_("control polygon"))
@@ -90,6 +96,8 @@ def curve_picture(
         axes.annotate(f"P{index}", point, xytext=(5, 5), textcoords="offset points", fontsize=8)
     axes.plot(*expected.T, "-", color=EXPECTED, linewidth=2, label=_("expected curve"))
     axes.plot(*given.T, "o", color=GIVEN, markersize=3.5, label=_translated(str(given_label)))
+    if expected_point is not None:
+        axes.plot(*expected_point.T, "X", color=EXPECTED, markersize=8, label=_("expected point"))
     for points, colour in ((expected, EXPECTED), (given, GIVEN)) if mark_start else ():
         if len(points) and np.isfinite(points[0]).all():
             axes.plot(*points[0], "o", markersize=11, fillstyle="none", color=colour)

@@ -280,8 +280,12 @@ def as_shape(
                 name=name, value=describe(shape)
             )
         )
-    height = as_int(shape[0], f"{name}[0] (height)", minimum=1, maximum=max_pixels)
-    width = as_int(shape[1], f"{name}[1] (width)", minimum=1, maximum=max_pixels)
+    height = as_int(
+        shape[0], _("{name}[0] (height)").format(name=name), minimum=1, maximum=max_pixels
+    )
+    width = as_int(
+        shape[1], _("{name}[1] (width)").format(name=name), minimum=1, maximum=max_pixels
+    )
     if height * width > max_pixels:
         raise ValueError(
             _("{name} must have at most {limit} pixels (H * W); got {height} x {width}").format(

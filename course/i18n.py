@@ -58,6 +58,7 @@ __all__ = [
     "current_language",
     "gettext_catalog",
     "language",
+    "message_language",
     "ngettext",
     "use_language",
 ]
@@ -151,18 +152,55 @@ def use_language(code: str) -> None:
     >>> _("RMS error")
     'RMS error'
     """
-    global _language, _translations
-    if not isinstance(code, str):
-        raise TypeError(f"code must be a str such as 'zh-CN', not {type(code).__name__}")
-    if code not in LANGUAGES:
-        raise ValueError(f"code must be one of {', '.join(map(repr, LANGUAGES))}, not {code!r}")
-    locale = LANGUAGES[code]
-    _translations = gettext.NullTranslations() if locale is None else gettext_catalog(locale)
-    _language = code
-    if locale is None:
+    _use_messages(code)
+    if LANGUAGES[code] is None:
         _restore_english_fonts()
     else:
         _add_cjk_font()
+
+
+def _use_messages(code: str) -> None:
+    """Switch the messages (not the fonts) to ``code``, checked; its errors in the language
+    shown until then, the student's."""
+    global _language, _translations
+    if not isinstance(code, str):
+        raise TypeError(
+            _("code must be a str such as 'zh-CN', not {code_type}").format(
+                code_type=type(code).__name__
+            )
+        )
+    if code not in LANGUAGES:
+        raise ValueError(
+            _("code must be one of {choices}, not {code}").format(
+                choices=", ".join(map(repr, LANGUAGES)), code=repr(code)
+            )
+        )
+    locale = LANGUAGES[code]
+    _translations = gettext.NullTranslations() if locale is None else gettext_catalog(locale)
+    _language = code
+
+
+@contextmanager
+def message_language(code: str) -> Iterator[None]:
+    """Show the library's messages in ``code`` inside a ``with`` block; fonts left alone.
+
+    For the command line, which prints but draws nothing: unlike :func:`language`, it
+    imports no matplotlib.
+
+    Examples
+    --------
+    >>> with message_language("zh-CN"):
+    ...     _("RMS error")
+    '均方根误差'
+    >>> _("RMS error")
+    'RMS error'
+    """
+    before = current_language()
+    _use_messages(code)
+    try:
+        yield
+    finally:
+        _use_messages(before)
 
 
 def current_language() -> str:

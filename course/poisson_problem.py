@@ -269,7 +269,7 @@ def inpaint_problem(image: Any, mask: Any) -> PoissonProblem:
            [0, 0, 0]]))
     """
     image = as_image(image, "image")
-    mask = _as_mask(mask, "mask", image.shape[:2], "the image's (H, W)")
+    mask = _as_mask(mask, "mask", image.shape[:2], _("the image's (H, W)"))
     rows, columns = np.nonzero(mask)
     height, width = mask.shape
     edge = (rows == 0) | (rows == height - 1) | (columns == 0) | (columns == width - 1)
@@ -626,7 +626,7 @@ def clone_inputs(
             ).format(foreground_size=foreground.shape[:2])
         )
     if mask is not None:
-        mask = _as_mask(mask, "mask", (height, width), "the foreground's (h, w)")
+        mask = _as_mask(mask, "mask", (height, width), _("the foreground's (h, w)"))
         ring = mask.copy()
         ring[1:-1, 1:-1] = False
         if ring.any():

@@ -335,7 +335,7 @@ def _checked_row(answer: Any, out_size: int) -> np.ndarray:
                 "given; it returned shape {array_shape}"
             ).format(out_size=out_size, array_shape=array.shape)
         )
-    require_finite(array, "resampler's result")
+    require_finite(array, _("resampler's result"))
     return array[0]
 
 

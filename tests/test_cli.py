@@ -158,7 +158,8 @@ def test_lab_in_chinese_writes_the_chinese_student_edition_and_opens_its_map(
     assert chinese["cells"][0]["source"] == "# 课程地图"
     assert not (tmp_path / "student" / "00_index.ipynb").exists()
     assert "--LabApp.default_url=/lab/tree/student/zh-CN/00_index.ipynb" in started[-1]
-    assert "student/zh-CN/: 1 notebooks written" in capsys.readouterr().err
+    # The command's own report speaks the edition's language too.
+    assert "student/zh-CN/: 写入 1 个笔记本" in capsys.readouterr().err
     # COURSE_LANG says the same when --language is not given; --language wins over it.
     monkeypatch.setenv("COURSE_LANG", "zh-CN")
     assert main(["lab", "--notebooks", str(lessons), "--teacher"]) == 0
@@ -242,3 +243,31 @@ def test_the_english_edition_goes_beside_a_chinese_one_written_first(tmp_path, m
     (tmp_path / "other").mkdir()
     (tmp_path / "other" / "notes.txt").write_text("mine")
     assert main(["student", "--notebooks", str(lessons), "--out", str(tmp_path / "other")]) == 2
+
+
+def test_a_chinese_editions_errors_are_chinese_and_the_library_is_english_after(
+    tmp_path, monkeypatch, capsys
+):
+    import course
+
+    lessons = twin_folder(tmp_path)
+    monkeypatch.setenv("COURSE_LANG", "zh-CN")
+    afile = tmp_path / "a file"
+    afile.write_text("not a folder")
+    student = ["student", "--notebooks", str(lessons), "--out"]
+    assert main([*student, str(afile)]) == 2
+    assert (
+        capsys.readouterr().err
+        == f"python -m course student: out：应为文件夹；实际为文件 {afile}\n"
+    )
+    assert main([*student, str(afile / "inside")]) == 2
+    assert "不是文件夹" in capsys.readouterr().err
+    with pytest.raises(SystemExit):
+        main([*student, str(tmp_path / "out"), "--bogus"])
+    assert "无法识别的参数：--bogus" in capsys.readouterr().err
+    assert course.current_language() == "en"
+    # English unchanged.
+    assert main([*student, str(afile), "--language", "en"]) == 2
+    assert capsys.readouterr().err == (
+        f"python -m course student: out: expected a folder; got the file {afile}\n"
+    )

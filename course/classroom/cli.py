@@ -35,7 +35,7 @@ from course.classroom.notebooks import (
     language_folder,
 )
 from course.classroom.registry import lessons
-from course.i18n import _
+from course.i18n import N_, _, message_language
 
 __all__ = ["app_command", "lab_command", "main"]
 
@@ -43,10 +43,11 @@ __all__ = ["app_command", "lab_command", "main"]
 #: not ``LANG``, which every shell sets for its own messages.
 LANGUAGE_VARIABLE = "COURSE_LANG"
 
-NOT_FOUND = (
+#: Shown with ``_(NOT_FOUND).format(variable=NOTEBOOKS_VARIABLE)``.
+NOT_FOUND = N_(
     "the lessons' notebooks are not beside the installed package, nor in ./notebooks: "
     "pass --notebooks DIR, the notebooks/ folder of the course's repository "
-    f"(or set {NOTEBOOKS_VARIABLE}=DIR)"
+    "(or set {variable}=DIR)"
 )
 
 
@@ -246,8 +247,24 @@ def main(argv: list[str] | None = None) -> int:
         )
     link.add_command(commands)
     args, extra = parser.parse_known_args(argv)
+    language = DEFAULT_LANGUAGE
+    if args.command in ("lab", "app", "student", "nbgrader"):
+        try:
+            language = _language(args.language)
+        except ValueError as error:
+            print(f"python -m course {args.command}: {error}", file=sys.stderr)
+            return 2
+    # The commands that make an edition speak its language, errors and reports included.
+    with message_language(language):
+        return _run(parser, args, extra, language)
+
+
+def _run(
+    parser: argparse.ArgumentParser, args: argparse.Namespace, extra: list[str], language: str
+) -> int:
+    """The command ``args`` asks for, its messages in the current language; the exit status."""
     if extra and args.command not in ("lab", "app"):
-        parser.error(f"unrecognized arguments: {' '.join(extra)}")
+        parser.error(_("unrecognized arguments: {arguments}").format(arguments=" ".join(extra)))
     if args.command == "link":
         try:
             print(link.run(args))
@@ -257,16 +274,17 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     args.notebooks = args.notebooks or find_notebooks()
     if args.notebooks is None and args.command != "gallery":
-        print(f"python -m course {args.command}: {NOT_FOUND}", file=sys.stderr)
+        print(
+            f"python -m course {args.command}: " + _(NOT_FOUND).format(variable=NOTEBOOKS_VARIABLE),
+            file=sys.stderr,
+        )
         return 2
     if args.command == "twins":
         from course.classroom import twins
 
         return twins.run(args.notebooks, args.update_po, args.check)
     try:
-        language = DEFAULT_LANGUAGE
         if args.command in ("lab", "app", "student", "nbgrader"):
-            language = _language(args.language)
             lessons_folder = language_folder(args.notebooks, language)
         if args.command == "lab":
             if not args.teacher:
@@ -289,7 +307,8 @@ def main(argv: list[str] | None = None) -> int:
             return subprocess.call(app_command(lessons_folder, args.port, extra))
         if args.command == "map" and args.readme:
             changed = update_readme(args.readme, args.notebooks)
-            print(f"{args.readme}: lesson table {'rewritten' if changed else 'unchanged'}")
+            done = _("lesson table rewritten") if changed else _("lesson table unchanged")
+            print(f"{args.readme}: {done}")
             return 0
         if args.command == "map":
             print(course_map(args.notebooks, args.link_prefix, guide=False))
@@ -313,5 +332,8 @@ def main(argv: list[str] | None = None) -> int:
         message = " ".join(str(error).split()) if str(error) else type(error).__name__
         print(f"python -m course {args.command}: {message}", file=sys.stderr)
         return 2
-    print(f"wrote {len(written)} files to {args.out}", file=sys.stderr)
+    print(
+        _("wrote {count} files to {out}").format(count=len(written), out=args.out),
+        file=sys.stderr,
+    )
     return 0

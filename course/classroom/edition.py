@@ -398,7 +398,7 @@ def check_notebook(notebook: Any) -> None:
             ).format(notebook=repr(notebook))
         )
     for index, cell in enumerate(notebook["cells"]):
-        _check_cell(cell, f"notebook cell {index}")
+        _check_cell(cell, _("notebook cell {index}").format(index=index))
 
 
 def solution_cells(notebook: dict[str, Any]) -> list[int]:
@@ -469,13 +469,20 @@ class EditionReport:
     def lines(self) -> list[str]:
         """One line per notebook that needs the reader's attention, then a summary."""
         notes = [
-            f"{edited.name} has your work: the lesson changed, and its new edition is "
-            f"{new.name}, beside it (yours is untouched)"
+            _(
+                "{edited} has your work: the lesson changed, and its new edition is {new}, "
+                "beside it (yours is untouched)"
+            ).format(edited=edited.name, new=new.name)
             for edited, new in self.beside
         ]
         notes.append(
-            f"{len(self.written)} notebooks written, {len(self.unchanged)} unchanged, "
-            f"{len(self.kept) + len(self.beside)} with your edits kept"
+            _(
+                "{written} notebooks written, {unchanged} unchanged, {kept} with your edits kept"
+            ).format(
+                written=len(self.written),
+                unchanged=len(self.unchanged),
+                kept=len(self.kept) + len(self.beside),
+            )
         )
         return notes
 

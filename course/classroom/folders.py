@@ -48,7 +48,11 @@ def check_output_folder(out: str | Path, force: bool) -> None:
         while not existing.exists() and existing != existing.parent:
             existing = existing.parent
         if existing != out and not existing.is_dir():
-            raise NotADirectoryError(f"out: {existing}, a parent of {out}, is a file, not a folder")
+            raise NotADirectoryError(
+                _("out: {existing}, a parent of {out}, is a file, not a folder").format(
+                    existing=existing, out=out
+                )
+            )
         if existing.is_dir() and not os.access(existing, os.W_OK | os.X_OK):
             raise ValueError(
                 _(
@@ -56,11 +60,13 @@ def check_output_folder(out: str | Path, force: bool) -> None:
                 ).format(existing=existing)
             )
         if out.exists() and not out.is_dir():
-            raise NotADirectoryError(f"out: expected a folder; got the file {out}")
+            raise NotADirectoryError(
+                _("out: expected a folder; got the file {out}").format(out=out)
+            )
         holds_files = out.is_dir() and any(out.iterdir())
     except OSError as error:  # a parent the user may not enter, say
-        if isinstance(error, NotADirectoryError) and str(error).startswith("out: "):
-            raise
+        if isinstance(error, NotADirectoryError) and error.errno is None:
+            raise  # one of the two above (the system's own carry an errno)
         raise ValueError(
             _("out: cannot use {out} ({reason}); choose another folder").format(
                 out=out, reason=error.strerror or error

@@ -157,7 +157,7 @@ def exercises(notebook: dict[str, Any]) -> list[Exercise]:
     found: list[Exercise] = []
     for index in solution_cells(notebook):
         source = cell_source(notebook["cells"][index])
-        tree = parse_solution(source, f"notebook cell {index}")
+        tree = parse_solution(source, _("notebook cell {index}").format(index=index))
         functions = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
         last = tree.body[-1] if tree.body else None
         call = last.value if isinstance(last, ast.Expr) else None

@@ -313,7 +313,10 @@ class KernelApp(SliderApp):
                     window=describe(window)
                 )
             )
-        window = (as_int(window[0], "window[0] (row)"), as_int(window[1], "window[1] (column)"))
+        window = (
+            as_int(window[0], _("window[0] (row)")),
+            as_int(window[1], _("window[1] (column)")),
+        )
         controls = {
             "preset": widgets.Dropdown(
                 options=[*KERNELS, "typed"], value=kernel, description=_("preset")

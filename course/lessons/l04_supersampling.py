@@ -30,7 +30,7 @@ from course.resample import supersample, supersample_without_offset
 from course.widgets import supersampling_figures as figures
 from course.widgets.base import SliderApp
 from course.widgets.picture import rounding_level
-from course.widgets.supersampling import DIFFERENCE_SCALES, SupersampleApp
+from course.widgets.supersampling import SupersampleApp, difference_scale
 
 UNCHECKED = True  # see the module docstring
 
@@ -158,9 +158,7 @@ def supersample_landmarks(app: SliderApp) -> list[Landmark]:
         if 1 <= other <= 12
     ]
     telling = np.min(changes, axis=0)
-    # The difference's colour scale: the tightest of the app's scales that holds it.
-    largest = float(np.abs(difference).max())
-    scale = min((step for step in DIFFERENCE_SCALES if step >= largest), default=0.5)
+    scale = difference_scale(difference)
     landmarks = []
     for flat_index in np.argsort(telling, axis=None)[::-1][:200]:
         row, column = (int(i) for i in np.unravel_index(flat_index, telling.shape))

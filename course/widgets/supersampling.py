@@ -11,18 +11,20 @@ and for the report's.
 
 from __future__ import annotations
 
+from typing import Any
+
 import ipywidgets as widgets
 import numpy as np
 
 from course import limits
-from course._validate import as_int, as_option
+from course._validate import as_float_array, as_int, as_option, require_finite
 from course.i18n import N_, _
 from course.images import photograph, zone_plate, zone_plate_box
 from course.metrics import rmse
 from course.resample import supersample, supersample_without_offset
 from course.widgets.base import SliderApp
 
-__all__ = ["IMAGES", "VERSIONS", "SupersampleApp"]
+__all__ = ["DIFFERENCE_SCALES", "IMAGES", "VERSIONS", "SupersampleApp", "difference_scale"]
 
 IMAGES = (N_("zone plate"), N_("photograph"))
 VERSIONS = (N_("centred"), N_("report's"))
@@ -33,6 +35,20 @@ _PANEL = 320  # pixels on screen for each picture
 
 #: The difference panel's colour scales, +-: the smallest that holds the largest difference.
 DIFFERENCE_SCALES = (0.5, 0.2, 0.1, 0.05, 0.02, 0.01)
+
+
+def difference_scale(difference: Any) -> float:
+    """The difference panel's colour scale, +-: the tightest of :data:`DIFFERENCE_SCALES`.
+
+    A difference past 0.5 is clipped at 0.5.
+
+    >>> difference_scale([[0.03, -0.08]]), difference_scale([[0.9]])
+    (0.1, 0.5)
+    """
+    array = as_float_array(difference, "difference")
+    require_finite(array, "difference")
+    largest = float(np.abs(array).max()) if array.size else 0.0
+    return min((step for step in DIFFERENCE_SCALES if step >= largest), default=0.5)
 
 
 class SupersampleApp(SliderApp):
@@ -179,8 +195,7 @@ class SupersampleApp(SliderApp):
         self.difference.set_data(difference)
         self.difference.set_extent(extent)
         # The colour scale follows the error, so a small one still shows its pattern.
-        largest = float(np.abs(difference).max())
-        scale = min((step for step in DIFFERENCE_SCALES if step >= largest), default=0.5)
+        scale = difference_scale(difference)
         self.difference.set_clim(-scale, scale)
         error = rmse(result, reference)
         self.result_axes.set_title(

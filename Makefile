@@ -191,17 +191,24 @@ test-browser: site $(VENV)/.browser-installed $(VENV)/.test-installed
 README_PICTURE := 01_de_casteljau_degree3_t0.50
 
 ## notebooks: re-execute and normalise the lessons, English and Chinese, then the README's table
+# A print before a slow line reaches nbclient as two stream outputs, which JupyterLab
+# joins when it runs the cell: join them here too, or Run All and save changes the file.
+COALESCE = $(BIN)/jupyter nbconvert --to notebook --inplace --log-level=WARN \
+	--CoalesceStreamsPreprocessor.enabled=True
+
 notebooks: $(VENV)/.lab-installed $(VENV)/.test-installed
 	for notebook in $(NOTEBOOKS); do \
 		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
 			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
 	done
+	$(COALESCE) $(NOTEBOOKS)
 	$(BIN)/nbstripout --keep-output --keep-count $(NOTEBOOKS)
 	$(BIN)/python -m course twins
 	for notebook in notebooks/zh-CN/[0-9]*.ipynb; do \
 		test -e "$$notebook" || continue; \
 		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
 			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
+		$(COALESCE) "$$notebook" || exit 1; \
 		$(BIN)/nbstripout --keep-output --keep-count "$$notebook" || exit 1; \
 	done
 	$(BIN)/python -m course map --readme README.md

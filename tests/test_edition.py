@@ -4,7 +4,9 @@ import ast
 import copy
 import difflib
 import importlib.util
+import itertools
 import json
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -263,11 +265,36 @@ def test_every_lesson_carries_the_kernelspec_jupyterlab_writes():
         assert notebook["metadata"]["kernelspec"] == KERNELSPEC, book.path.name
 
 
+def make_variable(name: str, bin_folder: Path) -> list[str]:
+    """The command the Makefile names ``name``, split into words, with ``$(BIN)`` filled in."""
+    makefile = (Path(__file__).parents[1] / "Makefile").read_text(encoding="utf-8")
+    found = re.search(rf"^{name} = ((?:.*\\\n)*.*)$", makefile, re.MULTILINE)
+    assert found, f"the Makefile defines no {name}"
+    return found[1].replace("\\\n", " ").replace("$(BIN)", str(bin_folder)).split()
+
+
+def test_no_stored_cell_splits_its_printed_lines_in_two_outputs():
+    """JupyterLab joins a cell's consecutive stream outputs; a stored split is a diff at save."""
+    for path in sorted(Path(__file__).parents[1].glob("notebooks/**/*.ipynb")):
+        notebook = json.loads(path.read_text(encoding="utf-8"))
+        for cell in notebook["cells"]:
+            names = [out.get("name") for out in cell.get("outputs", [])]
+            twice = [a for a, b in itertools.pairwise(names) if a is not None and a == b]
+            assert not twice, (path.name, cell.get("id"), twice)
+
+
 def test_executing_and_stripping_as_make_notebooks_does_leaves_the_kernelspec(tmp_path):
-    """``make notebooks`` runs nbconvert --execute, then nbstripout: the metadata stays."""
+    """``make notebooks`` runs nbconvert --execute, joins the streams, then nbstripout.
+
+    The metadata stays, and a cell's two flushes of stdout are saved as one output, as
+    JupyterLab saves them.
+    """
     lesson = json.loads((notebooks()[0].path).read_text(encoding="utf-8"))
     notebook = {
-        "cells": [code_cell("print(6 * 7)") | {"outputs": [], "execution_count": None}],
+        "cells": [
+            code_cell("import sys\nprint(6 * 7)\nsys.stdout.flush()\nprint(6 * 9)")
+            | {"outputs": [], "execution_count": None}
+        ],
         "metadata": lesson["metadata"],
         "nbformat": 4,
         "nbformat_minor": 5,
@@ -277,12 +304,13 @@ def test_executing_and_stripping_as_make_notebooks_does_leaves_the_kernelspec(tm
     bin_folder = Path(sys.executable).parent
     for command in (
         [bin_folder / "jupyter", "nbconvert", "--to", "notebook", "--execute", "--inplace", path],
+        [*make_variable("COALESCE", bin_folder), path],
         [bin_folder / "nbstripout", "--keep-output", "--keep-count", path],
     ):
         done = subprocess.run(command, capture_output=True, text=True, timeout=300)
         assert done.returncode == 0, done.stderr
     executed = json.loads(path.read_text())
-    assert "".join(executed["cells"][0]["outputs"][0]["text"]) == "42\n"
+    assert ["".join(out["text"]) for out in executed["cells"][0]["outputs"]] == ["42\n54\n"]
     assert executed["metadata"]["kernelspec"] == KERNELSPEC
 
 

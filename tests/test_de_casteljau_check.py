@@ -208,7 +208,7 @@ def test_each_known_mistake_of_the_drawing_loop_is_named_with_a_pixel_picture(
 
 def test_the_float_loop_report_names_the_missing_end_pixel():
     message = str(check.bezier(float_loop))
-    assert "1 pixel missing, first (690, 690)" in message
+    assert "1 pixel missing, first at (x, y) = (690, 690)" in message
 
 
 def test_a_loop_that_writes_off_the_window_is_told_where(monkeypatch):
@@ -226,6 +226,22 @@ def test_a_loop_that_writes_off_the_window_is_told_where(monkeypatch):
     line = unguarded.__code__.co_firstlineno + 3
     assert f"at line {line} of unguarded: window[int(y), int(x)] = (0, 1, 0)" in message
     assert "and at points off the window." in message
+
+
+def test_int_before_the_window_test_is_named_with_the_point_it_painted():
+    # The natural reading of "the pixel is (int(x), int(y))": test the pixel, not the point.
+    def pixel_tested(control_points, window):
+        height, width = window.shape[:2]
+        for k in range(1001):
+            x, y = recursive_solution(control_points, k / 1000)
+            column, row = int(x), int(y)
+            if 0 <= column < width and 0 <= row < height:
+                window[row, column] = (0, 1, 0)
+
+    result = check.bezier(pixel_tested)
+    assert not result and result.mistake == "int() before the window test"
+    assert "int(-0.5) is 0" in str(result)
+    assert "1 extra" in str(result)
 
 
 def test_a_negative_index_through_int_is_named_as_wrapping():

@@ -325,7 +325,7 @@ def test_the_lessons_first_octant_pseudocode_used_as_is_is_named_and_its_first_p
     result = check.draw_line(first_octant)
     assert not result and result.mistake == "the first octant only"
     # Case 2 runs from (9, 5) to (2, 3): the first missing pixel along the line is p0.
-    assert "8 pixels missing, first (9, 5)" in str(result)
+    assert "8 pixels missing, first at (x, y) = (9, 5)" in str(result)
 
 
 def test_a_dda_that_truncates_with_int_is_named():
@@ -376,7 +376,7 @@ def test_any_4_connected_staircase_is_named_not_only_the_librarys():
     assert separate_steps((2, 3), (9, 5)) != line_4connected((2, 3), (9, 5)).tolist()
     result = check.draw_line(separate_steps)
     assert result.mistake == "the report's staircase"
-    assert "2 extra, first (4, 3)" in str(result)
+    assert "2 extra, first at (x, y) = (4, 3)" in str(result)
     assert "left an extra pixel in the corner: a 4-connected staircase" in str(result)
 
 
@@ -396,7 +396,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
     assert "这是一个已知错误，画反了方向：你的像素是从 p1 画到 p0 的" in str(backwards)
     assert backwards.mistake == "drawn backwards"  # the name stays an identifier
     staircase = str(check.draw_line(separate_steps))
-    assert "多了 2 个，第一个是 (4, 3)" in staircase and "4 连通的阶梯" in staircase
+    assert "多了 2 个，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase
     one = str(check.draw_triangle_filled(lambda p0, p1, p2: [p0]))
     assert "缺了 " in one and "提示：看看你的循环填了哪些行" in one and "Hint" not in one
 

@@ -1,5 +1,7 @@
 """course.check.supersampling: the lab's loop passes, the report's version is named."""
 
+import math
+
 import numpy as np
 
 from course.check import supersampling as check
@@ -180,3 +182,29 @@ def test_flipped_weights_and_swapped_axes_are_told_apart():
     assert check.bilinear_lookup(_blend())
     assert check.bilinear_lookup(_blend(swap=True)).mistake == "x and y swapped"
     assert check.bilinear_lookup(_blend(flip=True)).mistake == "the weights flipped"
+
+
+def _index_clamped(whole):
+    """A lookup that clamps the four centres' indices, not u and v, taking ``whole`` of u."""
+
+    def lookup(image, x, y):
+        height, width = len(image), len(image[0])
+        u, v = x - 0.5, y - 0.5
+        left, top = whole(u), whole(v)
+        fx, fy = u - left, v - top
+
+        def at(row, column):
+            return np.asarray(image[min(max(row, 0), height - 1)][min(max(column, 0), width - 1)])
+
+        upper = (1 - fx) * at(top, left) + fx * at(top, left + 1)
+        lower = (1 - fx) * at(top + 1, left) + fx * at(top + 1, left + 1)
+        return (1 - fy) * upper + fy * lower
+
+    return lookup
+
+
+def test_int_for_floor_is_named_and_the_same_lookup_with_floor_passes():
+    assert check.bilinear_lookup(_index_clamped(math.floor))
+    result = check.bilinear_lookup(_index_clamped(int))
+    assert result.mistake == "int() where floor belongs"
+    assert "x=-0.4" in str(result)

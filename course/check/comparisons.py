@@ -141,7 +141,7 @@ def pixel_difference(expected: Any, given: Any) -> str:
     Examples
     --------
     >>> pixel_difference([[0, 0], [1, 0], [2, 1]], [[0, 0], [1, 1], [2, 1]])
-    '1 pixel missing, first (1, 0); 1 extra, first (1, 1)'
+    '1 pixel missing, first at (x, y) = (1, 0); 1 extra, first at (x, y) = (1, 1)'
     >>> pixel_difference([[0, 0], [1, 0]], [[0, 0], [1, 0], [1, 0]])
     'the same pixels, but 1 listed more than once, first (1, 0): each pixel once'
     """
@@ -150,13 +150,15 @@ def pixel_difference(expected: Any, given: Any) -> str:
     missing, extra = np.setdiff1d(want, have), np.setdiff1d(have, want)
     if len(missing):
         if len(missing) == 1:
-            missing_text = _("{count} pixel missing, first {pixel}")
+            missing_text = _("{count} pixel missing, first at (x, y) = {pixel}")
         else:
-            missing_text = _("{count} pixels missing, first {pixel}")
+            missing_text = _("{count} pixels missing, first at (x, y) = {pixel}")
         parts.append(missing_text.format(count=len(missing), pixel=_pixel_of(missing[0])))
     if len(extra):
         parts.append(
-            _("{count} extra, first {pixel}").format(count=len(extra), pixel=_pixel_of(extra[0]))
+            _("{count} extra, first at (x, y) = {pixel}").format(
+                count=len(extra), pixel=_pixel_of(extra[0])
+            )
         )
     if parts:
         return _("; ").join(parts)

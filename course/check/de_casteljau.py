@@ -631,6 +631,19 @@ def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]
             )[:, ::-1],
             matches=pixels_match,
         ),
+        Mistake(
+            _("int() before the window test"),
+            _(
+                "a point just left of or above the window, with x or y between -1 and 0, was "
+                "painted in column or row 0: int() rounds toward zero, so int(-0.5) is 0 and "
+                "passes a test of the pixel. Test the point itself, 0 <= x < width and "
+                "0 <= y < height, before you take int(), or take math.floor."
+            ),
+            lambda control_points, window: _loop_pixels(
+                control_points, window.shape, _every_t(), "trunc"
+            ),
+            matches=pixels_match,
+        ),
         Mistake(_("a negative index wraps around"), wraps, _wrapped("trunc"), matches=pixels_match),
         Mistake(_("a negative index wraps around"), wraps, _wrapped("floor"), matches=pixels_match),
         Mistake(
@@ -694,7 +707,7 @@ def bezier(function: Callable[..., Any]) -> CheckResult:
       inputs: control_points=...
       expected: 955 pixels painted
       given:    0 pixels painted
-      955 pixels missing, first (10, 10)
+      955 pixels missing, first at (x, y) = (10, 10)
     ...
     """
     return run_cases(

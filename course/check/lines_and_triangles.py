@@ -161,7 +161,7 @@ def _line_difference(expected: Any, given: Any) -> str:
     Examples
     --------
     >>> _line_difference([[9, 5], [8, 5], [7, 4]], [])
-    '3 pixels missing, first (9, 5)'
+    '3 pixels missing, first at (x, y) = (9, 5)'
     """
     want = [tuple(int(v) for v in pixel) for pixel in np.asarray(expected).reshape(-1, 2)]
     have = [tuple(int(v) for v in pixel) for pixel in np.asarray(given).reshape(-1, 2)]
@@ -170,12 +170,14 @@ def _line_difference(expected: Any, given: Any) -> str:
     parts = []
     if missing:
         if len(missing) == 1:
-            missing_text = _("{count} pixel missing, first {pixel}")
+            missing_text = _("{count} pixel missing, first at (x, y) = {pixel}")
         else:
-            missing_text = _("{count} pixels missing, first {pixel}")
+            missing_text = _("{count} pixels missing, first at (x, y) = {pixel}")
         parts.append(missing_text.format(count=len(missing), pixel=missing[0]))
     if extra:
-        parts.append(_("{count} extra, first {pixel}").format(count=len(extra), pixel=extra[0]))
+        parts.append(
+            _("{count} extra, first at (x, y) = {pixel}").format(count=len(extra), pixel=extra[0])
+        )
     if parts:
         return _("; ").join(parts)
     return pixel_difference(expected, given)

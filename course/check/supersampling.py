@@ -269,6 +269,16 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
             lambda image, x, y: bilinear(image, x + 0.5, y + 0.5),
         ),
         Mistake(
+            _("int() where floor belongs"),
+            _(
+                "left of the first centres or above them, your blend reaches outside the four "
+                "centres around the point: int() rounds toward zero, so for u = x - 0.5 = -0.9 "
+                "it gives 0, not -1, and the weight u - int(u) is -0.9. Take math.floor(u), or "
+                "clamp u to [0, W - 1] first, as for the right and bottom edges."
+            ),
+            _truncated,
+        ),
+        Mistake(
             _("the weights flipped"),
             _(
                 "you weighted each centre by its distance from the point, not by its nearness: "
@@ -308,6 +318,25 @@ def _flipped(image: Any, x: float, y: float) -> np.ndarray:
     upper = image[top, left] * fx + image[top, right] * (1 - fx)
     lower = image[bottom, left] * fx + image[bottom, right] * (1 - fx)
     return upper * fy + lower * (1 - fy)
+
+
+def _truncated(image: Any, x: float, y: float) -> np.ndarray:
+    """The blend with int() for floor, clamping the centres' indices but not u and v.
+
+    For u in (-1, 0), int(u) is 0: the weight u - 0 is negative and the blend extrapolates.
+    """
+    image = np.asarray(image, dtype=float)
+    height, width = image.shape[:2]
+    u, v = x - 0.5, y - 0.5
+    left, top = int(u), int(v)
+    fx, fy = u - left, v - top
+
+    def at(row: int, column: int) -> np.ndarray:
+        return image[min(max(row, 0), height - 1), min(max(column, 0), width - 1)]
+
+    upper = at(top, left) * (1 - fx) + at(top, left + 1) * fx
+    lower = at(top + 1, left) * (1 - fx) + at(top + 1, left + 1) * fx
+    return upper * (1 - fy) + lower * fy
 
 
 def _unclamped(image: Any, x: float, y: float) -> np.ndarray:

@@ -135,8 +135,11 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
         _arrow(left, de_casteljau(control, t), velocity * scale, colour, f"t = {t:g}")
         right.plot(*velocity, "o", color=colour, markersize=8)
         _arrow(right, (0.0, 0.0), velocity, colour)
+        right.annotate(
+            f"t = {t:g}", velocity, xytext=(7, -10), textcoords="offset points", fontsize=7
+        )
     left.set_title(_("B(t) and its velocity B'(t) (scaled)"), fontsize=9)
-    right.plot(*trace.T, color=BLUE, linewidth=1.5, label="B'(t)")
+    right.plot(*trace.T, color="0.15", linewidth=1.5, label="B'(t)")
     right.plot(
         *hodograph.T, "s--", color="0.55", linewidth=1, markersize=5, label=_("its control points")
     )
@@ -167,7 +170,7 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
         axes.margins(0.1)
         axes.tick_params(labelsize=7)
     left.legend(fontsize=7, loc="lower center")
-    right.legend(fontsize=7, loc="lower left")
+    right.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     figure.tight_layout()
     values = ", ".join("(" + ", ".join(f"{v:g}" for v in point) + ")" for point in hodograph)
     caption = _(
@@ -261,6 +264,9 @@ def comb_calls_figure(sizes: Sequence[int] = tuple(range(4, 41, 2))) -> Still:
     axes.semilogy(sizes, [2.0**m for m in sizes], "--", color="0.5", label="2^m")
     axes.set_xlabel("m")
     axes.set_ylabel(_("calls"))
+    axes.set_title(
+        _("the report's recursive comb: its calls grow almost as fast as 2^m"), fontsize=9
+    )
     axes.legend(fontsize=8)
     figure.tight_layout()
     last = sizes[-1]

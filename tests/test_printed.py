@@ -260,6 +260,9 @@ CASES = [
     ),
     pytest.param(l03.print_line_pixels, ("Wu", 11), "Wu: 11 pixels", id="03-wu"),
     pytest.param(
+        l03.print_line_ends, (np.array([3, 6]), (27, 17)), "from (3, 6) to (27, 17):", id="03-ends"
+    ),
+    pytest.param(
         l03.print_segments_report,
         (1, {"missed": 58, "off": 29, "twice": 0}),
         " 1 segments: missed 58, off 29, twice 0",

@@ -119,7 +119,7 @@ def test_each_half_of_the_reports_shift_is_named_with_a_difference_picture():
     assert corners.mistake == "samples at the sub-pixel corners" and corners.picture is not None
     centres = check.image_supersampling(integer_centres)
     assert centres.mistake == "pixel centres at whole numbers"
-    assert "first wrong value: [0, 0]" in str(centres)
+    assert "first wrong value: [0, 1]" in str(centres)
 
 
 def test_a_call_to_the_librarys_supersampling_or_lookup_is_told_to_write_it():
@@ -208,3 +208,24 @@ def test_int_for_floor_is_named_and_the_same_lookup_with_floor_passes():
     result = check.bilinear_lookup(_index_clamped(int))
     assert result.mistake == "int() where floor belongs"
     assert "x=-0.4" in str(result)
+
+
+def test_offsets_left_unscaled_are_named_and_not_blamed_on_a_correct_lookup():
+    # Only the corner is scaled by W / w; the report's two shifts would send the student to
+    # "fix" a lookup that passes its own check.
+    def unscaled(image, out_shape, rate):
+        height, width = out_shape
+        sx, sy = image.shape[1] / width, image.shape[0] / height
+        result = np.zeros((height, width, *image.shape[2:]))
+        for row in range(height):
+            for column in range(width):
+                for j in range(rate):
+                    for i in range(rate):
+                        x, y = column * sx + (i + 0.5) / rate, row * sy + (j + 0.5) / rate
+                        result[row, column] += bilinear_sample(image, x, y) / rate**2
+        return result
+
+    result = check.image_supersampling(unscaled)
+    assert result.mistake == "the sub-pixel offsets not scaled"
+    assert "x = (c + (i + 0.5) / rate) W / w" in str(result)
+    assert check.image_supersampling(reports_version).mistake == "the report's two shifts"

@@ -45,6 +45,8 @@ def show_value(value: Any) -> str:
     ('0.5', 'an array of shape (30, 30), dtype int64, values 0 to 0')
     >>> show_value(np.full((8, 8, 3), 0.25))
     'an array of shape (8, 8, 3), dtype float64, values 0.25 to 0.25'
+    >>> show_value(np.zeros((2, 21)))
+    '[[0., 0., 0., ..., 0., 0., 0.], [0., 0., 0., ..., 0., 0., 0.]] (shape (2, 21))'
     """
     if isinstance(value, np.generic):
         return repr(value.item())
@@ -52,8 +54,10 @@ def show_value(value: Any) -> str:
         # A colour image's numbers fill screens: past a few pixels, its size and range say more.
         if value.size > 400 or (value.ndim >= 3 and value.size > _LARGEST_SHOWN_IMAGE):
             return _summary(value)
-        text = np.array2string(value, precision=6, separator=", ", threshold=40)
-        return " ".join(text.split())
+        text = " ".join(np.array2string(value, precision=6, separator=", ", threshold=40).split())
+        if value.size > 40:  # numpy elided some numbers: the shape is what a student can't count
+            text += " " + _("(shape {shape})").format(shape=value.shape)
+        return text
     text = repr(value)
     return text if len(text) <= 300 else text[:297] + "..."
 

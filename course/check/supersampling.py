@@ -59,16 +59,23 @@ def _as_image(value: Any) -> np.ndarray:
 
 
 def _variant(
-    image: Any, out_shape: Any, rate: int, whole_scale: bool = False, divide: str = "square"
+    image: Any,
+    out_shape: Any,
+    rate: int,
+    whole_scale: bool = False,
+    divide: str = "square",
+    unscaled_offsets: bool = False,
 ) -> np.ndarray:
-    """Supersampling with one of the lab's slips: a whole-number scale, or / rate for / rate^2."""
+    """Supersampling with one of the slips: a whole-number scale, / rate for / rate^2, or the
+    sub-pixel offsets left in output pixels while the pixel's corner is in input pixels."""
     image = np.asarray(image, dtype=float)
     (height, width), (in_height, in_width) = out_shape, image.shape[:2]
     sx = in_width // width if whole_scale else in_width / width
     sy = in_height // height if whole_scale else in_height / height
     offsets = (np.arange(rate) + 0.5) / rate
-    xs = (np.arange(width)[:, None] + offsets[None, :]) * sx  # (w, rate)
-    ys = (np.arange(height)[:, None] + offsets[None, :]) * sy  # (h, rate)
+    offset_x, offset_y = (offsets, offsets) if unscaled_offsets else (offsets * sx, offsets * sy)
+    xs = np.arange(width)[:, None] * sx + offset_x[None, :]  # (w, rate)
+    ys = np.arange(height)[:, None] * sy + offset_y[None, :]  # (h, rate)
     grid_y = ys[:, None, :, None] + 0 * xs[None, :, None, :]
     grid_x = xs[None, :, None, :] + 0 * ys[:, None, :, None]
     samples = bilinear(image, grid_x.reshape(-1), grid_y.reshape(-1))
@@ -81,6 +88,10 @@ def _cases() -> list[dict[str, Any]]:
     rng = np.random.default_rng(5)
     stripes = np.tile([0.0, 1.0], (6, 6))  # 6 x 12, one-pixel stripes
     return [
+        # First a case where every named slip gives its own answer, none the right one: at
+        # rate 1, offsets left unscaled and the report's two shifts agree, and at 12 / 4 = 3 = rate
+        # the report's two shifts cancel.
+        {"image": stripes, "out_shape": (3, 5), "rate": 2},
         {"image": stripes, "out_shape": (2, 4), "rate": 1},
         {"image": stripes, "out_shape": (2, 4), "rate": 3},
         {"image": rng.random((8, 8)), "out_shape": (2, 2), "rate": 4},
@@ -123,6 +134,16 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
                 "pixel, so their mean divides by rate squared."
             ),
             lambda image, out_shape, rate: _variant(image, out_shape, rate, divide="rate"),
+        ),
+        Mistake(
+            _("the sub-pixel offsets not scaled"),
+            _(
+                "your samples crowd into the first input pixels of each output pixel's square: "
+                "you scaled the output pixel's corner by W / w but not the offset "
+                "(i + 0.5) / rate, which is in output pixels too. Scale the whole position: "
+                "x = (c + (i + 0.5) / rate) W / w."
+            ),
+            lambda image, out_shape, rate: _variant(image, out_shape, rate, unscaled_offsets=True),
         ),
         Mistake(
             _("the report's two shifts"),
@@ -272,9 +293,10 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
             _("int() where floor belongs"),
             _(
                 "left of the first centres or above them, your blend reaches outside the four "
-                "centres around the point: int() rounds toward zero, so for u = x - 0.5 = -0.9 "
-                "it gives 0, not -1, and the weight u - int(u) is -0.9. Take math.floor(u), or "
-                "clamp u to [0, W - 1] first, as for the right and bottom edges."
+                "centres around the point: int() rounds toward zero, so for x - 0.5 = -0.9 it "
+                "gives c = 0, not -1, and u = x - 1/2 - c comes out -0.9. Take "
+                "math.floor(x - 0.5), or clamp x - 0.5 to [0, W - 1] first, as for the right and "
+                "bottom edges."
             ),
             _truncated,
         ),
@@ -282,8 +304,9 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
             _("the weights flipped"),
             _(
                 "you weighted each centre by its distance from the point, not by its nearness: "
-                "the farther centre gets the larger share. The centre left of the point gets "
-                "1 - fx and the one right of it fx, and the same along y."
+                "the farther centre gets the larger share. With u = x - 1/2 - c the point's "
+                "distance past the left centre, that centre gets 1 - u and the one right of it "
+                "u; the same along y with v."
             ),
             _flipped,
         ),
@@ -363,9 +386,9 @@ BILINEAR_HINTS = register_hints(
             "point beyond the outer centres, on any side, takes the edge value."
         ),
         recipe=N_(
-            "u = x - 0.5, v = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the centres "
-            "are floor(u), floor(u) + 1 and floor(v), floor(v) + 1 (kept inside the image); the "
-            "weights are u - floor(u) and v - floor(v)."
+            "X = x - 0.5 and Y = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the top-left "
+            "centre is c = floor(X), r = floor(Y), with c + 1 and r + 1 kept inside the image; "
+            "u = X - c and v = Y - r weigh them as the lesson says."
         ),
     ),
     "bilinear_sample",

@@ -9,6 +9,7 @@ build validate their own input.
 from __future__ import annotations
 
 import itertools
+from typing import Any
 
 import numpy as np
 from matplotlib.colors import to_rgb
@@ -119,6 +120,18 @@ def print_coverage_error(rate: int, rms: float, worst: float, total: float) -> N
             rate=rate, rms=rms, worst=worst, total=total
         )
     )
+
+
+def print_line_ends(p0: Any, p1: Any) -> None:
+    """Print the heading of a line's pixel counts: its two end pixels.
+
+    Examples
+    --------
+    >>> print_line_ends((3, 6), (27, 17))
+    from (3, 6) to (27, 17):
+    """
+    start, end = (tuple(int(v) for v in point) for point in (p0, p1))
+    print(_("from {start} to {end}:").format(start=start, end=end))
 
 
 def print_line_pixels(name: str, pixels: int, farthest: float | None = None) -> None:

@@ -400,6 +400,10 @@ def _yellow_along(curve: np.ndarray, yellow: np.ndarray, odd: np.ndarray) -> np.
     return shares[seen[np.abs(np.arange(50)[:, None] - seen).argmin(axis=1)]]
 
 
+#: The least width of the box that marks the zoom on the overview, in canvas pixels.
+_ZOOM_BOX = 60
+
+
 def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     """The GAMES101 check for one handout loop: where the red and green curves part.
 
@@ -468,16 +472,27 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     bar = figure.colorbar(
         pieces, cax=scale, ticks=[0.0, 0.5, 1.0], format=PercentFormatter(1.0, decimals=0)
     )
-    bar.set_label(_("share yellow nearby"), fontsize=8, labelpad=-2)
+    bar.set_label(_("share of nearby pixels yellow"), fontsize=8, labelpad=-2)
     scale.tick_params(labelsize=7)
     few = len(odd) <= 40
     if few and len(odd):
         overview.plot(
             *(odd + 0.5).T, "o", markersize=9, fillstyle="none", color=VERMILLION, linestyle=""
         )
+    # The zoom is a few canvas pixels: at 192 screen pixels for 700 its own box would hide under
+    # the curve's stroke, so the box drawn around it is at least _ZOOM_BOX wide, kept on the canvas.
+    half = max(right - left, bottom - top, _ZOOM_BOX) / 2
+    centre_x = np.clip((left + right) / 2, half, _CANVAS[1] - half)
+    centre_y = np.clip((top + bottom) / 2, half, _CANVAS[0] - half)
     overview.add_patch(
         Rectangle(
-            (left, top), right - left, bottom - top, fill=False, edgecolor="black", linewidth=1.5
+            (centre_x - half, centre_y - half),
+            2 * half,
+            2 * half,
+            fill=False,
+            edgecolor="black",
+            linewidth=1.5,
+            zorder=3,
         )
     )
     overview.set_xlim(0, _CANVAS[1])
@@ -503,7 +518,7 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
         Patch(facecolor="none", edgecolor="black", linewidth=1.5),
     ]
     labels = [label for _colour, label in colours]
-    labels.append(_("box: the zoom"))
+    labels.append(_("box: around the zoom"))
     if few and len(odd):
         handles.append(Line2D([], [], marker="o", color=VERMILLION, fillstyle="none", linestyle=""))
         labels.append(_("not yellow, circled"))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -155,3 +156,26 @@ def test_the_handout_keys_anchor_may_be_the_translated_headings_and_formulas_may
     wrong_anchor = chinese.replace("#讲义", "#The-handouts")
     assert translation_problems("c", english, wrong_anchor) != []
     assert translation_problems("c", english, chinese.replace("0.00094", "0.0009")) != []
+
+
+def chinese_share(markdown: str) -> float:
+    """Chinese characters as a share of all letters, outside code, formulas and link targets."""
+    prose = re.sub(r"```.*?```|`[^`]*`|\$\$.*?\$\$|\$[^$]*\$|<[^>]+>", " ", markdown, flags=re.S)
+    prose = re.sub(r"\]\([^)]*\)", "]", prose)
+    chinese = len(re.findall(r"[\u4e00-\u9fff]", prose))
+    latin = len(re.findall(r"[A-Za-z]", prose))
+    return chinese / (chinese + latin)
+
+
+def test_the_share_counts_chinese_against_latin_letters_outside_code_and_formulas():
+    assert chinese_share("中文 `code` $x + y$ [链接](00_index.ipynb)") == 1.0
+    assert chinese_share("四个字 GAMES") == pytest.approx(3 / 8)
+
+
+@pytest.mark.parametrize("twin_path", EXISTING_TWINS, ids=lambda path: path.stem)
+def test_a_chinese_lesson_reads_in_chinese_at_least_90_percent(twin_path):
+    notebook = json.loads(twin_path.read_text(encoding="utf-8"))
+    markdown = "\n".join(
+        "".join(cell["source"]) for cell in notebook["cells"] if cell["cell_type"] == "markdown"
+    )
+    assert chinese_share(markdown) >= 0.9, twin_path.stem

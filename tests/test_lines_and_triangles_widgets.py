@@ -1,5 +1,7 @@
 """course.widgets.lines_and_triangles: a drag, a typed point or a slider redraws the library."""
 
+import re
+
 import numpy as np
 import pytest
 from matplotlib.colors import to_rgb
@@ -41,10 +43,19 @@ def test_line_app_reaches_every_octant():
     seen = set()
     for target in [(28, 20), (20, 28), (12, 28), (4, 20), (4, 12), (12, 4), (20, 4), (28, 12)]:
         set_ends(app, centre, target)
-        seen.add(app.heading.get_text().rsplit(" ", 1)[1])
+        seen.add(re.search(r"octant (\d)", app.heading.get_text())[1])
         painted = int(app.panels["bresenham"].get_array().sum())
         assert painted == max(abs(target[0] - 16), abs(target[1] - 16)) + 1
     assert seen == {str(k) for k in range(8)}
+
+
+def test_line_app_says_how_far_each_line_strays_from_the_red_one():
+    app = LineApp()
+    app.update()
+    # Bresenham's farthest centre: pixel (15, 11), half a row from the line through the end
+    # centres, which is at y = 6.5 + 11 * 12 / 24 = 12 at x = 15.5.
+    bresenham = 0.5 * 24 / np.hypot(24, 11)
+    assert f"Bresenham {bresenham:.2f} px, the report's loop 1.10 px" in app.heading.get_text()
 
 
 def test_line_app_shows_the_pixels_on_screen():

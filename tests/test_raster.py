@@ -1,13 +1,14 @@
 """course.raster lines: Bresenham in two forms, the report's 4-connected pitfall, Wu."""
 
 import itertools
+import re
 
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from course.raster import line, line_4connected, wu_line
+from course.raster import distance_from_line, line, line_4connected, wu_line
 
 
 def bresenham_violations(p0, p1, pixels):
@@ -195,3 +196,42 @@ def test_wu_shape_clips_and_bad_input_is_named():
     assert (pixels >= 0).all() and (pixels[:, 0] < 5).all() and (pixels[:, 1] < 4).all()
     with pytest.raises(ValueError, match="p1 must be finite"):
         wu_line((0, 0), (1, np.nan))
+
+
+small = st.integers(-30, 30)
+
+
+@given(small, small, small, small)
+def test_bresenham_stays_within_half_a_pixel_of_the_line_by_projection(x0, y0, x1, y1):
+    pixels = line((x0, y0), (x1, y1))
+    distances = distance_from_line(pixels, (x0, y0), (x1, y1))
+    # Independently: the centre minus its projection on the line through the end centres.
+    start, direction = np.array([x0, y0]) + 0.5, np.array([x1 - x0, y1 - y0], dtype=float)
+    relative = pixels + 0.5 - start
+    if direction.any():
+        along = relative @ direction / (direction @ direction)
+        relative = relative - along[:, None] * direction
+    np.testing.assert_allclose(distances, np.hypot(*relative.T), atol=1e-12)
+    assert distances.max() <= 0.5 + 1e-12
+    np.testing.assert_allclose(distance_from_line(pixels, (x1, y1), (x0, y0)), distances)
+
+
+def test_the_reports_loop_strays_past_a_pixel_where_bresenham_keeps_half():
+    report = distance_from_line(line_4connected((3, 6), (27, 17)), (3, 6), (27, 17))
+    bresenham = distance_from_line(line((3, 6), (27, 17)), (3, 6), (27, 17))
+    # Pixel (10, 8): the line is at y = 6 + 7 * 11 / 24 there, 1.21 rows below it.
+    assert report.max() == pytest.approx((6 + 7 * 11 / 24 - 8) * 24 / np.hypot(24, 11))
+    assert bresenham.max() < 0.5 < 1 < report.max()
+
+
+@pytest.mark.parametrize(
+    ("pixels", "p0", "said"),
+    [
+        ([[0, 0], [1, np.nan]], (0, 0), "pixels"),
+        ([[0, 0, 0]], (0, 0), "shape (K, 2)"),
+        ([[0, 0]], (0.5, 0), "p0 must be an integer pixel"),
+    ],
+)
+def test_distance_from_line_names_a_bad_argument(pixels, p0, said):
+    with pytest.raises(ValueError, match=re.escape(said)):
+        distance_from_line(pixels, p0, (4, 2))

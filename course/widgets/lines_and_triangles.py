@@ -27,7 +27,15 @@ from course.bezier_handouts import bresenham_curve, segments_report
 from course.canvas import blank, paint
 from course.i18n import _
 from course.images import EXAMPLE_POINTS
-from course.raster import hit_counts, line, line_4connected, triangle, triangle_coverage, wu_line
+from course.raster import (
+    distance_from_line,
+    hit_counts,
+    line,
+    line_4connected,
+    triangle,
+    triangle_coverage,
+    wu_line,
+)
 from course.triangles import EDGE_RULES
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import PixelPanel, pixel_axes
@@ -176,10 +184,15 @@ class LineApp(SliderApp):
             _("Wu: {count} px, ink {ink:.1f}").format(count=len(wu_pixels), ink=wu_weights.sum()),
             fontsize=9,
         )
+        farthest = [distance_from_line(pixels, p0, p1).max() for pixels in (bresenham, staircase)]
         self.heading.set_text(
             _("({x0}, {y0}) to ({x1}, {y1}): dx = {dx}, dy = {dy}, octant {octant}").format(
                 x0=p0[0], y0=p0[1], x1=p1[0], y1=p1[1], dx=dx, dy=dy, octant=octant(dx, dy)
             )
+            + _(
+                "; farthest centre from the red line: Bresenham {bresenham:.2f} px, the "
+                "report's loop {report:.2f} px"
+            ).format(bresenham=farthest[0], report=farthest[1])
         )
 
 

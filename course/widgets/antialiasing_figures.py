@@ -170,7 +170,8 @@ def pixel_area_figure(zoom: int = 64) -> Still:
     line = np.array([[-0.5, 3.4], [6.5, 0.6]])
     shape = (4, 6)
     coverage = reference(line, shape, width=1.0, k=64)
-    figure, (axes,) = pixel_figure([(coverage, (0, 6, 4, 0), "")], zoom, title_height=44)
+    # One entry a row: the 6-pixel-wide picture is too narrow for two columns of these labels.
+    figure, (axes,) = pixel_figure([(coverage, (0, 6, 4, 0), "")], zoom, title_height=60)
     _key(
         figure,
         [
@@ -182,7 +183,7 @@ def pixel_area_figure(zoom: int = 64) -> Still:
                 label=_("grey: the area covered, its number written in"),
             ),
         ],
-        ncols=2,
+        ncols=1,
     )
     direction = (line[1] - line[0]) / np.linalg.norm(line[1] - line[0])
     normal = np.array([-direction[1], direction[0]]) * 0.5

@@ -406,6 +406,10 @@ def wavefront_figure(height: int = 6, width: int = 10, pixel: tuple[int, int] = 
             )
         ],
         zoom=44,
+        legend=[
+            ("0.4", _("numbered {number}").format(number=t[y, x])),
+            ("0.7", _("what pixel ({x}, {y}) waits for").format(x=x, y=y)),
+        ],
     )
     for (row, column), value in np.ndenumerate(t):
         axes.text(column + 0.5, row + 0.5, str(value), ha="center", va="center", fontsize=9)

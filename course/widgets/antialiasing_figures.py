@@ -248,14 +248,14 @@ def splat_figure(x: float = 3.3, y: float = 2.8, zoom: int = 96) -> Still:
     dx, dy = x - first[0], y - first[1]
     label = {"color": GREEN, "fontsize": 9, "bbox": {"facecolor": "white", "lw": 0, "pad": 1}}
     axes.text(first[0] + dx / 2, first[1] - 0.12, f"dx = {dx:.1f}", ha="center", **label)
-    axes.text(x - 0.06, first[1] + dy / 2 + 0.1, f"dy = {dy:.1f}", ha="right", **label)
+    axes.text(x - 0.1, first[1] + dy / 2, f"dy = {dy:.1f}", ha="right", va="center", **label)
     order = np.lexsort((pixels[:, 0], pixels[:, 1]))
     for (column, row), weight in zip(pixels[order], weights[order], strict=True):
-        axes.text(
-            column + 0.08,
+        axes.text(  # the lower-right corner: the point and its dy sit towards the lower left
+            column + 0.92,
             row + 0.9,
             f"{weight:.2f}",
-            ha="left",
+            ha="right",
             fontsize=10,
             color="black" if weight > 0.5 else "white",
         )

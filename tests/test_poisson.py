@@ -1,5 +1,9 @@
 """course.poisson: every solver against the equation it solves, and against each other."""
 
+import inspect
+import json
+from pathlib import Path
+
 import numpy as np
 import pytest
 import scipy.ndimage
@@ -624,3 +628,19 @@ def test_the_checked_helpers_give_what_the_solvers_use():
     pasted = paste_window(problem, background, window)
     np.testing.assert_array_equal(pasted[3:6, 4:8], foreground[1:-1, 1:-1])
     np.testing.assert_array_equal(pasted, problem.paste(background, window))
+
+
+def test_lesson_08_quotes_the_sweep_of_lab_clone_as_it_is():
+    """Going further shows lab_clone's loop as a code block: it must stay the code's own."""
+    notebook = Path(__file__).resolve().parent.parent / "notebooks" / "08_poisson.ipynb"
+    cells = json.loads(notebook.read_text(encoding="utf-8"))["cells"]
+    quoted = next(
+        "".join(cell["source"]).split("```python\n")[1].split("```")[0]
+        for cell in cells
+        if cell["cell_type"] == "markdown" and "```python" in "".join(cell["source"])
+    )
+    source = inspect.getsource(poisson.lab_clone)
+    lines = [line.strip() for line in quoted.strip().splitlines()]
+    code = [line.strip() for line in source.splitlines()]
+    start = code.index(lines[0])
+    assert code[start : start + len(lines)] == lines

@@ -170,7 +170,8 @@ def pixel_area_figure(zoom: int = 64) -> Still:
     line = np.array([[-0.5, 3.4], [6.5, 0.6]])
     shape = (4, 6)
     coverage = reference(line, shape, width=1.0, k=64)
-    figure, (axes,) = pixel_figure([(coverage, (0, 6, 4, 0), "")], zoom, title_height=44)
+    # One entry a row: the 6-pixel-wide picture is too narrow for two columns of these labels.
+    figure, (axes,) = pixel_figure([(coverage, (0, 6, 4, 0), "")], zoom, title_height=60)
     _key(
         figure,
         [
@@ -182,7 +183,7 @@ def pixel_area_figure(zoom: int = 64) -> Still:
                 label=_("grey: the area covered, its number written in"),
             ),
         ],
-        ncols=2,
+        ncols=1,
     )
     direction = (line[1] - line[0]) / np.linalg.norm(line[1] - line[0])
     normal = np.array([-direction[1], direction[0]]) * 0.5
@@ -247,14 +248,14 @@ def splat_figure(x: float = 3.3, y: float = 2.8, zoom: int = 96) -> Still:
     dx, dy = x - first[0], y - first[1]
     label = {"color": GREEN, "fontsize": 9, "bbox": {"facecolor": "white", "lw": 0, "pad": 1}}
     axes.text(first[0] + dx / 2, first[1] - 0.12, f"dx = {dx:.1f}", ha="center", **label)
-    axes.text(x - 0.06, first[1] + dy / 2 + 0.1, f"dy = {dy:.1f}", ha="right", **label)
+    axes.text(x - 0.1, first[1] + dy / 2, f"dy = {dy:.1f}", ha="right", va="center", **label)
     order = np.lexsort((pixels[:, 0], pixels[:, 1]))
     for (column, row), weight in zip(pixels[order], weights[order], strict=True):
-        axes.text(
-            column + 0.08,
+        axes.text(  # the lower-right corner: the point and its dy sit towards the lower left
+            column + 0.92,
             row + 0.9,
             f"{weight:.2f}",
-            ha="left",
+            ha="right",
             fontsize=10,
             color="black" if weight > 0.5 else "white",
         )

@@ -313,7 +313,9 @@ class VoidAndClusterApp(SliderApp):
         (self.blue_line,) = right.plot(
             frequency, np.ones_like(frequency), label=_("void-and-cluster")
         )
-        (self.white_line,) = right.plot(frequency, np.ones_like(frequency), label=_("white noise"))
+        (self.white_line,) = right.plot(
+            frequency, np.ones_like(frequency), ls="--", label=_("white noise")
+        )
         right.set_xlim(0, 0.72)
         right.set_ylim(0, 3)
         right.set_xlabel(_("frequency (cycles per pixel)"))
@@ -340,7 +342,12 @@ class VoidAndClusterApp(SliderApp):
         y, x = np.unravel_index(int(np.flatnonzero(self.ranks.ravel() == count)[0]), pattern.shape)
         self.next_dot.set_data([x], [y])
         if count < self.initial:
-            phase = _("phase 1: ranks a random start, tightest cluster out first")
+            # Phase 1 ranks backwards: the circled dot is the one taken out when it and these
+            # dots were left, so among these alone its place looks like a void.
+            phase = _(
+                "phase 1: ranks a random start, tightest cluster out first;\n"
+                "the circled one went out last: the tightest cluster then"
+            )
         else:
             phase = _("phase 2: each new dot into the largest void (lowest energy)")
         self.heading.set_text(

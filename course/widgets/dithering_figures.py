@@ -167,11 +167,12 @@ def mask_figure(size: int = 64, seed: int = 0) -> Still:
     white_power = white_power / white.var()
     chart.plot(frequency, blue_power, color=BLUE, label=blue_name)
     chart.plot(frequency, white_power, color=VERMILLION, ls="--", label=white_name)
-    chart.axvline(0.125, color="0.5", lw=0.8, ls=":")
+    chart.axvline(0.125, color="0.5", lw=0.8, ls=":", label=_("below 0.125: the low frequencies"))
     chart.set_xlabel(_("frequency (cycles per pixel)"), fontsize=8)
     chart.set_ylabel(_("power (white noise = 1)"), fontsize=8)
     chart.tick_params(labelsize=7)
-    chart.legend(fontsize=7)
+    chart.set_ylim(top=chart.get_ylim()[1] * 1.3)  # room for the legend above the lines
+    chart.legend(fontsize=7, loc="upper left")
     blue_low, white_low = low_frequency_fraction(mask), low_frequency_fraction(white)
     caption = _(
         "share of the power below 0.125 cycles per pixel: mask {mask:.2e}, white noise "
@@ -406,6 +407,10 @@ def wavefront_figure(height: int = 6, width: int = 10, pixel: tuple[int, int] = 
             )
         ],
         zoom=44,
+        legend=[
+            ("0.4", _("numbered {number}").format(number=t[y, x])),
+            ("0.7", _("what pixel ({x}, {y}) waits for").format(x=x, y=y)),
+        ],
     )
     for (row, column), value in np.ndenumerate(t):
         axes.text(column + 0.5, row + 0.5, str(value), ha="center", va="center", fontsize=9)

@@ -83,9 +83,13 @@ def window_figure(row: int = 2, column: int = 2, zoom: int = 56) -> Still:
     out = filters.blur(patch)
     extent = (0, 5, 5, 0)
     figure, axes = pixel_figure(
-        [(patch, extent, _("input: the 3 x 3 window")), (out, extent, _("output: its mean"))],
+        [
+            (patch, extent, _("input: the 3 x 3 window")),
+            (out, extent, _("output: its mean\n(border pixels: the report's rule, below)")),
+        ],
         zoom,
         gap=40,
+        title_height=44,
     )
     for panel, values in zip(axes, (patch, out), strict=True):
         grid = [[(x, 0), (x, 5)] for x in range(6)] + [[(0, y), (5, y)] for y in range(6)]

@@ -269,8 +269,16 @@ def convergence_figure() -> Still:
     grey levels off on average, 77% of its pixels by more than one
     """
     record = lab_sweeps()
+    height, width = record["region"]
+    rho = solvers.jacobi_rate((height - 2, width - 2))  # the unknowns: inside the ring
     figure = Figure(figsize=(8.0, 3.0), dpi=100)
     axes = figure.add_subplot()
+    axes.set_title(
+        _("the lab's scene; a Jacobi sweep leaves ρ = {rho:.5f} of the slowest error").format(
+            rho=rho
+        ),
+        fontsize=9,
+    )
     for method, colour, dashes in (
         ("jacobi", BLUE, "-"),
         ("gauss_seidel", VERMILLION, "--"),
@@ -301,8 +309,6 @@ def convergence_figure() -> Still:
     figure.tight_layout()
     final = {method: record[method]["errors"][-1] * 255 for method in _NAMES}
     lab = record["lab_result"]
-    height, width = record["region"]
-    rho = solvers.jacobi_rate((height - 2, width - 2))  # the unknowns: inside the ring
     caption = _(
         "rho = {rho:.5f} per Jacobi sweep; "
         "after the lab skeleton's 8000 sweeps: Jacobi up to {jacobi:.2g} grey levels off, "

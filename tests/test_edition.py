@@ -283,6 +283,28 @@ def test_no_stored_cell_splits_its_printed_lines_in_two_outputs():
             assert not twice, (path.name, cell.get("id"), twice)
 
 
+#: Exercises whose checker draws no picture on a pass: a number or a table says it all.
+NO_PASS_PICTURE = {"comb", "bilinear_sample"}
+
+
+def test_every_stored_pass_shows_its_picture_in_both_languages():
+    """A pass picture that raises is dropped in silence by the checker: its absence is the sign."""
+    passes = 0
+    for path in sorted(Path(__file__).parents[1].glob("notebooks/**/[0-9][0-9]_*.ipynb")):
+        for cell in json.loads(path.read_text(encoding="utf-8"))["cells"]:
+            outputs = cell.get("outputs", [])
+            texts = ["".join(out["data"].get("text/plain", "")) for out in outputs if "data" in out]
+            found = re.match(r"(PASS|通过) (\w+)", texts[0]) if texts else None
+            if found is None or found[2] in NO_PASS_PICTURE:
+                continue
+            passes += 1
+            assert any("image/png" in out["data"] for out in outputs if "data" in out), (
+                path.name,
+                cell["id"],
+            )
+    assert passes >= 2 * 15
+
+
 def test_executing_and_stripping_as_make_notebooks_does_leaves_the_kernelspec(tmp_path):
     """``make notebooks`` runs nbconvert --execute, joins the streams, then nbstripout.
 

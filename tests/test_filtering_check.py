@@ -170,6 +170,11 @@ def test_blur_mistakes_are_named_with_a_map_and_the_first_pixel(student, mistake
         (lambda image: np.abs(correlate(image, SOBEL_X)), "Gx alone"),
         (_frame_zero(sobel_magnitude), "the frame skipped"),
         (numpy_reflect_sobel, "numpy's 'reflect' padding"),
+        (lambda image: sobel_magnitude(image) ** 2, "the sum of squares, no root"),
+        (
+            lambda image: np.abs(correlate(image, SOBEL_X)) + np.abs(correlate(image, SOBEL_X.T)),
+            "|Gx| + |Gy|",
+        ),
     ],
 )
 def test_edge_mistakes_are_named_with_a_map(student, mistake):

@@ -229,3 +229,19 @@ def test_offsets_left_unscaled_are_named_and_not_blamed_on_a_correct_lookup():
     assert result.mistake == "the sub-pixel offsets not scaled"
     assert "x = (c + (i + 0.5) / rate) W / w" in str(result)
     assert check.image_supersampling(reports_version).mistake == "the report's two shifts"
+
+
+def test_swapped_scales_are_named_not_taken_for_a_whole_scale():
+    def swapped(image, out_shape, rate):
+        height, width = out_shape
+        sx, sy = image.shape[0] / height, image.shape[1] / width  # x by H / h: the slip
+        result = np.zeros((height, width, *image.shape[2:]))
+        for row in range(height):
+            for column in range(width):
+                for j in range(rate):
+                    for i in range(rate):
+                        x, y = (column + (i + 0.5) / rate) * sx, (row + (j + 0.5) / rate) * sy
+                        result[row, column] += bilinear_sample(image, x, y) / rate**2
+        return result
+
+    assert check.image_supersampling(swapped).mistake == "the two scales swapped"

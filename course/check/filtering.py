@@ -309,6 +309,28 @@ EDGE_MISTAKES = (
         lambda image: np.abs(_correlate(image, SOBEL_X, "replicate")),
     ),
     Mistake(
+        N_("the sum of squares, no root"),
+        N_(
+            "you returned Gx^2 + Gy^2, the sum of squares the lab report names: the "
+            "magnitude is its square root, sqrt(Gx^2 + Gy^2)."
+        ),
+        lambda image: (
+            _correlate(image, SOBEL_X, "replicate") ** 2
+            + _correlate(image, SOBEL_X.T, "replicate") ** 2
+        ),
+    ),
+    Mistake(
+        N_("|Gx| + |Gy|"),
+        N_(
+            "you added |Gx| and |Gy|, a cheaper estimate that comes out up to 1.41 times too "
+            "large on a diagonal edge; the magnitude is sqrt(Gx^2 + Gy^2)."
+        ),
+        lambda image: (
+            np.abs(_correlate(image, SOBEL_X, "replicate"))
+            + np.abs(_correlate(image, SOBEL_X.T, "replicate"))
+        ),
+    ),
+    Mistake(
         N_("the frame skipped"),
         N_(
             "your loops run from 1 to size - 2 and leave the frame at 0. Compute every pixel, "

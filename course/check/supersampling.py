@@ -65,13 +65,17 @@ def _variant(
     whole_scale: bool = False,
     divide: str = "square",
     unscaled_offsets: bool = False,
+    swapped_scales: bool = False,
 ) -> np.ndarray:
-    """Supersampling with one of the slips: a whole-number scale, / rate for / rate^2, or the
-    sub-pixel offsets left in output pixels while the pixel's corner is in input pixels."""
+    """Supersampling with one of the slips: a whole-number scale, / rate for / rate^2, the
+    sub-pixel offsets left in output pixels while the pixel's corner is in input pixels, or
+    x scaled by H / h and y by W / w."""
     image = np.asarray(image, dtype=float)
     (height, width), (in_height, in_width) = out_shape, image.shape[:2]
     sx = in_width // width if whole_scale else in_width / width
     sy = in_height // height if whole_scale else in_height / height
+    if swapped_scales:
+        sx, sy = in_height / height, in_width / width
     offsets = (np.arange(rate) + 0.5) / rate
     offset_x, offset_y = (offsets, offsets) if unscaled_offsets else (offsets * sx, offsets * sy)
     xs = np.arange(width)[:, None] * sx + offset_x[None, :]  # (w, rate)
@@ -89,9 +93,9 @@ def _cases() -> list[dict[str, Any]]:
     stripes = np.tile([0.0, 1.0], (6, 6))  # 6 x 12, one-pixel stripes
     return [
         # First a case where every named slip gives its own answer, none the right one: at
-        # rate 1, offsets left unscaled and the report's two shifts agree, and at 12 / 4 = 3 = rate
-        # the report's two shifts cancel.
-        {"image": stripes, "out_shape": (3, 5), "rate": 2},
+        # rate 1, offsets left unscaled and the report's two shifts agree, at 12 / 4 = 3 = rate
+        # the report's two shifts cancel, and with H / h = 2 = 12 // 5 swapped scales look whole.
+        {"image": stripes, "out_shape": (4, 5), "rate": 2},
         {"image": stripes, "out_shape": (2, 4), "rate": 1},
         {"image": stripes, "out_shape": (2, 4), "rate": 3},
         {"image": rng.random((8, 8)), "out_shape": (2, 2), "rate": 4},
@@ -134,6 +138,15 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
                 "pixel, so their mean divides by rate squared."
             ),
             lambda image, out_shape, rate: _variant(image, out_shape, rate, divide="rate"),
+        ),
+        Mistake(
+            _("the two scales swapped"),
+            _(
+                "you scaled x by H / h and y by W / w: x runs along the width, so x = (c + (i + "
+                "0.5) / rate) W / w and y = (r + (j + 0.5) / rate) H / h; out_shape is (h, w), "
+                "rows first."
+            ),
+            lambda image, out_shape, rate: _variant(image, out_shape, rate, swapped_scales=True),
         ),
         Mistake(
             _("the sub-pixel offsets not scaled"),

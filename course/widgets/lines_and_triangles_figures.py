@@ -223,7 +223,7 @@ def edge_rules_figure(size: int = 6) -> Still:
     """
     a, b, c, d = (0, 0), (size, 0), (size, size), (0, size)
     colours = np.array([(1, 1, 1), _rgb(SKY), _rgb(ORANGE), _rgb(VERMILLION)])
-    windows, notes = [], []
+    windows, notes, twice_painted = [], [], []
     for rule in ("top-left", "closed", "open"):
         first = triangle(a, b, c, rule=rule)
         second = triangle(a, c, d, rule=rule)
@@ -231,6 +231,7 @@ def edge_rules_figure(size: int = 6) -> Still:
         owner = np.zeros((size, size), dtype=int)
         owner[first[:, 1], first[:, 0]] += 1
         owner[second[:, 1], second[:, 0]] += 2
+        twice_painted.append(np.argwhere(owner == 3)[:, ::-1] + 0.5)
         title = _("rule {rule}").format(rule=repr(rule))
         windows.append((colours[owner], (0, size, size, 0), title))
         notes.append((rule, int((counts == 2).sum()), int((counts == 0).sum())))
@@ -240,12 +241,14 @@ def edge_rules_figure(size: int = 6) -> Still:
         legend=[
             (SKY, _("upper triangle")),
             (ORANGE, _("lower triangle")),
-            (VERMILLION, _("both")),
+            (VERMILLION, _("both (crossed)")),
             ("white", _("neither")),
         ],
     )
-    for axes in axes_list:
+    for axes, twice in zip(axes_list, twice_painted, strict=True):
         _grid(axes, 0, size, 0, size)
+        # Both and the lower triangle are close in hue: a cross tells them apart without colour.
+        axes.plot(*twice.T, "x", color="black", ms=9, mew=1.5)
         axes.plot([0, size], [0, size], color="0.15", lw=1.5)
         on_edge = np.arange(size) + 0.5
         axes.plot(on_edge, on_edge, "o", color="0.15", ms=4, fillstyle="none")

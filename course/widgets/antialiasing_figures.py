@@ -180,7 +180,7 @@ def pixel_area_figure(zoom: int = 64) -> Still:
             Patch(
                 facecolor="0.6",
                 edgecolor="0.5",
-                label=_("grey: the area covered, its number written in"),
+                label=_("brightness and number: the area covered (black 0, white 1)"),
             ),
         ],
         ncols=1,

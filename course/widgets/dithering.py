@@ -346,7 +346,7 @@ class VoidAndClusterApp(SliderApp):
             # dots were left, so among these alone its place looks like a void.
             phase = _(
                 "phase 1: ranks a random start, tightest cluster out first;\n"
-                "the circled one went out last: the tightest cluster then"
+                "circled: the dot taken out when it and these were left"
             )
         else:
             phase = _("phase 2: each new dot into the largest void (lowest energy)")

@@ -241,14 +241,15 @@ def edge_rules_figure(size: int = 6) -> Still:
         legend=[
             (SKY, _("upper triangle")),
             (ORANGE, _("lower triangle")),
-            (VERMILLION, _("both (crossed)")),
+            (VERMILLION, _("both (marked +)")),
             ("white", _("neither")),
         ],
     )
     for axes, twice in zip(axes_list, twice_painted, strict=True):
         _grid(axes, 0, size, 0, size)
-        # Both and the lower triangle are close in hue: a cross tells them apart without colour.
-        axes.plot(*twice.T, "x", color="black", ms=9, mew=1.5)
+        # Both and the lower triangle are close in hue: a mark tells them apart without colour,
+        # a + rather than an x, whose arm would lie along the shared diagonal.
+        axes.plot(*twice.T, "+", color="black", ms=10, mew=1.5)
         axes.plot([0, size], [0, size], color="0.15", lw=1.5)
         on_edge = np.arange(size) + 0.5
         axes.plot(on_edge, on_edge, "o", color="0.15", ms=4, fillstyle="none")

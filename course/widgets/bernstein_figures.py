@@ -146,7 +146,7 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
     _label_points(right, hodograph, "D")
     right.plot(0, 0, "+", color="0.2", markersize=12)
     right.annotate(
-        "origin", (0, 0), xytext=(-3, -16), textcoords="offset points", fontsize=7, ha="left"
+        _("origin"), (0, 0), xytext=(-3, -16), textcoords="offset points", fontsize=7, ha="left"
     )
     fine = np.linspace(0.0, 1.0, 1001)
     speeds = np.hypot(*de_casteljau(hodograph, fine).T)

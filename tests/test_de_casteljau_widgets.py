@@ -1,6 +1,7 @@
 """course.widgets.de_casteljau: moving a control redraws what the library computes."""
 
 import io
+import json
 
 import numpy as np
 from PIL import Image
@@ -178,7 +179,9 @@ def test_decimal_commas_are_refused_not_read_as_more_points():
 def test_a_drag_redraws_only_b_of_t_s_numbers_and_the_release_brings_the_title_back():
     app = DeCasteljauApp(t=0.5)
     patches = []
-    app.view.image.send = lambda content, buffers=None: patches.append(content)
+    app.view.image.send = lambda content, buffers=None: patches.append(
+        {**content, "buffers": buffers}
+    )
     app.refresh()
     before = picture(app)
     start = app.picture_point(app.axes, EXAMPLE_POINTS[1])
@@ -195,7 +198,10 @@ def test_a_drag_redraws_only_b_of_t_s_numbers_and_the_release_brings_the_title_b
         point = de_casteljau(parse_points(app.value("points")), 0.5)
         assert app.title_numbers.get_text() == f"({point[0]:.1f}, {point[1]:.1f})"
         assert app.title.get_text() == app.title_start.get_text() + app.title_numbers.get_text()
-    assert patches and all(patch["kind"] == "patch" for patch in patches)
+    # The browser draws each step: B(t)'s numbers are one text of the step's drawing.
+    assert patches and all(patch["kind"] == "drawing" for patch in patches)
+    texts = [command.get("text") for command in json.loads(patches[-1]["buffers"][-3])]
+    assert app.title_numbers.get_text() in texts and app.title.get_text() not in texts
     assert np.array_equal(picture(app), before)  # the whole picture waits for the release
     app.pointer("up", *np.add(start, (21, -15)))
     assert app.title.get_visible() and not app.title_numbers.get_visible()
@@ -235,6 +241,7 @@ def drawn_in_full(points: np.ndarray, t: float, held: int) -> np.ndarray:
 def test_every_step_of_a_drag_shows_what_a_full_redraw_draws():
     # Cost: about 1.5 s (a fresh app drawn whole for each of four steps).
     app = DeCasteljauApp(t=0.35)
+    app.view.draw_in_browser = False  # Agg's pixels, patched (tests/test_browser_drawing.py)
     messages = []
     app.view.image.send = lambda content, buffers=None: (
         messages.append((content, buffers)) if content.get("kind") == "patch" else None
@@ -252,7 +259,7 @@ def test_every_step_of_a_drag_shows_what_a_full_redraw_draws():
     assert all(content["kind"] == "patch" for content, _ in messages)
 
 
-def test_a_drag_step_through_the_comm_is_answered_by_its_patch_alone():
+def test_a_drag_step_through_the_comm_is_answered_by_its_drawing_alone():
     app = DeCasteljauApp(t=0.5)
     app.refresh()
     sent = []
@@ -262,14 +269,14 @@ def test_a_drag_step_through_the_comm_is_answered_by_its_patch_alone():
     sent.clear()
     for step in range(1, 4):
         app._on_message(app.view.image, {"kind": "move", "x": start[0] + step, "y": start[1]}, [])
-        assert [message["kind"] for message in sent] == ["patch"] and sent[0]["drawn"] is True
+        assert [message["kind"] for message in sent] == ["drawing"] and sent[0]["drawn"] is True
         sent.clear()
-    # A move that changes nothing sends no patch: a lone "drawn" answers it.
+    # A move that changes nothing sends no drawing: a lone "drawn" answers it.
     app._on_message(app.view.image, {"kind": "move", "x": start[0] + 3, "y": start[1]}, [])
     assert sent == [{"kind": "drawn"}] and not app.view.awaited
-    # Moves made from Python code wait for no answer: their patches say nothing of one.
+    # Moves made from Python code wait for no answer: their drawings say nothing of one.
     app.pointer("move", start[0] + 9, start[1])
-    assert sent[-1]["kind"] == "patch" and "drawn" not in sent[-1]
+    assert sent[-1]["kind"] == "drawing" and "drawn" not in sent[-1]
 
 
 def test_the_points_text_reaches_the_browser_once_at_the_release_not_at_every_step():

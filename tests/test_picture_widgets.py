@@ -4,6 +4,7 @@ import base64
 import io
 import itertools
 import json
+import math
 import shutil
 import subprocess
 
@@ -206,6 +207,7 @@ def patched(shown: np.ndarray, messages: list) -> np.ndarray:
 
 def test_patches_bring_the_browser_s_picture_to_the_canvas_exactly():
     view = FigureView(shape=(120, 160))
+    view.draw_in_browser = False  # Agg's pixels, patched
     axes = view.figure.add_axes((0, 0, 1, 1))
     axes.set_xlim(0, 1)
     axes.set_ylim(0, 1)
@@ -232,11 +234,13 @@ def test_patches_bring_the_browser_s_picture_to_the_canvas_exactly():
 
 def test_a_step_that_changes_nothing_sends_nothing_and_jpeg_is_never_patched():
     view = FigureView(shape=(40, 40))
+    view.draw_in_browser = False  # Agg's pixels, patched
     view.figure.add_axes((0, 0, 1, 1)).set_axis_off()
     sent = Sent(view)
     assert view.render_moving([], patches=True) != b""  # no whole picture yet: one is sent
     assert view.render_moving([], patches=True) == b"" and sent.messages == []
     photo = FigureView(shape=(40, 40), format="jpeg")
+    photo.draw_in_browser = False
     photo.figure.add_axes((0, 0, 1, 1)).set_axis_off()
     photo.render_moving([])
     assert photo.render_moving([], patches=True).startswith(b"\xff\xd8")
@@ -423,13 +427,16 @@ step("a patch that is not the answer", () =>
   handlers["msg:custom"]({ kind: "patch", rectangles: [] }, []));
 step("the patch that answers", () =>
   handlers["msg:custom"]({ kind: "patch", rectangles: [], drawn: true }, []));
-step("up", () => listeners.pointerup(at(5)));
+step("a move", () => listeners.pointermove(at(5)));
+step("the drawing that answers", () =>
+  handlers["msg:custom"]({ kind: "drawing", drawn: true }, []));
+step("up", () => listeners.pointerup(at(6)));
 console.log(JSON.stringify(steps));
 """
 
 
 @pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
-def test_picture_js_sends_a_move_only_once_the_last_is_answered_by_drawn_or_its_patch(tmp_path):
+def test_picture_js_sends_a_move_only_once_the_last_is_answered(tmp_path):
     assert picture_js_in_node(tmp_path, DRAG_HARNESS) == [
         "down: down@1",
         "two moves while the press is drawn: ",
@@ -437,7 +444,9 @@ def test_picture_js_sends_a_move_only_once_the_last_is_answered_by_drawn_or_its_
         "a move: ",
         "a patch that is not the answer: ",
         "the patch that answers: move@4",
-        "up: up@5",
+        "a move: ",
+        "the drawing that answers: move@5",
+        "up: up@6",
     ]
 
 
@@ -495,6 +504,7 @@ def test_fixed_text_draws_what_text_draws_and_falls_back_where_it_cannot():
 def test_a_replayed_line_is_drawn_as_matplotlib_draws_it_and_a_restyled_one_anew():
     def drag(change: str, replay: bool) -> list[np.ndarray]:
         view = FigureView(shape=(80, 120))
+        view.draw_in_browser = False  # Agg's pixels, patched
         axes = view.figure.add_axes((0.05, 0.05, 0.9, 0.9))
         axes.set_xlim(0, 10)
         axes.set_ylim(0, 10)
@@ -542,3 +552,121 @@ def test_a_still_in_a_notebook_shows_its_picture_then_its_caption_as_text(monkey
     assert raw and bundle["text/plain"] == "two by three, all black"  # the site's alt text
     assert decoded(base64.b64decode(bundle["image/png"])).shape == (2, 3, 3)
     assert capsys.readouterr().out == "two by three, all black\n"  # what a student reads
+
+
+DRAWING_HARNESS = r"""
+const calls = [];
+const text = (part) =>
+  new TextDecoder().decode(part instanceof DataView ? part : new Uint8Array(part));
+globalThis.Blob = class {
+  constructor(parts, options) {
+    this.text = parts.map(text).join("");
+  }
+};
+globalThis.URL = { createObjectURL: (blob) => blob.text, revokeObjectURL: () => {} };
+const turns = async (count) => {
+  for (let turn = 0; turn < count; turn++) await new Promise((resolve) => setImmediate(resolve));
+};
+globalThis.createImageBitmap = (blob) =>
+  turns(3).then(() => ({ width: 5, height: 4, text: blob.text }));
+const warnings = [];
+console.warn = (...parts) => warnings.push(parts.join(" "));
+const image = { addEventListener() {}, style: {} };
+const context = new Proxy(
+  {},
+  {
+    get(target, name) {
+      if (name === "canvas") return { toBlob: (done) => done({ text: "composed" }) };
+      return (...args) => calls.push(`${name}(${args.map((a) => (a.text ?? a)).join(",")})`);
+    },
+    set(target, name, value) {
+      calls.push(`${name}=${Array.isArray(value) ? `[${value}]` : value}`);
+      return true;
+    },
+  },
+);
+globalThis.document = {
+  createElement: (tag) => (tag === "img" ? image : { getContext: () => context }),
+};
+const handlers = {};
+const state = { value: new Uint8Array(), format: "png", width: 5, height: 4, handles: [] };
+const model = { get: (key) => state[key], on: (event, handler) => { handlers[event] = handler; } };
+const { default: widget } = await import(process.argv[2]);
+widget.render({ model, el: { appendChild() {} } });
+// A DataView that starts at an odd byte, as a buffer cut from a message may.
+const view = (typed) => {
+  const bytes = new Uint8Array(typed.buffer);
+  const padded = new Uint8Array(bytes.length + 1);
+  padded.set(bytes, 1);
+  return new DataView(padded.buffer, 1, bytes.length);
+};
+const vertices = view(new Float32Array([1, 2, 3, 4, 0, -1, 1, 1, -1, 1, 2.5, 3.5]));
+const codes = view(new Uint8Array([1, 2, 1, 2, 79, 1]));
+const commands = [
+  { path: [0, 2], stroke: [1, 0, 0, 0.5], fill: null, width: 2, dash: [1, [3, 2]],
+    cap: "butt", join: "round", clip: [0, 0, 5, 4] },
+  { marker: [2, 3], at: [5, 1], stroke: null, fill: [0, 0, 1, 1], width: 0, dash: null,
+    cap: "butt", join: "miter", clip: null },
+  { text: "B(t)", x: 1, y: 3, angle: 90, font: [12.5, 700, "italic", ["DejaVu Sans", "sans-serif"]],
+    color: [0, 0, 0, 1], clip: null },
+];
+const backdrop = new DataView(new TextEncoder().encode("BACK").buffer);
+const listed = view(new TextEncoder().encode(JSON.stringify(commands)));
+handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [backdrop, listed, vertices, codes]);
+await turns(50);
+const first = calls.splice(0);
+// A drawing sent before a whole picture came back is dropped, and so are the next ones
+// until a drawing brings the new picture's background.
+handlers["msg:custom"]({ kind: "drawing" }, [listed, vertices, codes]);
+state.value = new TextEncoder().encode("V1");
+handlers["change:value"]();
+const none = view(new TextEncoder().encode("[]"));
+handlers["msg:custom"]({ kind: "drawing" }, [none, vertices, codes]);
+await turns(50);
+console.log(JSON.stringify({ first, after: calls, shown: image.src, warnings }));
+"""
+
+
+@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
+def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
+    printed = picture_js_in_node(tmp_path, DRAWING_HARNESS)
+    assert printed["warnings"] == [] and printed["after"] == []
+    assert printed["shown"] == "V1"
+    assert printed["first"] == [
+        "drawImage(BACK,0,0)",
+        # The path: clipped, traced, stroked half-transparent with its dashes.
+        "save()",
+        "beginPath()",
+        "rect(0,0,5,4)",
+        "clip()",
+        "beginPath()",
+        "moveTo(1,2)",
+        "lineTo(3,4)",
+        "strokeStyle=rgba(255, 0, 0, 0.5)",
+        "lineWidth=2",
+        "lineCap=butt",
+        "lineJoin=round",
+        "setLineDash(3,2)",
+        "lineDashOffset=1",
+        "stroke()",
+        "restore()",
+        # The marker, a closed triangle, at (2.5, 3.5): filled, not stroked.
+        "save()",
+        "beginPath()",
+        "moveTo(2.5,2.5)",
+        "lineTo(3.5,4.5)",
+        "closePath()",
+        "fillStyle=rgba(0, 0, 255, 1)",
+        "fill()",
+        "restore()",
+        # The text at its baseline's start, turned as matplotlib turns it.
+        "save()",
+        'font=italic 700 12.5px "DejaVu Sans", sans-serif',
+        "fillStyle=rgba(0, 0, 0, 1)",
+        "textAlign=left",
+        "textBaseline=alphabetic",
+        "translate(1,3)",
+        f"rotate({-math.pi / 2})",
+        "fillText(B(t),0,0)",
+        "restore()",
+    ]

@@ -6,16 +6,109 @@
 // queues more than one redraw: while the kernel draws, only the latest
 // position is kept, and it is sent when the kernel says the picture is done.
 // The cursor shows what a press would do, from the grabbable places the
-// kernel lists in `handles`. During a drag the kernel sends only the rectangles
-// that changed ("patch" messages, one PNG buffer each): they are painted, in
-// order, over a canvas holding the picture, which the image then shows; a patch
-// that answers a move says so ("drawn": true), as a lone "drawn" does otherwise. The
-// release brings the whole picture back as `value`, and a new `value` drops
-// any patch still on its way.
+// kernel lists in `handles`. During a drag the kernel sends what moves as drawing
+// commands ("drawing" messages: paths, markers and texts in picture pixels, as
+// matplotlib would draw them, see course/widgets/browser_drawing.py), drawn here
+// over the still background it sends with the first of them; or, where the
+// browser cannot draw what moves, only the rectangles that changed ("patch"
+// messages, one PNG buffer each), painted in order over the picture. Either
+// way a canvas is composed, which the image then shows; a message that
+// answers a move says so ("drawn": true), as a lone "drawn" does otherwise.
+// The release brings the whole picture back as `value`, and a new `value`
+// drops any drawing or patch still on its way.
 
 function pictureUrl(value, format) {
   const bytes = value instanceof DataView ? value : new Uint8Array(value ?? []);
   return URL.createObjectURL(new Blob([bytes], { type: `image/${format}` }));
+}
+
+// A buffer of the kernel's as a typed array of its own (a DataView may start at
+// any byte, where a Float32Array must start at a multiple of four).
+function floats(buffer) {
+  const bytes = buffer instanceof DataView ? buffer : new Uint8Array(buffer ?? []);
+  return new Float32Array(new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength).slice().buffer);
+}
+
+function octets(buffer) {
+  const bytes = buffer instanceof DataView ? buffer : new Uint8Array(buffer ?? []);
+  return new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+}
+
+const rgba = ([r, g, b, a]) =>
+  `rgba(${Math.round(255 * r)}, ${Math.round(255 * g)}, ${Math.round(255 * b)}, ${a})`;
+const GENERIC = new Set(["serif", "sans-serif", "cursive", "fantasy", "monospace"]);
+const family = (name) => (GENERIC.has(name) ? name : `"${name.replace(/"/g, "")}"`);
+
+// matplotlib's path codes: 1 move, 2 line, 3 and 4 the control points of a
+// quadratic and a cubic Bezier (the last one is where it ends), 79 close.
+function trace(context, vertices, codes, [start, count], dx = 0, dy = 0) {
+  const x = (i) => vertices[2 * i] + dx;
+  const y = (i) => vertices[2 * i + 1] + dy;
+  for (let i = start; i < start + count; i++) {
+    const code = codes[i];
+    if (code === 1) context.moveTo(x(i), y(i));
+    else if (code === 2) context.lineTo(x(i), y(i));
+    else if (code === 3) {
+      context.quadraticCurveTo(x(i), y(i), x(i + 1), y(i + 1));
+      i += 1;
+    } else if (code === 4) {
+      context.bezierCurveTo(x(i), y(i), x(i + 1), y(i + 1), x(i + 2), y(i + 2));
+      i += 2;
+    } else if (code === 79) context.closePath();
+  }
+}
+
+function clipTo(context, clip) {
+  if (!clip) return;
+  context.beginPath();
+  context.rect(...clip);
+  context.clip();
+}
+
+function fillAndStroke(context, style) {
+  if (style.fill) {
+    context.fillStyle = rgba(style.fill);
+    context.fill();
+  }
+  if (style.stroke) {
+    context.strokeStyle = rgba(style.stroke);
+    context.lineWidth = style.width;
+    context.lineCap = style.cap;
+    context.lineJoin = style.join;
+    context.setLineDash(style.dash ? style.dash[1] : []);
+    context.lineDashOffset = style.dash ? style.dash[0] : 0;
+    context.stroke();
+  }
+}
+
+// The commands of course/widgets/browser_drawing.py, in their order.
+function drawCommands(context, commands, vertices, codes) {
+  for (const command of commands) {
+    context.save();
+    clipTo(context, command.clip);
+    if (command.path) {
+      context.beginPath();
+      trace(context, vertices, codes, command.path);
+      fillAndStroke(context, command);
+    } else if (command.marker) {
+      const [start, count] = command.at;
+      for (let i = start; i < start + count; i++) {
+        context.beginPath();
+        trace(context, vertices, codes, command.marker, vertices[2 * i], vertices[2 * i + 1]);
+        fillAndStroke(context, command);
+      }
+    } else if (command.text !== undefined) {
+      const [size, weight, style, families] = command.font;
+      context.font = `${style} ${weight} ${size}px ${families.map(family).join(", ")}`;
+      context.fillStyle = rgba(command.color);
+      context.textAlign = "left";
+      context.textBaseline = "alphabetic";
+      context.translate(command.x, command.y);
+      context.rotate((-command.angle * Math.PI) / 180);
+      context.fillText(command.text, 0, 0);
+    }
+    context.restore();
+  }
 }
 
 function render({ model, el }) {
@@ -33,11 +126,13 @@ function render({ model, el }) {
 
   let generation = 0; // counts whole pictures: a patch for an older one is dropped
   let composed = null; // the 2D context of a canvas holding the picture as patched
+  let backdrop = null; // the still background a drag's drawings are drawn over
   let painting = Promise.resolve(); // patches are painted one after another
 
   function show() {
     generation += 1;
     composed = null;
+    backdrop = null;
     display(pictureUrl(model.get("value"), model.get("format")));
     image.width = model.get("width");
     image.height = model.get("height");
@@ -50,14 +145,24 @@ function render({ model, el }) {
     return createImageBitmap(new Blob([data], { type: `image/${format}` }));
   }
 
+  function canvasFor(bitmap) {
+    const canvas = document.createElement("canvas");
+    canvas.width = bitmap.width;
+    canvas.height = bitmap.height;
+    return canvas.getContext("2d");
+  }
+
+  async function showComposed(mine) {
+    const blob = await new Promise((resolve) => composed.canvas.toBlob(resolve, "image/png"));
+    if (mine !== generation || !blob) return;
+    display(URL.createObjectURL(blob));
+  }
+
   async function paint(rectangles, buffers, mine) {
     if (!composed) {
       const whole = await decode(model.get("value"), model.get("format"));
       if (mine !== generation) return;
-      const canvas = document.createElement("canvas");
-      canvas.width = whole.width;
-      canvas.height = whole.height;
-      composed = canvas.getContext("2d");
+      composed = canvasFor(whole);
       composed.drawImage(whole, 0, 0);
     }
     const pieces = await Promise.all(buffers.map((buffer) => decode(buffer, "png")));
@@ -66,9 +171,23 @@ function render({ model, el }) {
       composed.clearRect(left, top, width, height);
       composed.drawImage(pieces[index], left, top);
     });
-    const blob = await new Promise((resolve) => composed.canvas.toBlob(resolve, "image/png"));
-    if (mine !== generation || !blob) return;
-    display(URL.createObjectURL(blob));
+    await showComposed(mine);
+  }
+
+  async function draw(message, buffers, mine) {
+    let parts = buffers;
+    if (message.backdrop) {
+      const bitmap = await decode(parts[0], model.get("format"));
+      if (mine !== generation) return;
+      backdrop = bitmap;
+      parts = parts.slice(1);
+    }
+    if (!backdrop) return; // its background belonged to an older picture
+    if (!composed) composed = canvasFor(backdrop);
+    composed.drawImage(backdrop, 0, 0);
+    const commands = JSON.parse(new TextDecoder().decode(octets(parts[0])));
+    drawCommands(composed, commands, floats(parts[1]), octets(parts[2]));
+    await showComposed(mine);
   }
 
   // Where the pointer is, in the PNG's pixels (the page may scale the image).
@@ -109,6 +228,12 @@ function render({ model, el }) {
       painting = painting
         .then(() => paint(message.rectangles, buffers ?? [], mine))
         .catch((error) => console.warn("course picture: a patch was not painted", error));
+    }
+    if (message.kind === "drawing") {
+      const mine = generation;
+      painting = painting
+        .then(() => draw(message, buffers ?? [], mine))
+        .catch((error) => console.warn("course picture: a drawing was not drawn", error));
     }
     // The kernel's answer to a move: alone, or with the step's patch.
     if (message.kind === "drawn" || message.drawn) {

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import base64
 import io
+import json
 import struct
 import zlib
 from pathlib import Path
@@ -44,6 +45,7 @@ from PIL import Image as PILImage
 from course import limits
 from course._validate import as_int, describe
 from course.i18n import _
+from course.widgets.browser_drawing import CommandRecorder, NotDrawable
 
 __all__ = [
     "GRAY_PIXELS",
@@ -184,6 +186,9 @@ class FigureView:
 
     #: JPEG quality of the photographic apps (colour kept at full resolution).
     JPEG_QUALITY = 95
+    #: False sends a drag's steps as patches only (rectangles of Agg's pixels): for one
+    #: view, or, set on the class, for every app of a kernel (benchmarks/bench_hub.py).
+    draw_in_browser = True
 
     def __init__(
         self, shape: tuple[int, int] = (500, 500), dpi: int = 100, format: str = "png"
@@ -201,6 +206,14 @@ class FigureView:
         self._replays: dict[Line2D, _LineReplay | None] = {}
         # The RGBA pixels the browser holds: the last whole picture and the patches since.
         self._shown: np.ndarray | None = None
+        # During a drag the browser draws the moving artists from recorded commands over
+        # the background it is sent once (browser_drawing): None until tried, False when
+        # the moving artists hold something only Agg draws, until invalidate().
+        self._browser_draws: bool | None = None
+        self._backdrop_sent = False
+        self._recorder: CommandRecorder | None = None
+        self._drawn: list[bytes] | None = None  # the drawing's buffers the browser shows
+        self._command_replays: dict[Line2D, _LineReplay | None] = {}
         #: True while the browser waits for the picture of its pointer message: the next
         #: patch tells it the picture is drawn (``"drawn": true``), and clears this.
         self.awaited = False
@@ -225,16 +238,21 @@ class FigureView:
         ``images`` maps axes to (h, w, 3) uint8 pictures the size of the axes
         in pixels: written into the picture as they are, under the artists,
         without matplotlib's resampling (for images shown pixel for pixel).
-        ``patches`` sends only the changed rectangles (:meth:`publish_patches`),
-        for the steps of a drag; then the empty bytes are returned. During
-        those steps a moving line is drawn by replaying the Agg calls of its
-        last full draw with its new data (:class:`_LineReplay`), as long as
-        its style is the one it was drawn with; :meth:`invalidate`, which a
-        new view calls for anyway, drops the recordings.
+        ``patches`` is for the steps of a drag, and then the empty bytes are
+        returned: the browser is sent the moving artists as drawing commands
+        (:meth:`publish_drawing`), or, where it cannot draw them (``images``,
+        or an artist only Agg draws), only the changed rectangles
+        (:meth:`publish_patches`). During such steps a moving line is drawn
+        by replaying the Agg calls of its last full draw with its new data
+        (:class:`_LineReplay`), as long as its style is the one it was drawn
+        with; :meth:`invalidate`, which a new view calls for anyway, drops
+        the recordings.
         """
+        if patches and not images and self.draw_in_browser and self._browser_draws is not False:
+            if self.publish_drawing(artists):
+                return b""
         if self._background is None:
-            self.canvas.draw()  # skips animated artists
-            self._background = self.canvas.copy_from_bbox(self.figure.bbox)
+            self._draw_background()
         else:
             self.canvas.restore_region(self._background)
         for axes, image in (images or {}).items():
@@ -278,9 +296,17 @@ class FigureView:
         """Forget the cached background; the next :meth:`render_moving` redraws it."""
         self._background = None
         self._replays.clear()
+        self._browser_draws = None
+        self._backdrop_sent = False
+        self._command_replays.clear()
 
-    def publish(self) -> bytes:
-        """Encode the canvas as it stands into the picture; return the encoded bytes."""
+    def _draw_background(self) -> None:
+        self.canvas.draw()  # skips animated artists
+        self._background = self.canvas.copy_from_bbox(self.figure.bbox)
+        self._backdrop_sent = False
+
+    def _encoded(self) -> bytes:
+        """The canvas as it stands, encoded in the picture's format."""
         # The figure is opaque: its alpha channel is 255 everywhere, and is dropped.
         pixels = np.asarray(self.canvas.buffer_rgba())[..., :3]
         if self.image.format == "jpeg":
@@ -288,12 +314,75 @@ class FigureView:
             PILImage.fromarray(pixels).save(
                 buffer, format="jpeg", quality=self.JPEG_QUALITY, subsampling=0
             )
-            encoded = buffer.getvalue()
-        else:
-            encoded = png_bytes(pixels)
+            return buffer.getvalue()
+        return png_bytes(pixels)
+
+    def publish(self) -> bytes:
+        """Encode the canvas as it stands into the picture; return the encoded bytes."""
+        encoded = self._encoded()
         self.image.value = encoded
         self._shown = np.array(self.canvas.buffer_rgba())
         return encoded
+
+    def publish_drawing(self, artists: list) -> bool:
+        """Send the browser ``artists`` as drawing commands, to draw over the still background.
+
+        One message ``{"kind": "drawing"}`` whose buffers are the commands
+        (a JSON list, UTF-8) and their vertices and codes
+        (:mod:`course.widgets.browser_drawing`); the first after the
+        background was drawn anew also carries it (``"backdrop": true``, its
+        encoded picture as the first buffer). The commands travel as a
+        buffer, not in the message's content: ipykernel would copy and check
+        every number of the content in Python (``json_clean``), which took
+        longer than the drawing.
+        Nothing is drawn with Agg, so a step costs what matplotlib takes to
+        lay the artists out; a step whose commands are the last ones sends
+        nothing. Returns False, having sent nothing, when an
+        artist holds something the browser cannot draw as Agg does: then
+        :meth:`render_moving` draws with Agg until :meth:`invalidate`.
+        """
+        renderer = self.canvas.get_renderer()
+        if self._recorder is None or self._recorder.agg is not renderer:
+            self._recorder = CommandRecorder(renderer)
+        recorder = self._recorder
+        recorder.start()
+        replays = self._command_replays
+        try:
+            for artist in artists:
+                if _empty_line(artist):
+                    continue
+                replay = replays.get(artist)
+                if replay is not None and replay.draw(recorder):
+                    continue
+                if isinstance(artist, Line2D):  # matplotlib's calls, replayed at later steps
+                    replays[artist] = _LineReplay.record(artist, recorder)
+                else:
+                    artist.draw(recorder)
+        except NotDrawable:
+            self._browser_draws = False
+            return False
+        self._browser_draws = True
+        commands, geometry = recorder.finish()
+        buffers = [json.dumps(commands, separators=(",", ":")).encode(), *geometry]
+        if self._backdrop_sent and self._background is not None and buffers == self._drawn:
+            return True  # the browser shows it already
+        self._drawn = buffers
+        content: dict[str, Any] = {"kind": "drawing"}
+        buffers = list(buffers)
+        if self._background is None or not self._backdrop_sent:
+            if self._background is None:
+                self._draw_background()
+            else:
+                self.canvas.restore_region(self._background)
+            content["backdrop"] = True
+            buffers.insert(0, self._encoded())
+            self._backdrop_sent = True
+        if self.awaited:
+            content["drawn"], self.awaited = True, False
+        self.image.send(content, buffers=buffers)
+        # The browser no longer shows the canvas's last picture: no patch can follow it.
+        self._shown = None
+        return True
 
     def publish_patches(self) -> bool:
         """Send the browser only the rectangles that changed since what it shows.

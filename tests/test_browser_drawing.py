@@ -1,0 +1,233 @@
+"""A drag's moving artists drawn by the browser: the recorded commands, and what they draw.
+
+The commands are carried out here by an independent player, Agg's renderer
+driven from nothing but a message's commands and buffers, over the backdrop the
+message carries. Its picture must be the one matplotlib draws of the same
+artists: every number the browser needs (places, colours, widths, dashes,
+clips, fonts) is in the message.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import math
+
+import numpy as np
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
+from matplotlib.figure import Figure
+from matplotlib.font_manager import FontProperties
+from matplotlib.patches import Rectangle
+from matplotlib.path import Path as MatplotlibPath
+from matplotlib.transforms import Affine2D, Bbox, IdentityTransform
+from PIL import Image
+
+from course.widgets.browser_drawing import CommandRecorder
+from course.widgets.de_casteljau import DeCasteljauApp
+from course.widgets.picture import FigureView
+
+GENERIC = ("serif", "sans-serif", "cursive", "fantasy", "monospace")
+_CAPSTYLES = {"butt": "butt", "square": "projecting", "round": "round"}
+
+
+def played(content: dict, buffers: list, backdrop: np.ndarray, dpi: float) -> np.ndarray:
+    """The picture ``picture.js`` draws from one "drawing" message, drawn by Agg."""
+    height, width = backdrop.shape[:2]
+    renderer = RendererAgg(width, height, dpi)
+    np.asarray(renderer.buffer_rgba())[...] = backdrop
+    vertices = np.frombuffer(buffers[-2], "<f4").reshape(-1, 2).astype(float)
+    codes = np.frombuffer(buffers[-1], np.uint8)
+    up = Affine2D().scale(1, -1).translate(0, height)  # the message's y runs down
+    points = 72 / dpi
+    for command in commands_of(buffers):
+        gc = renderer.new_gc()
+        gc.set_snap(False)  # the message's places are snapped where Agg snaps already
+        if command["clip"] is not None:
+            left, top, w, h = command["clip"]
+            gc.set_clip_rectangle(Bbox([[left, height - top - h], [left + w, height - top]]))
+        if "text" in command:
+            size, weight, style, families = command["font"]
+            families = [name for name in families if name in GENERIC][:1] or families
+            gc.set_foreground(command["color"], isRGBA=True)
+            font = FontProperties(family=families, size=size * points, weight=weight, style=style)
+            renderer.draw_text(
+                gc, command["x"], command["y"], command["text"], font, command["angle"]
+            )
+            continue
+        stroke, fill = command["stroke"], command["fill"]
+        gc.set_linewidth(command["width"] * points if stroke else 0)
+        if stroke:
+            gc.set_foreground(stroke, isRGBA=True)
+        if command["dash"]:
+            offset, dashes = command["dash"]
+            gc.set_dashes(offset * points, [dash * points for dash in dashes])
+        gc.set_capstyle(_CAPSTYLES[command["cap"]])
+        gc.set_joinstyle(command["join"])
+
+        def path(start_count: list[int]) -> MatplotlibPath:
+            start, count = start_count
+            return MatplotlibPath(vertices[start : start + count], codes[start : start + count])
+
+        if "path" in command:
+            renderer.draw_path(gc, path(command["path"]), up, fill)
+        else:
+            marker = path(command["marker"])
+            at = path(command["at"])
+            # Agg moves an unsnapped marker by half a pixel, which the message has done.
+            shape = Affine2D().translate(-0.5, -0.5).scale(1, -1)
+            renderer.draw_markers(gc, marker, shape, at, up, fill)
+    return np.asarray(renderer.buffer_rgba()).copy()
+
+
+def commands_of(buffers: list) -> list[dict]:
+    """A drawing message's commands: its third buffer from the end, JSON."""
+    return json.loads(bytes(buffers[-3]))
+
+
+class Sent:
+    def __init__(self, view: FigureView) -> None:
+        self.messages: list = []
+        view.image.send = lambda content, buffers=None: self.messages.append((content, buffers))
+
+
+def decoded(data: bytes) -> np.ndarray:
+    return np.asarray(Image.open(io.BytesIO(data)).convert("RGBA"))
+
+
+def assert_close(drawn: np.ndarray, expected: np.ndarray) -> None:
+    """Equal but for rounding: colours are sent to 1/1000, places as float32 or to 1e-4."""
+    difference = np.abs(drawn.astype(int) - expected.astype(int)).max(axis=2)
+    assert (expected < 200).any()
+    assert difference.max() <= 8, np.argwhere(difference > 8)[:5]
+    assert np.count_nonzero(difference > 2) <= 20, np.argwhere(difference > 2)[:5]
+
+
+def test_lesson_01_s_drag_drawn_from_its_commands_is_the_picture_agg_draws():
+    app = DeCasteljauApp()
+    app.refresh()
+    sent = Sent(app.view)
+    x, y, *_ = app.view.image.handles[1]
+    app.pointer("down", x, y)  # the press draws the highlight: the background goes with it
+    ((pressed, buffers),) = sent.messages
+    assert pressed["kind"] == "drawing" and pressed["backdrop"] is True
+    backdrop = decoded(buffers[0])
+    for step in range(1, 8):
+        angle = 0.9 * step
+        app.view.awaited = True
+        app.pointer("move", x + 40 * (1 - math.cos(angle)), y + 40 * math.sin(angle))
+        content, buffers = sent.messages[-1]
+        assert content["kind"] == "drawing" and content["drawn"] is True
+        assert "backdrop" not in content and len(buffers) == 3
+        drawn = played(content, buffers, backdrop, app.view.figure.dpi)
+        # The same step drawn by Agg: the moving artists over the background.
+        app.view.render_moving(app.moving)
+        assert_close(drawn, app.view.pixels())
+        # Agg is left to the release: a step's message is small.
+        assert len(json.dumps(content)) + sum(len(b) for b in buffers) < 12_000
+    app.pointer("up", x, y)
+    assert decoded(app.view.image.value).shape == backdrop.shape
+
+
+def test_dashes_markers_fills_clips_and_turned_text_are_drawn_as_agg_draws_them():
+    view = FigureView(shape=(120, 200))
+    axes = view.figure.add_axes((0.1, 0.1, 0.8, 0.8), xlim=(0, 10), ylim=(0, 5))
+    moving = [
+        *axes.plot([0, 4, 12], [1, 4, 2], "--o", color="teal", linewidth=2.5, markersize=9),
+        *axes.plot([1, 9], [4, 0.5], linestyle="-.", color="0.3", marker="D", mfc="none"),
+        *axes.plot([5, 6, 7], [2, 2.5, 2], "^", color="orange", alpha=0.6),
+        axes.add_patch(Rectangle((6, 1), 3, 2, facecolor=(0, 0, 1, 0.3), edgecolor="navy")),
+        axes.text(2, 2, "tilted 42", rotation=30, fontsize=11, color="purple"),
+        axes.text(5, 4.5, "B(t) = (1.0, 2.5)", ha="center", weight="bold"),
+        view.figure.text(0.02, 0.02, "corner", transform=view.figure.transFigure, style="italic"),
+    ]
+    for artist in moving:
+        artist.set_animated(True)
+    view.render_moving(moving)
+    sent = Sent(view)
+    view.render_moving(moving, patches=True)
+    ((content, buffers),) = sent.messages
+    kinds = [
+        next(key for key in ("path", "marker", "text") if key in c) for c in commands_of(buffers)
+    ]
+    assert kinds.count("marker") == 3 and kinds.count("text") == 3
+    assert any(c.get("dash") for c in commands_of(buffers))
+    drawn = played(content, buffers, decoded(buffers[0]), view.figure.dpi)
+    view.render_moving(moving)
+    assert_close(drawn, view.pixels())
+
+
+def test_what_only_agg_draws_sends_patches_until_the_background_changes():
+    view = FigureView(shape=(60, 60))
+    axes = view.figure.add_axes((0, 0, 1, 1))
+    axes.set_axis_off()
+    (line,) = axes.plot([0, 1], [0, 1], animated=True)
+    picture = axes.imshow(np.eye(3), extent=(0, 1, 0, 1), animated=True)
+    formula = axes.text(0.1, 0.5, "$x^2$", animated=True)
+    tries = []
+    publish_drawing = view.publish_drawing
+    view.publish_drawing = lambda artists: tries.append(1) or publish_drawing(artists)
+    for moving in ([picture, line], [line, formula]):
+        view.invalidate()
+        view.render_moving(moving)
+        sent = Sent(view)
+        tries.clear()
+        for step in (1, 2):
+            line.set_data([0, 0.5], [1, 0.1 * step])
+            view.render_moving(moving, patches=True)
+        assert [content["kind"] for content, _ in sent.messages] == ["patch", "patch"]
+        assert len(tries) == 1  # known after the first step: not tried again
+    view.invalidate()
+    sent = Sent(view)
+    view.render_moving([line], patches=True)
+    assert [content["kind"] for content, _ in sent.messages] == ["drawing"]
+    # Patches only: the first step sends the whole picture (the browser's is a drawing).
+    view.draw_in_browser = False
+    whole = view.image.value
+    line.set_data([0, 1], [1, 0])
+    assert view.render_moving([line], patches=True) == view.image.value != whole
+    line.set_data([0, 1], [0.5, 0])
+    view.render_moving([line], patches=True)
+    assert [content["kind"] for content, _ in sent.messages] == ["drawing", "patch"]
+
+
+def test_the_backdrop_is_sent_once_per_background_and_pixel_panels_are_patched():
+    view = FigureView(shape=(50, 80))
+    axes = view.figure.add_axes((0, 0, 1, 1), xlim=(0, 1), ylim=(0, 1))
+    (line,) = axes.plot([0, 1], [0, 1], animated=True)
+    view.render_moving([line])
+    sent = Sent(view)
+    for step in range(3):
+        line.set_data([0, 1], [0, 1 - 0.1 * step])
+        view.render_moving([line], patches=True)
+    view.render_moving([line], patches=True)  # nothing moved: nothing sent
+    view.invalidate()
+    view.render_moving([line], patches=True)
+    assert [content.get("backdrop", False) for content, _ in sent.messages] == [
+        True,
+        False,
+        False,
+        True,
+    ]
+    assert [len(buffers) for _, buffers in sent.messages] == [4, 3, 3, 4]
+    panel = np.zeros((50, 80, 3), dtype=np.uint8)
+    view.render_moving([line], {axes: panel})
+    view.render_moving([line], {axes: panel + 9}, patches=True)
+    assert sent.messages[-1][0]["kind"] == "patch"
+
+
+def test_a_recorder_measures_text_as_agg_does_and_finishes_empty_when_nothing_is_drawn():
+    figure = Figure(figsize=(2, 1), dpi=72)
+    agg = FigureCanvasAgg(figure).get_renderer()
+    recorder = CommandRecorder(agg)
+    font = FontProperties(size=12)
+    assert recorder.get_text_width_height_descent("P1", font, False) == (
+        agg.get_text_width_height_descent("P1", font, False)
+    )
+    assert recorder.points_to_pixels(72) == 72 and recorder.flipy()
+    commands, (vertices, codes) = recorder.finish()
+    assert commands == [] and vertices == b"" and codes == b""
+    text = figure.text(0, 0, "x", transform=IdentityTransform(), fontsize=12)
+    text.draw(recorder)
+    (command,) = recorder.finish()[0]
+    assert command["font"][0] == pytest.approx(12.0) and command["text"] == "x"

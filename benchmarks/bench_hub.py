@@ -16,7 +16,13 @@ only, as a browser would:
    picture pixels. Like ``picture.js``, a student never has more than one
    move waiting: a move due while the last is not drawn yet is merged into
    the next (counted as merged, as the browser does), and a move whose
-   ``drawn`` answer never comes (10 s) is lost.
+   ``drawn`` answer never comes (10 s) is lost. The app sends each step as
+   drawing commands for the browser (``FigureView.publish_drawing``);
+4. the same drag twice more, in the same class, as anchors: with the app
+   sending Agg's changed pixels instead (**patched**: ``FigureView.
+   draw_in_browser = False``, how every step went before), and over a comm
+   whose handler only answers ``drawn`` (**floor**: what the Jupyter stack
+   alone costs a step, kernel, server and proxy, with no drawing at all).
 
 It prints, for each N: the hub's memory (hub, proxy and culler) and each
 student's (their server and kernel, proportional set size, so shared
@@ -77,6 +83,15 @@ GOAL_P90 = 0.150
 GOAL_STUDENT_GIB = 0.5
 MIB = 2**20
 PROTOCOL = "v1.kernel.websocket.jupyter.org"
+WAYS = ("drawing", "patched", "floor")
+# The floor's comm: a widget whose handler answers each pointer message and draws nothing.
+IMPORT_VIEW = "from course.widgets.picture import FigureView"
+ECHO = """
+import ipywidgets
+_echo = ipywidgets.Widget()
+_echo.on_msg(lambda widget, content, buffers: widget.send({"kind": "drawn"}))
+print(_echo.comm.comm_id)
+"""
 
 
 def free_port() -> int:
@@ -228,6 +243,7 @@ class Student:
         self.opened: dict[str, list[str]] = {}  # cell msg_id -> comms opened by it
         self.states: dict[str, dict] = {}
         self.picture: str | None = None
+        self.dragged: str | None = None  # the comm the drag goes to
         self.drawn: asyncio.Event = asyncio.Event()
         self.drawn_at = 0.0
         self.errors: list[str] = []
@@ -289,7 +305,7 @@ class Student:
             data = content["data"]
             if data.get("method") == "update" and content["comm_id"] in self.states:
                 self.states[content["comm_id"]].update(data.get("state", {}))
-            elif data.get("method") == "custom" and content["comm_id"] == self.picture:
+            elif data.get("method") == "custom" and content["comm_id"] == self.dragged:
                 answer = data["content"]
                 if answer.get("kind") == "drawn" or answer.get("drawn"):
                     self.drawn_at = time.monotonic()
@@ -348,12 +364,24 @@ class Student:
 
     async def send_pointer(self, kind: str, x: float, y: float) -> None:
         content = {
-            "comm_id": self.picture,
+            "comm_id": self.dragged,
             "data": {"method": "custom", "content": {"kind": kind, "x": x, "y": y}},
         }
         await self.socket.write_message(
             encoded(message("comm_msg", content, self.session)), binary=True
         )
+
+    async def use(self, way: str) -> None:
+        """Drag lesson 01's app as it draws now, patched as before, or a comm that only answers."""
+        if way == "floor":
+            _, printed = await self.execute(ECHO)
+            self.dragged = printed.strip()
+        else:
+            self.dragged = self.picture
+            drawing = way != "patched"
+            await self.execute(f"{IMPORT_VIEW}\nFigureView.draw_in_browser = {drawing}")
+        self.round_trips.clear()
+        self.sent = self.merged = self.lost = 0
 
     async def drag(self) -> None:
         """Drag P1 round a circle at a move every 50 ms, never more than one move waiting."""
@@ -485,16 +513,8 @@ async def class_of(hub: Hub, counts: tuple[int, ...], gib_per_student: float) ->
         await asyncio.gather(*(student.run_lesson() for student in new))
         students += new
         hub_mib, student_mib = memories(hub, [s.name for s in students])
-        for student in students:
-            student.round_trips.clear()
-            student.sent = student.merged = student.lost = 0
-        load_before = os.getloadavg()[0]
-        cpu_before = cpu_by_role(hub)
-        await asyncio.gather(*(student.drag() for student in students))
-        cpu_after = cpu_by_role(hub)
-        trips = [trip for student in students for trip in student.round_trips]
-        # Every picture drawn: the moves, and each student's press and release.
-        pictures = len(trips) + 2 * len(students)
+        drags = {way: await drag_together(hub, students, way) for way in WAYS}
+        trips, cpu_roles = drags["drawing"]["trips"], drags["drawing"]["cpu_role_ms"]
         row = {
             "N": count,
             "spawn_s": spawned,
@@ -505,23 +525,45 @@ async def class_of(hub: Hub, counts: tuple[int, ...], gib_per_student: float) ->
             "student_mib_max": max(student_mib.values()),
             "p50_ms": 1e3 * percentile(trips, 0.5),
             "p90_ms": 1e3 * percentile(trips, 0.9),
-            "cpu_ms": 1e3 * statistics.median(s.kernel_cpu for s in students),
-            "sent": sum(s.sent for s in students),
-            "merged": sum(s.merged for s in students),
-            "lost": sum(s.lost for s in students),
-            "load": (load_before, os.getloadavg()[0]),
-            # The whole machine's CPU per picture drawn, by role (ms), the 4 cells'
-            # process_time readings included.
-            "cpu_role_ms": {
-                name: 1e3 * (cpu_after[name] - cpu_before[name]) / pictures for name in ROLES
-            },
+            **{key: drags["drawing"][key] for key in ("cpu_ms", "sent", "merged", "lost", "load")},
+            "cpu_role_ms": cpu_roles,
+            "anchors": {way: drags[way] for way in WAYS[1:]},
             "available_gib": psutil.virtual_memory().available / 2**30,
         }
+        for drag in drags.values():
+            del drag["trips"]
         rows.append(row)
         print_row(row)
     for student in students:
         student.close()
     return rows
+
+
+async def drag_together(hub: Hub, students: list[Student], way: str) -> dict:
+    """Every student drags at once, the app as ``way`` says; what the drag measured."""
+    await asyncio.gather(*(student.use(way) for student in students))
+    load_before = os.getloadavg()[0]
+    cpu_before = cpu_by_role(hub)
+    await asyncio.gather(*(student.drag() for student in students))
+    cpu_after = cpu_by_role(hub)
+    trips = [trip for student in students for trip in student.round_trips]
+    # Every picture drawn: the moves, and each student's press and release.
+    pictures = len(trips) + 2 * len(students)
+    return {
+        "trips": trips,
+        "p50_ms": 1e3 * percentile(trips, 0.5),
+        "p90_ms": 1e3 * percentile(trips, 0.9),
+        "cpu_ms": 1e3 * statistics.median(s.kernel_cpu for s in students),
+        "sent": sum(s.sent for s in students),
+        "merged": sum(s.merged for s in students),
+        "lost": sum(s.lost for s in students),
+        "load": (load_before, os.getloadavg()[0]),
+        # The whole machine's CPU per picture drawn, by role (ms), the 4 cells'
+        # process_time readings included.
+        "cpu_role_ms": {
+            name: 1e3 * (cpu_after[name] - cpu_before[name]) / pictures for name in ROLES
+        },
+    }
 
 
 HEADER = (
@@ -546,6 +588,14 @@ def print_row(row: dict) -> None:
     )
     roles = ", ".join(f"{name} {value:.2f}" for name, value in row["cpu_role_ms"].items())
     print(f"    machine CPU per drag step, ms: {roles}", flush=True)
+    for way, drag in row["anchors"].items():
+        roles = ", ".join(f"{name} {value:.2f}" for name, value in drag["cpu_role_ms"].items())
+        print(
+            f"    {way:<8} drag p50 {drag['p50_ms']:.1f} ms, p90 {drag['p90_ms']:.1f} ms, "
+            f"kernel CPU {drag['cpu_ms']:.2f} ms/step, sent {drag['sent']}, merged "
+            f"{drag['merged']}, lost {drag['lost']}; machine CPU per step, ms: {roles}",
+            flush=True,
+        )
 
 
 def summary(rows: list[dict]) -> None:

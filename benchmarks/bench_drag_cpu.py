@@ -71,6 +71,39 @@ def _draw_unrecorded(cls: type, line: object, renderer: object) -> None:
     line.draw(renderer)
 
 
+@contextlib.contextmanager
+def as_before(app: DeCasteljauApp) -> Iterator[None]:
+    """Inside, ``app``'s drag steps are drawn as before issue 23 (the anchor, **today**).
+
+    The whole title is redrawn at every step and the whole picture encoded
+    and published, with Agg's own glyph drawing and every artist drawn.
+    ``benchmarks/bench_hub.py`` drags the lesson's app in a student's kernel
+    this way too (its **today** line).
+    """
+    view, saved = app.view, (vars(app).copy(), vars(app.view).copy())
+    view.draw_in_browser = False
+    view.publish_patches = lambda: False
+    app.grab_started = partial(SliderApp.grab_started, app)
+    app.grab_ended = partial(SliderApp.grab_ended, app)
+    install, empty = picture._GlyphCache.install, picture._empty_line
+    record, origin = picture._LineReplay.record, picture.FixedText._origin
+    picture._GlyphCache.install = classmethod(lambda cls, renderer: None)
+    picture._empty_line = lambda artist: False
+    picture._LineReplay.record = classmethod(_draw_unrecorded)
+    picture.FixedText._origin = lambda text, renderer, shown: None  # drawn as Text
+    try:
+        yield
+    finally:
+        picture._GlyphCache.install, picture._empty_line = install, empty
+        picture._LineReplay.record, picture.FixedText._origin = record, origin
+        for instance, attributes in zip((app, view), saved, strict=True):
+            for name in ("grab_started", "grab_ended", "draw_in_browser", "publish_patches"):
+                if name in attributes:
+                    setattr(instance, name, attributes[name])
+                else:
+                    vars(instance).pop(name, None)
+
+
 class Measured:
     """One way of handling a drag: the app, its pointer on P1, and what it sent."""
 
@@ -86,11 +119,6 @@ class Measured:
                 artist.set_animated(False)  # else canvas.draw() leaves them out
         if name != "now":
             self.app.view.draw_in_browser = False
-        if name in ("full", "today"):
-            self.app.view.publish_patches = lambda: False
-            # The whole title redrawn at every step, as before.
-            self.app.grab_started = partial(SliderApp.grab_started, self.app)
-            self.app.grab_ended = partial(SliderApp.grab_ended, self.app)
         self.app.refresh()
         handle = self.app.handles()[1]
         self.centre = self.app.picture_point(handle.axes, handle.at)
@@ -102,23 +130,11 @@ class Measured:
     def keep(self, content: dict, buffers: list | None = None) -> None:
         self.sent_bytes.append(len(json.dumps(content)) + sum(map(len, buffers or [])))
 
-    @contextlib.contextmanager
-    def as_before(self) -> Iterator[None]:
-        """For the anchor: Agg's own glyph drawing and every artist drawn, as before."""
-        if self.name in ("patched", "now"):
-            yield
-            return
-        install, empty = picture._GlyphCache.install, picture._empty_line
-        record, origin = picture._LineReplay.record, picture.FixedText._origin
-        picture._GlyphCache.install = classmethod(lambda cls, renderer: None)
-        picture._empty_line = lambda artist: False
-        picture._LineReplay.record = classmethod(_draw_unrecorded)
-        picture.FixedText._origin = lambda text, renderer, shown: None  # drawn as Text
-        try:
-            yield
-        finally:
-            picture._GlyphCache.install, picture._empty_line = install, empty
-            picture._LineReplay.record, picture.FixedText._origin = record, origin
+    def as_before(self) -> contextlib.AbstractContextManager:
+        """The anchors, full and today, draw as before; patched and now as they are."""
+        if self.name in ("full", "today"):
+            return as_before(self.app)
+        return contextlib.nullcontext()
 
     def batch(self) -> None:
         value = self.app.view.image.value

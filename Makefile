@@ -182,10 +182,22 @@ site-teacher: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
 	@echo "make: the teacher's website is in $(TEACHER_SITE)/; do not publish it"
 
 ## test-browser: build the website, then check its pages and run every lesson in Chromium
-# Debian's Chromium (/usr/bin/chromium); screenshots in build/screenshots/. Not in `make test`.
-test-browser: site $(VENV)/.browser-installed $(VENV)/.test-installed
+# Debian's Chromium (/usr/bin/chromium, installed here if missing, or CHROMIUM=another);
+# screenshots in build/screenshots/. Not in `make test`.
+CHROMIUM ?= /usr/bin/chromium
+export CHROMIUM
+test-browser: site $(VENV)/.browser-installed $(VENV)/.test-installed $(CHROMIUM)
 	SITE=$(SITE) $(BIN)/python -m pytest -p no:cacheprovider --timeout=900 --durations=0 -v \
 		tests_browser
+
+# Only Debian's package is installed for you (as root, or through sudo): elsewhere, install
+# Chromium yourself and name it with CHROMIUM.
+/usr/bin/chromium:
+	@command -v apt-get >/dev/null || { echo "make: $@ is missing and this is not Debian:" \
+		"install Chromium and run make CHROMIUM=/path/to/chromium test-browser" >&2; exit 1; }
+	$(if $(filter 0,$(shell id -u)),,sudo )env DEBIAN_FRONTEND=noninteractive apt-get update -q
+	$(if $(filter 0,$(shell id -u)),,sudo )env DEBIAN_FRONTEND=noninteractive \
+		apt-get install -y -q chromium
 
 # The README's picture: lesson 01's app as the notebook first shows it.
 README_PICTURE := 01_de_casteljau_degree3_t0.50
@@ -234,7 +246,7 @@ mutants: $(VENV)/.test-installed
 	nice $(BIN)/python benchmarks/bench_mutants.py
 
 ## bench-browser: the time from a mouse move or a key press to the new picture, in Chromium
-bench-browser: $(VENV)/.browser-installed $(VENV)/.test-installed
+bench-browser: $(VENV)/.browser-installed $(VENV)/.test-installed $(CHROMIUM)
 	$(BIN)/python benchmarks/bench_browser_latency.py
 
 # A class on this machine: the hub's state (database, the students' folders, the student

@@ -112,6 +112,9 @@ def test_lesson_01_s_drag_drawn_from_its_commands_is_the_picture_agg_draws():
     ((pressed, buffers),) = sent.messages
     assert pressed["kind"] == "drawing" and pressed["backdrop"] is True
     backdrop = decoded(buffers[0])
+    # Agg's own drawing of each step, below, stays on the canvas: a published whole
+    # picture would make the browser drop its backdrop.
+    app.view.publish = lambda: b""
     for step in range(1, 8):
         angle = 0.9 * step
         app.view.awaited = True
@@ -125,6 +128,7 @@ def test_lesson_01_s_drag_drawn_from_its_commands_is_the_picture_agg_draws():
         assert_close(drawn, app.view.pixels())
         # Agg is left to the release: a step's message is small.
         assert len(json.dumps(content)) + sum(len(b) for b in buffers) < 12_000
+    del app.view.publish
     app.pointer("up", x, y)
     assert decoded(app.view.image.value).shape == backdrop.shape
 
@@ -214,6 +218,27 @@ def test_the_backdrop_is_sent_once_per_background_and_pixel_panels_are_patched()
     view.render_moving([line], {axes: panel})
     view.render_moving([line], {axes: panel + 9}, patches=True)
     assert sent.messages[-1][0]["kind"] == "patch"
+
+
+def test_a_drag_after_a_whole_picture_sends_the_backdrop_again():
+    # picture.js drops its backdrop when a whole picture comes (a release): the next
+    # drag's first drawing must bring it again, even when the background did not change.
+    view = FigureView(shape=(50, 80))
+    axes = view.figure.add_axes((0, 0, 1, 1), xlim=(0, 1), ylim=(0, 1))
+    (line,) = axes.plot([0, 1], [0, 1], animated=True)
+    view.render_moving([line])
+    sent = Sent(view)
+    for _drag in range(2):
+        for step in range(2):
+            line.set_data([0, 1], [0, 0.9 - 0.1 * step])
+            view.render_moving([line], patches=True)
+        view.render_moving([line])  # the release: a whole picture
+    assert [content.get("backdrop", False) for content, _ in sent.messages] == [
+        True,
+        False,
+        True,
+        False,
+    ]
 
 
 def test_a_recorder_measures_text_as_agg_does_and_finishes_empty_when_nothing_is_drawn():

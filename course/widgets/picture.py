@@ -322,6 +322,7 @@ class FigureView:
         encoded = self._encoded()
         self.image.value = encoded
         self._shown = np.array(self.canvas.buffer_rgba())
+        self._backdrop_sent = False  # picture.js drops its backdrop with a new picture
         return encoded
 
     def publish_drawing(self, artists: list) -> bool:

@@ -365,12 +365,13 @@ class FigureView:
         self._browser_draws = True
         commands, geometry = recorder.finish()
         buffers = [json.dumps(commands, separators=(",", ":")).encode(), *geometry]
-        if self._backdrop_sent and self._background is not None and buffers == self._drawn:
+        # Sent only with a background in hand: _draw_background and invalidate clear it.
+        if self._backdrop_sent and buffers == self._drawn:
             return True  # the browser shows it already
         self._drawn = buffers
         content: dict[str, Any] = {"kind": "drawing"}
         buffers = list(buffers)
-        if self._background is None or not self._backdrop_sent:
+        if not self._backdrop_sent:
             if self._background is None:
                 self._draw_background()
             else:

@@ -540,7 +540,6 @@ async def class_of(hub: Hub, counts: tuple[int, ...], gib_per_student: float) ->
         students += new
         hub_mib, student_mib = memories(hub, [s.name for s in students])
         drags = {way: await drag_together(hub, students, way) for way in WAYS}
-        trips, cpu_roles = drags["drawing"]["trips"], drags["drawing"]["cpu_role_ms"]
         row = {
             "N": count,
             "spawn_s": spawned,
@@ -549,15 +548,10 @@ async def class_of(hub: Hub, counts: tuple[int, ...], gib_per_student: float) ->
             "hub_mib": hub_mib,
             "student_mib_p50": statistics.median(student_mib.values()),
             "student_mib_max": max(student_mib.values()),
-            "p50_ms": 1e3 * percentile(trips, 0.5),
-            "p90_ms": 1e3 * percentile(trips, 0.9),
-            **{key: drags["drawing"][key] for key in ("cpu_ms", "sent", "merged", "lost", "load")},
-            "cpu_role_ms": cpu_roles,
+            **drags["drawing"],  # p50_ms, p90_ms, cpu_ms, sent, merged, lost, load, cpu_role_ms
             "anchors": {way: drags[way] for way in WAYS[1:]},
             "available_gib": psutil.virtual_memory().available / 2**30,
         }
-        for drag in drags.values():
-            del drag["trips"]
         rows.append(row)
         print_row(row)
     for student in students:
@@ -577,7 +571,6 @@ async def drag_together(hub: Hub, students: list[Student], way: str) -> dict:
     # Every picture drawn: the moves, and each student's press and release.
     pictures = len(trips) + 2 * len(students)
     return {
-        "trips": trips,
         "p50_ms": 1e3 * percentile(trips, 0.5),
         "p90_ms": 1e3 * percentile(trips, 0.9),
         "cpu_ms": 1e3 * statistics.median(s.kernel_cpu for s in students),

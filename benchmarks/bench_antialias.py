@@ -23,10 +23,10 @@ from collections.abc import Callable
 from timing import best_times
 
 from course.antialias import SPLATS, STROKES, arc_length_step, render
-from course.coverage import agg_draw, agg_path, agg_render, reference
+from course.antialias.coverage import agg_draw, agg_path, agg_render, reference
+from course.curves.paths import as_path, canvas_for, matplotlib_path, text_curves
 from course.images import SEED_000_CUBIC
 from course.metrics import rmse
-from course.paths import as_path, canvas_for, matplotlib_path, text_curves
 
 POINTS = SEED_000_CUBIC
 SHAPE = (700, 700)

@@ -38,10 +38,10 @@ sys.path.insert(0, str(REPOSITORY))
 
 from playwright.sync_api import sync_playwright  # noqa: E402
 
-from course.lessons.l05_antialiasing import zoom_app  # noqa: E402
-from course.widgets.de_casteljau import DeCasteljauApp  # noqa: E402
-from course.widgets.lines_and_triangles import TriangleApp  # noqa: E402
-from course.widgets.poisson import CloneApp  # noqa: E402
+from course.lessons.l01_de_casteljau.apps import DeCasteljauApp  # noqa: E402
+from course.lessons.l03_lines_and_triangles.apps import TriangleApp  # noqa: E402
+from course.lessons.l05_antialiasing.lesson import zoom_app  # noqa: E402
+from course.lessons.l08_poisson.apps import CloneApp  # noqa: E402
 from tests_browser.conftest import (  # noqa: E402
     CHROMIUM,
     CHROMIUM_FLAGS,
@@ -74,11 +74,11 @@ SETUP = '''
 import ipywidgets as widgets
 import numpy as np
 
-from course.lessons.l05_antialiasing import zoom_app
+from course.lessons.l05_antialiasing.lesson import zoom_app
 from course.widgets.picture import Picture
-from course.widgets.de_casteljau import DeCasteljauApp
-from course.widgets.lines_and_triangles import TriangleApp
-from course.widgets.poisson import CloneApp
+from course.lessons.l01_de_casteljau.apps import DeCasteljauApp
+from course.lessons.l03_lines_and_triangles.apps import TriangleApp
+from course.lessons.l08_poisson.apps import CloneApp
 
 
 class Echo:

@@ -17,7 +17,7 @@ import numpy as np
 from PIL import Image
 from timing import best_time, named_best_times
 
-from course.dither import blue_noise_mask, error_diffusion
+from course.halftone.dither import blue_noise_mask, error_diffusion
 from course.images import photograph, to_gray
 
 

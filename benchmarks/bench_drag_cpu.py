@@ -50,9 +50,9 @@ import numpy as np
 REPOSITORY = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPOSITORY))
 
+from course.lessons.l01_de_casteljau.apps import DeCasteljauApp  # noqa: E402
 from course.widgets import picture  # noqa: E402
 from course.widgets.base import SliderApp  # noqa: E402
-from course.widgets.de_casteljau import DeCasteljauApp  # noqa: E402
 
 BATCH = 20
 GOAL = 0.5

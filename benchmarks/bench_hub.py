@@ -103,7 +103,7 @@ AS_BEFORE = """
 import gc as _gc, sys as _sys
 _sys.path.insert(0, {benchmarks!r})
 import bench_drag_cpu
-from course.widgets.de_casteljau import DeCasteljauApp as _App
+from course.lessons.l01_de_casteljau.apps import DeCasteljauApp as _App
 _today = bench_drag_cpu.as_before(next(
     o for o in _gc.get_objects() if isinstance(o, _App) and o.view.image.model_id == {comm!r}
 ))

@@ -8,7 +8,7 @@
    on a student's laptop. Goals: quiet, at most 0.6x (rectangle) and 1.5x
    (mask) of OpenCV's time; under load, each ratio within 1.5x of its quiet
    figure. For the record, under load again with the library's thread limit
-   lifted (``course._threads``): numpy's BLAS then starts a thread per core,
+   lifted (``course.poisson._threads``): numpy's BLAS then starts a thread per core,
    which oversubscribes the busy cores. And the largest residual
    ``|laplacian(u) - div v|`` of the solutions (goal: at most 1e-9). Each line
    names the method ``"auto"`` chose. For the record, the two exact methods
@@ -27,7 +27,7 @@ both sides of a ratio see the same load.
 
 OpenCV's seamlessClone runs on one thread (cv2.setNumThreads(1) does not
 change its time). Ours limits its BLAS and FFT threads to the cores the load
-leaves idle (``course._threads``). Run this script without
+leaves idle (``course.poisson._threads``). Run this script without
 OPENBLAS_NUM_THREADS and its kin: pinning one thread from outside hides what
 the limit is for (``make bench`` leaves them unset for this script).
 """
@@ -44,8 +44,8 @@ import cv2
 import numpy as np
 from timing import best_time, best_times
 
-from course import _threads, images, poisson
-from course import poisson_solvers as solvers
+from course import images, poisson
+from course.poisson import _threads, solvers
 
 TOLERANCE = 1e-6
 CAP = 6000  # sweeps of Jacobi and Gauss-Seidel actually run; the rest is extrapolated
@@ -95,7 +95,7 @@ def busy_processes(count: int = BUSY_PROCESSES):
 
 @contextmanager
 def library_thread_limit_lifted():
-    """The solvers as they were before course._threads: a BLAS thread per core."""
+    """The solvers as they were before course.poisson._threads: a BLAS thread per core."""
     original = _threads.threads_to_use
     _threads.threads_to_use = lambda *_, **__: _threads.available_cores()
     try:

@@ -14,7 +14,7 @@ import numpy as np
 from PIL import Image
 from timing import best_time
 
-from course.resample import supersample
+from course.sampling.resample import supersample
 
 SIZE, OUT, RATE = 2500, 320, 12
 BLOCK, BLOCK_OUT = 125, 16

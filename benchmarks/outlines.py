@@ -10,7 +10,7 @@ Measures: the distance of each piece of the curve, sampled densely in t, to
 its chord; the fewest segments of a uniform t step within a tolerance; and
 Levien's segment count (the anchor of the best achievable count), written
 out here from kurbo's ``estimate_subdiv`` and ``flatten`` one curve at a
-time, independently of :mod:`course._flatten`.
+time, independently of :mod:`course.curves._flatten`.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ import numpy as np
 from matplotlib.font_manager import FontProperties
 from matplotlib.textpath import TextPath
 
-from course.bezier import de_casteljau
+from course.curves.bezier import de_casteljau
 
 GLYPH_TEXT = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789&@%$§?"
 GLYPH_SIZE = 200.0

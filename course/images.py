@@ -363,7 +363,7 @@ def scratched_photograph(
     """
     import scipy.ndimage
 
-    from course.bezier import de_casteljau
+    from course.curves.bezier import de_casteljau
 
     scratches = as_int(scratches, "scratches", minimum=0, maximum=1000)
     width = as_int(width, "width", minimum=1, maximum=100)

@@ -500,14 +500,14 @@ PRELOAD = [
     "numpy",
     "matplotlib",
     "matplotlib.pyplot",
-    "course.check.de_casteljau",
-    "course.check.bernstein",
-    "course.check.lines_and_triangles",
-    "course.check.supersampling",
-    "course.check.antialiasing",
-    "course.check.dithering",
-    "course.check.filtering",
-    "course.check.poisson",
+    "course.lessons.l01_de_casteljau.check",
+    "course.lessons.l02_bernstein.check",
+    "course.lessons.l03_lines_and_triangles.check",
+    "course.lessons.l04_supersampling.check",
+    "course.lessons.l05_antialiasing.check",
+    "course.lessons.l06_dithering.check",
+    "course.lessons.l07_filtering.check",
+    "course.lessons.l08_poisson.check",
 ]
 
 

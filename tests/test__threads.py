@@ -1,4 +1,4 @@
-"""course._threads: how many BLAS and FFT threads the solvers use, and that they give them back."""
+"""course.poisson._threads: the solvers' BLAS and FFT threads, and that they give them back."""
 
 import threading
 import time
@@ -8,9 +8,7 @@ import pytest
 import scipy.fft
 from threadpoolctl import threadpool_info, threadpool_limits
 
-from course import _threads
-from course import poisson_capacitance as capacitance
-from course import poisson_solvers as solvers
+from course.poisson import _threads, capacitance, solvers
 
 
 def blas_threads() -> list[int]:
@@ -206,7 +204,7 @@ def test_what_lesson_08_prints_is_the_same_on_one_thread_and_on_two(monkeypatch)
     # depend on it: two threads change the last bits of a solve (the test above), and
     # the captions round far above them.
     from course import poisson
-    from course.widgets import poisson_figures as figures
+    from course.lessons.l08_poisson import figures
     from course.widgets.picture import rounding_level
 
     lake, plane = figures.lab_scene()

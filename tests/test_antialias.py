@@ -28,8 +28,8 @@ from course.antialias import (
     subsample_falloff,
     wang_segments,
 )
-from course.bezier import de_casteljau, uniform_parameters
-from course.coverage import reference
+from course.antialias.coverage import reference
+from course.curves.bezier import de_casteljau, uniform_parameters
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 

@@ -1,12 +1,12 @@
-"""course.check.antialiasing.bilinear_splat: a correct splat passes, the handouts' mistakes fail."""
+"""Lesson 05's bilinear_splat checker: a correct splat passes, the handouts' mistakes fail."""
 
 import math
 
 import numpy as np
 import pytest
 
-from course.check import antialiasing as check
-from course.check.antialiasing import splat_table
+from course.lessons.l05_antialiasing import check
+from course.lessons.l05_antialiasing.check import splat_table
 
 
 def correct(x, y):

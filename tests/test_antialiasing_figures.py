@@ -7,7 +7,7 @@ from matplotlib.patches import Rectangle
 
 from course.antialias import arc_length_step
 from course.images import SEED_000_CUBIC
-from course.widgets import antialiasing_figures as figures
+from course.lessons.l05_antialiasing import figures
 
 
 @pytest.mark.parametrize("figure", [figures.pixel_area_figure, figures.splat_figure])

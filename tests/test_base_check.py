@@ -426,7 +426,7 @@ def test_student_line_skips_frames_inside_the_course():
 
 def test_the_second_step_of_a_hint_starts_a_sentence_with_a_capital(monkeypatch):
     # Lessons 06-08 read "... the comparison itself. each input pixel ...".
-    from course.check import dithering
+    from course.lessons.l06_dithering import check as dithering
 
     monkeypatch.setattr(base, "_FAILURES", base.Counter())
     wrong = lambda gray: np.zeros((3 * gray.shape[0], 3 * gray.shape[1]))  # noqa: E731
@@ -444,7 +444,7 @@ def test_the_second_step_of_a_hint_starts_a_sentence_with_a_capital(monkeypatch)
 
 def test_hints_and_a_pass_in_chinese_and_english_after(monkeypatch):
     import course
-    from course.check import dithering  # noqa: F401 (registers the hints asked for)
+    from course.lessons.l06_dithering import check as dithering  # noqa: F401 (registers the hints asked for)
 
     monkeypatch.setattr(base, "_FAILURES", base.Counter())
     course.use_language("zh-CN")

@@ -268,16 +268,14 @@ def test_a_value_the_update_refuses_is_put_back_with_the_reason():
 def small_apps():
     """Every app of the lessons, each built small: name -> a function that builds it."""
     from course.images import SEED_000_CUBIC
-    from course.widgets import (
-        antialiasing,
-        bernstein,
-        de_casteljau,
-        dithering,
-        filtering,
-        lines_and_triangles,
-        poisson,
-        supersampling,
-    )
+    from course.lessons.l01_de_casteljau import apps as de_casteljau
+    from course.lessons.l02_bernstein import apps as bernstein
+    from course.lessons.l03_lines_and_triangles import apps as lines_and_triangles
+    from course.lessons.l04_supersampling import apps as supersampling
+    from course.lessons.l05_antialiasing import apps as antialiasing
+    from course.lessons.l06_dithering import apps as dithering
+    from course.lessons.l07_filtering import apps as filtering
+    from course.lessons.l08_poisson import apps as poisson
 
     gray = np.linspace(0, 1, 48 * 48).reshape(48, 48)
     background = np.full((40, 60, 3), 0.5)
@@ -311,11 +309,13 @@ def test_small_apps_lists_every_app_of_the_lessons():
     import inspect
     import pkgutil
 
-    import course.widgets
+    import course.lessons
 
     found = set()
-    for module in pkgutil.iter_modules(course.widgets.__path__):
-        loaded = importlib.import_module(f"course.widgets.{module.name}")
+    for chapter in pkgutil.iter_modules(course.lessons.__path__):
+        if not chapter.ispkg:
+            continue
+        loaded = importlib.import_module(f"course.lessons.{chapter.name}.apps")
         for name, value in vars(loaded).items():
             if inspect.isclass(value) and issubclass(value, SliderApp) and value is not SliderApp:
                 found.add(name)
@@ -360,8 +360,8 @@ def test_points_written_with_decimal_commas_are_refused_not_misread(points, data
 
 
 def test_an_apps_model_id_is_counted_per_class_not_random():
-    from course.widgets.bernstein import BernsteinBasisApp
-    from course.widgets.de_casteljau import DeCasteljauApp
+    from course.lessons.l01_de_casteljau.apps import DeCasteljauApp
+    from course.lessons.l02_bernstein.apps import BernsteinBasisApp
 
     first, second = DeCasteljauApp().widget.model_id, DeCasteljauApp().widget.model_id
     assert first.startswith("course-DeCasteljauApp-") and second != first

@@ -1,4 +1,4 @@
-"""course.check.bernstein: Pascal's rule, exactly and without help; naive_bezier of any degree."""
+"""Lesson 02's checkers: Pascal's rule, exactly and without help; naive_bezier of any degree."""
 
 import functools
 import itertools
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from course.check import base
-from course.check import bernstein as check
+from course.lessons.l02_bernstein import check
 
 
 def pascal(m, n):

@@ -4,7 +4,7 @@ import re
 
 import numpy as np
 
-from course.widgets import bernstein_figures as figures
+from course.lessons.l02_bernstein import figures
 
 
 def test_the_hodograph_caption_names_the_slowest_and_fastest_point_of_the_curve():

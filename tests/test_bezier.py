@@ -1,4 +1,4 @@
-"""course.bezier: values, geometric properties, the two forms agreeing, bad input."""
+"""course.curves.bezier: values, geometric properties, the two forms agreeing, bad input."""
 
 import itertools
 import math
@@ -9,8 +9,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from course import _flatten, bezier
-from course.bezier import (
+from course.curves import _flatten, bezier
+from course.curves.bezier import (
     bernstein_basis,
     bezier_bernstein,
     binomial,
@@ -24,7 +24,7 @@ from course.bezier import (
     split,
     uniform_parameters,
 )
-from course.bezier_accuracy import bezier_exact
+from course.curves.bezier_accuracy import bezier_exact
 from course.images import SEED_000_CUBIC
 
 # Coordinates and parameters with few bits, so that products stay exact.
@@ -619,7 +619,7 @@ def test_public_names_are_exported():
 @pytest.mark.parametrize("step", [1e-9, 1e-15])
 def test_a_step_too_fine_is_refused_before_any_sample_is_made(step):
     from course import limits
-    from course.bezier import sample_uniform, uniform_parameters
+    from course.curves.bezier import sample_uniform, uniform_parameters
 
     with pytest.raises(ValueError, match=f"at most {limits.MAX_STEP_SAMPLES} samples"):
         uniform_parameters(step)
@@ -629,7 +629,7 @@ def test_a_step_too_fine_is_refused_before_any_sample_is_made(step):
 
 def test_the_finest_step_allowed_gives_at_most_the_bound():
     from course import limits
-    from course.bezier import uniform_parameters
+    from course.curves.bezier import uniform_parameters
 
     step = 1 / (limits.MAX_STEP_SAMPLES - 2)
     assert len(uniform_parameters(step)) <= limits.MAX_STEP_SAMPLES

@@ -1,4 +1,4 @@
-"""course.bezier_accuracy: exact evaluation, the power basis, the accuracy study."""
+"""course.curves.bezier_accuracy: exact evaluation, the power basis, the accuracy study."""
 
 import itertools
 from fractions import Fraction
@@ -6,8 +6,8 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from course.bezier import de_casteljau
-from course.bezier_accuracy import (
+from course.curves.bezier import de_casteljau
+from course.curves.bezier_accuracy import (
     accuracy_by_degree,
     bezier_exact,
     bezier_power,

@@ -1,4 +1,4 @@
-"""course.bezier_handouts: the handouts' own code, their pitfalls measured; the GAMES101 check."""
+"""course.curves.bezier_handouts: the handouts' own code, pitfalls measured; the GAMES101 check."""
 
 import itertools
 import math
@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from course.bezier import bezier_bernstein, de_casteljau, sample_uniform, uniform_parameters
-from course.bezier_handouts import (
+from course.curves.bezier import bezier_bernstein, de_casteljau, sample_uniform, uniform_parameters
+from course.curves.bezier_handouts import (
     HANDOUT_LOOPS,
     comb_recursive,
     comb_recursive_calls,
@@ -21,9 +21,9 @@ from course.bezier_handouts import (
     trace_recursive,
     yellow_check,
 )
-from course.canvas import blank, paint, yellow_fraction
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
+from course.raster.canvas import blank, paint, yellow_fraction
 
 SEED_000 = SEED_000_CUBIC
 
@@ -143,7 +143,7 @@ def test_the_yellow_check_agrees_with_painting_both_curves_by_hand():
 def test_trace_recursive_refuses_a_curve_deeper_than_the_recursion_allows():
     import sys
 
-    from course.bezier_handouts import trace_recursive
+    from course.curves.bezier_handouts import trace_recursive
 
     points = np.zeros((1501, 2))
     with pytest.raises(ValueError, match="points must hold at most"):
@@ -154,7 +154,7 @@ def test_trace_recursive_refuses_a_curve_deeper_than_the_recursion_allows():
 
 @given(st.lists(st.tuples(st.integers(-40, 40), st.integers(-40, 40)), min_size=2, max_size=6))
 def test_step_report_counts_the_distinct_pixels_of_its_samples(control):
-    from course.bezier_handouts import step_report
+    from course.curves.bezier_handouts import step_report
 
     report = step_report(np.array(control, dtype=float), 0.01)
     assert report["pixels"] == len({tuple(p) for p in report["pixel_list"].tolist()})
@@ -162,7 +162,7 @@ def test_step_report_counts_the_distinct_pixels_of_its_samples(control):
 
 def test_trace_iterative_bounds_the_handout_loop():
     from course import limits
-    from course.bezier_handouts import trace_iterative
+    from course.curves.bezier_handouts import trace_iterative
 
     with pytest.raises(ValueError, match=f"at most {limits.MAX_HANDOUT_POINTS} control points"):
         trace_iterative(np.zeros((limits.MAX_HANDOUT_POINTS + 1, 2)), 0.5)

@@ -23,8 +23,8 @@ from matplotlib.path import Path as MatplotlibPath
 from matplotlib.transforms import Affine2D, Bbox, IdentityTransform
 from PIL import Image
 
+from course.lessons.l01_de_casteljau.apps import DeCasteljauApp
 from course.widgets.browser_drawing import CommandRecorder
-from course.widgets.de_casteljau import DeCasteljauApp
 from course.widgets.picture import FigureView
 
 GENERIC = ("serif", "sans-serif", "cursive", "fantasy", "monospace")

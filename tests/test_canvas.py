@@ -1,9 +1,9 @@
-"""course.canvas: painting clips, never wraps, and each mode means what it says."""
+"""course.raster.canvas: painting clips, never wraps, and each mode means what it says."""
 
 import numpy as np
 import pytest
 
-from course.canvas import blank, crop, inside, paint, painted, yellow_fraction
+from course.raster.canvas import blank, crop, inside, paint, painted, yellow_fraction
 
 
 def test_paint_drops_pixels_off_the_canvas_instead_of_wrapping():
@@ -95,7 +95,7 @@ def test_painted_is_paint_on_a_blank_canvas_for_every_mode():
 
 @pytest.mark.parametrize("threshold", ["abc", None, np.nan, -0.5, 1.5])
 def test_yellow_fraction_names_a_bad_threshold(threshold):
-    from course.canvas import blank, yellow_fraction
+    from course.raster.canvas import blank, yellow_fraction
 
     image = blank((2, 2), (1.0, 1.0, 0.0))
     with pytest.raises((TypeError, ValueError), match="threshold"):

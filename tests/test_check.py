@@ -16,20 +16,26 @@ import pytest
 from babel.messages.pofile import read_po
 
 import course
-from course.check import (
-    antialiasing,
-    base,
-    bernstein,
-    de_casteljau,
-    poisson,
-    sandbox,
-    supersampling,
-)
+from course.check import base, sandbox
 from course.check.pictures import curve_picture
+from course.lessons.l01_de_casteljau import check as de_casteljau
+from course.lessons.l02_bernstein import check as bernstein
+from course.lessons.l04_supersampling import check as supersampling
+from course.lessons.l05_antialiasing import check as antialiasing
+from course.lessons.l08_poisson import check as poisson
 
 CATALOG = Path(__file__).resolve().parent.parent / "course/locale/zh_CN/LC_MESSAGES/course.po"
-OURS = ("de_casteljau.py", "bernstein.py", "supersampling.py", "antialiasing.py", "poisson.py")
-OURS += ("sandbox.py",)
+OURS = tuple(
+    f"course/lessons/{chapter}/check.py"
+    for chapter in (
+        "l01_de_casteljau",
+        "l02_bernstein",
+        "l04_supersampling",
+        "l05_antialiasing",
+        "l08_poisson",
+    )
+)
+OURS += ("course/check/sandbox.py",)
 CJK = re.compile(r"[\u4e00-\u9fff]")
 
 
@@ -39,10 +45,7 @@ def _fragments() -> set[str]:
         catalog = read_po(file)
     pieces = set()
     for message in catalog:
-        if not message.id or not any(
-            path.startswith("course/check/") and path.endswith(OURS)
-            for path, _ in message.locations
-        ):
+        if not message.id or not any(path in OURS for path, _ in message.locations):
             continue
         for text in message.id if isinstance(message.id, tuple) else (message.id,):
             pieces.update(p.strip() for p in re.split(r"\{\w*\}", text) if len(p.strip()) >= 12)

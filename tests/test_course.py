@@ -1,8 +1,9 @@
 """The package as a whole: layers, imports and one vocabulary for the handout's forms.
 
-``design.md``'s three layers: the algorithms (``course/*.py``), the apps and
-checkers (``course/widgets``, ``course/check``), and the classroom
-(``course/lessons``, ``course/classroom``, ``python -m course``). The
+``design.md``'s three layers: the algorithms (the topic packages ``course/<topic>/``
+and the few shared modules at ``course/``'s root), the shared teaching machinery
+(``course/widgets``, ``course/check``), and the lessons and classroom (the
+chapters ``course/lessons/lNN_topic/``, ``course/classroom``, ``python -m course``). The
 imports are read from the source (ast), at module level and inside
 functions alike, so a deferred import cannot hide an upward dependency.
 """
@@ -20,12 +21,17 @@ import numpy as np
 import pytest
 
 import course
-from course import bezier, dither, filters, raster, resample, splats, triangles
-from course import poisson_solvers as solvers
+from course import filters, raster
+from course.antialias import splats
 from course.classroom.source import source_of
+from course.curves import bezier
+from course.halftone import dither
+from course.poisson import solvers
+from course.raster import triangles
+from course.sampling import resample
 
 PACKAGE = Path(course.__file__).resolve().parent
-LAYERS = {"algorithms": 0, "apps and checkers": 1, "classroom": 2}
+LAYERS = {"algorithms": 0, "shared teaching machinery": 1, "lessons and classroom": 2}
 
 
 def module_name(path: Path) -> str:
@@ -41,9 +47,9 @@ def layer(module: str) -> str:
     if len(parts) == 1:
         return "algorithms"  # the package's __init__: a docstring and the version
     if parts[1] in ("widgets", "check"):
-        return "apps and checkers"
+        return "shared teaching machinery"
     if parts[1] in ("classroom", "lessons", "__main__"):
-        return "classroom"
+        return "lessons and classroom"
     return "algorithms"
 
 
@@ -55,7 +61,7 @@ def course_imports(module: str) -> set[str]:
         if isinstance(node, ast.Import):
             names = [alias.name for alias in node.names]
         elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
-            # "from course import dither" imports the module course.dither.
+            # "from course import dither" imports the module course.halftone.dither.
             names = [
                 f"{node.module}.{alias.name}"
                 if f"{node.module}.{alias.name}" in MODULES
@@ -73,11 +79,18 @@ GRAPH = {module: course_imports(module) for module in MODULES}
 
 def test_the_three_layers_are_where_design_md_puts_them():
     by_layer = {name: [m for m in MODULES if layer(m) == name] for name in LAYERS}
-    assert {"course.bezier", "course.raster", "course._validate"} <= set(by_layer["algorithms"])
-    assert {"course.widgets.base", "course.check.base"} <= set(by_layer["apps and checkers"])
-    assert {"course.classroom.registry", "course.lessons.l01_de_casteljau"} <= set(
-        by_layer["classroom"]
+    assert {"course.curves.bezier", "course.raster", "course._validate"} <= set(
+        by_layer["algorithms"]
     )
+    assert {"course.widgets.base", "course.check.base"} <= set(
+        by_layer["shared teaching machinery"]
+    )
+    assert {
+        "course.classroom.registry",
+        "course.lessons.l01_de_casteljau.lesson",
+        "course.lessons.l01_de_casteljau.check",
+        "course.lessons.l01_de_casteljau.apps",
+    } <= set(by_layer["lessons and classroom"])
 
 
 @pytest.mark.parametrize("module", sorted(MODULES))
@@ -126,11 +139,14 @@ def test_no_module_imports_itself_through_others():
 
 def test_the_checks_can_fail():
     """A made-up upward import and a made-up cycle are both caught."""
-    assert layer("course.widgets.lines_and_triangles") == "apps and checkers"
+    assert layer("course.lessons.l03_lines_and_triangles.apps") == "lessons and classroom"
+    assert LAYERS[layer("course.widgets.base")] > LAYERS[layer("course.raster")]
     assert LAYERS[layer("course.classroom.pictures")] > LAYERS[layer("course.raster")]
     assert cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
-    assert "course.widgets.base" in GRAPH["course.widgets.lines_and_triangles"]
-    assert "course.dither" in GRAPH["course.lessons.l06_dithering"]  # "from course import dither"
+    assert "course.widgets.base" in GRAPH["course.lessons.l03_lines_and_triangles.apps"]
+    assert (
+        "course.halftone.dither" in GRAPH["course.lessons.l06_dithering.lesson"]
+    )  # "from course import dither"
 
 
 # --- one vocabulary: the handout's form is method="loop" ----------------------
@@ -175,15 +191,15 @@ SPLAT_SAMPLES = np.random.default_rng(3).uniform(-5, 40, size=(300, 2))
 # Each function with a loop form, called on the same inputs with a given method;
 # the tolerance is 0 where the forms add the same numbers in the same order.
 FORM_CASES = {
-    "course.bezier.bezier_bernstein": (
+    "course.curves.bezier.bezier_bernstein": (
         lambda method: bezier.bezier_bernstein(dyadic((8, 2)) * 700, np.arange(17) / 16, method),
         1e-12,
     ),
-    "course.raster.line": (
+    "course.raster.lines.line": (
         lambda method: np.concatenate([raster.line(p0, p1, method=method) for p0, p1 in LINE_ENDS]),
         0,
     ),
-    "course.triangles.triangle": (
+    "course.raster.triangles.triangle": (
         lambda method: np.concatenate(
             [
                 triangles.triangle(*vertices, rule=rule, method=method)
@@ -193,31 +209,34 @@ FORM_CASES = {
         ),
         0,
     ),
-    "course.resample.supersample": (
+    "course.sampling.resample.supersample": (
         lambda method: resample.supersample(dyadic((20, 30, 3)), (7, 9), 3, method),
         1e-12,
     ),
-    "course.filters.blur": (lambda method: filters.blur(dyadic((9, 11, 3)), method), 0),
-    "course.filters.sobel": (
+    "course.filters.convolution.blur": (lambda method: filters.blur(dyadic((9, 11, 3)), method), 0),
+    "course.filters.convolution.sobel": (
         lambda method: np.stack(
             [filters.sobel(dyadic((9, 11)), border, method) for border in BORDERS_OF_SOBEL]
         ),
         0,
     ),
-    "course.dither.ordered": (lambda method: dither.ordered(dyadic((9, 11), 1, 9), method), 0),
-    "course.error_diffusion.error_diffusion": (
+    "course.halftone.dither.ordered": (
+        lambda method: dither.ordered(dyadic((9, 11), 1, 9), method),
+        0,
+    ),
+    "course.halftone.diffusion.error_diffusion": (
         lambda method: dither.error_diffusion_values(dyadic((12, 17)), method=method),
         0,
     ),
-    "course.splats.splat": (
+    "course.antialias.splats.splat": (
         lambda method: [splats.splat(SPLAT_SAMPLES, kind, method=method) for kind in splats.SPLATS],
         1e-12,
     ),
-    "course.poisson_solvers.jacobi_sweeps": (
+    "course.poisson.solvers.jacobi_sweeps": (
         lambda method: run_sweeps(solvers.jacobi_sweeps(*_poisson_arrays(), method=method), 6),
         0,
     ),
-    "course.poisson_solvers.sor_sweeps": (
+    "course.poisson.solvers.sor_sweeps": (
         lambda method: run_sweeps(
             solvers.sor_sweeps(*_poisson_arrays(), omega=1.5, method=method), 6
         ),
@@ -328,31 +347,47 @@ def test_notebooks_use_public_names_only(path):
 
 
 def test_the_private_name_checks_can_fail():
-    tree = ast.parse("from course.bezier import _pascal_row\nf.__globals__['x']")
+    tree = ast.parse("from course.curves.bezier import _pascal_row\nf.__globals__['x']")
     assert private_imports(tree) == ["_pascal_row", "__globals__"]
 
 
 def test_test_files_are_named_for_what_they_test():
-    """``test_<module>.py``, ``test_<topic>_check.py``, ``test_<topic>_widgets.py``.
+    """``test_<module>.py``, and a lesson's ``test_<topic>_{check,apps,figures}.py``.
 
-    Five test the whole package: ``test_course.py`` (its layout), ``test_fuzz.py``
-    (every public callable, given bad input), ``test_figure_bounds.py`` (every figure's
-    size bounds), ``test_mutants.py`` (every exercise's checker against the slips of its
-    answer) and ``test_install.py`` (make, the locks, the README's commands).
+    A chapter ``course/lessons/lNN_<topic>/`` is tested by ``test_<topic>_check.py``,
+    ``test_<topic>_apps.py`` and ``test_<topic>_figures.py``; the shared machinery by
+    ``test_<module>_check.py`` (``course/check/``) and ``test_<module>_widgets.py``
+    (``course/widgets/``). Five test the whole package: ``test_course.py`` (its layout),
+    ``test_fuzz.py`` (every public callable, given bad input), ``test_figure_bounds.py``
+    (every figure's size bounds), ``test_mutants.py`` (every exercise's checker against the
+    slips of its answer) and ``test_install.py`` (make, the locks, the README's commands).
     """
     whole = {"course", "fuzz", "figure_bounds", "mutants", "install"}
     stems = {name.rsplit(".", 1)[-1] for name in MODULES} | whole
-    checks = {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.check.")}
-    apps = {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.widgets.")}
+    chapters = {
+        name.split(".")[2].split("_", 1)[1]
+        for name in MODULES
+        if name.startswith("course.lessons.l") and name.count(".") == 2
+    }
+    shared = {
+        "check": {name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.check.")},
+        "widgets": {
+            name.rsplit(".", 1)[-1] for name in MODULES if name.startswith("course.widgets.")
+        },
+    }
     named = [path.stem[len("test_") :] for path in Path(__file__).parent.glob("test_*.py")]
-    stray = [
-        name
-        for name in named
-        if name not in stems
-        and not (name.endswith("_check") and name[: -len("_check")] in checks)
-        and not (name.endswith("_widgets") and name[: -len("_widgets")] in apps)
-    ]
+
+    def names_a_module(name: str) -> bool:
+        topic, _, kind = name.rpartition("_")
+        return (
+            name in stems
+            or (kind in ("check", "apps", "figures") and topic in chapters)
+            or topic in shared.get(kind, ())
+        )
+
+    stray = [name for name in named if not names_a_module(name)]
     assert not stray, f"tests named for no module: {stray}"
+    assert chapters >= {"de_casteljau", "poisson"}
 
 
 STANDARD_LIBRARY_ONLY = [

@@ -1,4 +1,4 @@
-"""course.coverage: the exact reference, Agg's rendering, and the geometry under both."""
+"""course.antialias.coverage: the exact reference, Agg's rendering, and the geometry under both."""
 
 import itertools
 import math
@@ -9,8 +9,7 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from matplotlib.path import Path
 
-from course.bezier import de_casteljau
-from course.coverage import (
+from course.antialias.coverage import (
     agg_draw,
     agg_render,
     curve_polyline,
@@ -20,6 +19,7 @@ from course.coverage import (
     slab_coverage,
     subdivide,
 )
+from course.curves.bezier import de_casteljau
 from course.images import SEED_000_CUBIC
 
 SEED_CURVE = SEED_000_CUBIC / 5

@@ -1,11 +1,11 @@
-"""course.curve_quality: each measure against a case whose answer is known."""
+"""course.antialias.curve_quality: each measure against a case whose answer is known."""
 
 import numpy as np
 import pytest
 
 from course.antialias import RENDER_METHODS, SPLATS, render
-from course.coverage import reference
-from course.curve_quality import (
+from course.antialias.coverage import reference
+from course.antialias.curve_quality import (
     AGG,
     ARC_LENGTH,
     centroid_offsets,
@@ -92,7 +92,7 @@ def test_variants_and_the_quality_table():
 
 
 def test_variants_refuses_a_degree_agg_cannot_draw_before_rendering_anything(monkeypatch):
-    from course import curve_quality
+    from course.antialias import curve_quality
 
     drawn = []
     original = curve_quality.render_variant

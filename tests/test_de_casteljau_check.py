@@ -1,4 +1,4 @@
-"""course.check.de_casteljau: right answers pass in one line; each handout mistake is named."""
+"""Lesson 01's checkers: right answers pass in one line; each handout mistake is named."""
 
 import io
 import itertools
@@ -10,7 +10,7 @@ import pytest
 from PIL import Image
 
 from course.check import base
-from course.check import de_casteljau as check
+from course.lessons.l01_de_casteljau import check
 
 
 def recursive_solution(points, t):

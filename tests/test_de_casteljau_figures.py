@@ -5,9 +5,9 @@ import re
 import numpy as np
 from drawn_figures import figures_drawn
 
-from course.bezier_handouts import HANDOUT_LOOPS, yellow_check
+from course.curves.bezier_handouts import HANDOUT_LOOPS, yellow_check
 from course.images import SEED_000_CUBIC
-from course.widgets import de_casteljau_figures as figures
+from course.lessons.l01_de_casteljau import figures
 
 
 def last_t(step, dtype):

@@ -1,4 +1,4 @@
-"""course.dither: every method's properties and forms, the measures, and bad input."""
+"""course.halftone.dither: every method's properties and forms, the measures, and bad input."""
 
 import numpy as np
 import pytest
@@ -6,8 +6,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from course import blue_noise as bn
-from course import dither
+from course.halftone import blue_noise_masks as bn
+from course.halftone import dither
 from course.images import ramp
 
 # Gray images of exact binary fractions, and of arbitrary floats in [0, 1].
@@ -238,7 +238,7 @@ def test_bad_options_are_rejected_naming_them():
 
 def test_bayer_sizes_are_bounded_before_the_matrix_is_built():
     from course import limits
-    from course.dither import bayer, bayer_matrix
+    from course.halftone.dither import bayer, bayer_matrix
 
     with pytest.raises(ValueError, match=f"size must be between 1 and {limits.MAX_BAYER_SIZE}"):
         bayer_matrix(2**14)

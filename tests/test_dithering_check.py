@@ -1,4 +1,4 @@
-"""course.check.dithering: a correct loop passes, the handout's slip fails by case."""
+"""course.lessons.l06_dithering.check: a correct loop passes, the handout's slip fails by case."""
 
 import warnings
 
@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 
 import course
-from course import dither
 from course.check import base
-from course.check import dithering as check
+from course.halftone import dither
+from course.lessons.l06_dithering import check
 
 
 def test_checker_passes_a_correct_loop_and_fails_the_wraparound_slip_naming_the_case():

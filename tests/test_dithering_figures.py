@@ -7,9 +7,9 @@ import pytest
 from chinese import check_chinese_figure
 from drawn_figures import figures_drawn
 
-from course import dither
+from course.halftone import dither
 from course.i18n import language
-from course.widgets import dithering_figures as figures
+from course.lessons.l06_dithering import figures
 
 FIGURES = [
     (figures.diffusion_figure, ()),

@@ -5,7 +5,7 @@ import pytest
 
 
 def test_text_figure_bounds_its_text_before_stroking_it():
-    from course.widgets.antialiasing_figures import text_figure
+    from course.lessons.l05_antialiasing.figures import text_figure
 
     with pytest.raises(ValueError, match=r"len\(text\) \* size at most 160"):
         text_figure("W" * 200, 16, 2)
@@ -24,21 +24,21 @@ def test_text_figure_bounds_its_text_before_stroking_it():
     ],
 )
 def test_brightness_figure_bounds_its_steps(steps, message):
-    from course.widgets.antialiasing_figures import brightness_figure
+    from course.lessons.l05_antialiasing.figures import brightness_figure
 
     with pytest.raises((TypeError, ValueError), match=message):
         brightness_figure(steps=steps)
 
 
 def test_gaps_figure_bounds_its_window_before_drawing():
-    from course.widgets.de_casteljau_figures import gaps_figure
+    from course.lessons.l01_de_casteljau.figures import gaps_figure
 
     with pytest.raises(ValueError, match="size must be between 1 and 100"):
         gaps_figure([[10, 10], [690, 10], [10, 690], [690, 690]], size=10**6)
 
 
 def test_colour_figure_names_a_canvas_the_triangle_misses_and_one_too_large():
-    from course.widgets.lines_and_triangles_figures import colour_figure
+    from course.lessons.l03_lines_and_triangles.figures import colour_figure
 
     with pytest.raises(ValueError, match="enclose at least one pixel centre"):
         colour_figure(size=(1, 1))
@@ -51,7 +51,7 @@ def test_colour_figure_names_a_canvas_the_triangle_misses_and_one_too_large():
     [({"corner": 10**9}, "corner"), ({"rate": 10**6}, "rate"), ({"corner": "40"}, "corner")],
 )
 def test_shift_figure_bounds_its_window_and_rate(arguments, name):
-    from course.widgets.supersampling_figures import shift_figure
+    from course.lessons.l04_supersampling.figures import shift_figure
 
     with pytest.raises((TypeError, ValueError), match=name):
         shift_figure(**arguments)
@@ -62,7 +62,7 @@ def test_shift_figure_bounds_its_window_and_rate(arguments, name):
     ["three_points_figure", "reversed_figure", "end_of_curve_figure", "yellow_check_figure"],
 )
 def test_de_casteljau_figures_draw_at_most_100_control_points(name):
-    from course.widgets import de_casteljau_figures
+    from course.lessons.l01_de_casteljau import figures as de_casteljau_figures
 
     curve = np.resize([[2.0, 3.0], [14.0, 1.0], [3.0, 13.0], [13.0, 14.0]], (1501, 2))
     arguments = {"t": 0.5} if name == "three_points_figure" else {}
@@ -73,7 +73,7 @@ def test_de_casteljau_figures_draw_at_most_100_control_points(name):
 
 
 def test_bernstein_figures_draw_at_most_100_control_points_and_tangents():
-    from course.widgets.bernstein_figures import hodograph_figure, tangents_figure
+    from course.lessons.l02_bernstein.figures import hodograph_figure, tangents_figure
 
     curve = np.resize([[2.0, 3.0], [14.0, 1.0], [3.0, 13.0], [13.0, 14.0]], (1501, 2))
     with pytest.raises(ValueError, match="at most 100 control points"):

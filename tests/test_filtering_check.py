@@ -1,4 +1,4 @@
-"""course.check.filtering: the lab's Blur and Edge, right and wrong."""
+"""course.lessons.l07_filtering.check: the lab's Blur and Edge, right and wrong."""
 
 import warnings
 
@@ -8,7 +8,7 @@ import pytest
 import course
 from course import filters
 from course.check import base
-from course.check import filtering as check
+from course.lessons.l07_filtering import check
 
 # The students below are written here, as a student would write them: the checkers fail
 # an answer that calls the library's own blur, sobel or convolve.

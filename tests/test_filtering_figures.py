@@ -2,7 +2,7 @@
 
 from chinese import check_chinese_figure
 
-from course.widgets import filtering_figures as figures
+from course.lessons.l07_filtering import figures
 
 
 def test_a_figure_in_chinese_has_chinese_words_and_every_glyph(monkeypatch, caplog):

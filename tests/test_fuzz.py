@@ -81,17 +81,17 @@ UNCLEAR: collections.Counter[str] = collections.Counter()  # rejections not nami
 
 # Callables left out, each with the reason; everything else public is fuzzed.
 LEFT_OUT = {
-    "course.check.de_casteljau.curve_pass_picture": (
+    "course.lessons.l01_de_casteljau.check.curve_pass_picture": (
         "makes a checker's pass picture from the checker's own reference; no student input"
     ),
-    "course.check.de_casteljau.point_picture": (
+    "course.lessons.l01_de_casteljau.check.point_picture": (
         "makes a checker's failure picture from the checker's own reference; no student input"
     ),
     "course.classroom.cli.main": "runs whole commands; its argument parsing is argparse's",
     "course.check.references.call_budget": "a context manager for checkers; no data input",
-    "course.widgets.antialiasing_figures.Table": "a str subclass: str's own constructor",
+    "course.lessons.l05_antialiasing.figures.Table": "a str subclass: str's own constructor",
     "course.widgets.base.SliderApp.still": "the abstract base draws nothing: its apps' do",
-    "course.widgets.poisson_figures.write_lab_sweeps": (
+    "course.lessons.l08_poisson.figures.write_lab_sweeps": (
         "the maintainers' step, minutes of solving; its path is checked first "
         "(tests/test_poisson_figures.py)"
     ),
@@ -300,52 +300,58 @@ VALID: dict[str, Any] = {
     "curves": lambda: _curves(),
     "force": lambda: False,
     # by qualified name
-    "course.coverage.path_polyline:path": lambda: _curves(),
-    "course.paths.canvas_for:curves": lambda: [CURVE.copy()],
-    "course.poisson_problem.PoissonProblem:values": lambda: _problem().values,
-    "course.poisson_problem.PoissonProblem:region": lambda: _problem().region,
-    "course.poisson_problem.PoissonProblem:source": lambda: _problem().source,
-    "course.poisson_problem.PoissonProblem:corner": lambda: _problem().corner,
+    "course.antialias.coverage.path_polyline:path": lambda: _curves(),
+    "course.curves.paths.canvas_for:curves": lambda: [CURVE.copy()],
+    "course.poisson.problem.PoissonProblem:values": lambda: _problem().values,
+    "course.poisson.problem.PoissonProblem:region": lambda: _problem().region,
+    "course.poisson.problem.PoissonProblem:source": lambda: _problem().source,
+    "course.poisson.problem.PoissonProblem:corner": lambda: _problem().corner,
     "course.classroom.folders.inside_folder:name": lambda: "picture",
     "course.classroom.folders.inside_folder:suffix": lambda: ".png",
-    "course.check.de_casteljau.as_point:value": lambda: (1.0, 2.0),
+    "course.lessons.l01_de_casteljau.check.as_point:value": lambda: (1.0, 2.0),
     "course.check.pictures.figure_png:figure": lambda: _figure(),
-    "course.widgets.lines_and_triangles.pixel_grid:axes": lambda: _figure().add_subplot(),
-    "course.widgets.lines_and_triangles.shared_edge_centres:a": lambda: np.array([0.5, 0.5]),
-    "course.widgets.lines_and_triangles.shared_edge_centres:c": lambda: np.array([3.5, 3.5]),
-    "course.widgets.lines_and_triangles.shared_edge_centres:shape": lambda: (4, 4),
+    "course.lessons.l03_lines_and_triangles.apps.pixel_grid:axes": lambda: _figure().add_subplot(),
+    "course.lessons.l03_lines_and_triangles.apps.shared_edge_centres:a": lambda: np.array(
+        [0.5, 0.5]
+    ),
+    "course.lessons.l03_lines_and_triangles.apps.shared_edge_centres:c": lambda: np.array(
+        [3.5, 3.5]
+    ),
+    "course.lessons.l03_lines_and_triangles.apps.shared_edge_centres:shape": lambda: (4, 4),
     "course.widgets.base.SliderApp:controls": lambda: _controls(),
-    "course.curve_quality.quality_table:images": lambda: {"a": GRAY.copy()},
-    "course.paths.flatten_each:flatten_one": lambda: lambda control: control,
-    "course.paths.wang_counts:control": lambda: CURVE[None].copy(),
-    "course.poisson.convergence:exact": lambda: _problem().values.copy(),
-    "course.blue_noise.cluster_energy:pattern": lambda: (GRAY[:8, :8] > 0.5).astype(float),
-    "course.canvas.yellow_fraction:image": lambda: RGB.copy(),
-    "course.poisson.inpaint:mask": lambda: np.pad(MASK, ((3, 3), (3, 4))),
-    "course.poisson_problem.inpaint_problem:mask": lambda: np.pad(MASK, ((3, 3), (3, 4))),
-    "course.sampling.spectrum:samples": lambda: np.cos(np.arange(16) * 0.7),
+    "course.antialias.curve_quality.quality_table:images": lambda: {"a": GRAY.copy()},
+    "course.curves.paths.flatten_each:flatten_one": lambda: lambda control: control,
+    "course.curves.paths.wang_counts:control": lambda: CURVE[None].copy(),
+    "course.poisson.editing.convergence:exact": lambda: _problem().values.copy(),
+    "course.halftone.blue_noise_masks.cluster_energy:pattern": lambda: (GRAY[:8, :8] > 0.5).astype(
+        float
+    ),
+    "course.raster.canvas.yellow_fraction:image": lambda: RGB.copy(),
+    "course.poisson.editing.inpaint:mask": lambda: np.pad(MASK, ((3, 3), (3, 4))),
+    "course.poisson.problem.inpaint_problem:mask": lambda: np.pad(MASK, ((3, 3), (3, 4))),
+    "course.sampling.aliasing.spectrum:samples": lambda: np.cos(np.arange(16) * 0.7),
     "course.widgets.picture.png_bytes:pixels": lambda: np.zeros((4, 5, 3), dtype=np.uint8),
     "course.classroom.edition.exercise_stub:source": lambda: "def f(x):\n    return x\n",
-    "course.antialias.render:method": lambda: "bilinear_centres",
-    "course.curve_quality.render_variant:name": lambda: "bilinear_centres",
-    "course.curve_quality.render_window:name": lambda: "bilinear_centres",
-    "course.curve_quality.render_window:size": lambda: 6,
-    "course.splats.splat:kind": lambda: "bilinear_centres",
-    "course.poisson.sweeps_to_residual:method": lambda: "jacobi",
-    "course.poisson.convergence:method": lambda: "jacobi",
-    "course.poisson.iterates:method": lambda: "jacobi",
-    "course.widgets.filtering.blurred:border": lambda: "replicate",
-    "course.widgets.antialiasing.label_of:name": lambda: "bilinear_centres",
+    "course.antialias.rendering.render:method": lambda: "bilinear_centres",
+    "course.antialias.curve_quality.render_variant:name": lambda: "bilinear_centres",
+    "course.antialias.curve_quality.render_window:name": lambda: "bilinear_centres",
+    "course.antialias.curve_quality.render_window:size": lambda: 6,
+    "course.antialias.splats.splat:kind": lambda: "bilinear_centres",
+    "course.poisson.editing.sweeps_to_residual:method": lambda: "jacobi",
+    "course.poisson.editing.convergence:method": lambda: "jacobi",
+    "course.poisson.editing.iterates:method": lambda: "jacobi",
+    "course.lessons.l07_filtering.apps.blurred:border": lambda: "replicate",
+    "course.lessons.l05_antialiasing.apps.label_of:name": lambda: "bilinear_centres",
     "course.widgets.base.parse_points:text": lambda: "1, 2; 3, 4",
     "course.widgets.base.pad:width": lambda: 12,
-    "course.widgets.filtering.parse_kernel:text": lambda: "1 1 1; 1 1 1; 1 1 1",
-    "course.widgets.filtering.format_kernel:kernel": lambda: np.ones((3, 3)),
-    "course.widgets.dithering_figures.methods_figure:images": lambda: {"a": GRAY.copy()},
-    "course.widgets.dithering_figures.methods_figure:centre": lambda: (6.0, 5.0),
-    "course.widgets.antialiasing.zoom_figure:images": lambda: {"a": GRAY.copy()},
-    "course.widgets.dithering_figures.wraparound_figure:centre": lambda: (6.0, 5.0),
-    "course.widgets.de_casteljau_figures.yellow_check_figure:seed": lambda: "000",
-    "course.check.de_casteljau.curve_cases:max_points": lambda: 4,
+    "course.lessons.l07_filtering.apps.parse_kernel:text": lambda: "1 1 1; 1 1 1; 1 1 1",
+    "course.lessons.l07_filtering.apps.format_kernel:kernel": lambda: np.ones((3, 3)),
+    "course.lessons.l06_dithering.figures.methods_figure:images": lambda: {"a": GRAY.copy()},
+    "course.lessons.l06_dithering.figures.methods_figure:centre": lambda: (6.0, 5.0),
+    "course.lessons.l05_antialiasing.apps.zoom_figure:images": lambda: {"a": GRAY.copy()},
+    "course.lessons.l06_dithering.figures.wraparound_figure:centre": lambda: (6.0, 5.0),
+    "course.lessons.l01_de_casteljau.figures.yellow_check_figure:seed": lambda: "000",
+    "course.lessons.l01_de_casteljau.check.curve_cases:max_points": lambda: 4,
     "course.classroom.edition.reveals:cell": lambda: {"cell_type": "code", "source": "x = 1"},
     "course.classroom.edition.solution_cells:notebook": lambda: {"cells": []},
     "course.classroom.edition.student_notebook:notebook": lambda: {"cells": [], "metadata": {}},
@@ -362,21 +368,21 @@ VALID: dict[str, Any] = {
     "course.classroom.pictures.png_of_gray:image": lambda: GRAY.copy(),
     "course.classroom.pictures.segments_of:polyline": lambda: CURVE.copy(),
     "course.classroom.pictures.read_only:array": lambda: GRAY.copy(),
-    "course.bezier_handouts.bresenham_curve:segments": lambda: 4,
-    "course.bezier_handouts.segments_report:segments": lambda: 4,
-    "course.bezier_handouts.trace_recursive:t": lambda: 0.3,
-    "course.dither.bayer_matrix:size": lambda: 4,
-    "course.sampling.cosine_samples:count": lambda: 8,
+    "course.curves.bezier_handouts.bresenham_curve:segments": lambda: 4,
+    "course.curves.bezier_handouts.segments_report:segments": lambda: 4,
+    "course.curves.bezier_handouts.trace_recursive:t": lambda: 0.3,
+    "course.halftone.dither.bayer_matrix:size": lambda: 4,
+    "course.sampling.aliasing.cosine_samples:count": lambda: 8,
     "course.metrics.rmse:reference": lambda: GRAY.copy(),
     "course.metrics.max_error:reference": lambda: GRAY.copy(),
-    "course.widgets.dithering_figures.block_mean:image": lambda: GRAY.copy(),
-    "course.widgets.dithering_figures.block_mean:factor": lambda: 2,
-    "course.widgets.dithering.DitherComparisonApp:gray": lambda: np.tile(GRAY, (3, 3)),
-    "course.widgets.filtering.RepeatedBlurApp:image": lambda: np.tile(GRAY, (6, 6)),
-    "course.widgets.poisson.as_pixels_uint8:image": lambda: GRAY.copy(),
-    "course.widgets.poisson.half_size:image": lambda: GRAY.copy(),
-    "course.widgets.lines_and_triangles.octant:dx": lambda: 3,
-    "course.widgets.lines_and_triangles.octant:dy": lambda: 1,
+    "course.lessons.l06_dithering.figures.block_mean:image": lambda: GRAY.copy(),
+    "course.lessons.l06_dithering.figures.block_mean:factor": lambda: 2,
+    "course.lessons.l06_dithering.apps.DitherComparisonApp:gray": lambda: np.tile(GRAY, (3, 3)),
+    "course.lessons.l07_filtering.apps.RepeatedBlurApp:image": lambda: np.tile(GRAY, (6, 6)),
+    "course.lessons.l08_poisson.apps.as_pixels_uint8:image": lambda: GRAY.copy(),
+    "course.lessons.l08_poisson.apps.half_size:image": lambda: GRAY.copy(),
+    "course.lessons.l03_lines_and_triangles.apps.octant:dx": lambda: 3,
+    "course.lessons.l03_lines_and_triangles.apps.octant:dy": lambda: 1,
     "course.check.comparisons.same_pixels:expected": lambda: np.array([[1, 2]]),
     "course.check.comparisons.same_pixels:given": lambda: np.array([[1, 2]]),
     "course.check.pictures.pixel_picture:expected": lambda: np.array([[1, 2], [3, 4]]),
@@ -385,62 +391,64 @@ VALID: dict[str, Any] = {
     "course.check.pictures.image_picture:given": lambda: GRAY.copy(),
     "course.check.pictures.curve_picture:expected": lambda: CURVE.copy(),
     "course.check.pictures.curve_picture:given": lambda: CURVE.copy(),
-    "course.lessons.l01_de_casteljau.de_casteljau_picture:t": lambda: 0.3,
-    "course.lessons.l02_bernstein.bernstein_picture:degree": lambda: 3,
-    "course.lessons.l03_lines_and_triangles.triangle_picture:rule": lambda: "top-left",
-    "course.lessons.l05_antialiasing.step_app_picture:weighting": lambda: "count",
-    "course.poisson_problem.build_clone_problem:background": lambda: GRAY.copy(),
-    "course.poisson_problem.build_clone_problem:foreground": lambda: GRAY[:6, :7].copy(),
-    "course.poisson_problem.build_clone_problem:corner": lambda: (3, 2),
-    "course.poisson_problem.build_clone_problem:mask": lambda: None,
-    "course.poisson_problem.build_clone_problem:guidance": lambda: "plain",
-    "course.poisson_problem.image_of:planes": lambda: GRAY[None].copy(),
-    "course.poisson_problem.image_of:like": lambda: GRAY.copy(),
-    "course.poisson_problem.paste_window:window": lambda: GRAY[:6, :7].copy(),
-    "course.poisson_problem.window_at:corner": lambda: (3, 2),
-    "course.poisson_problem.window_at:shape": lambda: (6, 7),
-    "course.poisson_problem.window_in:image": lambda: GRAY[:6, :7].copy(),
-    "course.poisson_problem.window_in:corner": lambda: (3, 2),
-    "course.poisson_problem.PoissonProblem.paste:solution": lambda: GRAY[:6, :7].copy(),
-    "course.poisson_problem.PoissonProblem.residual:solution": lambda: GRAY[:6, :7].copy(),
-    "course.widgets.antialiasing.ZoomPanel:axes": lambda: _figure().add_subplot(),
-    "course.widgets.antialiasing.ZoomPanel:curve": lambda: CURVE.copy(),
-    "course.check.de_casteljau.curve_picture_of:function": lambda: _de_casteljau(),
-    "course.check.de_casteljau.curve_picture_of:reference": lambda: _de_casteljau(),
-    "course.check.de_casteljau.curve_picture_of:title": lambda: "curve",
+    "course.lessons.l01_de_casteljau.lesson.de_casteljau_picture:t": lambda: 0.3,
+    "course.lessons.l02_bernstein.lesson.bernstein_picture:degree": lambda: 3,
+    "course.lessons.l03_lines_and_triangles.lesson.triangle_picture:rule": lambda: "top-left",
+    "course.lessons.l05_antialiasing.lesson.step_app_picture:weighting": lambda: "count",
+    "course.poisson.problem.build_clone_problem:background": lambda: GRAY.copy(),
+    "course.poisson.problem.build_clone_problem:foreground": lambda: GRAY[:6, :7].copy(),
+    "course.poisson.problem.build_clone_problem:corner": lambda: (3, 2),
+    "course.poisson.problem.build_clone_problem:mask": lambda: None,
+    "course.poisson.problem.build_clone_problem:guidance": lambda: "plain",
+    "course.poisson.problem.image_of:planes": lambda: GRAY[None].copy(),
+    "course.poisson.problem.image_of:like": lambda: GRAY.copy(),
+    "course.poisson.problem.paste_window:window": lambda: GRAY[:6, :7].copy(),
+    "course.poisson.problem.window_at:corner": lambda: (3, 2),
+    "course.poisson.problem.window_at:shape": lambda: (6, 7),
+    "course.poisson.problem.window_in:image": lambda: GRAY[:6, :7].copy(),
+    "course.poisson.problem.window_in:corner": lambda: (3, 2),
+    "course.poisson.problem.PoissonProblem.paste:solution": lambda: GRAY[:6, :7].copy(),
+    "course.poisson.problem.PoissonProblem.residual:solution": lambda: GRAY[:6, :7].copy(),
+    "course.lessons.l05_antialiasing.apps.ZoomPanel:axes": lambda: _figure().add_subplot(),
+    "course.lessons.l05_antialiasing.apps.ZoomPanel:curve": lambda: CURVE.copy(),
+    "course.lessons.l01_de_casteljau.check.curve_picture_of:function": lambda: _de_casteljau(),
+    "course.lessons.l01_de_casteljau.check.curve_picture_of:reference": lambda: _de_casteljau(),
+    "course.lessons.l01_de_casteljau.check.curve_picture_of:title": lambda: "curve",
     "course.check.base.run_cases:exercise": lambda: "exercise",
     "course.check.base.run_cases:student": lambda: _de_casteljau(),
     "course.check.base.run_cases:reference": lambda: _de_casteljau(),
     "course.check.base.run_cases:cases": lambda: [{"points": CURVE.copy(), "t": 0.5}],
     "course.check.base.run_cases:compare": lambda: _close,
     "course.check.base.run_cases:hint": lambda: "look at t",
-    "course.widgets.supersampling.SupersampleApp.error_curves:image": lambda: "zone plate",
-    "course.widgets.supersampling.SupersampleApp.resample:image": lambda: "zone plate",
-    "course.widgets.supersampling.SupersampleApp.resample:version": lambda: "centred",
-    "course.widgets.supersampling.SupersampleApp.resample:rate": lambda: 2,
-    "course.widgets.antialiasing_figures.text_figure:text": lambda: "l",
-    "course.widgets.antialiasing_figures.text_figure:size": lambda: 12.0,
-    "course.widgets.antialiasing_figures.text_figure:zoom": lambda: 2,
-    "course.widgets.antialiasing_figures.brightness_figure:steps": lambda: (0.02, 0.01),
-    "course.paths.Curves:points": lambda: CURVE.copy(),
-    "course.paths.Curves:sizes": lambda: np.array([4]),
-    "course.paths.Curves.moved:offset": lambda: (1.0, 2.0),
-    "course.widgets.filtering.KernelApp.filtered:kernel": lambda: np.ones((3, 3)) / 9,
-    "course.widgets.filtering.KernelApp.filtered:border": lambda: "replicate",
+    "course.lessons.l04_supersampling.apps.SupersampleApp.error_curves:image": lambda: "zone plate",
+    "course.lessons.l04_supersampling.apps.SupersampleApp.resample:image": lambda: "zone plate",
+    "course.lessons.l04_supersampling.apps.SupersampleApp.resample:version": lambda: "centred",
+    "course.lessons.l04_supersampling.apps.SupersampleApp.resample:rate": lambda: 2,
+    "course.lessons.l05_antialiasing.figures.text_figure:text": lambda: "l",
+    "course.lessons.l05_antialiasing.figures.text_figure:size": lambda: 12.0,
+    "course.lessons.l05_antialiasing.figures.text_figure:zoom": lambda: 2,
+    "course.lessons.l05_antialiasing.figures.brightness_figure:steps": lambda: (0.02, 0.01),
+    "course.curves.paths.Curves:points": lambda: CURVE.copy(),
+    "course.curves.paths.Curves:sizes": lambda: np.array([4]),
+    "course.curves.paths.Curves.moved:offset": lambda: (1.0, 2.0),
+    "course.lessons.l07_filtering.apps.KernelApp.filtered:kernel": lambda: np.ones((3, 3)) / 9,
+    "course.lessons.l07_filtering.apps.KernelApp.filtered:border": lambda: "replicate",
     "course.classroom.gallery.ProgressBar.advance:label": lambda: "lesson",
-    "course.widgets.antialiasing.ZoomPanel.show:centre": lambda: (6.0, 5.0),
-    "course.widgets.antialiasing.ZoomPanel.show:size": lambda: 8,
-    "course.widgets.antialiasing.ZoomPanel.show:title": lambda: "zoom",
-    "course.widgets.antialiasing.ZoomPanel.show_window:window": lambda: GRAY[:4, :4].copy(),
-    "course.widgets.antialiasing.ZoomPanel.show_window:extent": lambda: (0, 4, 4, 0),
-    "course.widgets.antialiasing.ZoomPanel.show_window:title": lambda: "zoom",
-    "course.widgets.poisson.PoissonIterationApp.iterate:method": lambda: "jacobi",
-    "course.widgets.poisson.PoissonIterationApp.iterate:sweeps": lambda: 0,
+    "course.lessons.l05_antialiasing.apps.ZoomPanel.show:centre": lambda: (6.0, 5.0),
+    "course.lessons.l05_antialiasing.apps.ZoomPanel.show:size": lambda: 8,
+    "course.lessons.l05_antialiasing.apps.ZoomPanel.show:title": lambda: "zoom",
+    "course.lessons.l05_antialiasing.apps.ZoomPanel.show_window:window": lambda: GRAY[
+        :4, :4
+    ].copy(),
+    "course.lessons.l05_antialiasing.apps.ZoomPanel.show_window:extent": lambda: (0, 4, 4, 0),
+    "course.lessons.l05_antialiasing.apps.ZoomPanel.show_window:title": lambda: "zoom",
+    "course.lessons.l08_poisson.apps.PoissonIterationApp.iterate:method": lambda: "jacobi",
+    "course.lessons.l08_poisson.apps.PoissonIterationApp.iterate:sweeps": lambda: 0,
 }
 
 
 def _de_casteljau() -> Any:
-    from course.bezier import de_casteljau
+    from course.curves.bezier import de_casteljau
 
     return de_casteljau
 
@@ -450,13 +458,13 @@ def _close(expected: Any, given: Any) -> bool:
 
 
 def _resampler() -> Any:
-    from course import resample
+    from course.sampling import resample
 
     return resample.supersample
 
 
 def _handout_loop() -> Any:
-    from course import bezier_handouts
+    from course.curves import bezier_handouts
 
     loops = [
         v for v in vars(bezier_handouts).values() if isinstance(v, bezier_handouts.HandoutLoop)
@@ -471,12 +479,14 @@ PATHS = {"out", "folder", "readme"}
 
 # Non-finite results a callable documents.
 NON_FINITE = {
-    "course.check.de_casteljau.as_point": "converts a student's answer as given, NaN included",
+    "course.lessons.l01_de_casteljau.check.as_point": (
+        "converts a student's answer as given, NaN included"
+    ),
 }
 
 # Exceptions other than ValueError and TypeError that a callable documents, with the reason.
 RAISES: dict[str, tuple[tuple[type[BaseException], ...], str]] = {
-    "course.bezier.de_casteljau_recursive": (
+    "course.curves.bezier.de_casteljau_recursive": (
         (RecursionError,),
         "the handouts' recursion: it raises RecursionError up front, naming the degree and "
         "the limit, and lesson 01 shows that error",
@@ -484,7 +494,7 @@ RAISES: dict[str, tuple[tuple[type[BaseException], ...], str]] = {
 }
 
 # Inputs a callable modifies by design, as its name and docstring say.
-MODIFIES = {"course.canvas.paint": {"image"}}
+MODIFIES = {"course.raster.canvas.paint": {"image"}}
 
 README = (
     "# readme\n<!-- lesson table: generated by `python -m course map --readme README.md` -->\n"
@@ -493,7 +503,7 @@ README = (
 
 
 def _problem() -> Any:
-    from course.poisson_problem import clone_problem
+    from course.poisson.problem import clone_problem
 
     return clone_problem(GRAY.copy(), GRAY[:6, :7].copy(), (3, 2))
 
@@ -517,7 +527,7 @@ def _matplotlib_path() -> Any:
 
 
 def _curves() -> Any:
-    from course.paths import as_path
+    from course.curves.paths import as_path
 
     return as_path(CURVE)
 
@@ -950,12 +960,12 @@ def test_every_public_name_is_in_all():
 
 
 def test_discovery_finds_the_public_surface():
-    assert "course.bezier.flatten" in CALLABLES
-    assert "course.widgets.supersampling.SupersampleApp" in CALLABLES
+    assert "course.curves.bezier.flatten" in CALLABLES
+    assert "course.lessons.l04_supersampling.apps.SupersampleApp" in CALLABLES
     # Methods of public classes, and names public by spelling whatever __all__ says.
-    assert isinstance(CALLABLES["course.paths.Curves.moved"], Method)
-    assert isinstance(CALLABLES["course.poisson_problem.PoissonProblem.seam"], Method)
-    assert "course.poisson_problem.window_at" in CALLABLES
+    assert isinstance(CALLABLES["course.curves.paths.Curves.moved"], Method)
+    assert isinstance(CALLABLES["course.poisson.problem.PoissonProblem.seam"], Method)
+    assert "course.poisson.problem.window_at" in CALLABLES
     assert not any(name.split(".")[-1].startswith("_") for name in CALLABLES)
     assert set(LEFT_OUT) <= set(CALLABLES)
 
@@ -966,7 +976,8 @@ FAR = (1e18 + 0.5, 2.0**62, -(2.0**63), 1e200)
 @pytest.mark.parametrize("far", FAR)
 def test_no_far_away_sample_lands_on_the_canvas(far):
     """No wrap-around: a sample far off the canvas is rejected or dropped, never drawn."""
-    from course import antialias, raster, splats
+    from course import antialias, raster
+    from course.antialias import splats
 
     samples = np.array([[far, 2.5], [2.5, far], [3.5, 3.5]])
     calls = {

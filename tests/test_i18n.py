@@ -14,21 +14,21 @@ from babel.messages.pofile import read_po
 from matplotlib.figure import Figure
 
 import course
-import course.bezier_handouts
-import course.canvas
+import course.curves.bezier_handouts
+import course.curves.paths
 import course.filters
 import course.metrics
-import course.paths
-import course.poisson_problem
+import course.poisson.problem
 import course.raster
-import course.triangles
+import course.raster.canvas
+import course.raster.triangles
 from course import i18n
 from course.classroom.folders import check_output_folder
 from course.classroom.twins import placeholders
-from course.widgets import supersampling_figures
+from course.lessons.l04_supersampling import figures as supersampling_figures
+from course.lessons.l04_supersampling.apps import SupersampleApp
+from course.lessons.l07_filtering.apps import KernelApp
 from course.widgets.base import parse_points
-from course.widgets.filtering import KernelApp
-from course.widgets.supersampling import SupersampleApp
 
 ROOT = Path(__file__).resolve().parents[1]
 POT = ROOT / "course" / "locale" / "course.pot"
@@ -261,27 +261,27 @@ def _cjk(text: str) -> bool:
     ("call", "english", "chinese"),
     [
         (
-            lambda: course.poisson_problem.inpaint_problem(np.zeros((5, 5)), np.ones((4, 4))),
+            lambda: course.poisson.problem.inpaint_problem(np.zeros((5, 5)), np.ones((4, 4))),
             "mask must have shape (5, 5), the image's (H, W); got shape (4, 4)",
             "mask 的形状必须是 (5, 5)，即图像的 (H, W)；实际形状为 (4, 4)",
         ),
         (
-            lambda: course.paths.as_path([]),
+            lambda: course.curves.paths.as_path([]),
             "points must be a 2-D array of shape (N, d), one row per point; got shape (0,)",
             "points 必须是形状为 (N, d) 的二维数组，每行一个点；实际形状为 (0,)",
         ),
         (
-            lambda: course.canvas.blank((4, 2.5)),
+            lambda: course.raster.canvas.blank((4, 2.5)),
             "shape[1] (width) must be an integer; got float 2.5",
             "shape[1]（宽） 必须是整数；实际得到 float 2.5",
         ),
         (
-            lambda: course.bezier_handouts.loop_pixels([[0, 0], [1, 1]], "003"),
+            lambda: course.curves.bezier_handouts.loop_pixels([[0, 0], [1, 1]], "003"),
             "loop must be a HandoutLoop, e.g. HANDOUT_LOOPS['003'] or NAIVE_LOOP; got str '003'",
             "loop 必须是 HandoutLoop，例如 HANDOUT_LOOPS['003'] 或 NAIVE_LOOP；实际为 str '003'",
         ),
         (
-            lambda: course.triangles.triangle((0, 0), (2**40, 0), (0, 5)),
+            lambda: course.raster.triangles.triangle((0, 0), (2**40, 0), (0, 5)),
             "p1 coordinates must lie within +-1048576; got [1099511627776.0, 0.0]",
             "p1 的坐标必须在 +-1048576 以内；实际为 [1099511627776.0, 0.0]",
         ),
@@ -317,11 +317,11 @@ ENGLISH_RAISES = {
     # An app written without a handle it lists: for the course's developers.
     ("course/widgets/base.py", "drag"),
     # The browser tests' own landmarks, asked of the zone plate only.
-    ("course/lessons/l04_supersampling.py", "supersample_landmarks"),
+    ("course/lessons/l04_supersampling/lesson.py", "supersample_landmarks"),
     # Lesson 01 prints this function's source (English, byte for byte) and prints its message
     # through lesson.print_recursion_error, which reads the English numbers and says them in
     # the student's language.
-    ("course/bezier.py", "de_casteljau_recursive"),
+    ("course/curves/bezier.py", "de_casteljau_recursive"),
 }
 # Exceptions caught inside the course, whose message no one reads: browser_drawing's
 # NotDrawable only tells FigureView to draw with Agg instead.

@@ -13,8 +13,6 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from course.bezier import bernstein_basis, de_casteljau
-from course.canvas import crop
 from course.classroom.pictures import DIFFERING_SHARE, differing_share, gray_color
 from course.classroom.registry import lessons
 from course.classroom.sliders import (
@@ -23,8 +21,10 @@ from course.classroom.sliders import (
     slider_stops,
     value_after_keys,
 )
+from course.curves.bezier import bernstein_basis, de_casteljau
 from course.images import SEED_000_CUBIC
-from course.lessons.l05_antialiasing import seed_000_renderings
+from course.lessons.l05_antialiasing.lesson import seed_000_renderings
+from course.raster.canvas import crop
 
 
 def rgb(png: bytes) -> np.ndarray:

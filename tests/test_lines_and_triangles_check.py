@@ -1,4 +1,4 @@
-"""course.check.lines_and_triangles: right lines and fills pass, typical mistakes are named."""
+"""Lesson 03's checkers: right lines and fills pass, typical mistakes are named."""
 
 import math
 
@@ -7,7 +7,7 @@ import pytest
 
 import course
 from course.check import base
-from course.check import lines_and_triangles as check
+from course.lessons.l03_lines_and_triangles import check
 from course.raster import line, line_4connected, triangle
 
 

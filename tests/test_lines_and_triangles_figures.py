@@ -3,7 +3,7 @@
 import pytest
 from chinese import CHINESE, check_chinese_figure, drawn
 
-from course.widgets import lines_and_triangles_figures as figures
+from course.lessons.l03_lines_and_triangles import figures
 
 FIGURES = [
     (figures.line_figure, ()),

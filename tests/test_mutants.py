@@ -25,6 +25,7 @@ benchmarks/bench_mutants.py, the same with a table) runs them all.
 from __future__ import annotations
 
 import os
+import re
 
 import mutation
 import pytest
@@ -116,8 +117,8 @@ def test_every_exercise_of_the_lessons_is_found(exercises: list[mutation.Exercis
     assert len(exercises) == 17
     assert len({e.checker for e in exercises}) == 17
     for exercise in exercises:
-        module = exercise.setup.split("from course.check import ")[1].split()[0]
-        checker = getattr(importlib.import_module(f"course.check.{module}"), exercise.checker)
+        chapter = re.search(r"from (course\.lessons\.l\d\d_\w+) import check\b", exercise.setup)
+        checker = getattr(importlib.import_module(f"{chapter.group(1)}.check"), exercise.checker)
         assert callable(checker)
         assert exercise.call == f"check.{exercise.checker}({exercise.function})"
 

@@ -1,4 +1,4 @@
-"""course.paths: a path as a list of curves or a matplotlib Path, text as curves."""
+"""course.curves.paths: a path as a list of curves or a matplotlib Path, text as curves."""
 
 import numpy as np
 import pytest
@@ -8,9 +8,9 @@ from matplotlib.path import Path
 from matplotlib.textpath import TextPath
 
 from course.antialias import RENDER_METHODS, render
-from course.bezier import de_casteljau
-from course.near_pixels import segment_distance
-from course.paths import (
+from course.antialias.near_pixels import segment_distance
+from course.curves.bezier import de_casteljau
+from course.curves.paths import (
     as_path,
     canvas_for,
     curves_of_path,
@@ -165,7 +165,7 @@ def test_render_does_not_modify_a_path():
 
 @pytest.mark.parametrize("bad", [np.nan, np.inf, 1e200])
 def test_curves_refuse_points_that_are_not_finite_or_far_away(bad):
-    from course.paths import Curves
+    from course.curves.paths import Curves
 
     points = np.array([[0.0, 0.0], [bad, 1.0]])
     with pytest.raises(ValueError, match="points"):
@@ -173,7 +173,7 @@ def test_curves_refuse_points_that_are_not_finite_or_far_away(bad):
 
 
 def test_curves_refuse_sizes_that_disagree_with_their_points():
-    from course.paths import Curves, flatten_uniform
+    from course.curves.paths import Curves, flatten_uniform
 
     with pytest.raises(ValueError, match="sizes must add up to the 4 points"):
         flatten_uniform(Curves(np.zeros((4, 2)), np.array([3, 3])), 0.1)
@@ -208,14 +208,14 @@ def test_moved_refuses_to_move_points_past_the_coordinate_bound():
     ],
 )
 def test_flatten_each_checks_what_its_callback_returns(answer, error, message):
-    from course.paths import flatten_each
+    from course.curves.paths import flatten_each
 
     with pytest.raises(error, match=message):
         flatten_each(as_path([[0.0, 0.0], [3.0, 4.0], [5.0, 0.0]]), answer)
 
 
 def test_flatten_each_keeps_a_good_callback_s_vertices():
-    from course.paths import flatten_each
+    from course.curves.paths import flatten_each
 
     path = as_path([[[0.0, 0.0], [3.0, 4.0]], [[3.0, 4.0], [5.0, 0.0]]])
     line, gaps = flatten_each(path, lambda control: control)

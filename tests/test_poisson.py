@@ -11,7 +11,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from course import images, poisson
-from course import poisson_solvers as solvers
+from course.poisson import solvers
 
 LAPLACIAN = np.array([[0, 1, 0], [1, -4, 1], [0, 1, 0]], float)
 
@@ -170,7 +170,7 @@ def test_clipping_only_clips():
     raw = poisson.seamless_clone(background, foreground, (5, 5), clip=False)
     clipped = poisson.seamless_clone(background, foreground, (5, 5))
     assert raw.max() > 1
-    # Two solves: the load may give them different BLAS thread counts (course._threads),
+    # Two solves: the load may give them different BLAS thread counts (course.poisson._threads),
     # which may change the last bits, so compare to rounding (1e-12; see test__threads).
     np.testing.assert_allclose(clipped, np.clip(raw, 0, 1), rtol=0, atol=1e-12)
 
@@ -512,7 +512,7 @@ def test_the_history_ends_with_the_iterate_solve_returns():
     assert np.abs(history.solution - solved).max() < 1e-15
 
 
-# --- the window helpers of course.poisson_problem: public, so checked ---------------------
+# --- the window helpers of course.poisson.problem: public, so checked ---------------------
 
 
 @given(
@@ -522,7 +522,7 @@ def test_the_history_ends_with_the_iterate_solve_returns():
     width=st.integers(1, 8),
 )
 def test_window_at_clips_a_window_off_the_image_and_never_wraps(x, y, height, width):
-    from course.poisson_problem import window_at
+    from course.poisson.problem import window_at
 
     image = np.arange(48.0).reshape(6, 8)
     window = window_at(image, (x, y), (height, width))
@@ -535,7 +535,7 @@ def test_window_at_clips_a_window_off_the_image_and_never_wraps(x, y, height, wi
 
 
 def test_window_at_with_a_negative_corner_keeps_the_part_on_the_image():
-    from course.poisson_problem import window_at
+    from course.poisson.problem import window_at
 
     assert window_at(np.zeros((8, 8)), (-1, -1), (3, 3)).shape == (2, 2)
     assert window_at(np.ones((8, 8)), (-2, 1), (3, 4)).shape == (3, 2)
@@ -543,7 +543,7 @@ def test_window_at_with_a_negative_corner_keeps_the_part_on_the_image():
 
 @pytest.mark.parametrize("bad", [np.nan, np.inf])
 def test_the_window_helpers_reject_non_finite_pixels(bad):
-    from course.poisson_problem import (
+    from course.poisson.problem import (
         clone_problem,
         image_of,
         paste_window,
@@ -575,7 +575,7 @@ def test_the_window_helpers_reject_non_finite_pixels(bad):
 
 
 def test_the_window_helpers_name_what_is_wrong():
-    from course.poisson_problem import (
+    from course.poisson.problem import (
         build_clone_problem,
         clone_problem,
         image_of,
@@ -605,7 +605,7 @@ def test_the_window_helpers_name_what_is_wrong():
 
 
 def test_the_checked_helpers_give_what_the_solvers_use():
-    from course.poisson_problem import (
+    from course.poisson.problem import (
         build_clone_problem,
         clone_problem,
         image_of,

@@ -1,11 +1,11 @@
-"""course.check.poisson: the lab's boundary ring and its Jacobi sweep, right and wrong."""
+"""Lesson 08's checkers: the lab's boundary ring and its Jacobi sweep, right and wrong."""
 
 import itertools
 
 import numpy as np
 import pytest
 
-from course.check import poisson as check
+from course.lessons.l08_poisson import check
 from course.poisson import correction_boundary
 
 

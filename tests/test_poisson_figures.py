@@ -10,7 +10,7 @@ from drawn_figures import figures_drawn
 
 from course import images, poisson
 from course.i18n import language
-from course.widgets import poisson_figures as figures
+from course.lessons.l08_poisson import figures
 
 # How far two machines may differ on the lab's record, in intensity units (the image is in
 # [0, 1]). Jacobi's iterate carries the rounding of every sweep, damped by rho per sweep:

@@ -19,19 +19,19 @@ import numpy as np
 import pytest
 
 from course import filters
-from course.bezier import de_casteljau_recursive
+from course.curves.bezier import de_casteljau_recursive
 from course.i18n import current_language, language
-from course.lessons import l01_de_casteljau as l01
-from course.lessons import l02_bernstein as l02
-from course.lessons import l03_lines_and_triangles as l03
-from course.lessons import l04_supersampling as l04
-from course.lessons import l05_antialiasing as l05
-from course.lessons import l06_dithering as l06
-from course.lessons import l07_filtering as l07
-from course.lessons import l08_poisson as l08
+from course.lessons.l01_de_casteljau import lesson as l01
+from course.lessons.l02_bernstein import lesson as l02
+from course.lessons.l03_lines_and_triangles import lesson as l03
+from course.lessons.l04_supersampling import lesson as l04
+from course.lessons.l05_antialiasing import lesson as l05
+from course.lessons.l06_dithering import lesson as l06
+from course.lessons.l07_filtering import lesson as l07
+from course.lessons.l07_filtering.apps import RepeatedBlurApp
+from course.lessons.l08_poisson import lesson as l08
 from course.lessons.printed import display_width
 from course.raster import wu_line
-from course.widgets.filtering import RepeatedBlurApp
 
 CHINESE = re.compile("[\u4e00-\u9fff]")
 

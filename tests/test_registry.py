@@ -1,6 +1,6 @@
-"""course.classroom.registry: lesson modules discovered, matched to notebooks, none listed.
+"""course.classroom.registry: lesson chapters discovered, matched to notebooks, none listed.
 
-A new lesson is new files only: a module in ``course/lessons`` and a notebook.
+A new lesson is new files only: a chapter ``course/lessons/lNN_topic/`` and a notebook.
 The last test proves it with a throwaway lesson made in a temporary folder.
 """
 
@@ -26,7 +26,7 @@ def test_the_repository_notebooks_and_the_lesson_modules_agree():
     assert list(modules) == list(found), "every lesson notebook has its module, and only those"
     entries = lessons()
     for number, book in found.items():
-        assert modules[number] == f"course.lessons.l{number}_{book.topic}"
+        assert modules[number] == f"course.lessons.l{number}_{book.topic}.lesson"
         assert re.match(rf"Lesson {number} · ", book.title), book.title
         lesson = entries[number]
         assert lesson.handout and lesson.teaches and lesson.pictures, number
@@ -66,10 +66,12 @@ LESSON = Lesson(
 
 @pytest.fixture
 def throwaway_lesson(tmp_path, monkeypatch):
-    """A lesson module and its notebook, written to a temporary folder, nowhere else."""
+    """A lesson chapter and its notebook, written to a temporary folder, nowhere else."""
     modules = tmp_path / "modules"
-    modules.mkdir()
-    (modules / "l09_polygon_clipping.py").write_text(textwrap.dedent(THROWAWAY))
+    chapter = modules / "l09_polygon_clipping"
+    chapter.mkdir(parents=True)
+    (chapter / "__init__.py").write_text('"""Lesson 09 · Polygon clipping."""\n')
+    (chapter / "lesson.py").write_text(textwrap.dedent(THROWAWAY))
     books = tmp_path / "notebooks"
     books.mkdir()
     write_notebook(books / "01_de_casteljau.ipynb", "# Lesson 01 · de Casteljau's algorithm")
@@ -78,10 +80,11 @@ def throwaway_lesson(tmp_path, monkeypatch):
     monkeypatch.setattr(course.lessons, "__path__", [*course.lessons.__path__, str(modules)])
     yield books
     sys.modules.pop("course.lessons.l09_polygon_clipping", None)
+    sys.modules.pop("course.lessons.l09_polygon_clipping.lesson", None)
 
 
 def test_a_new_lesson_is_new_files_only(throwaway_lesson, tmp_path):
-    assert lesson_modules()["09"] == "course.lessons.l09_polygon_clipping"
+    assert lesson_modules()["09"] == "course.lessons.l09_polygon_clipping.lesson"
     assert lessons()["09"].teaches == "clipping a polygon against a window, edge by edge"
     table = course_map(throwaway_lesson).splitlines()
     assert table[-1] == (
@@ -95,18 +98,31 @@ def test_a_new_lesson_is_new_files_only(throwaway_lesson, tmp_path):
     assert Image.open(written[0]).format == "PNG"
 
 
-def test_a_lesson_module_without_its_entry_is_refused_by_name(tmp_path, monkeypatch):
-    (tmp_path / "l10_empty.py").write_text('"""No LESSON here."""\n')
+def test_a_chapter_without_its_entry_is_refused_by_name(tmp_path, monkeypatch):
+    (tmp_path / "l10_empty").mkdir()
+    (tmp_path / "l10_empty" / "__init__.py").write_text("")
+    (tmp_path / "l10_empty" / "lesson.py").write_text('"""No LESSON here."""\n')
     monkeypatch.setattr(course.lessons, "__path__", [*course.lessons.__path__, str(tmp_path)])
     try:
-        with pytest.raises(TypeError, match=r"course\.lessons\.l10_empty: expected .*LESSON"):
+        with pytest.raises(
+            TypeError, match=r"course\.lessons\.l10_empty\.lesson: expected .*LESSON"
+        ):
             lessons()
     finally:
         sys.modules.pop("course.lessons.l10_empty", None)
+        sys.modules.pop("course.lessons.l10_empty.lesson", None)
 
 
-def test_two_modules_for_one_lesson_are_refused(tmp_path, monkeypatch):
-    (tmp_path / "l01_again.py").write_text("")
+def test_a_lesson_module_that_is_not_a_chapter_is_refused_by_name(tmp_path, monkeypatch):
+    (tmp_path / "l11_flat.py").write_text("")
     monkeypatch.setattr(course.lessons, "__path__", [*course.lessons.__path__, str(tmp_path)])
-    with pytest.raises(ValueError, match="lesson 01: two modules claim it"):
+    with pytest.raises(TypeError, match="l11_flat: a lesson is a chapter, a folder l11_flat/"):
+        lesson_modules()
+
+
+def test_two_chapters_for_one_lesson_are_refused(tmp_path, monkeypatch):
+    (tmp_path / "l01_again").mkdir()
+    (tmp_path / "l01_again" / "__init__.py").write_text("")
+    monkeypatch.setattr(course.lessons, "__path__", [*course.lessons.__path__, str(tmp_path)])
+    with pytest.raises(ValueError, match="lesson 01: two chapters claim it"):
         lesson_modules()

@@ -1,4 +1,4 @@
-"""course.resample and the zone plate: bilinear sampling, supersampling, the report's shift."""
+"""course.sampling.resample and the zone plate: bilinear, supersampling, the report's shift."""
 
 import numpy as np
 import pytest
@@ -6,7 +6,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from course.images import zone_plate, zone_plate_box
-from course.resample import (
+from course.sampling.resample import (
     bilinear,
     measure_shift,
     supersample,
@@ -248,7 +248,7 @@ def test_each_half_of_the_reports_mistake_shifts_the_picture_by_its_own_half(rat
     ],
 )
 def test_measure_shift_checks_what_the_resampler_returns(resampler, error, message):
-    from course.resample import measure_shift
+    from course.sampling.resample import measure_shift
 
     with pytest.raises(error, match=message):
         measure_shift(resampler, 32, 8, 2)

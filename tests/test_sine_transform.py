@@ -1,9 +1,9 @@
-"""course.sine_transform: the type-I DST, both of its ways, against its definition."""
+"""course.poisson.sine_transform: the type-I DST, both of its ways, against its definition."""
 
 import numpy as np
 import pytest
 
-from course.sine_transform import (
+from course.poisson.sine_transform import (
     box_solve,
     fast_transform,
     laplacian_eigenvalues,

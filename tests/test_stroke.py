@@ -14,12 +14,12 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from matplotlib.path import Path
 
-from course import _fill as fill
-from course._fill import accumulate
-from course._overlaps import ROWS, row_coverage
+from course.antialias import _fill as fill
 from course.antialias import render, stroke_area, stroke_linear
-from course.coverage import reference
-from course.paths import text_curves
+from course.antialias._fill import accumulate
+from course.antialias._overlaps import ROWS, row_coverage
+from course.antialias.coverage import reference
+from course.curves.paths import text_curves
 
 K = 48
 # Stated tolerance against the reference: its 1 / K plus 1 / 32 where the

@@ -1,11 +1,11 @@
-"""course.check.supersampling: the lab's loop passes, the report's version is named."""
+"""course.lessons.l04_supersampling.check: the lab's loop passes, the report's version is named."""
 
 import math
 
 import numpy as np
 
-from course.check import supersampling as check
-from course.resample import (
+from course.lessons.l04_supersampling import check
+from course.sampling.resample import (
     bilinear,
     supersample,
     supersample_shifted,
@@ -131,7 +131,7 @@ def test_a_call_to_the_librarys_supersampling_or_lookup_is_told_to_write_it():
     ):
         result = check.image_supersampling(student)
         assert not result
-        assert result.message.startswith("your function calls course.resample.")
+        assert result.message.startswith("your function calls course.sampling.resample.")
         assert "the library's own answer: this exercise writes it" in result.message
 
 

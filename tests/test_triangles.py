@@ -1,4 +1,4 @@
-"""course.triangles: both forms against an exact pixel-centre test; watertight tilings."""
+"""course.raster.triangles: both forms against an exact pixel-centre test; watertight tilings."""
 
 from fractions import Fraction
 
@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 from scipy.spatial import Delaunay
 
 from course.raster import hit_counts, triangle, triangle_coverage
-from course.triangles import EDGE_RULES, TRIANGLE_METHODS, barycentric, interpolate
+from course.raster.triangles import EDGE_RULES, TRIANGLE_METHODS, barycentric, interpolate
 
 
 def reference_pixels(p0, p1, p2, rule):

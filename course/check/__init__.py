@@ -1,8 +1,8 @@
-"""Exercise checkers, one module per lesson: ``check.<exercise>(student_fn)``.
+"""The checkers' shared machinery: the base, the sandbox, answers, comparisons, pictures, hints.
 
-A lesson's notebook imports its own module, ``from course.check import
-de_casteljau as check``, so a new lesson adds its module and edits nothing
-here. Each checker returns a :class:`~course.check.base.CheckResult`, truthy
-when every case passes; otherwise its message names the first failing case,
-its inputs, the expected value and the value given.
+Each lesson's checkers live in its chapter (``course/lessons/lNN_topic/check.py``); a
+notebook imports them as ``from course.lessons.l01_de_casteljau import check``. Each
+checker returns a :class:`~course.check.base.CheckResult`, truthy when every case passes;
+otherwise its message names the first failing case, its inputs, the expected value and the
+value given.
 """

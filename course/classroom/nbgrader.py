@@ -88,7 +88,7 @@ SCHEMA_VERSION = 3
 #: The library's answer to each exercise that a later one builds on, as "module:name":
 #: what a later exercise is graded with, so that a mistake is charged once.
 # The grader's own answers, written here: the checkers refuse an answer that runs the
-# library's (course.bezier.de_casteljau, binomial, course.resample.bilinear), and an
+# library's (course.curves.bezier.de_casteljau, binomial, course.sampling.resample.bilinear), and an
 # exercise graded with an earlier one's answer runs it inside the student's code.
 REFERENCES = {
     "next_level": "course.classroom.nbgrader:_next_level",

@@ -24,8 +24,8 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from PIL import Image as PILImage
 
+from course.antialias.coverage import segment_distance
 from course.classroom.registry import Landmark, Picture
-from course.coverage import segment_distance
 from course.i18n import _
 from course.widgets.base import SliderApp
 from course.widgets.picture import Still
@@ -229,7 +229,7 @@ def landmark_in_box(
     """The picture pixel of ``point`` when ``axes`` shows exactly ``extent``, y down.
 
     For zoomed views: ``extent = (left, right, bottom, top)`` is the window
-    the library says the axes must show (``course.canvas.crop`` returns it),
+    the library says the axes must show (``course.raster.canvas.crop`` returns it),
     and the point is placed in the axes' box from that alone, not from the
     axes' own limits, so a view of the wrong window cannot pass.
     """

@@ -1,12 +1,12 @@
-"""What a notebook cannot say about itself: one registry entry per lesson module.
+"""What a notebook cannot say about itself: one registry entry per lesson chapter.
 
-A lesson is a notebook ``notebooks/NN_topic.ipynb`` and a module
-``course/lessons/lNN_topic.py`` that defines ``LESSON``, a :class:`Lesson`:
+A lesson is a notebook ``notebooks/NN_topic.ipynb`` and a chapter, the package
+``course/lessons/lNN_topic/``, whose module ``lesson.py`` defines ``LESSON``, a :class:`Lesson`:
 the handout task it answers, what it teaches in one line, its key pictures
 (for ``python -m course gallery`` and the course map) and the sliders and
 drags that the browser tests make like a student, with the pixels the
 picture must then show. The modules are discovered, not listed: adding a lesson is adding its
-files. For example, ``course/lessons/l03_lines_and_triangles.py`` holds::
+files. For example, ``course/lessons/l03_lines_and_triangles/lesson.py`` holds::
 
     LESSON = Lesson(
         handout="Lab 1 report (seed 001), Task 4 (line drawing) and Task 5 (triangles)",
@@ -47,6 +47,7 @@ from typing import Any
 from course.i18n import _
 
 __all__ = [
+    "ENTRY_MODULE",
     "LESSONS_PACKAGE",
     "LESSON_MODULE",
     "DragMove",
@@ -60,9 +61,11 @@ __all__ = [
 
 UNCHECKED = True  # see the module docstring
 
-#: The package the lesson modules are found in, and their names in it.
+#: The package the lesson chapters are found in, their names in it, and the module of
+#: each chapter that holds its ``LESSON``.
 LESSONS_PACKAGE = "course.lessons"
 LESSON_MODULE = re.compile(r"^l(\d\d)_(\w+)$")
+ENTRY_MODULE = "lesson"
 
 
 @dataclass(frozen=True)
@@ -160,7 +163,7 @@ def lesson_modules() -> dict[str, str]:
     Examples
     --------
     >>> lesson_modules()["01"]
-    'course.lessons.l01_de_casteljau'
+    'course.lessons.l01_de_casteljau.lesson'
     """
     package = importlib.import_module(LESSONS_PACKAGE)
     found: dict[str, str] = {}
@@ -168,10 +171,17 @@ def lesson_modules() -> dict[str, str]:
         match = LESSON_MODULE.match(module.name)
         if not match:
             continue
-        number, name = match.group(1), f"{LESSONS_PACKAGE}.{module.name}"
+        if not module.ispkg:
+            raise TypeError(
+                _("{name}: a lesson is a chapter, a folder {name}/ with its lesson.py").format(
+                    name=module.name
+                )
+            )
+        number = match.group(1)
+        name = f"{LESSONS_PACKAGE}.{module.name}.{ENTRY_MODULE}"
         if number in found:
             raise ValueError(
-                _("lesson {number}: two modules claim it, {found} and {name}").format(
+                _("lesson {number}: two chapters claim it, {found} and {name}").format(
                     number=number, found=found[number], name=name
                 )
             )

@@ -3,7 +3,7 @@
 A function with choices (``method="loop"`` and a fast default, listed in its
 ``<FUNCTION>_METHODS`` tuple) keeps each form in a private function of its
 module named ``_<function>_<method>``: ``course.raster.line(method="loop")``
-runs ``course.raster._line_loop``. :func:`source_of` finds that form by the
+runs ``course.raster.lines._line_loop``. :func:`source_of` finds that form by the
 convention, so a notebook reads the library without importing a private
 name, and adds the private helpers it calls, so the reader sees all of it.
 Standard library only.

@@ -1,7 +1,6 @@
-"""The slider apps the notebooks show, one module per lesson.
+"""The apps' shared machinery: the picture widget, the app base, the browser's drawing.
 
-Every app is a :class:`~course.widgets.base.SliderApp`: a figure rendered to
-an image widget beside its controls, redrawn by changing artists. A lesson's
-notebook imports from its own module (``from course.widgets.de_casteljau
-import DeCasteljauApp``), so a new lesson adds its module and edits nothing here.
+Every app is a :class:`~course.widgets.base.SliderApp`: a figure rendered to a picture
+widget beside its controls, redrawn by changing artists. A lesson's apps live in its
+chapter (``course/lessons/lNN_topic/apps.py``, its still pictures in ``figures.py``).
 """

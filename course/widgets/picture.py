@@ -996,7 +996,7 @@ def pixel_figure(
 
     ``windows`` holds (image, extent, title) per panel: an (h, w, 3) RGB or
     (h, w) gray crop in [0, 1] with its extent ``(left, right, bottom,
-    top)`` in image coordinates (:func:`course.canvas.crop`). Every axes is
+    top)`` in image coordinates (:func:`course.raster.canvas.crop`). Every axes is
     placed in whole picture pixels and exactly ``zoom`` times its crop, so
     nearest sampling draws each pixel as a flat square with nothing
     resampled. ``legend`` adds (colour, label) patches above the panels;

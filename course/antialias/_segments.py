@@ -1,0 +1,74 @@
+"""The drawn segments of a flattened path: directions, neighbours, subpaths, dots.
+
+A path flattened is one polyline and a boolean per segment, True for the
+*gaps* (the pen moving between subpaths, :mod:`course.curves.paths`). The stroke's
+outline (:mod:`course.antialias.stroke`) and the search for overlaps
+(:mod:`course.antialias._overlaps`) both work on the drawn segments, with each one's
+neighbours along the path.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["SHORT", "Segments", "segments"]
+
+#: Segments shorter than this are points; their neighbours meet directly.
+SHORT = 1e-9
+
+
+@dataclass(frozen=True)
+class Segments:
+    """The drawn segments of a polyline, their neighbours and directions."""
+
+    start: np.ndarray
+    end: np.ndarray
+    length: np.ndarray
+    unit: np.ndarray
+    normal: np.ndarray  # the unit turned by +90 degrees: side 0 is +normal, side 1 -normal
+    next: np.ndarray  # the segment joined at the end, -1 for an open end
+    prev: np.ndarray
+    subpath: np.ndarray
+    dots: np.ndarray  # isolated points: subpaths of zero length
+
+
+def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
+    """The drawn segments of a polyline with gaps, without segments shorter than ``SHORT``.
+
+    A segment shorter than ``SHORT`` is dropped and its neighbours meet
+    directly; a subpath that ends where it starts is closed; vertices that
+    no drawn segment touches are isolated points (``dots``).
+    """
+    line, gaps = polyline, gaps
+    for _ in range(3):  # removing a point can, rarely, leave another short segment
+        length = np.hypot(*np.diff(line, axis=0).T)
+        short = ~gaps & (length <= SHORT)
+        if not short.any():
+            break
+        keep = np.concatenate([[True], ~short])
+        kept = np.flatnonzero(keep)
+        gaps = gaps[kept[1:] - 1]
+        line = line[keep]
+    drawn = np.flatnonzero(~gaps)
+    start, end = line[drawn], line[drawn + 1]
+    length = np.hypot(*(end - start).T)
+    unit = (end - start) / length[:, None]
+    normal = np.stack([-unit[:, 1], unit[:, 0]], axis=1)
+    count = len(drawn)
+    joined = np.diff(drawn) == 1
+    following = np.full(count, -1)
+    following[:-1][joined] = np.arange(1, count)[joined]
+    previous = np.full(count, -1)
+    previous[1:][joined] = np.arange(count - 1)[joined]
+    subpath = np.cumsum(previous < 0) - 1
+    # A subpath that ends where it starts is closed: its two ends are joined.
+    first, last = np.flatnonzero(previous < 0), np.flatnonzero(following < 0)
+    closed = (last > first) & (np.hypot(*(start[first] - end[last]).T) <= SHORT)
+    following[last[closed]], previous[first[closed]] = first[closed], last[closed]
+    vertex = np.arange(len(line))
+    touched = np.zeros(len(line), dtype=bool)
+    touched[drawn] = touched[drawn + 1] = True
+    dots = line[vertex[~touched]]
+    return Segments(start, end, length, unit, normal, following, previous, subpath, dots)

@@ -1,0 +1,329 @@
+"""The exact stroke of a polyline: its outline, filled by signed area.
+
+The stroke of width w = 2 h around a polyline is the union of the *stadiums*
+of its segments (the points within h of a segment: a rectangle and two half
+discs), so its joins and caps are round. Its coverage of a pixel is the area
+of the pixel inside that union. This module computes it in three steps:
+
+1. **The outline.** On each side of every segment runs an offset edge at
+   distance h. Where two segments meet, the side the path turns away from
+   (the outer side) gets a circular arc around the vertex (chords every
+   ``ARC_STEP``; joins turning less than ``MITER_TURN`` are mitred, within
+   ``h^2 MITER_TURN^3 / 24`` of the arc's area); on the side it turns
+   towards (the inner side) the two offset edges are cut where they cross.
+   When that cut would use up a whole short segment (a sharp corner next to
+   a finely flattened curve), the offset edges that it consumes are dropped
+   and the neighbours' edges are cut where *they* cross, the boundary of
+   the union. Open ends get half circles, isolated points whole circles.
+2. **Signed area.** The outline is filled by :func:`course.antialias._fill.accumulate`:
+   each pixel gets its exact area inside (up to the chords of the arcs).
+3. **Where the outline is not the boundary.** Parts of the path that come
+   within w of each other without being neighbours along it (a loop, two
+   subpaths, a hairpin), and corners the cutting of step 1 cannot settle (a
+   cusp, whose offset edges never cross), are found and the pixels near them
+   are integrated directly (:mod:`course.antialias._overlaps`).
+
+Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
+caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
+Its public callers (:mod:`course.antialias`, :mod:`course.antialias.coverage`) validate
+once, at their boundary.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from course.antialias._fill import accumulate
+from course.antialias._overlaps import crowded_dots, distance_to, integrate, overlapping
+from course.antialias._segments import Segments
+from course.antialias._segments import segments as as_segments
+
+__all__ = ["ARC_STEP", "MITER_TURN", "stroke_coverage"]
+
+UNCHECKED = True  # kernels for checked callers; see the module docstring
+
+#: Largest angle one chord of a round join or cap spans: the chord is at most
+#: ``h (1 - cos(ARC_STEP / 2))`` inside the circle (0.00015 px for w = 1).
+ARC_STEP = np.pi / 64
+#: Outer joins turning less than this (radians) are mitred instead of rounded,
+#: within ``h^2 MITER_TURN^3 / 24`` of the arc's area (1e-5 px^2 for w = 1).
+MITER_TURN = 0.15
+# Offset edges cut by at most this many rounds of consumption; beyond, integrate.
+_CUT_ROUNDS = 4
+
+
+def stroke_coverage(
+    polyline: np.ndarray, gaps: np.ndarray, half: float, shape: tuple[int, int]
+) -> np.ndarray:
+    """Coverage of each pixel of the canvas by the points within ``half`` of the path.
+
+    The unchecked core of :func:`course.antialias.stroke_area`.
+
+    Parameters
+    ----------
+    polyline : ndarray (K, 2), K >= 2
+        In canvas coordinates (x right, y down).
+    gaps : bool ndarray (K - 1,)
+        The segments that are not drawn (the pen moving between subpaths).
+    half : float
+        Half the stroke's width, > 0.
+    shape : (H, W)
+
+    Returns
+    -------
+    ndarray (H, W), a new array of coverage in [0, 1].
+
+    Examples
+    --------
+    A sharp turn back: pixel (7, 1), just past the corner, stays empty (a
+    mitred join would fill it); the round join puts half a disc of radius
+    1/2 in pixel (6, 1), pi / 8 = 0.3927 (0.395: the pixels around so sharp
+    a turn are integrated row by row, to within 1/32).
+
+    >>> line = np.array([[1.0, 1.5], [6.0, 1.5], [1.0, 2.5]])
+    >>> stroke_coverage(line, np.zeros(2, dtype=bool), 0.5, (4, 8))[1, 5:].round(3)
+    array([1.   , 0.395, 0.   ])
+    """
+    segments = as_segments(polyline, gaps)
+    starts, ends, doubtful = _outline(segments, half)
+    image = accumulate(starts, ends, shape, clip=True)
+    doubtful |= overlapping(segments, half)
+    dots = crowded_dots(segments, half)
+    if doubtful.any() or dots.any():
+        integrate(image, segments, doubtful, dots, half)  # values in [0, 1] already
+    return image
+
+
+# --- the outline ---------------------------------------------------------------
+
+
+def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The outline's edges (start and end points) and the segments it cannot settle."""
+    s = segments
+    count = len(s.length)
+    first = np.flatnonzero(s.next >= 0)  # joins: segment `first` into segment `second`
+    second = s.next[first]
+    cross = s.unit[first, 0] * s.unit[second, 1] - s.unit[first, 1] * s.unit[second, 0]
+    dot = np.einsum("ij,ij->i", s.unit[first], s.unit[second])
+    turn = np.arctan2(cross, dot)
+    inner = np.where(cross > 0, 0, 1)  # the side the path turns towards
+    outer = 1 - inner
+    cusp = 1.0 + dot <= 1e-12
+    trim = half * np.abs(cross) / np.where(cusp, 1.0, 1.0 + dot)
+    # Where each side's offset edge begins and ends, as distances along the segment.
+    begin = np.zeros((count, 2))
+    finish = np.repeat(s.length[:, None], 2, axis=1)
+    begin[second, inner] = trim
+    finish[first, inner] -= trim
+    gentle = np.abs(turn) <= MITER_TURN
+    begin[second[gentle], outer[gentle]] = -trim[gentle]
+    finish[first[gentle], outer[gentle]] += trim[gentle]
+    join_of_end = np.full(count, -1)
+    join_of_end[first] = np.arange(len(first))
+    through = cusp.copy()  # joins whose inner side runs through the vertex
+    joins = _Joins(first, second, inner, turn, join_of_end, through)
+    _through(s, joins, np.flatnonzero(cusp), begin, finish)
+    consumed, doubtful = _cut(s, half, begin, finish, joins)
+    doubtful[first[through]] = doubtful[second[through]] = True
+    sign = np.array([1.0, -1.0])
+    offset = half * s.normal[:, None, :] * sign[None, :, None]
+    a = s.start[:, None, :] + offset + begin[..., None] * s.unit[:, None, :]
+    b = s.start[:, None, :] + offset + finish[..., None] * s.unit[:, None, :]
+    starts = [a[~consumed[:, 0], 0], b[~consumed[:, 1], 1]]  # side 1 runs backwards
+    ends = [b[~consumed[:, 0], 0], a[~consumed[:, 1], 1]]
+    rounded = ~gentle & ~cusp
+    for side in (0, 1):
+        link_starts, link_ends = _links(
+            s, joins, side, a, b, consumed[:, side], rounded, half, doubtful
+        )
+        starts += link_starts
+        ends += link_ends
+    open_end = np.flatnonzero(s.next < 0)
+    open_start = np.flatnonzero(s.prev < 0)
+    arcs = [
+        (s.end[open_end], s.normal[open_end], np.full(len(open_end), -np.pi)),
+        (s.start[open_start], -s.normal[open_start], np.full(len(open_start), -np.pi)),
+        (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi)),
+    ]
+    for arc_centre, arc_normal, arc_sweep in arcs:
+        chord_starts, chord_ends = _arc(arc_centre, arc_normal, arc_sweep, half)
+        starts.append(chord_starts)
+        ends.append(chord_ends)
+    return np.concatenate(starts), np.concatenate(ends), doubtful
+
+
+def _links(
+    s: Segments,
+    joins: _Joins,
+    side: int,
+    a: np.ndarray,
+    b: np.ndarray,
+    consumed: np.ndarray,
+    rounded: np.ndarray,
+    half: float,
+    doubtful: np.ndarray,
+) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """What joins each offset edge on ``side`` to the next one that is drawn.
+
+    Usually nothing (a mitre or a cut: the edges meet), an arc around the
+    vertex (the outer side of a round join) or two edges through the vertex.
+    Anything else is a join the cutting left inconsistent: a straight
+    connector keeps the outline closed and its segments are marked doubtful.
+    """
+    drawn = np.flatnonzero(~consumed)
+    following = _walk(s.next, consumed, drawn)
+    linked = following >= 0
+    p, q = drawn[linked], following[linked]
+    there, here = b[p, side], a[q, side]  # p's edge ends, q's begins
+    join = joins.join_of_end[p]
+    single = s.next[p] == q
+    arc = single & rounded[join] & (joins.inner[join] != side)
+    via = single & joins.through[join] & (joins.inner[join] == side)
+    scale = 1e-9 * np.maximum(1.0, np.abs(there).max(axis=1))
+    apart = ~arc & ~via & (np.hypot(*(there - here).T) > scale)
+    doubtful[p[apart]] = doubtful[q[apart]] = True
+    vertex = s.end[p]
+    first = [there[via], vertex[via], there[apart]]
+    second = [vertex[via], here[via], here[apart]]
+    # The outer side of a round join: an arc from the end of p's edge to q's.
+    normal = s.normal[p[arc]] if side == 0 else -s.normal[q[arc]]
+    sweep = joins.turn[join[arc]] * (1.0 if side == 0 else -1.0)
+    centre = vertex[arc]
+    if side == 1:  # side 1 runs backwards: from q's edge to p's
+        first, second = second, first
+    chord_starts, chord_ends = _arc(centre, normal, sweep, half)
+    return [*first, chord_starts], [*second, chord_ends]
+
+
+def _cut(
+    s: Segments, half: float, begin: np.ndarray, finish: np.ndarray, joins: _Joins
+) -> tuple[np.ndarray, np.ndarray]:
+    """Drop the inner offset edges a sharp turn consumes; cut their neighbours instead.
+
+    ``begin`` and ``finish`` are updated in place. Returns which offset edges
+    are consumed (segments x sides) and which segments the cutting could not
+    settle (their joins then run through the vertex and ``through`` is set).
+    """
+    count = len(s.length)
+    consumed = np.zeros((count, 2), dtype=bool)
+    unsettled = np.zeros(count, dtype=bool)
+    inner, turn, join_of_end = joins.inner, joins.turn, joins.join_of_end
+    join_of_start = np.full(count, -1)
+    join_of_start[joins.second] = np.arange(len(joins.second))
+    for _ in range(_CUT_ROUNDS):
+        short = (begin > finish + 1e-12) & ~consumed
+        if not short.any():
+            return consumed, unsettled
+        consumed |= short
+        for side in (0, 1):
+            run = np.flatnonzero(consumed[:, side])
+            if len(run) == 0:
+                continue
+            before = _walk(s.prev, consumed[:, side], run)
+            after = _walk(s.next, consumed[:, side], run)
+            # Each run of consumed edges between `before` and `after`, once.
+            ends_run = (before >= 0) & (after >= 0)
+            key = np.where(ends_run, before, -1 - run)
+            keys, which = np.unique(key, return_inverse=True)
+            p = np.full(len(keys), -1)
+            q = np.full(len(keys), -1)
+            p[which], q[which] = before, after
+            # The path must turn towards `side` at every join of the run, by
+            # less than half a turn in all, and the offset lines must cross.
+            start_join, end_join = join_of_start[run], join_of_end[run]
+            convex = (
+                (start_join >= 0)
+                & (end_join >= 0)
+                & (inner[np.maximum(start_join, 0)] == side)
+                & (inner[np.maximum(end_join, 0)] == side)
+            )
+            total = np.bincount(which, np.abs(turn[np.maximum(start_join, 0)]), len(keys))
+            total += np.abs(turn[np.maximum(join_of_start[np.maximum(q, 0)], 0)])
+            ok = (keys >= 0) & (np.bincount(which, ~convex, len(keys)) == 0)
+            ok &= total < np.pi - 1e-6
+            sign = 1.0 - 2.0 * side
+            up, uq = s.unit[np.maximum(p, 0)], s.unit[np.maximum(q, 0)]
+            op = s.start[np.maximum(p, 0)] + sign * half * s.normal[np.maximum(p, 0)]
+            oq = s.start[np.maximum(q, 0)] + sign * half * s.normal[np.maximum(q, 0)]
+            denominator = up[:, 0] * uq[:, 1] - up[:, 1] * uq[:, 0]
+            ok &= np.abs(denominator) > 1e-12
+            safe = np.where(ok, denominator, 1.0)
+            gap = oq - op
+            along_p = (gap[:, 0] * uq[:, 1] - gap[:, 1] * uq[:, 0]) / safe
+            along_q = (gap[:, 0] * up[:, 1] - gap[:, 1] * up[:, 0]) / safe
+            crossing = op + along_p[:, None] * up
+            # The crossing must lie outside every consumed segment's stadium.
+            clear = distance_to(crossing[which], s.start[run], s.end[run]) >= half * (1 - 1e-9)
+            ok &= np.bincount(which, ~clear, len(keys)) == 0
+            good = np.flatnonzero(ok)
+            finish[p[good], side] = along_p[good]
+            begin[q[good], side] = along_q[good]
+            bad_runs = ~ok[which]
+            if bad_runs.any():
+                members = run[bad_runs]
+                ends_of = np.concatenate([join_of_start[members], join_of_end[members]])
+                ends_of = ends_of[ends_of >= 0]
+                _through(s, joins, ends_of[inner[ends_of] == side], begin, finish)
+                unsettled[members] = True
+                unsettled[np.maximum(p[~ok], 0)[p[~ok] >= 0]] = True
+                unsettled[np.maximum(q[~ok], 0)[q[~ok] >= 0]] = True
+                consumed[run[bad_runs], side] = False
+    # Still inconsistent after the rounds: settle by sampling.
+    left = np.flatnonzero(((begin > finish + 1e-12) & ~consumed).any(axis=1))
+    ends_of = np.concatenate([join_of_start[left], join_of_end[left]])
+    _through(s, joins, ends_of[ends_of >= 0], begin, finish)
+    unsettled[left] = True
+    return consumed, unsettled
+
+
+@dataclass(frozen=True)
+class _Joins:
+    """Where segment ``first[j]`` meets ``second[j]``: the turn and its inner side."""
+
+    first: np.ndarray
+    second: np.ndarray
+    inner: np.ndarray
+    turn: np.ndarray
+    join_of_end: np.ndarray
+    through: np.ndarray  # the inner side runs through the vertex (set as found)
+
+
+def _through(
+    s: Segments, joins: _Joins, which: np.ndarray, begin: np.ndarray, finish: np.ndarray
+) -> None:
+    """Joins ``which`` draw their inner side through the vertex: both rectangles whole.
+
+    The two rectangles then overlap near the vertex, which the sampling settles.
+    """
+    joins.through[which] = True
+    side = joins.inner[which]
+    before, after = joins.first[which], joins.second[which]
+    finish[before, side] = s.length[before]
+    begin[after, side] = 0.0
+
+
+def _walk(step: np.ndarray, consumed: np.ndarray, index: np.ndarray) -> np.ndarray:
+    """From each index, follow ``step`` to the first segment not consumed (-1: none)."""
+    at = step[index]
+    for _ in range(len(consumed)):
+        going = (at >= 0) & consumed[np.maximum(at, 0)] & (at != index)
+        if not going.any():
+            break
+        at = np.where(going, step[np.maximum(at, 0)], at)
+    return np.where(at == index, -1, at)
+
+
+def _arc(
+    centre: np.ndarray, normal: np.ndarray, sweep: np.ndarray, half: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Chords of the arcs from ``centre + half * normal`` turning by ``sweep`` radians."""
+    count = np.maximum(np.ceil(np.abs(sweep) / ARC_STEP), 1).astype(np.int64)
+    arc = np.repeat(np.arange(len(count)), count)
+    step = np.arange(len(arc)) - np.repeat(np.cumsum(count) - count, count)
+    angles = np.stack([step, step + 1]) * (sweep / count)[arc]
+    cos, sin = np.cos(angles), np.sin(angles)
+    nx, ny = normal[arc, 0], normal[arc, 1]
+    points = centre[arc] + half * np.stack([cos * nx - sin * ny, sin * nx + cos * ny], axis=-1)
+    return points[0], points[1]

@@ -1,0 +1,534 @@
+"""Bézier curves: de Casteljau's algorithm and the Bernstein form.
+
+A Bézier curve of degree n has n + 1 control points ``P[0] ... P[n]``, given as
+a float array of shape ``(N, d)`` (one row per point, N = n + 1, any dimension
+d >= 1). The parameter t follows the textbook: one de Casteljau step maps a
+level to the next by ``(1 - t) * P[i] + t * P[i + 1]``, so ``B(0) = P[0]`` and
+``B(1) = P[n]``. Parameters outside [0, 1] extrapolate the same polynomial.
+
+Every public function validates its input once and never modifies it.
+
+References
+----------
+.. [1] P. de Casteljau, "Courbes et surfaces à pôles", André Citroën, 1963.
+.. [2] G. Farin, *Curves and Surfaces for CAGD*, 5th ed., Morgan Kaufmann, 2002,
+   chapters 3-5 (de Casteljau, Bernstein form, subdivision, degree elevation).
+.. [3] R. T. Farouki and V. T. Rajan, "On the numerical condition of polynomials
+   in Bernstein form", CAGD 4(3), 1987.
+"""
+
+from __future__ import annotations
+
+import itertools
+import sys
+from functools import lru_cache
+from typing import Any
+
+import numpy as np
+
+from course import limits
+from course._validate import (
+    as_choice,
+    as_int,
+    as_parameter,
+    as_points,
+    as_positive_float,
+    as_scalar_parameter,
+    require_bounded_flattening,
+    require_step_samples,
+)
+from course.curves._bezier_fast import bernstein_horner, de_casteljau_chunked
+from course.curves._flatten import flatten_curve
+from course.i18n import _
+
+__all__ = [
+    "BEZIER_BERNSTEIN_METHODS",
+    "MAX_BERNSTEIN_DEGREE",
+    "bernstein_basis",
+    "bezier_bernstein",
+    "binomial",
+    "clear_pascal_cache",
+    "de_casteljau",
+    "de_casteljau_levels",
+    "de_casteljau_recursive",
+    "derivative",
+    "elevate",
+    "flatten",
+    "pascal_row",
+    "sample_uniform",
+    "split",
+    "uniform_parameters",
+]
+
+# Beyond this degree some binomial(n, k) exceeds the largest float64.
+MAX_BERNSTEIN_DEGREE = 1029
+
+
+# --- de Casteljau ------------------------------------------------------------
+
+
+def de_casteljau(points: Any, t: Any) -> np.ndarray:
+    """Evaluate the Bézier curve at t by repeated linear interpolation.
+
+    The iterative form: each level replaces N points by the N - 1 points
+    ``(1 - t) * P[i] + t * P[i + 1]`` until one is left. It is vectorized over
+    an array of parameters.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+        Control points, one row per point. One point is a degree-0 curve.
+    t : float or array_like, shape (M,)
+        Parameters. Values outside [0, 1] extrapolate.
+
+    Returns
+    -------
+    ndarray
+        Shape (d,) for scalar t, (M, d) for an array of t.
+
+    Examples
+    --------
+    >>> de_casteljau([[0, 0], [1, 2], [2, 0]], 0.5)
+    array([1., 1.])
+    >>> de_casteljau([[0, 0], [1, 2], [2, 0]], [0, 1])
+    array([[0., 0.],
+           [2., 0.]])
+    """
+    control = as_points(points)
+    values, is_scalar = as_parameter(t)
+    curve = _de_casteljau(control, values)
+    return curve[0] if is_scalar else curve
+
+
+def _de_casteljau(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """(M, d) curve points; ``control`` (N, d), ``t`` (M,), both validated."""
+    # The same step as de_casteljau_levels, on chunks of t that stay in cache.
+    return de_casteljau_chunked(control, t)
+
+
+def de_casteljau_recursive(points: Any, t: Any) -> np.ndarray:
+    """The handouts' ``recursive_bezier``: de Casteljau by recursion, scalar t.
+
+    Each call computes one level and recurses on it, so a curve with N control
+    points needs N nested calls. Python limits nesting
+    (``sys.getrecursionlimit()``, 1000 by default): when a curve would come
+    near that limit this raises ``RecursionError`` up front, naming the degree
+    and the limit, instead of failing deep inside the recursion.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+        Control points.
+    t : float
+        One parameter value.
+
+    Returns
+    -------
+    ndarray, shape (d,)
+        The same value as ``de_casteljau(points, t)``.
+
+    Examples
+    --------
+    >>> de_casteljau_recursive([[0, 0], [1, 2], [2, 0]], 0.25)
+    array([0.5  , 0.75])
+    """
+    control = as_points(points)
+    value = as_scalar_parameter(t)
+    depth = _stack_depth()
+    limit = sys.getrecursionlimit()
+    # Headroom for numpy and the interpreter's own frames.
+    needed = len(control) + 50
+    if depth + needed > limit:
+        raise RecursionError(
+            f"de_casteljau_recursive: a degree-{len(control) - 1} curve needs "
+            f"{len(control)} nested calls, and the stack is already {depth} deep; "
+            f"Python's recursion limit is {limit}. Use de_casteljau (iterative), "
+            f"or raise the limit with sys.setrecursionlimit({depth + needed + 100})."
+        )
+    return _recursive_step(control, value)
+
+
+def _recursive_step(level: np.ndarray, t: float) -> np.ndarray:
+    if len(level) == 1:
+        return level[0].copy()
+    return _recursive_step(level[:-1] * (1 - t) + level[1:] * t, t)
+
+
+def _stack_depth() -> int:
+    frame, depth = sys._getframe(), 0
+    while frame is not None:
+        frame, depth = frame.f_back, depth + 1
+    return depth
+
+
+def de_casteljau_levels(points: Any, t: Any) -> list[np.ndarray]:
+    """Every intermediate level of de Casteljau's algorithm at one t.
+
+    Returns
+    -------
+    list of ndarray
+        ``[level0 (N, d), level1 (N - 1, d), ..., level(N-1) (1, d)]``:
+        level 0 is the control polygon, the last level is the point B(t).
+        There are N (N + 1) / 2 points in all: the O(n^2) work of one
+        evaluation.
+
+    Examples
+    --------
+    >>> for level in de_casteljau_levels([[0, 0], [2, 2], [4, 0]], 0.5):
+    ...     print(level.tolist())
+    [[0.0, 0.0], [2.0, 2.0], [4.0, 0.0]]
+    [[1.0, 1.0], [3.0, 1.0]]
+    [[2.0, 1.0]]
+    """
+    level = as_points(points)
+    value = as_scalar_parameter(t)
+    levels = [level]
+    while len(level) > 1:
+        level = level[:-1] * (1 - value) + level[1:] * value
+        levels.append(level)
+    return levels
+
+
+# --- the Bernstein form ------------------------------------------------------
+
+
+def pascal_row(n: int) -> tuple[int, ...]:
+    """Row n of Pascal's triangle, exact: ``(C(n, 0), ..., C(n, n))``.
+
+    Each row is built from the one above it, ``n (n + 1) / 2`` additions,
+    and the last 64 rows asked for are kept (:func:`clear_pascal_cache`
+    forgets them, to time the cold cost).
+
+    Examples
+    --------
+    >>> pascal_row(4)
+    (1, 4, 6, 4, 1)
+    """
+    return _pascal_row(as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE))
+
+
+def clear_pascal_cache() -> None:
+    """Forget the rows :func:`pascal_row` keeps, so the next call builds its row anew."""
+    _pascal_row.cache_clear()
+
+
+@lru_cache(maxsize=64)
+def _pascal_row(n: int) -> tuple[int, ...]:
+    row: tuple[int, ...] = (1,)
+    for _row in range(n):
+        row = (1, *(a + b for a, b in itertools.pairwise(row)), 1)
+    return row
+
+
+def binomial(n: int, k: int) -> int:
+    """The binomial coefficient C(n, k), exactly, from Pascal's triangle.
+
+    ``C(n, k) = C(n - 1, k - 1) + C(n - 1, k)``, computed row by row (not by
+    the handouts' double recursion, which takes exponential time) and cached.
+    Zero when k < 0 or k > n.
+
+    Examples
+    --------
+    >>> [binomial(4, k) for k in range(5)]
+    [1, 4, 6, 4, 1]
+    >>> binomial(100, 50)
+    100891344545564193334812497256
+    """
+    n = as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE)
+    k = as_int(k, "k")
+    if k < 0 or k > n:
+        return 0
+    return _pascal_row(n)[k]
+
+
+def bernstein_basis(n: int, t: Any) -> np.ndarray:
+    """The Bernstein basis polynomials of degree n at t.
+
+    ``B[m, i] = C(n, i) * t[m]**i * (1 - t[m])**(n - i)``.
+
+    Parameters
+    ----------
+    n : int
+        Degree, 0 <= n <= 1029 (beyond that some C(n, i) overflows float64).
+    t : float or array_like, shape (M,)
+
+    Returns
+    -------
+    ndarray, shape (M, n + 1)
+        One row per parameter (M = 1 for a scalar t). Each row sums to 1.
+
+    Examples
+    --------
+    >>> bernstein_basis(2, [0.0, 0.5])
+    array([[1.  , 0.  , 0.  ],
+           [0.25, 0.5 , 0.25]])
+    """
+    n = as_int(n, "n", minimum=0)
+    if n > MAX_BERNSTEIN_DEGREE:
+        raise ValueError(
+            _(
+                "n must be <= {most} for the float Bernstein form (C(n, n/2) "
+                "overflows float64 beyond it); got {n}. Use de_casteljau."
+            ).format(most=MAX_BERNSTEIN_DEGREE, n=n)
+        )
+    values, _scalar = as_parameter(t)
+    return _bernstein_basis(n, values)
+
+
+def _bernstein_basis(n: int, t: np.ndarray) -> np.ndarray:
+    t = t[:, None]
+    exponents = np.arange(n + 1)
+    coefficients = np.array([float(c) for c in _pascal_row(n)])
+    # binomial * t^i stays below C(n, n/2) <= 2^n, so no overflow before the
+    # (1 - t) power scales it down.
+    return (coefficients * t**exponents) * (1.0 - t) ** exponents[::-1]
+
+
+BEZIER_BERNSTEIN_METHODS = ("horner", "loop")
+# Up to this degree Horner's rule in t / (1 - t) cannot overflow for any
+# sensible coordinates (C(128, 64) < 2^127); beyond it the basis matrix does.
+_HORNER_MAX_DEGREE = 128
+
+
+def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
+    """Evaluate the curve as ``sum_i C(n, i) t^i (1 - t)^(n - i) P[i]``.
+
+    The handouts' ``naive_bezier``, for any degree: the explicit polynomial,
+    no intermediate levels. Same contract as :func:`de_casteljau`.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+    t : float or array_like, shape (M,)
+    method : {"horner", "loop"}
+        ``"loop"``: the handouts' sum, one term per control point, each
+        with its binomial and two powers. ``"horner"`` (default, fast): the
+        same polynomial by Horner's rule in ``u = t / (1 - t)`` (Schumaker
+        and Volk), with the points reversed and ``u = (1 - t) / t`` for
+        t >= 1/2 so that |u| <= 1; beyond degree 128 a basis-matrix product.
+        The two agree to rounding.
+
+    Examples
+    --------
+    >>> bezier_bernstein([[0, 0], [1, 2], [2, 0]], 0.5)
+    array([1., 1.])
+    >>> bezier_bernstein([[0, 0], [1, 2], [2, 0]], [0.25], method="loop")
+    array([[0.5  , 0.75]])
+    """
+    control = as_points(points)
+    values, is_scalar = as_parameter(t)
+    method = as_choice(method, "method", BEZIER_BERNSTEIN_METHODS)
+    degree = len(control) - 1
+    if degree > MAX_BERNSTEIN_DEGREE:
+        raise ValueError(
+            _(
+                "points: the float Bernstein form works up to degree {most} "
+                "({most_points} points); got {control_count} points. Use de_casteljau."
+            ).format(
+                most=MAX_BERNSTEIN_DEGREE,
+                most_points=MAX_BERNSTEIN_DEGREE + 1,
+                control_count=len(control),
+            )
+        )
+    if method == "loop":
+        curve = _bezier_bernstein_loop(control, values)
+    else:
+        curve = _bezier_bernstein_horner(control, values)
+    return curve[0] if is_scalar else curve
+
+
+def _bezier_bernstein_horner(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Horner's rule in t / (1 - t), or the basis matrix beyond degree 128."""
+    degree = len(control) - 1
+    if degree > _HORNER_MAX_DEGREE:
+        return _bernstein_basis(degree, t) @ control
+    binomials = np.array([float(c) for c in _pascal_row(degree)])
+    return bernstein_horner(control, binomials, t)
+
+
+def _bezier_bernstein_loop(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """The handouts' loop: one term C(n, i) (1 - t)^(n - i) t^i P[i] at a time."""
+    n = len(control) - 1
+    t = t[:, None]
+    curve = np.zeros((len(t), control.shape[1]))
+    for i, point in enumerate(control):
+        curve += float(binomial(n, i)) * (1 - t) ** (n - i) * t**i * point
+    return curve
+
+
+# --- operations on control polygons -------------------------------------------
+
+
+def split(points: Any, t: Any = 0.5) -> tuple[np.ndarray, np.ndarray]:
+    """Subdivide the curve at t into two curves of the same degree.
+
+    The left polygon is the first point of every de Casteljau level, the right
+    one the last point of every level, read backwards. The left curve on
+    [0, 1] traces the original on [0, t], the right one on [t, 1]. A t outside
+    [0, 1] extends the curve instead.
+
+    Returns
+    -------
+    (left, right) : ndarray, each (N, d)
+
+    Examples
+    --------
+    >>> left, right = split([[0, 0], [2, 2], [4, 0]])
+    >>> left.tolist(), right.tolist()
+    ([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0]], [[2.0, 1.0], [3.0, 1.0], [4.0, 0.0]])
+    """
+    levels = de_casteljau_levels(points, t)
+    left = np.array([level[0] for level in levels])
+    right = np.array([level[-1] for level in reversed(levels)])
+    return left, right
+
+
+def derivative(points: Any) -> np.ndarray:
+    """Control points of the hodograph B'(t): ``n * (P[i + 1] - P[i])``.
+
+    Returns an (N - 1, d) array, the derivative curve of degree n - 1. A
+    degree-0 curve is constant: its derivative is the single point 0, (1, d).
+
+    Examples
+    --------
+    >>> derivative([[0, 0], [1, 2], [3, 3]])
+    array([[2., 4.],
+           [4., 2.]])
+    """
+    control = as_points(points)
+    if len(control) == 1:
+        return np.zeros_like(control)
+    return (len(control) - 1) * (control[1:] - control[:-1])
+
+
+def elevate(points: Any) -> np.ndarray:
+    """The same curve with one more control point (degree n + 1).
+
+    ``Q[i] = i / (n + 1) * P[i - 1] + (1 - i / (n + 1)) * P[i]``.
+
+    Examples
+    --------
+    >>> elevate([[0, 0], [3, 3]])
+    array([[0. , 0. ],
+           [1.5, 1.5],
+           [3. , 3. ]])
+    """
+    control = as_points(points)
+    n = len(control) - 1
+    weights = (np.arange(1, n + 1) / (n + 1))[:, None]
+    middle = weights * control[:-1] + (1 - weights) * control[1:]
+    return np.vstack([control[:1], middle, control[-1:]])
+
+
+# --- sampling ----------------------------------------------------------------
+
+_ACCUMULATE = ("exact", "float32", "float64")
+
+
+def uniform_parameters(step: float, accumulate: str = "exact") -> np.ndarray:
+    """The handouts' parameters t = 0, step, 2 step, ... while t <= 1.
+
+    Parameters
+    ----------
+    step : float
+        Spacing, > 0.
+    accumulate : {"exact", "float32", "float64"}
+        ``"exact"`` gives ``k * step`` and includes t = 1 when 1 / step is
+        a whole number. ``"float32"`` and ``"float64"`` reproduce the C++ loop
+        ``for (t = 0; t <= 1; t += step)`` with a ``float`` or ``double`` t:
+        the rounding errors add up, and the loop usually stops one step short
+        of t = 1, so the curve's last point is never drawn.
+
+    Examples
+    --------
+    >>> uniform_parameters(0.25)
+    array([0.  , 0.25, 0.5 , 0.75, 1.  ])
+    >>> float(uniform_parameters(0.001, accumulate="float64")[-1])
+    0.9990000000000008
+    """
+    step = as_positive_float(step, "step")
+    accumulate = as_choice(accumulate, "accumulate", _ACCUMULATE)
+    require_step_samples(step, "step")
+    if step > 1:
+        return np.zeros(1)
+    if accumulate == "exact":
+        count = int(np.floor(1 / step * (1 + 1e-12)))
+        return np.arange(count + 1) * step
+    dtype = np.float32 if accumulate == "float32" else np.float64
+    steps = np.full(int(np.ceil(1 / step)) + 2, step, dtype=dtype)
+    # cumsum adds sequentially in the given dtype, exactly like the C++ loop.
+    t = np.concatenate([np.zeros(1, dtype), np.cumsum(steps, dtype=dtype)])
+    return t[t <= 1].astype(float)
+
+
+def sample_uniform(points: Any, step: float, accumulate: str = "exact") -> np.ndarray:
+    """Points of the curve at :func:`uniform_parameters` ``(step, accumulate)``.
+
+    Examples
+    --------
+    >>> sample_uniform([[0, 0], [4, 0]], 0.5)
+    array([[0., 0.],
+           [2., 0.],
+           [4., 0.]])
+    """
+    control = as_points(points)
+    return _de_casteljau(control, uniform_parameters(step, accumulate))
+
+
+# --- adaptive flattening -----------------------------------------------------
+
+
+def flatten(
+    points: Any,
+    tolerance: float,
+    max_step: float | None = None,
+    return_parameters: bool = False,
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
+    """An adaptive polyline within ``tolerance`` of the curve, vertices on it.
+
+    Levien's analytic subdivision [1]_ for quadratics, and for cubics through
+    quadratics as kurbo does [2]_; each segment's distance to the curve is
+    then bounded rigorously (exactly, in the plane, for a piece beside its
+    chord), the count lowered while the same spacing passes, and a segment
+    beyond the tolerance split (see :mod:`course.curves._flatten`). Degree 4 and up:
+    bisection at t = 1/2. On the glyphs and icons that
+    ``benchmarks/bench_bezier.py`` measures, no curve gets more segments than
+    the best uniform t step.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+    tolerance : float
+        Largest allowed distance from the curve to the polyline, > 0. Points
+        and tolerance needing more than :data:`course.limits.MAX_SAMPLES`
+        vertices are rejected (Wang's bound), before any is computed.
+    max_step : float, optional
+        Also split until consecutive vertices are at most this far apart
+        (1.0 on pixel coordinates: their pixels leave no gap).
+    return_parameters : bool
+        Also return each vertex's t (increasing, 0 first and 1 last).
+
+    Returns
+    -------
+    ndarray, shape (K, d)
+        Vertices on the curve from B(0) to B(1), K >= 2 (1 for a degree-0
+        curve). With ``return_parameters``, ``(vertices, t)``.
+
+    References
+    ----------
+    .. [1] R. Levien, "Flattening quadratic Béziers", 2019, https://raphlinus.github.io/
+       graphics/curves/2019/12/23/flatten-quadbez.html
+    .. [2] kurbo, ``flatten`` in src/bezpath.rs, https://github.com/linebender/kurbo
+
+    Examples
+    --------
+    >>> vertices, t = flatten([[0, 0], [2, 4], [4, 0]], 0.25, return_parameters=True)
+    >>> t.round(3)
+    array([0.   , 0.357, 0.643, 1.   ])
+    """
+    control = as_points(points)
+    tolerance = as_positive_float(tolerance, "tolerance")
+    limit = np.inf if max_step is None else as_positive_float(max_step, "max_step")
+    require_bounded_flattening(control, tolerance, limit)
+    vertices, parameters = flatten_curve(control, tolerance, limit)
+    return (vertices, parameters) if return_parameters else vertices

@@ -1,0 +1,640 @@
+"""Whole paths: Bézier curves drawn one after another as one stroke.
+
+A *path* is a sequence of curves in image space, each an (N_i, 2) array of
+control points. Where a curve starts at the end point of the one before, the
+two are *joined*; elsewhere the pen is lifted and a new *subpath* begins. A
+path comes as one curve (an (N, 2) array), a list of curves, or a
+``matplotlib.path.Path`` with its codes (MOVETO, LINETO, CURVE3, CURVE4,
+CLOSEPOLY, STOP), e.g. a glyph outline from ``matplotlib.textpath.TextPath``.
+
+The stroke of a path with round joins and caps is the set of points within
+w / 2 of any of its curves, so how the curves are grouped into subpaths never
+changes it; the grouping matters to Agg's rendering and to the outline that
+:mod:`course.antialias.stroke` draws.
+
+Flattened, a path is one polyline and a boolean per segment, True where the
+segment is a *gap*: the pen moving between subpaths, not part of the path.
+
+:func:`text_curves` gives a line of text as such a list of curves, in image
+space, ready for :func:`course.antialias.render`; :func:`path_curves` does
+the same for any ``matplotlib.path.Path``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from matplotlib.font_manager import FontProperties
+from matplotlib.path import Path
+from matplotlib.textpath import TextPath
+
+from course import limits
+from course._validate import (
+    as_curve,
+    as_float_array,
+    as_point,
+    as_positive_float,
+    describe,
+    require_bounded_evaluation,
+    require_finite,
+    require_within,
+)
+from course.curves.bezier import de_casteljau
+from course.i18n import _
+
+__all__ = [
+    "FONT",
+    "Curves",
+    "as_path",
+    "canvas_for",
+    "curves_of_path",
+    "flatten_each",
+    "flatten_uniform",
+    "matplotlib_path",
+    "path_curves",
+    "text_curves",
+    "wang_counts",
+]
+
+#: matplotlib's bundled TrueType font: every installation has it.
+FONT = "DejaVu Sans"
+_CODE_NAMES = "MOVETO (1), LINETO (2), CURVE3 (3), CURVE4 (4), CLOSEPOLY (79) or STOP (0)"
+
+# Control points of the curve each code starts (a close is a line), and the code of each size.
+_CODE_SIZES = np.zeros(256, dtype=np.int64)
+_CODE_SIZES[[Path.LINETO, Path.CURVE3, Path.CURVE4, Path.CLOSEPOLY]] = [2, 3, 4, 2]
+_SIZE_CODES = np.zeros(5, dtype=np.uint8)
+_SIZE_CODES[[2, 3, 4]] = [Path.LINETO, Path.CURVE3, Path.CURVE4]
+
+
+@dataclass(frozen=True)
+class Curves:
+    """The validated curves of a path: all control points, curve after curve.
+
+    Attributes
+    ----------
+    points : float ndarray (P, 2)
+        Control points of the first curve, then of the second, ...
+    sizes : int ndarray (M,)
+        How many control points each curve has (>= 1; 1 is a single point).
+    """
+
+    points: np.ndarray
+    sizes: np.ndarray
+
+    def __post_init__(self) -> None:
+        """Check both fields once: every function that takes Curves trusts them.
+
+        Examples
+        --------
+        >>> Curves(np.array([[0.0, 0.0], [np.nan, 1.0]]), np.array([2]))
+        Traceback (most recent call last):
+        ...
+        ValueError: points must be finite; got nan at index (1, 0)
+        """
+        points, sizes = self.points, self.sizes
+        if not isinstance(points, np.ndarray) or points.dtype.kind not in "iuf":
+            raise TypeError(
+                _("points must be a numpy array of real numbers; got {points}").format(
+                    points=describe(points)
+                )
+            )
+        if points.ndim != 2 or points.shape[1] != 2:
+            raise ValueError(
+                _("points must have shape (P, 2); got {points_shape}").format(
+                    points_shape=points.shape
+                )
+            )
+        require_finite(points, "points")
+        require_within(points, "points", limits.MAX_COORDINATE)
+        if not isinstance(sizes, np.ndarray) or sizes.dtype.kind not in "iu" or sizes.ndim != 1:
+            raise TypeError(
+                _("sizes must be a 1-D integer numpy array; got {sizes}").format(
+                    sizes=describe(sizes)
+                )
+            )
+        if sizes.size and sizes.min() < 1:
+            raise ValueError(
+                _("sizes must be >= 1 (control points per curve); got {smallest}").format(
+                    smallest=sizes.min()
+                )
+            )
+        if int(sizes.sum()) != len(points):
+            raise ValueError(
+                _("sizes must add up to the {points_count} points; they add up to {total}").format(
+                    points_count=len(points), total=int(sizes.sum())
+                )
+            )
+
+    @property
+    def starts(self) -> np.ndarray:
+        """Index in ``points`` of each curve's first control point."""
+        return np.cumsum(self.sizes) - self.sizes
+
+    @property
+    def ends(self) -> np.ndarray:
+        """Index in ``points`` of each curve's last control point."""
+        return np.cumsum(self.sizes) - 1
+
+    def joined(self) -> np.ndarray:
+        """True for each curve that starts where the one before it ends (False first)."""
+        starts, ends = self.starts, self.ends
+        same = np.all(self.points[starts[1:]] == self.points[ends[:-1]], axis=1)
+        return np.concatenate([[False], same])
+
+    def split(self) -> list[np.ndarray]:
+        """The curves as a list of new (N_i, 2) arrays."""
+        return [part.copy() for part in np.split(self.points, np.cumsum(self.sizes)[:-1])]
+
+    def moved(self, offset: Any) -> Curves:
+        """The same curves translated by ``-offset`` (a point's new coordinates).
+
+        Examples
+        --------
+        >>> as_path([[1.0, 2.0], [3.0, 4.0]]).moved((1, 2)).points.tolist()
+        [[0.0, 0.0], [2.0, 2.0]]
+        """
+        shift = as_point(offset, "offset", dim=2, bound=limits.MAX_COORDINATE)
+        points = self.points - shift
+        if points.size and np.abs(points).max() > limits.MAX_COORDINATE:
+            raise ValueError(
+                _("offset {shift} moves the points beyond +-{most:g}").format(
+                    shift=shift.tolist(), most=limits.MAX_COORDINATE
+                )
+            )
+        return Curves(points, self.sizes)
+
+
+def as_path(points: Any, name: str = "points") -> Curves:
+    """Validate one curve, a list of curves or a matplotlib Path; a new :class:`Curves`.
+
+    A 2-D array-like is one curve, validated as before (shape (N, 2),
+    finite). A list whose items are 2-D (or a 3-D array) is a list of
+    curves; a bad one is named by its index, ``points[3]``. A
+    ``matplotlib.path.Path`` is read by :func:`curves_of_path`, its vertices
+    taken as image coordinates.
+
+    Examples
+    --------
+    >>> path = as_path([[[0, 0], [4, 0]], [[4, 0], [4, 3], [8, 3]]])
+    >>> path.sizes.tolist(), path.joined().tolist()
+    ([2, 3], [False, True])
+    """
+    if isinstance(points, Path):
+        return curves_of_path(points, name=name)
+    if _is_curve_list(points):
+        return _curve_list(points, name)
+    control = as_curve(points, name)
+    return Curves(control, np.array([len(control)]))
+
+
+def _is_curve_list(points: Any) -> bool:
+    if isinstance(points, np.ndarray):
+        return points.ndim == 3
+    if isinstance(points, (list, tuple)) and len(points) > 0:
+        first = points[0]
+        return (isinstance(first, np.ndarray) and first.ndim == 2) or _nested_twice(first)
+    return False
+
+
+def _nested_twice(value: Any) -> bool:
+    """A list of lists, as a curve's control points are written by hand."""
+    return (
+        isinstance(value, (list, tuple))
+        and len(value) > 0
+        and isinstance(value[0], (list, tuple, np.ndarray))
+    )
+
+
+def _curve_list(curves: Any, name: str) -> Curves:
+    if len(curves) == 0:
+        raise ValueError(
+            _("{name} must hold at least one curve; got {curves}").format(
+                name=name, curves=describe(curves)
+            )
+        )
+    arrays = []
+    for index, curve in enumerate(curves):
+        array = curve if isinstance(curve, np.ndarray) else None
+        if (
+            array is None
+            or array.ndim != 2
+            or array.shape[1] != 2
+            or len(array) == 0
+            or array.dtype.kind not in "iuf"
+        ):
+            array = as_curve(curve, f"{name}[{index}]")  # the one message for a bad curve
+        arrays.append(array)
+    points = np.concatenate(arrays).astype(float)
+    sizes = np.array([len(array) for array in arrays])
+    bad = ~np.isfinite(points).all(axis=1)
+    if bad.any():
+        curve = int(np.searchsorted(np.cumsum(sizes), np.flatnonzero(bad)[0], side="right"))
+        as_curve(curves[curve], f"{name}[{curve}]")  # raises, naming the entry
+    return Curves(points, sizes)
+
+
+def curves_of_path(path: Path, height: float | None = None, name: str = "points") -> Curves:
+    """The Bézier curves of a ``matplotlib.path.Path``, read from its codes.
+
+    MOVETO starts a subpath; LINETO, CURVE3 and CURVE4 add a line, a
+    quadratic and a cubic from the current point; CLOSEPOLY adds the line
+    back to the subpath's first point (none if it is there already); STOP
+    ends the path. A path without codes is one polyline. With ``height``,
+    y becomes ``height - y``: matplotlib's y axis points up, image rows down.
+
+    Examples
+    --------
+    >>> square = Path([[0, 0], [2, 0], [2, 2], [0, 0]], [1, 2, 2, 79])
+    >>> [curve.tolist() for curve in curves_of_path(square).split()]
+    [[[0.0, 0.0], [2.0, 0.0]], [[2.0, 0.0], [2.0, 2.0]], [[2.0, 2.0], [0.0, 0.0]]]
+    """
+    if not isinstance(path, Path):
+        raise TypeError(
+            _("{name} must be a matplotlib.path.Path; got {path}").format(
+                name=name, path=describe(path)
+            )
+        )
+    if height is not None:
+        height = as_positive_float(height, "height", allow_zero=True)
+    vertices = as_float_array(path.vertices, f"{name}.vertices")
+    if vertices.ndim != 2 or vertices.shape[1] != 2:
+        raise ValueError(
+            _(
+                "{name}.vertices must have shape (V, 2) in the plane; got shape {vertices_shape}"
+            ).format(name=name, vertices_shape=vertices.shape)
+        )
+    codes = path.codes
+    if codes is None:
+        codes = np.full(len(vertices), Path.LINETO, dtype=np.uint8)
+        codes[:1] = Path.MOVETO
+    codes = np.asarray(codes)
+    if codes.shape != (len(vertices),):
+        raise ValueError(
+            _(
+                "{name}.codes must have shape ({vertices_count},), one code per vertex; got shape "
+                "{codes_shape}"
+            ).format(name=name, vertices_count=len(vertices), codes_shape=codes.shape)
+        )
+    stop = np.flatnonzero(codes == Path.STOP)
+    if len(stop):
+        vertices, codes = vertices[: stop[0]], codes[: stop[0]]
+    if len(codes) == 0:
+        return Curves(np.zeros((0, 2)), np.zeros(0, dtype=np.int64))
+    known = np.isin(codes, [Path.MOVETO, Path.LINETO, Path.CURVE3, Path.CURVE4, Path.CLOSEPOLY])
+    if not known.all():
+        index = int(np.flatnonzero(~known)[0])
+        raise ValueError(
+            _("{name}.codes must hold only {most}; got code {codes} at vertex {index}").format(
+                name=name, most=_CODE_NAMES, codes=codes[index], index=index
+            )
+        )
+    if codes[0] != Path.MOVETO:
+        raise ValueError(
+            _("{name}.codes must start with MOVETO (1); got code {codes}").format(
+                name=name, codes=codes[0]
+            )
+        )
+    require_finite(vertices[codes != Path.CLOSEPOLY], f"{name}.vertices")
+    # CLOSEPOLY's vertex is ignored, whatever it holds (often 0 or NaN).
+    require_finite(np.where((codes == Path.CLOSEPOLY)[:, None], 0.0, vertices), f"{name}.vertices")
+    if height is not None:
+        vertices[:, 1] = height - vertices[:, 1]
+    index = np.arange(len(codes))
+    change = np.concatenate([[True], codes[1:] != codes[:-1]])
+    run = np.cumsum(change) - 1
+    position = index - np.flatnonzero(change)[run]
+    lengths, run_codes = np.bincount(run), codes[change]
+    broken = ((run_codes == Path.CURVE3) & (lengths % 2 != 0)) | (
+        (run_codes == Path.CURVE4) & (lengths % 3 != 0)
+    )
+    if broken.any():
+        raise ValueError(
+            _(
+                "{name}.codes: CURVE3 vertices come in pairs and CURVE4 vertices in threes; a run "
+                "of {length} code-{code} vertices ends at vertex {end}"
+            ).format(
+                name=name,
+                length=lengths[broken][0],
+                code=run_codes[broken][0],
+                end=int(np.cumsum(lengths)[broken][0]) - 1,
+            )
+        )
+    subpath_start = np.maximum.accumulate(np.where(codes == Path.MOVETO, index, 0))
+    command = (
+        (codes == Path.LINETO)
+        | (codes == Path.CLOSEPOLY)
+        | ((codes == Path.CURVE3) & (position % 2 == 0))
+        | ((codes == Path.CURVE4) & (position % 3 == 0))
+    )
+    at = np.flatnonzero(command)
+    before = at - 1  # codes[0] is MOVETO, so every command has a vertex before it
+    # After CLOSEPOLY the pen is back at the subpath's first point.
+    current = np.where(codes[before] == Path.CLOSEPOLY, subpath_start[before], before)
+    closing = codes[at] == Path.CLOSEPOLY
+    ends_at = np.where(closing, subpath_start[at], at)
+    keep = ~closing | np.any(vertices[current] != vertices[ends_at], axis=1)
+    at, current, closing = at[keep], current[keep], closing[keep]
+    sizes = _CODE_SIZES[codes[at]]
+    # Gather: the current point, then the command's own vertices (the start point for a close).
+    offsets = np.arange(sizes.sum()) - np.repeat(np.cumsum(sizes) - sizes, sizes)
+    command_of = np.repeat(np.arange(len(at)), sizes)
+    gather = np.where(offsets == 0, current[command_of], at[command_of] + offsets - 1)
+    closing_end = closing[command_of] & (offsets == 1)
+    gather = np.where(closing_end, subpath_start[at][command_of], gather)
+    return Curves(vertices[gather], sizes)
+
+
+def matplotlib_path(curves: Curves) -> Path:
+    """A ``matplotlib.path.Path`` drawing the curves (degree 1 to 3) as Agg needs them.
+
+    A curve that does not start where the one before ends starts with
+    MOVETO; a subpath that ends at its first point is closed with CLOSEPOLY,
+    so Agg joins it there instead of capping it twice.
+
+    Examples
+    --------
+    >>> path = matplotlib_path(as_path([[[0, 0], [2, 0]], [[2, 0], [1, 2], [0, 0]]]))
+    >>> path.codes.tolist()
+    [1, 2, 3, 3, 79]
+    """
+    sizes = _as_curves(curves).sizes
+    drawable = (sizes >= 2) & (sizes <= 4)
+    if not drawable.all():
+        bad = int(np.flatnonzero(~drawable)[0])
+        raise ValueError(
+            _(
+                "points: Agg draws Bézier curves of degree 1 to 3 (2 to 4 control points); curve "
+                "{bad} has {sizes} points"
+            ).format(bad=bad, sizes=sizes[bad])
+        )
+    joined = curves.joined()
+    first = np.zeros(len(curves.points), dtype=bool)
+    first[curves.starts] = True
+    keep = ~(first & np.repeat(joined, sizes))
+    codes = np.repeat(_SIZE_CODES[sizes], sizes)
+    codes[first] = Path.MOVETO
+    vertices, codes = curves.points[keep], codes[keep]
+    # Close each subpath that returns to its first point.
+    begin = np.flatnonzero(codes == Path.MOVETO)
+    end = np.r_[begin[1:], len(codes)] - 1
+    closed = (end > begin) & np.all(vertices[begin] == vertices[end], axis=1)
+    closes = np.flatnonzero(closed)
+    vertices = np.insert(vertices, end[closes] + 1, vertices[begin[closes]], axis=0)
+    codes = np.insert(codes, end[closes] + 1, Path.CLOSEPOLY)
+    return Path(vertices, codes)
+
+
+def wang_counts(control: np.ndarray, tolerance: float) -> np.ndarray:
+    """Wang's segment count for each curve of a stack ``(M, N, 2)`` of equal degree.
+
+    Uniform t steps of ``1 / count`` keep every chord within ``tolerance``:
+    on an interval of width h the chord strays at most ``h^2 / 8 max |B''|``
+    and ``|B''| <= n (n - 1) max_i |P[i] - 2 P[i+1] + P[i+2]|``.
+    """
+    control = as_float_array(control, "control")
+    if control.ndim != 3 or control.shape[1] == 0 or control.shape[2] != 2:
+        raise ValueError(
+            _("control must be a stack (M, N, 2) of curves; got shape {control_shape}").format(
+                control_shape=control.shape
+            )
+        )
+    require_finite(control, "control")
+    tolerance = as_positive_float(tolerance, "tolerance")
+    degree = control.shape[1] - 1
+    if degree < 2:
+        return np.ones(len(control), dtype=np.int64)
+    second = control[:, :-2] - 2 * control[:, 1:-1] + control[:, 2:]
+    bound = degree * (degree - 1) * np.hypot(second[..., 0], second[..., 1]).max(axis=1)
+    return np.maximum(1, np.ceil(np.sqrt(bound / (8 * tolerance)))).astype(np.int64)
+
+
+def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.ndarray]:
+    """Every curve in Wang's count of uniform t steps: one polyline and its gaps.
+
+    Curves of one degree are evaluated together (Bernstein form up to cubics,
+    de Casteljau beyond), so a glyph's hundreds of curves cost a few array
+    operations, not a Python call each.
+    """
+    curves = _as_curves(curves)
+    tolerance = as_positive_float(tolerance, "tolerance")
+    counts = np.zeros(len(curves.sizes), dtype=np.int64)
+    pieces: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+    for size in np.unique(curves.sizes).tolist():
+        which = np.flatnonzero(curves.sizes == size)
+        control = curves.points[curves.starts[which][:, None] + np.arange(size)]
+        count = (
+            np.zeros(len(which), dtype=np.int64) if size == 1 else wang_counts(control, tolerance)
+        )
+        require_bounded_evaluation(size, int(count.sum()) + len(count), "curves")
+        if count.sum() > limits.MAX_SAMPLES:
+            raise ValueError(
+                _(
+                    "tolerance {tolerance:g} would need {total} vertices, more than the {most} "
+                    "allowed: raise it"
+                ).format(tolerance=tolerance, total=count.sum(), most=limits.MAX_SAMPLES)
+            )
+        counts[which] = count
+        pieces[size] = (which, _uniform_points(control, count))
+    return _assemble(curves, counts + 1, pieces)
+
+
+def _uniform_points(control: np.ndarray, count: np.ndarray) -> np.ndarray:
+    """The points at t = 0, 1/count, ..., 1 of each curve, one after another."""
+    curve = np.repeat(np.arange(len(count)), count + 1)
+    step = np.arange(len(curve)) - np.repeat(np.cumsum(count + 1) - count - 1, count + 1)
+    t = (step / np.maximum(count, 1)[curve])[:, None]
+    degree = control.shape[1] - 1
+    if degree > 3:
+        return np.concatenate(
+            [
+                de_casteljau(c, np.linspace(0.0, 1.0, n + 1))
+                for c, n in zip(control, count, strict=True)
+            ]
+        )
+    s = 1.0 - t
+    weights = {
+        0: [np.ones_like(t)],
+        1: [s, t],
+        2: [s * s, 2 * s * t, t * t],
+        3: [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t],
+    }[degree]
+    points = sum(w * control[curve, i] for i, w in enumerate(weights))
+    # t = 0 and t = 1 give the end points themselves, so joins stay exact.
+    ends = step == count[curve]
+    starts = step == 0
+    points[starts] = control[curve[starts], 0]
+    points[ends] = control[curve[ends], -1]
+    return points
+
+
+def flatten_each(
+    curves: Curves, flatten_one: Callable[[np.ndarray], np.ndarray]
+) -> tuple[np.ndarray, np.ndarray]:
+    """Every curve flattened by ``flatten_one(control) -> (K, 2) vertices``: polyline, gaps."""
+    curves = _as_curves(curves)
+    if not callable(flatten_one):
+        raise TypeError(
+            _("flatten_one must be a function of the control points; got {flatten_one}").format(
+                flatten_one=describe(flatten_one)
+            )
+        )
+    parts = [_vertices_of(flatten_one(control), control) for control in curves.split()]
+    counts = np.array([len(part) for part in parts], dtype=np.int64)
+    order = np.arange(len(parts))
+    stacked = np.concatenate(parts) if parts else np.zeros((0, 2))
+    return _assemble(curves, counts, {0: (order, stacked)})
+
+
+def _vertices_of(part: Any, control: np.ndarray) -> np.ndarray:
+    """What ``flatten_one`` returned, checked: finite (K, 2) vertices, K >= 1."""
+    try:
+        array = np.asarray(part, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(
+            _(
+                "flatten_one must return (K, 2) vertices; for control {control} it returned {part}"
+            ).format(control=control.tolist(), part=describe(part))
+        ) from None
+    if array.ndim != 2 or array.shape[1] != 2 or len(array) == 0:
+        raise ValueError(
+            _(
+                "flatten_one must return (K, 2) vertices, K >= 1; for control {control} it "
+                "returned shape {array_shape}"
+            ).format(control=control.tolist(), array_shape=array.shape)
+        )
+    bad = ~np.isfinite(array)
+    if bad.any() or np.abs(array).max() > limits.MAX_COORDINATE:
+        worst = array[bad][0] if bad.any() else array.flat[int(np.abs(array).argmax())]
+        raise ValueError(
+            _(
+                "flatten_one must return finite vertices within +-{most:g}; for control {control} "
+                "it returned a vertex coordinate {worst:g}"
+            ).format(most=limits.MAX_COORDINATE, control=control.tolist(), worst=worst)
+        )
+    return array
+
+
+def _assemble(
+    curves: Curves, counts: np.ndarray, pieces: dict[int, tuple[np.ndarray, np.ndarray]]
+) -> tuple[np.ndarray, np.ndarray]:
+    """One polyline from each curve's points (given by groups), and its gap segments."""
+    if len(counts) == 0:
+        return np.zeros((0, 2)), np.zeros(0, dtype=bool)
+    joined = curves.joined()
+    kept = counts - joined  # a joined curve's first point is the previous curve's last
+    offset = np.cumsum(kept) - kept
+    line = np.empty((int(kept.sum()), 2))
+    for which, points in pieces.values():
+        count = counts[which]
+        local = np.arange(len(points)) - np.repeat(np.cumsum(count) - count, count)
+        curve = np.repeat(which, count)
+        keep = local >= joined[curve].astype(np.int64)
+        line[(offset[curve] + local - joined[curve])[keep]] = points[keep]
+    gaps = np.zeros(max(len(line) - 1, 0), dtype=bool)
+    new_subpath = np.flatnonzero(~joined[1:]) + 1
+    gaps[offset[new_subpath] - 1] = True
+    return line, gaps
+
+
+# --- paths for the lessons ----------------------------------------------------------
+
+
+def path_curves(path: Any, height: float) -> list[np.ndarray]:
+    """The curves of a ``matplotlib.path.Path`` in image space: y down, ``height`` tall.
+
+    matplotlib's y axis points up; an image's rows go down. A vertex (x, y)
+    becomes (x, height - y). The result is a list of new (N_i, 2) control
+    point arrays (2 for a line, 3 for a quadratic, 4 for a cubic) that
+    :func:`course.antialias.render` and :func:`course.antialias.coverage.reference`
+    accept as a path.
+
+    Examples
+    --------
+    >>> triangle = Path([[0, 0], [4, 0], [0, 3], [0, 0]], closed=True)
+    >>> [curve.tolist() for curve in path_curves(triangle, height=5)]
+    [[[0.0, 5.0], [4.0, 5.0]], [[4.0, 5.0], [0.0, 2.0]], [[0.0, 2.0], [0.0, 5.0]]]
+    """
+    if not isinstance(path, Path):
+        raise TypeError(
+            _("path must be a matplotlib.path.Path; got {path}").format(path=describe(path))
+        )
+    height = as_positive_float(height, "height", allow_zero=True)
+    return curves_of_path(path, height=height, name="path").split()
+
+
+def text_curves(
+    text: str, size: float = 30.0, margin: float = 2.0, family: str = FONT
+) -> list[np.ndarray]:
+    """A line of text as image-space curves: its glyph outlines from ``TextPath``.
+
+    The outlines of ``text`` set in ``family`` at ``size`` pixels to the em
+    (``matplotlib.textpath.TextPath``, quadratic curves for TrueType fonts),
+    flipped to y down and moved so that every control point lies at least
+    ``margin`` px from the top and left edges. :func:`canvas_for` gives a
+    canvas that holds them.
+
+    Examples
+    --------
+    >>> curves = text_curves("Bézier", size=30)
+    >>> len(curves), canvas_for(curves)
+    (101, (29, 95))
+    >>> from course.antialias import render
+    >>> round(float(render(curves, canvas_for(curves), "stroke_area").max()), 3)
+    1.0
+    """
+    if not isinstance(text, str) or not text.strip():
+        raise ValueError(
+            _("text must be a non-empty string with some ink; got {text}").format(
+                text=describe(text)
+            )
+        )
+    if len(text) > limits.MAX_TEXT_LENGTH:
+        raise ValueError(
+            _("text must be at most {most} characters; got {text_count}").format(
+                most=limits.MAX_TEXT_LENGTH, text_count=len(text)
+            )
+        )
+    size = as_positive_float(size, "size")
+    margin = as_positive_float(margin, "margin", allow_zero=True)
+    if not isinstance(family, str):
+        raise TypeError(
+            _("family must be a font family name (str); got {family}").format(
+                family=describe(family)
+            )
+        )
+    outline = TextPath((0.0, 0.0), text, size=size, prop=FontProperties(family=family))
+    curves = curves_of_path(outline, height=0.0, name="text")
+    if len(curves.sizes) == 0:
+        raise ValueError(
+            _("text must hold some ink; {text} has no outline").format(text=repr(text))
+        )
+    low = curves.points.min(axis=0)
+    return curves.moved(low - margin).split()
+
+
+def canvas_for(curves: Any, margin: float = 2.0) -> tuple[int, int]:
+    """The canvas (H, W) from (0, 0) that holds every control point, plus ``margin``.
+
+    Examples
+    --------
+    >>> canvas_for([[[2.0, 2.0], [10.5, 4.0]]])
+    (6, 13)
+    """
+    path = as_path(curves, "curves")
+    margin = as_positive_float(margin, "margin", allow_zero=True)
+    high = np.ceil(path.points.max(axis=0) + margin).astype(int)
+    return max(int(high[1]), 1), max(int(high[0]), 1)
+
+
+def _as_curves(curves: Any) -> Curves:
+    if not isinstance(curves, Curves):
+        raise TypeError(
+            _("curves must be Curves, e.g. from as_path(points); got {curves}").format(
+                curves=describe(curves)
+            )
+        )
+    return curves

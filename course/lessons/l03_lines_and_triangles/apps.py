@@ -1,0 +1,552 @@
+"""Lesson 03's apps: Bresenham against the report's staircase, and filled triangles.
+
+:class:`LineApp` draws one line three ways on a zoomed 32 x 32 grid, with
+the ideal line (from pixel centre to pixel centre) on top; drag either end,
+in any panel. :class:`TriangleApp` fills two triangles that share an edge,
+marks the pixel centres that fall inside, counts the pixels painted twice
+(or not at all) when the top-left rule is turned off, and shows the
+supersampled coverage at a chosen rate; drag any vertex. The points can be
+typed too (``x, y; x, y``).
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import matplotlib
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.collections import LineCollection
+from matplotlib.colors import ListedColormap
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+
+from course import limits
+from course._validate import as_app_points, as_choice, as_int, as_point, as_shape, describe
+from course.curves.bezier import de_casteljau
+from course.curves.bezier_handouts import bresenham_curve, segments_report
+from course.i18n import _
+from course.images import EXAMPLE_POINTS
+from course.raster import (
+    distance_from_line,
+    hit_counts,
+    line,
+    line_4connected,
+    triangle,
+    triangle_coverage,
+    wu_line,
+)
+from course.raster.canvas import blank, paint
+from course.raster.triangles import EDGE_RULES
+from course.widgets.base import Handle, SliderApp, format_points
+from course.widgets.picture import PixelPanel, pixel_axes
+
+__all__ = [
+    "LINE_GRID",
+    "OWNER_COLORS",
+    "TRIANGLE_GRID",
+    "CurveSegmentsApp",
+    "LineApp",
+    "TriangleApp",
+    "octant",
+    "pixel_grid",
+    "shared_edge_centres",
+]
+
+LINE_GRID = 32
+TRIANGLE_GRID = 16
+
+
+def pixel_grid(axes: Axes, size: int, title: str = "") -> LineCollection:
+    """Set up axes as a zoomed size x size pixel grid in image space (y down).
+
+    Returns the grid lines, to be drawn over the pixels: a moving picture
+    redraws them after its image, as they are not part of its background.
+    """
+    if not isinstance(axes, Axes):
+        raise TypeError(_("axes must be matplotlib Axes; got {axes}").format(axes=describe(axes)))
+    size = as_int(size, "size", minimum=1, maximum=1000)
+    axes.set_xlim(0, size)
+    axes.set_ylim(size, 0)
+    axes.set_aspect("equal")
+    axes.set_xticks(np.arange(0, size + 1, 4))
+    axes.set_yticks(np.arange(0, size + 1, 4))
+    axes.tick_params(which="both", labelsize=7, length=0)
+    axes.set_title(title, fontsize=9)
+    lines = [[(k, 0), (k, size)] for k in range(size + 1)]
+    lines += [[(0, k), (size, k)] for k in range(size + 1)]
+    grid = LineCollection(lines, colors="0.85", linewidths=0.5)
+    axes.add_collection(grid)
+    return grid
+
+
+def octant(dx: int, dy: int) -> int:
+    """The octant (0 to 7) of a direction, counted clockwise from +x in image space (y down).
+
+    Octant 0 is x-major going right and (slightly) down; each next octant
+    turns 45 degrees clockwise on screen. A line of zero length is in octant 0.
+
+    Examples
+    --------
+    >>> [octant(5, 2), octant(2, 5), octant(-2, 5), octant(-5, 2)]
+    [0, 1, 2, 3]
+    >>> [octant(-5, -2), octant(-2, -5), octant(2, -5), octant(5, -2)]
+    [4, 5, 6, 7]
+    """
+    dx, dy = as_int(dx, "dx"), as_int(dy, "dy")
+    angle = np.degrees(np.arctan2(dy, dx)) % 360
+    # Half-open 45-degree sectors: a diagonal starts the next octant.
+    return int(angle // 45) % 8
+
+
+class LineApp(SliderApp):
+    """One line, three rasterizers: Bresenham, the report's 4-connected loop, Wu.
+
+    Drag an end of the line in any panel, or type the two pixels in
+    ``endpoints`` (``x0, y0; x1, y1``, integers on the 32 x 32 grid); every
+    direction (all eight octants) is reachable. The red segment is the ideal
+    line between the two pixel centres.
+    """
+
+    BLIT = True
+    ZOOM = 9  # screen pixels per grid pixel
+
+    def __init__(self, p0: tuple[int, int] = (3, 6), p1: tuple[int, int] = (27, 17)) -> None:
+        ends = [
+            as_app_points([point], name, 1, low=0, high=LINE_GRID - 1, whole=True)[0]
+            for point, name in ((p0, "p0"), (p1, "p1"))
+        ]
+        self.ends = np.array(ends, dtype=np.int64)
+        controls = {
+            "endpoints": widgets.Text(
+                value=format_points(self.ends), description="x, y", continuous_update=False
+            )
+        }
+        super().__init__(controls, shape=(380, 960))
+        self.panels = {}
+        self.ideal = {}
+        grids = []
+        side = LINE_GRID * self.ZOOM
+        for index, name in enumerate(("bresenham", "report", "wu")):
+            axes = pixel_axes(self.figure, 24 + index * (side + 24), 30, side, side)
+            grids.append(pixel_grid(axes, LINE_GRID))
+            self.panels[name] = PixelPanel(self, axes, (LINE_GRID, LINE_GRID), self.ZOOM, "Greys")
+            (self.ideal[name],) = axes.plot(
+                [], [], color="crimson", linewidth=1.2, marker="o", markersize=4
+            )
+        self.heading = self.figure.suptitle("", fontsize=10)
+        self.animate(
+            *grids,
+            *self.ideal.values(),
+            *(panel.axes.title for panel in self.panels.values()),
+            self.heading,
+        )
+
+    def endpoints(self) -> tuple[tuple[int, int], tuple[int, int]]:
+        """The two pixels the line runs between, as the text describes them."""
+        typed = self.typed_points("endpoints", self.ends, 2, 0, LINE_GRID - 1, whole=True)
+        self.ends = typed.astype(np.int64)
+        (x0, y0), (x1, y1) = self.ends.tolist()
+        return (x0, y0), (x1, y1)
+
+    def handles(self) -> list[Handle]:
+        return [
+            Handle(f"p{end}", panel.axes, tuple(self.ends[end] + 0.5))
+            for end in (0, 1)
+            for panel in self.panels.values()
+        ]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        ends = self.ends.copy()
+        ends[int(name[1])] = np.clip(np.floor(point), 0, LINE_GRID - 1)
+        self.controls["endpoints"].value = format_points(ends)
+
+    def update(self) -> None:
+        p0, p1 = self.endpoints()
+        bresenham = line(p0, p1)
+        staircase = line_4connected(p0, p1)
+        wu_pixels, wu_weights = wu_line(np.add(p0, 0.5), np.add(p1, 0.5))
+        size = LINE_GRID
+        self.panels["bresenham"].set_data(paint(blank((size, size)), bresenham, 1.0))
+        self.panels["report"].set_data(paint(blank((size, size)), staircase, 1.0))
+        self.panels["wu"].set_data(paint(blank((size, size)), wu_pixels, 1.0, weight=wu_weights))
+        for ideal in self.ideal.values():
+            ideal.set_data([p0[0] + 0.5, p1[0] + 0.5], [p0[1] + 0.5, p1[1] + 0.5])
+        dx, dy = p1[0] - p0[0], p1[1] - p0[1]
+        self.panels["bresenham"].axes.set_title(
+            _("Bresenham: {count} px = max(|dx|, |dy|) + 1").format(count=len(bresenham)),
+            fontsize=9,
+        )
+        self.panels["report"].axes.set_title(
+            _("report's loop: {count} px = |dx| + |dy| + 1").format(count=len(staircase)),
+            fontsize=9,
+        )
+        self.panels["wu"].axes.set_title(
+            _("Wu: {count} px, ink {ink:.1f}").format(count=len(wu_pixels), ink=wu_weights.sum()),
+            fontsize=9,
+        )
+        farthest = [distance_from_line(pixels, p0, p1).max() for pixels in (bresenham, staircase)]
+        self.heading.set_text(
+            _("({x0}, {y0}) to ({x1}, {y1}): dx = {dx}, dy = {dy}, octant {octant}").format(
+                x0=p0[0], y0=p0[1], x1=p1[0], y1=p1[1], dx=dx, dy=dy, octant=octant(dx, dy)
+            )
+            + _(
+                "; farthest centre from the red line: Bresenham {bresenham:.2f} px, the "
+                "report's loop {report:.2f} px"
+            ).format(bresenham=farthest[0], report=farthest[1])
+        )
+
+
+#: Colours of a pixel by who paints it: nobody, the first triangle, the second, both.
+OWNER_COLORS = ("white", "#9ecae1", "#fdd0a2", "crimson")
+_OWNERS = ListedColormap(OWNER_COLORS)
+
+
+def shared_edge_centres(a: np.ndarray, c: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+    """Boolean (H, W) mask of the pixel centres strictly between a and c on segment ac.
+
+    Exact for coordinates on a binary grid (the app's quarter pixels).
+
+    Examples
+    --------
+    >>> shared_edge_centres(np.array([0.5, 0.5]), np.array([3.5, 3.5]), (4, 4)).astype(int)
+    array([[0, 0, 0, 0],
+           [0, 1, 0, 0],
+           [0, 0, 1, 0],
+           [0, 0, 0, 0]])
+    """
+    a = as_point(a, "a", dim=2, bound=limits.MAX_COORDINATE)
+    c = as_point(c, "c", dim=2, bound=limits.MAX_COORDINATE)
+    shape = as_shape(shape)
+    y, x = np.mgrid[0 : shape[0], 0 : shape[1]] + 0.5
+    edge = c - a
+    along = (x - a[0]) * edge[0] + (y - a[1]) * edge[1]
+    across = (x - a[0]) * edge[1] - (y - a[1]) * edge[0]
+    return (across == 0) & (along > 0) & (along < edge @ edge)
+
+
+class TriangleApp(SliderApp):
+    """Two triangles sharing the edge AC: ABC and ACD, filled pixel by pixel.
+
+    Drag a vertex A, B, C or D in either panel (it snaps to quarter pixels,
+    so vertices and edges can sit exactly on pixel centres), or type them in
+    ``vertices``; pick the edge ``rule`` (:data:`course.raster.triangles.EDGE_RULES`)
+    and the SSAA ``rate``. Left: who paints each pixel, red where both do;
+    dots mark the centres inside. Right: the supersampled coverage of both.
+    """
+
+    NAMES = "ABCD"
+    BLIT = True
+    ZOOM = 20  # screen pixels per grid pixel
+
+    def __init__(
+        self,
+        vertices: tuple[tuple[float, float], ...] = (
+            (2.5, 1.5),
+            (13.5, 3.0),
+            (12.5, 13.5),
+            (1.0, 11.5),
+        ),
+        rule: str = "top-left",
+        rate: int = 4,
+    ) -> None:
+        self.corners = as_app_points(vertices, "vertices", 4, low=0, high=TRIANGLE_GRID)
+        rule = as_choice(rule, "rule", EDGE_RULES)
+        rate = as_int(rate, "rate", minimum=1, maximum=8)
+        controls: dict[str, widgets.ValueWidget] = {
+            "vertices": widgets.Textarea(
+                value=format_points(self.corners), description="x, y", continuous_update=False
+            ),
+            "rule": widgets.ToggleButtons(
+                options=EDGE_RULES,
+                value=rule,
+                description=_("rule"),
+                style={"button_width": "70px"},
+            ),
+            "rate": widgets.IntSlider(value=rate, min=1, max=8, description=_("SSAA rate")),
+        }
+        super().__init__(controls, shape=(445, 830))
+        size, zoom = TRIANGLE_GRID, self.ZOOM
+        left = pixel_axes(self.figure, 40, 75, size * zoom, size * zoom)
+        right = pixel_axes(self.figure, 470, 75, size * zoom, size * zoom)
+        grids = (pixel_grid(left, size), pixel_grid(right, size))
+        self.owners = PixelPanel(self, left, (size, size), zoom, _OWNERS, vmin=0, vmax=3)
+        centres = np.arange(size) + 0.5
+        grid_x, grid_y = np.meshgrid(centres, centres)
+        (all_centres,) = left.plot(grid_x.ravel(), grid_y.ravel(), ".", color="0.75", markersize=2)
+        (self.inside_centres,) = left.plot([], [], "o", color="black", markersize=3)
+        # Under the left panel, and part of its tight box: the course map shows that panel alone.
+        left.legend(
+            handles=[
+                Patch(facecolor=OWNER_COLORS[1], edgecolor="0.5", label=_("ABC only")),
+                Patch(facecolor=OWNER_COLORS[2], edgecolor="0.5", label=_("ACD only")),
+                Patch(facecolor=OWNER_COLORS[3], edgecolor="0.5", label=_("both: painted twice")),
+                Line2D([], [], marker="o", color="black", ls="", ms=3, label=_("centre inside")),
+                Line2D([], [], marker=".", color="0.6", ls="", ms=4, label=_("centre outside")),
+                Line2D([], [], color="navy", lw=2, label=_("shared edge AC")),
+            ],
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.07),
+            ncols=3,
+            fontsize=7,
+            frameon=False,
+            handlelength=1.4,
+            columnspacing=0.8,
+        )
+        self.coverage = PixelPanel(self, right, (size, size), zoom, "Greys")
+        greys = matplotlib.colormaps["Greys"]
+        right.legend(
+            handles=[
+                Patch(facecolor=greys(1.0), edgecolor="0.5", label=_("fully inside: 1")),
+                Patch(
+                    facecolor=greys(0.5),
+                    edgecolor="0.5",
+                    label=_("grey: the share of its samples inside"),
+                ),
+                Patch(facecolor=greys(0.0), edgecolor="0.5", label=_("outside: 0")),
+            ],
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.07),
+            ncols=2,
+            fontsize=7,
+            frameon=False,
+            handlelength=1.4,
+            columnspacing=0.8,
+        )
+        self.outlines = [axes.plot([], [], color="navy", linewidth=1)[0] for axes in (left, right)]
+        self.shared = [axes.plot([], [], color="navy", linewidth=2)[0] for axes in (left, right)]
+        self.left, self.right = left, right
+        self.labels = [
+            left.annotate(name, (0, 0), xytext=(5, 5), textcoords="offset points", fontsize=10)
+            for name in self.NAMES
+        ]
+        self.counts = np.zeros((size, size), dtype=np.int64)
+        self.animate(
+            *grids,
+            all_centres,
+            self.inside_centres,
+            *self.outlines,
+            *self.shared,
+            *self.labels,
+            left.title,
+            right.title,
+        )
+        self.handle_artists = {
+            name: [label] for name, label in zip(self.NAMES, self.labels, strict=True)
+        }
+
+    def vertices(self) -> np.ndarray:
+        """A, B, C, D as a (4, 2) array, as the text describes them."""
+        self.corners = self.typed_points("vertices", self.corners, 4, 0, TRIANGLE_GRID)
+        return self.corners.copy()
+
+    def handles(self) -> list[Handle]:
+        return [
+            Handle(name, axes, tuple(corner))
+            for name, corner in zip(self.NAMES, self.corners, strict=True)
+            for axes in (self.left, self.right)
+        ]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        corners = self.corners.copy()
+        corners[self.NAMES.index(name)] = np.clip(np.round(point * 4) / 4, 0, TRIANGLE_GRID)
+        self.controls["vertices"].value = format_points(corners)
+
+    def update(self) -> None:
+        a, b, c, d = self.vertices()
+        rule, rate = self.value("rule"), self.value("rate")
+        shape = (TRIANGLE_GRID, TRIANGLE_GRID)
+        first = triangle(a, b, c, shape=shape, rule=rule)
+        second = triangle(a, c, d, shape=shape, rule=rule)
+        self.counts = hit_counts([first, second], shape)
+        in_first = hit_counts([first], shape) > 0
+        in_second = hit_counts([second], shape) > 0
+        self.owners.set_data(np.where(in_first & in_second, 3, in_first + 2 * in_second))
+        rows, columns = np.nonzero(self.counts)
+        self.inside_centres.set_data(columns + 0.5, rows + 0.5)
+        doubled = int(np.count_nonzero(self.counts == 2))
+        cracks = int(np.count_nonzero(shared_edge_centres(a, c, shape) & (self.counts == 0)))
+        self.left.set_title(
+            _(
+                "rule {rule}: {first} + {second} pixels\n"
+                "{doubled} painted twice, {cracks} missed on the shared edge"
+            ).format(
+                rule=rule, first=len(first), second=len(second), doubled=doubled, cracks=cracks
+            ),
+            fontsize=9,
+        )
+        image = blank(shape)
+        for triple in ((a, b, c), (a, c, d)):
+            pixels, weights = triangle_coverage(*triple, shape, rate, rule=rule)
+            paint(image, pixels, 1.0, weight=weights)
+        self.coverage.set_data(image)
+        self.right.set_title(
+            _("SSAA coverage, {rate} x {rate} samples per pixel").format(rate=rate), fontsize=9
+        )
+        for label, corner in zip(self.labels, (a, b, c, d), strict=True):
+            label.xy = tuple(corner)
+        quad = np.array([a, b, c, d, a])
+        for outline, shared in zip(self.outlines, self.shared, strict=True):
+            outline.set_data(quad[:, 0], quad[:, 1])
+            shared.set_data([a[0], c[0]], [a[1], c[1]])
+
+
+CURVE_GRID = 40
+_SEGMENT_COUNTS = (1, 2, 4, 8, 16, 32, 64)
+# Who draws a pixel: nobody, the segments on the curve, the segments off it,
+# or nobody although the curve is more than a pixel from every drawn one.
+_DRAWN = ListedColormap(["white", "black", "#D55E00", "#56B4E9"])
+
+
+class CurveSegmentsApp(SliderApp):
+    """The lab's Task 7: a cubic drawn as ``segments`` Bresenham lines, against the curve.
+
+    Left, the pixels on a 40 x 40 grid, ten screen pixels each: black where
+    a line pixel lies on the curve, vermillion where the lines stray off it,
+    sky blue where the curve is more than a pixel from every drawn pixel; a
+    white dot marks a pixel drawn twice (the joints). The blue line is the
+    true curve; drag its control points. Right, those counts for 1 to 64
+    segments (:func:`course.curves.bezier_handouts.segments_report`).
+    """
+
+    BLIT = True
+    ZOOM = 10
+
+    def __init__(self, points: np.ndarray | None = None, segments: int = 4) -> None:
+        if points is None:
+            start = EXAMPLE_POINTS[:4] * (CURVE_GRID / 700)
+        else:
+            start = as_app_points(points, "points", low=0, high=CURVE_GRID)
+            if len(start) < 2:
+                raise ValueError(
+                    _("points must hold at least 2 points; got {start_count}").format(
+                        start_count=len(start)
+                    )
+                )
+        segments = as_int(segments, "segments", minimum=1, maximum=max(_SEGMENT_COUNTS))
+        self.control = np.round(np.asarray(start, dtype=float), 1)
+        controls = {
+            "segments": widgets.IntSlider(
+                value=segments, min=1, max=max(_SEGMENT_COUNTS), description=_("segments")
+            ),
+            "points": widgets.Textarea(
+                value=format_points(self.control), description="x, y", continuous_update=False
+            ),
+        }
+        super().__init__(controls, shape=(500, 900))
+        side = CURVE_GRID * self.ZOOM  # the grid at an integer zoom: 10 screen pixels each
+        grid_axes = pixel_axes(self.figure, 40, 60, side, side)
+        grid_lines = pixel_grid(grid_axes, CURVE_GRID)
+        grid_axes.set_xticks(np.arange(0, CURVE_GRID + 1, 8))
+        grid_axes.set_yticks(np.arange(0, CURVE_GRID + 1, 8))
+        self.grid_axes = grid_axes
+        self.pixels = PixelPanel(
+            self, grid_axes, (CURVE_GRID, CURVE_GRID), self.ZOOM, _DRAWN, vmin=0, vmax=3
+        )
+        (self.twice,) = grid_axes.plot(
+            [], [], "o", color="white", markeredgecolor="0.3", markersize=3.5
+        )
+        grid_axes.legend(
+            handles=[
+                Patch(facecolor=_DRAWN.colors[1], edgecolor="0.5", label=_("drawn, on the curve")),
+                Patch(facecolor=_DRAWN.colors[2], edgecolor="0.5", label=_("drawn, off the curve")),
+                Patch(
+                    facecolor=_DRAWN.colors[3],
+                    edgecolor="0.5",
+                    label=_("curve missed (> 1 px away)"),
+                ),
+                Line2D(
+                    [],
+                    [],
+                    marker="o",
+                    color="white",
+                    mec="0.3",
+                    ls="",
+                    ms=4,
+                    label=_("drawn twice"),
+                ),
+                Line2D([], [], color="#0072B2", lw=1.5, label=_("the curve")),
+            ],
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.05),
+            ncols=3,
+            fontsize=7,
+            frameon=False,
+        )
+        (self.polygon,) = grid_axes.plot([], [], "o--", color="0.45", markersize=6, linewidth=1)
+        (self.curve,) = grid_axes.plot([], [], color="#0072B2", linewidth=1.5)
+        self.labels = [
+            grid_axes.annotate(f"P{i}", (0, 0), xytext=(6, 6), textcoords="offset points")
+            for i in range(len(self.control))
+        ]
+        chart = pixel_axes(self.figure, 520, 90, 350, 370)
+        chart.set_xscale("log", base=2)
+        chart.set_xticks(_SEGMENT_COUNTS, [str(n) for n in _SEGMENT_COUNTS])
+        chart.set_xlabel(_("segments"), fontsize=9)
+        chart.set_ylabel(_("pixels"), fontsize=9)
+        chart.tick_params(labelsize=8)
+        self.counts = {
+            "off": chart.plot([], [], "s-", color="#D55E00", label=_("off the curve"))[0],
+            "missed": chart.plot([], [], "^--", color="#56B4E9", label=_("curve missed"))[0],
+            "twice": chart.plot([], [], "o:", color="0.2", label=_("drawn twice"))[0],
+        }
+        self.now = chart.axvline(segments, color="0.6", linewidth=1)
+        chart.legend(fontsize=8, loc="upper center")
+        self.chart = chart
+        self.animate(
+            grid_lines,
+            self.twice,
+            self.polygon,
+            self.curve,
+            *self.labels,
+            grid_axes.title,
+            *self.counts.values(),
+            self.now,
+        )
+        self.highlight_ring(grid_axes)
+        self.handle_artists = {f"P{i}": [label] for i, label in enumerate(self.labels)}
+
+    def read_control(self) -> np.ndarray:
+        """The control points, as the text describes them."""
+        self.control = self.typed_points("points", self.control, len(self.control), 0, CURVE_GRID)
+        return self.control
+
+    def update(self) -> None:
+        control = self.read_control()
+        segments = int(self.value("segments"))
+        report = segments_report(control, segments)
+        picture = np.zeros((CURVE_GRID, CURVE_GRID))
+        drawn = bresenham_curve(control, segments)
+        painted, counts = np.unique(drawn, axis=0, return_counts=True)
+        for pixels, code in ((painted, 1), (report["off_pixels"], 2), (report["missed_pixels"], 3)):
+            inside = (pixels >= 0).all(axis=1) & (pixels < CURVE_GRID).all(axis=1)
+            picture[pixels[inside, 1], pixels[inside, 0]] = code
+        self.pixels.set_data(picture)
+        doubled = painted[counts > 1] + 0.5
+        self.twice.set_data(doubled[:, 0], doubled[:, 1])
+        self.polygon.set_data(control[:, 0], control[:, 1])
+        curve = de_casteljau(control, np.linspace(0.0, 1.0, 200))
+        self.curve.set_data(curve[:, 0], curve[:, 1])
+        for label, point in zip(self.labels, control, strict=True):
+            label.xy = tuple(point)
+        self.grid_axes.set_title(
+            _(
+                "{segments} segments: {pixels} pixels, {twice} drawn twice\n"
+                "{off} off the curve, {missed} of its {curve} missed"
+            ).format(segments=segments, **report),
+            fontsize=9,
+        )
+        sweep = [segments_report(control, n) for n in _SEGMENT_COUNTS]
+        for key, plotted in self.counts.items():
+            plotted.set_data(_SEGMENT_COUNTS, [row[key] for row in sweep])
+        self.chart.set_ylim(
+            0, max(max(row["twice"], row["off"], row["missed"]) for row in sweep) + 4
+        )
+        self.now.set_xdata([segments, segments])
+
+    def handles(self) -> list[Handle]:
+        return [Handle(f"P{i}", self.grid_axes, tuple(p)) for i, p in enumerate(self.control)]
+
+    def drag(self, name: str, point: np.ndarray) -> None:
+        control = self.control.copy()
+        control[int(name[1:])] = np.clip(np.round(point, 1), 0, CURVE_GRID)
+        self.controls["points"].value = format_points(control)

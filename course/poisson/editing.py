@@ -1,0 +1,529 @@
+"""Poisson image editing: seamless cloning and inpainting.
+
+To paste a foreground into a background without a seam, Pérez, Gangnet and
+Blake (2003) keep the foreground's *gradients* and the background's *values*
+on the border of the pasted region: inside the region the result ``u`` solves
+the Poisson equation ``laplacian(u) = laplacian(f)`` (``f`` the foreground),
+and on its border ``u`` equals the background. Inpainting is the case without
+a foreground: ``laplacian(u) = 0``, the smoothest (membrane) fill of a hole.
+
+Discretely, for every region pixel ``p`` and its four neighbours ``q``::
+
+    4 u_p - sum_q u_q = sum_q v_pq,      v_pq = f_p - f_q  ("plain" guidance)
+
+where a neighbour outside the region keeps the background's value. The lab
+("Inpainting", seed 001) solves it for the correction ``g = u - f``, which is
+harmonic (``laplacian(g) = 0``) and equals ``background - foreground`` on the
+border; :func:`lab_clone` is its loop, :func:`correction_boundary` its
+boundary setup.
+
+The solvers are in :mod:`course.poisson.solvers`: ``"direct"`` (sparse
+factorisation, any region), ``"dst"`` (sine transforms, rectangles),
+``"jacobi"``, ``"gauss_seidel"`` and ``"sor"``; and in
+:mod:`course.poisson.capacitance`: ``"capacitance"`` (sine transforms on a box
+around any region, corrected on the region's border). The default, ``"auto"``,
+is exact and fast: ``"dst"`` for a rectangle, otherwise ``"capacitance"`` or
+``"direct"``, whichever is expected faster for the region's shape
+(:func:`exact_method`).
+
+References
+----------
+.. [1] P. Pérez, M. Gangnet and A. Blake, "Poisson image editing",
+   ACM Transactions on Graphics 22(3), 313-318, 2003.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from course import limits
+from course._validate import as_choice, as_image, as_int, as_positive_float
+from course.i18n import _
+from course.poisson import capacitance, solvers
+from course.poisson.problem import (
+    GUIDANCE,
+    PoissonProblem,
+    as_problem,
+    build_clone_problem,
+    clone_inputs,
+    clone_problem,
+    image_of,
+    inpaint_problem,
+    paste_window,
+    planes_of,
+    window_in,
+)
+
+__all__ = [
+    "GUIDANCE",
+    "ITERATIVE_METHODS",
+    "LAB_ITERATIONS",
+    "SOLVE_METHODS",
+    "ConvergenceHistory",
+    "PoissonProblem",
+    "clone_problem",
+    "convergence",
+    "correction_boundary",
+    "exact_method",
+    "inpaint",
+    "inpaint_problem",
+    "iterates",
+    "lab_clone",
+    "naive_paste",
+    "seamless_clone",
+    "solve",
+    "sweeps_to_residual",
+]
+
+SOLVE_METHODS = ("auto", "direct", "dst", "capacitance", "jacobi", "gauss_seidel", "sor")
+ITERATIVE_METHODS = ("jacobi", "gauss_seidel", "sor")
+# The lab's skeleton runs 8000 sweeps; the iterative methods default to it.
+LAB_ITERATIONS = 8000
+# method="capacitance" refuses a border of more pixels than this: its dense
+# matrix would take 800 MB (a speckled mask; "direct" handles it easily).
+MAX_CHARGES = 10_000
+
+
+@dataclass(frozen=True)
+class ConvergenceHistory:
+    """Residual and error of an iterative method, recorded every few sweeps.
+
+    ``errors`` is the largest ``|u - exact|`` over the region, in image units
+    (multiply by 255 for grey levels); NaN when no exact solution was given.
+    ``solution`` is the last iterate, a window like ``problem.values``.
+    """
+
+    method: str
+    sweeps: np.ndarray
+    residuals: np.ndarray
+    errors: np.ndarray
+    solution: np.ndarray
+
+
+def seamless_clone(
+    background: Any,
+    foreground: Any,
+    offset: Any,
+    mask: Any = None,
+    method: str = "auto",
+    guidance: str = "plain",
+    iterations: int | None = None,
+    tolerance: float | None = None,
+    omega: float | None = None,
+    clip: bool = True,
+) -> np.ndarray:
+    """Paste ``foreground`` into ``background`` at ``offset`` without a seam.
+
+    The region keeps the foreground's gradients and meets the background on
+    its border [1]_. Without a mask the region is the foreground rectangle
+    inside its outer ring of pixels, and the ring takes the background's values
+    (the lab's boundary condition); a mask selects any region inside that ring,
+    and its border is the masked pixels' unmasked neighbours.
+
+    Parameters
+    ----------
+    background : array_like, (H, W) or (H, W, 3)
+        Float image in [0, 1]; not modified.
+    foreground : array_like, (h, w) or (h, w, 3)
+        Float image in [0, 1], gray if the background is gray, RGB if RGB.
+    offset : (int, int)
+        ``(x, y)``: column and row of the foreground's top-left pixel in the
+        background. The whole foreground must lie inside the background.
+    mask : array_like of bool, (h, w), optional
+        The pixels to clone; False on the foreground's outer ring.
+    method : {"auto", "direct", "dst", "capacitance", "jacobi", "gauss_seidel", "sor"}
+        ``"auto"`` (exact and fast) is ``"dst"`` for a rectangle, and for a
+        mask ``"capacitance"`` when its border is short for its area (an
+        ellipse), ``"direct"`` when long (a thin ring, a ragged silhouette):
+        see :func:`exact_method`. ``"dst"`` needs a rectangular region. The
+        exact methods agree to rounding.
+    guidance : {"plain", "mixed"}
+        ``"plain"`` follows the foreground's gradients; ``"mixed"`` takes, on
+        each edge and channel, whichever of the foreground's and background's
+        differences is larger, so background texture shows through flat parts
+        of the foreground [1]_.
+    iterations : int, optional
+        Sweeps of an iterative method; 8000 (the lab's count) by default.
+    tolerance : float, optional
+        Stop an iterative method early once its residual is at most this.
+    omega : float, optional
+        Over-relaxation factor of ``"sor"``, in (0, 2); by default the optimal
+        factor of the region's bounding rectangle.
+    clip : bool
+        Clip the result to [0, 1]. The exact solution can overshoot where the
+        foreground's gradients ask for more contrast than the range allows.
+
+    Returns
+    -------
+    ndarray
+        A new image of the background's shape.
+
+    Examples
+    --------
+    A foreground that only differs from the background by a constant
+    disappears: its gradients are the background's.
+
+    >>> background = np.tile(np.linspace(0, 1, 5), (5, 1))
+    >>> foreground = background[1:4, 1:4] * 0 + 0.75   # flat: no gradient
+    >>> seamless_clone(background, foreground, (1, 1))[2]   # the harmonic fill
+    array([0.  , 0.25, 0.5 , 0.75, 1.  ])
+    """
+    background, foreground, corner, mask = clone_inputs(background, foreground, offset, mask)
+    guidance = as_choice(guidance, "guidance", GUIDANCE)
+    problem = build_clone_problem(background, foreground, corner, mask, guidance)
+    solution = solve(problem, method, iterations, tolerance, omega)
+    if clip:
+        solution = np.clip(solution, 0.0, 1.0)
+    return paste_window(problem, background, solution)
+
+
+def inpaint(
+    image: Any,
+    mask: Any,
+    method: str = "auto",
+    iterations: int | None = None,
+    tolerance: float | None = None,
+    omega: float | None = None,
+) -> np.ndarray:
+    """Fill the masked pixels with the membrane (harmonic) interpolant of their border.
+
+    Inside the hole the result solves Laplace's equation, each pixel the
+    average of its four neighbours; the hole's border, its unmasked
+    neighbours, keeps the image's values. Good for thin scratches and small
+    removed objects; a wide hole comes out smooth, without texture.
+
+    Parameters
+    ----------
+    image : array_like, (H, W) or (H, W, 3)
+        Float image in [0, 1]; not modified. Masked pixels are only the
+        iterative methods' starting guess.
+    mask : array_like of bool, (H, W)
+        The pixels to fill; not empty, and not touching the image border,
+        which would leave the hole without a boundary there.
+    method, iterations, tolerance, omega
+        As for :func:`seamless_clone`.
+
+    Returns
+    -------
+    ndarray
+        A new image of the image's shape.
+
+    Examples
+    --------
+    >>> image = np.array([[0, 1, 0], [0.25, 0, 0.75], [0, 0, 0]])
+    >>> hole = np.array([[0, 0, 0], [0, 1, 0], [0, 0, 0]], bool)
+    >>> inpaint(image, hole)[1]   # the centre becomes (1 + 0 + 0.25 + 0.75) / 4
+    array([0.25, 0.5 , 0.75])
+    """
+    problem = inpaint_problem(image, mask)
+    solution = solve(problem, method, iterations, tolerance, omega)
+    return paste_window(problem, as_image(image), solution)
+
+
+def solve(
+    problem: PoissonProblem,
+    method: str = "auto",
+    iterations: int | None = None,
+    tolerance: float | None = None,
+    omega: float | None = None,
+) -> np.ndarray:
+    """Solve a :class:`PoissonProblem`: the values of its window, region filled in.
+
+    Parameters are those of :func:`seamless_clone`. The result has the shape
+    of ``problem.values`` and is not clipped.
+
+    Examples
+    --------
+    >>> problem = clone_problem(np.zeros((5, 5)), np.full((3, 3), 0.5), (1, 1))
+    >>> solve(problem)   # a flat foreground in a black frame: black
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 0.]])
+    """
+    problem = as_problem(problem)
+    planes, _ = _solve_planes(problem, method, iterations, tolerance, omega)
+    return image_of(planes, problem.values)
+
+
+def exact_method(problem: PoissonProblem) -> str:
+    """The exact method ``method="auto"`` uses for ``problem``.
+
+    ``"dst"`` for a rectangle. For any other region, ``"capacitance"`` if it
+    is expected faster than ``"direct"`` (its cost grows with the border's
+    length, the factorisation's with the area; see
+    :func:`course.poisson.capacitance.faster_than_direct`), else ``"direct"``.
+
+    Examples
+    --------
+    >>> disc = np.hypot(*np.indices((41, 41)) - 20) < 19
+    >>> ring = disc & (np.hypot(*np.indices((41, 41)) - 20) > 16)
+    >>> background, foreground = np.zeros((50, 50)), np.ones((41, 41))
+    >>> [exact_method(clone_problem(background, foreground, (4, 4), mask))
+    ...  for mask in (None, disc, ring)]
+    ['dst', 'capacitance', 'direct']
+    """
+    problem = as_problem(problem)
+    if problem.rectangular:
+        return "dst"
+    return "capacitance" if capacitance.faster_than_direct(problem.region) else "direct"
+
+
+def sweeps_to_residual(
+    problem: PoissonProblem,
+    method: str,
+    tolerance: float = 1e-6,
+    max_iterations: int = 100_000,
+    omega: float | None = None,
+) -> int | None:
+    """How many sweeps an iterative method needs to bring the residual down to ``tolerance``.
+
+    None if ``max_iterations`` sweeps are not enough.
+
+    Examples
+    --------
+    >>> problem = clone_problem(np.zeros((7, 7)), np.full((5, 5), 0.5), (1, 1))
+    >>> [sweeps_to_residual(problem, m) for m in ("jacobi", "gauss_seidel", "sor")]
+    [39, 21, 11]
+    """
+    problem = as_problem(problem)
+    tolerance = as_positive_float(tolerance, "tolerance")
+    max_iterations = as_int(
+        max_iterations, "max_iterations", minimum=0, maximum=limits.MAX_ITERATIONS
+    )
+    planes, done = _solve_planes(problem, method, max_iterations, tolerance, omega)
+    if solvers.residual(planes, *problem.planes()[1:]) > tolerance:
+        return None
+    return done
+
+
+def convergence(
+    problem: PoissonProblem,
+    method: str,
+    iterations: int,
+    exact: Any = None,
+    every: int = 1,
+    omega: float | None = None,
+) -> ConvergenceHistory:
+    """Residual (and error against ``exact``) of an iterative method, every ``every`` sweeps.
+
+    Examples
+    --------
+    >>> problem = clone_problem(np.zeros((7, 7)), np.full((5, 5), 0.5), (1, 1))
+    >>> history = convergence(problem, "jacobi", 4, exact=solve(problem), every=2)
+    >>> history.sweeps, np.round(history.residuals, 3)
+    (array([0, 2, 4]), array([1.  , 0.5 , 0.25]))
+    """
+    problem = as_problem(problem)
+    method = as_choice(method, "method", ITERATIVE_METHODS)
+    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
+    every = as_int(every, "every", minimum=1)
+    omega = _as_omega(omega, method, problem.region)
+    reference = None if exact is None else planes_of(problem._as_solution(exact))
+    values, region, source = problem.planes()
+    sweeps = _sweeps(problem, method, omega)
+    recorded, residuals, errors = [], [], []
+    u = values
+    for done in range(iterations + 1):
+        if done % every == 0 or done == iterations:
+            recorded.append(done)
+            residuals.append(solvers.residual(u, region, source))
+            error = np.nan if reference is None else np.abs(u - reference)[:, region].max()
+            errors.append(error)
+        if done < iterations:
+            u = next(sweeps)
+    return ConvergenceHistory(
+        method,
+        np.array(recorded),
+        np.array(residuals),
+        np.array(errors),
+        image_of(u.copy(), problem.values),
+    )
+
+
+def iterates(
+    problem: PoissonProblem, method: str, omega: float | None = None
+) -> Iterator[np.ndarray]:
+    """The window after each sweep of an iterative method, forever.
+
+    Each item is a view of the iterate, which the next sweep overwrites: copy
+    it to keep it.
+
+    Examples
+    --------
+    >>> problem = clone_problem(np.zeros((5, 6)), np.full((3, 4), 0.5), (1, 1))
+    >>> sweeps = iterates(problem, "jacobi")
+    >>> next(sweeps)[1]   # each unknown: three neighbours at 0, one at 0.5
+    array([0.   , 0.125, 0.125, 0.   ])
+    """
+    problem = as_problem(problem)
+    method = as_choice(method, "method", ITERATIVE_METHODS)
+    omega = _as_omega(omega, method, problem.region)
+    return _iterates(problem, method, omega)
+
+
+def _iterates(problem: PoissonProblem, method: str, omega: float) -> Iterator[np.ndarray]:
+    for planes in _sweeps(problem, method, omega):
+        yield planes[0] if problem.values.ndim == 2 else np.moveaxis(planes, 0, -1)
+
+
+def _sweeps(problem: PoissonProblem, method: str, omega: float) -> Iterator[np.ndarray]:
+    values, region, source = problem.planes()
+    if method == "jacobi":
+        return solvers.jacobi_sweeps(values, region, source)
+    return solvers.sor_sweeps(values, region, source, omega)
+
+
+def naive_paste(background: Any, foreground: Any, offset: Any, mask: Any = None) -> np.ndarray:
+    """Copy the foreground's pixels over the region :func:`seamless_clone` would change.
+
+    The comparison a seamless clone is judged against: the same pixels, the
+    foreground's values instead of a solution.
+
+    Examples
+    --------
+    >>> naive_paste(np.zeros((4, 4)), np.ones((4, 3)), (1, 0))
+    array([[0., 0., 0., 0.],
+           [0., 0., 1., 0.],
+           [0., 0., 1., 0.],
+           [0., 0., 0., 0.]])
+    """
+    background, foreground, corner, mask = clone_inputs(background, foreground, offset, mask)
+    problem = build_clone_problem(background, foreground, corner, mask, "plain")
+    window = window_in(problem, foreground, corner)
+    return paste_window(problem, background, window)
+
+
+def correction_boundary(background: Any, foreground: Any, offset: Any) -> np.ndarray:
+    """The lab's boundary setup: ``g = background - foreground`` on the outer ring, 0 inside.
+
+    ``g`` has the foreground's shape. The solution is ``foreground + g`` once
+    ``g`` is made harmonic inside; see :func:`lab_clone`.
+
+    Examples
+    --------
+    >>> correction_boundary(np.ones((4, 5)), np.full((3, 3), 0.25), (2, 1))
+    array([[0.75, 0.75, 0.75],
+           [0.75, 0.  , 0.75],
+           [0.75, 0.75, 0.75]])
+    """
+    background, foreground, (x, y), _ = clone_inputs(background, foreground, offset, None)
+    height, width = foreground.shape[:2]
+    g = np.zeros_like(foreground)
+    window = background[y : y + height, x : x + width]
+    ring = np.ones((height, width), bool)
+    ring[1:-1, 1:-1] = False
+    g[ring] = window[ring] - foreground[ring]
+    return g
+
+
+def lab_clone(
+    background: Any, foreground: Any, offset: Any, iterations: int = LAB_ITERATIONS
+) -> np.ndarray:
+    """The lab's skeleton, line for line: solve for ``g = u - f`` in place, then add ``f``.
+
+    Its comment says "Jacobi iteration", but the loop overwrites ``g`` as it
+    goes, so each pixel already sees its new upper and left neighbours: that
+    is Gauss-Seidel, ``method="gauss_seidel"`` of :func:`seamless_clone`.
+    Pure Python, a few microseconds per pixel per sweep (lesson 08 times it): for small images.
+    Like the lab, the result is not clipped to [0, 1].
+
+    Examples
+    --------
+    >>> background = np.tile(np.linspace(0, 1, 5), (5, 1))
+    >>> lab_clone(background, np.full((3, 3), 0.75), (1, 1), iterations=30)[2]
+    array([0.  , 0.25, 0.5 , 0.75, 1.  ])
+    """
+    background, foreground, (x0, y0), _ = clone_inputs(background, foreground, offset, None)
+    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
+    g = correction_boundary(background, foreground, (x0, y0))
+    height, width = foreground.shape[:2]
+    for _ in range(iterations):
+        for y in range(1, height - 1):
+            for x in range(1, width - 1):
+                g[y, x] = (g[y - 1, x] + g[y + 1, x] + g[y, x - 1] + g[y, x + 1]) * 0.25
+    result = background.copy()
+    result[y0 : y0 + height, x0 : x0 + width] = foreground + g
+    return result
+
+
+# --- solving ----------------------------------------------------------------
+
+
+def _solve_planes(
+    problem: PoissonProblem,
+    method: str,
+    iterations: int | None,
+    tolerance: float | None,
+    omega: float | None,
+) -> tuple[np.ndarray, int]:
+    method = as_choice(method, "method", SOLVE_METHODS)
+    if method == "auto":
+        method = exact_method(problem)
+    values, region, source = problem.planes()
+    if method not in ITERATIVE_METHODS:
+        for name, given in (("iterations", iterations), ("tolerance", tolerance), ("omega", omega)):
+            if given is not None:
+                raise ValueError(
+                    _(
+                        "{name} applies to the iterative methods {most}; "
+                        "method={method} is exact, so leave {name} unset (got {given})"
+                    ).format(
+                        name=name,
+                        most=ITERATIVE_METHODS,
+                        method=repr(method),
+                        given=repr(given),
+                    )
+                )
+        if method == "dst":
+            if not problem.rectangular:
+                raise ValueError(
+                    _(
+                        "method='dst' needs a rectangular region (every pixel inside the "
+                        "foreground's outer ring); this mask is not a rectangle, so use "
+                        "method='capacitance', 'direct' or 'auto'"
+                    )
+                )
+            return solvers.solve_dst(values, region, source), 0
+        if method == "capacitance":
+            charges = capacitance.charge_pixels(capacitance.embedding(region))[0].size
+            if charges > MAX_CHARGES:
+                raise ValueError(
+                    _(
+                        "method='capacitance' needs a dense {charges} x {charges} matrix for this "
+                        "region, whose border has {charges} pixels (at most {most}); use "
+                        "method='direct' or 'auto' for a ragged or scattered mask"
+                    ).format(charges=charges, most=MAX_CHARGES)
+                )
+            return capacitance.solve_capacitance(values, region, source), 0
+        return solvers.solve_direct(values, region, source), 0
+    if iterations is None:
+        iterations = LAB_ITERATIONS
+    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
+    if tolerance is not None:
+        tolerance = as_positive_float(tolerance, "tolerance")
+    omega = _as_omega(omega, method, region)
+    kind = "jacobi" if method == "jacobi" else "sor"
+    return solvers.iterate(values, region, source, kind, iterations, omega, tolerance)
+
+
+def _as_omega(omega: float | None, method: str, region: np.ndarray) -> float:
+    if method != "sor":
+        if omega is not None:
+            raise ValueError(
+                _("omega applies only to method='sor'; got omega={omega} with {method}").format(
+                    omega=repr(omega), method=repr(method)
+                )
+            )
+        return 1.0
+    if omega is None:
+        return solvers.optimal_omega(region)
+    omega = as_positive_float(omega, "omega")
+    if omega >= 2:
+        raise ValueError(
+            _("omega must lie in (0, 2), where SOR converges; got {omega}").format(omega=omega)
+        )
+    return omega

@@ -95,7 +95,8 @@ $(VENV)/.%-installed: $(LOCK)/%.txt pyproject.toml | $(BIN)/python
 messages: $(VENV)/.test-installed
 	$(BIN)/pybabel extract -F babel.cfg --no-wrap --sort-by-file --project course \
 		-o course/locale/course.pot course
-	$(BIN)/pybabel update --no-wrap -i course/locale/course.pot -d course/locale -D course
+	$(BIN)/pybabel update --no-wrap --no-fuzzy-matching -i course/locale/course.pot \
+		-d course/locale -D course
 	$(BIN)/pybabel compile -d course/locale -D course --statistics
 
 ## lab: for students: update the student edition in student/, open its course map in JupyterLab
@@ -208,20 +209,24 @@ README_PICTURE := 01_de_casteljau_degree3_t0.50
 COALESCE = $(BIN)/jupyter nbconvert --to notebook --inplace --log-level=WARN \
 	--CoalesceStreamsPreprocessor.enabled=True
 
+# Outputs and counts kept, and each cell's id: the twins' catalogs are keyed by it, so an id
+# must survive every save (nbformat 4.5 ids; JupyterLab keeps them too).
+STRIP = $(BIN)/nbstripout --keep-output --keep-count --keep-id
+
 notebooks: $(VENV)/.lab-installed $(VENV)/.test-installed
 	for notebook in $(NOTEBOOKS); do \
 		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
 			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
 	done
 	$(COALESCE) $(NOTEBOOKS)
-	$(BIN)/nbstripout --keep-output --keep-count $(NOTEBOOKS)
+	$(STRIP) $(NOTEBOOKS)
 	$(BIN)/python -m course twins
 	for notebook in notebooks/zh-CN/[0-9]*.ipynb; do \
 		test -e "$$notebook" || continue; \
 		$(BIN)/jupyter nbconvert --to notebook --execute --inplace \
 			--ExecutePreprocessor.timeout=600 "$$notebook" || exit 1; \
 		$(COALESCE) "$$notebook" || exit 1; \
-		$(BIN)/nbstripout --keep-output --keep-count "$$notebook" || exit 1; \
+		$(STRIP) "$$notebook" || exit 1; \
 	done
 	$(BIN)/python -m course map --readme README.md
 	$(BIN)/python -m course gallery --out docs --force --only $(README_PICTURE)

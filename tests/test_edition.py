@@ -308,14 +308,14 @@ def test_every_stored_pass_shows_its_picture_in_both_languages():
 def test_executing_and_stripping_as_make_notebooks_does_leaves_the_kernelspec(tmp_path):
     """``make notebooks`` runs nbconvert --execute, joins the streams, then nbstripout.
 
-    The metadata stays, and a cell's two flushes of stdout are saved as one output, as
-    JupyterLab saves them.
+    The metadata stays, the cell keeps its id (the twins' catalogs are keyed by it), and a
+    cell's two flushes of stdout are saved as one output, as JupyterLab saves them.
     """
     lesson = json.loads((notebooks()[0].path).read_text(encoding="utf-8"))
     notebook = {
         "cells": [
             code_cell("import sys\nprint(6 * 7)\nsys.stdout.flush()\nprint(6 * 9)")
-            | {"outputs": [], "execution_count": None}
+            | {"outputs": [], "execution_count": None, "id": "code-kept"}
         ],
         "metadata": lesson["metadata"],
         "nbformat": 4,
@@ -327,13 +327,14 @@ def test_executing_and_stripping_as_make_notebooks_does_leaves_the_kernelspec(tm
     for command in (
         [bin_folder / "jupyter", "nbconvert", "--to", "notebook", "--execute", "--inplace", path],
         [*make_variable("COALESCE", bin_folder), path],
-        [bin_folder / "nbstripout", "--keep-output", "--keep-count", path],
+        [*make_variable("STRIP", bin_folder), path],
     ):
         done = subprocess.run(command, capture_output=True, text=True, timeout=300)
         assert done.returncode == 0, done.stderr
     executed = json.loads(path.read_text())
     assert ["".join(out["text"]) for out in executed["cells"][0]["outputs"]] == ["42\n54\n"]
     assert executed["metadata"]["kernelspec"] == KERNELSPEC
+    assert executed["cells"][0]["id"] == notebook["cells"][0]["id"]
 
 
 def result_text(cell) -> str:

@@ -114,6 +114,72 @@ def test_a_changed_english_cell_is_untranslated_until_its_message_is(tmp_path, c
     assert ("See [the map](00_index.ipynb).", "c") in catalog.obsolete
 
 
+def test_inserting_moving_and_deleting_cells_keeps_every_other_translation(tmp_path):
+    """Translations follow cell ids, not positions: a real lesson, edited, keeps them all."""
+    english = tmp_path / "03_lines_and_triangles.ipynb"
+    english.write_text((NOTEBOOKS / english.name).read_text(encoding="utf-8"), encoding="utf-8")
+    po_path = tmp_path / "zh-CN" / "03_lines_and_triangles.po"
+    po_path.parent.mkdir()
+    po_path.write_text(
+        (NOTEBOOKS / "zh-CN" / po_path.name).read_text(encoding="utf-8"), encoding="utf-8"
+    )
+    notebook = json.loads(english.read_text(encoding="utf-8"))
+    before = {c["id"] for c in notebook["cells"] if c["cell_type"] == "markdown"}
+    new = {"cell_type": "markdown", "id": "md-inserted", "metadata": {}, "source": "New words."}
+    code = {"cell_type": "code", "id": "code-inserted", "metadata": {}, "source": "1 + 1"}
+    code |= {"outputs": [], "execution_count": None}
+    cells = notebook["cells"]
+    moved = cells.pop(3)
+    deleted = next(c for c in cells[5:] if c["cell_type"] == "markdown")
+    cells.remove(deleted)
+    notebook["cells"] = [cells[0], new, code, *cells[1:-2], moved, *cells[-2:]]
+    english.write_text(json.dumps(notebook), encoding="utf-8")
+
+    assert twins.update_catalog(english, po_path) == (1, 1)
+    twin, report = twins.build_twin(english, twins.read_catalog(po_path))
+    assert report.untranslated == ["md-inserted"]
+    assert report.cells == len(before)  # one deleted, one inserted: all others translated
+    assert report.problems == []
+    assert [c["id"] for c in twin["cells"]] == [c["id"] for c in notebook["cells"]]
+
+
+def test_writing_the_twins_rewrites_only_the_one_that_changed(tmp_path):
+    for name in ("01_x", "02_y"):
+        english = lesson(tmp_path, name)
+        po_path = tmp_path / "zh-CN" / f"{name}.po"
+        twins.update_catalog(english, po_path)
+        translate(
+            po_path, {"a": "# 课\n\n`f` 的点 $B(t)$。", "c": "见[课程地图](00_index.ipynb)。"}
+        )
+    twins.write_twins(tmp_path)
+    executed = tmp_path / "zh-CN" / "02_y.ipynb"
+    twin = json.loads(executed.read_text(encoding="utf-8"))
+    twin["cells"][3]["outputs"] = [{"output_type": "stream", "name": "stdout", "text": "3.14"}]
+    executed.write_text(json.dumps(twin), encoding="utf-8")
+    untouched = executed.read_bytes()
+
+    english = tmp_path / "01_x.ipynb"
+    notebook = json.loads(english.read_text(encoding="utf-8"))
+    notebook["cells"][3]["source"] = "math.tau"
+    english.write_text(json.dumps(notebook), encoding="utf-8")
+    twins.write_twins(tmp_path)
+    assert executed.read_bytes() == untouched
+    changed = json.loads((tmp_path / "zh-CN" / "01_x.ipynb").read_text(encoding="utf-8"))
+    assert twins.english_code(changed) == ["import math", "math.tau"]
+
+
+@pytest.mark.parametrize("path", sorted(NOTEBOOKS.glob("**/[0-9][0-9]_*.ipynb")), ids=str)
+def test_every_lesson_cell_has_a_stable_id_of_its_own(path):
+    """Ids that are not positions: nbstripout without --keep-id renumbers cells "0", "1", ..."""
+    ids = [cell.get("id") for cell in json.loads(path.read_text(encoding="utf-8"))["cells"]]
+    assert all(ids) and len(set(ids)) == len(ids), path.name
+    positional = [cell_id for cell_id in ids if re.fullmatch(r"\d+", cell_id)]
+    assert not positional, f"{path.name}: positional cell ids {positional[:5]}"
+    if path.parent.name == twins.TWIN_FOLDER:
+        english = json.loads((NOTEBOOKS / path.name).read_text(encoding="utf-8"))
+        assert ids == [cell["id"] for cell in english["cells"]], path.name
+
+
 def test_a_translation_that_loses_a_formula_or_a_link_target_is_reported(tmp_path, capsys):
     english = lesson(tmp_path)
     po_path = tmp_path / "zh-CN" / "01_x.po"

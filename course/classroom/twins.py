@@ -5,7 +5,14 @@ The translation of ``notebooks/NN_topic.ipynb`` is the gettext catalog
 ``msgid`` its source, ``msgstr`` the Chinese. The twin ``notebooks/zh-CN/NN_topic.ipynb`` is
 the English lesson with each markdown cell replaced by its translation, the code cells copied,
 and :data:`course.i18n.LANGUAGE_LINES` put before the first code cell. Its outputs come from
-executing it (``make notebooks``); the builder writes it with the English outputs cleared.
+executing it (``make notebooks``); the builder writes a twin only when its cells changed (their
+ids, kinds or sources), and then with the English outputs cleared: the other twins, and their
+outputs, stay as they are.
+
+Cell ids are stable (nbformat 4.5, kept by ``nbstripout --keep-id``), so inserting, moving or
+deleting a cell leaves every other cell's message, and its translation, where it was. A message
+is found by its exact id and source only: a cell whose English changed is untranslated until a
+translator looks at it, never filled from a near match.
 
 ``--update-po`` merges the English markdown into the catalogs: a new or changed cell becomes
 an untranslated message, a message no cell has any more becomes obsolete (``#~``). ``--check``
@@ -226,8 +233,21 @@ def update_catalog(english_path: Path, po_path: Path) -> tuple[int, int]:
     return new, obsolete
 
 
+def same_cells(notebook: dict, other: dict) -> bool:
+    """Whether two notebooks have the same cells (ids, kinds, sources), whatever their outputs."""
+
+    def cells(book: dict) -> list[tuple]:
+        return [(cell.get("id"), cell["cell_type"], cell_source(cell)) for cell in book["cells"]]
+
+    return cells(notebook) == cells(other)
+
+
 def write_twins(notebooks: Path, update_po: bool = False, check: bool = False) -> list[TwinReport]:
-    """Write (or with ``check``, only check) every lesson's twin; a report per lesson."""
+    """Write (or with ``check``, only check) each lesson's twin that changed; a report per lesson.
+
+    A twin whose cells are already those its English lesson and catalog make is left alone,
+    outputs included.
+    """
     folder = notebooks / TWIN_FOLDER
     reports = []
     for english_path in english_lessons(notebooks):
@@ -237,8 +257,11 @@ def write_twins(notebooks: Path, update_po: bool = False, check: bool = False) -
         catalog = read_catalog(po_path) if po_path.exists() else None
         twin, report = build_twin(english_path, catalog)
         reports.append(report)
-        if not check and catalog is not None:
-            write_notebook(folder / english_path.name, twin)
+        twin_path = folder / english_path.name
+        if check or catalog is None:
+            continue
+        if not twin_path.exists() or not same_cells(read_notebook(twin_path), twin):
+            write_notebook(twin_path, twin)
     return reports
 
 

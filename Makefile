@@ -94,7 +94,7 @@ $(VENV)/.%-installed: $(LOCK)/%.txt pyproject.toml | $(BIN)/python
 ## messages: extract the library's marked strings into course.pot and merge them into the .po
 messages: $(VENV)/.test-installed
 	$(BIN)/pybabel extract -F babel.cfg --no-wrap --sort-by-file --project course \
-		-o course/locale/course.pot course
+		--ignore-dirs "__pycache__" -o course/locale/course.pot course
 	$(BIN)/pybabel update --no-wrap --no-fuzzy-matching -i course/locale/course.pot \
 		-d course/locale -D course
 	$(BIN)/pybabel compile -d course/locale -D course --statistics

@@ -24,7 +24,8 @@ from timing import best_times
 
 from course.antialias import SPLATS, STROKES, arc_length_step, render
 from course.antialias.coverage import agg_draw, agg_path, agg_render, reference
-from course.curves.paths import as_path, canvas_for, matplotlib_path, text_curves
+from course.curves.drawable_paths import matplotlib_path
+from course.curves.paths import as_path, canvas_for, text_curves
 from course.images import SEED_000_CUBIC
 from course.metrics import rmse
 

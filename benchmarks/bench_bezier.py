@@ -40,7 +40,8 @@ from outlines import (
 )
 from timing import best_time, best_times
 
-from course.curves.bezier import bezier_bernstein, de_casteljau, de_casteljau_levels, flatten
+from course.curves.bezier import bezier_bernstein, de_casteljau, de_casteljau_levels
+from course.curves.flattening import flatten
 from course.lessons.l01_de_casteljau.apps import DeCasteljauApp
 
 GOALS = {"bezier_bernstein": 2.0, "de_casteljau": 4.0}

@@ -18,7 +18,7 @@ back to a point it passed (:data:`ANGLE_STEP`), with ``time.process_time``
 - **patched**: the moving artists drawn by Agg over the cached background
   with Agg's glyph bitmaps and text layouts cached (numbers laid out from
   their pairs), unused level lines skipped, lines drawn by replaying their
-  Agg calls with their new data (``_LineReplay``), the title's start drawn
+  Agg calls with their new data (``LineReplay``), the title's start drawn
   once into the background and only B(t)'s numbers redrawn, placed without
   being measured (``FixedText``), and only the changed rectangles encoded
   and sent (``FigureView.publish_patches``): what apps whose moving parts
@@ -51,7 +51,7 @@ REPOSITORY = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPOSITORY))
 
 from course.lessons.l01_de_casteljau.apps import DeCasteljauApp  # noqa: E402
-from course.widgets import picture  # noqa: E402
+from course.widgets import figure_view, line_replay, text_cache  # noqa: E402
 from course.widgets.base import SliderApp  # noqa: E402
 
 BATCH = 20
@@ -85,17 +85,17 @@ def as_before(app: DeCasteljauApp) -> Iterator[None]:
     view.publish_patches = lambda: False
     app.grab_started = partial(SliderApp.grab_started, app)
     app.grab_ended = partial(SliderApp.grab_ended, app)
-    install, empty = picture._GlyphCache.install, picture._empty_line
-    record, origin = picture._LineReplay.record, picture.FixedText._origin
-    picture._GlyphCache.install = classmethod(lambda cls, renderer: None)
-    picture._empty_line = lambda artist: False
-    picture._LineReplay.record = classmethod(_draw_unrecorded)
-    picture.FixedText._origin = lambda text, renderer, shown: None  # drawn as Text
+    install, empty = text_cache.GlyphCache.install, figure_view.empty_line
+    record, origin = line_replay.LineReplay.record, text_cache.FixedText._origin
+    text_cache.GlyphCache.install = classmethod(lambda cls, renderer: None)
+    figure_view.empty_line = lambda artist: False
+    line_replay.LineReplay.record = classmethod(_draw_unrecorded)
+    text_cache.FixedText._origin = lambda text, renderer, shown: None  # drawn as Text
     try:
         yield
     finally:
-        picture._GlyphCache.install, picture._empty_line = install, empty
-        picture._LineReplay.record, picture.FixedText._origin = record, origin
+        text_cache.GlyphCache.install, figure_view.empty_line = install, empty
+        line_replay.LineReplay.record, text_cache.FixedText._origin = record, origin
         for instance, attributes in zip((app, view), saved, strict=True):
             for name in ("grab_started", "grab_ended", "draw_in_browser", "publish_patches"):
                 if name in attributes:

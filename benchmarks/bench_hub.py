@@ -90,7 +90,7 @@ PROTOCOL = "v1.kernel.websocket.jupyter.org"
 WAYS = ("drawing", "patched", "today", "floor")
 GOAL_KERNEL_RATIO = 0.5
 # The floor's comm: a widget whose handler answers each pointer message and draws nothing.
-IMPORT_VIEW = "from course.widgets.picture import FigureView"
+IMPORT_VIEW = "from course.widgets.figure_view import FigureView"
 ECHO = """
 import ipywidgets
 _echo = ipywidgets.Widget()

@@ -38,11 +38,11 @@ from pathlib import Path
 from course.classroom.edition import (
     EXERCISE_TAG,
     SOLUTION_TAG,
-    exercise_stub,
     hidden_note,
     reveals,
 )
 from course.classroom.notebooks import DEFAULT_LANGUAGE, LANGUAGES, language_folder
+from course.classroom.stubs import exercise_stub
 
 REPOSITORY = Path(__file__).resolve().parent.parent
 #: What a page needs of MathJax's es5 folder: the combined TeX component, the TeX

@@ -29,7 +29,8 @@ from course.antialias import (
     wang_segments,
 )
 from course.antialias.coverage import reference
-from course.curves.bezier import de_casteljau, uniform_parameters
+from course.curves.bezier import de_casteljau
+from course.curves.flattening import uniform_parameters
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 

@@ -8,14 +8,8 @@ from course.antialias import render
 from course.antialias.coverage import reference
 from course.antialias.curve_quality import intensity_along
 from course.images import SEED_000_CUBIC
-from course.lessons.l05_antialiasing.apps import (
-    CurveWalk,
-    StepApp,
-    ZoomApp,
-    ZoomPanel,
-    label_of,
-    zoom_figure,
-)
+from course.lessons.l05_antialiasing.apps import StepApp, ZoomApp, label_of
+from course.lessons.l05_antialiasing.zoom_panel import CurveWalk, ZoomPanel, zoom_figure
 from course.raster.canvas import crop
 
 CURVE = SEED_000_CUBIC / 5

@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from course.lessons.l05_antialiasing import check
-from course.lessons.l05_antialiasing.check import splat_table
+from course.lessons.l05_antialiasing import check, mistakes
+from course.lessons.l05_antialiasing.splat_tables import splat_table
 
 
 def correct(x, y):
@@ -116,7 +116,7 @@ def test_one_pixel_for_the_whole_point_has_one_name_rounded_or_floored():
     for splat in (nearest_only, falls_in):
         result = check.bilinear_splat(splat)
         assert not result and result.mistake == "the whole point to one pixel"
-    assert "nearest pixel only" not in {m.name for m in check.SPLAT_MISTAKES}
+    assert "nearest pixel only" not in {m.name for m in mistakes.SPLAT_MISTAKES}
 
 
 def test_the_first_wrong_pixel_is_named_with_both_weights():
@@ -199,7 +199,7 @@ def test_a_truncated_pixel_is_not_told_it_rounds_where_both_light_the_same_pixel
 def test_where_floor_and_round_differ_each_one_pixel_splat_gets_its_own_name():
     def first_named(x, y, splat):
         table = splat_table(*splat(x, y))
-        for mistake in check.SPLAT_MISTAKES:
+        for mistake in mistakes.SPLAT_MISTAKES:
             answer = mistake.answer(x=x, y=y)
             if answer is not None and np.array_equal(answer, table):
                 return mistake

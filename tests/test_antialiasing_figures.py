@@ -7,7 +7,7 @@ from matplotlib.patches import Rectangle
 
 from course.antialias import arc_length_step
 from course.images import SEED_000_CUBIC
-from course.lessons.l05_antialiasing import figures
+from course.lessons.l05_antialiasing import figures, measurements
 
 
 @pytest.mark.parametrize("figure", [figures.pixel_area_figure, figures.splat_figure])
@@ -16,7 +16,7 @@ def test_a_figure_in_chinese_has_chinese_words_and_every_glyph(figure, monkeypat
 
 
 def test_the_variants_table_keeps_the_strokes_out_of_the_counted_columns():
-    lines = figures.variants_table().splitlines()
+    lines = measurements.variants_table().splitlines()
     step = arc_length_step(SEED_000_CUBIC)
     assert lines[0].endswith(f"step {step:.3g}") and "step 0.001" in lines[0]
     assert lines[1].split()[-2:] == ["area,", "once"]
@@ -31,7 +31,7 @@ def test_the_variants_table_keeps_the_strokes_out_of_the_counted_columns():
 
 def test_the_rmse_on_its_log_axis_is_dots_not_bars(monkeypatch):
     with figures_drawn(monkeypatch) as drawn:
-        figures.variants_figure()
+        measurements.variants_figure()
     (error_axes,) = [axes for axes in drawn[0].axes if axes.get_xscale() == "log"]
     assert [patch for patch in error_axes.patches if isinstance(patch, Rectangle)] == []
     dots = [line for line in error_axes.lines if line.get_marker() not in (None, "None", "")]

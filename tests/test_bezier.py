@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from course.curves import _flatten, bezier
+from course.curves import _flatten, bezier, flattening
 from course.curves.bezier import (
     bernstein_basis,
     bezier_bernstein,
@@ -19,12 +19,11 @@ from course.curves.bezier import (
     de_casteljau_recursive,
     derivative,
     elevate,
-    flatten,
     sample_uniform,
     split,
-    uniform_parameters,
 )
 from course.curves.bezier_accuracy import bezier_exact
+from course.curves.flattening import flatten, uniform_parameters
 from course.images import SEED_000_CUBIC
 
 # Coordinates and parameters with few bits, so that products stay exact.
@@ -607,19 +606,15 @@ def test_other_bad_input_is_rejected_by_name(call, error, words):
 
 
 def test_public_names_are_exported():
-    assert set(bezier.__all__) >= {
-        "de_casteljau",
-        "bezier_bernstein",
-        "flatten",
-        "sample_uniform",
-        "uniform_parameters",
-    }
+    assert set(bezier.__all__) >= {"de_casteljau", "bezier_bernstein", "sample_uniform"}
+    assert set(flattening.__all__) >= {"flatten", "uniform_parameters"}
 
 
 @pytest.mark.parametrize("step", [1e-9, 1e-15])
 def test_a_step_too_fine_is_refused_before_any_sample_is_made(step):
     from course import limits
-    from course.curves.bezier import sample_uniform, uniform_parameters
+    from course.curves.bezier import sample_uniform
+    from course.curves.flattening import uniform_parameters
 
     with pytest.raises(ValueError, match=f"at most {limits.MAX_STEP_SAMPLES} samples"):
         uniform_parameters(step)
@@ -629,7 +624,7 @@ def test_a_step_too_fine_is_refused_before_any_sample_is_made(step):
 
 def test_the_finest_step_allowed_gives_at_most_the_bound():
     from course import limits
-    from course.curves.bezier import uniform_parameters
+    from course.curves.flattening import uniform_parameters
 
     step = 1 / (limits.MAX_STEP_SAMPLES - 2)
     assert len(uniform_parameters(step)) <= limits.MAX_STEP_SAMPLES

@@ -8,19 +8,18 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from course.curves.bezier import bezier_bernstein, de_casteljau, sample_uniform, uniform_parameters
+from course.curves.bezier import bezier_bernstein, de_casteljau, sample_uniform
 from course.curves.bezier_handouts import (
-    HANDOUT_LOOPS,
     comb_recursive,
     comb_recursive_calls,
     de_casteljau_reversed,
-    loop_pixels,
     pascal_row_int32,
     step_report,
     trace_iterative,
     trace_recursive,
-    yellow_check,
 )
+from course.curves.flattening import uniform_parameters
+from course.curves.handout_loops import HANDOUT_LOOPS, loop_pixels, yellow_check
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 from course.raster.canvas import blank, paint, yellow_fraction

@@ -25,7 +25,7 @@ from PIL import Image
 
 from course.lessons.l01_de_casteljau.apps import DeCasteljauApp
 from course.widgets.browser_drawing import CommandRecorder
-from course.widgets.picture import FigureView
+from course.widgets.figure_view import FigureView
 
 GENERIC = ("serif", "sans-serif", "cursive", "fantasy", "monospace")
 _CAPSTYLES = {"butt": "butt", "square": "projecting", "round": "round"}

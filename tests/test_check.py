@@ -36,6 +36,11 @@ OURS = tuple(
     )
 )
 OURS += ("course/check/sandbox.py",)
+OURS += (  # lesson 05's splats as tables, and its checkers' mistakes
+    "course/lessons/l05_antialiasing/splat_tables.py",
+    "course/lessons/l05_antialiasing/mistakes.py",
+)
+OURS += ("course/lessons/l01_de_casteljau/drawing_loop.py",)  # the drawing loop's mistakes
 CJK = re.compile(r"[\u4e00-\u9fff]")
 
 

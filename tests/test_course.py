@@ -14,6 +14,7 @@ import ast
 import importlib
 import inspect
 import json
+import re
 import sys
 from pathlib import Path
 
@@ -390,9 +391,44 @@ def test_test_files_are_named_for_what_they_test():
     assert chapters >= {"de_casteljau", "poisson"}
 
 
+def test_each_chapter_says_what_its_modules_hold():
+    """A teacher opening ``course/lessons/lNN_topic/`` reads there what each file teaches."""
+    chapters = sorted((PACKAGE / "lessons").glob("l[0-9][0-9]_*/__init__.py"))
+    assert chapters
+    for init in chapters:
+        listed = set(re.findall(r":mod:`\.(\w+)`", ast.get_docstring(ast.parse(init.read_text()))))
+        present = {path.stem for path in init.parent.glob("*.py")} - {"__init__"}
+        assert listed == present, f"{init.parent.name}: its docstring lists {sorted(listed)}"
+        assert {"lesson", "check", "apps", "figures"} <= present, init.parent.name
+
+
+def test_at_most_eight_modules_at_the_root_and_none_past_500_lines():
+    """Topics are packages; a module past 500 lines holds two concepts."""
+    root = sorted(path.name for path in PACKAGE.glob("*.py")) + sorted(
+        path.parent.name for path in PACKAGE.glob("_*/__init__.py")
+    )
+    assert len(root) <= 8, root
+    long = {
+        name: lines
+        for name, path in MODULES.items()
+        if (lines := len(path.read_text(encoding="utf-8").splitlines())) > 500
+    }
+    assert not long, f"modules past 500 lines: {long}"
+
+
 STANDARD_LIBRARY_ONLY = [
     f"course.classroom.{name}"
-    for name in ("cli", "course_map", "edition", "folders", "gallery", "notebooks", "registry")
+    for name in (
+        "cli",
+        "course_map",
+        "edition",
+        "edition_folder",
+        "folders",
+        "gallery",
+        "notebooks",
+        "registry",
+        "stubs",
+    )
 ] + ["course.classroom.source", "course.classroom", "course.__main__", "course"]
 # Imported by the plumbing, and standard library only at import: Babel and matplotlib are
 # imported inside the functions that compile a catalog or add the CJK font.

@@ -10,7 +10,7 @@ import pytest
 from PIL import Image
 
 from course.check import base
-from course.lessons.l01_de_casteljau import check
+from course.lessons.l01_de_casteljau import check, drawing_loop
 
 
 def recursive_solution(points, t):
@@ -294,7 +294,7 @@ def test_the_rounding_mistake_is_worded_as_the_lesson_words_the_pixel():
     ],
 )
 def test_each_edge_of_the_window_is_a_case_that_a_test_one_off_fails(points, slip):
-    cases = [c for c in check._bezier_cases() if np.array_equal(c["control_points"], points)]
+    cases = [c for c in drawing_loop.bezier_cases() if np.array_equal(c["control_points"], points)]
     assert len(cases) == 1 and cases[0]["window"].shape == (700, 700, 3)
     tests = {
         "0 < x": lambda x, y, w, h: 0 < x < w and 0 <= y < h,

@@ -5,9 +5,9 @@ import re
 import numpy as np
 from drawn_figures import figures_drawn
 
-from course.curves.bezier_handouts import HANDOUT_LOOPS, yellow_check
+from course.curves.handout_loops import HANDOUT_LOOPS, yellow_check
 from course.images import SEED_000_CUBIC
-from course.lessons.l01_de_casteljau import figures
+from course.lessons.l01_de_casteljau import figures, pixel_views
 
 
 def last_t(step, dtype):
@@ -59,7 +59,7 @@ def test_the_share_along_the_curve_is_each_stretch_s_own():
     curve = np.column_stack([np.linspace(0, 400, 401), np.full(401, 5.0)])
     yellow = np.array([[x, 5] for x in range(0, 200)])
     odd = np.array([[x, 5] for x in range(200, 400)])
-    shares = figures._yellow_along(curve, yellow, odd)
+    shares = pixel_views.yellow_along(curve, yellow, odd)
     assert shares.shape == (50,)
     assert (shares[:24] == 1).all() and (shares[26:] == 0).all()
 

@@ -9,12 +9,12 @@ from drawn_figures import figures_drawn
 
 from course.halftone import dither
 from course.i18n import language
-from course.lessons.l06_dithering import figures
+from course.lessons.l06_dithering import figures, floyd_steinberg
 
 FIGURES = [
-    (figures.diffusion_figure, ()),
+    (floyd_steinberg.diffusion_figure, ()),
     (figures.wavefront_figure, ()),
-    (figures.by_hand_figure, (np.array([[0.2, 0.7], [0.4, 0.9]]), 20)),
+    (floyd_steinberg.by_hand_figure, (np.array([[0.2, 0.7], [0.4, 0.9]]), 20)),
     (figures.wraparound_figure, (np.full((12, 12), 0.3), (6, 6), 6, 2)),
 ]
 

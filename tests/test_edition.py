@@ -17,20 +17,16 @@ from nbclient import NotebookClient
 
 from course.classroom.cli import main
 from course.classroom.edition import (
-    BEGIN_SOLUTION,
-    END_SOLUTION,
     HIDDEN_NOTE,
     KERNELSPEC,
-    MANIFEST,
-    STUB_LINE,
-    exercise_stub,
     hidden_note,
     reveals,
     solution_cells,
     student_notebook,
-    write_student_edition,
 )
+from course.classroom.edition_folder import MANIFEST, write_student_edition
 from course.classroom.notebooks import notebooks
+from course.classroom.stubs import BEGIN_SOLUTION, END_SOLUTION, STUB_LINE, exercise_stub
 
 SOLUTION = '''import math
 

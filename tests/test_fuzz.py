@@ -89,9 +89,9 @@ LEFT_OUT = {
     ),
     "course.classroom.cli.main": "runs whole commands; its argument parsing is argparse's",
     "course.check.references.call_budget": "a context manager for checkers; no data input",
-    "course.lessons.l05_antialiasing.figures.Table": "a str subclass: str's own constructor",
+    "course.lessons.l05_antialiasing.measurements.Table": "a str subclass: str's own constructor",
     "course.widgets.base.SliderApp.still": "the abstract base draws nothing: its apps' do",
-    "course.lessons.l08_poisson.figures.write_lab_sweeps": (
+    "course.lessons.l08_poisson.convergence.write_lab_sweeps": (
         "the maintainers' step, minutes of solving; its path is checked first "
         "(tests/test_poisson_figures.py)"
     ),
@@ -154,14 +154,27 @@ class Method:
 
 
 def _own_methods(owner: type) -> list[str]:
-    """Public methods a class defines in its own module (inherited app machinery aside)."""
+    """Public methods a class defines in its own module (inherited app machinery aside).
+
+    A mixin's methods count as its direct subclass's own: the mixin's module is unchecked
+    (it cannot be built alone), so they are fuzzed on the class that mixes them in
+    (``SliderApp`` for the pointer's ``axes_at`` and ``handle_at``).
+    """
+    mixed_in = {
+        base.__module__
+        for base in owner.__bases__
+        if getattr(sys.modules.get(base.__module__), "UNCHECKED", False)
+        and base.__module__.startswith("course.")
+    }
     names = []
     for name in dir(owner):
         if name.startswith("_"):
             continue
         raw = inspect.getattr_static(owner, name)
         function = raw.__func__ if isinstance(raw, (staticmethod, classmethod)) else raw
-        if not inspect.isfunction(function) or function.__module__ != owner.__module__:
+        if not inspect.isfunction(function):
+            continue
+        if function.__module__ != owner.__module__ and function.__module__ not in mixed_in:
             continue
         names.append(name)
     return names
@@ -228,7 +241,7 @@ def _valid_by_name(name: str, annotation: str, qualified: str) -> Any:
 
 VALID: dict[str, Any] = {
     # by parameter name
-    "course.classroom.edition.solution_bodies:source": lambda: "def f(x):\n    return 2 * x\n",
+    "course.classroom.stubs.solution_bodies:source": lambda: "def f(x):\n    return 2 * x\n",
     "course.classroom.cli.app_command:notebooks": lambda: Path("notebooks") / "zh-CN",
     "course.classroom.cli.app_command:port": lambda: 8866,
     "course.classroom.cli.app_command:extra": lambda: ["--show_tracebacks=True"],
@@ -310,7 +323,7 @@ VALID: dict[str, Any] = {
     "course.classroom.folders.inside_folder:suffix": lambda: ".png",
     "course.lessons.l01_de_casteljau.check.as_point:value": lambda: (1.0, 2.0),
     "course.check.pictures.figure_png:figure": lambda: _figure(),
-    "course.lessons.l03_lines_and_triangles.apps.pixel_grid:axes": lambda: _figure().add_subplot(),
+    "course.lessons.l03_lines_and_triangles.grid.pixel_grid:axes": lambda: _figure().add_subplot(),
     "course.lessons.l03_lines_and_triangles.apps.shared_edge_centres:a": lambda: np.array(
         [0.5, 0.5]
     ),
@@ -320,26 +333,27 @@ VALID: dict[str, Any] = {
     "course.lessons.l03_lines_and_triangles.apps.shared_edge_centres:shape": lambda: (4, 4),
     "course.widgets.base.SliderApp:controls": lambda: _controls(),
     "course.antialias.curve_quality.quality_table:images": lambda: {"a": GRAY.copy()},
-    "course.curves.paths.flatten_each:flatten_one": lambda: lambda control: control,
-    "course.curves.paths.wang_counts:control": lambda: CURVE[None].copy(),
-    "course.poisson.editing.convergence:exact": lambda: _problem().values.copy(),
+    "course.curves.drawable_paths.flatten_each:flatten_one": lambda: lambda control: control,
+    "course.curves.drawable_paths.wang_counts:control": lambda: CURVE[None].copy(),
+    "course.poisson.methods.convergence:exact": lambda: _problem().values.copy(),
     "course.halftone.blue_noise_masks.cluster_energy:pattern": lambda: (GRAY[:8, :8] > 0.5).astype(
         float
     ),
     "course.raster.canvas.yellow_fraction:image": lambda: RGB.copy(),
     "course.poisson.editing.inpaint:mask": lambda: np.pad(MASK, ((3, 3), (3, 4))),
     "course.poisson.problem.inpaint_problem:mask": lambda: np.pad(MASK, ((3, 3), (3, 4))),
+    "course.poisson.inputs.inpaint_inputs:mask": lambda: np.pad(MASK, ((3, 3), (3, 4))),
     "course.sampling.aliasing.spectrum:samples": lambda: np.cos(np.arange(16) * 0.7),
     "course.widgets.picture.png_bytes:pixels": lambda: np.zeros((4, 5, 3), dtype=np.uint8),
-    "course.classroom.edition.exercise_stub:source": lambda: "def f(x):\n    return x\n",
+    "course.classroom.stubs.exercise_stub:source": lambda: "def f(x):\n    return x\n",
     "course.antialias.rendering.render:method": lambda: "bilinear_centres",
     "course.antialias.curve_quality.render_variant:name": lambda: "bilinear_centres",
     "course.antialias.curve_quality.render_window:name": lambda: "bilinear_centres",
     "course.antialias.curve_quality.render_window:size": lambda: 6,
     "course.antialias.splats.splat:kind": lambda: "bilinear_centres",
-    "course.poisson.editing.sweeps_to_residual:method": lambda: "jacobi",
-    "course.poisson.editing.convergence:method": lambda: "jacobi",
-    "course.poisson.editing.iterates:method": lambda: "jacobi",
+    "course.poisson.methods.sweeps_to_residual:method": lambda: "jacobi",
+    "course.poisson.methods.convergence:method": lambda: "jacobi",
+    "course.poisson.methods.iterates:method": lambda: "jacobi",
     "course.lessons.l07_filtering.apps.blurred:border": lambda: "replicate",
     "course.lessons.l05_antialiasing.apps.label_of:name": lambda: "bilinear_centres",
     "course.widgets.base.parse_points:text": lambda: "1, 2; 3, 4",
@@ -348,7 +362,7 @@ VALID: dict[str, Any] = {
     "course.lessons.l07_filtering.apps.format_kernel:kernel": lambda: np.ones((3, 3)),
     "course.lessons.l06_dithering.figures.methods_figure:images": lambda: {"a": GRAY.copy()},
     "course.lessons.l06_dithering.figures.methods_figure:centre": lambda: (6.0, 5.0),
-    "course.lessons.l05_antialiasing.apps.zoom_figure:images": lambda: {"a": GRAY.copy()},
+    "course.lessons.l05_antialiasing.zoom_panel.zoom_figure:images": lambda: {"a": GRAY.copy()},
     "course.lessons.l06_dithering.figures.wraparound_figure:centre": lambda: (6.0, 5.0),
     "course.lessons.l01_de_casteljau.figures.yellow_check_figure:seed": lambda: "000",
     "course.lessons.l01_de_casteljau.check.curve_cases:max_points": lambda: 4,
@@ -400,17 +414,17 @@ VALID: dict[str, Any] = {
     "course.poisson.problem.build_clone_problem:corner": lambda: (3, 2),
     "course.poisson.problem.build_clone_problem:mask": lambda: None,
     "course.poisson.problem.build_clone_problem:guidance": lambda: "plain",
-    "course.poisson.problem.image_of:planes": lambda: GRAY[None].copy(),
-    "course.poisson.problem.image_of:like": lambda: GRAY.copy(),
+    "course.poisson.windows.image_of:planes": lambda: GRAY[None].copy(),
+    "course.poisson.windows.image_of:like": lambda: GRAY.copy(),
     "course.poisson.problem.paste_window:window": lambda: GRAY[:6, :7].copy(),
-    "course.poisson.problem.window_at:corner": lambda: (3, 2),
-    "course.poisson.problem.window_at:shape": lambda: (6, 7),
-    "course.poisson.problem.window_in:image": lambda: GRAY[:6, :7].copy(),
-    "course.poisson.problem.window_in:corner": lambda: (3, 2),
+    "course.poisson.windows.window_at:corner": lambda: (3, 2),
+    "course.poisson.windows.window_at:shape": lambda: (6, 7),
+    "course.poisson.windows.window_in:image": lambda: GRAY[:6, :7].copy(),
+    "course.poisson.windows.window_in:corner": lambda: (3, 2),
     "course.poisson.problem.PoissonProblem.paste:solution": lambda: GRAY[:6, :7].copy(),
     "course.poisson.problem.PoissonProblem.residual:solution": lambda: GRAY[:6, :7].copy(),
-    "course.lessons.l05_antialiasing.apps.ZoomPanel:axes": lambda: _figure().add_subplot(),
-    "course.lessons.l05_antialiasing.apps.ZoomPanel:curve": lambda: CURVE.copy(),
+    "course.lessons.l05_antialiasing.zoom_panel.ZoomPanel:axes": lambda: _figure().add_subplot(),
+    "course.lessons.l05_antialiasing.zoom_panel.ZoomPanel:curve": lambda: CURVE.copy(),
     "course.lessons.l01_de_casteljau.check.curve_picture_of:function": lambda: _de_casteljau(),
     "course.lessons.l01_de_casteljau.check.curve_picture_of:reference": lambda: _de_casteljau(),
     "course.lessons.l01_de_casteljau.check.curve_picture_of:title": lambda: "curve",
@@ -434,14 +448,14 @@ VALID: dict[str, Any] = {
     "course.lessons.l07_filtering.apps.KernelApp.filtered:kernel": lambda: np.ones((3, 3)) / 9,
     "course.lessons.l07_filtering.apps.KernelApp.filtered:border": lambda: "replicate",
     "course.classroom.gallery.ProgressBar.advance:label": lambda: "lesson",
-    "course.lessons.l05_antialiasing.apps.ZoomPanel.show:centre": lambda: (6.0, 5.0),
-    "course.lessons.l05_antialiasing.apps.ZoomPanel.show:size": lambda: 8,
-    "course.lessons.l05_antialiasing.apps.ZoomPanel.show:title": lambda: "zoom",
-    "course.lessons.l05_antialiasing.apps.ZoomPanel.show_window:window": lambda: GRAY[
+    "course.lessons.l05_antialiasing.zoom_panel.ZoomPanel.show:centre": lambda: (6.0, 5.0),
+    "course.lessons.l05_antialiasing.zoom_panel.ZoomPanel.show:size": lambda: 8,
+    "course.lessons.l05_antialiasing.zoom_panel.ZoomPanel.show:title": lambda: "zoom",
+    "course.lessons.l05_antialiasing.zoom_panel.ZoomPanel.show_window:window": lambda: GRAY[
         :4, :4
     ].copy(),
-    "course.lessons.l05_antialiasing.apps.ZoomPanel.show_window:extent": lambda: (0, 4, 4, 0),
-    "course.lessons.l05_antialiasing.apps.ZoomPanel.show_window:title": lambda: "zoom",
+    "course.lessons.l05_antialiasing.zoom_panel.ZoomPanel.show_window:extent": lambda: (0, 4, 4, 0),
+    "course.lessons.l05_antialiasing.zoom_panel.ZoomPanel.show_window:title": lambda: "zoom",
     "course.lessons.l08_poisson.apps.PoissonIterationApp.iterate:method": lambda: "jacobi",
     "course.lessons.l08_poisson.apps.PoissonIterationApp.iterate:sweeps": lambda: 0,
 }
@@ -464,11 +478,9 @@ def _resampler() -> Any:
 
 
 def _handout_loop() -> Any:
-    from course.curves import bezier_handouts
+    from course.curves import handout_loops
 
-    loops = [
-        v for v in vars(bezier_handouts).values() if isinstance(v, bezier_handouts.HandoutLoop)
-    ]
+    loops = [v for v in vars(handout_loops).values() if isinstance(v, handout_loops.HandoutLoop)]
     return loops[0] if loops else NotImplemented
 
 
@@ -960,12 +972,12 @@ def test_every_public_name_is_in_all():
 
 
 def test_discovery_finds_the_public_surface():
-    assert "course.curves.bezier.flatten" in CALLABLES
+    assert "course.curves.flattening.flatten" in CALLABLES
     assert "course.lessons.l04_supersampling.apps.SupersampleApp" in CALLABLES
     # Methods of public classes, and names public by spelling whatever __all__ says.
     assert isinstance(CALLABLES["course.curves.paths.Curves.moved"], Method)
     assert isinstance(CALLABLES["course.poisson.problem.PoissonProblem.seam"], Method)
-    assert "course.poisson.problem.window_at" in CALLABLES
+    assert "course.poisson.windows.window_at" in CALLABLES
     assert not any(name.split(".")[-1].startswith("_") for name in CALLABLES)
     assert set(LEFT_OUT) <= set(CALLABLES)
 

@@ -7,7 +7,7 @@ import pytest
 
 import course
 from course.check import base
-from course.lessons.l03_lines_and_triangles import check
+from course.lessons.l03_lines_and_triangles import check, mistakes
 from course.raster import line, line_4connected, triangle
 
 
@@ -291,19 +291,19 @@ def test_a_mirrored_rule_is_told_from_an_open_one_where_a_case_can_tell_them_apa
     # (0, 0), (8, 8), (0, 8) has centres only on its right edge: open leaves them out,
     # the mirrored rule keeps them, so each is named for what it did.
     case = {"p0": (0, 0), "p1": (8, 8), "p2": (0, 8)}
-    mirrored = check._unless_same(check._mirrored_rule, check._open_rule, **case)
-    opened = check._unless_same(check._open_rule, check._mirrored_rule, **case)
+    mirrored = mistakes.unless_same(mistakes.mirrored_rule, mistakes.open_rule, **case)
+    opened = mistakes.unless_same(mistakes.open_rule, mistakes.mirrored_rule, **case)
     assert mirrored is not None and opened is not None
     expected = fill_by_rule(**case, left=False, right=True)
-    assert check._same_or_nothing(mirrored, np.array(expected))
-    assert check._same_or_nothing(opened, np.array(fill_by_rule(**case, left=False, top=False)))
+    assert mistakes.same_or_nothing(mirrored, np.array(expected))
+    assert mistakes.same_or_nothing(opened, np.array(fill_by_rule(**case, left=False, top=False)))
     same = {"p0": (1, 1), "p1": (9, 2), "p2": (4, 8)}
-    assert check._unless_same(check._mirrored_rule, check._open_rule, **same) is None
+    assert mistakes.unless_same(mistakes.mirrored_rule, mistakes.open_rule, **same) is None
 
 
 def test_the_bottom_row_mistake_adds_the_flat_bottom_row_over_half_open_spans():
     # The case: (0.5, 0.5), (0.5, 5.5), (7.5, 5.5) has 16 pixels, 7 more with row 5.
-    pixels = check._bottom_row_filled((0.5, 0.5), (0.5, 5.5), (7.5, 5.5))
+    pixels = mistakes.bottom_row_filled((0.5, 0.5), (0.5, 5.5), (7.5, 5.5))
     assert len(pixels) == 23
     assert sorted(map(tuple, pixels.tolist())) == sorted(
         fill_by_rule((0.5, 0.5), (0.5, 5.5), (7.5, 5.5), bottom=True)
@@ -407,4 +407,4 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
         "未通过 draw_line：还没有写：你的函数抛出了 NotImplementedError"
     )
     refused = str(check.draw_line(lambda p0, p1: line(p0, p1).tolist()))
-    assert "你的函数调用了 course.raster.line，那是课程库自带的答案" in refused
+    assert "你的函数调用了 course.raster.line，这是课程库自己的答案" in refused

@@ -8,7 +8,7 @@ from urllib.parse import parse_qs, urlsplit
 import pytest
 
 from course.classroom.cli import main
-from course.classroom.edition import write_student_edition
+from course.classroom.edition_folder import write_student_edition
 from course.classroom.link import nbgitpuller_link
 from course.classroom.notebooks import NOTEBOOKS
 

@@ -33,7 +33,7 @@ from nbgrader.apps import NbGraderAPI
 from traitlets.config import Config
 from traitlets.config.loader import PyFileConfigLoader
 
-from course.classroom.edition import STUB_LINE, cell_source, exercise_stub, solution_cells
+from course.classroom.edition import cell_source, solution_cells
 from course.classroom.nbgrader import (
     EXERCISE_POINTS,
     exercises,
@@ -41,6 +41,7 @@ from course.classroom.nbgrader import (
     write_nbgrader_course,
 )
 from course.classroom.notebooks import NOTEBOOKS, language_folder, notebooks
+from course.classroom.stubs import STUB_LINE, exercise_stub
 
 REPOSITORY = Path(__file__).resolve().parent.parent
 FULL = os.environ.get("COURSE_NBGRADER") == "full"

@@ -10,12 +10,11 @@ from matplotlib.textpath import TextPath
 from course.antialias import RENDER_METHODS, render
 from course.antialias.near_pixels import segment_distance
 from course.curves.bezier import de_casteljau
+from course.curves.drawable_paths import flatten_uniform, matplotlib_path
 from course.curves.paths import (
     as_path,
     canvas_for,
     curves_of_path,
-    flatten_uniform,
-    matplotlib_path,
     path_curves,
     text_curves,
 )
@@ -173,7 +172,8 @@ def test_curves_refuse_points_that_are_not_finite_or_far_away(bad):
 
 
 def test_curves_refuse_sizes_that_disagree_with_their_points():
-    from course.curves.paths import Curves, flatten_uniform
+    from course.curves.drawable_paths import flatten_uniform
+    from course.curves.paths import Curves
 
     with pytest.raises(ValueError, match="sizes must add up to the 4 points"):
         flatten_uniform(Curves(np.zeros((4, 2)), np.array([3, 3])), 0.1)
@@ -208,14 +208,14 @@ def test_moved_refuses_to_move_points_past_the_coordinate_bound():
     ],
 )
 def test_flatten_each_checks_what_its_callback_returns(answer, error, message):
-    from course.curves.paths import flatten_each
+    from course.curves.drawable_paths import flatten_each
 
     with pytest.raises(error, match=message):
         flatten_each(as_path([[0.0, 0.0], [3.0, 4.0], [5.0, 0.0]]), answer)
 
 
 def test_flatten_each_keeps_a_good_callback_s_vertices():
-    from course.curves.paths import flatten_each
+    from course.curves.drawable_paths import flatten_each
 
     path = as_path([[[0.0, 0.0], [3.0, 4.0]], [[3.0, 4.0], [5.0, 0.0]]])
     line, gaps = flatten_each(path, lambda control: control)

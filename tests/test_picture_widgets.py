@@ -17,9 +17,9 @@ from matplotlib.text import Text
 from matplotlib.transforms import IdentityTransform
 from PIL import Image
 
-from course.widgets import picture
+from course.widgets import line_replay, picture, text_cache
+from course.widgets.figure_view import FigureView
 from course.widgets.picture import (
-    FigureView,
     Picture,
     PixelPanel,
     Still,
@@ -266,10 +266,10 @@ def test_cached_glyphs_paint_exactly_what_agg_paints(monkeypatch):
         artists.append(axes.text(0.5, 0.5, "turned", rotation=30, animated=True))
         with monkeypatch.context() as patch:
             if not cached:  # Agg's own drawing: the cache is never installed
-                patch.setattr(picture._GlyphCache, "install", classmethod(lambda cls, r: None))
+                patch.setattr(text_cache.GlyphCache, "install", classmethod(lambda cls, r: None))
             frames = draw_shifted(view, artists)
         drawer = view.canvas.get_renderer()._draw_text_glyphs_and_boxes
-        assert isinstance(drawer, picture._GlyphCache) == cached
+        assert isinstance(drawer, text_cache.GlyphCache) == cached
         pictures.append(frames)
     for agg, cache in zip(*pictures, strict=True):
         assert (agg < 250).any()  # something was drawn
@@ -453,11 +453,11 @@ def test_picture_js_sends_a_move_only_once_the_last_is_answered(tmp_path):
 def test_numbers_laid_out_from_their_pairs_are_laid_out_as_agg_lays_them_out():
     view = FigureView(shape=(40, 40))
     renderer = view.canvas.get_renderer()
-    picture._GlyphCache.install(renderer)
+    text_cache.GlyphCache.install(renderer)
     layouts = renderer.draw_text
     flags = backend_agg.get_hinting_flag()
     rng = np.random.default_rng(7)
-    alphabet = sorted(picture._LayoutCache.COMPOSABLE)
+    alphabet = sorted(text_cache._LayoutCache.COMPOSABLE)
     for size in (7, 10, 13.5):
         font = renderer._prepare_font(FontProperties(size=size))
         strings = ["".join(pair) for pair in itertools.product(alphabet, repeat=2)]
@@ -475,7 +475,7 @@ def test_numbers_laid_out_from_their_pairs_are_laid_out_as_agg_lays_them_out():
 def test_fixed_text_draws_what_text_draws_and_falls_back_where_it_cannot():
     strings = ["(355.0, 213.8)", "(-4.5, 0.0)", "1", "(9, 9)", "--", ", .", "(0.1, 22.7)"]
     drawn = {}
-    for kind in (Text, picture.FixedText):
+    for kind in (Text, text_cache.FixedText):
         view = FigureView(shape=(60, 200))
         texts = [
             kind(13.3, 21.7, "", transform=IdentityTransform(), fontsize=11, va="bottom"),
@@ -493,10 +493,10 @@ def test_fixed_text_draws_what_text_draws_and_falls_back_where_it_cannot():
             view.render_moving(texts)
             frames.append(view.pixels())
         drawn[kind] = frames
-        if kind is picture.FixedText:  # placed once per ascent and descent; the rest by Text
+        if kind is text_cache.FixedText:  # placed once per ascent and descent; the rest by Text
             assert len(texts[0]._origins) > 1 and texts[1]._origins
             assert not texts[2]._origins and not texts[3]._origins
-    for text_frame, fixed_frame in zip(drawn[Text], drawn[picture.FixedText], strict=True):
+    for text_frame, fixed_frame in zip(drawn[Text], drawn[text_cache.FixedText], strict=True):
         assert (text_frame[..., 0] < 200).any()
         np.testing.assert_array_equal(fixed_frame, text_frame)
 
@@ -540,7 +540,7 @@ def test_lines_on_a_log_axis_are_drawn_by_matplotlib_not_replayed():
     axes.set_yscale("log")
     (line,) = axes.plot([1, 2, 3], [1, 10, 100], animated=True)
     view.render_moving([line])
-    assert picture._LineReplay.record(line, view.canvas.get_renderer()) is None
+    assert line_replay.LineReplay.record(line, view.canvas.get_renderer()) is None
 
 
 def test_a_still_in_a_notebook_shows_its_picture_then_its_caption_as_text(monkeypatch, capsys):

@@ -522,7 +522,7 @@ def test_the_history_ends_with_the_iterate_solve_returns():
     width=st.integers(1, 8),
 )
 def test_window_at_clips_a_window_off_the_image_and_never_wraps(x, y, height, width):
-    from course.poisson.problem import window_at
+    from course.poisson.windows import window_at
 
     image = np.arange(48.0).reshape(6, 8)
     window = window_at(image, (x, y), (height, width))
@@ -535,7 +535,7 @@ def test_window_at_clips_a_window_off_the_image_and_never_wraps(x, y, height, wi
 
 
 def test_window_at_with_a_negative_corner_keeps_the_part_on_the_image():
-    from course.poisson.problem import window_at
+    from course.poisson.windows import window_at
 
     assert window_at(np.zeros((8, 8)), (-1, -1), (3, 3)).shape == (2, 2)
     assert window_at(np.ones((8, 8)), (-2, 1), (3, 4)).shape == (3, 2)
@@ -543,14 +543,8 @@ def test_window_at_with_a_negative_corner_keeps_the_part_on_the_image():
 
 @pytest.mark.parametrize("bad", [np.nan, np.inf])
 def test_the_window_helpers_reject_non_finite_pixels(bad):
-    from course.poisson.problem import (
-        clone_problem,
-        image_of,
-        paste_window,
-        planes_of,
-        window_at,
-        window_in,
-    )
+    from course.poisson.problem import clone_problem, paste_window
+    from course.poisson.windows import image_of, planes_of, window_at, window_in
 
     image = np.zeros((6, 6))
     image[1, 1] = bad
@@ -575,14 +569,8 @@ def test_the_window_helpers_reject_non_finite_pixels(bad):
 
 
 def test_the_window_helpers_name_what_is_wrong():
-    from course.poisson.problem import (
-        build_clone_problem,
-        clone_problem,
-        image_of,
-        paste_window,
-        planes_of,
-        window_in,
-    )
+    from course.poisson.problem import build_clone_problem, clone_problem, paste_window
+    from course.poisson.windows import image_of, planes_of, window_in
 
     problem = clone_problem(np.zeros((6, 6)), np.zeros((4, 4)), (1, 1))
     with pytest.raises(TypeError, match="problem must be a PoissonProblem"):
@@ -605,14 +593,8 @@ def test_the_window_helpers_name_what_is_wrong():
 
 
 def test_the_checked_helpers_give_what_the_solvers_use():
-    from course.poisson.problem import (
-        build_clone_problem,
-        clone_problem,
-        image_of,
-        paste_window,
-        planes_of,
-        window_in,
-    )
+    from course.poisson.problem import build_clone_problem, clone_problem, paste_window
+    from course.poisson.windows import image_of, planes_of, window_in
 
     rng = np.random.default_rng(5)
     background, foreground = rng.uniform(0, 1, (9, 10, 3)), rng.uniform(0, 1, (5, 6, 3))

@@ -10,7 +10,7 @@ from drawn_figures import figures_drawn
 
 from course import images, poisson
 from course.i18n import language
-from course.lessons.l08_poisson import figures
+from course.lessons.l08_poisson import convergence, figures
 
 # How far two machines may differ on the lab's record, in intensity units (the image is in
 # [0, 1]). Jacobi's iterate carries the rounding of every sweep, damped by rho per sweep:
@@ -25,7 +25,7 @@ ATOL = 1e-11
 
 
 def test_the_stored_lab_sweeps_are_what_the_solvers_compute_now():
-    stored, fresh = figures.lab_sweeps(), figures.compute_lab_sweeps()
+    stored, fresh = convergence.lab_sweeps(), convergence.compute_lab_sweeps()
     assert stored["region"] == fresh["region"] == [111, 280]
     for method in ("jacobi", "gauss_seidel", "sor"):
         assert stored[method]["sweeps"] == fresh[method]["sweeps"]
@@ -45,7 +45,7 @@ def test_the_stored_lab_sweeps_are_what_the_solvers_compute_now():
 
 
 def test_the_stored_record_shows_what_the_lesson_says():
-    record = figures.lab_sweeps()
+    record = convergence.lab_sweeps()
     final = {method: record[method]["errors"][-1] * 255 for method in ("jacobi", "gauss_seidel")}
     # Gauss-Seidel (the lab's in-place loop) is ahead of Jacobi, and neither is within a grey level.
     assert 1 < final["gauss_seidel"] < final["jacobi"]
@@ -72,12 +72,12 @@ def test_the_day_plane_is_blue_and_an_unknown_sky_is_refused_by_name():
 @pytest.mark.parametrize("path", [3, None, b"x.json"])
 def test_write_lab_sweeps_checks_its_path_before_solving(path):
     with pytest.raises(TypeError, match="path must be a file path"):
-        figures.write_lab_sweeps(path)
+        convergence.write_lab_sweeps(path)
 
 
 def test_write_lab_sweeps_refuses_a_folder(tmp_path):
     with pytest.raises(ValueError, match="is a folder"):
-        figures.write_lab_sweeps(str(tmp_path))
+        convergence.write_lab_sweeps(str(tmp_path))
 
 
 def test_the_tiny_clone_in_chinese_has_chinese_words_and_every_glyph(monkeypatch, caplog):
@@ -86,7 +86,7 @@ def test_the_tiny_clone_in_chinese_has_chinese_words_and_every_glyph(monkeypatch
 
 def test_a_printed_line_follows_the_language():
     with language("zh-CN"):
-        chinese = figures.strip_and_square()
+        chinese = convergence.strip_and_square()
     assert chinese == (
         "3 x 3 正方形：0.7071；3 x 30 长条：0.8510；3 x 300 长条：0.8535；3 x 无穷：0.8536"
     )
@@ -112,7 +112,7 @@ def test_the_tiny_clone_draws_g_on_a_scale_centred_on_0_that_tells_every_value_a
 
 def test_the_lab_s_8000_sweeps_are_called_the_lab_skeleton_s(monkeypatch):
     with figures_drawn(monkeypatch) as drawn:
-        still = figures.convergence_figure()
+        still = convergence.convergence_figure()
     assert "after the lab skeleton's 8000 sweeps" in still.caption
     texts = [text.get_text() for text in drawn[0].axes[0].texts]
     assert "the lab skeleton's 8000" in texts

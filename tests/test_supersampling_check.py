@@ -131,7 +131,7 @@ def test_a_call_to_the_librarys_supersampling_or_lookup_is_told_to_write_it():
     ):
         result = check.image_supersampling(student)
         assert not result
-        assert result.message.startswith("your function calls course.sampling.resample.")
+        assert result.message.startswith("your function calls course.sampling.")
         assert "the library's own answer: this exercise writes it" in result.message
 
 

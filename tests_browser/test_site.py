@@ -192,7 +192,8 @@ def test_a_lesson_page_shows_its_apps_still_pictures_with_the_gallerys_captions(
 
 def solution_triples() -> set[tuple[str, ...]]:
     """Every three consecutive lines the student edition's stubs take out of the solutions."""
-    from course.classroom.edition import cell_source, exercise_stub, solution_cells
+    from course.classroom.edition import cell_source, solution_cells
+    from course.classroom.stubs import exercise_stub
 
     triples = set()
     for path in (REPOSITORY / "notebooks").glob("[0-9][0-9]_*.ipynb"):

@@ -18,11 +18,11 @@ from typing import Any
 import numpy as np
 from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.path import Path
-from matplotlib.transforms import Affine2D
 
 from course import limits
 from course._validate import as_curve, as_points, as_positive_float, as_shape, describe
-from course.curves.paths import as_path, matplotlib_path
+from course.antialias._render import agg_coverage, agg_stroke
+from course.curves.paths import as_path
 from course.i18n import _
 
 __all__ = ["agg_draw", "agg_path", "agg_render"]
@@ -60,8 +60,7 @@ def agg_render(points: Any, shape: Any, width: float = 1.0) -> np.ndarray:
     path = as_path(points)
     height, canvas_width = as_shape(shape)
     width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
-    renderer = agg_draw(matplotlib_path(path), (height, canvas_width), width)
-    return np.asarray(renderer.buffer_rgba())[..., 3] / 255.0
+    return agg_coverage(path, (height, canvas_width), width)
 
 
 def agg_path(control: np.ndarray) -> Path:
@@ -104,15 +103,4 @@ def agg_draw(path: Path, shape: tuple[int, int], width: float) -> RendererAgg:
         )
     height, canvas_width = as_shape(shape)
     width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
-    renderer = RendererAgg(canvas_width, height, 72)
-    context = renderer.new_gc()
-    context.set_linewidth(width)
-    context.set_capstyle("round")
-    context.set_joinstyle("round")
-    context.set_antialiased(True)
-    context.set_snap(False)
-    context.set_foreground((1.0, 1.0, 1.0, 1.0))
-    flip = Affine2D().scale(1.0, -1.0).translate(0.0, height)
-    renderer.draw_path(context, path, flip)
-    context.restore()
-    return renderer
+    return agg_stroke(path, height, canvas_width, width)

@@ -15,7 +15,8 @@ within w / 2 of *any* of its curves, so joins are counted once.
 The geometry lives in its own modules, re-exported here for the lessons:
 which pixels lie near which segment (:mod:`course.antialias.near_pixels`), the exact
 area of a pixel inside a band (:mod:`course.antialias.slab`), and Agg's rendering of
-the same stroke (:mod:`course.antialias.agg`).
+the same stroke (:mod:`course.antialias.agg`). The reference's sampling runs on checked
+input in ``_reference``.
 
 References
 ----------
@@ -25,13 +26,21 @@ References
 
 from __future__ import annotations
 
-from functools import lru_cache
 from typing import Any
 
 import numpy as np
 
 from course import limits
-from course._validate import as_curve, as_int, as_positive_float, as_shape, describe
+from course._validate import (
+    as_curve,
+    as_flattening,
+    as_int,
+    as_positive_float,
+    as_shape,
+)
+from course.antialias._polyline import flattened
+from course.antialias._reference import REFERENCE_TOLERANCE, reference_coverage
+from course.antialias._reference import path_polyline as path_polyline_of
 from course.antialias.agg import agg_draw, agg_path, agg_render
 from course.antialias.near_pixels import (
     HALF_DIAGONAL,
@@ -42,9 +51,7 @@ from course.antialias.near_pixels import (
     subdivide,
 )
 from course.antialias.slab import band_coverage, slab_coverage
-from course.curves.bezier import flatten
-from course.curves.paths import Curves, as_path, flatten_each
-from course.i18n import _
+from course.curves.paths import Curves, as_path
 
 __all__ = [
     "HALF_DIAGONAL",
@@ -64,11 +71,6 @@ __all__ = [
     "subdivide",
 ]
 
-# How far the reference's polyline may stray from the true curve, in pixels.
-REFERENCE_TOLERANCE = 1e-4
-# Sub-sample rows processed at once by the reference (bounds its memory).
-_CHUNK_SAMPLES = 1 << 20
-
 
 def curve_polyline(points: Any, tolerance: float, max_step: float = 1.0) -> np.ndarray:
     """The curve as a polyline within ``tolerance`` of it, segments <= ``max_step``.
@@ -84,10 +86,8 @@ def curve_polyline(points: Any, tolerance: float, max_step: float = 1.0) -> np.n
            [2., 0.]])
     """
     control = as_curve(points)
-    line = flatten(control, tolerance, max_step=max_step)
-    if len(line) == 1:  # a single point: a zero-length segment keeps the caps
-        line = np.vstack([line, line])
-    return line
+    tolerance, limit = as_flattening(control, tolerance, max_step)
+    return flattened(control, tolerance, limit)
 
 
 def path_polyline(path: Curves, tolerance: float) -> tuple[np.ndarray, np.ndarray]:
@@ -99,7 +99,7 @@ def path_polyline(path: Curves, tolerance: float) -> tuple[np.ndarray, np.ndarra
     >>> line.tolist(), gaps.tolist()
     ([[0.0, 0.0], [1.0, 0.0], [3.0, 0.0], [3.0, 1.0]], [False, True, False])
     """
-    return flatten_each(path, lambda control: curve_polyline(control, tolerance))
+    return path_polyline_of(path, tolerance)
 
 
 def reference(points: Any, shape: Any, width: float = 1.0, k: int = 16) -> np.ndarray:
@@ -150,103 +150,4 @@ def reference(points: Any, shape: Any, width: float = 1.0, k: int = 16) -> np.nd
     height, canvas_width = as_shape(shape)
     width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
-    half = 0.5 * width
-    line, gaps = path_polyline(path, REFERENCE_TOLERANCE)
-    near = pixels_near(line, (height, canvas_width), half + HALF_DIAGONAL, gaps=gaps)
-    image = np.zeros(height * canvas_width)
-    if len(near.flat) == 0:
-        return image.reshape(height, canvas_width)
-    nearest = np.full(height * canvas_width, np.inf)
-    np.minimum.at(nearest, near.flat, near.distance)
-    inside = nearest <= half - HALF_DIAGONAL
-    image[inside] = 1.0
-    firsts, coverage = _supersample(near, ~inside[near.flat], half, k)
-    image[near.flat[firsts]] = coverage
-    return image.reshape(height, canvas_width)
-
-
-@lru_cache(maxsize=8)
-def _sample_grid(k: int) -> tuple[np.ndarray, np.ndarray]:
-    """Offsets (x, y) of the k x k samples inside a pixel, row by row."""
-    grid = (np.arange(k) + 0.5) / k
-    sub_x, sub_y = (g.ravel() for g in np.meshgrid(grid, grid))
-    sub_x.flags.writeable = sub_y.flags.writeable = False
-    return sub_x, sub_y
-
-
-def _supersample(
-    near: NearPixels, pairs: np.ndarray, half: float, k: int
-) -> tuple[np.ndarray, np.ndarray]:
-    """Coverage of the pixels whose pairs are selected, by k x k point samples.
-
-    ``pairs`` is a boolean mask over ``near``'s pairs that selects every pair
-    of a pixel or none. A sample of a pixel is inside when it lies within
-    ``half`` of any segment paired with that pixel.
-
-    Returns
-    -------
-    firsts : int ndarray
-        For each selected pixel, the index of its first pair in ``near``.
-    coverage : float ndarray
-        The fraction of its k x k samples inside.
-    """
-    if not isinstance(near, NearPixels):
-        raise TypeError(
-            _("near must be NearPixels, from pixels_near; got {near}").format(near=describe(near))
-        )
-    pairs = np.asarray(pairs)
-    if pairs.dtype != bool or pairs.shape != near.flat.shape:
-        raise ValueError(
-            _(
-                "pairs must be a boolean mask of shape {flat_shape}, one per pair of near; got "
-                "{pairs}"
-            ).format(flat_shape=near.flat.shape, pairs=describe(pairs))
-        )
-    half = as_positive_float(half, "half")
-    k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
-    index = np.flatnonzero(pairs)
-    if len(index) == 0:
-        return index, np.zeros(0)
-    flat = near.flat[index]
-    sub_x, sub_y = _sample_grid(k)
-    # Pairs are sorted by pixel: each pixel's pairs form one run.
-    run_starts = np.flatnonzero(first_of_runs(flat))
-    run_ends = np.r_[run_starts[1:], len(flat)]
-    pairs_per_chunk = max(1, _CHUNK_SAMPLES // (k * k))
-    coverage = np.empty(len(run_starts))
-    first = 0
-    while first < len(run_starts):
-        # Whole runs only, as many as fit in one chunk (at least one).
-        limit = run_starts[first] + pairs_per_chunk
-        last = max(int(np.searchsorted(run_ends, limit, "right")), first + 1)
-        chunk = index[run_starts[first] : run_ends[last - 1]]
-        inside = _within(near, chunk, sub_x, sub_y, half)
-        covered = np.logical_or.reduceat(inside, run_starts[first:last] - run_starts[first], axis=0)
-        coverage[first:last] = covered.mean(axis=1)
-        first = last
-    return index[run_starts], coverage
-
-
-def _within(
-    near: NearPixels, chunk: np.ndarray, sub_x: np.ndarray, sub_y: np.ndarray, half: float
-) -> np.ndarray:
-    """Which samples of the chunk's pairs lie within ``half`` of the pair's segment.
-
-    The test of :func:`segment_distance` on squared distances: everything
-    that depends on the segment alone is computed once per pair, not once
-    per sample, and no square root is taken, which halves the reference's
-    time at k = 32.
-    """
-    segment = near.segment[chunk]
-    start = near.polyline[segment]
-    direction = near.polyline[segment + 1] - start
-    length2 = np.einsum("ij,ij->i", direction, direction)
-    # A point (or a segment so short its square is subnormal) is measured from its start.
-    inverse = np.where(length2 > 1e-300, 1.0 / np.where(length2 > 1e-300, length2, 1.0), 0.0)
-    ux, uy = (direction * inverse[:, None]).T
-    dx = (near.x[chunk] - start[:, 0])[:, None] + sub_x
-    dy = (near.y[chunk] - start[:, 1])[:, None] + sub_y
-    along = np.clip(dx * ux[:, None] + dy * uy[:, None], 0.0, 1.0)
-    ex = dx - along * direction[:, 0, None]
-    ey = dy - along * direction[:, 1, None]
-    return ex * ex + ey * ey <= half * half
+    return reference_coverage(path, (height, canvas_width), width, k)

@@ -21,17 +21,24 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import as_choice, as_curve, as_gray, as_positive_float, as_shape
-from course.antialias import RENDER_METHODS, SPLATS, render
-from course.antialias.coverage import (
-    agg_render,
-    curve_polyline,
-    first_of_runs,
-    pixels_near,
-    reference,
+from course._metrics import max_difference, rms_difference
+from course._validate import (
+    as_choice,
+    as_curve,
+    as_gray,
+    as_image_like,
+    as_int,
+    as_positive_float,
+    as_shape,
+    require_bounded_flattening,
 )
+from course.antialias import RENDER_METHODS, SPLATS
+from course.antialias._polyline import flattened
+from course.antialias._reference import reference_coverage
+from course.antialias._render import agg_coverage, render_path
+from course.antialias.near_pixels import first_of_runs, pixels_near
+from course.curves.paths import Curves
 from course.i18n import _
-from course.metrics import max_error, rmse
 from course.raster.canvas import crop_extent
 
 __all__ = [
@@ -63,11 +70,16 @@ REFERENCE = "exact reference"
 METRIC_TOLERANCE = 1e-3
 # Pixels farther than this from the curve are not counted as part of it.
 METRIC_REACH = 3.0
+# Longest segment of the polyline the profile and the centroid offsets measure along.
+_PROFILE_STEP = 1.0
+_OFFSETS_STEP = 0.5
+# The knots' spacing of the uniformity a quality table reports.
+_PIECE_LENGTH = 8.0
 
 
 def _curve_positions(image: np.ndarray, control: np.ndarray) -> tuple[np.ndarray, ...]:
     """Arc length of the nearest curve point of every pixel near the curve."""
-    line = curve_polyline(control, METRIC_TOLERANCE)
+    line = flattened(control, METRIC_TOLERANCE, _PROFILE_STEP)
     near = pixels_near(line, image.shape, METRIC_REACH)
     first = first_of_runs(near.flat)
     pieces = np.hypot(*np.diff(near.polyline, axis=0).T)
@@ -114,9 +126,23 @@ def intensity_along(
     >>> s.round(1).tolist(), density.round(3).tolist()
     ([6.0, 12.0, 18.0, 24.0, 30.0], [1.0, 1.0, 1.0, 1.0, 1.0])
     """
+    return _intensity_along(*_checked_profile(image, points, piece_length))
+
+
+def _checked_profile(image: Any, points: Any, piece_length: Any) -> tuple[np.ndarray, ...]:
+    """:func:`intensity_along`'s checks: the image, the curve, the knots' spacing, and then
+    what flattening the curve at the metric's tolerance costs."""
     gray = as_gray(image, "image")
     control = as_curve(points)
     piece_length = as_positive_float(piece_length, "piece_length")
+    require_bounded_flattening(control, METRIC_TOLERANCE, _PROFILE_STEP)
+    return gray, control, piece_length
+
+
+def _intensity_along(
+    gray: np.ndarray, control: np.ndarray, piece_length: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`intensity_along` of checked arguments."""
     position, intensity, length = _curve_positions(gray, control)
     if length <= 0:
         raise ValueError(_("points: the curve has no length, so no intensity per unit length"))
@@ -152,7 +178,12 @@ def uniformity(image: Any, points: Any, piece_length: float = 8.0) -> float:
     >>> round(uniformity(reference(line, (9, 40)), line, piece_length=6), 6)
     0.0
     """
-    _positions, density = intensity_along(image, points, piece_length)
+    return _uniformity(*_checked_profile(image, points, piece_length))
+
+
+def _uniformity(gray: np.ndarray, control: np.ndarray, piece_length: float) -> float:
+    """:func:`uniformity` of checked arguments."""
+    _positions, density = _intensity_along(gray, control, piece_length)
     mean = density.mean()
     if mean <= 0:
         raise ValueError(_("image: nothing is drawn along the curve, uniformity is undefined"))
@@ -198,10 +229,22 @@ def centroid_offsets(image: Any, points: Any, width: float = 1.0) -> CentroidOff
     >>> offsets.where.tolist(), offsets.offset.tolist()
     ([1.5, 2.5, 3.5, 4.5, 5.5, 6.5], [0.25, 0.25, 0.25, 0.25, 0.25, 0.25])
     """
+    return _centroid_offsets(*_checked_offsets(image, points, width))
+
+
+def _checked_offsets(image: Any, points: Any, width: Any) -> tuple[np.ndarray, np.ndarray, float]:
+    """:func:`centroid_offsets`'s checks: the image, the curve, the stroke's width, and then
+    what flattening the curve at the metric's tolerance costs."""
     gray = as_gray(image, "image")
     control = as_curve(points)
     width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
-    line = curve_polyline(control, METRIC_TOLERANCE, max_step=0.5)
+    require_bounded_flattening(control, METRIC_TOLERANCE, _OFFSETS_STEP)
+    return gray, control, width
+
+
+def _centroid_offsets(gray: np.ndarray, control: np.ndarray, width: float) -> CentroidOffsets:
+    """:func:`centroid_offsets` of checked arguments."""
+    line = flattened(control, METRIC_TOLERANCE, _OFFSETS_STEP)
     window = 0.5 * width + 1.5
     results = [
         _offsets(gray, line, window, columns=True),
@@ -252,7 +295,12 @@ def position_error(image: Any, points: Any, width: float = 1.0) -> float:
     >>> position_error(image, [[1.0, 2.25], [7.0, 2.25]])
     0.25
     """
-    offsets = centroid_offsets(image, points, width).offset
+    return _position_error(*_checked_offsets(image, points, width))
+
+
+def _position_error(gray: np.ndarray, control: np.ndarray, width: float) -> float:
+    """:func:`position_error` of checked arguments."""
+    offsets = _centroid_offsets(gray, control, width).offset
     if len(offsets) == 0:
         raise ValueError(_("image: no column or row near the curve is drawn"))
     return float(np.mean(np.abs(offsets)))
@@ -267,12 +315,24 @@ def render_variant(name: str, points: Any, shape: Any, width: float = 1.0) -> np
     (4, 10)
     """
     name = as_choice(name, "name", VARIANTS)
-    control = as_curve(points)
+    path = _curve_path(as_curve(points))
+    canvas = as_shape(shape)
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
+    return _render_variant(name, path, canvas, width)
+
+
+def _curve_path(control: np.ndarray) -> Curves:
+    """A checked curve as the one curve of a path, as course.curves.paths.as_path makes it."""
+    return Curves(control, np.array([len(control)]))
+
+
+def _render_variant(name: str, path: Curves, canvas: tuple[int, int], width: float) -> np.ndarray:
+    """:func:`render_variant` of checked arguments."""
     if name == AGG:
-        return agg_render(control, shape, width)
+        return agg_coverage(path, canvas, width)
     if name.endswith(ARC_LENGTH):
-        return render(control, shape, name[: -len(ARC_LENGTH)], width, weighting="arc_length")
-    return render(control, shape, name, width)
+        return render_path(path, canvas, name[: -len(ARC_LENGTH)], width, None, "arc_length")
+    return render_path(path, canvas, name, width, None, "count")
 
 
 def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarray]:
@@ -288,12 +348,13 @@ def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarra
     >>> len(images), images[AGG].shape
     (17, (4, 10))
     """
-    control = as_curve(points)
-    shape = as_shape(shape)
+    path = _curve_path(as_curve(points))
+    canvas = as_shape(shape)
+    width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     # Agg takes degrees 1 to 3 only: drawn first, a curve it refuses costs nothing else.
-    drawn = {AGG: render_variant(AGG, control, shape, width)}
+    drawn = {AGG: _render_variant(AGG, path, canvas, width)}
     return {
-        name: drawn[name] if name in drawn else render_variant(name, control, shape, width)
+        name: drawn[name] if name in drawn else _render_variant(name, path, canvas, width)
         for name in VARIANTS
     }
 
@@ -325,10 +386,24 @@ def render_window(
     moved = control - (left, top)
     window_shape = (bottom - top, right - left)
     if name == REFERENCE:
-        window = reference(moved, window_shape, width, k)
+        path = _moved_path(moved)
+        width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
+        k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
+        window = reference_coverage(path, window_shape, width, k)
     else:
-        window = render_variant(name, moved, window_shape, width)
+        name = as_choice(name, "name", VARIANTS)
+        path = _moved_path(moved)
+        width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
+        window = _render_variant(name, path, window_shape, width)
     return window, (left, right, bottom, top)
+
+
+def _moved_path(moved: np.ndarray) -> Curves:
+    """A checked curve moved by a window's corner, as one curve of a path: its points can
+    have left the coordinates' bound, refused then as the curve itself would be."""
+    if np.abs(moved).max() > limits.MAX_COORDINATE:
+        as_curve(moved)  # refused, as before
+    return _curve_path(moved)
 
 
 def quality_table(
@@ -354,13 +429,22 @@ def quality_table(
         )
     rows = []
     for name, image in images.items():
-        rows.append(
-            {
-                "name": name,
-                "rmse": rmse(image, truth),
-                "max": max_error(image, truth),
-                "cv": uniformity(image, control),
-                "position": position_error(image, control, width),
-            }
-        )
+        array = as_image_like(image, truth)  # gray, since the reference is
+        gray = array.astype(float)
+        first = not rows
+        row = {
+            "name": name,
+            "rmse": rms_difference(array, truth),
+            "max": max_difference(array, truth),
+        }
+        # The curve's flattening and the width, checked at the first image, where the
+        # measures of the profile and of the offsets check them.
+        if first:
+            require_bounded_flattening(control, METRIC_TOLERANCE, _PROFILE_STEP)
+        row["cv"] = _uniformity(gray, control, _PIECE_LENGTH)
+        if first:
+            width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
+            require_bounded_flattening(control, METRIC_TOLERANCE, _OFFSETS_STEP)
+        row["position"] = _position_error(gray, control, width)
+        rows.append(row)
     return rows

@@ -17,7 +17,8 @@ rendering, re-exported here.
 :func:`render` draws a curve, or a whole path (a list of curves, a
 ``matplotlib.path.Path``, a line of text from :func:`text_curves`), with any
 of :data:`RENDER_METHODS`. A path is one stroke: where its curves join, the
-stroke methods count the overlap once.
+stroke methods count the overlap once. Each function here checks its arguments once;
+the drawing itself runs on checked input in ``_render``.
 
 References
 ----------
@@ -41,14 +42,19 @@ from course._validate import (
     as_points,
     as_positive_float,
     as_shape,
-    describe,
-    require_bounded_evaluation,
+)
+from course.antialias._render import (
+    DEFAULT_STEP,
+    STROKE_TOLERANCE,
+    default_arc_length_step,
+    evaluate,
+    render_path,
+    stroke_linear_coverage,
+    with_gaps,
 )
 from course.antialias.coverage import agg_render, reference
-from course.antialias.near_pixels import first_of_runs, pixels_near
 from course.antialias.splats import (
     ONE_SAMPLE,
-    PIXELS_PER_SAMPLE,
     SPLAT_METHODS,
     SPLATS,
     arc_length_weights,
@@ -62,10 +68,9 @@ from course.antialias.splats import (
     subsample_falloff,
 )
 from course.antialias.stroke import stroke_coverage
-from course.curves.bezier import bezier_bernstein, de_casteljau, uniform_parameters
-from course.curves.paths import as_path, flatten_uniform, text_curves
+from course.curves.flattening import uniform_parameters
+from course.curves.paths import as_path, text_curves
 from course.i18n import _
-from course.raster.canvas import painted
 
 __all__ = [
     "DEFAULT_STEP",
@@ -96,12 +101,6 @@ __all__ = [
     "wang_segments",
 ]
 
-# The handouts' loop: for (t = 0; t <= 1; t += 0.001).
-DEFAULT_STEP = 0.001
-# Largest distance between samples the arc-length fix picks by itself, in pixels.
-ARC_LENGTH_SPACING = 0.5
-# Largest distance from the flattened curve to the true one in the stroke methods.
-STROKE_TOLERANCE = 0.01
 WEIGHTINGS = ("count", "arc_length")
 # Samples per pixel side for the round caps of stroke_area.
 CAP_SAMPLES = 16
@@ -127,7 +126,11 @@ def wang_segments(points: Any, tolerance: float) -> int:
     15
     """
     control = as_curve(points)
-    tolerance = as_positive_float(tolerance, "tolerance")
+    return _wang_segments(control, as_positive_float(tolerance, "tolerance"))
+
+
+def _wang_segments(control: np.ndarray, tolerance: float) -> int:
+    """:func:`wang_segments` of a checked curve and tolerance."""
     degree = len(control) - 1
     if degree < 2:
         return 1
@@ -139,8 +142,8 @@ def wang_segments(points: Any, tolerance: float) -> int:
 def stroke_polyline(points: Any, tolerance: float = STROKE_TOLERANCE) -> np.ndarray:
     """The curve flattened for the stroke methods: Wang's count of uniform steps."""
     control = as_curve(points)
-    count = wang_segments(control, tolerance)
-    return _evaluate(control, np.linspace(0.0, 1.0, count + 1))
+    count = _wang_segments(control, as_positive_float(tolerance, "tolerance"))
+    return evaluate(control, np.linspace(0.0, 1.0, count + 1))
 
 
 def _canvas(
@@ -170,18 +173,7 @@ def _as_polyline(polyline: Any, gaps: Any) -> tuple[np.ndarray, np.ndarray]:
                 line_shape=line.shape
             )
         )
-    if len(line) == 1:
-        line = np.vstack([line, line])
-    if gaps is None:
-        return line, np.zeros(len(line) - 1, dtype=bool)
-    mask = np.asarray(gaps)
-    if mask.dtype != bool or mask.shape != (len(line) - 1,):
-        raise ValueError(
-            _(
-                "gaps must be a bool array of shape ({line_count},), one per segment; got {gaps}"
-            ).format(line_count=len(line) - 1, gaps=describe(gaps))
-        )
-    return line, mask
+    return with_gaps(line, gaps)
 
 
 def stroke_linear(
@@ -206,7 +198,7 @@ def stroke_linear(
         Keep only pixels on this canvas.
     gaps : bool array_like, shape (K - 1,), optional
         True for segments not drawn: the pen moving between the subpaths
-        of a path (:func:`course.curves.paths.flatten_uniform`).
+        of a path (:func:`course.curves.drawable_paths.flatten_uniform`).
 
     Returns
     -------
@@ -221,15 +213,8 @@ def stroke_linear(
     """
     line, gaps = _as_polyline(polyline, gaps)
     width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
-    reach = 0.5 * width + 0.5
-    canvas, origin = _canvas(line, shape, reach)
-    near = pixels_near(line, canvas, reach, origin, gaps=gaps)
-    # Pairs are sorted by pixel, nearest segment first.
-    first = first_of_runs(near.flat)
-    pixels = np.stack([near.x[first], near.y[first]], axis=1)
-    weights = np.clip(reach - near.distance[first], 0.0, 1.0)
-    keep = weights > 0
-    return pixels[keep], weights[keep]
+    canvas, origin = _canvas(line, shape, 0.5 * width + 0.5)
+    return stroke_linear_coverage(line, gaps, width, canvas, origin)
 
 
 def stroke_area(
@@ -347,55 +332,7 @@ def render(
     weighting = as_choice(weighting, "weighting", WEIGHTINGS)
     if step is not None:
         step = as_positive_float(step, "step")
-    if method == "stroke_area":
-        # The fast path: the exact coverage straight into a new canvas.
-        line, gaps = flatten_uniform(path, STROKE_TOLERANCE)
-        return stroke_coverage(line, gaps, 0.5 * width, (height, canvas_width))
-    if method == "stroke_linear":
-        line, gaps = flatten_uniform(path, STROKE_TOLERANCE)
-        pixels, weights = stroke_linear(line, width, (height, canvas_width), gaps)
-        # Each pixel comes once: "max" writes it without a saturating sum.
-        return painted((height, canvas_width), pixels, 1.0, weights, mode="max")
-    # The handouts' loop, curve after curve; every splat adds, with saturation.
-    controls = path.split() if len(path.sizes) > 1 else [path.points]
-    steps = [
-        step
-        if step is not None
-        else (DEFAULT_STEP if weighting == "count" else arc_length_step(control))
-        for control in controls
-    ]
-    _require_few_samples(steps, step is not None)
-    all_pixels, all_weights = [], []
-    for control, own_step in zip(controls, steps, strict=True):
-        samples = curve_samples(control, own_step)
-        pixels, weights = splat(samples, method)
-        if weighting == "arc_length":
-            spread = np.repeat(arc_length_weights(samples) * width, PIXELS_PER_SAMPLE[method])
-            weights = np.minimum(weights * spread, 1)
-        all_pixels.append(pixels)
-        all_weights.append(weights)
-    if len(all_pixels) > 1:
-        all_pixels, all_weights = [np.concatenate(all_pixels)], [np.concatenate(all_weights)]
-    return painted((height, canvas_width), all_pixels[0], 1.0, all_weights[0])
-
-
-def _require_few_samples(steps: list[float], given: bool) -> None:
-    """ValueError before sampling when the curves' t steps add up to too many samples."""
-    total = sum(np.floor(1 / step * (1 + 1e-12)) + 1 for step in steps)
-    if total > limits.MAX_STEP_SAMPLES:
-        cause = "step" if given else "points (a long curve takes a fine default step)"
-        raise ValueError(
-            _(
-                "{cause}: the splat methods would take about {total:.3g} samples over "
-                "{steps_count} curves, more than the {most} allowed; use a larger "
-                "step, fewer or shorter curves, or a stroke method"
-            ).format(
-                cause=cause,
-                total=total,
-                steps_count=len(steps),
-                most=limits.MAX_STEP_SAMPLES,
-            )
-        )
+    return render_path(path, (height, canvas_width), method, width, step, weighting)
 
 
 def curve_samples(points: Any, step: float) -> np.ndarray:
@@ -413,13 +350,7 @@ def curve_samples(points: Any, step: float) -> np.ndarray:
            [2., 2.],
            [4., 0.]])
     """
-    return _evaluate(as_curve(points), uniform_parameters(step))
-
-
-def _evaluate(control: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Points of the curve: the Bernstein form up to cubics, de Casteljau beyond."""
-    require_bounded_evaluation(len(control), len(t))
-    return bezier_bernstein(control, t) if len(control) <= 4 else de_casteljau(control, t)
+    return evaluate(as_curve(points), uniform_parameters(step))
 
 
 def arc_length_step(points: Any) -> float:
@@ -437,8 +368,4 @@ def arc_length_step(points: Any) -> float:
     >>> round(arc_length_step(SEED_000_CUBIC), 7)
     0.0001733
     """
-    control = as_curve(points)
-    if len(control) < 2:
-        return DEFAULT_STEP
-    speed = (len(control) - 1) * np.hypot(*np.diff(control, axis=0).T).max()
-    return float(min(DEFAULT_STEP, ARC_LENGTH_SPACING / speed)) if speed > 0 else DEFAULT_STEP
+    return default_arc_length_step(as_curve(points))

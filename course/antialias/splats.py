@@ -6,9 +6,10 @@ for each curve point, brighten a few pixels around it with weights that fall
 off with distance. Each of their *splats* is here, faithfully, as a function
 ``splat(samples) -> (pixels, weights)``: ``pixels`` is an int ``(K, 2)`` array
 of (x, y), ``weights`` a float ``(K,)`` array in [0, 1], in sample order,
-optionally clipped to a canvas with ``shape=(H, W)``. Beside each vectorized
-splat is its one-sample form, written like the C++ (:data:`ONE_SAMPLE`), and
-``splat(samples, kind, method="loop")`` runs it sample by sample.
+optionally clipped to a canvas with ``shape=(H, W)``. Beside each splat is its
+one-sample form, written like the C++ (:data:`ONE_SAMPLE`), and
+``splat(samples, kind, method="loop")`` runs it sample by sample; the vectorized
+form, all samples at once, is array code on checked samples in ``_splats``.
 
 :mod:`course.antialias` draws curves with them (and with stroke coverage).
 
@@ -30,8 +31,10 @@ import numpy as np
 
 from course import limits
 from course._validate import as_choice, as_points, as_shape
+from course.antialias._splats import SQRT2, SUBSAMPLE_MAX_DISTANCE, splat_points
+from course.antialias._splats import arc_length_weights as arc_length_weights_of
 from course.i18n import _
-from course.raster.canvas import inside
+from course.raster._paint import on_canvas
 
 __all__ = [
     "ONE_SAMPLE",
@@ -49,10 +52,6 @@ __all__ = [
     "subsample_falloff",
 ]
 
-SQRT2 = math.sqrt(2.0)
-# Seed 002's normaliser: the farthest a point can be from a sub-sample of its pixel.
-SUBSAMPLE_MAX_DISTANCE = math.sqrt(1.125)
-
 
 def _as_samples(samples: Any) -> np.ndarray:
     array = as_points(samples, "samples", bound=limits.MAX_COORDINATE)
@@ -69,19 +68,8 @@ def _as_samples(samples: Any) -> np.ndarray:
 def _clipped(pixels: np.ndarray, weights: np.ndarray, shape: Any) -> tuple[np.ndarray, np.ndarray]:
     if shape is None:
         return pixels, weights
-    keep = inside(pixels, as_shape(shape))
+    keep = on_canvas(pixels, as_shape(shape))
     return pixels[keep], weights[keep]
-
-
-def _block(
-    corner_x: np.ndarray, corner_y: np.ndarray, weights: list[np.ndarray], order: list[tuple]
-) -> tuple[np.ndarray, np.ndarray]:
-    """Stack per-sample pixel offsets (dx, dy) from a corner, sample by sample."""
-    offsets = np.array(order, dtype=np.int64)
-    x = corner_x.astype(np.int64)[:, None] + offsets[:, 0]
-    y = corner_y.astype(np.int64)[:, None] + offsets[:, 1]
-    pixels = np.stack([x.ravel(), y.ravel()], axis=1)
-    return pixels, np.stack(weights, axis=1).ravel()
 
 
 # --- nearest pixel: no anti-aliasing ------------------------------------------
@@ -101,9 +89,7 @@ def nearest_truncate(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.nd
     >>> pixels.tolist(), weights.tolist()
     ([[2, 1], [0, 0]], [1.0, 1.0])
     """
-    points = _as_samples(samples)
-    pixels = np.trunc(points).astype(np.int64)
-    return _clipped(pixels, np.ones(len(pixels)), shape)
+    return _clipped(*splat_points(_as_samples(samples), "nearest_truncate"), shape)
 
 
 def nearest_round(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.ndarray]:
@@ -119,9 +105,7 @@ def nearest_round(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.ndarr
     >>> nearest_round([[2.7, 1.2], [0.5, 1.5]])[0].tolist()
     [[3, 1], [0, 2]]
     """
-    points = _as_samples(samples)
-    pixels = np.rint(points).astype(np.int64)
-    return _clipped(pixels, np.ones(len(pixels)), shape)
+    return _clipped(*splat_points(_as_samples(samples), "nearest_round"), shape)
 
 
 # --- seed 000: three versions of addColor ---------------------------------------
@@ -144,14 +128,7 @@ def bilinear_zero_offset(samples: Any, shape: Any = None) -> tuple[np.ndarray, n
     >>> pixels.tolist(), weights.tolist()
     ([[3, 1], [4, 1], [3, 2], [4, 2]], [1.0, 0.0, 0.0, 0.0])
     """
-    points = _as_samples(samples)
-    x, y = points[:, 0], points[:, 1]
-    # Each corner is rounded on its own, as cv::Point(p2) etc. would.
-    corners = [(x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)]
-    pixels = np.stack([np.rint(np.stack(c, axis=1)) for c in corners], axis=1)
-    dx, dy = x - x, y - y
-    weights = np.stack([(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy], axis=1).ravel()
-    return _clipped(pixels.reshape(-1, 2).astype(np.int64), weights, shape)
+    return _clipped(*splat_points(_as_samples(samples), "bilinear_zero_offset"), shape)
 
 
 def bilinear_corners(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.ndarray]:
@@ -173,18 +150,7 @@ def bilinear_corners(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.nd
     >>> pixels.tolist(), weights.tolist()
     ([[2, 1], [3, 1], [2, 2], [3, 2]], [0.375, 0.125, 0.375, 0.125])
     """
-    points = _as_samples(samples)
-    corner = np.floor(points)
-    dx, dy = (points - corner).T
-    weights = [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy]
-    return _clipped(
-        *_block(corner[:, 0], corner[:, 1], weights, [(0, 0), (1, 0), (0, 1), (1, 1)]), shape
-    )
-
-
-def _round_half_away(values: np.ndarray) -> np.ndarray:
-    """C++ ``std::round``: halves away from zero (numpy's rint rounds them to even)."""
-    return np.copysign(np.floor(np.abs(values) + 0.5), values)
+    return _clipped(*splat_points(_as_samples(samples), "bilinear_corners"), shape)
 
 
 def bilinear_centres(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.ndarray]:
@@ -208,14 +174,7 @@ def bilinear_centres(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.nd
     >>> weights.tolist()
     [1.0, 0.0, 0.0, 0.0, 0.75, 0.25, 0.0, 0.0]
     """
-    points = _as_samples(samples)
-    center = _round_half_away(points)
-    dx, dy = (points - (center - 0.5)).T
-    weights = [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy]
-    return _clipped(
-        *_block(center[:, 0] - 1, center[:, 1] - 1, weights, [(0, 0), (1, 0), (0, 1), (1, 1)]),
-        shape,
-    )
+    return _clipped(*splat_points(_as_samples(samples), "bilinear_centres"), shape)
 
 
 # --- seed 002 and seed 003 -----------------------------------------------------
@@ -242,14 +201,7 @@ def subsample_falloff(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.n
     >>> pixels.tolist(), weights.round(4).tolist()
     ([[2, 1], [2, 1]], [0.6667, 0.294])
     """
-    points = _as_samples(samples)
-    corner = np.floor(points)
-    fx, fy = (points - corner).T
-    total = np.zeros(len(points))
-    for sx, sy in ((0.25, 0.25), (0.75, 0.25), (0.25, 0.75), (0.75, 0.75)):
-        distance = np.hypot(fx - sx, fy - sy)
-        total += (SUBSAMPLE_MAX_DISTANCE - distance) / SUBSAMPLE_MAX_DISTANCE
-    return _clipped(corner.astype(np.int64), total / 4, shape)
+    return _clipped(*splat_points(_as_samples(samples), "subsample_falloff"), shape)
 
 
 def normalised_centres(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.ndarray]:
@@ -270,17 +222,7 @@ def normalised_centres(samples: Any, shape: Any = None) -> tuple[np.ndarray, np.
     >>> pixels.tolist(), weights.round(4).tolist()
     ([[3, 2], [2, 2], [3, 1], [2, 1]], [0.0, 0.1847, 0.1847, 0.6306])
     """
-    points = _as_samples(samples)
-    low = np.floor(points)
-    p0 = np.where(points - low < 0.5, low, np.ceil(points))
-    order = [(0, 0), (-1, 0), (0, -1), (-1, -1)]
-    raw = [
-        SQRT2 - np.hypot(points[:, 0] - (p0[:, 0] + ox + 0.5), points[:, 1] - (p0[:, 1] + oy + 0.5))
-        for ox, oy in order
-    ]
-    total = np.sum(raw, axis=0)
-    weights = [w / total for w in raw]
-    return _clipped(*_block(p0[:, 0], p0[:, 1], weights, order), shape)
+    return _clipped(*splat_points(_as_samples(samples), "normalised_centres"), shape)
 
 
 # --- the same splats, one sample at a time, as the handouts write them ----------
@@ -423,7 +365,4 @@ def arc_length_weights(samples: Any) -> np.ndarray:
     >>> arc_length_weights([[0, 0], [3, 4], [3, 5]])
     array([2.5, 3. , 0.5])
     """
-    points = _as_samples(samples)
-    chords = np.hypot(*np.diff(points, axis=0).T)
-    padded = np.concatenate([[0.0], chords, [0.0]])
-    return 0.5 * (padded[:-1] + padded[1:])
+    return arc_length_weights_of(_as_samples(samples))

@@ -50,6 +50,7 @@ from course.check.answers import (
     show_value,
 )
 from course.check.comparisons import close, first_difference, pixel_difference, same_pixels
+from course.check.exercises import what_run_cases_takes
 from course.check.hints import Hint, Hints, failure_hint, hint, register_hints
 from course.check.references import CallBudget, call_budget, forbidden_message, known_mistake
 from course.check.sandbox import (
@@ -228,7 +229,7 @@ def run_cases(
     compare: Callable[[Any, Any], bool],
     convert: Callable[[Any], Any] = lambda value: value,
     *,
-    hint: str | Hints,
+    hint: str | Hints | None = None,
     mistakes: Sequence[Mistake] = (),
     difference: Callable[[Any, Any], str] = first_difference,
     picture: Callable[[Case, Any, Any], bytes | None] | None = None,
@@ -268,7 +269,8 @@ def run_cases(
     expected, given)`` and the next step of ``hint``. ``watch()``, if given,
     makes a context manager the student's code runs under, each case anew
     (:func:`call_budget`); ``forbidden`` maps the library's own answers to
-    the message given when the student's code calls or names one. On a pass,
+    the message given when the student's code calls or names one; ``hint`` and ``forbidden``
+    default to the exercise's declaration (:func:`course.check.exercises.exercise`). On a pass,
     ``pass_picture`` draws the (case, expected, given) of every case.
     """
     if not callable(student):
@@ -277,6 +279,7 @@ def run_cases(
                 exercise=exercise, type=type(student).__name__
             )
         )
+    hint, forbidden = what_run_cases_takes(exercise, hint, forbidden)
     cases = _validated_cases(cases)
     report = _Report(exercise, hint)
     parameters = tuple(cases[0]) if cases else ()

@@ -17,28 +17,7 @@ from typing import Any
 
 from course.i18n import _
 
-__all__ = ["CallBudget", "call_budget", "forbidden_message", "known_mistake", "public_name"]
-
-
-def public_name(function: Any) -> str:
-    """The shortest dotted name a student imports ``function`` by.
-
-    A topic package re-exports its main module's functions, so
-    ``course.poisson.editing.seamless_clone`` is shown as ``course.poisson.seamless_clone``.
-
-    Examples
-    --------
-    >>> from course.poisson import seamless_clone
-    >>> public_name(seamless_clone)
-    'course.poisson.seamless_clone'
-    """
-    module, name = function.__module__, function.__name__
-    parts = module.split(".")
-    for end in range(1, len(parts)):
-        package = sys.modules.get(".".join(parts[:end]))
-        if package is not None and getattr(package, name, None) is function:
-            return f"{package.__name__}.{name}"
-    return f"{module}.{name}"
+__all__ = ["CallBudget", "call_budget", "forbidden_message", "known_mistake"]
 
 
 class CallBudget(Exception):

@@ -25,7 +25,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from course.classroom import edition, gallery, link, nbgrader
+from course.classroom import edition_folder, gallery, link, nbgrader
 from course.classroom.course_map import course_map, update_readme
 from course.classroom.notebooks import (
     DEFAULT_LANGUAGE,
@@ -291,7 +291,7 @@ def _run(
                 # student/ is the edition's own folder: one written before the edition kept
                 # a manifest is taken over (its notebooks count as the student's work).
                 student = language_folder(args.notebooks.resolve().parent / "student", language)
-                report = edition.write_student_edition(student, lessons_folder, force=True)
+                report = edition_folder.write_student_edition(student, lessons_folder, force=True)
                 shown = student.relative_to(args.notebooks.resolve().parent).as_posix()
                 for line in report.lines():
                     print(f"{shown}/: {line}", file=sys.stderr)
@@ -324,7 +324,7 @@ def _run(
         elif args.command == "nbgrader":
             written = nbgrader.write_nbgrader_course(args.out, lessons_folder, args.force)
         else:
-            report = edition.write_student_edition(args.out, lessons_folder, args.force)
+            report = edition_folder.write_student_edition(args.out, lessons_folder, args.force)
             for line in report.lines():
                 print(f"{args.out}: {line}", file=sys.stderr)
             return 0

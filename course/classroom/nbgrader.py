@@ -16,18 +16,14 @@ report, when the answer is wrong: the report is the feedback.
 
 A mistake is charged once. An exercise that calls an earlier one
 (lesson 01's ``recursive_bezier`` calls ``next_level``) is graded with the
-library's reference for the earlier function (:func:`earlier_exercises`).
-
-Building is standard library only; :func:`earlier_exercises` and
-:func:`reference` run in the grading kernel, which has the library.
+earlier exercise's ``grader_reference``, which its checker declares
+(:func:`course.check.exercises.exercise`; :func:`earlier_exercises`).
 """
 
 from __future__ import annotations
 
 import ast
 import copy
-import importlib
-import itertools
 import os
 import shutil
 import tempfile
@@ -38,29 +34,30 @@ from pathlib import Path
 from typing import Any
 
 from course.classroom.edition import (
-    BEGIN_SOLUTION,
-    END_SOLUTION,
     KERNELSPEC,
     SOLUTION_TAG,
-    STUB_LINE,
     cell_source,
     hidden_note,
     notebook_language,
     notebook_text,
-    parse_solution,
     read_notebook,
     reveals,
-    solution_bodies,
     solution_cells,
     translated,
 )
 from course.classroom.folders import check_output_folder
 from course.classroom.notebooks import DEFAULT_LANGUAGE, NOTEBOOKS, notebooks
+from course.classroom.stubs import (
+    BEGIN_SOLUTION,
+    END_SOLUTION,
+    STUB_LINE,
+    parse_solution,
+    solution_bodies,
+)
 from course.i18n import N_, _
 
 __all__ = [
     "EXERCISE_POINTS",
-    "REFERENCES",
     "Exercise",
     "earlier_exercises",
     "exercises",
@@ -85,18 +82,6 @@ _EARLIER_COMMENT = N_(
 )
 #: nbgrader's cell metadata schema.
 SCHEMA_VERSION = 3
-#: The library's answer to each exercise that a later one builds on, as "module:name":
-#: what a later exercise is graded with, so that a mistake is charged once.
-# The grader's own answers, written here: the checkers refuse an answer that runs the
-# library's (course.curves.bezier.de_casteljau, binomial, course.sampling.resample.bilinear), and an
-# exercise graded with an earlier one's answer runs it inside the student's code.
-REFERENCES = {
-    "next_level": "course.classroom.nbgrader:_next_level",
-    "recursive_bezier": "course.classroom.nbgrader:_recursive_bezier",
-    "comb": "course.classroom.nbgrader:_comb",
-    "bilinear_sample": "course.classroom.nbgrader:_bilinear_sample",
-}
-
 CONFIG = '''"""nbgrader's configuration for the course, written by `python -m course nbgrader`."""
 
 c = get_config()  # noqa: F821 (nbgrader defines it)
@@ -185,12 +170,12 @@ def exercises(notebook: dict[str, Any]) -> list[Exercise]:
             )
         called = {node.id for node in ast.walk(body) if isinstance(node, ast.Name)}
         uses = tuple(earlier.function for earlier in found if earlier.function in called)
-        unreferenced = [name for name in uses if name not in REFERENCES]
+        unreferenced = [name for name in uses if _grader_reference(name) is None]
         if unreferenced:
             raise ValueError(
                 _(
                     "notebook cell {index}: {function} calls the earlier exercise {unreferenced}, "
-                    "which has no reference in REFERENCES to grade it with"
+                    "whose checker declares no grader_reference to grade it with"
                 ).format(index=index, function=function, unreferenced=unreferenced[0])
             )
         found.append(Exercise(function, ast.unparse(call), uses, index))
@@ -335,22 +320,39 @@ def write_nbgrader_course(
     return written
 
 
+def _grader_reference(name: str) -> Callable[..., Any] | None:
+    """The declared grader's answer to the exercise whose function is ``name``, or None."""
+    from course.check.exercises import declared
+    from course.classroom.exercise_list import course_exercises
+
+    try:
+        found = declared(name)
+    except LookupError:
+        course_exercises()  # imports every chapter's checkers, which declares them
+        try:
+            found = declared(name)
+        except LookupError:
+            return None
+    return found.grader_reference
+
+
 def reference(name: str) -> Callable[..., Any]:
-    """The library's answer to the exercise ``name`` (a key of :data:`REFERENCES`).
+    """The grader's answer to the exercise whose function is ``name``, as its checker declares.
 
     Examples
     --------
     >>> reference("comb")(5, 2)
     10
     """
-    if not isinstance(name, str) or name not in REFERENCES:
+    found = _grader_reference(name) if isinstance(name, str) else None
+    if found is None:
         raise ValueError(
-            _("name: expected one of {choices}; got {name:.60}").format(
-                choices=sorted(REFERENCES), name=repr(name)
-            )
+            _(
+                "name: expected an exercise whose checker declares a grader_reference; "
+                "got {name:.60}"
+            ).format(name=repr(name))
         )
-    module, attribute = REFERENCES[name].split(":")
-    return getattr(importlib.import_module(module), attribute)
+    return found
 
 
 @contextmanager
@@ -392,48 +394,3 @@ def earlier_exercises(function: Any, *names: str) -> Iterator[None]:
                 namespace.pop(name, None)
             else:
                 namespace[name] = value
-
-
-def _next_level(control_points: Any, t: float) -> Any:
-    """The answer to lesson 01's ``next_level``: one de Casteljau step."""
-    import numpy as np
-
-    points = np.asarray(control_points, dtype=float)
-    return (1 - t) * points[:-1] + t * points[1:]
-
-
-def _recursive_bezier(control_points: Any, t: float) -> Any:
-    """The answer to lesson 01's ``recursive_bezier``: steps until one point is left."""
-    import numpy as np
-
-    points = np.asarray(control_points, dtype=float)
-    while len(points) > 1:
-        points = _next_level(points, t)
-    return points[0]
-
-
-def _comb(m: int, n: int) -> int:
-    """The answer to lesson 02's ``comb``: row m of Pascal's triangle, exact integers."""
-    row = [1]
-    for _row in range(m):
-        row = [1, *(a + b for a, b in itertools.pairwise(row)), 1]
-    return row[n] if 0 <= n <= m else 0
-
-
-def _bilinear_sample(image: Any, x: float, y: float) -> Any:
-    """The answer to lesson 04's ``bilinear_sample``: centres at half pixels, edges clamped."""
-    import numpy as np
-
-    pixels = np.asarray(image, dtype=float)
-    height, width = pixels.shape[:2]
-
-    def taps(position: float, size: int) -> tuple[int, int, float]:
-        clamped = min(max(position, 0.0), size - 1)
-        first = min(int(np.floor(clamped)), max(size - 2, 0))
-        return first, min(first + 1, size - 1), clamped - first
-
-    left, right, fx = taps(float(x) - 0.5, width)
-    top, bottom, fy = taps(float(y) - 0.5, height)
-    upper = pixels[top, left] * (1 - fx) + pixels[top, right] * fx
-    lower = pixels[bottom, left] * (1 - fx) + pixels[bottom, right] * fx
-    return upper * (1 - fy) + lower * fy

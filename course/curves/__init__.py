@@ -2,13 +2,15 @@
 
 The handouts' own code is kept as written in :mod:`~course.curves.bezier_handouts`, and
 :mod:`~course.curves.bezier_accuracy` measures each form in floating point. The fast
-kernels (``_bezier_fast``, ``_flatten``) are unchecked: only :mod:`~course.curves.bezier`
-calls them, on validated input.
+kernels (``_bezier_fast``, ``_flatten``) are unchecked: only :mod:`~course.curves.bezier` and
+:mod:`~course.curves.flattening` call them, on validated input.
 
-The public names of :mod:`~course.curves.bezier` are importable from here too.
+The public names of :mod:`~course.curves.bezier` and :mod:`~course.curves.flattening` are
+importable from here too.
 """
 
-from course.curves import bezier
+from course.curves import bezier, flattening
 from course.curves.bezier import *  # noqa: F403 (the names bezier.__all__ lists)
+from course.curves.flattening import *  # noqa: F403 (the names flattening.__all__ lists)
 
-__all__ = list(bezier.__all__)
+__all__ = [*bezier.__all__, *flattening.__all__]

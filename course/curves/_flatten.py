@@ -1,8 +1,8 @@
-"""Flattening behind :func:`course.curves.bezier.flatten`: pure array code on validated input.
+"""Flattening behind :func:`course.curves.flattening.flatten`: pure array code on validated input.
 
 Nothing here checks its input: ``control`` is a finite float ``(N, d)`` array,
 ``tolerance`` a float > 0 and ``max_step`` a float > 0 or ``inf``, as
-:func:`course.curves.bezier.flatten` makes sure before it calls :func:`flatten_curve`.
+:func:`course.curves.flattening.flatten` makes sure before it calls :func:`flatten_curve`.
 
 How the parameters are chosen, by degree:
 

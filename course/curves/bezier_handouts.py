@@ -7,7 +7,8 @@ convention ``t * P[i] + (1 - t) * P[i + 1]`` of seeds 002 and 004 (the same
 curve run backwards), the recursive and iterative de Casteljau of seeds
 000 and 004 with the intermediate points they hold, and the lab's Task 7,
 which draws the curve as Bresenham segments between points at equal steps
-of t (seed 001).
+of t (seed 001). The seeds' drawing loops and the GAMES101 check that
+compares them are in :mod:`course.curves.handout_loops`.
 """
 
 from __future__ import annotations
@@ -21,30 +22,25 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import as_int, as_parameter, as_points, as_scalar_parameter, as_shape
-from course.curves.bezier import bezier_bernstein, de_casteljau, flatten, uniform_parameters
+from course._validate import as_int, as_parameter, as_points, as_scalar_parameter
+from course.curves.bezier import de_casteljau
+from course.curves.flattening import flatten, uniform_parameters
 from course.i18n import _
 from course.raster import line, nearest_pixels
 
 __all__ = [
-    "HANDOUT_LOOPS",
     "MAX_SEGMENTS",
-    "NAIVE_LOOP",
     "DeCasteljauCost",
-    "HandoutLoop",
-    "YellowCheck",
     "bresenham_curve",
     "comb_recursive",
     "comb_recursive_calls",
     "curve_pixels",
     "de_casteljau_reversed",
-    "loop_pixels",
     "pascal_row_int32",
     "segments_report",
     "step_report",
     "trace_iterative",
     "trace_recursive",
-    "yellow_check",
 ]
 
 
@@ -260,7 +256,7 @@ def step_report(points: Any, step: float, accumulate: str = "exact") -> dict[str
     """What the handouts' fixed-step loop draws: samples, pixels, gaps, overdraw.
 
     The curve is sampled at ``t = 0, step, 2 step, ...`` (see
-    :func:`course.curves.bezier.uniform_parameters`) and each sample lights the pixel
+    :func:`course.curves.flattening.uniform_parameters`) and each sample lights the pixel
     it falls in. A *gap* is a pair of consecutive samples whose pixels do not
     touch (not even diagonally); *overdraw* is the mean number of samples per
     lit pixel.
@@ -293,140 +289,6 @@ def step_report(points: Any, step: float, accumulate: str = "exact") -> dict[str
         "last_t": float(t[-1]),
         "pixel_list": pixels,
     }
-
-
-# --- the handouts' drawing loops and the GAMES101 yellow check -----------------------
-
-
-@dataclass(frozen=True)
-class HandoutLoop:
-    """How one handout's ``bezier()`` walks t and turns a point into a pixel.
-
-    ``accumulate`` is the :func:`course.curves.bezier.uniform_parameters` mode of
-    its ``t += 0.001`` (``"float32"`` for a ``float t``, ``"float64"`` for
-    a ``double``); ``rounding`` the :func:`course.raster.nearest_pixels`
-    mode of its pixel write (``"round"`` for ``window.at<cv::Vec3b>(point)``,
-    which converts through ``cv::Point``; ``"trunc"`` for ``(point.y,
-    point.x)``); ``reversed`` whether its step is ``t P[i] + (1 - t) P[i+1]``.
-    The points themselves are computed here in double precision.
-    """
-
-    name: str
-    code: str
-    accumulate: str
-    rounding: str
-    reversed: bool = False
-
-
-#: The seeds' drawing loops, as written, each named for its report's role.
-HANDOUT_LOOPS = {
-    "000": HandoutLoop(
-        "the GAMES101 report",
-        "for (float t = 0; t <= 1; t += 0.001f) window.at<cv::Vec3b>(point) = ...",
-        "float32",
-        "round",
-    ),
-    "002": HandoutLoop(
-        "the any-degree report",
-        "float dt = 0.001; for (t = 0; t <= 1; t += dt) window.at<cv::Vec3b>(point.y, point.x)",
-        "float32",
-        "trunc",
-        reversed=True,
-    ),
-    "003": HandoutLoop(
-        "the VS2022 report",
-        "for (double t = 0.0; t <= 1.0; t += 0.001) window.at<cv::Vec3b>(point.y, point.x)",
-        "float64",
-        "trunc",
-    ),
-    "004": HandoutLoop(
-        "the lab 6 report",
-        "for (float t = 0; t <= 1; t += 0.001) window.at<cv::Vec3b>(point.y, point.x)",
-        "float32",
-        "trunc",
-        reversed=True,
-    ),
-}
-#: The GAMES101 framework's ``naive_bezier``: the red curve of the yellow check.
-NAIVE_LOOP = HandoutLoop(
-    "naive_bezier",
-    "for (double t = 0.0; t <= 1.0; t += 0.001) window.at<cv::Vec3b>(point.y, point.x)",
-    "float64",
-    "trunc",
-)
-
-
-def loop_pixels(points: Any, loop: HandoutLoop, shape: Any = None) -> np.ndarray:
-    """The pixels ``loop`` paints for the curve: (K, 2) (x, y), one per t, repeats kept.
-
-    Examples
-    --------
-    >>> loop_pixels([[0.5, 0.5], [4.5, 0.5]], HANDOUT_LOOPS["003"])[[0, -1]].tolist()
-    [[0, 0], [4, 0]]
-    """
-    control = as_points(points, bound=limits.MAX_COORDINATE)
-    _require_loop(loop)
-    t = uniform_parameters(0.001, loop.accumulate)
-    if loop is NAIVE_LOOP:
-        curve = bezier_bernstein(control, t, method="loop")
-    else:
-        curve = de_casteljau_reversed(control, t) if loop.reversed else de_casteljau(control, t)
-    return nearest_pixels(curve, rounding=loop.rounding, shape=shape)
-
-
-def _require_loop(loop: Any) -> None:
-    if not isinstance(loop, HandoutLoop):
-        raise TypeError(
-            _(
-                "loop must be a HandoutLoop, e.g. HANDOUT_LOOPS['003'] or NAIVE_LOOP; got "
-                "{loop_type} {loop:.60}"
-            ).format(loop_type=type(loop).__name__, loop=repr(loop))
-        )
-
-
-@dataclass(frozen=True)
-class YellowCheck:
-    """The GAMES101 check of one handout loop: red ``naive_bezier``, green the loop.
-
-    ``image`` is the (H, W, 3) picture; ``fraction`` the share of painted
-    pixels that are yellow (both); ``red_only`` and ``green_only`` the
-    (K, 2) pixels only one curve lights, in reading order.
-    """
-
-    image: np.ndarray
-    fraction: float
-    red_only: np.ndarray
-    green_only: np.ndarray
-
-
-def yellow_check(points: Any, loop: HandoutLoop, shape: Any = (700, 700)) -> YellowCheck:
-    """Paint ``naive_bezier`` red and ``loop`` green, as the GAMES101 homework does.
-
-    Examples
-    --------
-    >>> check = yellow_check([[0.5, 0.5], [9.5, 0.5]], HANDOUT_LOOPS["003"], (2, 10))
-    >>> check.fraction, len(check.red_only), len(check.green_only)
-    (1.0, 0, 0)
-    """
-    height, width = as_shape(shape)
-    _require_loop(loop)
-    red = np.zeros((height, width), dtype=bool)
-    green = np.zeros((height, width), dtype=bool)
-    for mask, pixels in (
-        (red, loop_pixels(points, NAIVE_LOOP, shape)),
-        (green, loop_pixels(points, loop, shape)),
-    ):
-        mask[pixels[:, 1], pixels[:, 0]] = True
-    image = np.zeros((height, width, 3))
-    image[..., 0], image[..., 1] = red, green
-    painted = np.count_nonzero(red | green)
-    fraction = float(np.count_nonzero(red & green) / painted) if painted else 1.0
-
-    def listed(mask: np.ndarray) -> np.ndarray:
-        rows, columns = np.nonzero(mask)
-        return np.column_stack([columns, rows])
-
-    return YellowCheck(image, fraction, listed(red & ~green), listed(green & ~red))
 
 
 # --- the lab's Task 7: the curve as Bresenham segments ------------------------------
@@ -472,7 +334,7 @@ def curve_pixels(points: Any) -> np.ndarray:
     """The pixels the curve itself passes through: (K, 2), distinct, in order along it.
 
     The curve is flattened to points at most half a pixel apart and within
-    0.01 pixel of it (:func:`course.curves.bezier.flatten` with ``max_step=0.5``),
+    0.01 pixel of it (:func:`course.curves.flattening.flatten` with ``max_step=0.5``),
     and each point's pixel is taken: consecutive pixels touch (8-connected),
     and only a pixel whose corner the curve clips, along less than about half
     a pixel, can be missed.

@@ -26,14 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from course import limits
-from course._validate import (
-    as_choice,
-    as_float_array,
-    as_image,
-    require_finite,
-    require_within,
-)
+from course._validate import as_choice, as_image, as_kernel
 from course.i18n import _
 
 __all__ = [
@@ -140,19 +133,6 @@ def _blur_shifted_sums(array: np.ndarray) -> np.ndarray:
     return total
 
 
-def _as_kernel(kernel: Any) -> np.ndarray:
-    array = as_float_array(kernel, "kernel")
-    if array.shape != (3, 3):
-        raise ValueError(
-            _("kernel must be a 3 x 3 array; got shape {array_shape}").format(
-                array_shape=array.shape
-            )
-        )
-    require_finite(array, "kernel")
-    require_within(array, "kernel", limits.LARGEST, "values")
-    return array
-
-
 def _correlate(array: np.ndarray, weights: np.ndarray, border: str) -> np.ndarray:
     """Sum over the 3 x 3 window of weights[i, j] * pixel, on a padded copy."""
     height, width = array.shape[:2]
@@ -218,7 +198,7 @@ def convolve(image: Any, kernel: Any, border: str = "handout") -> np.ndarray:
            [0.5, 0.5, 0.5]])
     """
     array = as_image(image, "image")
-    weights = _as_kernel(kernel)
+    weights = as_kernel(kernel)
     border = as_choice(border, "border", BORDERS)
     output = _correlate(array, weights[::-1, ::-1], border)
     if weights.min() >= 0 and weights.sum() <= 1 + 1e-12:

@@ -12,6 +12,7 @@ energy a *void*. Starting from a random pattern rearranged until it is even
 tightest cluster first (ranks counting down), then the rest is filled
 largest void first (ranks counting up). Every prefix of the ranking is thus
 an even pattern, so thresholding the mask at any level gives blue noise.
+The ranking runs on checked input in ``_void_and_cluster``.
 """
 
 from __future__ import annotations
@@ -21,14 +22,8 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import (
-    as_float_array,
-    as_int,
-    as_positive_float,
-    as_rng,
-    require_finite,
-    require_within,
-)
+from course._validate import as_finite_array, as_int, as_positive_float, as_rng
+from course.halftone._void_and_cluster import blue_noise_levels, gaussian_on_torus, rank_pixels
 from course.i18n import _
 
 __all__ = [
@@ -51,9 +46,7 @@ def torus_gaussian(size: int, sigma: float = 1.5) -> np.ndarray:
     """
     size = as_int(size, "size", minimum=1, maximum=int(limits.MAX_PIXELS**0.5))
     sigma = as_positive_float(sigma, "sigma")
-    index = np.arange(size)
-    distance = np.minimum(index, size - index).astype(float)
-    return np.exp(-(distance[:, None] ** 2 + distance[None, :] ** 2) / (2 * sigma**2))
+    return gaussian_on_torus(size, sigma)
 
 
 def cluster_energy(pattern: Any, sigma: float = 1.5) -> np.ndarray:
@@ -70,7 +63,8 @@ def cluster_energy(pattern: Any, sigma: float = 1.5) -> np.ndarray:
     array([1.   , 0.607, 0.135, 0.607])
     """
     dots = _as_square_pattern(pattern)
-    kernel = torus_gaussian(dots.shape[0], sigma)
+    # A square pattern of at most MAX_PIXELS entries has a side torus_gaussian takes.
+    kernel = gaussian_on_torus(dots.shape[0], as_positive_float(sigma, "sigma"))
     return np.real(np.fft.ifft2(np.fft.fft2(dots) * np.fft.fft2(kernel)))
 
 
@@ -78,9 +72,7 @@ def _as_dots(value: Any, name: str) -> np.ndarray:
     """A finite float copy; a boolean dot pattern counts as 0s and 1s."""
     if isinstance(value, np.ndarray) and value.dtype == bool:
         value = value.astype(float)
-    array = as_float_array(value, name)
-    require_finite(array, name)
-    require_within(array, name, limits.LARGEST, "values")
+    array = as_finite_array(value, name, limits.LARGEST, "values")
     if array.size > limits.MAX_PIXELS:
         raise ValueError(
             _("{name} must have at most {most} entries; got {size}").format(
@@ -151,53 +143,7 @@ def void_and_cluster(
         raise ValueError(
             _("initial_fraction must be in (0, 0.5]; got {fraction}").format(fraction=fraction)
         )
-    total = size * size
-    kernel = np.tile(torus_gaussian(size, sigma), (2, 2))
-
-    def footprint(index: int) -> np.ndarray:
-        """A dot's energy everywhere, as flat (size**2,) view-based copy."""
-        y, x = divmod(int(index), size)
-        return kernel[size - y : 2 * size - y, size - x : 2 * size - x].ravel()
-
-    def tightest_cluster(dots: np.ndarray, energy: np.ndarray) -> int:
-        return int(np.argmax(np.where(dots, energy, -np.inf)))
-
-    def largest_void(dots: np.ndarray, energy: np.ndarray) -> int:
-        return int(np.argmin(np.where(dots, np.inf, energy)))
-
-    count = max(1, round(fraction * total))
-    dots = np.zeros(total, dtype=bool)
-    dots[generator.choice(total, size=count, replace=False)] = True
-    energy = np.zeros(total)
-    for index in np.flatnonzero(dots):
-        energy += footprint(index)
-
-    # Initial pattern: move the tightest cluster to the largest void until
-    # the void found is the spot just vacated. Each move lowers the total
-    # energy, so it ends; the bound is a guard.
-    for _move in range(total):
-        cluster = tightest_cluster(dots, energy)
-        dots[cluster] = False
-        energy -= footprint(cluster)
-        void = largest_void(dots, energy)
-        dots[void] = True
-        energy += footprint(void)
-        if void == cluster:
-            break
-
-    ranks = np.empty(total, dtype=int)
-    remaining, remaining_energy = dots.copy(), energy.copy()
-    for rank in range(count - 1, -1, -1):
-        cluster = tightest_cluster(remaining, remaining_energy)
-        remaining[cluster] = False
-        remaining_energy -= footprint(cluster)
-        ranks[cluster] = rank
-    for rank in range(count, total):
-        void = largest_void(dots, energy)
-        dots[void] = True
-        energy += footprint(void)
-        ranks[void] = rank
-    return ranks.reshape(size, size)
+    return rank_pixels(size, generator, sigma, fraction)
 
 
 def blue_noise_mask(size: int = 64, rng: np.random.Generator | None = None) -> np.ndarray:
@@ -213,8 +159,8 @@ def blue_noise_mask(size: int = 64, rng: np.random.Generator | None = None) -> n
     >>> np.sort(mask.ravel())[:4] * 16
     array([0.5, 1.5, 2.5, 3.5])
     """
-    ranks = void_and_cluster(size, rng)
-    return (ranks + 0.5) / ranks.size
+    size = as_int(size, "size", minimum=2, maximum=limits.MAX_MASK_SIZE)
+    return blue_noise_levels(size, as_rng(rng))
 
 
 def _as_texture(image: Any) -> np.ndarray:

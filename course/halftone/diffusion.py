@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from course._validate import as_choice, as_gray, describe
+from course.halftone._diffusion import FORMS, default_method, diffuse, kernel_offsets
 from course.i18n import _
 
 __all__ = [
@@ -49,15 +50,7 @@ def diffusion_offsets(kernel: str = "floyd-steinberg") -> list[tuple[int, int, f
     >>> diffusion_offsets()
     [(1, 0, 0.4375), (-1, 1, 0.1875), (0, 1, 0.3125), (1, 1, 0.0625)]
     """
-    kernel = as_choice(kernel, "kernel", tuple(KERNELS))
-    rows, denominator = KERNELS[kernel]
-    origin = (len(rows[0]) - 1) // 2
-    return [
-        (column - origin, dy, weight / denominator)
-        for dy, row in enumerate(rows)
-        for column, weight in enumerate(row)
-        if weight
-    ]
+    return kernel_offsets(KERNELS[as_choice(kernel, "kernel", tuple(KERNELS))])
 
 
 def error_diffusion(
@@ -134,21 +127,17 @@ def _run(
             )
         )
     if method is None:
-        method = "rows" if serpentine else "wavefront"
+        method = default_method(serpentine)
     method = as_choice(method, "method", ERROR_DIFFUSION_METHODS)
-    if method == "wavefront":
-        if serpentine:
-            raise ValueError(
-                _(
-                    "method='wavefront' needs raster order: with serpentine=True each row starts "
-                    "where the row above ended, so no two rows can run together; use method='rows' "
-                    "(the default for serpentine)"
-                )
+    if method == "wavefront" and serpentine:
+        raise ValueError(
+            _(
+                "method='wavefront' needs raster order: with serpentine=True each row starts "
+                "where the row above ended, so no two rows can run together; use method='rows' "
+                "(the default for serpentine)"
             )
-        return _error_diffusion_wavefront(array, offsets)
-    if method == "rows":
-        return _error_diffusion_rows(array, offsets, bool(serpentine))
-    return _error_diffusion_loop(array, offsets, bool(serpentine))
+        )
+    return diffuse(array, offsets, serpentine, method)
 
 
 def error_diffusion_values(
@@ -344,6 +333,12 @@ def _wavefront_band(
     for y in range(count):
         values[y] = pending[skew * y : skew * y + width, y]
     return [pending[skew * y : skew * y + width, y].copy() for y in range(count, count + depth)]
+
+
+# The forms, by method, for every caller of the kernel (see course.halftone._diffusion).
+FORMS.update(
+    loop=_error_diffusion_loop, rows=_error_diffusion_rows, wavefront=_error_diffusion_wavefront
+)
 
 
 def error_diffusion_wraparound(gray: Any) -> np.ndarray:

@@ -28,6 +28,8 @@ from scipy import ndimage
 
 from course import limits
 from course._validate import as_choice, as_gray, as_int, as_positive_float, as_rng
+from course.halftone._diffusion import default_method, diffuse, kernel_offsets
+from course.halftone._void_and_cluster import blue_noise_levels
 from course.halftone.blue_noise_masks import blue_noise_mask
 from course.halftone.diffusion import (
     ERROR_DIFFUSION_METHODS,
@@ -74,7 +76,11 @@ def threshold(gray: Any) -> np.ndarray:
     >>> threshold([[0.2, 0.5, 0.51]])
     array([[0., 0., 1.]])
     """
-    return (as_gray(gray, "gray") > 0.5).astype(float)
+    return _threshold(as_gray(gray, "gray"))
+
+
+def _threshold(array: np.ndarray) -> np.ndarray:
+    return (array > 0.5).astype(float)
 
 
 def uniform_random(gray: Any, rng: np.random.Generator | None = None) -> np.ndarray:
@@ -91,7 +97,11 @@ def uniform_random(gray: Any, rng: np.random.Generator | None = None) -> np.ndar
            [0., 0., 1., 0.]])
     """
     array = as_gray(gray, "gray")
-    noise = as_rng(rng).random(array.shape)
+    return _uniform_random(array, as_rng(rng))
+
+
+def _uniform_random(array: np.ndarray, generator: np.random.Generator) -> np.ndarray:
+    noise = generator.random(array.shape)
     return (array + (noise - 0.5) > 0.5).astype(float)
 
 
@@ -110,8 +120,10 @@ def blue_noise(gray: Any, noise: Any) -> np.ndarray:
     array([[0., 1., 0., 1., 0.],
            [1., 0., 1., 0., 1.]])
     """
-    array = as_gray(gray, "gray")
-    texture = as_gray(noise, "noise")
+    return _blue_noise(as_gray(gray, "gray"), as_gray(noise, "noise"))
+
+
+def _blue_noise(array: np.ndarray, texture: np.ndarray) -> np.ndarray:
     height, width = array.shape
     reps = (-(-height // texture.shape[0]), -(-width // texture.shape[1]))
     tiled = np.tile(texture, reps)[:height, :width]
@@ -197,6 +209,10 @@ def bayer_matrix(size: int) -> np.ndarray:
         raise ValueError(
             _("size must be a power of two (1, 2, 4, 8, ...); got {size}").format(size=size)
         )
+    return _bayer_matrix(size)
+
+
+def _bayer_matrix(size: int) -> np.ndarray:
     matrix = np.zeros((1, 1), dtype=int)
     while matrix.shape[0] < size:
         matrix = np.block([[4 * matrix, 4 * matrix + 2], [4 * matrix + 3, 4 * matrix + 1]])
@@ -217,8 +233,10 @@ def bayer(gray: Any, size: int = 4) -> np.ndarray:
     array([[1., 0., 1., 0.],
            [0., 1., 0., 1.]])
     """
-    array = as_gray(gray, "gray")
-    matrix = bayer_matrix(size)
+    return _bayer(as_gray(gray, "gray"), bayer_matrix(size))
+
+
+def _bayer(array: np.ndarray, matrix: np.ndarray) -> np.ndarray:
     n = matrix.shape[0]
     reps = (-(-array.shape[0] // n), -(-array.shape[1] // n))
     levels = np.tile((matrix + 0.5) / n**2, reps)[: array.shape[0], : array.shape[1]]
@@ -241,19 +259,29 @@ def all_methods(
     [('threshold', 0.0), ('uniform random', 0.625), ('blue noise', 0.5)]
     """
     array = as_gray(gray, "gray")
-    texture = blue_noise_mask(64, np.random.default_rng(0)) if noise is None else noise
+    generator = as_rng(rng)
+    if noise is None:
+        texture = blue_noise_levels(64, np.random.default_rng(0))
+    else:
+        texture = as_gray(noise, "noise")
     return {
-        "threshold": threshold(array),
-        "uniform random": uniform_random(array, rng),
-        "blue noise": blue_noise(array, texture),
-        "ordered 3x3": ordered(array),
-        "Bayer 8x8": bayer(array, 8),
-        "Floyd-Steinberg": error_diffusion(array),
-        "Floyd-Steinberg serpentine": error_diffusion(array, serpentine=True),
-        "Jarvis-Judice-Ninke": error_diffusion(array, "jarvis-judice-ninke"),
-        "Stucki": error_diffusion(array, "stucki"),
-        "Atkinson": error_diffusion(array, "atkinson"),
+        "threshold": _threshold(array),
+        "uniform random": _uniform_random(array, generator),
+        "blue noise": _blue_noise(array, texture),
+        "ordered 3x3": _ordered_tiled(array),
+        "Bayer 8x8": _bayer(array, _bayer_matrix(8)),
+        "Floyd-Steinberg": _error_diffusion(array, "floyd-steinberg"),
+        "Floyd-Steinberg serpentine": _error_diffusion(array, "floyd-steinberg", serpentine=True),
+        "Jarvis-Judice-Ninke": _error_diffusion(array, "jarvis-judice-ninke"),
+        "Stucki": _error_diffusion(array, "stucki"),
+        "Atkinson": _error_diffusion(array, "atkinson"),
     }
+
+
+def _error_diffusion(array: np.ndarray, kernel: str, serpentine: bool = False) -> np.ndarray:
+    """:func:`error_diffusion` of a checked image, with its default form."""
+    offsets = kernel_offsets(KERNELS[kernel])
+    return diffuse(array, offsets, serpentine, default_method(serpentine))[0]
 
 
 # --- quality -----------------------------------------------------------------

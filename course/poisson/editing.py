@@ -17,14 +17,15 @@ harmonic (``laplacian(g) = 0``) and equals ``background - foreground`` on the
 border; :func:`lab_clone` is its loop, :func:`correction_boundary` its
 boundary setup.
 
-The solvers are in :mod:`course.poisson.solvers`: ``"direct"`` (sparse
-factorisation, any region), ``"dst"`` (sine transforms, rectangles),
-``"jacobi"``, ``"gauss_seidel"`` and ``"sor"``; and in
+The edits solve with :func:`~course.poisson.methods.solve`
+(:mod:`course.poisson.methods`), by the solvers in :mod:`course.poisson.solvers`:
+``"direct"`` (sparse factorisation, any region), ``"dst"`` (sine transforms,
+rectangles), ``"jacobi"``, ``"gauss_seidel"`` and ``"sor"``; and in
 :mod:`course.poisson.capacitance`: ``"capacitance"`` (sine transforms on a box
 around any region, corrected on the region's border). The default, ``"auto"``,
 is exact and fast: ``"dst"`` for a rectangle, otherwise ``"capacitance"`` or
 ``"direct"``, whichever is expected faster for the region's shape
-(:func:`exact_method`).
+(:func:`~course.poisson.methods.exact_method`).
 
 References
 ----------
@@ -34,74 +35,35 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from course import limits
-from course._validate import as_choice, as_image, as_int, as_positive_float
-from course.i18n import _
-from course.poisson import capacitance, solvers
+from course._validate import as_choice, as_image, as_int
+from course.poisson.inputs import clone_inputs
+from course.poisson.methods import LAB_ITERATIONS, solve
 from course.poisson.problem import (
     GUIDANCE,
     PoissonProblem,
-    as_problem,
     build_clone_problem,
-    clone_inputs,
     clone_problem,
-    image_of,
     inpaint_problem,
     paste_window,
-    planes_of,
-    window_in,
 )
+from course.poisson.windows import window_in
 
 __all__ = [
     "GUIDANCE",
-    "ITERATIVE_METHODS",
-    "LAB_ITERATIONS",
-    "SOLVE_METHODS",
-    "ConvergenceHistory",
     "PoissonProblem",
     "clone_problem",
-    "convergence",
     "correction_boundary",
-    "exact_method",
     "inpaint",
     "inpaint_problem",
-    "iterates",
     "lab_clone",
     "naive_paste",
     "seamless_clone",
-    "solve",
-    "sweeps_to_residual",
 ]
-
-SOLVE_METHODS = ("auto", "direct", "dst", "capacitance", "jacobi", "gauss_seidel", "sor")
-ITERATIVE_METHODS = ("jacobi", "gauss_seidel", "sor")
-# The lab's skeleton runs 8000 sweeps; the iterative methods default to it.
-LAB_ITERATIONS = 8000
-# method="capacitance" refuses a border of more pixels than this: its dense
-# matrix would take 800 MB (a speckled mask; "direct" handles it easily).
-MAX_CHARGES = 10_000
-
-
-@dataclass(frozen=True)
-class ConvergenceHistory:
-    """Residual and error of an iterative method, recorded every few sweeps.
-
-    ``errors`` is the largest ``|u - exact|`` over the region, in image units
-    (multiply by 255 for grey levels); NaN when no exact solution was given.
-    ``solution`` is the last iterate, a window like ``problem.values``.
-    """
-
-    method: str
-    sweeps: np.ndarray
-    residuals: np.ndarray
-    errors: np.ndarray
-    solution: np.ndarray
 
 
 def seamless_clone(
@@ -224,159 +186,6 @@ def inpaint(
     return paste_window(problem, as_image(image), solution)
 
 
-def solve(
-    problem: PoissonProblem,
-    method: str = "auto",
-    iterations: int | None = None,
-    tolerance: float | None = None,
-    omega: float | None = None,
-) -> np.ndarray:
-    """Solve a :class:`PoissonProblem`: the values of its window, region filled in.
-
-    Parameters are those of :func:`seamless_clone`. The result has the shape
-    of ``problem.values`` and is not clipped.
-
-    Examples
-    --------
-    >>> problem = clone_problem(np.zeros((5, 5)), np.full((3, 3), 0.5), (1, 1))
-    >>> solve(problem)   # a flat foreground in a black frame: black
-    array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 0.]])
-    """
-    problem = as_problem(problem)
-    planes, _ = _solve_planes(problem, method, iterations, tolerance, omega)
-    return image_of(planes, problem.values)
-
-
-def exact_method(problem: PoissonProblem) -> str:
-    """The exact method ``method="auto"`` uses for ``problem``.
-
-    ``"dst"`` for a rectangle. For any other region, ``"capacitance"`` if it
-    is expected faster than ``"direct"`` (its cost grows with the border's
-    length, the factorisation's with the area; see
-    :func:`course.poisson.capacitance.faster_than_direct`), else ``"direct"``.
-
-    Examples
-    --------
-    >>> disc = np.hypot(*np.indices((41, 41)) - 20) < 19
-    >>> ring = disc & (np.hypot(*np.indices((41, 41)) - 20) > 16)
-    >>> background, foreground = np.zeros((50, 50)), np.ones((41, 41))
-    >>> [exact_method(clone_problem(background, foreground, (4, 4), mask))
-    ...  for mask in (None, disc, ring)]
-    ['dst', 'capacitance', 'direct']
-    """
-    problem = as_problem(problem)
-    if problem.rectangular:
-        return "dst"
-    return "capacitance" if capacitance.faster_than_direct(problem.region) else "direct"
-
-
-def sweeps_to_residual(
-    problem: PoissonProblem,
-    method: str,
-    tolerance: float = 1e-6,
-    max_iterations: int = 100_000,
-    omega: float | None = None,
-) -> int | None:
-    """How many sweeps an iterative method needs to bring the residual down to ``tolerance``.
-
-    None if ``max_iterations`` sweeps are not enough.
-
-    Examples
-    --------
-    >>> problem = clone_problem(np.zeros((7, 7)), np.full((5, 5), 0.5), (1, 1))
-    >>> [sweeps_to_residual(problem, m) for m in ("jacobi", "gauss_seidel", "sor")]
-    [39, 21, 11]
-    """
-    problem = as_problem(problem)
-    tolerance = as_positive_float(tolerance, "tolerance")
-    max_iterations = as_int(
-        max_iterations, "max_iterations", minimum=0, maximum=limits.MAX_ITERATIONS
-    )
-    planes, done = _solve_planes(problem, method, max_iterations, tolerance, omega)
-    if solvers.residual(planes, *problem.planes()[1:]) > tolerance:
-        return None
-    return done
-
-
-def convergence(
-    problem: PoissonProblem,
-    method: str,
-    iterations: int,
-    exact: Any = None,
-    every: int = 1,
-    omega: float | None = None,
-) -> ConvergenceHistory:
-    """Residual (and error against ``exact``) of an iterative method, every ``every`` sweeps.
-
-    Examples
-    --------
-    >>> problem = clone_problem(np.zeros((7, 7)), np.full((5, 5), 0.5), (1, 1))
-    >>> history = convergence(problem, "jacobi", 4, exact=solve(problem), every=2)
-    >>> history.sweeps, np.round(history.residuals, 3)
-    (array([0, 2, 4]), array([1.  , 0.5 , 0.25]))
-    """
-    problem = as_problem(problem)
-    method = as_choice(method, "method", ITERATIVE_METHODS)
-    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
-    every = as_int(every, "every", minimum=1)
-    omega = _as_omega(omega, method, problem.region)
-    reference = None if exact is None else planes_of(problem._as_solution(exact))
-    values, region, source = problem.planes()
-    sweeps = _sweeps(problem, method, omega)
-    recorded, residuals, errors = [], [], []
-    u = values
-    for done in range(iterations + 1):
-        if done % every == 0 or done == iterations:
-            recorded.append(done)
-            residuals.append(solvers.residual(u, region, source))
-            error = np.nan if reference is None else np.abs(u - reference)[:, region].max()
-            errors.append(error)
-        if done < iterations:
-            u = next(sweeps)
-    return ConvergenceHistory(
-        method,
-        np.array(recorded),
-        np.array(residuals),
-        np.array(errors),
-        image_of(u.copy(), problem.values),
-    )
-
-
-def iterates(
-    problem: PoissonProblem, method: str, omega: float | None = None
-) -> Iterator[np.ndarray]:
-    """The window after each sweep of an iterative method, forever.
-
-    Each item is a view of the iterate, which the next sweep overwrites: copy
-    it to keep it.
-
-    Examples
-    --------
-    >>> problem = clone_problem(np.zeros((5, 6)), np.full((3, 4), 0.5), (1, 1))
-    >>> sweeps = iterates(problem, "jacobi")
-    >>> next(sweeps)[1]   # each unknown: three neighbours at 0, one at 0.5
-    array([0.   , 0.125, 0.125, 0.   ])
-    """
-    problem = as_problem(problem)
-    method = as_choice(method, "method", ITERATIVE_METHODS)
-    omega = _as_omega(omega, method, problem.region)
-    return _iterates(problem, method, omega)
-
-
-def _iterates(problem: PoissonProblem, method: str, omega: float) -> Iterator[np.ndarray]:
-    for planes in _sweeps(problem, method, omega):
-        yield planes[0] if problem.values.ndim == 2 else np.moveaxis(planes, 0, -1)
-
-
-def _sweeps(problem: PoissonProblem, method: str, omega: float) -> Iterator[np.ndarray]:
-    values, region, source = problem.planes()
-    if method == "jacobi":
-        return solvers.jacobi_sweeps(values, region, source)
-    return solvers.sor_sweeps(values, region, source, omega)
-
-
 def naive_paste(background: Any, foreground: Any, offset: Any, mask: Any = None) -> np.ndarray:
     """Copy the foreground's pixels over the region :func:`seamless_clone` would change.
 
@@ -448,82 +257,3 @@ def lab_clone(
     result = background.copy()
     result[y0 : y0 + height, x0 : x0 + width] = foreground + g
     return result
-
-
-# --- solving ----------------------------------------------------------------
-
-
-def _solve_planes(
-    problem: PoissonProblem,
-    method: str,
-    iterations: int | None,
-    tolerance: float | None,
-    omega: float | None,
-) -> tuple[np.ndarray, int]:
-    method = as_choice(method, "method", SOLVE_METHODS)
-    if method == "auto":
-        method = exact_method(problem)
-    values, region, source = problem.planes()
-    if method not in ITERATIVE_METHODS:
-        for name, given in (("iterations", iterations), ("tolerance", tolerance), ("omega", omega)):
-            if given is not None:
-                raise ValueError(
-                    _(
-                        "{name} applies to the iterative methods {most}; "
-                        "method={method} is exact, so leave {name} unset (got {given})"
-                    ).format(
-                        name=name,
-                        most=ITERATIVE_METHODS,
-                        method=repr(method),
-                        given=repr(given),
-                    )
-                )
-        if method == "dst":
-            if not problem.rectangular:
-                raise ValueError(
-                    _(
-                        "method='dst' needs a rectangular region (every pixel inside the "
-                        "foreground's outer ring); this mask is not a rectangle, so use "
-                        "method='capacitance', 'direct' or 'auto'"
-                    )
-                )
-            return solvers.solve_dst(values, region, source), 0
-        if method == "capacitance":
-            charges = capacitance.charge_pixels(capacitance.embedding(region))[0].size
-            if charges > MAX_CHARGES:
-                raise ValueError(
-                    _(
-                        "method='capacitance' needs a dense {charges} x {charges} matrix for this "
-                        "region, whose border has {charges} pixels (at most {most}); use "
-                        "method='direct' or 'auto' for a ragged or scattered mask"
-                    ).format(charges=charges, most=MAX_CHARGES)
-                )
-            return capacitance.solve_capacitance(values, region, source), 0
-        return solvers.solve_direct(values, region, source), 0
-    if iterations is None:
-        iterations = LAB_ITERATIONS
-    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
-    if tolerance is not None:
-        tolerance = as_positive_float(tolerance, "tolerance")
-    omega = _as_omega(omega, method, region)
-    kind = "jacobi" if method == "jacobi" else "sor"
-    return solvers.iterate(values, region, source, kind, iterations, omega, tolerance)
-
-
-def _as_omega(omega: float | None, method: str, region: np.ndarray) -> float:
-    if method != "sor":
-        if omega is not None:
-            raise ValueError(
-                _("omega applies only to method='sor'; got omega={omega} with {method}").format(
-                    omega=repr(omega), method=repr(method)
-                )
-            )
-        return 1.0
-    if omega is None:
-        return solvers.optimal_omega(region)
-    omega = as_positive_float(omega, "omega")
-    if omega >= 2:
-        raise ValueError(
-            _("omega must lie in (0, 2), where SOR converges; got {omega}").format(omega=omega)
-        )
-    return omega

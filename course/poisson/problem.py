@@ -1,10 +1,12 @@
 """The Poisson problem of an edit: a window, its region, its boundary values and guidance.
 
 :func:`clone_problem` and :func:`inpaint_problem` validate their inputs once
-(every message names the parameter) and cut out the window the solvers work
-on: the region's bounding box and one more ring of pixels, its boundary. The
-solvers in :mod:`course.poisson.solvers` take the window's arrays channels
-first (:meth:`PoissonProblem.planes`); :mod:`course.poisson` solves and pastes.
+(:mod:`course.poisson.inputs`; every message names the parameter) and cut out the
+window the solvers work on: the region's bounding box and one more ring of pixels,
+its boundary. The solvers in :mod:`course.poisson.solvers` take the window's arrays
+channels first (:meth:`PoissonProblem.planes`); :mod:`course.poisson` solves and
+pastes (:func:`paste_window`). The checked helpers that cut windows and change the
+channel order are in :mod:`course.poisson.windows`.
 """
 
 from __future__ import annotations
@@ -15,31 +17,20 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import (
-    as_choice,
-    as_float_array,
-    as_image,
-    as_int,
-    as_shape,
-    describe,
-    require_finite,
-)
+from course._validate import as_choice, as_float_array, as_int, describe, require_finite
 from course.i18n import _
 from course.poisson import solvers
+from course.poisson._layout import channels_first, clipped_window, mask_for
+from course.poisson.inputs import clone_inputs, inpaint_inputs
 
 __all__ = [
     "GUIDANCE",
     "PoissonProblem",
     "as_problem",
     "build_clone_problem",
-    "clone_inputs",
     "clone_problem",
-    "image_of",
     "inpaint_problem",
     "paste_window",
-    "planes_of",
-    "window_at",
-    "window_in",
 ]
 
 GUIDANCE = ("plain", "mixed")
@@ -142,12 +133,12 @@ class PoissonProblem:
         >>> [array.shape for array in problem.planes()]
         [(3, 3, 4), (3, 4), (3, 3, 4)]
         """
-        return _planes_of(self.values), self.region.copy(), _planes_of(self.source)
+        return channels_first(self.values), self.region.copy(), channels_first(self.source)
 
     def residual(self, solution: Any) -> float:
         """Largest ``|b_p + sum_q u_q - 4 u_p|`` over the region: 0 for the exact solution."""
         return solvers.residual(
-            _planes_of(self._as_solution(solution)), self.region, _planes_of(self.source)
+            channels_first(self._as_solution(solution)), self.region, channels_first(self.source)
         )
 
     def paste(self, image: np.ndarray, solution: Any) -> np.ndarray:
@@ -268,20 +259,8 @@ def inpaint_problem(image: Any, mask: Any) -> PoissonProblem:
            [0, 1, 0],
            [0, 0, 0]]))
     """
-    image = as_image(image, "image")
-    mask = _as_mask(mask, "mask", image.shape[:2], _("the image's (H, W)"))
+    image, mask = inpaint_inputs(image, mask)
     rows, columns = np.nonzero(mask)
-    height, width = mask.shape
-    edge = (rows == 0) | (rows == height - 1) | (columns == 0) | (columns == width - 1)
-    if edge.any():
-        where = (int(columns[edge][0]), int(rows[edge][0]))
-        raise ValueError(
-            _(
-                "mask touches the image border, e.g. at (x, y) = {where}: inpaint needs known "
-                "pixels all around the hole, so leave the first and last rows and columns unmasked "
-                "(or pad the image)"
-            ).format(where=where)
-        )
     top, left = rows.min() - 1, columns.min() - 1
     window = (slice(top, rows.max() + 2), slice(left, columns.max() + 2))
     values = image[window].copy()
@@ -328,8 +307,8 @@ def _build_clone_problem(
     region = mask[top:bottom, left:right].copy()
     crop = (corner[0] + left, corner[1] + top)
     f = foreground[top:bottom, left:right]
-    b = _window_at(background, crop, region.shape)
-    values = np.where(_channels_last(region, f), f, b)
+    b = clipped_window(background, crop, region.shape)
+    values = np.where(mask_for(region, f), f, b)
     source = _guidance_sum(f, b, region, guidance)
     return PoissonProblem(values, region, source, (int(crop[0]), int(crop[1])))
 
@@ -393,169 +372,8 @@ def _paste_window(problem: PoissonProblem, image: np.ndarray, window: np.ndarray
     if problem.rectangular:  # a slice copies several times faster than a mask
         target[1:-1, 1:-1] = window[1:-1, 1:-1]
     else:
-        np.copyto(target, window, where=_channels_last(problem.region, window))
+        np.copyto(target, window, where=mask_for(problem.region, window))
     return result
-
-
-def window_in(problem: PoissonProblem, image: Any, corner: Any) -> np.ndarray:
-    """The problem's window cut from ``image``, whose top-left pixel sits at ``corner``.
-
-    ``corner = (x, y)`` places ``image`` in the problem's picture (the
-    foreground's offset, for a clone); the window must lie inside ``image``.
-
-    Examples
-    --------
-    >>> problem = clone_problem(np.zeros((5, 5)), np.ones((3, 3)), (1, 2))
-    >>> window_in(problem, np.ones((3, 3)), (1, 2)).shape
-    (3, 3)
-    """
-    problem = as_problem(problem)
-    array = as_float_array(image, "image")
-    x0, y0 = _as_corner(corner, "corner")
-    x = problem.corner[0] - x0
-    y = problem.corner[1] - y0
-    height, width = problem.region.shape
-    if array.ndim != problem.values.ndim or array.shape[2:] != problem.values.shape[2:]:
-        raise ValueError(
-            _(
-                "image must have the layout of the problem's values {values_shape}; got shape "
-                "{array_shape}"
-            ).format(values_shape=problem.values.shape, array_shape=array.shape)
-        )
-    if not (0 <= x and x + width <= array.shape[1] and 0 <= y and y + height <= array.shape[0]):
-        raise ValueError(
-            _(
-                "image of shape {array_size} at corner (x, y) = ({x0}, {y0}) does not hold the "
-                "problem's window, {height} x {width} pixels at ({corner_x}, {corner_y})"
-            ).format(
-                array_size=array.shape[:2],
-                x0=x0,
-                y0=y0,
-                height=height,
-                width=width,
-                corner_x=problem.corner[0],
-                corner_y=problem.corner[1],
-            )
-        )
-    window = array[y : y + height, x : x + width]
-    require_finite(window, "image")
-    return window
-
-
-def window_at(image: Any, corner: Any, shape: Any) -> np.ndarray:
-    """The ``shape`` window of ``image`` whose top-left pixel is ``corner = (x, y)``.
-
-    The part of the window off the image is clipped, never wrapped around:
-    the result is a copy of the pixels the window and the image share (empty
-    when they share none).
-
-    Examples
-    --------
-    >>> image = np.arange(16.0).reshape(4, 4)
-    >>> window_at(image, (1, 2), (2, 2))
-    array([[ 9., 10.],
-           [13., 14.]])
-    >>> window_at(image, (-1, -1), (2, 3))   # one row and two columns on the image
-    array([[0., 1.]])
-    """
-    array = as_float_array(image, "image")
-    if array.ndim not in (2, 3):
-        raise ValueError(
-            _("image must be (H, W) or (H, W, C); got shape {array_shape}").format(
-                array_shape=array.shape
-            )
-        )
-    x, y = _as_corner(corner, "corner")
-    height, width = as_shape(shape, "shape")
-    window = _window_at(array, (x, y), (height, width))
-    require_finite(window, "image")
-    return window.copy()
-
-
-def _window_at(image: np.ndarray, corner: tuple[int, int], shape: tuple[int, int]) -> np.ndarray:
-    """:func:`window_at` on checked input: a view, clipped to the image."""
-    x, y = corner
-    top, left = max(y, 0), max(x, 0)
-    bottom = max(min(y + shape[0], image.shape[0]), top)
-    right = max(min(x + shape[1], image.shape[1]), left)
-    return image[top:bottom, left:right]
-
-
-def _as_corner(corner: Any, name: str) -> tuple[int, int]:
-    if isinstance(corner, (str, bytes)) or not hasattr(corner, "__len__") or len(corner) != 2:
-        raise ValueError(
-            _("{name} must be a pair (x, y) of integers; got {corner}").format(
-                name=name, corner=describe(corner)
-            )
-        )
-    return as_int(corner[0], f"{name}[0] (x)"), as_int(corner[1], f"{name}[1] (y)")
-
-
-def _channels_last(mask: np.ndarray, like: np.ndarray) -> np.ndarray:
-    return mask if like.ndim == 2 else mask[..., None]
-
-
-def planes_of(image: Any) -> np.ndarray:
-    """``(h, w)`` or ``(h, w, C)`` to channels first, ``(C, h, w)``: a finite float copy.
-
-    Examples
-    --------
-    >>> planes_of(np.zeros((2, 3, 3))).shape, planes_of(np.zeros((2, 3))).shape
-    ((3, 2, 3), (1, 2, 3))
-    """
-    array = as_float_array(image, "image")
-    if array.ndim not in (2, 3) or 0 in array.shape:
-        raise ValueError(
-            _(
-                "image must be a non-empty (h, w) or (h, w, C) array; got shape {array_shape}"
-            ).format(array_shape=array.shape)
-        )
-    require_finite(array, "image")
-    return array[None] if array.ndim == 2 else np.ascontiguousarray(np.moveaxis(array, -1, 0))
-
-
-def _planes_of(image: np.ndarray) -> np.ndarray:
-    if image.ndim == 2:
-        return image[None].astype(float)
-    return np.ascontiguousarray(np.moveaxis(image, -1, 0), dtype=float)
-
-
-def image_of(planes: Any, like: Any) -> np.ndarray:
-    """Back from channels first, ``(C, h, w)``, to the layout of ``like``: a finite copy.
-
-    Examples
-    --------
-    >>> image_of(np.zeros((3, 2, 4)), np.zeros((2, 4, 3))).shape
-    (2, 4, 3)
-    """
-    array = as_float_array(planes, "planes")
-    if array.ndim != 3 or 0 in array.shape:
-        raise ValueError(
-            _("planes must be a non-empty (C, h, w) array; got shape {array_shape}").format(
-                array_shape=array.shape
-            )
-        )
-    layout = np.shape(like) if isinstance(like, np.ndarray) else None
-    if layout is None or len(layout) not in (2, 3):
-        raise TypeError(
-            _("like must be an (h, w) or (h, w, C) array; got {like}").format(like=describe(like))
-        )
-    expected = (1, *layout) if len(layout) == 2 else (layout[2], *layout[:2])
-    if array.shape != expected:
-        raise ValueError(
-            _(
-                "planes must have shape {expected}, channels first, for like of shape {layout}; "
-                "got {array_shape}"
-            ).format(expected=expected, layout=layout, array_shape=array.shape)
-        )
-    require_finite(array, "planes")
-    return _image_of(array, like)
-
-
-def _image_of(planes: np.ndarray, like: np.ndarray) -> np.ndarray:
-    if like.ndim == 2:
-        return planes[0].copy()
-    return np.ascontiguousarray(np.moveaxis(planes, 0, -1))
 
 
 def as_problem(problem: Any) -> PoissonProblem:
@@ -568,147 +386,3 @@ def as_problem(problem: Any) -> PoissonProblem:
             ).format(problem=describe(problem))
         )
     return problem
-
-
-# --- input checks -------------------------------------------------------------
-
-
-def clone_inputs(
-    background: Any, foreground: Any, offset: Any, mask: Any
-) -> tuple[np.ndarray, np.ndarray, tuple[int, int], np.ndarray | None]:
-    """Validate seamless_clone's inputs once; every message names the parameter."""
-    _same_kind_of_dtype(background, foreground)
-    background = _as_float_image(background, "background")
-    foreground = _as_float_image(foreground, "foreground")
-    if background.ndim != foreground.ndim:
-        kinds = {2: _("gray"), 3: "RGB"}
-        raise ValueError(
-            _(
-                "foreground is {foreground_kind} (shape {foreground_shape}) but background is "
-                "{background_kind} "
-                "(shape {background_shape}): both must be gray or both RGB (course.images.to_gray "
-                "converts)"
-            ).format(
-                foreground_kind=kinds[foreground.ndim],
-                foreground_shape=foreground.shape,
-                background_kind=kinds[background.ndim],
-                background_shape=background.shape,
-            )
-        )
-    x, y = _as_offset(offset)
-    height, width = foreground.shape[:2]
-    full_height, full_width = background.shape[:2]
-    if not (0 <= x and x + width <= full_width and 0 <= y and y + height <= full_height):
-        raise ValueError(
-            _(
-                "foreground of shape {foreground_size} at offset (x, y) = ({x}, {y}) does not fit "
-                "inside background of shape {background_size}: it would cover columns {x} to "
-                "{right} "
-                "and rows {y} to {bottom}; the background has columns 0 to {full_width} and rows 0 "
-                "to "
-                "{full_height}"
-            ).format(
-                foreground_size=foreground.shape[:2],
-                x=x,
-                y=y,
-                background_size=background.shape[:2],
-                right=x + width - 1,
-                bottom=y + height - 1,
-                full_width=full_width - 1,
-                full_height=full_height - 1,
-            )
-        )
-    if height < 3 or width < 3:
-        raise ValueError(
-            _(
-                "foreground must be at least 3 x 3 pixels: its outer ring is the boundary and the "
-                "region lies inside it; got shape {foreground_size}"
-            ).format(foreground_size=foreground.shape[:2])
-        )
-    if mask is not None:
-        mask = _as_mask(mask, "mask", (height, width), _("the foreground's (h, w)"))
-        ring = mask.copy()
-        ring[1:-1, 1:-1] = False
-        if ring.any():
-            rows, columns = np.nonzero(ring)
-            raise ValueError(
-                _(
-                    "mask must be False on the foreground's outer ring (its first and last rows "
-                    "and columns), which is the boundary and takes the background's values; got "
-                    "{size} masked pixels there, e.g. (x, y) = ({columns}, {rows})"
-                ).format(size=rows.size, columns=columns[0], rows=rows[0])
-            )
-    return background, foreground, (x, y), mask
-
-
-def _as_float_image(image: Any, name: str) -> np.ndarray:
-    """:func:`as_image`, checking a float64 array where it lies instead of copying it.
-
-    Nothing here writes to the images (the result is a new array), and the
-    copies and passes of the general check cost a 512 x 512 clone a tenth of
-    its time. An image of the right shape whose minimum and maximum lie in
-    [0, 1] is finite (NaN would be the minimum); anything else goes through
-    the general check, for its message.
-    """
-    if (
-        isinstance(image, np.ndarray)
-        and image.dtype == np.float64
-        and (image.ndim == 2 or (image.ndim == 3 and image.shape[2] == 3))
-        and image.shape[0] > 0
-        and image.shape[1] > 0
-        and 0.0 <= image.min()
-        and image.max() <= 1.0
-    ):
-        return image
-    return as_image(image, name)
-
-
-def _same_kind_of_dtype(background: Any, foreground: Any) -> None:
-    kinds = [np.asarray(image).dtype for image in (background, foreground)]
-    floating = [np.issubdtype(kind, np.floating) for kind in kinds]
-    if floating[0] != floating[1]:
-        raise TypeError(
-            _(
-                "foreground has dtype {foreground_dtype} but background has dtype "
-                "{background_dtype}: convert both to "
-                "float images in [0, 1] (a uint8 image / 255)"
-            ).format(foreground_dtype=kinds[1], background_dtype=kinds[0])
-        )
-
-
-def _as_offset(offset: Any) -> tuple[int, int]:
-    if isinstance(offset, (str, bytes)) or not hasattr(offset, "__len__") or len(offset) != 2:
-        raise ValueError(
-            _(
-                "offset must be a pair (x, y) of integers, the column and row of the foreground's "
-                "top-left pixel in the background; got {offset}"
-            ).format(offset=describe(offset))
-        )
-    return as_int(offset[0], "offset[0] (x)"), as_int(offset[1], "offset[1] (y)")
-
-
-def _as_mask(mask: Any, name: str, shape: tuple[int, int], what: str) -> np.ndarray:
-    array = np.asarray(mask)
-    if array.dtype != bool:
-        values = as_float_array(array, name)
-        require_finite(values, name)
-        if not np.isin(values, (0.0, 1.0)).all():
-            raise ValueError(
-                _(
-                    "{name} must be boolean (or 0 and 1); got values from {lowest:g} to {highest:g}"
-                ).format(name=name, lowest=values.min(), highest=values.max())
-            )
-        array = values == 1.0
-    if array.shape != shape:
-        raise ValueError(
-            _("{name} must have shape {shape}, {what}; got shape {array_shape}").format(
-                name=name, shape=shape, what=what, array_shape=array.shape
-            )
-        )
-    if not array.any():
-        raise ValueError(
-            _("{name} is empty: it selects no pixel, so there is nothing to solve").format(
-                name=name
-            )
-        )
-    return array.copy()

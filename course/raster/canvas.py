@@ -4,7 +4,8 @@ Images are float arrays in [0, 1], gray ``(H, W)`` or RGB ``(H, W, 3)``,
 indexed ``image[y, x]``. Rasterizers elsewhere return pixel coordinates;
 :func:`paint` is the only function that writes them into an image. It clips:
 a pixel outside the canvas is dropped, never wrapped around to the other side
-as a negative numpy index would be.
+as a negative numpy index would be. Its array code, on checked input, is in
+``_paint``, where renders that made their pixels themselves paint them too.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from course import limits
 from course._validate import (
     as_choice,
     as_float_array,
@@ -26,6 +28,7 @@ from course._validate import (
     require_finite,
 )
 from course.i18n import _
+from course.raster._paint import on_canvas, paint_into, painted_canvas
 
 __all__ = [
     "PAINT_MODES",
@@ -94,9 +97,7 @@ def inside(pixels: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
         raise ValueError(
             _("shape must be (H, W) or (H, W, C); got {shape}").format(shape=describe(shape))
         )
-    height, width = as_shape(tuple(shape[:2]))
-    x, y = coordinates[:, 0], coordinates[:, 1]
-    return (x >= 0) & (x < width) & (y >= 0) & (y < height)
+    return on_canvas(coordinates, as_shape(tuple(shape[:2])))
 
 
 def paint(
@@ -151,7 +152,10 @@ def paint(
     coordinates, value, strength, mode = _paint_arguments(
         pixels, color, weight, mode, channels=1 if image.ndim == 2 else 3
     )
-    return _paint_into(image, coordinates, value, strength, mode)
+    height, width = image.shape[:2]
+    if min(height, width) < 1 or height * width > limits.MAX_PIXELS:
+        as_shape((height, width))  # an empty or huge image: refused, as a canvas shape is
+    return paint_into(image, coordinates, value, strength, mode)
 
 
 def painted(
@@ -166,10 +170,9 @@ def painted(
     array([[0., 1., 0.],
            [0., 0., 0.]])
     """
-    height, width = as_shape(shape)
+    canvas = as_shape(shape)
     coordinates, value, strength, mode = _paint_arguments(pixels, color, weight, mode)
-    image = np.zeros((height, width, *value.shape))
-    return _paint_into(image, coordinates, value, strength, mode)
+    return painted_canvas(canvas, coordinates, value, strength, mode)
 
 
 def _paint_arguments(
@@ -194,35 +197,6 @@ def _paint_arguments(
     return coordinates, value, strength, mode
 
 
-def _paint_into(
-    image: np.ndarray, coordinates: np.ndarray, value: np.ndarray, strength: np.ndarray, mode: str
-) -> np.ndarray:
-    """Paint checked arguments into ``image``, in place; pixels off the canvas are dropped."""
-    strength = np.broadcast_to(strength, (len(coordinates),))
-    keep = inside(coordinates, image.shape)
-    x, y = coordinates[keep, 0], coordinates[keep, 1]
-    strength = strength[keep]
-    if image.ndim == 3:
-        strength = strength[:, None]
-    if mode == "add":
-        # Contributions are >= 0, so clipping the sum once equals saturating
-        # after every addition. Only the painted pixels can have passed 1:
-        # clip those, not the whole image (O(pixels), and nothing else touched).
-        np.add.at(image, (y, x), strength * value)
-        image[y, x] = np.minimum(image[y, x], 1.0)
-    elif mode == "max":
-        np.maximum.at(image, (y, x), strength * value)
-    else:
-        # Blending the same color k times leaves color + (old - color) * prod(1 - w),
-        # so one product per distinct painted pixel is enough.
-        flat, slot = np.unique(y * image.shape[1] + x, return_inverse=True)
-        remaining = np.ones((len(flat), *image.shape[2:]))
-        np.multiply.at(remaining, slot.ravel(), 1.0 - strength)
-        rows, columns = np.divmod(flat, image.shape[1])
-        image[rows, columns] = value + (image[rows, columns] - value) * remaining
-    return image
-
-
 def crop(image: np.ndarray, centre: Any, size: int) -> tuple[np.ndarray, tuple[float, ...]]:
     """A ``size`` x ``size`` window of ``image`` around ``centre`` = (x, y).
 
@@ -237,7 +211,9 @@ def crop(image: np.ndarray, centre: Any, size: int) -> tuple[np.ndarray, tuple[f
     ((4, 4), (0, 4, 10, 6))
     """
     array = as_image(image, "image", copy=False)
-    left, right, bottom, top = crop_extent(array.shape[:2], centre, size)
+    size = as_int(size, "size", minimum=1)
+    x, y = as_point(centre, "centre", dim=2)
+    left, right, bottom, top = _crop_extent(array.shape[:2], x, y, size)
     return array[top:bottom, left:right], (left, right, bottom, top)
 
 
@@ -249,9 +225,17 @@ def crop_extent(shape: Any, centre: Any, size: int) -> tuple[int, int, int, int]
     >>> crop_extent((10, 10), (0.2, 9.7), 4)
     (0, 4, 10, 6)
     """
-    height, width = as_shape(shape)
+    canvas = as_shape(shape)
     size = as_int(size, "size", minimum=1)
     x, y = as_point(centre, "centre", dim=2)
+    return _crop_extent(canvas, x, y, size)
+
+
+def _crop_extent(
+    canvas: tuple[int, ...], x: float, y: float, size: int
+) -> tuple[int, int, int, int]:
+    """:func:`crop_extent` of checked arguments: ``canvas`` (H, W), ``size`` >= 1."""
+    height, width = canvas[0], canvas[1]
     size_x, size_y = min(size, width), min(size, height)
     x0 = int(np.clip(np.floor(x) - size_x // 2, 0, width - size_x))
     y0 = int(np.clip(np.floor(y) - size_y // 2, 0, height - size_y))

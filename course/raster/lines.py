@@ -17,7 +17,7 @@ import numpy as np
 from course import limits
 from course._validate import as_choice, as_point, as_points, as_shape
 from course.i18n import _
-from course.raster.canvas import inside
+from course.raster._paint import on_canvas
 from course.raster.triangles import hit_counts, triangle, triangle_coverage
 
 __all__ = [
@@ -84,7 +84,7 @@ def nearest_pixels(points: Any, rounding: str = "floor", shape: Any = None) -> n
         pixels = np.trunc(samples)
     pixels = pixels.astype(np.int64)
     if shape is not None:
-        pixels = pixels[inside(pixels, as_shape(shape))]
+        pixels = pixels[on_canvas(pixels, as_shape(shape))]
     return pixels
 
 
@@ -181,7 +181,7 @@ def line(p0: Any, p1: Any, shape: Any = None, method: str = "closed_form") -> np
     else:
         pixels = _line_closed_form(x0, y0, x1, y1)
     if shape is not None:
-        pixels = pixels[inside(pixels, as_shape(shape))]
+        pixels = pixels[on_canvas(pixels, as_shape(shape))]
     return pixels
 
 
@@ -270,7 +270,7 @@ def line_4connected(p0: Any, p1: Any, shape: Any = None) -> np.ndarray:
     x1, y1 = _as_pixel(p1, "p1")
     pixels = np.array(_line_loop(x0, y0, x1, y1, diagonal_steps=False), dtype=np.int64)
     if shape is not None:
-        pixels = pixels[inside(pixels, as_shape(shape))]
+        pixels = pixels[on_canvas(pixels, as_shape(shape))]
     return pixels
 
 
@@ -384,5 +384,5 @@ def wu_line(p0: Any, p1: Any, shape: Any = None) -> tuple[np.ndarray, np.ndarray
     pixels = np.stack((minor, major) if steep else (major, minor), axis=1)
     keep = weights > 0
     if shape is not None:
-        keep &= inside(pixels, as_shape(shape))
+        keep &= on_canvas(pixels, as_shape(shape))
     return pixels[keep], weights[keep]

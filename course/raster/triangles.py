@@ -43,9 +43,10 @@ from course._validate import (
     as_points,
     as_shape,
     describe,
+    require_finite,
 )
 from course.i18n import _
-from course.raster.canvas import inside
+from course.raster._paint import on_canvas
 
 __all__ = [
     "EDGE_RULES",
@@ -67,6 +68,8 @@ _HALF = SUBPIXEL // 2
 _MAX_VERTEX_COORDINATE = int(limits.MAX_COORDINATE)
 # Pixel centres tested at once by the edge-function form (bounds its memory).
 _BLOCK = 1 << 18
+# A caller's own choice of the edge functions, which it does not ask to be checked.
+_EDGE_FUNCTIONS = object()
 
 
 def triangle(
@@ -123,16 +126,31 @@ def triangle(
     >>> len(triangle((0, 0), (4, 4), (0, 4), rule="closed"))
     10
     """
-    vertices = _snap(p0, p1, p2)
-    rule = as_choice(rule, "rule", EDGE_RULES)
-    method = as_choice(method, "method", TRIANGLE_METHODS)
-    canvas = None if shape is None else as_shape(shape)
-    if canvas is None:
-        _require_bounded_box(vertices)
+    _points, vertices, canvas, rule, method = _checked_triangle(p0, p1, p2, shape, rule, method)
     if method == "loop":
         pixels = np.array(_triangle_loop(vertices, canvas, rule), dtype=np.int64)
         return pixels.reshape(-1, 2)
     return _triangle_edge_functions(vertices, canvas, rule)
+
+
+def _checked_triangle(
+    p0: Any, p1: Any, p2: Any, shape: Any, rule: str, method: Any = _EDGE_FUNCTIONS
+) -> tuple[list[np.ndarray], list[tuple[int, int]], tuple[int, int] | None, str, str]:
+    """:func:`triangle`'s checks, in its order: the vertices as given and snapped, the canvas,
+    the rule and the method (by default the edge functions, which need no check)."""
+    points, vertices = [], []
+    for name, point in (("p0", p0), ("p1", p1), ("p2", p2)):
+        points.append(as_point(point, name, dim=2))
+        vertices.append(_snapped(points[-1], name))
+    rule = as_choice(rule, "rule", EDGE_RULES)
+    if method is _EDGE_FUNCTIONS:
+        method = "edge_functions"
+    else:
+        method = as_choice(method, "method", TRIANGLE_METHODS)
+    canvas = None if shape is None else as_shape(shape)
+    if canvas is None:
+        _require_bounded_box(vertices)
+    return points, vertices, canvas, rule, method
 
 
 def _require_bounded_box(vertices: list[tuple[int, int]]) -> None:
@@ -149,20 +167,16 @@ def _require_bounded_box(vertices: list[tuple[int, int]]) -> None:
         )
 
 
-def _snap(p0: Any, p1: Any, p2: Any) -> list[tuple[int, int]]:
-    """Validate three vertices and snap them to integers in 1/SUBPIXEL units."""
-    vertices = []
-    for name, point in (("p0", p0), ("p1", p1), ("p2", p2)):
-        array = as_point(point, name, dim=2)
-        if np.abs(array).max() > _MAX_VERTEX_COORDINATE:
-            raise ValueError(
-                _("{name} coordinates must lie within +-{most}; got {array}").format(
-                    name=name, most=_MAX_VERTEX_COORDINATE, array=array.tolist()
-                )
+def _snapped(array: np.ndarray, name: str) -> tuple[int, int]:
+    """A checked vertex in integers of 1/SUBPIXEL units, within the coordinates they allow."""
+    if np.abs(array).max() > _MAX_VERTEX_COORDINATE:
+        raise ValueError(
+            _("{name} coordinates must lie within +-{most}; got {array}").format(
+                name=name, most=_MAX_VERTEX_COORDINATE, array=array.tolist()
             )
-        x, y = (int(v) for v in np.rint(array * SUBPIXEL))
-        vertices.append((x, y))
-    return vertices
+        )
+    x, y = (int(v) for v in np.rint(array * SUBPIXEL))
+    return x, y
 
 
 def _floor_div(a: int, b: int) -> int:
@@ -332,11 +346,17 @@ def triangle_coverage(
                 "{height} x {width} x {rate}**2"
             ).format(most=limits.MAX_PIXELS, height=height, width=width, rate=rate)
         )
+    names = ("p0", "p1", "p2")
     scaled = [
-        rate * as_point(point, name, dim=2)
-        for name, point in zip(("p0", "p1", "p2"), (p0, p1, p2), strict=True)
+        rate * as_point(point, name, dim=2) for name, point in zip(names, (p0, p1, p2), strict=True)
     ]
-    fine = triangle(*scaled, shape=(height * rate, width * rate), rule=rule)
+    vertices = []
+    for name, point in zip(names, scaled, strict=True):
+        if not np.isfinite(point).all():
+            require_finite(point, name)  # rate times a huge coordinate: inf, refused as before
+        vertices.append(_snapped(point, name))
+    rule = as_choice(rule, "rule", EDGE_RULES)
+    fine = _triangle_edge_functions(vertices, (height * rate, width * rate), rule)
     coarse = fine[:, 1] // rate * width + fine[:, 0] // rate
     counts = np.bincount(coarse, minlength=height * width)
     index = np.flatnonzero(counts)
@@ -359,7 +379,7 @@ def hit_counts(pixel_sets: Iterable[Any], shape: Any) -> np.ndarray:
     counts = np.zeros(height * width, dtype=np.int64)
     for index, pixels in enumerate(pixel_sets):
         array = as_pixels(pixels, f"pixel_sets[{index}]")
-        array = array[inside(array, (height, width))]
+        array = array[on_canvas(array, (height, width))]
         counts += np.bincount(array[:, 1] * width + array[:, 0], minlength=height * width)
     return counts.reshape(height, width)
 
@@ -392,6 +412,11 @@ def barycentric(p0: Any, p1: Any, p2: Any, points: Any) -> np.ndarray:
         raise ValueError(
             _("points must have shape (K, 2); got shape {at_shape}").format(at_shape=at.shape)
         )
+    return _barycentric(a, b, c, at)
+
+
+def _barycentric(a: np.ndarray, b: np.ndarray, c: np.ndarray, at: np.ndarray) -> np.ndarray:
+    """:func:`barycentric` of checked points: a, b, c (2,), ``at`` (K, 2)."""
     twice_area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
     if twice_area == 0:
         raise ValueError(
@@ -434,8 +459,9 @@ def interpolate(
                 "{values}"
             ).format(values=describe(values))
         )
-    pixels = triangle(p0, p1, p2, shape=shape, rule=rule)
+    points, vertices, canvas, rule, _method = _checked_triangle(p0, p1, p2, shape, rule)
+    pixels = _triangle_edge_functions(vertices, canvas, rule)
     if len(pixels) == 0:
         return pixels, np.zeros((0, *table.shape[1:]))
-    weights = barycentric(p0, p1, p2, pixels + 0.5)
+    weights = _barycentric(*points, pixels + 0.5)
     return pixels, weights @ table

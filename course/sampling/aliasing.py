@@ -25,14 +25,7 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import (
-    as_float_array,
-    as_int,
-    as_positive_float,
-    as_scalar_parameter,
-    require_finite,
-    require_within,
-)
+from course._validate import as_finite_array, as_int, as_positive_float, as_scalar_parameter
 from course.i18n import _
 
 __all__ = ["alias_frequency", "box_response", "cosine_samples", "spectrum"]
@@ -51,9 +44,7 @@ def alias_frequency(frequency: Any, rate: float) -> np.ndarray | float:
     (0.30000000000000004, 0.3, 0.25)
     """
     rate = as_positive_float(rate, "rate")
-    values = as_float_array(frequency, "frequency")
-    require_finite(values, "frequency")
-    require_within(values, "frequency", limits.MAX_PARAMETER, "values")
+    values = as_finite_array(frequency, "frequency", limits.MAX_PARAMETER, "values")
     folded = np.abs(values - rate * np.round(values / rate))
     return float(folded) if folded.ndim == 0 else folded
 
@@ -88,9 +79,7 @@ def spectrum(samples: Any, rate: float) -> tuple[np.ndarray, np.ndarray]:
     (0.125, 1.0)
     """
     rate = as_positive_float(rate, "rate")
-    values = as_float_array(samples, "samples")
-    require_finite(values, "samples")
-    require_within(values, "samples", limits.LARGEST, "values")
+    values = as_finite_array(samples, "samples", limits.LARGEST, "values")
     if values.ndim != 1 or len(values) < 2:
         raise ValueError(
             _("samples must be a 1-D array of at least 2 values; got shape {values_shape}").format(
@@ -119,9 +108,7 @@ def box_response(frequency: Any, width: float = 1.0) -> np.ndarray | float:
     (0.6366, 0.0, 1.0)
     """
     width = as_positive_float(width, "width")
-    values = as_float_array(frequency, "frequency")
-    require_finite(values, "frequency")
-    require_within(values, "frequency", limits.MAX_PARAMETER, "values")
+    values = as_finite_array(frequency, "frequency", limits.MAX_PARAMETER, "values")
     response = np.sinc(values * width)
     response = np.where(np.abs(response) < 1e-15, 0.0, response)
     return float(response) if response.ndim == 0 else response

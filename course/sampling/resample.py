@@ -31,9 +31,10 @@ from scipy import sparse
 from course import limits
 from course._validate import (
     as_choice,
-    as_float_array,
+    as_finite_arrays,
     as_image,
     as_int,
+    as_real,
     as_shape,
     describe,
     require_finite,
@@ -78,9 +79,7 @@ def bilinear(image: Any, x: Any, y: Any) -> np.ndarray:
     0.5
     """
     pixels = as_image(image, "image", copy=False)
-    xs, ys = as_float_array(x, "x"), as_float_array(y, "y")
-    require_finite(xs, "x")
-    require_finite(ys, "y")
+    xs, ys = as_finite_arrays((x, "x"), (y, "y"))
     try:
         xs, ys = np.broadcast_arrays(xs, ys)
     except ValueError:
@@ -204,7 +203,8 @@ def supersample_without_offset(image: Any, out_shape: Any, rate: int) -> np.ndar
     >>> supersample_without_offset(image, (1, 2), rate=1)  # samples at x = 0.5, 2.5
     array([[0., 0.]])
     """
-    return supersample_shifted(image, out_shape, rate, sample_offset=0.0, pixel_centre=0.0)
+    pixels, height, width, rate = _checked_supersampling(image, out_shape, rate)
+    return _supersample_shifted(pixels, (height, width), rate, 0.0, 0.0)
 
 
 def supersample_shifted(
@@ -227,19 +227,31 @@ def supersample_shifted(
     >>> supersample_shifted(image, (1, 2), 1, pixel_centre=0.0)  # samples at 1, 3: pixels 1, 3
     array([[1., 1.]])
     """
+    pixels, height, width, rate = _checked_supersampling(image, out_shape, rate)
+    sample_offset = as_real(sample_offset, "sample_offset")
+    pixel_centre = as_real(pixel_centre, "pixel_centre")
+    return _supersample_shifted(pixels, (height, width), rate, sample_offset, pixel_centre)
+
+
+def _checked_supersampling(
+    image: Any, out_shape: Any, rate: int
+) -> tuple[np.ndarray, int, int, int]:
+    """The checks every supersampling makes: the image, the output's shape and the rate."""
     pixels = as_image(image, "image", copy=False)
     height, width = as_shape(out_shape, "out_shape")
     rate = as_int(rate, "rate", minimum=1, maximum=limits.MAX_RATE)
     _require_bounded_samples(height, width, rate)
-    offsets = []
-    for value, name in ((sample_offset, "sample_offset"), (pixel_centre, "pixel_centre")):
-        number = float(as_float_array(value, name))
-        require_finite(np.asarray(number), name)
-        offsets.append(number)
-    sample_offset, pixel_centre = offsets
-    rows = _resampling_matrix(pixels.shape[0], height, rate, sample_offset, pixel_centre)
-    columns = _resampling_matrix(pixels.shape[1], width, rate, sample_offset, pixel_centre)
-    return _separable(pixels, rows, columns)
+    return pixels, height, width, rate
+
+
+def _supersample_shifted(
+    image: np.ndarray, out_shape: tuple[int, int], rate: int, sample_offset: float, centre: float
+) -> np.ndarray:
+    """:func:`supersample_shifted` of checked arguments."""
+    height, width = out_shape
+    rows = _resampling_matrix(image.shape[0], height, rate, sample_offset, centre)
+    columns = _resampling_matrix(image.shape[1], width, rate, sample_offset, centre)
+    return _separable(image, rows, columns)
 
 
 def _resampling_matrix(

@@ -21,7 +21,7 @@ from course.curves.bezier import de_casteljau, de_casteljau_levels
 from course.i18n import _
 from course.images import EXAMPLE_POINTS
 from course.widgets.base import Handle, SliderApp, format_points, parse_points
-from course.widgets.picture import FixedText
+from course.widgets.text_cache import FixedText
 
 __all__ = ["DeCasteljauApp"]
 

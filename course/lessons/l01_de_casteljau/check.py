@@ -14,7 +14,9 @@ Each recognises the handouts' mistakes: the reversed step of seeds 002 and
 t = 1, the GAMES101 report's float32 t, OpenCV's rounding to the nearest
 pixel, the two together (the GAMES101 report's loop), a negative index that
 wraps around to the other side of the window, and the wrong colour. An
-answer that calls the library's own curve is told to write it.
+answer that calls the library's own curve is told to write it. The drawing
+loop's cases, reference, mistakes and pictures are in
+:mod:`~course.lessons.l01_de_casteljau.drawing_loop`.
 
 Hints come in steps: a failure says where to look, the next failures say
 more; ``check.hint("bezier")`` says more at once and
@@ -35,24 +37,29 @@ from course.check.base import (
     Mistake,
     close,
     hint,
-    pixel_difference,
-    pixel_rows,
-    register_hints,
     run_cases,
-    same_pixels,
 )
+from course.check.exercises import exercise
 from course.check.hints import Hints
-from course.check.pictures import curve_picture, pixel_picture, side_by_side
-from course.check.sandbox import run_bounded
+from course.check.pictures import curve_picture
 from course.curves import bezier as library
-from course.curves.bezier import de_casteljau, de_casteljau_levels, uniform_parameters
+from course.curves.bezier import de_casteljau, de_casteljau_levels
 from course.curves.bezier_handouts import de_casteljau_reversed
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC
-from course.raster import nearest_pixels
+from course.lessons.l01_de_casteljau.drawing_loop import (
+    Painting,
+    bezier_cases,
+    bezier_mistakes,
+    bezier_pass_picture,
+    bezier_picture,
+    bezier_reference,
+    painting_difference,
+    same_painting,
+    show_painting,
+)
 
 __all__ = [
-    "BEZIER_SHAPES",
     "LIBRARY_CURVES",
     "as_point",
     "bezier",
@@ -66,9 +73,6 @@ __all__ = [
     "recursive_bezier",
 ]
 
-#: The t step of seed 000's loop, and the values it should take: 0, 0.001, ..., 1.
-STEP = 0.001
-_STEPS = round(1 / STEP)
 _LIBRARY_FUNCTIONS = (
     library.de_casteljau,
     library.de_casteljau_recursive,
@@ -216,22 +220,32 @@ def _curve(control_points: np.ndarray, t: Any) -> np.ndarray:
     return de_casteljau(control_points, t)
 
 
-RECURSIVE_HINTS = register_hints(
-    "recursive_bezier",
-    Hints(
-        where=N_("look at what one call hands to the next, and at when the recursion stops."),
-        more=N_(
-            "each call makes one level with one point fewer (your next_level), and passes "
-            "it on with the same t; the call that gets a single point has B(t)."
-        ),
-        recipe=N_(
-            "if len(control_points) == 1, return control_points[0]; otherwise return "
-            "recursive_bezier(next_level(control_points, t), t)."
-        ),
+RECURSIVE_HINTS = Hints(
+    where=N_("look at what one call hands to the next, and at when the recursion stops."),
+    more=N_(
+        "each call makes one level with one point fewer (your next_level), and passes "
+        "it on with the same t; the call that gets a single point has B(t)."
+    ),
+    recipe=N_(
+        "if len(control_points) == 1, return control_points[0]; otherwise return "
+        "recursive_bezier(next_level(control_points, t), t)."
     ),
 )
 
 
+def _graded_recursive_bezier(control_points: Any, t: float) -> Any:
+    """The grader's answer to ``recursive_bezier``: steps until one point is left."""
+    points = np.asarray(control_points, dtype=float)
+    while len(points) > 1:
+        points = (1 - t) * points[:-1] + t * points[1:]
+    return points[0]
+
+
+@exercise(
+    hints=RECURSIVE_HINTS,
+    refuses=library_curves,
+    grader_reference=_graded_recursive_bezier,
+)
 def recursive_bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's de Casteljau ``recursive_bezier(control_points, t)``.
 
@@ -251,10 +265,8 @@ def recursive_bezier(function: Callable[..., Any]) -> CheckResult:
         reference=_curve,
         compare=close(atol=1e-9, rtol=1e-9),
         convert=as_point,
-        hint=RECURSIVE_HINTS,
         mistakes=point_mistakes(_curve),
         picture=point_picture(_curve, N_("your recursive_bezier")),
-        forbidden=library_curves(),
         pass_picture=curve_pass_picture(_curve, "recursive_bezier"),
     )
 
@@ -327,25 +339,37 @@ def _level_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes
     )
 
 
-NEXT_LEVEL_HINTS = register_hints(
-    "next_level",
-    Hints(
-        where=N_(
-            "look at the edges of the control polygon: how many there are, and where on "
-            "each your new point sits."
-        ),
-        more=N_(
-            "each edge from P[i] to P[i+1] gets one new point, t of the way from P[i]: "
-            "at t = 0 it is P[i], at t = 1 it is P[i+1]."
-        ),
-        recipe=N_(
-            "the new point on edge i is (1 - t) P[i] + t P[i+1], for i = 0 ... N - 2; "
-            "with numpy, the first N - 1 rows and the last N - 1 rows of control_points."
-        ),
+NEXT_LEVEL_HINTS = Hints(
+    where=N_(
+        "look at the edges of the control polygon: how many there are, and where on "
+        "each your new point sits."
+    ),
+    more=N_(
+        "each edge from P[i] to P[i+1] gets one new point, t of the way from P[i]: "
+        "at t = 0 it is P[i], at t = 1 it is P[i+1]."
+    ),
+    recipe=N_(
+        "the new point on edge i is (1 - t) P[i] + t P[i+1], for i = 0 ... N - 2; "
+        "with numpy, the first N - 1 rows and the last N - 1 rows of control_points."
     ),
 )
 
 
+def _graded_next_level(control_points: Any, t: float) -> Any:
+    """The grader's answer to ``next_level``: one de Casteljau step, in plain numpy.
+
+    nbgrader grades a later exercise that calls ``next_level`` with it, so that a mistake
+    is charged once; it is not the library's, which the checkers refuse.
+    """
+    points = np.asarray(control_points, dtype=float)
+    return (1 - t) * points[:-1] + t * points[1:]
+
+
+@exercise(
+    hints=NEXT_LEVEL_HINTS,
+    refuses=library_curves,
+    grader_reference=_graded_next_level,
+)
 def next_level(function: Callable[..., Any]) -> CheckResult:
     """Check ``next_level(control_points, t)``: the N - 1 points of one de Casteljau step.
 
@@ -364,333 +388,32 @@ def next_level(function: Callable[..., Any]) -> CheckResult:
         reference=_reference_level,
         compare=close(atol=1e-9, rtol=1e-9),
         convert=_as_level,
-        hint=NEXT_LEVEL_HINTS,
         mistakes=_level_mistakes(),
-        forbidden=library_curves(),
         pass_picture=_level_pass_picture,
     )
 
 
-#: The drawing loop's windows: seed 000's curve on its 700 x 700 window, a curve that
-#: leaves a small window on every side (its pixels off the window must be skipped, and it
-#: crosses x = width and y = height, where a test `x <= width` indexes past the end), a
-#: curve on a 24 x 24 window, then lines along the window's edges, where a test one off
-#: (`0 < x`, `x <= width`, `0 < y`, `y <= height`, `-1 <= y`) paints too much or too little:
-#: x = 0 and y = 0 exactly (painted), x = width and y = height exactly (skipped), and
-#: y = -0.5 (skipped, although int(-0.5) is row 0).
-BEZIER_SHAPES = (
-    (SEED_000_CUBIC, (700, 700)),
-    (np.array([[-20.0, 50.0], [30.0, -40.0], [70.0, 90.0], [100.0, 20.0]]), (60, 80)),
-    (np.array([[2.2, 20.5], [5.0, 1.5], [21.0, 3.5]]), (24, 24)),
-    (np.array([[0.0, 10.0], [0.0, 100.0]]), (700, 700)),
-    (np.array([[650.0, 100.0], [700.0, 100.0]]), (700, 700)),
-    (np.array([[100.0, 0.0], [300.0, 0.0]]), (700, 700)),
-    (np.array([[100.0, 700.0], [300.0, 700.0]]), (700, 700)),
-    (np.array([[100.0, -0.5], [300.0, -0.5]]), (700, 700)),
-)
-#: A curve that tells t accumulated in float steps from range(1000): it runs right to left
-#: two pixels per step, so t a few ulps above k / 1000 lands one pixel to the left.
-ACCUMULATION_PROBE = {"control_points": np.array([[699.0, 0.5], [-1301.0, 0.5]]), "shape": (2, 700)}
-GREEN = (0.0, 1.0, 0.0)
-
-
-def _bezier_cases() -> list[dict[str, Any]]:
-    return [
-        {"control_points": points.copy(), "window": np.zeros((*shape, 3))}
-        for points, shape in BEZIER_SHAPES
-    ]
-
-
-def _loop_pixels(
-    control_points: np.ndarray, shape: tuple[int, ...], t: np.ndarray, rounding: str = "floor"
-) -> np.ndarray:
-    curve = de_casteljau(control_points, t)
-    return nearest_pixels(curve, rounding=rounding, shape=shape[:2])
-
-
-def _every_t() -> np.ndarray:
-    return np.arange(_STEPS + 1) / _STEPS
-
-
-def _bezier_reference(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
-    return _loop_pixels(control_points, window.shape, _every_t())
-
-
-def _wrapped(rounding: str) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
-    """The pixels of a loop that tests only ``x < width and y < height``.
-
-    A negative index counts from the end of the row or column, so a pixel
-    left of or above the window lands on its other side; ``int`` truncates
-    toward zero, so a point in (-1, 0) lands in column or row 0 instead.
-    """
-
-    def pixels(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
-        height, width = window.shape[:2]
-        curve = de_casteljau(control_points, _every_t())
-        kept = curve[(curve[:, 0] < width) & (curve[:, 1] < height)]
-        found = nearest_pixels(kept, rounding=rounding)
-        # Python raises past -length, so such a loop stops there: not this mistake.
-        inside = (found[:, 0] >= -width) & (found[:, 1] >= -height)
-        return found[inside] % (width, height)
-
-    return pixels
-
-
-class _Painting:
-    """The pixels a student painted (any channel not 0), and the first in the wrong colour.
-
-    Made from ``(window, returned)``: the window after the call, and what the
-    function returned, kept to recognise a painted copy returned instead.
-    """
-
-    def __init__(self, answer: Any) -> None:
-        window, returned = answer
-        image = np.asarray(window)
-        if image.ndim != 3 or image.shape[2] != 3 or image.dtype.kind not in "biuf":
-            raise AnswerError(
-                _("the window must stay an (H, W, 3) image of numbers; yours is {shape}").format(
-                    shape=image.shape
-                )
-            )
-        self.window = image
-        self.pixels, self.wrong_colour = _painted(image)
-        self.returned_pixels = None
-        if isinstance(returned, np.ndarray) and returned.shape == image.shape:
-            self.returned_pixels = _painted(returned)[0]
-
-
-def _painted(image: np.ndarray) -> tuple[np.ndarray, tuple[int, int, tuple] | None]:
-    painted = (image != 0).any(axis=2)
-    rows, columns = np.nonzero(painted)
-    pixels = np.column_stack([columns, rows]).astype(np.int64)
-    colours = image[rows, columns].astype(float)
-    wrong = ~(colours == GREEN).all(axis=1)
-    wrong_colour = None
-    if wrong.any():
-        k = int(np.argmax(wrong))
-        wrong_colour = (int(columns[k]), int(rows[k]), tuple(colours[k].tolist()))
-    return pixels, wrong_colour
-
-
-def _same_painting(expected: np.ndarray, given: _Painting) -> bool:
-    return given.wrong_colour is None and same_pixels(expected, given.pixels)
-
-
-def _painting_difference(expected: np.ndarray, given: _Painting) -> str:
-    if given.wrong_colour is not None and same_pixels(expected, given.pixels):
-        x, y, colour = given.wrong_colour
-        shown = ", ".join(f"{c:g}" for c in colour)
-        return _(
-            "the right pixels, but pixel ({x}, {y}) is ({colour}): paint the curve green, (0, 1, 0)"
-        ).format(x=x, y=y, colour=shown)
-    return pixel_difference(expected, given.pixels)
-
-
-def _show_painting(answer: Any) -> str:
-    if isinstance(answer, _Painting):
-        count = len(answer.pixels)
-    else:
-        count = len(np.unique(pixel_rows(answer, "expected"), axis=0))
-    # Always "pixels", as before the reports were translated: English stays what it was.
-    return _("{count} pixels painted").format(count=count)
-
-
-def _pixels_of(answer: Any) -> Any:
-    return answer.pixels if isinstance(answer, _Painting) else answer
-
-
-def _accumulates(student: Callable[..., Any]) -> bool:
-    """Whether ``student`` paints the probe curve as t accumulated in float steps would."""
-    probe = ACCUMULATION_PROBE
-    window = np.zeros((*probe["shape"], 3))
-    run_bounded(lambda: student(probe["control_points"].copy(), window))
-    steps = uniform_parameters(STEP, accumulate="float64")
-    expected = _loop_pixels(probe["control_points"], window.shape, steps)
-    return bool(same_pixels(expected, _painted(window)[0]))
-
-
-def _bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
-    accumulated = uniform_parameters(STEP, accumulate="float64")
-    float32_loop = uniform_parameters(STEP, accumulate="float32")
-
-    def pixels_match(mistaken: Any, given: Any) -> bool:
-        return same_pixels(mistaken, _pixels_of(given))
-
-    def accumulated_match(mistaken: Any, given: Any) -> bool:
-        return pixels_match(mistaken, given) and student is not None and _accumulates(student)
-
-    def colour_match(expected: Any, given: Any) -> bool:
-        return getattr(given, "wrong_colour", None) is not None and bool(
-            same_pixels(expected, _pixels_of(given))
-        )
-
-    def copy_match(expected: Any, given: Any) -> bool:
-        returned = getattr(given, "returned_pixels", None)
-        return (
-            len(_pixels_of(given)) == 0
-            and returned is not None
-            and bool(same_pixels(expected, returned))
-        )
-
-    wraps = _(
-        "a pixel with x < 0 or y < 0 appeared on the other side of the window (or, through "
-        "int(), which rounds toward zero, in column or row 0): Python counts a negative index "
-        "from the end. Test 0 <= x < width and 0 <= y < height before you paint, and skip "
-        "every point off the window."
-    )
-    return [
-        # First: with the right pixels in the wrong colour, every mistake that only compares
-        # pixels and agrees with the reference on this case (off-window points wrapped, when
-        # there are none) would match too.
-        Mistake(
-            _("the wrong colour"),
-            _(
-                "you painted the right pixels in another colour: the window holds floats from 0 "
-                "to 1 in the order red, green, blue, so green is (0, 1, 0); (0, 255, 0) is "
-                "OpenCV's 8-bit scale, and (1, 0, 0) is red."
-            ),
-            _bezier_reference,
-            matches=colour_match,
-        ),
-        Mistake(
-            _("a painted copy"),
-            _(
-                "your function painted a copy of the window and returned it: the window it was "
-                "given stays black. Paint into window itself (window[y, x] = ...), the one "
-                "argument this exercise lets you change; there is nothing to return."
-            ),
-            _bezier_reference,
-            matches=copy_match,
-        ),
-        Mistake(
-            _("t accumulated in float steps"),
-            _(
-                "your t is a sum of 0.001 steps (t = 0.0; while t <= 1: ...; t += 0.001), as the "
-                "handouts' loop `for (t = 0; t <= 1; t += 0.001)` does: each addition rounds, the "
-                "sum ends a hair above 1 after a thousand steps, so t = 1 is never painted, and on "
-                "the way t drifts a few units in the last place. Count whole steps instead: "
-                "for k in range(1001): t = k / 1000."
-            ),
-            lambda control_points, window: _loop_pixels(control_points, window.shape, accumulated),
-            matches=accumulated_match,
-        ),
-        Mistake(
-            _("the loop stops before t = 1"),
-            _(
-                "your loop never reaches t = 1, so the curve's last pixel stays dark: range(1000) "
-                "and np.arange(0, 1, 0.001) stop at 0.999. Count whole steps up to and including "
-                "1000: for k in range(1001): t = k / 1000."
-            ),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape, _every_t()[:-1]
-            ),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("the float32 loop of the GAMES101 report"),
-            _(
-                "your t drifts: the handout's `float t` keeps about 7 digits, and a thousand "
-                "additions of 0.001 move the points enough to change pixels in the middle of the "
-                "curve. Compute each t from a whole count, in Python's float."
-            ),
-            lambda control_points, window: _loop_pixels(control_points, window.shape, float32_loop),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("rounding to the nearest pixel"),
-            _(
-                "you rounded x and y, as OpenCV's cv::Point does in the GAMES101 report: that "
-                "paints the pixel whose corner is nearest, half a pixel off. As the lesson says, "
-                "the pixel whose square holds the point (x, y) is (int(x), int(y)) for x, y >= 0: "
-                "the whole parts, not the rounded values."
-            ),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape, _every_t(), "round"
-            ),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("the GAMES101 report's loop: float32 t and cv::Point rounding"),
-            _(
-                "your loop is the GAMES101 report's: a `float t` advanced by 0.001 a thousand "
-                "times, which drifts, and each point rounded to the nearest pixel as cv::Point "
-                "does, half a pixel off. Compute each t from a whole count (t = k / 1000, in "
-                "Python's float) and paint (int(x), int(y)), the pixel whose square holds the "
-                "point."
-            ),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape, float32_loop, "round"
-            ),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("x and y swapped"),
-            _("you wrote window[x, y]: an image is indexed by row first, window[y, x]."),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape[1::-1], _every_t()
-            )[:, ::-1],
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("int() before the window test"),
-            _(
-                "a point just left of or above the window, with x or y between -1 and 0, was "
-                "painted in column or row 0: int() rounds toward zero, so int(-0.5) is 0 and "
-                "passes a test of the pixel. Test the point itself, 0 <= x < width and "
-                "0 <= y < height, before you take int(), or take math.floor."
-            ),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape, _every_t(), "trunc"
-            ),
-            matches=pixels_match,
-        ),
-        Mistake(_("a negative index wraps around"), wraps, _wrapped("trunc"), matches=pixels_match),
-        Mistake(_("a negative index wraps around"), wraps, _wrapped("floor"), matches=pixels_match),
-        Mistake(
-            _("a step of 0.01"),
-            _(
-                "your step is ten times too coarse: 101 points leave gaps on a curve about 1400 "
-                "pixels long. Use 0.001, as the handout does."
-            ),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape, np.arange(101) / 100
-            ),
-            matches=pixels_match,
-        ),
-    ]
-
-
-def _bezier_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
-    return pixel_picture(expected, _pixels_of(given), title=_("around the first difference"))
-
-
-def _bezier_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
-    case, expected, given = results[0]
-    reference = np.zeros(case["window"].shape)
-    reference[expected[:, 1], expected[:, 0]] = GREEN
-    return side_by_side(reference, given.window, (_("expected"), _("your window")), shrink="max")
-
-
-BEZIER_HINTS = register_hints(
-    "bezier",
-    Hints(
-        where=N_(
-            "look at the values t takes (the first and the last), at which pixel each point "
-            "lands in, and at points off the window."
-        ),
-        more=N_(
-            "t must run from 0 to exactly 1 in steps of 0.001; the pixel holding (x, y) has "
-            "the whole parts of x and y, rows first in the window; a point with x or y below "
-            "0, or at width or height and beyond, is skipped."
-        ),
-        recipe=N_(
-            "for k in range(1001): t = k / 1000; x, y = recursive_bezier(control_points, "
-            "t); if 0 <= x < width and 0 <= y < height: window[int(y), int(x)] = (0, 1, 0)."
-        ),
+BEZIER_HINTS = Hints(
+    where=N_(
+        "look at the values t takes (the first and the last), at which pixel each point "
+        "lands in, and at points off the window."
+    ),
+    more=N_(
+        "t must run from 0 to exactly 1 in steps of 0.001; the pixel holding (x, y) has "
+        "the whole parts of x and y, rows first in the window; a point with x or y below "
+        "0, or at width or height and beyond, is skipped."
+    ),
+    recipe=N_(
+        "for k in range(1001): t = k / 1000; x, y = recursive_bezier(control_points, "
+        "t); if 0 <= x < width and 0 <= y < height: window[int(y), int(x)] = (0, 1, 0)."
     ),
 )
 
 
+@exercise(
+    hints=BEZIER_HINTS,
+    refuses=library_curves,
+)
 def bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's drawing loop ``bezier(control_points, window)``.
 
@@ -713,17 +436,15 @@ def bezier(function: Callable[..., Any]) -> CheckResult:
     return run_cases(
         "bezier",
         function,
-        _bezier_cases(),
-        reference=_bezier_reference,
-        compare=_same_painting,
-        convert=_Painting,
-        hint=BEZIER_HINTS,
-        mistakes=_bezier_mistakes(function),
-        difference=_painting_difference,
-        picture=_bezier_picture,
-        show=_show_painting,
+        bezier_cases(),
+        reference=bezier_reference,
+        compare=same_painting,
+        convert=Painting,
+        mistakes=bezier_mistakes(function),
+        difference=painting_difference,
+        picture=bezier_picture,
+        show=show_painting,
         answer=lambda returned, arguments: (arguments[1], returned),
         writable=("window",),
-        forbidden=library_curves(),
-        pass_picture=_bezier_pass_picture,
+        pass_picture=bezier_pass_picture,
     )

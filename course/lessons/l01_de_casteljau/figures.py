@@ -4,7 +4,9 @@ Each function draws one picture of the lesson and returns it as a
 :class:`~course.widgets.picture.Still` (shown as PNG in a notebook), so the
 notebook holds no plotting code. Pixel views are drawn at a whole zoom
 (:func:`~course.widgets.picture.pixel_figure`); colours are Okabe and Ito's,
-and every colour has a legend entry or a label.
+and every colour has a legend entry or a label. The pieces the pixel views
+share, and the yellow check's overview, are in
+:mod:`~course.lessons.l01_de_casteljau.pixel_views`.
 """
 
 from __future__ import annotations
@@ -14,35 +16,26 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-from matplotlib.collections import LineCollection
-from matplotlib.colors import LinearSegmentedColormap, Normalize
 from matplotlib.figure import Figure
-from matplotlib.legend_handler import HandlerTuple
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
-from matplotlib.ticker import PercentFormatter
-from scipy.spatial import cKDTree
 
 from course._validate import as_choice, as_figure_curve, as_int
-from course.curves.bezier import (
-    de_casteljau,
-    de_casteljau_levels,
-    derivative,
-    flatten,
-    uniform_parameters,
-)
-from course.curves.bezier_handouts import (
-    HANDOUT_LOOPS,
-    de_casteljau_reversed,
-    loop_pixels,
-    trace_iterative,
-    trace_recursive,
-    yellow_check,
-)
+from course.curves.bezier import de_casteljau, de_casteljau_levels, derivative
+from course.curves.bezier_handouts import de_casteljau_reversed, trace_iterative, trace_recursive
+from course.curves.flattening import flatten, uniform_parameters
+from course.curves.handout_loops import HANDOUT_LOOPS, loop_pixels, yellow_check
 from course.i18n import _
+from course.lessons.l01_de_casteljau.pixel_views import (
+    YELLOW,
+    painted_canvas,
+    pixel_grid,
+    replace_legend,
+    yellow_overview,
+)
 from course.raster import nearest_pixels
-from course.raster.canvas import crop, paint
-from course.widgets.picture import Still, pixel_axes, pixel_figure
+from course.raster.canvas import crop
+from course.widgets.picture import Still, pixel_figure
 
 __all__ = [
     "end_of_curve_figure",
@@ -54,10 +47,6 @@ __all__ = [
 ]
 
 BLUE, VERMILLION, GREEN, ORANGE = "#0072B2", "#D55E00", "#009E73", "#E69F00"
-YELLOW = (0.95, 0.85, 0.0)
-#: The overview's scale: dark blue where no pixel is yellow, the check's yellow where all are.
-YELLOW_SHARE = LinearSegmentedColormap.from_list("yellow_share", [(0.0, 0.13, 0.3), YELLOW])
-_CANVAS = (700, 700)
 #: The end-of-curve figure's zoom: a 10-pixel window is 280 px, a pixel's outline readable.
 END_ZOOM = 28
 
@@ -209,35 +198,6 @@ def reversed_figure(points: Any, t: float = 0.25) -> Still:
     return Still.of(figure, caption)
 
 
-def _pixel_grid(axes: Any, extent: tuple[int, ...]) -> None:
-    """Thin lines on the pixel edges of a crop, so that unpainted pixels show as squares."""
-    left, right, bottom, top = extent
-    lines = [[(x, top), (x, bottom)] for x in range(left, right + 1)]
-    lines += [[(left, y), (right, y)] for y in range(top, bottom + 1)]
-    axes.add_collection(LineCollection(lines, colors="0.8", linewidths=0.6))
-
-
-def _replace_legend(figure: Figure, handles: list, labels: list[str], ncols: int = 0) -> None:
-    """Swap :func:`pixel_figure`'s colour patches for handles that also show shape and dash."""
-    for legend in list(figure.legends):
-        legend.remove()
-    figure.legend(
-        handles=handles,
-        labels=labels,
-        loc="upper center",
-        ncols=ncols or len(handles),
-        fontsize=8,
-        frameon=False,
-        handler_map={tuple: HandlerTuple(ndivide=1)},
-    )
-
-
-def _painted(pixels: np.ndarray, colour: Any, shape: tuple[int, int] = _CANVAS) -> np.ndarray:
-    image = np.ones((*shape, 3))
-    paint(image, pixels, colour, mode="over")
-    return image
-
-
 def end_of_curve_figure(
     points: Any, seeds: Sequence[str] = ("000", "003"), size: int = 10
 ) -> Still:
@@ -268,7 +228,7 @@ def end_of_curve_figure(
         pixels = loop_pixels(control, loop)
         last_t = uniform_parameters(0.001, loop.accumulate)[-1]
         lit = bool((pixels == home).all(axis=1).any())
-        window, extent = crop(_painted(pixels, (0.0, 0.62, 0.45)), end, size)
+        window, extent = crop(painted_canvas(pixels, (0.0, 0.62, 0.45)), end, size)
         rounding = _("rounded") if loop.rounding == "round" else _("truncated")
         windows.append(
             (
@@ -293,7 +253,7 @@ def end_of_curve_figure(
     ]
     figure, axes_list = pixel_figure(windows, zoom=END_ZOOM, legend=legend, title_height=44)
     for axes, (_window, extent, _title) in zip(axes_list, windows, strict=True):
-        _pixel_grid(axes, extent)
+        pixel_grid(axes, extent)
         # B(1) often sits on a pixel corner: a "+" there would lie along the outline's edges.
         axes.plot(*end, "x", color="black", markersize=12, markeredgewidth=2, zorder=4)
         # The outline goes over the painted square and the cross: dashes on a white line,
@@ -317,7 +277,7 @@ def end_of_curve_figure(
         Patch(facecolor="white", edgecolor=VERMILLION, linestyle=(0, (3, 2)), linewidth=2),
         Line2D([], [], marker="x", color="black", linestyle="", markersize=8, mew=2),
     ]
-    _replace_legend(figure, handles, [label for _colour, label in legend])
+    replace_legend(figure, handles, [label for _colour, label in legend])
     caption = _("B(1) = ({x:g}, {y:g}) in pixel {pixel}; {verdicts}").format(
         x=end[0], y=end[1], pixel=home, verdicts="; ".join(verdicts)
     )
@@ -357,11 +317,11 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
         jumps = np.abs(np.diff(pixels, axis=0)).max(axis=1)
         gaps.append(int(np.count_nonzero(jumps > 1)))
         overdraw.append(len(pixels) / len(np.unique(pixels, axis=0)))
-        window, extent = crop(_painted(pixels, (0.0, 0.45, 0.7)), centre, size)
+        window, extent = crop(painted_canvas(pixels, (0.0, 0.45, 0.7)), centre, size)
         windows.append((window, extent, title))
     figure, axes_list = pixel_figure(windows, zoom=12, legend=[(BLUE, _("painted"))])
     for axes, (_window, extent, _title) in zip(axes_list, windows, strict=True):
-        _pixel_grid(axes, extent)
+        pixel_grid(axes, extent)
     speed = np.hypot(*de_casteljau(derivative(control), [0.0, 0.5]).T)
     caption = _(
         "speed {start:g} px per unit of t at t = 0, {middle:g} at t = 0.5; "
@@ -380,35 +340,11 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
     return Still.of(figure, caption)
 
 
-def _yellow_along(curve: np.ndarray, yellow: np.ndarray, odd: np.ndarray) -> np.ndarray:
-    """The share of yellow pixels among the painted ones nearest each of 50 stretches of curve.
-
-    ``curve`` holds 401 points; each painted pixel (its centre) counts for the
-    curve point nearest it, and the points are taken eight at a time. A
-    stretch no pixel is nearest to takes its neighbour's share.
-    """
-    painted = np.vstack([yellow, odd]) + 0.5
-    is_yellow = np.arange(len(painted)) < len(yellow)
-    _distance, nearest = cKDTree(curve).query(painted)
-    stretch = np.minimum(nearest // 8, 49)
-    counts = np.bincount(stretch, minlength=50)
-    shares = np.bincount(stretch, weights=is_yellow, minlength=50) / np.maximum(counts, 1)
-    seen = np.flatnonzero(counts)
-    if len(seen) == 0:
-        return np.ones(50)
-    # A stretch with no pixel of its own (the curve sped past) borrows its nearest neighbour's.
-    return shares[seen[np.abs(np.arange(50)[:, None] - seen).argmin(axis=1)]]
-
-
-#: The least width of the box that marks the zoom on the overview, in canvas pixels.
-_ZOOM_BOX = 60
-
-
 def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     """The GAMES101 check for one handout loop: where the red and green curves part.
 
     Left, the whole curve coloured by the share of its painted pixels that
-    are yellow, stretch by stretch (:func:`_yellow_along`; at 700 pixels in
+    are yellow, stretch by stretch (:func:`~.pixel_views.yellow_along`; at 700 pixels in
     192, a mark per pixel would merge into one band), the pixels that are not
     yellow circled when there are at most 40, and the zoomed window boxed;
     right, the pixels around the first of them at a whole zoom, on the pixel
@@ -447,7 +383,7 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
         legend_height=44,
         reserve_left=side + 18 + scale_room,
     )
-    _pixel_grid(zoomed, extent)
+    pixel_grid(zoomed, extent)
     left, right, bottom, top = extent
     for listed, marker in ((check.red_only, "o"), (check.green_only, "x")):
         inside = listed[
@@ -457,54 +393,7 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
             & (listed[:, 1] < bottom)
         ]
         zoomed.plot(*(inside + 0.5).T, marker, color="black", markersize=6, fillstyle="none")
-    overview = pixel_axes(figure, 18, 9, side, side)
-    shares = _yellow_along(curve, np.argwhere(yellow > 0)[:, ::-1], odd)
-    pieces = LineCollection(
-        np.stack([curve[:-1], curve[1:]], axis=1),
-        array=np.repeat(shares, (len(curve) - 1) // len(shares)),
-        cmap=YELLOW_SHARE,
-        norm=Normalize(0.0, 1.0),
-        linewidths=4,
-        capstyle="round",
-    )
-    overview.add_collection(pieces)
-    scale = pixel_axes(figure, 18 + side + 8, 9, 10, side)
-    bar = figure.colorbar(
-        pieces, cax=scale, ticks=[0.0, 0.5, 1.0], format=PercentFormatter(1.0, decimals=0)
-    )
-    bar.set_label(_("share of nearby pixels yellow"), fontsize=8, labelpad=-2)
-    scale.tick_params(labelsize=7)
-    few = len(odd) <= 40
-    if few and len(odd):
-        overview.plot(
-            *(odd + 0.5).T, "o", markersize=9, fillstyle="none", color=VERMILLION, linestyle=""
-        )
-    # The zoom is a few canvas pixels: at 192 screen pixels for 700 its own box would hide under
-    # the curve's stroke, so the box drawn around it is at least _ZOOM_BOX wide, kept on the canvas.
-    half = max(right - left, bottom - top, _ZOOM_BOX) / 2
-    centre_x = np.clip((left + right) / 2, half, _CANVAS[1] - half)
-    centre_y = np.clip((top + bottom) / 2, half, _CANVAS[0] - half)
-    overview.add_patch(
-        Rectangle(
-            (centre_x - half, centre_y - half),
-            2 * half,
-            2 * half,
-            fill=False,
-            edgecolor="black",
-            linewidth=1.5,
-            zorder=3,
-        )
-    )
-    overview.set_xlim(0, _CANVAS[1])
-    overview.set_ylim(_CANVAS[0], 0)
-    overview.set_aspect("equal")
-    overview.set_xticks([])
-    overview.set_yticks([])
-    painted = np.count_nonzero(check.image.sum(axis=2) > 0)
-    overview.set_title(
-        _("{odd} of {painted} pixels not yellow").format(odd=len(odd), painted=painted),
-        fontsize=9,
-    )
+    circled = yellow_overview(figure, check, curve, extent, side, VERMILLION)
     handles = [
         Patch(facecolor=YELLOW, edgecolor="0.5"),
         (
@@ -519,10 +408,10 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
     ]
     labels = [label for _colour, label in colours]
     labels.append(_("box: around the zoom"))
-    if few and len(odd):
+    if circled:
         handles.append(Line2D([], [], marker="o", color=VERMILLION, fillstyle="none", linestyle=""))
         labels.append(_("not yellow, circled"))
-    _replace_legend(figure, handles, labels, ncols=2)
+    replace_legend(figure, handles, labels, ncols=2)
     caption = _(
         "{loop} against naive_bezier: {yellow:.1%} yellow, "
         "{red} pixels only red, {green} only green"

@@ -1,8 +1,12 @@
 """Lesson 02 · The Bernstein form: the chapter beside ``notebooks/02_bernstein.ipynb``.
 
-- :mod:`.lesson`: the registry entry ``LESSON`` and the printing and landmark helpers;
-- :mod:`.check`: the exercises' checkers, imported as
-  ``from course.lessons.l02_bernstein import check``;
-- :mod:`.apps`: the interactive apps;
-- :mod:`.figures`: the still pictures.
+- :mod:`.lesson`: lesson 02, the Bernstein form: its registry entry, pictures, landmarks and printed
+  lines;
+- :mod:`.check`: lesson 02's checkers: binomial coefficients by Pascal's rule, and ``naive_bezier``;
+- :mod:`.apps`: lesson 02's app: the Bernstein basis polynomials of one degree, and their values at
+  t;
+- :mod:`.figures`: lesson 02's still pictures: end tangents, the hodograph, the binomials' cost,
+  accuracy.
+
+The notebook imports its checkers as ``from course.lessons.l02_bernstein import check``.
 """

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ast
 import inspect
+import itertools
 import math
 import sys
 import textwrap
@@ -32,9 +33,9 @@ from course.check.base import (
     call_budget,
     close,
     hint,
-    register_hints,
     run_cases,
 )
+from course.check.exercises import exercise
 from course.check.hints import Hints
 from course.curves.bezier import bernstein_basis, bezier_bernstein, binomial, pascal_row
 from course.curves.bezier_handouts import (
@@ -175,6 +176,14 @@ def _binomials(refused: str | None = None) -> dict[Any, str]:
     return forbidden
 
 
+def _naive_refusals() -> dict[Any, str]:
+    """The library's curves and binomials: naive_bezier weights the points with its own comb."""
+    return {
+        **library_curves(),
+        **_binomials(_("this exercise weights the points with your own comb")),
+    }
+
+
 @contextmanager
 def _pascal_only() -> Iterator[None]:
     exponential = Mistake(
@@ -191,24 +200,32 @@ def _pascal_only() -> Iterator[None]:
         yield
 
 
-COMB_HINTS = register_hints(
-    "comb",
-    Hints(
-        where=N_(
-            "look at the first rows of Pascal's triangle, and at what your code does when n > m."
-        ),
-        more=N_(
-            "row 0 is [1]; each next row is made from the one above it, entry by entry, so "
-            "each coefficient is computed once; C(m, n) is entry n of row m, and 0 when n > m."
-        ),
-        recipe=N_(
-            "start from row = [1]; m times, make the next row: 1, then the sums of the "
-            "neighbouring pairs of the row above, then 1. Return row[n] (0 if n > m)."
-        ),
+COMB_HINTS = Hints(
+    where=N_("look at the first rows of Pascal's triangle, and at what your code does when n > m."),
+    more=N_(
+        "row 0 is [1]; each next row is made from the one above it, entry by entry, so "
+        "each coefficient is computed once; C(m, n) is entry n of row m, and 0 when n > m."
+    ),
+    recipe=N_(
+        "start from row = [1]; m times, make the next row: 1, then the sums of the "
+        "neighbouring pairs of the row above, then 1. Return row[n] (0 if n > m)."
     ),
 )
 
 
+def _graded_comb(m: int, n: int) -> int:
+    """The grader's answer to ``comb``: row m of Pascal's triangle, exact integers."""
+    row = [1]
+    for _row in range(m):
+        row = [1, *(a + b for a, b in itertools.pairwise(row)), 1]
+    return row[n] if 0 <= n <= m else 0
+
+
+@exercise(
+    hints=COMB_HINTS,
+    refuses=_binomials,
+    grader_reference=_graded_comb,
+)
 def comb(function: Callable[..., Any]) -> CheckResult:
     """Check a student's ``comb(m, n)``: C(m, n) by Pascal's rule, as an exact integer.
 
@@ -297,10 +314,8 @@ def comb(function: Callable[..., Any]) -> CheckResult:
         COMB_CASES,
         reference=lambda m, n: binomial(m, n) if n <= m else 0,
         compare=_exact,
-        hint=COMB_HINTS,
         mistakes=mistakes,
         watch=_pascal_only,
-        forbidden=_binomials(),
     )
     if not result.passed or product is None:
         return result
@@ -341,26 +356,26 @@ def _high_degree_cases() -> list[dict[str, Any]]:
     return [{"control_points": points, "t": t} for t in (0.25, 0.5)]
 
 
-NAIVE_HINTS = register_hints(
-    "naive_bezier",
-    Hints(
-        where=N_(
-            "look at the degree n, at the weight each control point gets, and at where "
-            "your sum starts."
-        ),
-        more=N_(
-            "a curve of N control points has degree n = N - 1; point i is weighted by "
-            "its Bernstein polynomial, built from your comb(n, i) and powers of t and 1 - t, "
-            "and the weights add up to 1. Each call starts its sum from zero."
-        ),
-        recipe=N_(
-            "n = len(control_points) - 1; return the sum over i = 0 ... n of comb(n, i) "
-            "t^i (1 - t)^(n - i) control_points[i]."
-        ),
+NAIVE_HINTS = Hints(
+    where=N_(
+        "look at the degree n, at the weight each control point gets, and at where your sum starts."
+    ),
+    more=N_(
+        "a curve of N control points has degree n = N - 1; point i is weighted by "
+        "its Bernstein polynomial, built from your comb(n, i) and powers of t and 1 - t, "
+        "and the weights add up to 1. Each call starts its sum from zero."
+    ),
+    recipe=N_(
+        "n = len(control_points) - 1; return the sum over i = 0 ... n of comb(n, i) "
+        "t^i (1 - t)^(n - i) control_points[i]."
     ),
 )
 
 
+@exercise(
+    hints=NAIVE_HINTS,
+    refuses=_naive_refusals,
+)
 def naive_bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's Bernstein-form ``naive_bezier(control_points, t)`` of any degree.
 
@@ -438,12 +453,7 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
         reference=curve,
         compare=close(atol=1e-9, rtol=1e-9),
         convert=as_point,
-        hint=NAIVE_HINTS,
         mistakes=mistakes,
         picture=point_picture(bezier_bernstein, N_("your naive_bezier")),
-        forbidden={
-            **library_curves(),
-            **_binomials(_("this exercise weights the points with your own comb")),
-        },
         pass_picture=curve_pass_picture(bezier_bernstein, "naive_bezier"),
     )

@@ -9,8 +9,9 @@ pixels as a picture and names the handouts' mistakes: the report's
 4-connected staircase, a line drawn backwards or short of an end, and for
 triangles the closed and open edge rules, the bottom row filled, vertices
 rounded or made whole, the rule mirrored, and pixel corners taken for
-centres. Pictures count pixels on their axes and draw the triangle's edges. An answer that calls the
-library's own line or fill is told to write it.
+centres (:mod:`.mistakes` reproduces them). Pictures count pixels on their
+axes and draw the triangle's edges. An answer that calls the library's own
+line or fill is told to write it.
 
 Hints come in steps: a failure says where to look, the next failures say
 more; ``check.hint("draw_line")`` says more at once and
@@ -29,37 +30,31 @@ from course.check.answers import AnswerError
 from course.check.base import (
     CheckResult,
     Hints,
-    Mistake,
     hint,
     pixel_difference,
     pixel_rows,
-    register_hints,
     run_cases,
     same_pixels,
 )
+from course.check.exercises import exercise
 from course.check.pictures import pixel_picture
 from course.i18n import N_, _
-from course.raster import line, line_4connected, triangle
+from course.lessons.l03_lines_and_triangles.mistakes import (
+    FILL_MISTAKES,
+    LINE_MISTAKES,
+    same_pixel_set,
+)
+from course.raster import line, triangle
 
 __all__ = ["draw_line", "draw_triangle_filled", "hint"]
 
-_RASTER_FUNCTIONS = (
+_LIBRARY_FUNCTIONS = (
     raster.line,
     raster.line_4connected,
     raster.triangle,
     raster.triangle_coverage,
     raster.wu_line,
 )
-
-
-def _raster() -> dict[Any, str]:
-    """The library's own answers, each with the report's words for a call to it."""
-    return {
-        function: _(
-            "your function calls {name}, the library's own answer: this exercise writes it"
-        ).format(name=f"course.raster.{function.__name__}")
-        for function in _RASTER_FUNCTIONS
-    }
 
 
 # Every octant, both axes, a single pixel, slopes of exactly 1 and 1/2, and
@@ -124,37 +119,6 @@ def _pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
     )
 
 
-def _ordered_same(expected: Any, given: Any) -> bool:
-    expected = np.asarray(expected, dtype=float).reshape(-1, 2)
-    given = np.asarray(given, dtype=float).reshape(-1, 2)
-    return expected.shape == given.shape and bool(np.array_equal(expected, given))
-
-
-def _first_octant_only(p0: Any, p1: Any) -> list[tuple[int, int]]:
-    """The lesson's first-octant pseudocode used as is: x from x0 up to x1, y stepping up."""
-    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
-    dx, dy = x1 - x0, y1 - y0
-    decision, y, pixels = 2 * dy - dx, y0, []
-    for x in range(x0, x1 + 1):
-        pixels.append((x, y))
-        if decision > 0:
-            y += 1
-            decision -= 2 * dx
-        decision += 2 * dy
-    return pixels
-
-
-def _truncated_steps(p0: Any, p1: Any) -> list[tuple[int, int]]:
-    """A DDA that steps t evenly and truncates each point with int() instead of rounding."""
-    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
-    steps = max(abs(x1 - x0), abs(y1 - y0))
-    if steps == 0:
-        return [(x0, y0)]
-    return [
-        (int(x0 + i / steps * (x1 - x0)), int(y0 + i / steps * (y1 - y0))) for i in range(steps + 1)
-    ]
-
-
 def _line_difference(expected: Any, given: Any) -> str:
     """Missing and extra pixels, each with its first one along the line (not in reading order).
 
@@ -183,6 +147,29 @@ def _line_difference(expected: Any, given: Any) -> str:
     return pixel_difference(expected, given)
 
 
+LINE_HINTS = Hints(
+    where=N_(
+        "look at the first and the last pixel, and at each step: how far it moves "
+        "along each axis, and when the loop stops."
+    ),
+    more=N_(
+        "step one pixel at a time along the longer axis; an error term says when the "
+        "line has drifted half a pixel along the shorter one, and then that step moves "
+        "along both (diagonally). The loop stops at p1."
+    ),
+    recipe=N_(
+        "dx = |x1 - x0|, dy = |y1 - y0|, sx and sy the signs, error = dx - dy; "
+        "paint (x, y); while not at p1: e2 = 2 error; if e2 > -dy: error -= dy, x += sx; "
+        "if e2 < dx: error += dx, y += sy; paint (x, y)."
+    ),
+)
+
+
+@exercise(
+    hints=LINE_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    handout_names=("DrawLine",),
+)
 def draw_line(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(p0, p1)`` -> the Bresenham pixels from p0 to p1, in order.
 
@@ -197,59 +184,6 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
     False
     """
     cases = [{"p0": p0, "p1": p1} for p0, p1 in _LINE_CASES]
-    mistakes = [
-        Mistake(
-            N_("the report's staircase"),
-            N_(
-                "every step of your line moves in x or in y, never both, so each diagonal step "
-                "became two and left an extra pixel in the corner: a 4-connected staircase (the "
-                "lab report's one test, `if (err2 > -dy) ... else ...`, whose else replaces the "
-                "second test, or x and y stepped and painted one after the other). A line steps "
-                "diagonally whenever both errors call for it, so it has max(|dx|, |dy|) + 1 "
-                "pixels, not |dx| + |dy| + 1."
-            ),
-            _staircase,
-            matches=_is_staircase,
-        ),
-        Mistake(
-            N_("drawn backwards"),
-            N_("your pixels run from p1 to p0: the lab's DrawLine starts at p0."),
-            lambda p0, p1: line(p0, p1)[::-1],
-            matches=_ordered_same,
-        ),
-        Mistake(
-            N_("the last pixel missing"),
-            N_("your loop stops one pixel before p1: a line includes both end pixels."),
-            lambda p0, p1: line(p0, p1)[:-1],
-            matches=_ordered_same,
-        ),
-        Mistake(
-            N_("the first pixel missing"),
-            N_("your line starts one pixel after p0: paint p0 before the first step."),
-            lambda p0, p1: line(p0, p1)[1:],
-            matches=_ordered_same,
-        ),
-        Mistake(
-            N_("truncated, not rounded"),
-            N_(
-                "you stepped along the line and cut each coordinate with int(), which drops the "
-                "fraction: that takes the pixel on one side of the line, not the nearest one. "
-                "Round to the nearest pixel, or let an error term decide, as Bresenham does."
-            ),
-            _truncated_steps,
-            matches=_ordered_same,
-        ),
-        Mistake(
-            N_("the first octant only"),
-            N_(
-                "your line works only in the first octant (x1 >= x0 and 0 <= y1 - y0 <= x1 - x0): "
-                "the lesson's pseudocode, used as is. The other seven octants run the same loop: "
-                "a steep line swaps the roles of x and y, and a line going left or up steps by -1."
-            ),
-            _first_octant_only,
-            matches=_ordered_same,
-        ),
-    ]
     return run_cases(
         "draw_line",
         student,
@@ -257,62 +191,36 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
         line,
         _is_bresenham_line,
         _as_line_pixels,
-        hint=LINE_HINTS,
-        mistakes=mistakes,
+        mistakes=LINE_MISTAKES,
         difference=_line_difference,
         picture=_picture,
-        forbidden=_raster(),
         pass_picture=_pass_picture,
     )
 
 
-def _staircase(p0: Any, p1: Any) -> Any:
-    return line_4connected(p0, p1)
-
-
-def _is_staircase(staircase: Any, given: Any) -> bool:
-    """Whether ``given`` runs from the staircase's first pixel to its last in axis steps only.
-
-    Any 4-connected path of |dx| + |dy| + 1 pixels is one, whichever way its corners turn.
-    """
-    want, have = np.asarray(staircase, dtype=float), np.asarray(given, dtype=float)
-    if have.ndim != 2 or have.shape != want.shape or len(have) < 2:
-        return False
-    if tuple(have[0]) != tuple(want[0]) or tuple(have[-1]) != tuple(want[-1]):
-        return False
-    steps = np.abs(np.diff(have, axis=0))
-    return bool((steps.sum(axis=1) == 1).all())
-
-
-LINE_HINTS = register_hints(
-    "draw_line",
-    Hints(
-        where=N_(
-            "look at the first and the last pixel, and at each step: how far it moves "
-            "along each axis, and when the loop stops."
-        ),
-        more=N_(
-            "step one pixel at a time along the longer axis; an error term says when the "
-            "line has drifted half a pixel along the shorter one, and then that step moves "
-            "along both (diagonally). The loop stops at p1."
-        ),
-        recipe=N_(
-            "dx = |x1 - x0|, dy = |y1 - y0|, sx and sy the signs, error = dx - dy; "
-            "paint (x, y); while not at p1: e2 = 2 error; if e2 > -dy: error -= dy, x += sx; "
-            "if e2 < dx: error += dx, y += sy; paint (x, y)."
-        ),
+TRIANGLE_HINTS = Hints(
+    where=N_(
+        "look at which rows your loop fills (the first and the last), and at the "
+        "pixels where a row of centres meets an edge."
     ),
-    "draw_line",
-    "DrawLine",
+    more=N_(
+        "a pixel is in when its centre (x + 0.5, y + 0.5) is inside; a centre exactly "
+        "on an edge belongs to the triangle only on the left or the top edge, so a row on a "
+        "flat bottom edge, and a centre on a right edge, are left out."
+    ),
+    recipe=N_(
+        "sort the vertices by y; for each row of centres from ceil(y_top - 0.5) to "
+        "ceil(y_bottom - 0.5) - 1, find the two edges' x at y + 0.5 and take the pixels "
+        "from ceil(x_left - 0.5) to ceil(x_right - 0.5) - 1, splitting at the middle vertex."
+    ),
 )
 
 
-def _corners_inside(p0: Any, p1: Any, p2: Any) -> np.ndarray:
-    """The pixels whose top-left corner (x, y), not centre, is inside: a half-pixel shift."""
-    shifted = [np.subtract(p, 0.5) for p in (p0, p1, p2)]
-    return triangle(*shifted)
-
-
+@exercise(
+    hints=TRIANGLE_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    handout_names=("DrawTriangleFilled",),
+)
 def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(p0, p1, p2)`` -> the pixels whose centres lie inside.
 
@@ -329,187 +237,18 @@ def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
     False
     """
     cases = [{"p0": p0, "p1": p1, "p2": p2} for p0, p1, p2 in _TRIANGLE_CASES]
-    mistakes = [
-        Mistake(
-            N_("every edge closed"),
-            N_(
-                "you count a centre on any edge as inside: x_left <= x <= x_right, or <= on the "
-                "last row. Two triangles sharing that edge would both paint it. Take each row's "
-                "centres over [x_left, x_right) and the rows over [y_top, y_bottom)."
-            ),
-            lambda p0, p1, p2: triangle(p0, p1, p2, rule="closed"),
-        ),
-        Mistake(
-            N_("the top row left out"),
-            N_(
-                "your rows start after y_top: a row of centres exactly on a flat top edge "
-                "belongs to this triangle (the top-left rule), so the rows run over "
-                "[y_top, y_bottom), the first one included."
-            ),
-            _top_row_left_out,
-        ),
-        Mistake(
-            N_("the vertices rounded"),
-            N_(
-                "your triangle's vertices were rounded to whole numbers (round()) before "
-                "filling: a vertex at (1.25, 0.75) moved to (1, 1). Keep them as floats; only the "
-                "pixels are whole."
-            ),
-            lambda p0, p1, p2: triangle(
-                *(np.round(np.asarray(p, dtype=float)) for p in (p0, p1, p2))
-            ),
-        ),
-        Mistake(
-            N_("the vertices made whole"),
-            N_(
-                "your triangle's vertices were cut to whole numbers (int() or a cast) before "
-                "filling: a vertex at (0.7, 0.2) moved to (0, 0). Keep them as floats; only the "
-                "pixels are whole."
-            ),
-            lambda p0, p1, p2: triangle(
-                *(np.trunc(np.asarray(p, dtype=float)) for p in (p0, p1, p2))
-            ),
-        ),
-        Mistake(
-            N_("the bottom row filled"),
-            N_(
-                "your rows run over [y_top, y_bottom], the last one included: a row of centres "
-                "exactly on a flat bottom edge belongs to the triangle below. Take the rows over "
-                "[y_top, y_bottom)."
-            ),
-            _bottom_row_filled,
-        ),
-        Mistake(
-            N_("the rule mirrored"),
-            N_(
-                "you include a centre on a right edge and leave out one on a left edge: the rule "
-                "mirrored, x_left < x <= x_right. Two triangles still share the edge fairly, but "
-                "every other triangle of the mesh uses the lesson's rule: [x_left, x_right)."
-            ),
-            lambda p0, p1, p2: _unless_same(_mirrored_rule, _open_rule, p0, p1, p2),
-            matches=_same_or_nothing,
-        ),
-        Mistake(
-            N_("every edge open"),
-            N_(
-                "you leave out every centre that lies on an edge, so two triangles sharing that "
-                "edge would both skip it: a crack. Include the left and the top ones: "
-                "[x_left, x_right), rows over [y_top, y_bottom)."
-            ),
-            lambda p0, p1, p2: _unless_same(_open_rule, _mirrored_rule, p0, p1, p2),
-            matches=_same_or_nothing,
-        ),
-        Mistake(
-            N_("a centre on a left edge left out"),
-            N_(
-                "you leave out a centre that lies exactly on a left edge (x_left < x): the left "
-                "edge is included and the right one left out, x_left <= x < x_right, so that two "
-                "triangles sharing an edge paint each of its centres once."
-            ),
-            _open_rule,
-        ),
-        Mistake(
-            N_("pixel corners for centres"),
-            N_(
-                "you tested the pixel's corner (x, y), not its centre (x + 0.5, y + 0.5): the "
-                "whole triangle is off by half a pixel, up and left."
-            ),
-            _corners_inside,
-        ),
-    ]
     return run_cases(
         "draw_triangle_filled",
         student,
         cases,
         triangle,
-        _same_pixel_set,
+        same_pixel_set,
         _as_pixel_array,
-        hint=TRIANGLE_HINTS,
-        mistakes=mistakes,
+        mistakes=FILL_MISTAKES,
         difference=pixel_difference,
         picture=_picture,
-        forbidden=_raster(),
         pass_picture=_pass_picture,
     )
-
-
-def _bottom_row_filled(p0: Any, p1: Any, p2: Any) -> np.ndarray:
-    """The fill with rows over [top, bottom]: a row of centres on a flat bottom edge taken too.
-
-    That row's centres are taken as any row's, over [x_left, x_right); a bottom that is
-    one vertex adds nothing.
-    """
-    inside = triangle(p0, p1, p2)
-    corners = np.array([p0, p1, p2], dtype=float)
-    bottom = corners[:, 1].max()
-    on_bottom = corners[corners[:, 1] == bottom]
-    (ux, uy), (vx, vy) = corners[1] - corners[0], corners[2] - corners[0]
-    twice_area = ux * vy - uy * vx
-    if len(on_bottom) != 2 or twice_area == 0 or (bottom - 0.5) != np.floor(bottom - 0.5):
-        return inside
-    left, right = np.sort(on_bottom[:, 0])
-    columns = np.arange(np.ceil(left - 0.5), np.ceil(right - 0.5), dtype=np.int64)
-    row = np.column_stack([columns, np.full(len(columns), int(bottom - 0.5), dtype=np.int64)])
-    return np.unique(np.vstack([np.asarray(inside, dtype=np.int64).reshape(-1, 2), row]), axis=0)
-
-
-def _top_row_left_out(p0: Any, p1: Any, p2: Any) -> np.ndarray:
-    """The fill with rows over (top, bottom): a row of centres on a flat top edge dropped."""
-    inside = np.asarray(triangle(p0, p1, p2), dtype=np.int64).reshape(-1, 2)
-    corners = np.array([p0, p1, p2], dtype=float)
-    top = corners[:, 1].min()
-    if (corners[:, 1] == top).sum() != 2 or (top - 0.5) != np.floor(top - 0.5):
-        return inside
-    return inside[inside[:, 1] != int(top - 0.5)]
-
-
-def _open_rule(p0: Any, p1: Any, p2: Any) -> np.ndarray:
-    return triangle(p0, p1, p2, rule="open")
-
-
-def _mirrored_rule(p0: Any, p1: Any, p2: Any) -> np.ndarray:
-    """The lesson's rule seen in a mirror: right edges in, left edges out (top still in)."""
-    mirrored = [(-float(p[0]), float(p[1])) for p in (p0, p1, p2)]
-    pixels = np.asarray(triangle(*mirrored), dtype=np.int64).reshape(-1, 2).copy()
-    pixels[:, 0] = -pixels[:, 0] - 1  # pixel c's centre c + 1/2 mirrors to pixel -c - 1's
-    return pixels
-
-
-def _unless_same(
-    rule: Callable[..., Any], other: Callable[..., Any], p0: Any, p1: Any, p2: Any
-) -> np.ndarray | None:
-    """``rule``'s pixels when this case tells them from ``other``'s; None when it cannot."""
-    pixels = rule(p0, p1, p2)
-    return None if same_pixels(pixels, other(p0, p1, p2)) else pixels
-
-
-def _same_or_nothing(answer: Any, given: Any) -> bool:
-    return answer is not None and _same_pixel_set(
-        np.asarray(answer, dtype=np.int64).reshape(-1, 2), given
-    )
-
-
-TRIANGLE_HINTS = register_hints(
-    "draw_triangle_filled",
-    Hints(
-        where=N_(
-            "look at which rows your loop fills (the first and the last), and at the "
-            "pixels where a row of centres meets an edge."
-        ),
-        more=N_(
-            "a pixel is in when its centre (x + 0.5, y + 0.5) is inside; a centre exactly "
-            "on an edge belongs to the triangle only on the left or the top edge, so a row on a "
-            "flat bottom edge, and a centre on a right edge, are left out."
-        ),
-        recipe=N_(
-            "sort the vertices by y; for each row of centres from ceil(y_top - 0.5) to "
-            "ceil(y_bottom - 0.5) - 1, find the two edges' x at y + 0.5 and take the pixels "
-            "from ceil(x_left - 0.5) to ceil(x_right - 0.5) - 1, splitting at the middle vertex."
-        ),
-    ),
-    "draw_triangle_filled",
-    "DrawTriangleFilled",
-)
 
 
 def _as_pixel_array(given: Any) -> np.ndarray:
@@ -545,10 +284,3 @@ def _is_bresenham_line(expected: np.ndarray, given: np.ndarray) -> bool:
     # Offset from the ideal line along the shorter axis, times n.
     offset = y * dx - x * dy if abs(dx) >= abs(dy) else x * dy - y * dx
     return bool((2 * np.abs(offset) <= n).all())
-
-
-def _same_pixel_set(expected: np.ndarray, given: np.ndarray) -> bool:
-    def ordered(pixels: np.ndarray) -> np.ndarray:
-        return pixels[np.lexsort((pixels[:, 0], pixels[:, 1]))]
-
-    return given.shape == expected.shape and np.array_equal(ordered(given), ordered(expected))

@@ -19,7 +19,8 @@ from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, Mistake, close, hint, register_hints, run_cases
+from course.check.base import CheckResult, Mistake, close, hint, run_cases
+from course.check.exercises import exercise
 from course.check.hints import Hints
 from course.check.pictures import image_picture, side_by_side
 from course.i18n import N_, _
@@ -39,19 +40,6 @@ _LIBRARY_FUNCTIONS = (
     resample.supersample_shifted,
     resample.supersample_without_offset,
 )
-
-
-def _library() -> dict[Any, str]:
-    """The library's own answers, each with what a student who calls it is told."""
-    return {
-        function: _(
-            "your function calls {function}, the library's own answer: this exercise writes it"
-        ).format(function=f"course.sampling.resample.{function.__name__}")
-        for function in _LIBRARY_FUNCTIONS
-    }
-
-
-_LIBRARY = _library()
 
 
 def _as_image(value: Any) -> np.ndarray:
@@ -107,6 +95,29 @@ def _cases() -> list[dict[str, Any]]:
     ]
 
 
+SUPERSAMPLE_HINTS = Hints(
+    where=N_(
+        "look at where your samples sit inside each output pixel's square, and at "
+        "what you divide the sum by."
+    ),
+    more=N_(
+        "output pixel (r, c) covers the input from c W / w to (c + 1) W / w (a float "
+        "scale); its rate x rate samples sit at the centres of a rate x rate grid on that "
+        "square, each read with your bilinear_sample, and the pixel is their mean."
+    ),
+    recipe=N_(
+        "for each output pixel and i, j in range(rate): x = (c + (i + 0.5) / rate) "
+        "W / w, y = (r + (j + 0.5) / rate) H / h; add bilinear_sample(image, x, y) / rate**2."
+    ),
+)
+
+
+@exercise(
+    hints=SUPERSAMPLE_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    function="supersample",
+    handout_names=("supersampling",),
+)
 def image_supersampling(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image, out_shape, rate)`` against
     :func:`course.sampling.resample.supersample`.
@@ -208,35 +219,10 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
         supersample,
         close(atol=1e-9),
         _as_image,
-        hint=SUPERSAMPLE_HINTS,
         mistakes=mistakes,
         picture=picture,
-        forbidden=_library(),
         pass_picture=pass_picture,
     )
-
-
-SUPERSAMPLE_HINTS = register_hints(
-    "supersample",
-    Hints(
-        where=N_(
-            "look at where your samples sit inside each output pixel's square, and at "
-            "what you divide the sum by."
-        ),
-        more=N_(
-            "output pixel (r, c) covers the input from c W / w to (c + 1) W / w (a float "
-            "scale); its rate x rate samples sit at the centres of a rate x rate grid on that "
-            "square, each read with your bilinear_sample, and the pixel is their mean."
-        ),
-        recipe=N_(
-            "for each output pixel and i, j in range(rate): x = (c + (i + 0.5) / rate) "
-            "W / w, y = (r + (j + 0.5) / rate) H / h; add bilinear_sample(image, x, y) / rate**2."
-        ),
-    ),
-    "supersample",
-    "image_supersampling",
-    "supersampling",
-)
 
 
 def _lookup_cases() -> list[dict[str, Any]]:
@@ -261,6 +247,45 @@ def _lookup_cases() -> list[dict[str, Any]]:
     return cases
 
 
+BILINEAR_HINTS = Hints(
+    where=N_("look at where your code puts pixel centres, and at points near the image's edges."),
+    more=N_(
+        "pixel (r, c) is centred at (c + 0.5, r + 0.5); the point lies between four "
+        "such centres and is their blend, each weighted by nearness along x and along y. A "
+        "point beyond the outer centres, on any side, takes the edge value."
+    ),
+    recipe=N_(
+        "X = x - 0.5 and Y = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the top-left "
+        "centre is c = floor(X), r = floor(Y), with c + 1 and r + 1 kept inside the image; "
+        "u = X - c and v = Y - r weigh them as the lesson says."
+    ),
+)
+
+
+def _graded_bilinear_sample(image: Any, x: float, y: float) -> Any:
+    """The grader's answer to ``bilinear_sample``: centres at half pixels, edges clamped."""
+    pixels = np.asarray(image, dtype=float)
+    height, width = pixels.shape[:2]
+
+    def taps(position: float, size: int) -> tuple[int, int, float]:
+        clamped = min(max(position, 0.0), size - 1)
+        first = min(int(np.floor(clamped)), max(size - 2, 0))
+        return first, min(first + 1, size - 1), clamped - first
+
+    left, right, fx = taps(float(x) - 0.5, width)
+    top, bottom, fy = taps(float(y) - 0.5, height)
+    upper = pixels[top, left] * (1 - fx) + pixels[top, right] * fx
+    lower = pixels[bottom, left] * (1 - fx) + pixels[bottom, right] * fx
+    return upper * (1 - fy) + lower * fy
+
+
+@exercise(
+    hints=BILINEAR_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    function="bilinear_sample",
+    handout_names=("bilinear",),
+    grader_reference=_graded_bilinear_sample,
+)
 def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image, x, y)``: the image at one point, blended from four centres.
 
@@ -337,9 +362,7 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
         bilinear,
         close(atol=1e-9),
         _as_image,
-        hint=BILINEAR_HINTS,
         mistakes=mistakes,
-        forbidden=_library(),
     )
 
 
@@ -386,26 +409,3 @@ def _unclamped(image: Any, x: float, y: float) -> np.ndarray:
     upper = image[top, left] * (1 - fx) + image[top, left + 1] * fx
     lower = image[top + 1, left] * (1 - fx) + image[top + 1, left + 1] * fx
     return upper * (1 - fy) + lower * fy
-
-
-BILINEAR_HINTS = register_hints(
-    "bilinear_sample",
-    Hints(
-        where=N_(
-            "look at where your code puts pixel centres, and at points near the image's edges."
-        ),
-        more=N_(
-            "pixel (r, c) is centred at (c + 0.5, r + 0.5); the point lies between four "
-            "such centres and is their blend, each weighted by nearness along x and along y. A "
-            "point beyond the outer centres, on any side, takes the edge value."
-        ),
-        recipe=N_(
-            "X = x - 0.5 and Y = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the top-left "
-            "centre is c = floor(X), r = floor(Y), with c + 1 and r + 1 kept inside the image; "
-            "u = X - c and v = Y - r weigh them as the lesson says."
-        ),
-    ),
-    "bilinear_sample",
-    "bilinear_lookup",
-    "bilinear",
-)

@@ -5,7 +5,9 @@ a failure names the first pixel whose weight is wrong, shows both splats as
 pixels around the point, and recognises the GAMES101 report's variants
 (corners made of the point itself, which gives the whole point to one
 pixel, and pixels taken to sit at their corners) and the usual slips (the
-rectangles' areas given to the wrong pixels, x and y swapped).
+rectangles' areas given to the wrong pixels, x and y swapped). Splats are
+compared as tables (:mod:`.splat_tables`), and :mod:`.mistakes` reproduces
+the mistakes of both exercises.
 
 ``arc_length_weights(samples)`` returns the length of curve each sample
 stands for; a failure plots both sets of weights along the curve and
@@ -28,39 +30,34 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
-from course import limits
-from course._validate import require_finite
 from course.antialias import (
     arc_length_weights as reference_weights,
 )
 from course.antialias import (
     bilinear_centres,
-    bilinear_corners,
     curve_samples,
-    nearest_round,
-    normalised_centres,
     splats,
 )
 from course.check.base import (
     AnswerError,
     CheckResult,
-    Mistake,
     close,
     first_difference,
     hint,
-    register_hints,
     run_cases,
 )
+from course.check.exercises import exercise
 from course.check.hints import Hints
 from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture, side_by_side
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC
+from course.lessons.l05_antialiasing.mistakes import splat_mistakes, weight_mistakes
+from course.lessons.l05_antialiasing.splat_tables import splat_table, table_of
 
 __all__ = [
     "arc_length_weights",
     "bilinear_splat",
     "hint",
-    "splat_table",
 ]
 
 _LIBRARY_FUNCTIONS = (
@@ -71,18 +68,6 @@ _LIBRARY_FUNCTIONS = (
     splats.arc_length_weights,
 )
 
-
-def _library() -> dict[Any, str]:
-    """The library's own answers, each with what a student who calls it is told."""
-    return {
-        function: _(
-            "your function calls {function}, the library's own answer: this exercise writes it"
-        ).format(function=f"course.antialias.splats.{function.__name__}")
-        for function in _LIBRARY_FUNCTIONS
-    }
-
-
-_LIBRARY = _library()
 
 # Points that tell the common mistakes apart: a pixel centre (one pixel gets
 # everything), a pixel corner (four equal shares), generic points, points
@@ -100,49 +85,6 @@ CASES = (
 _AROUND = 2
 # ... and at most this many pixels across, however far a wrong splat strays.
 _LARGEST_WINDOW = 16
-
-
-def splat_table(pixels: Any, weights: Any) -> np.ndarray:
-    """A splat in one canonical form: rows (x, y, weight), sorted, zero weights dropped.
-
-    Repeated pixels are merged by adding their weights.
-
-    Examples
-    --------
-    >>> splat_table([[1, 0], [0, 0], [1, 0], [2, 2]], [0.25, 0.5, 0.25, 0.0])
-    array([[0. , 0. , 0.5],
-           [1. , 0. , 0.5]])
-    """
-    coordinates = np.asarray(pixels)
-    amounts = np.asarray(weights, dtype=float).reshape(-1)
-    if coordinates.size == 0:
-        return np.zeros((0, 3))
-    if not np.issubdtype(coordinates.dtype, np.number):
-        raise TypeError(
-            _("pixels must be numbers; got dtype {dtype}").format(dtype=coordinates.dtype)
-        )
-    coordinates = coordinates.reshape(-1, 2)
-    if len(coordinates) != len(amounts):
-        raise ValueError(
-            _(
-                "pixels and weights must match: {coordinates_count} pixels, {amounts_count} weights"
-            ).format(coordinates_count=len(coordinates), amounts_count=len(amounts))
-        )
-    require_finite(amounts, "weights")
-    if not np.isfinite(coordinates).all() or not np.array_equal(coordinates, np.round(coordinates)):
-        raise ValueError(_("pixels must be whole numbers (x, y)"))
-    if np.abs(coordinates).max() > limits.MAX_COORDINATE:
-        raise ValueError(
-            _("pixels must lie within +-{bound:g}").format(bound=limits.MAX_COORDINATE)
-        )
-    unique, index = np.unique(coordinates.astype(np.int64), axis=0, return_inverse=True)
-    totals = np.bincount(index.ravel(), amounts, minlength=len(unique))
-    keep = np.abs(totals) > 1e-12
-    return np.column_stack([unique[keep], totals[keep]]).astype(float)
-
-
-def _table_of(splat: Callable[..., Any]) -> Callable[[float, float], np.ndarray]:
-    return lambda x, y: splat_table(*splat([[x, y]]))
 
 
 def _student_table(answer: Any) -> np.ndarray:
@@ -283,129 +225,26 @@ def _splat_explain(case: dict[str, Any], expected: np.ndarray, given: np.ndarray
     )
 
 
-def _swapped(x: float, y: float) -> np.ndarray:
-    table = splat_table(*bilinear_centres([[x, y]]))
-    return splat_table(table[:, [1, 0]], table[:, 2])
+SPLAT_HINTS = Hints(
+    where=N_("look at which four pixels you light, and from which point you measure the offsets."),
+    more=N_(
+        "pixel (c, r) is centred at (c + 0.5, r + 0.5); the four pixels are those whose "
+        "centres surround the point, and each gets more the nearer the point is to its "
+        "centre: 1 at its own centre, 0 at a neighbour's."
+    ),
+    recipe=N_(
+        "left = floor(x - 0.5), top = floor(y - 0.5); dx, dy = the point minus the "
+        "centre (left + 0.5, top + 0.5); weights (1 - dx)(1 - dy), dx (1 - dy), (1 - dx) dy, "
+        "dx dy for (left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)."
+    ),
+)
 
 
-def _nearest_floor(samples: Any) -> tuple[np.ndarray, np.ndarray]:
-    """One pixel per sample, the one whose square holds it (floor); weight 1."""
-    points = np.asarray(samples, dtype=float).reshape(-1, 2)
-    return np.floor(points).astype(np.int64), np.ones(len(points))
-
-
-def _one_pixel_where_they_differ(
-    one_pixel: Callable[..., Any], other: Callable[..., Any]
-) -> Callable[[float, float], np.ndarray | None]:
-    """``one_pixel``'s splat where it lights another pixel than ``other`` (rounding and
-    truncation), else None, which matches nothing: such a point cannot tell them apart."""
-
-    def answer(x: float, y: float) -> np.ndarray | None:
-        table, rival = _table_of(one_pixel)(x, y), _table_of(other)(x, y)
-        return None if np.array_equal(table, rival) else table
-
-    return answer
-
-
-def _own_rectangles(x: float, y: float) -> np.ndarray:
-    left, top = math.floor(x - 0.5), math.floor(y - 0.5)
-    dx, dy = x - (left + 0.5), y - (top + 0.5)
-    pixels = [(left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)]
-    return splat_table(pixels, [dx * dy, (1 - dx) * dy, dx * (1 - dy), (1 - dx) * (1 - dy)])
-
-
-def _truncated(x: float, y: float) -> np.ndarray:
-    """The splat with int() for floor: left of or above 0.5 it picks the wrong pixels."""
-    left, top = int(x - 0.5), int(y - 0.5)
-    dx, dy = x - (left + 0.5), y - (top + 0.5)
-    pixels = [(left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)]
-    return splat_table(pixels, [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy])
-
-
-def _splat_mistakes() -> tuple[Mistake, ...]:
-    """The known mistakes, in the current language."""
-    return (
-        Mistake(
-            _("the whole point to one pixel"),
-            _(
-                "your splat gives the whole point to one pixel, weight 1: no anti-aliasing. That "
-                "is the handout's plain loop, and also the GAMES101 report's left addColor, "
-                "whose corners p1..p4 are built from the point itself (cv::Point2f p1(point.x, "
-                "point.y)), so dx = point.x - p1.x is always 0. Share the point among the four "
-                "pixels whose centres surround it, with dx and dy measured from a pixel centre."
-            ),
-            _one_pixel_where_they_differ(nearest_round, _nearest_floor),
-        ),
-        Mistake(
-            _("the pixel under the point (truncated)"),
-            _(
-                "your splat gives the whole point to the pixel under it, (floor(x), floor(y)) as "
-                "int() or cv::Point truncates it, weight 1: no anti-aliasing. Share the point "
-                "among the four pixels whose centres surround it, with dx and dy measured from a "
-                "pixel centre."
-            ),
-            _one_pixel_where_they_differ(_nearest_floor, nearest_round),
-        ),
-        # Where rounding and truncation light the same pixel, the point cannot tell which.
-        Mistake(
-            _("the whole point to one pixel"),
-            _(
-                "your splat gives the whole point to one pixel, weight 1: no anti-aliasing. At "
-                "this point the pixel under it (truncated) and the nearest one (rounded, as the "
-                "GAMES101 report's left addColor) are the same pixel. Share the point among the "
-                "four pixels whose centres surround it, with dx and dy measured from a pixel "
-                "centre."
-            ),
-            _table_of(nearest_round),
-        ),
-        Mistake(
-            _("pixels at their corners"),
-            _(
-                "your four pixels are those around the point's integer corner: the GAMES101 "
-                "report's middle addColor (cv::Point truncates), which treats pixel (c, r) as if "
-                "it sat at (c, r). Its centre is (c + 0.5, r + 0.5): the curve moves half a "
-                "pixel right and down."
-            ),
-            _table_of(bilinear_corners),
-        ),
-        Mistake(
-            _("each pixel its own rectangle"),
-            _(
-                "each of your four pixels gets the rectangle between the point and its own centre: "
-                "the nearest pixel gets the least. A pixel's weight is the area of the rectangle "
-                "opposite it: (1 - dx)(1 - dy) for the top-left one."
-            ),
-            _own_rectangles,
-        ),
-        Mistake(
-            _("x and y swapped"),
-            _("your pixels are (row, column): give each as (x, y), the column first."),
-            _swapped,
-        ),
-        Mistake(
-            _("the normalised splat"),
-            _(
-                "your weights never vanish: a point at a pixel's centre still gives its neighbours "
-                "some. That is the VS2022 report's splat: sqrt(2) minus each distance, "
-                "normalised. Bilinear weights are areas of rectangles, and give a centre's pixel "
-                "everything."
-            ),
-            _table_of(normalised_centres),
-        ),
-        Mistake(
-            _("int() for floor"),
-            _(
-                "left of or above the first centres your pixels are one off: int() rounds toward "
-                "zero, so int(-0.75) is 0, while the pixel to the left is floor(-0.75) = -1."
-            ),
-            _truncated,
-        ),
-    )
-
-
-SPLAT_MISTAKES = _splat_mistakes()
-
-
+@exercise(
+    hints=SPLAT_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    function="splat",
+)
 def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
     """Check ``student(x, y) -> (pixels, weights)`` against the bilinear splat about centres.
 
@@ -424,16 +263,14 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
         "splat",
         student,
         CASES,
-        reference=_table_of(bilinear_centres),
+        reference=table_of(bilinear_centres),
         compare=close(atol=1e-9, rtol=0.0),
         convert=_student_table,
-        hint=SPLAT_HINTS,
-        mistakes=_splat_mistakes(),
+        mistakes=splat_mistakes(),
         difference=_splat_difference,
         picture=_splat_picture,
         explain=_splat_explain,
         show=_show_splat,
-        forbidden=_library(),
         pass_picture=_splat_pass_picture,
     )
 
@@ -446,28 +283,6 @@ def _splat_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes
         _painted(given, window),
         (_("expected"), _("your splat of ({x}, {y})").format(x=case["x"], y=case["y"])),
     )
-
-
-SPLAT_HINTS = register_hints(
-    "splat",
-    Hints(
-        where=N_(
-            "look at which four pixels you light, and from which point you measure the offsets."
-        ),
-        more=N_(
-            "pixel (c, r) is centred at (c + 0.5, r + 0.5); the four pixels are those whose "
-            "centres surround the point, and each gets more the nearer the point is to its "
-            "centre: 1 at its own centre, 0 at a neighbour's."
-        ),
-        recipe=N_(
-            "left = floor(x - 0.5), top = floor(y - 0.5); dx, dy = the point minus the "
-            "centre (left + 0.5, top + 0.5); weights (1 - dx)(1 - dy), dx (1 - dy), (1 - dx) dy, "
-            "dx dy for (left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)."
-        ),
-    ),
-    "splat",
-    "bilinear_splat",
-)
 
 
 def _weight_cases() -> list[dict[str, Any]]:
@@ -506,54 +321,24 @@ def _weights_picture(
     return figure_png(figure)
 
 
-def _chords(samples: Any) -> np.ndarray:
-    return np.hypot(*np.diff(np.asarray(samples, dtype=float), axis=0).T)
+WEIGHT_HINTS = Hints(
+    where=N_("look at the chords beside each sample, and at the first and the last sample."),
+    more=N_(
+        "a sample stands for the curve from halfway to its previous sample to halfway "
+        "to its next one; the ends have one neighbour only, and all the weights add up to "
+        "the polyline's length."
+    ),
+    recipe=N_(
+        "chords = the distances between neighbouring samples; pad them with 0 at "
+        "both ends; w[i] = (padded[i] + padded[i + 1]) / 2."
+    ),
+)
 
 
-def _weight_mistakes() -> tuple[Mistake, ...]:
-    """The known mistakes, in the current language."""
-    return (
-        Mistake(
-            _("counting"),
-            _(
-                "every sample weighs 1, as in the handouts' loop: a pixel's brightness then "
-                "counts the samples in it, and follows the curve's speed. Weigh each by the "
-                "length of curve it stands for."
-            ),
-            # A lone sample cannot tell counting from a slip at the ends alone: no answer.
-            lambda samples: np.ones(len(samples)) if len(samples) > 1 else None,
-        ),
-        Mistake(
-            _("the chord after each sample"),
-            _(
-                "each sample has the whole chord to the next one (and the last none): the curve "
-                "shifts its ink backwards by half a chord. Give each sample half the chord on "
-                "each side."
-            ),
-            lambda samples: np.append(_chords(samples), 0.0),
-        ),
-        Mistake(
-            _("the chord before each sample"),
-            _(
-                "each sample has the whole chord from the previous one (and the first none). Give "
-                "each sample half the chord on each side."
-            ),
-            lambda samples: np.insert(_chords(samples), 0, 0.0),
-        ),
-        Mistake(
-            _("whole chords on both sides"),
-            _(
-                "each sample has both chords beside it in full: every piece of curve is counted "
-                "twice. Halve them."
-            ),
-            lambda samples: 2 * reference_weights(samples),
-        ),
-    )
-
-
-WEIGHT_MISTAKES = _weight_mistakes()
-
-
+@exercise(
+    hints=WEIGHT_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+)
 def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
     """Check ``student(samples)``: the length of curve each of the (N, 2) samples stands for.
 
@@ -572,27 +357,8 @@ def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
         reference=reference_weights,
         compare=close(atol=1e-9, rtol=1e-9),
         convert=lambda answer: np.asarray(answer, dtype=float),
-        hint=WEIGHT_HINTS,
-        mistakes=_weight_mistakes(),
+        mistakes=weight_mistakes(),
         difference=first_difference,
         picture=_weights_picture,
-        forbidden=_library(),
         pass_picture=lambda results: _weights_picture(*results[2], "your weights along the cubic"),
     )
-
-
-WEIGHT_HINTS = register_hints(
-    "arc_length_weights",
-    Hints(
-        where=N_("look at the chords beside each sample, and at the first and the last sample."),
-        more=N_(
-            "a sample stands for the curve from halfway to its previous sample to halfway "
-            "to its next one; the ends have one neighbour only, and all the weights add up to "
-            "the polyline's length."
-        ),
-        recipe=N_(
-            "chords = the distances between neighbouring samples; pad them with 0 at "
-            "both ends; w[i] = (padded[i] + padded[i + 1]) / 2."
-        ),
-    ),
-)

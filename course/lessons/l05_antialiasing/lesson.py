@@ -26,8 +26,9 @@ from course.classroom.pictures import (
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
-from course.lessons.l05_antialiasing import figures
-from course.lessons.l05_antialiasing.apps import ZOOM_PICKS, CurveWalk, StepApp, ZoomApp
+from course.lessons.l05_antialiasing import figures, measurements
+from course.lessons.l05_antialiasing.apps import ZOOM_PICKS, StepApp, ZoomApp
+from course.lessons.l05_antialiasing.zoom_panel import CurveWalk
 from course.lessons.printed import padded
 from course.widgets.base import SliderApp
 
@@ -115,7 +116,7 @@ def print_agg_error(name: str, rmse: float, worst: float, position: float) -> No
 
 def print_loop_position_error(name: str, error: float) -> None:
     """Print a rendering's position error in pixels; ``name`` is a key of
-    :data:`course.lessons.l05_antialiasing.figures.ROLES`, shown by its role's name.
+    :data:`course.lessons.l05_antialiasing.measurements.ROLES`, shown by its role's name.
 
     Examples
     --------
@@ -124,13 +125,13 @@ def print_loop_position_error(name: str, error: float) -> None:
     """
     print(
         _("{role}: position error {error:.3f} px").format(
-            role=_(figures.ROLES[name][0]), error=error
+            role=_(measurements.ROLES[name][0]), error=error
         )
     )
 
 
 # Computed once for the lesson, its pictures and the tests that read them.
-seed_000_renderings = figures.seed_000_renderings
+seed_000_renderings = measurements.seed_000_renderings
 
 
 def zoom_app() -> ZoomApp:

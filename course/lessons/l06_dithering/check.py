@@ -23,9 +23,9 @@ from typing import Any
 
 import numpy as np
 
-from course.check.base import CheckResult, Hints, Mistake, close, hint, register_hints, run_cases
+from course.check.base import CheckResult, Hints, Mistake, close, hint, run_cases
+from course.check.exercises import exercise
 from course.check.pictures import image_picture, side_by_side
-from course.check.references import public_name
 from course.halftone import diffusion, dither
 from course.halftone.diffusion import (
     error_diffusion,
@@ -43,16 +43,6 @@ _LIBRARY_FUNCTIONS = (
     diffusion.error_diffusion,
     diffusion.error_diffusion_values,
 )
-
-
-def _library() -> dict[Any, str]:
-    """The library's own answers, each with the report's words for a call to it."""
-    return {
-        function: _(
-            "your function calls {name}, the library's own answer: this exercise writes it"
-        ).format(name=public_name(function))
-        for function in _LIBRARY_FUNCTIONS
-    }
 
 
 @cache
@@ -139,6 +129,27 @@ def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
     return image_picture(expected, given, title=N_("first case that differs"))
 
 
+ORDERED_HINTS = Hints(
+    where=N_(
+        "look at the output's size, at which sub-pixel of a cell compares with which "
+        "entry of M, and at the comparison itself."
+    ),
+    more=N_(
+        "each input pixel becomes a 3 x 3 cell; row i, column j of the cell compares "
+        "the pixel's value with M[i][j] / 9, lit only where the value is greater."
+    ),
+    recipe=N_(
+        "output = zeros(3 H, 3 W); for each (x, y) and i, j in range(3): output[3 y + "
+        "i, 3 x + j] = 1 if gray[y, x] > M[i][j] / 9 else 0."
+    ),
+)
+
+
+@exercise(
+    hints=ORDERED_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    reported_as="DitheringOrdered",
+)
 def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(gray)``: each pixel a 3 x 3 cell, sub-pixel (i, j) lit where v > M[i, j] / 9.
 
@@ -185,33 +196,11 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
         reference=ordered,
         compare=close(atol=0, rtol=0),
         convert=_as_output,
-        hint=ORDERED_HINTS,
         mistakes=mistakes,
         picture=_picture,
         explain=lambda case, expected, given: _levels(given),
-        forbidden=_library(),
         pass_picture=_face_pass_picture,
     )
-
-
-ORDERED_HINTS = register_hints(
-    "DitheringOrdered",
-    Hints(
-        where=N_(
-            "look at the output's size, at which sub-pixel of a cell compares with which "
-            "entry of M, and at the comparison itself."
-        ),
-        more=N_(
-            "each input pixel becomes a 3 x 3 cell; row i, column j of the cell compares "
-            "the pixel's value with M[i][j] / 9, lit only where the value is greater."
-        ),
-        recipe=N_(
-            "output = zeros(3 H, 3 W); for each (x, y) and i, j in range(3): output[3 y + "
-            "i, 3 x + j] = 1 if gray[y, x] > M[i][j] / 9 else 0."
-        ),
-    ),
-    "dithering_ordered",
-)
 
 
 def _diffusion_cases() -> list[dict[str, Any]]:
@@ -267,6 +256,29 @@ def _carried(case: dict[str, Any], expected: Any, given: Any) -> str:
     ).format(x=x, y=y, value=gray[y, x], carried=value - gray[y, x], total=value, verdict=verdict)
 
 
+DIFFUSION_HINTS = Hints(
+    where=N_(
+        "look at the order you visit the pixels in, at what each pixel is compared "
+        "with, and at where its error goes."
+    ),
+    more=N_(
+        "visit the pixels row by row, left to right, in a copy of the image; each is "
+        "thresholded at 0.5 with the errors it has received, and its own error (what it "
+        "wanted minus what it got) is shared among the four neighbours not yet visited."
+    ),
+    recipe=N_(
+        "buffer = gray.copy(); for y, for x: output = 1 if buffer[y, x] > 0.5 else 0; "
+        "error = buffer[y, x] - output; add 7/16 of it right, 3/16 below left, 5/16 below, "
+        "1/16 below right, skipping pushes off the image."
+    ),
+)
+
+
+@exercise(
+    hints=DIFFUSION_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    reported_as="DitheringErrorDiffuse",
+)
 def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(gray)`` against Floyd-Steinberg as the lab specifies it.
 
@@ -335,11 +347,9 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
         reference=_loop_reference,
         compare=close(atol=0, rtol=0),
         convert=_as_output,
-        hint=DIFFUSION_HINTS,
         mistakes=mistakes,
         picture=_picture,
         explain=_carried,
-        forbidden=_library(),
         on_change=N_(
             "The lab report avoids this slip: its input is const, so it pushes the errors "
             "into a copy (inputcopy). Do the same (buffer = gray.copy()), so that the "
@@ -351,25 +361,3 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
 
 def _loop_reference(gray: Any) -> np.ndarray:
     return error_diffusion(gray, method="loop")
-
-
-DIFFUSION_HINTS = register_hints(
-    "DitheringErrorDiffuse",
-    Hints(
-        where=N_(
-            "look at the order you visit the pixels in, at what each pixel is compared "
-            "with, and at where its error goes."
-        ),
-        more=N_(
-            "visit the pixels row by row, left to right, in a copy of the image; each is "
-            "thresholded at 0.5 with the errors it has received, and its own error (what it "
-            "wanted minus what it got) is shared among the four neighbours not yet visited."
-        ),
-        recipe=N_(
-            "buffer = gray.copy(); for y, for x: output = 1 if buffer[y, x] > 0.5 else 0; "
-            "error = buffer[y, x] - output; add 7/16 of it right, 3/16 below left, 5/16 below, "
-            "1/16 below right, skipping pushes off the image."
-        ),
-    ),
-    "dithering_error_diffuse",
-)

@@ -1,8 +1,11 @@
 """Lesson 07 · Filtering: the chapter beside ``notebooks/07_filtering.ipynb``.
 
-- :mod:`.lesson`: the registry entry ``LESSON`` and the printing and landmark helpers;
-- :mod:`.check`: the exercises' checkers, imported as
-  ``from course.lessons.l07_filtering import check``;
-- :mod:`.apps`: the interactive apps;
-- :mod:`.figures`: the still pictures.
+- :mod:`.lesson`: lesson 07, filtering: its registry entry, pictures, landmarks and printed lines;
+- :mod:`.check`: lesson 07 exercises: the lab's ``Blur`` and ``Edge``;
+- :mod:`.apps`: lesson 07's apps: any 3 x 3 kernel on the photograph, and repeated blurs at the
+  border;
+- :mod:`.figures`: lesson 07's still pictures: blur and edges on the photograph, one output pixel's
+  window, the border after many blurs, and the false edges zero padding draws.
+
+The notebook imports its checkers as ``from course.lessons.l07_filtering import check``.
 """

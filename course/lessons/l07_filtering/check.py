@@ -26,7 +26,8 @@ from typing import Any
 import numpy as np
 
 from course import filters
-from course.check.base import CheckResult, Hints, Mistake, close, hint, register_hints, run_cases
+from course.check.base import CheckResult, Hints, Mistake, close, hint, run_cases
+from course.check.exercises import exercise
 from course.check.pictures import image_picture, side_by_side
 from course.filters import BOX, SOBEL_X, convolve, sobel
 from course.filters import blur as reference_blur
@@ -35,16 +36,6 @@ from course.i18n import N_, _
 __all__ = ["blur", "edge", "hint"]
 
 _LIBRARY_FUNCTIONS = (filters.blur, filters.sobel, filters.convolve)
-
-
-def _library() -> dict[Any, str]:
-    """The library's own answers, each with the report's words for a call to it."""
-    return {
-        function: _(
-            "your function calls {name}, the library's own answer: this exercise writes it"
-        ).format(name=f"course.filters.{function.__name__}")
-        for function in _LIBRARY_FUNCTIONS
-    }
 
 
 def _cases() -> list[dict[str, Any]]:
@@ -341,6 +332,30 @@ EDGE_MISTAKES = (
 )
 
 
+BLUR_HINTS = Hints(
+    where=N_(
+        "first check one pixel inside the image by hand (the mean of its 9 neighbours, "
+        "read from the input as it was); then the border: which neighbours you read "
+        "there, and what you divide by."
+    ),
+    more=N_(
+        "each output pixel is the mean of those of its 3 x 3 neighbours that exist: 9 "
+        "inside, 6 on an edge, 4 at a corner; nothing outside the image is read, and the "
+        "input is left as it was."
+    ),
+    recipe=N_(
+        "output = zeros_like(image); for each (x, y): window = image[max(y - 1, 0) : "
+        "y + 2, max(x - 1, 0) : x + 2]; output[y, x] = window.mean(axis=(0, 1))."
+    ),
+)
+
+
+@exercise(
+    hints=BLUR_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    function="blur_exercise",
+    reported_as="Blur",
+)
 def blur(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image)``: the 3 x 3 box blur with the handout's border rule.
 
@@ -361,13 +376,11 @@ def blur(student: Callable[..., Any]) -> CheckResult:
         reference_blur,
         close(1e-9),
         _as_float,
-        hint=BLUR_HINTS,
         mistakes=BLUR_MISTAKES,
         picture=_picture,
         explain=_explain,
         explain_nan=_explain_nan,
         show=_summary,
-        forbidden=_library(),
         pass_picture=_pass_picture,
     )
 
@@ -378,28 +391,31 @@ def _pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
     return side_by_side(expected / top, _as_float(given) / top, (N_("expected"), N_("your output")))
 
 
-BLUR_HINTS = register_hints(
-    "Blur",
-    Hints(
-        where=N_(
-            "first check one pixel inside the image by hand (the mean of its 9 neighbours, "
-            "read from the input as it was); then the border: which neighbours you read "
-            "there, and what you divide by."
-        ),
-        more=N_(
-            "each output pixel is the mean of those of its 3 x 3 neighbours that exist: 9 "
-            "inside, 6 on an edge, 4 at a corner; nothing outside the image is read, and the "
-            "input is left as it was."
-        ),
-        recipe=N_(
-            "output = zeros_like(image); for each (x, y): window = image[max(y - 1, 0) : "
-            "y + 2, max(x - 1, 0) : x + 2]; output[y, x] = window.mean(axis=(0, 1))."
-        ),
+EDGE_HINTS = Hints(
+    where=N_(
+        "first check one pixel inside the image by hand: the two kernels, their signs, "
+        "and how you combine Gx and Gy; then the border pixels (what you read outside "
+        "the image)."
     ),
-    "blur_exercise",
+    more=N_(
+        "outside the image, read the nearest pixel inside; Gx and Gy are the dot "
+        "products of the two Sobel kernels with each 3 x 3 window, and the output is the "
+        "length of (Gx, Gy), not clipped."
+    ),
+    recipe=N_(
+        "pad the image by one pixel with its edge values (np.pad, mode='edge'); for "
+        "each (x, y), window = padded[y : y + 3, x : x + 3]; gx, gy = the sums of SOBEL_X and "
+        "SOBEL_Y times window; output[y, x] = sqrt(gx**2 + gy**2)."
+    ),
 )
 
 
+@exercise(
+    hints=EDGE_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    function="edge_exercise",
+    reported_as="Edge",
+)
 def edge(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image)``: the Sobel gradient magnitude, border replicated.
 
@@ -421,39 +437,14 @@ def edge(student: Callable[..., Any]) -> CheckResult:
         _sobel_replicated,
         close(1e-9),
         _as_float,
-        hint=EDGE_HINTS,
         mistakes=EDGE_MISTAKES,
         picture=_picture,
         explain=_explain,
         explain_nan=_explain_nan,
         show=_summary,
-        forbidden=_library(),
         pass_picture=_pass_picture,
     )
 
 
 def _sobel_replicated(image: Any) -> np.ndarray:
     return sobel(image, border="replicate")
-
-
-EDGE_HINTS = register_hints(
-    "Edge",
-    Hints(
-        where=N_(
-            "first check one pixel inside the image by hand: the two kernels, their signs, "
-            "and how you combine Gx and Gy; then the border pixels (what you read outside "
-            "the image)."
-        ),
-        more=N_(
-            "outside the image, read the nearest pixel inside; Gx and Gy are the dot "
-            "products of the two Sobel kernels with each 3 x 3 window, and the output is the "
-            "length of (Gx, Gy), not clipped."
-        ),
-        recipe=N_(
-            "pad the image by one pixel with its edge values (np.pad, mode='edge'); for "
-            "each (x, y), window = padded[y : y + 3, x : x + 3]; gx, gy = the sums of SOBEL_X and "
-            "SOBEL_Y times window; output[y, x] = sqrt(gx**2 + gy**2)."
-        ),
-    ),
-    "edge_exercise",
-)

@@ -8,10 +8,10 @@ residual is small (:func:`jacobi_sweep`). Failures draw the difference and
 recognise the sign flipped, x and y swapped, the sweep done in place (the
 lab's loop: Gauss-Seidel), a stop one sweep late, the lab's fixed count of
 sweeps, a stop on the change between sweeps, on a quarter of the residual, on
-its mean or on its first channel alone. A function that writes into
-its inputs (``g = background[...]; g -= foreground`` changes the background)
-fails, however right its values. A pass shows the student's ``g`` beside the
-expected one.
+its mean or on its first channel alone (:mod:`.mistakes` reproduces each). A
+function that writes into its inputs (``g = background[...]; g -= foreground``
+changes the background) fails, however right its values. A pass shows the
+student's ``g`` beside the expected one.
 
 Hints come in steps: a failure says where to look, the next failures say
 more; ``check.hint("jacobi_exercise")`` says more at once and
@@ -26,14 +26,13 @@ from typing import Any
 import numpy as np
 
 from course import poisson
-from course.check.base import CheckResult, Mistake, close, hint, register_hints, run_cases
+from course.check.base import CheckResult, close, hint, run_cases
+from course.check.exercises import exercise
 from course.check.hints import Hints
 from course.check.pictures import image_picture, side_by_side
-from course.check.references import public_name
 from course.i18n import N_, _
+from course.lessons.l08_poisson.mistakes import boundary_mistakes, jacobi_until, sweep_mistakes
 from course.poisson import solvers as poisson_solvers
-from course.poisson.problem import image_of, planes_of
-from course.poisson.solvers import jacobi_sweeps, residual
 
 __all__ = ["hint", "jacobi_sweep", "poisson_boundary"]
 
@@ -44,19 +43,6 @@ _LIBRARY_FUNCTIONS = (
     poisson_solvers.jacobi_sweeps,
     poisson_solvers.iterate,
 )
-
-
-def _library() -> dict[Any, str]:
-    """The library's own answers, each with what a student who calls it is told."""
-    return {
-        function: _(
-            "your function calls {function}, the library's own answer: this exercise writes it"
-        ).format(function=public_name(function))
-        for function in _LIBRARY_FUNCTIONS
-    }
-
-
-_LIBRARY = _library()
 
 
 def _shown(g: Any) -> np.ndarray:
@@ -83,6 +69,28 @@ def _cases() -> list[dict[str, Any]]:
     ]
 
 
+BOUNDARY_HINTS = Hints(
+    where=N_(
+        "look at the pixels of the foreground's outer ring, at where they sit in the "
+        "background, and at the inside."
+    ),
+    more=N_(
+        "offset = (x, y) puts the foreground's top-left pixel at background[y, x]; on "
+        "the ring, g is what the background has there minus the foreground; inside, 0. The "
+        "background and the foreground stay as they were."
+    ),
+    recipe=N_(
+        "window = background[y : y + height, x : x + width]; g = window - foreground "
+        "(a new array); g[1:-1, 1:-1] = 0."
+    ),
+)
+
+
+@exercise(
+    hints=BOUNDARY_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    function="boundary_exercise",
+)
 def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(background, foreground, offset)`` against the lab's boundary setup.
 
@@ -104,36 +112,12 @@ def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
         poisson.correction_boundary,
         close(atol=1e-12, rtol=0),
         convert=lambda g: np.asarray(g, dtype=float),
-        hint=BOUNDARY_HINTS,
-        mistakes=_boundary_mistakes(),
+        mistakes=boundary_mistakes(),
         picture=_boundary_picture,
-        forbidden=_library(),
         pass_picture=lambda results: side_by_side(
             _shown(results[2][1]), _shown(results[2][2]), (_("expected g"), _("your g"))
         ),
     )
-
-
-BOUNDARY_HINTS = register_hints(
-    "boundary_exercise",
-    Hints(
-        where=N_(
-            "look at the pixels of the foreground's outer ring, at where they sit in the "
-            "background, and at the inside."
-        ),
-        more=N_(
-            "offset = (x, y) puts the foreground's top-left pixel at background[y, x]; on "
-            "the ring, g is what the background has there minus the foreground; inside, 0. The "
-            "background and the foreground stay as they were."
-        ),
-        recipe=N_(
-            "window = background[y : y + height, x : x + width]; g = window - foreground "
-            "(a new array); g[1:-1, 1:-1] = 0."
-        ),
-    ),
-    "boundary_exercise",
-    "poisson_boundary",
-)
 
 
 def _boundary_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
@@ -143,47 +127,6 @@ def _boundary_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
         (np.asarray(given, dtype=float) + 1) / 2,
         title=_("g, shown as (g + 1) / 2: 0 is mid-gray"),
     )
-
-
-def _swapped_offset(background: Any, foreground: Any, offset: Any) -> np.ndarray:
-    return poisson.correction_boundary(background, foreground, (offset[1], offset[0]))
-
-
-def _boundary_mistakes() -> tuple[Mistake, ...]:
-    """The known mistakes, in the current language."""
-    return (
-        Mistake(
-            _("the sign flipped"),
-            _(
-                "your ring holds foreground - background. The report's formula is right: "
-                "g = background - foreground, so that foreground + g is the background on the ring."
-            ),
-            lambda background, foreground, offset: (
-                -poisson.correction_boundary(background, foreground, offset)
-            ),
-        ),
-        Mistake(
-            _("the background alone"),
-            _(
-                "your ring holds the background, without subtracting the foreground: the result "
-                "foreground + g is then the background plus the foreground on the ring."
-            ),
-            lambda background, foreground, offset: poisson.correction_boundary(
-                background, np.zeros_like(foreground), offset
-            ),
-        ),
-        Mistake(
-            _("x and y swapped"),
-            _(
-                "you read the background at (offset[1], offset[0]): offset is (x, y), the column "
-                "first, and background[y, x] is row y."
-            ),
-            _swapped_offset,
-        ),
-    )
-
-
-BOUNDARY_MISTAKES = _boundary_mistakes()
 
 
 def _sweep_cases() -> list[dict[str, Any]]:
@@ -212,38 +155,6 @@ def _sweep_cases() -> list[dict[str, Any]]:
     rgb[..., 0] /= 16
     cases.append({"g": rgb, "tolerance": 1e-4})
     return cases
-
-
-def _jacobi_until(g: Any, tolerance: float, late: int = 0) -> tuple[np.ndarray, int]:
-    """Jacobi sweeps on ``g``'s inside until the residual is below ``tolerance``, then
-    ``late`` more (a loop that tests after it sweeps)."""
-    image = np.asarray(g, dtype=float)
-    planes = planes_of(image)
-    region = np.zeros(planes.shape[1:], dtype=bool)
-    region[1:-1, 1:-1] = True
-    source = np.zeros_like(planes)
-    count, u = 0, planes
-    sweeps = jacobi_sweeps(planes, region, source)
-    while residual(u, region, source) >= tolerance:
-        u, count = next(sweeps), count + 1
-    for _late in range(late):
-        u, count = next(sweeps), count + 1
-    return image_of(u, image), count
-
-
-def _gauss_seidel_until(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
-    """The lab's loop, which writes g in place: Gauss-Seidel."""
-    u = np.array(g, dtype=float)
-    height, width = u.shape[:2]
-    count = 0
-    while True:
-        inner = u[:-2, 1:-1] + u[2:, 1:-1] + u[1:-1, :-2] + u[1:-1, 2:] - 4 * u[1:-1, 1:-1]
-        if np.abs(inner).max() < tolerance:
-            return u, count
-        for y in range(1, height - 1):
-            for x in range(1, width - 1):
-                u[y, x] = (u[y - 1, x] + u[y + 1, x] + u[y, x - 1] + u[y, x + 1]) * 0.25
-        count += 1
 
 
 def _same_sweeps(expected: Any, given: Any) -> bool:
@@ -317,138 +228,29 @@ def _show_sweeps(answer: Any) -> str:
         )
 
 
-def _until_change(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
-    """Jacobi sweeps until the largest change of one sweep is below ``tolerance``."""
-    u = np.array(g, dtype=float)
-    count = 0
-    while True:
-        new = u.copy()
-        new[1:-1, 1:-1] = (u[:-2, 1:-1] + u[2:, 1:-1] + u[1:-1, :-2] + u[1:-1, 2:]) / 4
-        count += 1
-        if u.size == 0 or np.abs(new - u).max() < tolerance:
-            return new, count
-        u = new
+SWEEP_HINTS = Hints(
+    where=N_(
+        "look at when your loop tests the residual (before or after a sweep), at what "
+        "each sweep reads, and at what you count."
+    ),
+    more=N_(
+        "before each sweep, the residual max |up + down + left + right - 4 g| over the "
+        "inside is compared with the tolerance; a sweep computes every new inside value "
+        "from the previous array only, and the ring never changes. Work on a copy of g."
+    ),
+    recipe=N_(
+        "g = np.array(g, dtype=float); for sweeps in itertools.count(): n = the sum of "
+        "the four shifted slices; if max |n - 4 g[1:-1, 1:-1]| < tolerance: return g, sweeps; "
+        "g[1:-1, 1:-1] = n / 4."
+    ),
+)
 
 
-def _until_residual_measure(
-    g: Any, tolerance: float, measure: Callable[[np.ndarray], float]
-) -> tuple[np.ndarray, int]:
-    """Jacobi sweeps until ``measure(|residual|)`` (over the inside, every channel) is below
-    ``tolerance``: the residual's mean, a quarter of its max, or its first channel's."""
-    u = np.array(g, dtype=float)
-    count = 0
-    while True:
-        neighbours = u[:-2, 1:-1] + u[2:, 1:-1] + u[1:-1, :-2] + u[1:-1, 2:]
-        if neighbours.size == 0 or measure(np.abs(neighbours - 4 * u[1:-1, 1:-1])) < tolerance:
-            return u, count
-        u = u.copy()
-        u[1:-1, 1:-1] = neighbours / 4
-        count += 1
-
-
-def _first_channel(size: np.ndarray) -> float:
-    return float((size[..., 0] if size.ndim == 3 else size).max())
-
-
-def _fixed_count(expected: Any, given: Any) -> bool:
-    """A sweep count far past what the tolerance needs: the lab's fixed loop of 8000."""
-    try:
-        _, sweeps = given
-        return int(sweeps) >= 1000 and int(sweeps) != int(expected[1])
-    except (TypeError, ValueError):
-        return False
-
-
-def _sweep_mistakes() -> tuple[Mistake, ...]:
-    """The known mistakes, in the current language."""
-    return (
-        Mistake(
-            _("in place: Gauss-Seidel"),
-            _(
-                "your sweep writes g as it goes, so each pixel already sees its new upper and left "
-                "neighbours: that is Gauss-Seidel, and so is the lab's loop, whatever its comment "
-                "says. Jacobi computes every new value from the old array (a copy, or all four "
-                "shifted slices at once)."
-            ),
-            _gauss_seidel_until,
-        ),
-        Mistake(
-            _("a fixed number of sweeps"),
-            _(
-                "you ran a fixed count of sweeps, as the lab's loop runs 8000: the exercise "
-                "stops as soon as the residual is below the tolerance, and returns how many "
-                "sweeps that took."
-            ),
-            lambda g, tolerance: (np.asarray(g, dtype=float), 0),
-            matches=_fixed_count,
-        ),
-        # Before the stop on the change: on an array already harmonic both give one sweep, and
-        # only a loop that sweeps before it tests fails nothing else.
-        Mistake(
-            _("one sweep late"),
-            _(
-                "you sweep before you test: the loop must stop as soon as the residual is below "
-                "the tolerance, so an array already within it gets no sweep at all."
-            ),
-            lambda g, tolerance: _jacobi_until(g, tolerance, late=1),
-        ),
-        Mistake(
-            _("a stop on the change between sweeps"),
-            _(
-                "you stopped when one sweep changed g by less than the tolerance: that change is "
-                "a quarter of the residual, so your loop stops while the residual is still up to "
-                "four times the tolerance. Test the residual, max |up + down + left + right - 4 "
-                "g| over the inside, before each sweep."
-            ),
-            _until_change,
-        ),
-        Mistake(
-            _("the mean of the residual instead of its largest value"),
-            _(
-                "you compared the mean of |up + down + left + right - 4 g| over the inside with "
-                "the tolerance: the exercise compares its largest value, so the loop goes on "
-                "while any one pixel is still far from the mean of its neighbours."
-            ),
-            lambda g, tolerance: _until_residual_measure(g, tolerance, np.mean),
-        ),
-        # Before the quarter: on the residual equal to the tolerance (case 5) both stop at once.
-        Mistake(
-            _("a stop at a residual equal to the tolerance"),
-            _(
-                "your loop stops when the residual is at or below the tolerance (<=): it stops "
-                "only below it (<), so a residual equal to the tolerance still gets a sweep."
-            ),
-            lambda g, tolerance: _until_residual_measure(
-                g, tolerance, lambda size: float(np.nextafter(size.max(), -np.inf))
-            ),
-        ),
-        Mistake(
-            _("a quarter of the residual"),
-            _(
-                "you compared the residual divided by 4 (the mean of the four neighbours minus "
-                "g, which is the change the next sweep makes) with the tolerance: your loop "
-                "stops while the residual is still up to four times the tolerance. Compare the "
-                "residual itself, max |up + down + left + right - 4 g|."
-            ),
-            lambda g, tolerance: _until_residual_measure(
-                g, tolerance, lambda size: float(size.max()) / 4
-            ),
-        ),
-        Mistake(
-            _("the residual of the first channel only"),
-            _(
-                "your residual looks at channel 0 only: on an RGB g the loop goes on until the "
-                "residual of every channel is below the tolerance, the largest value over the "
-                "inside and all three channels."
-            ),
-            lambda g, tolerance: _until_residual_measure(g, tolerance, _first_channel),
-        ),
-    )
-
-
-SWEEP_MISTAKES = _sweep_mistakes()
-
-
+@exercise(
+    hints=SWEEP_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    function="jacobi_exercise",
+)
 def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(g, tolerance) -> (g, sweeps)``: Jacobi sweeps until the residual is small.
 
@@ -461,45 +263,21 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> jacobi_sweep(_gauss_seidel_until).mistake
+    >>> from course.lessons.l08_poisson.mistakes import gauss_seidel_until
+    >>> jacobi_sweep(gauss_seidel_until).mistake
     'in place: Gauss-Seidel'
     """
     return run_cases(
         "jacobi_exercise",
         student,
         _sweep_cases(),
-        _jacobi_until,
+        jacobi_until,
         _same_sweeps,
-        hint=SWEEP_HINTS,
-        mistakes=_sweep_mistakes(),
+        mistakes=sweep_mistakes(),
         difference=_sweep_difference,
         picture=_sweep_picture,
         show=_show_sweeps,
-        forbidden=_library(),
         pass_picture=lambda results: side_by_side(
             _shown(results[1][1][0]), _shown(results[1][2][0]), (_("expected g"), _("your g"))
         ),
     )
-
-
-SWEEP_HINTS = register_hints(
-    "jacobi_exercise",
-    Hints(
-        where=N_(
-            "look at when your loop tests the residual (before or after a sweep), at what "
-            "each sweep reads, and at what you count."
-        ),
-        more=N_(
-            "before each sweep, the residual max |up + down + left + right - 4 g| over the "
-            "inside is compared with the tolerance; a sweep computes every new inside value "
-            "from the previous array only, and the ring never changes. Work on a copy of g."
-        ),
-        recipe=N_(
-            "g = np.array(g, dtype=float); for sweeps in itertools.count(): n = the sum of "
-            "the four shifted slices; if max |n - 4 g[1:-1, 1:-1]| < tolerance: return g, sweeps; "
-            "g[1:-1, 1:-1] = n / 4."
-        ),
-    ),
-    "jacobi_exercise",
-    "jacobi_sweep",
-)

@@ -1,23 +1,15 @@
 """Lesson 08's still pictures: a clone that works, its correction, a clone that cannot keep
-the colours, how far the lab's sweeps get, masks and mixed gradients, inpainting.
+the colours, masks and mixed gradients, inpainting, and the tiny clone solved by hand.
 
 Each function returns a :class:`~course.widgets.picture.Still` whose caption
 states the numbers it shows; photographs are drawn pixel for pixel
-(:func:`~course.widgets.picture.pixel_figure`).
-
-The lab skeleton's 8000 Gauss-Seidel sweeps take about nine seconds, too long for a
-lesson that runs in fifteen, so their record (residual and error every 50
-sweeps, for Jacobi, Gauss-Seidel and SOR) is stored in
-``course/lessons/l08_poisson/lab_sweeps.json``; :func:`compute_lab_sweeps` makes it
-again, and a test compares the two.
+(:func:`~course.widgets.picture.pixel_figure`). How far the lab's sweeps get, and
+the sweeps app's questions, are in :mod:`.convergence`, which draws on the scenes here.
 """
 
 from __future__ import annotations
 
 import functools
-import json
-import os
-from pathlib import Path
 from typing import Any
 
 import matplotlib
@@ -29,36 +21,26 @@ from matplotlib.patches import Rectangle
 
 from course import images, limits, poisson
 from course._validate import as_int
-from course.i18n import N_, _
-from course.poisson import solvers
+from course.i18n import _
 from course.widgets.picture import Still, bare_axes, pixel_axes, pixel_figure
 
 __all__ = [
     "DAY_OFFSET",
     "LAB_OFFSET",
-    "LAB_SWEEPS_FILE",
     "colour_figure",
-    "compute_lab_sweeps",
-    "convergence_figure",
     "correction_figure",
     "day_scene",
     "headline_figure",
     "inpainting_figure",
     "lab_scene",
-    "lab_sweeps",
     "mask_and_mixed_figure",
-    "residual_scale",
-    "strip_and_square",
-    "sweep_study",
     "tiny_clone_figure",
-    "write_lab_sweeps",
 ]
 
 #: Where the day plane sits in the lake's sky (x, y): the headline clone.
 DAY_OFFSET = (420, 50)
 #: The lab's offset: the evening plane over the water.
 LAB_OFFSET = (500, 300)
-LAB_SWEEPS_FILE = Path(__file__).resolve().parent / "lab_sweeps.json"
 _MARGIN = 30
 BLUE, VERMILLION, GREEN = "#0072B2", "#D55E00", "#009E73"
 #: g has both signs: purple below 0, white at 0, green above (no orange, the inside's mark).
@@ -199,135 +181,6 @@ def colour_figure() -> Still:
     return Still.of(figure, caption)
 
 
-def compute_lab_sweeps() -> dict[str, Any]:
-    """Residual and error of Jacobi and Gauss-Seidel (8000 sweeps) and SOR (600) on the lab's
-    scene, every 50 (SOR: 5) sweeps, and how far the lab's result is from the exact one.
-
-    About nine seconds: the lesson reads :func:`lab_sweeps` instead.
-    """
-    lake, plane = lab_scene()
-    problem = poisson.clone_problem(lake, plane, LAB_OFFSET)
-    exact = poisson.solve(problem)
-    record: dict[str, Any] = {"region": list(problem.region.shape)}
-    for method, sweeps, every in (
-        ("jacobi", 8000, 50),
-        ("gauss_seidel", 8000, 50),
-        ("sor", 600, 5),
-    ):
-        history = poisson.convergence(problem, method, sweeps, exact=exact, every=every)
-        record[method] = {
-            "sweeps": history.sweeps.tolist(),
-            "residuals": history.residuals.tolist(),
-            "errors": history.errors.tolist(),
-        }
-        if method == "gauss_seidel":
-            error = np.abs(history.solution - exact).max(axis=2)[problem.region] * 255
-            record["lab_result"] = {
-                "mean_error": float(error.mean()),
-                "share_above_one_grey_level": float((error > 1).mean()),
-            }
-    return record
-
-
-def lab_sweeps() -> dict[str, Any]:
-    """The stored record of :func:`compute_lab_sweeps`."""
-    return json.loads(LAB_SWEEPS_FILE.read_text())
-
-
-def write_lab_sweeps(path: str | os.PathLike[str] = LAB_SWEEPS_FILE) -> None:
-    """Compute the record again and store it (the maintainers' step; a test compares).
-
-    ``path`` is a file path, a ``str`` or a ``Path``; it is checked before the
-    minutes of solving.
-    """
-    if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
-        raise TypeError(
-            _("path must be a file path (str or pathlib.Path); got {path_type} {path}").format(
-                path_type=type(path).__name__, path=repr(path)
-            )
-        )
-    path = Path(path)
-    if path.is_dir():
-        raise ValueError(
-            _("path must name a file; {path} is a folder").format(path=repr(str(path)))
-        )
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps(compute_lab_sweeps(), indent=1) + "\n")
-
-
-_NAMES = {"jacobi": "Jacobi", "gauss_seidel": N_("Gauss-Seidel (the lab's loop)"), "sor": "SOR"}
-
-
-def convergence_figure() -> Still:
-    """Error against the exact solution after each sweep, on the lab's scene.
-
-    Examples
-    --------
-    >>> convergence_figure()  # doctest: +NORMALIZE_WHITESPACE
-    rho = 0.99976 per Jacobi sweep; after the lab skeleton's 8000 sweeps: Jacobi up to 46 grey
-    levels off, Gauss-Seidel up to 7.3; SOR up to 7.5e-07 after 600; the lab's result is 3.0
-    grey levels off on average, 77% of its pixels by more than one
-    """
-    record = lab_sweeps()
-    height, width = record["region"]
-    rho = solvers.jacobi_rate((height - 2, width - 2))  # the unknowns: inside the ring
-    figure = Figure(figsize=(8.0, 3.0), dpi=100)
-    axes = figure.add_subplot()
-    axes.set_title(
-        _("the lab's scene; a Jacobi sweep leaves ρ = {rho:.5f} of the slowest error").format(
-            rho=rho
-        ),
-        fontsize=9,
-    )
-    for method, colour, dashes in (
-        ("jacobi", BLUE, "-"),
-        ("gauss_seidel", VERMILLION, "--"),
-        ("sor", GREEN, ":"),
-    ):
-        history = record[method]
-        errors = np.maximum(np.array(history["errors"]) * 255, 1e-9)
-        axes.semilogy(
-            history["sweeps"], errors, color=colour, ls=dashes, lw=1.8, label=_(_NAMES[method])
-        )
-    axes.axvline(8000, color="0.3", ls=":", lw=1)
-    axes.annotate(
-        _("the lab skeleton's 8000"),
-        (8000, 1e2),
-        xytext=(-4, 0),
-        textcoords="offset points",
-        ha="right",
-        fontsize=8,
-    )
-    axes.axhline(1.0, color="0.5", lw=0.8, ls="--")
-    axes.annotate(
-        _("one grey level"), (100, 1.0), xytext=(0, 3), textcoords="offset points", fontsize=8
-    )
-    axes.set_xlabel(_("sweeps"), fontsize=8)
-    axes.set_ylabel(_("largest error (grey levels)"), fontsize=8)
-    axes.tick_params(labelsize=7)
-    axes.legend(fontsize=7, loc="lower left")
-    figure.tight_layout()
-    final = {method: record[method]["errors"][-1] * 255 for method in _NAMES}
-    lab = record["lab_result"]
-    caption = _(
-        "rho = {rho:.5f} per Jacobi sweep; "
-        "after the lab skeleton's 8000 sweeps: Jacobi up to {jacobi:.2g} grey levels off, "
-        "Gauss-Seidel up to {gauss_seidel:.2g}; SOR up to {sor:.2g} after "
-        "{sor_sweeps}; the lab's result is {mean:.1f} grey "
-        "levels off on average, {share:.0%} of its pixels by "
-        "more than one"
-    ).format(
-        rho=rho,
-        jacobi=final["jacobi"],
-        gauss_seidel=final["gauss_seidel"],
-        sor=final["sor"],
-        sor_sweeps=record["sor"]["sweeps"][-1],
-        mean=lab["mean_error"],
-        share=lab["share_above_one_grey_level"],
-    )
-    return Still.of(figure, caption)
-
-
 def mask_and_mixed_figure() -> Still:
     """The headline clone three ways: the rectangle, a mask around the plane, mixed gradients.
 
@@ -388,23 +241,6 @@ def inpainting_figure() -> Still:
         percentile=np.percentile(error, 95),
     )
     return Still.of(figure, caption)
-
-
-def strip_and_square() -> str:
-    """Jacobi's slowest decay per sweep on a 3 x 3 square and on ever longer 3-wide strips.
-
-    Examples
-    --------
-    >>> print(strip_and_square())
-    3 x 3 square: 0.7071; 3 x 30 strip: 0.8510; 3 x 300 strip: 0.8535; 3 x infinity: 0.8536
-    """
-    parts = [_("3 x 3 square: {rate:.4f}").format(rate=solvers.jacobi_rate((3, 3)))]
-    parts += [
-        _("3 x {length} strip: {rate:.4f}").format(length=n, rate=solvers.jacobi_rate((3, n)))
-        for n in (30, 300)
-    ]
-    parts.append(_("3 x infinity: {rate:.4f}").format(rate=(np.cos(np.pi / 4) + 1) / 2))
-    return _("; ").join(parts)
 
 
 #: Lesson 08's tiny clone: a 6 x 7 sky brightening to the right, and a 4 x 5 patch of a white
@@ -564,65 +400,3 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
         below=below,
     )
     return Still.of(figure, caption)
-
-
-def residual_scale(app: Any) -> str:
-    """How large an error a residual can hide, on the app's region, at the app's current sweep.
-
-    The error e of an iterate solves (the negative Laplacian) e = residual;
-    its smallest eigenvalue is 4 (1 - rho), so an error can be as large as
-    the residual divided by it.
-    """
-    height, width = app.problem.region.shape
-    rho = solvers.jacobi_rate((height - 2, width - 2))
-    method, sweeps = app.value("method"), app.value("sweeps")
-    solution = app.iterate(method, sweeps)
-    residual = app.problem.residual(solution)
-    factor = 1 / (4 * (1 - rho))
-    measured = float(np.abs(solution - app.exact)[app.problem.region].max() * 255)
-    return _(
-        "rho = {rho:.5f}, so a residual r can hide an error of about r / (4 (1 - rho)) = "
-        "{factor:.0f} r. {method} after {sweeps} sweeps: r = {residual:.2g}, an error "
-        "of about {error:.0f} grey levels; measured, up to {measured:.0f}"
-    ).format(
-        rho=rho,
-        factor=factor,
-        method=_(_NAMES[method]),
-        sweeps=sweeps,
-        residual=residual,
-        error=factor * residual * 255,
-        measured=measured,
-    )
-
-
-def sweep_study(app: Any) -> str:
-    """The sweeps app's two questions, answered on its own problem.
-
-    Where Jacobi's error is after 10, 100 and 1000 sweeps: its mean, in grey
-    levels, within 5 px of the ring and more than 40 px from it; and how
-    many sweeps SOR needs to be within one grey level everywhere.
-    """
-    from scipy import ndimage
-
-    region = app.problem.region
-    distance = ndimage.distance_transform_cdt(region, metric="chessboard")
-    near, far = region & (distance <= 5), region & (distance > 40)
-    lines = []
-    for sweeps in (10, 100, 1000):
-        error = np.abs(app.iterate("jacobi", sweeps) - app.exact).max(axis=2) * 255
-        lines.append(
-            _(
-                "Jacobi, {sweeps:4d} sweeps: mean error {near:6.1f} grey levels "
-                "near the ring, {far:6.1f} more than 40 px from it"
-            ).format(sweeps=sweeps, near=error[near].mean(), far=error[far].mean())
-        )
-    for sweeps in app.stops:
-        error = np.abs(app.iterate("sor", sweeps) - app.exact).max(axis=2)[region] * 255
-        if error.max() < 1:
-            lines.append(
-                _("SOR: within one grey level everywhere after {sweeps} sweeps").format(
-                    sweeps=sweeps
-                )
-            )
-            break
-    return "\n".join(lines)

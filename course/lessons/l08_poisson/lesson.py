@@ -23,6 +23,7 @@ from course.classroom.registry import DragMove, Landmark, Lesson, Picture, Slide
 from course.i18n import N_, _
 from course.lessons.l08_poisson import figures
 from course.lessons.l08_poisson.apps import MARGIN, CloneApp, PoissonIterationApp, half_size
+from course.lessons.l08_poisson.convergence import convergence_figure
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
@@ -214,7 +215,7 @@ LESSON = Lesson(
             "08_sweeps_to_the_solution",
             "the largest error after each sweep for Jacobi, Gauss-Seidel and SOR on the lab's "
             "scene: neither of the first two is done after 8000",
-            figures.convergence_figure,
+            convergence_figure,
         ),
         Picture(
             "08_drag_the_plane",

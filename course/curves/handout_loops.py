@@ -1,0 +1,169 @@
+"""The handouts' drawing loops, and the GAMES101 check that compares them.
+
+Each report's ``bezier()`` walks t in its own way and turns a curve point
+into a pixel in its own way: :class:`HandoutLoop` records both (the ``float``
+or ``double`` t of its ``t += 0.001``, OpenCV's rounding or a truncation),
+and :data:`HANDOUT_LOOPS` holds the seeds' loops as written, with
+:data:`NAIVE_LOOP`, the framework's ``naive_bezier``. :func:`loop_pixels`
+gives the pixels a loop paints; :func:`yellow_check` paints ``naive_bezier``
+red and a loop green, as the GAMES101 homework checks its answer, and
+measures how yellow the picture is.
+
+Lesson 01 uses them (its notebook, its figures of the curve's end and of the
+yellow check); the handouts' other code is in :mod:`course.curves.bezier_handouts`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from course import limits
+from course._validate import as_points, as_shape
+from course.curves.bezier import bezier_bernstein, de_casteljau
+from course.curves.bezier_handouts import de_casteljau_reversed
+from course.curves.flattening import uniform_parameters
+from course.i18n import _
+from course.raster import nearest_pixels
+
+__all__ = [
+    "HANDOUT_LOOPS",
+    "NAIVE_LOOP",
+    "HandoutLoop",
+    "YellowCheck",
+    "loop_pixels",
+    "yellow_check",
+]
+
+
+@dataclass(frozen=True)
+class HandoutLoop:
+    """How one handout's ``bezier()`` walks t and turns a point into a pixel.
+
+    ``accumulate`` is the :func:`course.curves.flattening.uniform_parameters` mode of
+    its ``t += 0.001`` (``"float32"`` for a ``float t``, ``"float64"`` for
+    a ``double``); ``rounding`` the :func:`course.raster.nearest_pixels`
+    mode of its pixel write (``"round"`` for ``window.at<cv::Vec3b>(point)``,
+    which converts through ``cv::Point``; ``"trunc"`` for ``(point.y,
+    point.x)``); ``reversed`` whether its step is ``t P[i] + (1 - t) P[i+1]``.
+    The points themselves are computed here in double precision.
+    """
+
+    name: str
+    code: str
+    accumulate: str
+    rounding: str
+    reversed: bool = False
+
+
+#: The seeds' drawing loops, as written, each named for its report's role.
+HANDOUT_LOOPS = {
+    "000": HandoutLoop(
+        "the GAMES101 report",
+        "for (float t = 0; t <= 1; t += 0.001f) window.at<cv::Vec3b>(point) = ...",
+        "float32",
+        "round",
+    ),
+    "002": HandoutLoop(
+        "the any-degree report",
+        "float dt = 0.001; for (t = 0; t <= 1; t += dt) window.at<cv::Vec3b>(point.y, point.x)",
+        "float32",
+        "trunc",
+        reversed=True,
+    ),
+    "003": HandoutLoop(
+        "the VS2022 report",
+        "for (double t = 0.0; t <= 1.0; t += 0.001) window.at<cv::Vec3b>(point.y, point.x)",
+        "float64",
+        "trunc",
+    ),
+    "004": HandoutLoop(
+        "the lab 6 report",
+        "for (float t = 0; t <= 1; t += 0.001) window.at<cv::Vec3b>(point.y, point.x)",
+        "float32",
+        "trunc",
+        reversed=True,
+    ),
+}
+#: The GAMES101 framework's ``naive_bezier``: the red curve of the yellow check.
+NAIVE_LOOP = HandoutLoop(
+    "naive_bezier",
+    "for (double t = 0.0; t <= 1.0; t += 0.001) window.at<cv::Vec3b>(point.y, point.x)",
+    "float64",
+    "trunc",
+)
+
+
+def loop_pixels(points: Any, loop: HandoutLoop, shape: Any = None) -> np.ndarray:
+    """The pixels ``loop`` paints for the curve: (K, 2) (x, y), one per t, repeats kept.
+
+    Examples
+    --------
+    >>> loop_pixels([[0.5, 0.5], [4.5, 0.5]], HANDOUT_LOOPS["003"])[[0, -1]].tolist()
+    [[0, 0], [4, 0]]
+    """
+    control = as_points(points, bound=limits.MAX_COORDINATE)
+    _require_loop(loop)
+    t = uniform_parameters(0.001, loop.accumulate)
+    if loop is NAIVE_LOOP:
+        curve = bezier_bernstein(control, t, method="loop")
+    else:
+        curve = de_casteljau_reversed(control, t) if loop.reversed else de_casteljau(control, t)
+    return nearest_pixels(curve, rounding=loop.rounding, shape=shape)
+
+
+def _require_loop(loop: Any) -> None:
+    if not isinstance(loop, HandoutLoop):
+        raise TypeError(
+            _(
+                "loop must be a HandoutLoop, e.g. HANDOUT_LOOPS['003'] or NAIVE_LOOP; got "
+                "{loop_type} {loop:.60}"
+            ).format(loop_type=type(loop).__name__, loop=repr(loop))
+        )
+
+
+@dataclass(frozen=True)
+class YellowCheck:
+    """The GAMES101 check of one handout loop: red ``naive_bezier``, green the loop.
+
+    ``image`` is the (H, W, 3) picture; ``fraction`` the share of painted
+    pixels that are yellow (both); ``red_only`` and ``green_only`` the
+    (K, 2) pixels only one curve lights, in reading order.
+    """
+
+    image: np.ndarray
+    fraction: float
+    red_only: np.ndarray
+    green_only: np.ndarray
+
+
+def yellow_check(points: Any, loop: HandoutLoop, shape: Any = (700, 700)) -> YellowCheck:
+    """Paint ``naive_bezier`` red and ``loop`` green, as the GAMES101 homework does.
+
+    Examples
+    --------
+    >>> check = yellow_check([[0.5, 0.5], [9.5, 0.5]], HANDOUT_LOOPS["003"], (2, 10))
+    >>> check.fraction, len(check.red_only), len(check.green_only)
+    (1.0, 0, 0)
+    """
+    height, width = as_shape(shape)
+    _require_loop(loop)
+    red = np.zeros((height, width), dtype=bool)
+    green = np.zeros((height, width), dtype=bool)
+    for mask, pixels in (
+        (red, loop_pixels(points, NAIVE_LOOP, shape)),
+        (green, loop_pixels(points, loop, shape)),
+    ):
+        mask[pixels[:, 1], pixels[:, 0]] = True
+    image = np.zeros((height, width, 3))
+    image[..., 0], image[..., 1] = red, green
+    painted = np.count_nonzero(red | green)
+    fraction = float(np.count_nonzero(red & green) / painted) if painted else 1.0
+
+    def listed(mask: np.ndarray) -> np.ndarray:
+        rows, columns = np.nonzero(mask)
+        return np.column_stack([columns, rows])
+
+    return YellowCheck(image, fraction, listed(red & ~green), listed(green & ~red))

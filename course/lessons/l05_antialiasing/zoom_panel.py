@@ -1,0 +1,215 @@
+"""Zoomed pixel views of a rendered curve: where the window sits, one panel, a still grid.
+
+:class:`CurveWalk` finds the point a fraction of the way along a curve (by
+arc length), where a zoom window sits; :class:`ZoomPanel` shows one window
+of an image as flat pixels, with the pixel grid and the true curve on top;
+:func:`zoom_figure` lays out a still grid of such panels. :mod:`.apps`
+builds its zoom and step apps from them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.collections import LineCollection
+from matplotlib.figure import Figure
+
+from course import limits
+from course._validate import (
+    as_curve,
+    as_float_array,
+    as_image,
+    as_int,
+    as_point,
+    as_positive_float,
+    as_scalar_parameter,
+    describe,
+    require_finite,
+)
+from course.antialias.coverage import curve_polyline
+from course.i18n import _
+from course.raster.canvas import crop
+from course.widgets.base import SliderApp
+
+__all__ = ["CurveWalk", "ZoomPanel", "zoom_figure"]
+
+
+class CurveWalk:
+    """Points of a curve by fraction of its arc length, for moving a window along it."""
+
+    def __init__(self, points: Any) -> None:
+        self.polyline = curve_polyline(as_curve(points), 1e-3)
+        pieces = np.hypot(*np.diff(self.polyline, axis=0).T)
+        self.lengths = np.concatenate([[0.0], np.cumsum(pieces)])
+
+    def at(self, fraction: float) -> np.ndarray:
+        """The (x, y) point ``fraction`` of the way along the curve (clipped to 0 to 1).
+
+        Examples
+        --------
+        >>> CurveWalk([[0, 0], [10, 0]]).at(0.25)
+        array([2.5, 0. ])
+        >>> CurveWalk([[0, 0], [10, 0]]).at(float("nan"))
+        Traceback (most recent call last):
+        ...
+        ValueError: fraction must be finite; got nan
+        """
+        fraction = as_scalar_parameter(fraction, "fraction")
+        s = min(max(fraction, 0.0), 1.0) * self.lengths[-1]
+        return np.array(
+            [np.interp(s, self.lengths, self.polyline[:, i]) for i in range(2)], dtype=float
+        )
+
+
+class ZoomPanel:
+    """One axes showing a zoomed crop: flat pixels, the pixel grid, the true curve.
+
+    Built once; :meth:`show` changes the picture, the grid and the view. The
+    title names the picture; the note, a line under it, carries what changes
+    as the window moves (an app keeps the title in its still background).
+    With ``app``, the pixels are written into the app's picture as they are,
+    at a whole zoom (as :class:`course.widgets.picture.PixelPanel` does), not
+    resampled by ``imshow``: the axes' width in picture pixels must then be
+    a whole multiple of every window size shown.
+    """
+
+    def __init__(self, axes: Axes, curve: np.ndarray, app: SliderApp | None = None) -> None:
+        if not isinstance(axes, Axes):
+            raise TypeError(
+                _("axes must be a matplotlib Axes; got {axes}").format(axes=describe(axes))
+            )
+        if app is not None and not isinstance(app, SliderApp):
+            raise TypeError(
+                _("app must be a SliderApp or None; got {app}").format(app=describe(app))
+            )
+        curve = as_curve(curve, "curve")  # the polyline drawn over the pixels
+        self.axes = axes
+        self.app = app
+        self.picture = axes.imshow(
+            np.zeros((2, 2)), cmap="gray", vmin=0.0, vmax=1.0, interpolation="nearest"
+        )
+        self.picture.set_visible(app is None)
+        self.grid = LineCollection([], colors="#3a6ea5", linewidths=0.5, alpha=0.6)
+        axes.add_collection(self.grid)
+        (self.curve,) = axes.plot(curve[:, 0], curve[:, 1], color="#e8502f", linewidth=1.0)
+        self.title = axes.set_title("", fontsize=9, pad=16 if app else 6)
+        self.note = axes.text(
+            0.5, 1.015, "", transform=axes.transAxes, ha="center", va="bottom", fontsize=9
+        )
+        axes.set_xticks([])
+        axes.set_yticks([])
+
+    def artists(self) -> list[Any]:
+        """What changes as the window moves: for an app that redraws only those."""
+        moving = [self.grid, self.curve, self.note]
+        return moving if self.app else [self.picture, *moving]
+
+    def show(self, image: np.ndarray, centre: Any, size: int, title: str) -> np.ndarray:
+        """Show the ``size`` x ``size`` crop of ``image`` around ``centre``; return it."""
+        window, extent = crop(image, centre, size)
+        return self.show_window(window, extent, title)
+
+    def show_window(
+        self, window: np.ndarray, extent: Any, title: str, note: str = ""
+    ) -> np.ndarray:
+        """Show ``window``, a crop with extent ``(left, right, bottom, top)``; return it.
+
+        The extent is in whole pixels and spans the window exactly: ``right - left``
+        columns and ``bottom - top`` rows.
+        """
+        window = as_float_array(window, "window")
+        if window.ndim != 2 or 0 in window.shape:
+            raise ValueError(
+                _("window must be a gray (H, W) crop; got shape {window_shape}").format(
+                    window_shape=window.shape
+                )
+            )
+        require_finite(window, "window")  # values past 1 are ink piled up, drawn as 1
+        if not isinstance(extent, (tuple, list)) or len(extent) != 4:
+            raise ValueError(
+                _("extent must be (left, right, bottom, top) in pixels; got {extent}").format(
+                    extent=describe(extent)
+                )
+            )
+        bound = limits.MAX_COORDINATE
+        x0, x1, y1, y0 = (as_int(v, f"extent[{i}]", maximum=bound) for i, v in enumerate(extent))
+        if (x1 - x0, y1 - y0) != (window.shape[1], window.shape[0]):
+            raise ValueError(
+                _(
+                    "extent must span the window's {window_columns} columns and {window_rows} "
+                    "rows; got {width} x {height}"
+                ).format(
+                    window_columns=window.shape[1],
+                    window_rows=window.shape[0],
+                    width=x1 - x0,
+                    height=y1 - y0,
+                )
+            )
+        if self.app is None:
+            self.picture.set_data(window)
+            self.picture.set_extent(extent)
+        else:
+            zoom = round(self.axes.get_window_extent().width) // window.shape[1]
+            gray = (np.clip(window, 0.0, 1.0) * 255).astype(np.uint8)  # as imshow maps gray
+            zoomed = np.repeat(np.repeat(gray, zoom, axis=0), zoom, axis=1)
+            self.app.pixel_images[self.axes] = np.repeat(zoomed[..., None], 3, axis=2)
+        columns = [[(x, y0), (x, y1)] for x in range(x0, x1 + 1)]
+        rows = [[(x0, y), (x1, y)] for y in range(y0, y1 + 1)]
+        self.grid.set_segments(columns + rows)
+        self.axes.set_xlim(x0, x1)
+        self.axes.set_ylim(y1, y0)  # y down, as in the image
+        self.title.set_text(title)
+        self.note.set_text(note)
+        return window
+
+
+def zoom_figure(
+    images: Mapping[str, np.ndarray],
+    points: Any,
+    centre: Any,
+    size: int = 16,
+    columns: int = 4,
+    panel_inches: float = 2.4,
+    figure: Figure | None = None,
+) -> Figure:
+    """A still grid of zoomed crops, one per named image, all around ``centre``.
+
+    Drawn into ``figure`` if given (e.g. ``pyplot.figure()`` in a notebook,
+    which then shows it), resized to fit; otherwise into a new Figure.
+
+    Examples
+    --------
+    >>> figure = zoom_figure({"a": np.zeros((20, 20))}, [[0, 0], [20, 20]], (10, 10), 8)
+    >>> len(figure.axes)
+    1
+    """
+    if not isinstance(images, Mapping) or not images:
+        raise TypeError(
+            _("images must map names to images; got {images}").format(images=describe(images))
+        )
+    images = {str(name): as_image(image, f"images[{name!r}]") for name, image in images.items()}
+    as_point(centre, "centre", dim=2, bound=limits.MAX_COORDINATE)
+    size = as_int(size, "size", minimum=1, maximum=1000)
+    columns = as_int(columns, "columns", minimum=1, maximum=100)
+    panel_inches = as_positive_float(panel_inches, "panel_inches", smallest=0.1, largest=20.0)
+    if figure is not None and not isinstance(figure, Figure):
+        raise TypeError(
+            _("figure must be a matplotlib Figure or None; got {figure}").format(
+                figure=describe(figure)
+            )
+        )
+    curve = CurveWalk(points).polyline
+    rows = -(-len(images) // columns)
+    inches = (panel_inches * columns, (panel_inches + 0.3) * rows)
+    if figure is None:
+        figure = Figure(figsize=inches, dpi=100)
+    else:
+        figure.set_size_inches(*inches)
+    for index, (name, image) in enumerate(images.items()):
+        panel = ZoomPanel(figure.add_subplot(rows, columns, index + 1), curve)
+        panel.show(image, centre, size, name)
+    figure.tight_layout()
+    return figure

@@ -1,0 +1,251 @@
+"""The known mistakes lesson 08's checkers name, each reproduced on the checker's cases.
+
+:func:`boundary_mistakes` are the wrong rings :func:`.check.poisson_boundary` names: the
+sign flipped, the background alone, x and y swapped. :func:`sweep_mistakes` are the
+wrong loops :func:`.check.jacobi_sweep` names: the sweep done in place (the lab's loop:
+Gauss-Seidel), the lab's fixed count of sweeps, a stop one sweep late, a stop on the
+change between sweeps, on the residual's mean, at a residual equal to the tolerance, on
+a quarter of the residual or on its first channel alone. Beside them,
+:func:`jacobi_until`, the sweep checker's own answer, which the "one sweep late" mistake
+runs a sweep longer. Both lists are built in the current language, at each check.
+
+Only the checkers call these, with their own cases and the student's answer as
+:mod:`.check` has read it, so this module checks none (``UNCHECKED = True``; the fuzz
+test skips it).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from course import poisson
+from course.check.base import Mistake
+from course.i18n import _
+from course.poisson.solvers import jacobi_sweeps, residual
+from course.poisson.windows import image_of, planes_of
+
+UNCHECKED = True  # see the module docstring
+
+__all__ = [
+    "BOUNDARY_MISTAKES",
+    "SWEEP_MISTAKES",
+    "boundary_mistakes",
+    "first_channel",
+    "fixed_count",
+    "gauss_seidel_until",
+    "jacobi_until",
+    "swapped_offset",
+    "sweep_mistakes",
+    "until_change",
+    "until_residual_measure",
+]
+
+
+def swapped_offset(background: Any, foreground: Any, offset: Any) -> np.ndarray:
+    """The lab's ring with the background read at ``(offset[1], offset[0])``."""
+    return poisson.correction_boundary(background, foreground, (offset[1], offset[0]))
+
+
+def boundary_mistakes() -> tuple[Mistake, ...]:
+    """The known mistakes, in the current language."""
+    return (
+        Mistake(
+            _("the sign flipped"),
+            _(
+                "your ring holds foreground - background. The report's formula is right: "
+                "g = background - foreground, so that foreground + g is the background on the ring."
+            ),
+            lambda background, foreground, offset: (
+                -poisson.correction_boundary(background, foreground, offset)
+            ),
+        ),
+        Mistake(
+            _("the background alone"),
+            _(
+                "your ring holds the background, without subtracting the foreground: the result "
+                "foreground + g is then the background plus the foreground on the ring."
+            ),
+            lambda background, foreground, offset: poisson.correction_boundary(
+                background, np.zeros_like(foreground), offset
+            ),
+        ),
+        Mistake(
+            _("x and y swapped"),
+            _(
+                "you read the background at (offset[1], offset[0]): offset is (x, y), the column "
+                "first, and background[y, x] is row y."
+            ),
+            swapped_offset,
+        ),
+    )
+
+
+BOUNDARY_MISTAKES = boundary_mistakes()
+
+
+def jacobi_until(g: Any, tolerance: float, late: int = 0) -> tuple[np.ndarray, int]:
+    """Jacobi sweeps on ``g``'s inside until the residual is below ``tolerance``, then
+    ``late`` more (a loop that tests after it sweeps)."""
+    image = np.asarray(g, dtype=float)
+    planes = planes_of(image)
+    region = np.zeros(planes.shape[1:], dtype=bool)
+    region[1:-1, 1:-1] = True
+    source = np.zeros_like(planes)
+    count, u = 0, planes
+    sweeps = jacobi_sweeps(planes, region, source)
+    while residual(u, region, source) >= tolerance:
+        u, count = next(sweeps), count + 1
+    for _late in range(late):
+        u, count = next(sweeps), count + 1
+    return image_of(u, image), count
+
+
+def gauss_seidel_until(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
+    """The lab's loop, which writes g in place: Gauss-Seidel."""
+    u = np.array(g, dtype=float)
+    height, width = u.shape[:2]
+    count = 0
+    while True:
+        inner = u[:-2, 1:-1] + u[2:, 1:-1] + u[1:-1, :-2] + u[1:-1, 2:] - 4 * u[1:-1, 1:-1]
+        if np.abs(inner).max() < tolerance:
+            return u, count
+        for y in range(1, height - 1):
+            for x in range(1, width - 1):
+                u[y, x] = (u[y - 1, x] + u[y + 1, x] + u[y, x - 1] + u[y, x + 1]) * 0.25
+        count += 1
+
+
+def until_change(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
+    """Jacobi sweeps until the largest change of one sweep is below ``tolerance``."""
+    u = np.array(g, dtype=float)
+    count = 0
+    while True:
+        new = u.copy()
+        new[1:-1, 1:-1] = (u[:-2, 1:-1] + u[2:, 1:-1] + u[1:-1, :-2] + u[1:-1, 2:]) / 4
+        count += 1
+        if u.size == 0 or np.abs(new - u).max() < tolerance:
+            return new, count
+        u = new
+
+
+def until_residual_measure(
+    g: Any, tolerance: float, measure: Callable[[np.ndarray], float]
+) -> tuple[np.ndarray, int]:
+    """Jacobi sweeps until ``measure(|residual|)`` (over the inside, every channel) is below
+    ``tolerance``: the residual's mean, a quarter of its max, or its first channel's."""
+    u = np.array(g, dtype=float)
+    count = 0
+    while True:
+        neighbours = u[:-2, 1:-1] + u[2:, 1:-1] + u[1:-1, :-2] + u[1:-1, 2:]
+        if neighbours.size == 0 or measure(np.abs(neighbours - 4 * u[1:-1, 1:-1])) < tolerance:
+            return u, count
+        u = u.copy()
+        u[1:-1, 1:-1] = neighbours / 4
+        count += 1
+
+
+def first_channel(size: np.ndarray) -> float:
+    """The largest of ``size`` in channel 0 alone (all of it, for a gray ``g``)."""
+    return float((size[..., 0] if size.ndim == 3 else size).max())
+
+
+def fixed_count(expected: Any, given: Any) -> bool:
+    """A sweep count far past what the tolerance needs: the lab's fixed loop of 8000."""
+    try:
+        _, sweeps = given
+        return int(sweeps) >= 1000 and int(sweeps) != int(expected[1])
+    except (TypeError, ValueError):
+        return False
+
+
+def sweep_mistakes() -> tuple[Mistake, ...]:
+    """The known mistakes, in the current language."""
+    return (
+        Mistake(
+            _("in place: Gauss-Seidel"),
+            _(
+                "your sweep writes g as it goes, so each pixel already sees its new upper and left "
+                "neighbours: that is Gauss-Seidel, and so is the lab's loop, whatever its comment "
+                "says. Jacobi computes every new value from the old array (a copy, or all four "
+                "shifted slices at once)."
+            ),
+            gauss_seidel_until,
+        ),
+        Mistake(
+            _("a fixed number of sweeps"),
+            _(
+                "you ran a fixed count of sweeps, as the lab's loop runs 8000: the exercise "
+                "stops as soon as the residual is below the tolerance, and returns how many "
+                "sweeps that took."
+            ),
+            lambda g, tolerance: (np.asarray(g, dtype=float), 0),
+            matches=fixed_count,
+        ),
+        # Before the stop on the change: on an array already harmonic both give one sweep, and
+        # only a loop that sweeps before it tests fails nothing else.
+        Mistake(
+            _("one sweep late"),
+            _(
+                "you sweep before you test: the loop must stop as soon as the residual is below "
+                "the tolerance, so an array already within it gets no sweep at all."
+            ),
+            lambda g, tolerance: jacobi_until(g, tolerance, late=1),
+        ),
+        Mistake(
+            _("a stop on the change between sweeps"),
+            _(
+                "you stopped when one sweep changed g by less than the tolerance: that change is "
+                "a quarter of the residual, so your loop stops while the residual is still up to "
+                "four times the tolerance. Test the residual, max |up + down + left + right - 4 "
+                "g| over the inside, before each sweep."
+            ),
+            until_change,
+        ),
+        Mistake(
+            _("the mean of the residual instead of its largest value"),
+            _(
+                "you compared the mean of |up + down + left + right - 4 g| over the inside with "
+                "the tolerance: the exercise compares its largest value, so the loop goes on "
+                "while any one pixel is still far from the mean of its neighbours."
+            ),
+            lambda g, tolerance: until_residual_measure(g, tolerance, np.mean),
+        ),
+        # Before the quarter: on the residual equal to the tolerance (case 5) both stop at once.
+        Mistake(
+            _("a stop at a residual equal to the tolerance"),
+            _(
+                "your loop stops when the residual is at or below the tolerance (<=): it stops "
+                "only below it (<), so a residual equal to the tolerance still gets a sweep."
+            ),
+            lambda g, tolerance: until_residual_measure(
+                g, tolerance, lambda size: float(np.nextafter(size.max(), -np.inf))
+            ),
+        ),
+        Mistake(
+            _("a quarter of the residual"),
+            _(
+                "you compared the residual divided by 4 (the mean of the four neighbours minus "
+                "g, which is the change the next sweep makes) with the tolerance: your loop "
+                "stops while the residual is still up to four times the tolerance. Compare the "
+                "residual itself, max |up + down + left + right - 4 g|."
+            ),
+            lambda g, tolerance: until_residual_measure(
+                g, tolerance, lambda size: float(size.max()) / 4
+            ),
+        ),
+        Mistake(
+            _("the residual of the first channel only"),
+            _(
+                "your residual looks at channel 0 only: on an RGB g the loop goes on until the "
+                "residual of every channel is below the tolerance, the largest value over the "
+                "inside and all three channels."
+            ),
+            lambda g, tolerance: until_residual_measure(g, tolerance, first_channel),
+        ),
+    )
+
+
+SWEEP_MISTAKES = sweep_mistakes()

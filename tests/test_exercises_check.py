@@ -91,6 +91,25 @@ def test_every_checker_that_runs_cases_is_declared():
 
 
 @pytest.mark.parametrize("declaration", ALL, ids=lambda d: d.name)
+def test_each_checker_is_public_and_names_the_handouts_mistakes(declaration):
+    """In its module's __all__ (the fuzz test and the docs find it), and with mistakes to name."""
+    module = importlib.import_module(declaration.module)
+    assert declaration.name in module.__all__, (
+        f"{declaration.module}: add {declaration.name!r} to __all__"
+    )
+    tree = ast.parse(inspect.getsource(declaration.checker))
+    calls = [
+        call
+        for call in ast.walk(tree)
+        if isinstance(call, ast.Call) and getattr(call.func, "id", None) == "run_cases"
+    ]
+    assert any(keyword.arg == "mistakes" for call in calls for keyword in call.keywords), (
+        f"{declaration.name}: its run_cases names no mistakes=: the handouts' known mistakes, "
+        "reproduced, are how a report says which one the student made"
+    )
+
+
+@pytest.mark.parametrize("declaration", ALL, ids=lambda d: d.name)
 def test_each_name_of_an_exercise_finds_its_hints(declaration):
     for name in {declaration.name, declaration.function, declaration.reported_as}:
         assert declared(name) is declaration
@@ -125,6 +144,8 @@ def test_a_declaration_that_leaves_out_its_hints_or_refusals_fails_by_name():
         exercise(refuses=(abs,))  # type: ignore[call-arg]
     with pytest.raises(TypeError, match="refuses"):
         exercise(hints=Hints("a", "b", "c"))  # type: ignore[call-arg]
+    with pytest.raises(ValueError, match="hints: every step says something; recipe is empty"):
+        exercise(hints=Hints("a", "b", " "), refuses=(abs,))
     with pytest.raises(ValueError, match="refuses must name at least one"):
         exercise(hints=Hints("a", "b", "c"), refuses=())
     with pytest.raises(LookupError, match="not a declared exercise"):

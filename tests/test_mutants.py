@@ -1,6 +1,6 @@
 """Every exercise's checker fails the single slips of its reference solution, but the listed ones.
 
-tests/mutation.py makes every single-slip mutant of the 17 reference solutions
+tests/mutation.py makes every single-slip mutant of the reference solutions
 (an operator, a comparison, an integer constant plus or minus one, ``and``/``or``,
 a unary minus, a dropped line, an index off by one) and checks each in a process
 of its own under a hard timeout. :data:`SURVIVORS` lists every mutant that

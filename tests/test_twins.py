@@ -205,12 +205,17 @@ def test_a_committed_twin_has_the_english_code_and_no_untranslated_cell(twin_pat
     twin = json.loads(twin_path.read_text(encoding="utf-8"))
     english = json.loads((NOTEBOOKS / twin_path.name).read_text(encoding="utf-8"))
     english_code = [twins.cell_source(c) for c in english["cells"] if c["cell_type"] == "code"]
-    assert twins.english_code(twin) == english_code
-    _, report = twins.build_twin(
-        NOTEBOOKS / twin_path.name, twins.read_catalog(twin_path.with_suffix(".po"))
+    assert twins.english_code(twin) == english_code, (
+        f"{twin_path.name}: the twin's code differs from the English lesson's: run "
+        "python -m course twins (make notebooks executes it)"
     )
-    assert report.untranslated == []
-    assert report.problems == []
+    po_path = twin_path.with_suffix(".po")
+    _, report = twins.build_twin(NOTEBOOKS / twin_path.name, twins.read_catalog(po_path))
+    assert report.untranslated == [], (
+        f"{po_path.name}: markdown cells without a translation, by id: {report.untranslated}; "
+        "python -m course twins --update-po adds them, then translate them there"
+    )
+    assert report.problems == [], f"{po_path.name}: {report.problems}"
 
 
 def test_the_handout_keys_anchor_may_be_the_translated_headings_and_formulas_may_wrap():

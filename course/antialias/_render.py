@@ -21,14 +21,19 @@ from matplotlib.path import Path
 from matplotlib.transforms import Affine2D
 
 from course import limits
-from course._validate import as_points, describe, require_bounded_evaluation
+from course._validate import (
+    as_points,
+    describe,
+    require_bounded_evaluation,
+    require_step_samples,
+)
 from course.antialias._splats import arc_length_weights, splat_points
 from course.antialias.near_pixels import first_of_runs, pixels_near
 from course.antialias.splats import PIXELS_PER_SAMPLE
 from course.antialias.stroke import stroke_coverage
 from course.curves._bezier_fast import bernstein_horner, de_casteljau_chunked
-from course.curves.drawable_paths import flatten_uniform, matplotlib_path
-from course.curves.flattening import uniform_parameters
+from course.curves._uniform import uniform_polyline, uniform_steps
+from course.curves.drawable_paths import matplotlib_path
 from course.curves.paths import Curves
 from course.i18n import _
 from course.raster._paint import painted_canvas
@@ -71,10 +76,10 @@ def render_path(
     """:func:`course.antialias.render` of checked arguments: the path drawn on a new canvas."""
     if method == "stroke_area":
         # The fast path: the exact coverage straight into a new canvas.
-        line, gaps = flatten_uniform(path, STROKE_TOLERANCE)
+        line, gaps = uniform_polyline(path, STROKE_TOLERANCE)
         return stroke_coverage(line, gaps, 0.5 * width, canvas)
     if method == "stroke_linear":
-        line, gaps = checked_line(*flatten_uniform(path, STROKE_TOLERANCE))
+        line, gaps = checked_line(*uniform_polyline(path, STROKE_TOLERANCE))
         pixels, weights = stroke_linear_coverage(line, gaps, width, canvas, (0, 0))
         # Each pixel comes once: "max" writes it without a saturating sum.
         return painted_white(canvas, pixels, weights, mode="max")
@@ -89,7 +94,9 @@ def render_path(
     _require_few_samples(steps, step is not None)
     all_pixels, all_weights = [], []
     for control, own_step in zip(controls, steps, strict=True):
-        samples = checked_samples(evaluate(control, uniform_parameters(own_step)))
+        if np.floor(1 / own_step * (1 + 1e-12)) + 2 > limits.MAX_STEP_SAMPLES:
+            require_step_samples(own_step, "step")  # one curve's samples, refused as before
+        samples = checked_samples(evaluate(control, uniform_steps(own_step, "exact")))
         pixels, weights = splat_points(samples, method)
         if weighting == "arc_length":
             spread = np.repeat(arc_length_weights(samples) * width, PIXELS_PER_SAMPLE[method])

@@ -37,6 +37,7 @@ from course.antialias._polyline import flattened
 from course.antialias._reference import reference_coverage
 from course.antialias._render import agg_coverage, render_path
 from course.antialias.near_pixels import first_of_runs, pixels_near
+from course.curves._frozen import made
 from course.curves.paths import Curves
 from course.i18n import _
 from course.raster.canvas import crop_extent
@@ -323,7 +324,7 @@ def render_variant(name: str, points: Any, shape: Any, width: float = 1.0) -> np
 
 def _curve_path(control: np.ndarray) -> Curves:
     """A checked curve as the one curve of a path, as course.curves.paths.as_path makes it."""
-    return Curves(control, np.array([len(control)]))
+    return made(Curves, points=control, sizes=np.array([len(control)]))
 
 
 def _render_variant(name: str, path: Curves, canvas: tuple[int, int], width: float) -> np.ndarray:

@@ -42,6 +42,7 @@ from course._validate import (
     as_points,
     as_positive_float,
     as_shape,
+    require_step_samples,
 )
 from course.antialias._render import (
     DEFAULT_STEP,
@@ -68,7 +69,7 @@ from course.antialias.splats import (
     subsample_falloff,
 )
 from course.antialias.stroke import stroke_coverage
-from course.curves.flattening import uniform_parameters
+from course.curves._uniform import uniform_steps
 from course.curves.paths import as_path, text_curves
 from course.i18n import _
 
@@ -350,7 +351,10 @@ def curve_samples(points: Any, step: float) -> np.ndarray:
            [2., 2.],
            [4., 0.]])
     """
-    return evaluate(as_curve(points), uniform_parameters(step))
+    control = as_curve(points)
+    step = as_positive_float(step, "step")
+    require_step_samples(step, "step")
+    return evaluate(control, uniform_steps(step, "exact"))
 
 
 def arc_length_step(points: Any) -> float:

@@ -116,6 +116,11 @@ def exercise(
         raise TypeError(
             _("hints must be a Hints; got {hints_type}").format(hints_type=type(hints).__name__)
         )
+    blank = [step for step in ("where", "more", "recipe") if not str(getattr(hints, step)).strip()]
+    if blank:
+        raise ValueError(
+            _("hints: every step says something; {steps} is empty").format(steps=", ".join(blank))
+        )
     if isinstance(refuses, (str, bytes)) or not (
         isinstance(refuses, Sequence) or callable(refuses)
     ):

@@ -22,9 +22,16 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import as_int, as_parameter, as_points, as_scalar_parameter
-from course.curves.bezier import de_casteljau
-from course.curves.flattening import flatten, uniform_parameters
+from course._validate import (
+    as_int,
+    as_parameter,
+    as_points,
+    as_scalar_parameter,
+    require_bounded_flattening,
+)
+from course.curves._bezier_fast import de_casteljau_chunked
+from course.curves._flatten import flatten_curve
+from course.curves.flattening import uniform_parameters
 from course.i18n import _
 from course.raster import line, nearest_pixels
 
@@ -274,7 +281,7 @@ def step_report(points: Any, step: float, accumulate: str = "exact") -> dict[str
     (5, 5, 4)
     """
     t = uniform_parameters(step, accumulate)
-    samples = de_casteljau(points, t)
+    samples = de_casteljau_chunked(as_points(points), t)
     pixels = nearest_pixels(samples)
     jumps = np.abs(np.diff(pixels, axis=0)).max(axis=1) if len(pixels) > 1 else np.zeros(0)
     # One integer per pixel: np.unique on rows sorts structured records, ten times slower.
@@ -312,6 +319,12 @@ def bresenham_curve(points: Any, segments: int) -> np.ndarray:
     >>> bresenham_curve([[0.5, 0.5], [4.5, 0.5], [4.5, 4.5]], 2).tolist()
     [[0, 0], [1, 0], [2, 1], [3, 1], [3, 1], [3, 2], [4, 3], [4, 4]]
     """
+    control = _as_image_curve(points)
+    return _bresenham_curve(control, _as_segments(segments))
+
+
+def _as_image_curve(points: Any) -> np.ndarray:
+    """The control points of a curve in image space, (N, 2), checked."""
     control = as_points(points, bound=limits.MAX_COORDINATE)
     if control.shape[1] != 2:
         raise ValueError(
@@ -319,6 +332,10 @@ def bresenham_curve(points: Any, segments: int) -> np.ndarray:
                 control_shape=control.shape
             )
         )
+    return control
+
+
+def _as_segments(segments: Any) -> int:
     segments = as_int(segments, "segments", minimum=1)
     if segments > MAX_SEGMENTS:
         raise ValueError(
@@ -326,7 +343,13 @@ def bresenham_curve(points: Any, segments: int) -> np.ndarray:
                 most=MAX_SEGMENTS, segments=segments
             )
         )
-    ends = nearest_pixels(de_casteljau(control, np.linspace(0.0, 1.0, segments + 1)))
+    return segments
+
+
+def _bresenham_curve(control: np.ndarray, segments: int) -> np.ndarray:
+    """:func:`bresenham_curve` of a checked curve and count of segments."""
+    t = np.linspace(0.0, 1.0, segments + 1)
+    ends = nearest_pixels(de_casteljau_chunked(control, t))
     return np.concatenate([line(a, b) for a, b in itertools.pairwise(ends)])
 
 
@@ -344,14 +367,13 @@ def curve_pixels(points: Any) -> np.ndarray:
     >>> curve_pixels([[0.5, 0.5], [4.5, 0.5]]).tolist()
     [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0]]
     """
-    control = as_points(points, bound=limits.MAX_COORDINATE)
-    if control.shape[1] != 2:
-        raise ValueError(
-            _("points must have shape (N, 2) for image space; got {control_shape}").format(
-                control_shape=control.shape
-            )
-        )
-    pixels = nearest_pixels(flatten(control, 0.01, max_step=0.5))
+    return _curve_pixels(_as_image_curve(points))
+
+
+def _curve_pixels(control: np.ndarray) -> np.ndarray:
+    """:func:`curve_pixels` of a checked curve; what flattening it costs is checked here."""
+    require_bounded_flattening(control, 0.01, 0.5)
+    pixels = nearest_pixels(flatten_curve(control, 0.01, 0.5)[0])
     keep = np.ones(len(pixels), dtype=bool)
     keep[1:] = (np.diff(pixels, axis=0) != 0).any(axis=1)
     pixels = pixels[keep]
@@ -381,9 +403,10 @@ def segments_report(points: Any, segments: int) -> dict[str, Any]:
     >>> [segments_report(turn, n)[key] for n in (1, 8) for key in ("off", "missed", "twice")]
     [9, 14, 0, 1, 0, 7]
     """
-    drawn = bresenham_curve(points, segments)
+    control = _as_image_curve(points)
+    drawn = _bresenham_curve(control, _as_segments(segments))
     painted, counts = np.unique(drawn, axis=0, return_counts=True)
-    curve = curve_pixels(points)
+    curve = _curve_pixels(control)
     low = np.minimum(painted.min(axis=0), curve.min(axis=0)) - 1
     high = np.maximum(painted.max(axis=0), curve.max(axis=0)) + 2
     grid = np.zeros((high - low)[::-1], dtype=bool)  # rows y, columns x

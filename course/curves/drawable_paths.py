@@ -24,10 +24,9 @@ from course._validate import (
     as_float_array,
     as_positive_float,
     describe,
-    require_bounded_evaluation,
     require_finite,
 )
-from course.curves.bezier import de_casteljau
+from course.curves._uniform import assemble, uniform_polyline, wang_segment_counts
 from course.curves.paths import Curves
 from course.i18n import _
 
@@ -95,12 +94,7 @@ def wang_counts(control: np.ndarray, tolerance: float) -> np.ndarray:
         )
     require_finite(control, "control")
     tolerance = as_positive_float(tolerance, "tolerance")
-    degree = control.shape[1] - 1
-    if degree < 2:
-        return np.ones(len(control), dtype=np.int64)
-    second = control[:, :-2] - 2 * control[:, 1:-1] + control[:, 2:]
-    bound = degree * (degree - 1) * np.hypot(second[..., 0], second[..., 1]).max(axis=1)
-    return np.maximum(1, np.ceil(np.sqrt(bound / (8 * tolerance)))).astype(np.int64)
+    return wang_segment_counts(control, tolerance)
 
 
 def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.ndarray]:
@@ -112,54 +106,7 @@ def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.nd
     """
     curves = _as_curves(curves)
     tolerance = as_positive_float(tolerance, "tolerance")
-    counts = np.zeros(len(curves.sizes), dtype=np.int64)
-    pieces: dict[int, tuple[np.ndarray, np.ndarray]] = {}
-    for size in np.unique(curves.sizes).tolist():
-        which = np.flatnonzero(curves.sizes == size)
-        control = curves.points[curves.starts[which][:, None] + np.arange(size)]
-        count = (
-            np.zeros(len(which), dtype=np.int64) if size == 1 else wang_counts(control, tolerance)
-        )
-        require_bounded_evaluation(size, int(count.sum()) + len(count), "curves")
-        if count.sum() > limits.MAX_SAMPLES:
-            raise ValueError(
-                _(
-                    "tolerance {tolerance:g} would need {total} vertices, more than the {most} "
-                    "allowed: raise it"
-                ).format(tolerance=tolerance, total=count.sum(), most=limits.MAX_SAMPLES)
-            )
-        counts[which] = count
-        pieces[size] = (which, _uniform_points(control, count))
-    return _assemble(curves, counts + 1, pieces)
-
-
-def _uniform_points(control: np.ndarray, count: np.ndarray) -> np.ndarray:
-    """The points at t = 0, 1/count, ..., 1 of each curve, one after another."""
-    curve = np.repeat(np.arange(len(count)), count + 1)
-    step = np.arange(len(curve)) - np.repeat(np.cumsum(count + 1) - count - 1, count + 1)
-    t = (step / np.maximum(count, 1)[curve])[:, None]
-    degree = control.shape[1] - 1
-    if degree > 3:
-        return np.concatenate(
-            [
-                de_casteljau(c, np.linspace(0.0, 1.0, n + 1))
-                for c, n in zip(control, count, strict=True)
-            ]
-        )
-    s = 1.0 - t
-    weights = {
-        0: [np.ones_like(t)],
-        1: [s, t],
-        2: [s * s, 2 * s * t, t * t],
-        3: [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t],
-    }[degree]
-    points = sum(w * control[curve, i] for i, w in enumerate(weights))
-    # t = 0 and t = 1 give the end points themselves, so joins stay exact.
-    ends = step == count[curve]
-    starts = step == 0
-    points[starts] = control[curve[starts], 0]
-    points[ends] = control[curve[ends], -1]
-    return points
+    return uniform_polyline(curves, tolerance)
 
 
 def flatten_each(
@@ -177,7 +124,7 @@ def flatten_each(
     counts = np.array([len(part) for part in parts], dtype=np.int64)
     order = np.arange(len(parts))
     stacked = np.concatenate(parts) if parts else np.zeros((0, 2))
-    return _assemble(curves, counts, {0: (order, stacked)})
+    return assemble(curves, counts, {0: (order, stacked)})
 
 
 def _vertices_of(part: Any, control: np.ndarray) -> np.ndarray:
@@ -207,28 +154,6 @@ def _vertices_of(part: Any, control: np.ndarray) -> np.ndarray:
             ).format(most=limits.MAX_COORDINATE, control=control.tolist(), worst=worst)
         )
     return array
-
-
-def _assemble(
-    curves: Curves, counts: np.ndarray, pieces: dict[int, tuple[np.ndarray, np.ndarray]]
-) -> tuple[np.ndarray, np.ndarray]:
-    """One polyline from each curve's points (given by groups), and its gap segments."""
-    if len(counts) == 0:
-        return np.zeros((0, 2)), np.zeros(0, dtype=bool)
-    joined = curves.joined()
-    kept = counts - joined  # a joined curve's first point is the previous curve's last
-    offset = np.cumsum(kept) - kept
-    line = np.empty((int(kept.sum()), 2))
-    for which, points in pieces.values():
-        count = counts[which]
-        local = np.arange(len(points)) - np.repeat(np.cumsum(count) - count, count)
-        curve = np.repeat(which, count)
-        keep = local >= joined[curve].astype(np.int64)
-        line[(offset[curve] + local - joined[curve])[keep]] = points[keep]
-    gaps = np.zeros(max(len(line) - 1, 0), dtype=bool)
-    new_subpath = np.flatnonzero(~joined[1:]) + 1
-    gaps[offset[new_subpath] - 1] = True
-    return line, gaps
 
 
 def _as_curves(curves: Any) -> Curves:

@@ -27,6 +27,7 @@ from course._validate import (
     require_step_samples,
 )
 from course.curves._flatten import flatten_curve
+from course.curves._uniform import uniform_steps
 
 __all__ = ["flatten", "uniform_parameters"]
 
@@ -59,16 +60,7 @@ def uniform_parameters(step: float, accumulate: str = "exact") -> np.ndarray:
     step = as_positive_float(step, "step")
     accumulate = as_choice(accumulate, "accumulate", _ACCUMULATE)
     require_step_samples(step, "step")
-    if step > 1:
-        return np.zeros(1)
-    if accumulate == "exact":
-        count = int(np.floor(1 / step * (1 + 1e-12)))
-        return np.arange(count + 1) * step
-    dtype = np.float32 if accumulate == "float32" else np.float64
-    steps = np.full(int(np.ceil(1 / step)) + 2, step, dtype=dtype)
-    # cumsum adds sequentially in the given dtype, exactly like the C++ loop.
-    t = np.concatenate([np.zeros(1, dtype), np.cumsum(steps, dtype=dtype)])
-    return t[t <= 1].astype(float)
+    return uniform_steps(step, accumulate)
 
 
 # --- adaptive flattening -----------------------------------------------------

@@ -38,6 +38,7 @@ from course._validate import (
     require_finite,
     require_within,
 )
+from course.curves._frozen import made
 from course.i18n import _
 
 __all__ = [
@@ -154,7 +155,22 @@ class Curves:
                     shift=shift.tolist(), most=limits.MAX_COORDINATE
                 )
             )
-        return Curves(points, self.sizes)
+        return _trusted(points, self.sizes)
+
+
+def _trusted(points: np.ndarray, sizes: np.ndarray) -> Curves:
+    """Curves of fields their maker built from checked input, without checking them again.
+
+    ``points`` finite floats (P, 2) within ``limits.MAX_COORDINATE``, ``sizes`` integers
+    >= 1 that add up to P: what :meth:`Curves.__post_init__` checks.
+    """
+    return made(Curves, points=points, sizes=sizes)
+
+
+def _bounded(points: np.ndarray, sizes: np.ndarray) -> Curves:
+    """:func:`_trusted` for finite points whose coordinates are not bounded yet."""
+    require_within(points, "points", limits.MAX_COORDINATE)
+    return _trusted(points, sizes)
 
 
 def as_path(points: Any, name: str = "points") -> Curves:
@@ -177,7 +193,7 @@ def as_path(points: Any, name: str = "points") -> Curves:
     if _is_curve_list(points):
         return _curve_list(points, name)
     control = as_curve(points, name)
-    return Curves(control, np.array([len(control)]))
+    return _trusted(control, np.array([len(control)]))
 
 
 def _is_curve_list(points: Any) -> bool:
@@ -223,7 +239,7 @@ def _curve_list(curves: Any, name: str) -> Curves:
     if bad.any():
         curve = int(np.searchsorted(np.cumsum(sizes), np.flatnonzero(bad)[0], side="right"))
         as_curve(curves[curve], f"{name}[{curve}]")  # raises, naming the entry
-    return Curves(points, sizes)
+    return _bounded(points, sizes)
 
 
 def curves_of_path(path: Path, height: float | None = None, name: str = "points") -> Curves:
@@ -249,6 +265,11 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
         )
     if height is not None:
         height = as_positive_float(height, "height", allow_zero=True)
+    return _curves_of_path(path, height, name)
+
+
+def _curves_of_path(path: Path, height: float | None, name: str) -> Curves:
+    """:func:`curves_of_path` of a checked ``path`` and ``height``: checks its vertices."""
     vertices = as_float_array(path.vertices, f"{name}.vertices")
     if vertices.ndim != 2 or vertices.shape[1] != 2:
         raise ValueError(
@@ -272,7 +293,7 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
     if len(stop):
         vertices, codes = vertices[: stop[0]], codes[: stop[0]]
     if len(codes) == 0:
-        return Curves(np.zeros((0, 2)), np.zeros(0, dtype=np.int64))
+        return _trusted(np.zeros((0, 2)), np.zeros(0, dtype=np.int64))
     known = np.isin(codes, [Path.MOVETO, Path.LINETO, Path.CURVE3, Path.CURVE4, Path.CLOSEPOLY])
     if not known.all():
         index = int(np.flatnonzero(~known)[0])
@@ -287,9 +308,8 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
                 name=name, codes=codes[0]
             )
         )
-    require_finite(vertices[codes != Path.CLOSEPOLY], f"{name}.vertices")
     # CLOSEPOLY's vertex is ignored, whatever it holds (often 0 or NaN).
-    require_finite(np.where((codes == Path.CLOSEPOLY)[:, None], 0.0, vertices), f"{name}.vertices")
+    require_finite(vertices[codes != Path.CLOSEPOLY], f"{name}.vertices")
     if height is not None:
         vertices[:, 1] = height - vertices[:, 1]
     index = np.arange(len(codes))
@@ -334,7 +354,8 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
     gather = np.where(offsets == 0, current[command_of], at[command_of] + offsets - 1)
     closing_end = closing[command_of] & (offsets == 1)
     gather = np.where(closing_end, subpath_start[at][command_of], gather)
-    return Curves(vertices[gather], sizes)
+    # Finite: no vertex a close holds is gathered, and height is at most limits.LARGEST.
+    return _bounded(vertices[gather], sizes)
 
 
 # --- paths for the lessons ----------------------------------------------------------
@@ -360,7 +381,7 @@ def path_curves(path: Any, height: float) -> list[np.ndarray]:
             _("path must be a matplotlib.path.Path; got {path}").format(path=describe(path))
         )
     height = as_positive_float(height, "height", allow_zero=True)
-    return curves_of_path(path, height=height, name="path").split()
+    return _curves_of_path(path, height, "path").split()
 
 
 def text_curves(
@@ -404,7 +425,7 @@ def text_curves(
             )
         )
     outline = TextPath((0.0, 0.0), text, size=size, prop=FontProperties(family=family))
-    curves = curves_of_path(outline, height=0.0, name="text")
+    curves = _curves_of_path(outline, 0.0, "text")
     if len(curves.sizes) == 0:
         raise ValueError(
             _("text must hold some ink; {text} has no outline").format(text=repr(text))

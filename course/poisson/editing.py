@@ -40,18 +40,16 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import as_choice, as_image, as_int
-from course.poisson.inputs import clone_inputs
+from course._validate import as_choice, as_int
+from course.poisson._build import clone_problem_of, inpaint_problem_of, paste
+from course.poisson.inputs import clone_inputs, inpaint_inputs
 from course.poisson.methods import LAB_ITERATIONS, solve
 from course.poisson.problem import (
     GUIDANCE,
     PoissonProblem,
-    build_clone_problem,
     clone_problem,
     inpaint_problem,
-    paste_window,
 )
-from course.poisson.windows import window_in
 
 __all__ = [
     "GUIDANCE",
@@ -136,11 +134,11 @@ def seamless_clone(
     """
     background, foreground, corner, mask = clone_inputs(background, foreground, offset, mask)
     guidance = as_choice(guidance, "guidance", GUIDANCE)
-    problem = build_clone_problem(background, foreground, corner, mask, guidance)
+    problem = clone_problem_of(PoissonProblem, background, foreground, corner, mask, guidance)
     solution = solve(problem, method, iterations, tolerance, omega)
     if clip:
         solution = np.clip(solution, 0.0, 1.0)
-    return paste_window(problem, background, solution)
+    return paste(problem, background, solution)
 
 
 def inpaint(
@@ -181,9 +179,10 @@ def inpaint(
     >>> inpaint(image, hole)[1]   # the centre becomes (1 + 0 + 0.25 + 0.75) / 4
     array([0.25, 0.5 , 0.75])
     """
-    problem = inpaint_problem(image, mask)
+    image, mask = inpaint_inputs(image, mask)
+    problem = inpaint_problem_of(PoissonProblem, image, mask)
     solution = solve(problem, method, iterations, tolerance, omega)
-    return paste_window(problem, as_image(image), solution)
+    return paste(problem, image, solution)
 
 
 def naive_paste(background: Any, foreground: Any, offset: Any, mask: Any = None) -> np.ndarray:
@@ -201,9 +200,11 @@ def naive_paste(background: Any, foreground: Any, offset: Any, mask: Any = None)
            [0., 0., 0., 0.]])
     """
     background, foreground, corner, mask = clone_inputs(background, foreground, offset, mask)
-    problem = build_clone_problem(background, foreground, corner, mask, "plain")
-    window = window_in(problem, foreground, corner)
-    return paste_window(problem, background, window)
+    problem = clone_problem_of(PoissonProblem, background, foreground, corner, mask, "plain")
+    # The problem's window of the foreground, which the checks put inside it.
+    x, y = problem.corner[0] - corner[0], problem.corner[1] - corner[1]
+    height, width = problem.region.shape
+    return paste(problem, background, foreground[y : y + height, x : x + width])
 
 
 def correction_boundary(background: Any, foreground: Any, offset: Any) -> np.ndarray:
@@ -219,7 +220,15 @@ def correction_boundary(background: Any, foreground: Any, offset: Any) -> np.nda
            [0.75, 0.  , 0.75],
            [0.75, 0.75, 0.75]])
     """
-    background, foreground, (x, y), _ = clone_inputs(background, foreground, offset, None)
+    background, foreground, corner, _ = clone_inputs(background, foreground, offset, None)
+    return _correction_boundary(background, foreground, corner)
+
+
+def _correction_boundary(
+    background: np.ndarray, foreground: np.ndarray, corner: tuple[int, int]
+) -> np.ndarray:
+    """:func:`correction_boundary` on inputs that :func:`clone_inputs` checked."""
+    x, y = corner
     height, width = foreground.shape[:2]
     g = np.zeros_like(foreground)
     window = background[y : y + height, x : x + width]
@@ -248,7 +257,7 @@ def lab_clone(
     """
     background, foreground, (x0, y0), _ = clone_inputs(background, foreground, offset, None)
     iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
-    g = correction_boundary(background, foreground, (x0, y0))
+    g = _correction_boundary(background, foreground, (x0, y0))
     height, width = foreground.shape[:2]
     for _ in range(iterations):
         for y in range(1, height - 1):

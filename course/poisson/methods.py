@@ -23,11 +23,11 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import as_choice, as_int, as_positive_float
+from course._validate import as_choice, as_int, as_positive_float, require_finite
 from course.i18n import _
 from course.poisson import capacitance, solvers
+from course.poisson._layout import channels_back, channels_first
 from course.poisson.problem import PoissonProblem, as_problem
-from course.poisson.windows import image_of, planes_of
 
 __all__ = [
     "ITERATIVE_METHODS",
@@ -89,7 +89,7 @@ def solve(
     """
     problem = as_problem(problem)
     planes, _ = _solve_planes(problem, method, iterations, tolerance, omega)
-    return image_of(planes, problem.values)
+    return _image_of(planes, problem.values)
 
 
 def exact_method(problem: PoissonProblem) -> str:
@@ -139,7 +139,7 @@ def sweeps_to_residual(
     max_iterations = as_int(
         max_iterations, "max_iterations", minimum=0, maximum=limits.MAX_ITERATIONS
     )
-    planes, done = _solve_planes(problem, method, max_iterations, tolerance, omega)
+    planes, done = _solve_planes(problem, method, max_iterations, tolerance, omega, checked=True)
     if solvers.residual(planes, *problem.planes()[1:]) > tolerance:
         return None
     return done
@@ -168,7 +168,7 @@ def convergence(
     iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
     every = as_int(every, "every", minimum=1)
     omega = _as_omega(omega, method, problem.region)
-    reference = None if exact is None else planes_of(problem._as_solution(exact))
+    reference = None if exact is None else channels_first(problem._as_solution(exact))
     values, region, source = problem.planes()
     sweeps = _sweeps(problem, method, omega)
     recorded, residuals, errors = [], [], []
@@ -186,7 +186,7 @@ def convergence(
         np.array(recorded),
         np.array(residuals),
         np.array(errors),
-        image_of(u.copy(), problem.values),
+        _image_of(u.copy(), problem.values),
     )
 
 
@@ -233,7 +233,9 @@ def _solve_planes(
     iterations: int | None,
     tolerance: float | None,
     omega: float | None,
+    checked: bool = False,
 ) -> tuple[np.ndarray, int]:
+    """The solution's planes and the sweeps done; ``checked``: iterations and tolerance are."""
     method = as_choice(method, "method", SOLVE_METHODS)
     if method == "auto":
         method = exact_method(problem)
@@ -276,12 +278,20 @@ def _solve_planes(
         return solvers.solve_direct(values, region, source), 0
     if iterations is None:
         iterations = LAB_ITERATIONS
-    iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
-    if tolerance is not None:
-        tolerance = as_positive_float(tolerance, "tolerance")
+    if not checked:
+        iterations = as_int(iterations, "iterations", minimum=0, maximum=limits.MAX_ITERATIONS)
+        if tolerance is not None:
+            tolerance = as_positive_float(tolerance, "tolerance")
     omega = _as_omega(omega, method, region)
     kind = "jacobi" if method == "jacobi" else "sor"
     return solvers.iterate(values, region, source, kind, iterations, omega, tolerance)
+
+
+def _image_of(planes: np.ndarray, like: np.ndarray) -> np.ndarray:
+    """:func:`~course.poisson.windows.image_of` of a solver's planes, laid out as the problem's
+    ``like``: only their values are checked (a problem of huge finite values may overflow)."""
+    require_finite(planes, "planes")
+    return channels_back(planes, like)
 
 
 def _as_omega(omega: float | None, method: str, region: np.ndarray) -> float:

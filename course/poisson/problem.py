@@ -20,7 +20,8 @@ from course import limits
 from course._validate import as_choice, as_float_array, as_int, describe, require_finite
 from course.i18n import _
 from course.poisson import solvers
-from course.poisson._layout import channels_first, clipped_window, mask_for
+from course.poisson._build import clone_problem_of, inpaint_problem_of, paste
+from course.poisson._layout import channels_first
 from course.poisson.inputs import clone_inputs, inpaint_inputs
 
 __all__ = [
@@ -150,7 +151,7 @@ class PoissonProblem:
         >>> problem.paste(np.zeros((4, 4)), np.ones((3, 3)))[1]
         array([0., 0., 1., 0.])
         """
-        return _paste_window(self, self._as_image(image, "image"), self._as_solution(solution))
+        return paste(self, self._as_image(image, "image"), self._as_solution(solution))
 
     def seam(self, image: np.ndarray) -> float:
         """Mean absolute step across the region's border in ``image`` (which holds the region).
@@ -243,7 +244,7 @@ def clone_problem(
     """
     background, foreground, corner, mask = clone_inputs(background, foreground, offset, mask)
     guidance = as_choice(guidance, "guidance", GUIDANCE)
-    return _build_clone_problem(background, foreground, corner, mask, guidance)
+    return clone_problem_of(PoissonProblem, background, foreground, corner, mask, guidance)
 
 
 def inpaint_problem(image: Any, mask: Any) -> PoissonProblem:
@@ -260,14 +261,7 @@ def inpaint_problem(image: Any, mask: Any) -> PoissonProblem:
            [0, 0, 0]]))
     """
     image, mask = inpaint_inputs(image, mask)
-    rows, columns = np.nonzero(mask)
-    top, left = rows.min() - 1, columns.min() - 1
-    window = (slice(top, rows.max() + 2), slice(left, columns.max() + 2))
-    values = image[window].copy()
-    return PoissonProblem(values, mask[window].copy(), np.zeros_like(values), (int(left), int(top)))
-
-
-# --- building the problem -------------------------------------------------
+    return inpaint_problem_of(PoissonProblem, image, mask)
 
 
 def build_clone_problem(
@@ -286,55 +280,7 @@ def build_clone_problem(
     """
     background, foreground, corner, mask = clone_inputs(background, foreground, corner, mask)
     guidance = as_choice(guidance, "guidance", GUIDANCE)
-    return _build_clone_problem(background, foreground, corner, mask, guidance)
-
-
-def _build_clone_problem(
-    background: np.ndarray,
-    foreground: np.ndarray,
-    corner: tuple[int, int],
-    mask: np.ndarray | None,
-    guidance: str,
-) -> PoissonProblem:
-    """:func:`clone_problem` on inputs that :func:`clone_inputs` has checked."""
-    height, width = foreground.shape[:2]
-    if mask is None:
-        mask = np.zeros((height, width), bool)
-        mask[1:-1, 1:-1] = True
-    rows, columns = np.nonzero(mask)
-    top, bottom = rows.min() - 1, rows.max() + 2
-    left, right = columns.min() - 1, columns.max() + 2
-    region = mask[top:bottom, left:right].copy()
-    crop = (corner[0] + left, corner[1] + top)
-    f = foreground[top:bottom, left:right]
-    b = clipped_window(background, crop, region.shape)
-    values = np.where(mask_for(region, f), f, b)
-    source = _guidance_sum(f, b, region, guidance)
-    return PoissonProblem(values, region, source, (int(crop[0]), int(crop[1])))
-
-
-def _guidance_sum(f: np.ndarray, b: np.ndarray, region: np.ndarray, guidance: str) -> np.ndarray:
-    """``sum_q v_pq`` over the four neighbours of each region pixel, in the images' layout.
-
-    Plain guidance sums to ``4 f_p - sum_q f_q``, written in place: with an
-    array for every step, this was one of the clone's larger costs beside the
-    solve.
-    """
-    height, width = region.shape
-    total = np.zeros(f.shape)
-    inner = total[1:-1, 1:-1]
-    if guidance == "plain":
-        np.multiply(f[1:-1, 1:-1], 4.0, out=inner)
-    for dy, dx in solvers.NEIGHBOURS:
-        neighbour = (slice(1 + dy, height - 1 + dy), slice(1 + dx, width - 1 + dx))
-        if guidance == "plain":
-            inner -= f[neighbour]
-            continue
-        step = f[1:-1, 1:-1] - f[neighbour]
-        background_step = b[1:-1, 1:-1] - b[neighbour]
-        inner += np.where(np.abs(step) > np.abs(background_step), step, background_step)
-    inner[~region[1:-1, 1:-1]] = 0.0
-    return total
+    return clone_problem_of(PoissonProblem, background, foreground, corner, mask, guidance)
 
 
 def paste_window(problem: PoissonProblem, image: Any, window: Any) -> np.ndarray:
@@ -342,7 +288,7 @@ def paste_window(problem: PoissonProblem, image: Any, window: Any) -> np.ndarray
 
     ``window`` has the shape of ``problem.values``; ``image`` holds the
     problem's window at ``problem.corner``. Both are checked (finite, their
-    shapes); see :func:`_paste_window` for arrays checked already.
+    shapes); see :func:`course.poisson._build.paste` for arrays checked already.
 
     Examples
     --------
@@ -360,20 +306,7 @@ def paste_window(problem: PoissonProblem, image: Any, window: Any) -> np.ndarray
             )
         )
     require_finite(window, "window")
-    return _paste_window(problem, image, window)
-
-
-def _paste_window(problem: PoissonProblem, image: np.ndarray, window: np.ndarray) -> np.ndarray:
-    """:func:`paste_window` without its checks, for inputs checked already."""
-    x, y = problem.corner
-    height, width = problem.region.shape
-    result = np.array(image, dtype=float)
-    target = result[y : y + height, x : x + width]
-    if problem.rectangular:  # a slice copies several times faster than a mask
-        target[1:-1, 1:-1] = window[1:-1, 1:-1]
-    else:
-        np.copyto(target, window, where=mask_for(problem.region, window))
-    return result
+    return paste(problem, image, window)
 
 
 def as_problem(problem: Any) -> PoissonProblem:

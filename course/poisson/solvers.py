@@ -276,7 +276,7 @@ def iterate(
     (8, array([15.,  4.,  1.,  0.]))
     """
     if method == "jacobi":
-        sweeps = jacobi_sweeps(values, region, source)
+        sweeps = _jacobi_sweeps_slices(values, region, source)
         u = values
         for done in range(iterations):
             if tolerance is not None and residual(u, region, source) <= tolerance:

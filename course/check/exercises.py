@@ -116,11 +116,6 @@ def exercise(
         raise TypeError(
             _("hints must be a Hints; got {hints_type}").format(hints_type=type(hints).__name__)
         )
-    blank = [step for step in ("where", "more", "recipe") if not str(getattr(hints, step)).strip()]
-    if blank:
-        raise ValueError(
-            _("hints: every step says something; {steps} is empty").format(steps=", ".join(blank))
-        )
     if isinstance(refuses, (str, bytes)) or not (
         isinstance(refuses, Sequence) or callable(refuses)
     ):
@@ -140,6 +135,15 @@ def exercise(
 
     def declare(checker: Callable[..., Any]) -> Callable[..., Any]:
         name = checker.__name__
+        blank = [
+            step for step in ("where", "more", "recipe") if not str(getattr(hints, step)).strip()
+        ]
+        if blank:
+            raise ValueError(
+                _("{module}.{name}: hints: every step says something; {steps} is empty").format(
+                    module=checker.__module__, name=name, steps=", ".join(blank)
+                )
+            )
         declaration = Exercise(
             name=name,
             function=function or name,

@@ -357,7 +357,7 @@ def reference(name: str) -> Callable[..., Any]:
 
 @contextmanager
 def earlier_exercises(function: Any, *names: str) -> Iterator[None]:
-    """Within the block, the earlier exercises ``names`` are the library's, for ``function``.
+    """Within the block, the earlier exercises ``names`` are their graders' answers.
 
     The names are replaced in ``function``'s globals, the notebook's
     namespace, so the student's function and every helper of theirs call the

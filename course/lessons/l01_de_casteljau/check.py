@@ -237,7 +237,7 @@ def _graded_recursive_bezier(control_points: Any, t: float) -> Any:
     """The grader's answer to ``recursive_bezier``: steps until one point is left."""
     points = np.asarray(control_points, dtype=float)
     while len(points) > 1:
-        points = (1 - t) * points[:-1] + t * points[1:]
+        points = _graded_next_level(points, t)
     return points[0]
 
 

@@ -3,7 +3,9 @@
 A public function rejects input beyond these bounds with a ValueError naming
 the parameter, before it allocates or loops, so that no call runs unbounded
 and no far-away value wraps around to a pixel on the canvas. The validators of
-:mod:`course._validate` apply them.
+:mod:`course._validate` apply them to each argument; the ``require_*`` checks at the end
+bound the work a call asks for (vertices, samples, interpolations), which several
+arguments decide together, before any of it is done.
 
 Examples
 --------
@@ -12,6 +14,10 @@ Examples
 """
 
 from __future__ import annotations
+
+import numpy as np
+
+from course.i18n import _
 
 __all__ = [
     "LARGEST",
@@ -39,6 +45,9 @@ __all__ = [
     "MAX_TEXT_LENGTH",
     "MAX_ZOOM",
     "SMALLEST",
+    "require_bounded_evaluation",
+    "require_bounded_flattening",
+    "require_step_samples",
 ]
 
 MAX_PIXELS = 2**23
@@ -124,3 +133,90 @@ SMALLEST = 1e-15
 
 LARGEST = 1e12
 """Largest real accepted for a tolerance, step, width or scale."""
+
+
+# --- the bounds on a call's work, checked before any is done ---------------------------------
+
+
+def require_bounded_flattening(control: np.ndarray, tolerance: float, max_step: float) -> None:
+    """ValueError unless flattening needs at most ``MAX_SAMPLES`` vertices.
+
+    Wang's formula bounds the segments needed for ``tolerance``; the control
+    polygon's length over ``max_step`` bounds those needed for ``max_step``.
+    """
+    degree = len(control) - 1
+    with np.errstate(over="ignore", invalid="ignore"):
+        needed = 1.0
+        if degree >= 2:
+            second = np.linalg.norm(np.diff(control, n=2, axis=0), axis=1).max()
+            needed = max(needed, np.sqrt(degree * (degree - 1) * second / (8 * tolerance)))
+        if degree >= 1 and np.isfinite(max_step):
+            length = np.linalg.norm(np.diff(control, axis=0), axis=1).sum()
+            needed = max(needed, length / max_step)
+    if not needed <= MAX_SAMPLES:
+        raise ValueError(
+            _(
+                "points, tolerance and max_step would need about {needed:.3g} vertices, more than "
+                "the {limit} allowed; raise tolerance (or max_step), or bring the control points "
+                "closer together"
+            ).format(needed=needed, limit=MAX_SAMPLES)
+        )
+    # Degree 4 and up is evaluated by de Casteljau, (degree + 1)**2 / 2 steps a vertex.
+    if degree >= 4 and not needed * (degree + 1) ** 2 <= MAX_EVALUATION_WORK:
+        raise ValueError(
+            _(
+                "points: a curve of {count} control points within this tolerance would need about "
+                "{needed:.3g} vertices of {work} interpolations each, more than the {limit} "
+                "allowed; split the curve into pieces of low degree, or raise tolerance"
+            ).format(
+                count=degree + 1,
+                needed=needed,
+                work=(degree + 1) ** 2,
+                limit=MAX_EVALUATION_WORK,
+            )
+        )
+
+
+def require_step_samples(step: float, name: str = "step", curves: int = 1) -> None:
+    """ValueError unless a t step gives at most ``MAX_STEP_SAMPLES`` samples in all.
+
+    ``curves`` curves are each sampled at t = 0, step, 2 step, ... <= 1.
+    """
+    count = (np.floor(1 / step * (1 + 1e-12)) + 2) * curves
+    if count > MAX_STEP_SAMPLES:
+        per_curve = _(" over {curves} curves").format(curves=curves) if curves > 1 else ""
+        room = MAX_STEP_SAMPLES / curves - 2
+        smallest = _(", a step of at least {step:.3g}").format(step=1 / room) if room >= 1 else ""
+        raise ValueError(
+            _(
+                "{name} must give at most {limit} samples{per_curve}{smallest}; got {step:g}, "
+                "which gives about {count:.3g}"
+            ).format(
+                name=name,
+                limit=MAX_STEP_SAMPLES,
+                per_curve=per_curve,
+                smallest=smallest,
+                step=step,
+                count=count,
+            )
+        )
+
+
+def require_bounded_evaluation(points: int, samples: int, name: str = "points") -> None:
+    """ValueError unless ``samples`` evaluations of a curve of ``points`` control points fit
+    ``MAX_EVALUATION_WORK`` interpolations (de Casteljau's (N + 1)**2 / 2 per sample)."""
+    work = float(samples) * points**2
+    if work > MAX_EVALUATION_WORK:
+        raise ValueError(
+            _(
+                "{name}: {samples} samples of a curve of {points} control points would take about "
+                "{work:.3g} interpolations, more than the {limit} allowed; split the curve into "
+                "pieces of low degree, or raise the tolerance or step"
+            ).format(
+                name=name,
+                samples=samples,
+                points=points,
+                work=work,
+                limit=MAX_EVALUATION_WORK,
+            )
+        )

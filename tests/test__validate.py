@@ -4,10 +4,13 @@ public function enters it at most once per parameter.
 A public function checks each argument once, at its boundary, then calls unchecked kernels
 (dhermes/bezier's rule): the entries into the input checks that one valid call of each
 callable of the fuzz table (tests/test_fuzz.py) outside the lessons' chapters makes are
-counted, and are at most its parameters, but for the few in :data:`EXCEEDS`, each with its
-reason, and those still in :data:`NOT_YET`.
+counted, and are at most its parameters, but for the two in :data:`EXCEEDS`, each with its
+reason. The bounds on a call's work (course.limits' ``require_*``), which several arguments
+decide together, are not argument checks: they are counted apart, and none is made twice
+for the same work.
 """
 
+import collections
 import contextlib
 import inspect
 import io
@@ -22,7 +25,7 @@ import pytest
 import test_fuzz
 
 import course
-from course import _validate
+from course import _validate, limits
 
 
 @pytest.fixture
@@ -49,7 +52,7 @@ def test_a_validation_error_reads_in_chinese_and_keeps_the_parameters_name(in_ch
     with pytest.raises(ValueError, match=r"^t 的取值必须在 ±1000 以内；实际有 1e\+30$"):
         _validate.as_parameter([1e30])
     with pytest.raises(ValueError, match=r"^step 最多只能产生 1048576 个采样（1000 条曲线合计）"):
-        _validate.require_step_samples(1e-5, curves=1000)
+        limits.require_step_samples(1e-5, curves=1000)
 
 
 # --- each argument is validated once ---------------------------------------------------------
@@ -60,10 +63,24 @@ def _in_validate(frame: types.FrameType | None) -> bool:
     return name == "course._validate" or name.startswith("course._validate.")
 
 
+def _work_bound(frame: types.FrameType) -> bool:
+    return frame.f_globals.get("__name__") == "course.limits" and frame.f_code.co_name in (
+        limits.__all__
+    )
+
+
+def _fingerprint(value: Any) -> Any:
+    if isinstance(value, np.ndarray):
+        return (value.shape, str(value.dtype), hash(value.tobytes()))
+    return repr(value)
+
+
 @contextlib.contextmanager
-def counting_entries() -> Iterator[list[str]]:
+def counting_entries(work_bounds: list[tuple[Any, ...]] | None = None) -> Iterator[list[str]]:
     """Record every entry into the input checks: a call into a function of
     :mod:`course._validate` made from outside it (a validator calling another is one entry).
+    With ``work_bounds``, also record there each check of a call's work
+    (:mod:`course.limits`' ``require_*``) with what it was given.
 
     A profile function sees every call, however the caller bound the validator
     (``from course._validate import as_x`` binds it at import, out of a patch's reach).
@@ -71,10 +88,15 @@ def counting_entries() -> Iterator[list[str]]:
     entries: list[str] = []
 
     def profile(frame: types.FrameType, event: str, arg: Any) -> None:
-        if event == "call" and _in_validate(frame) and not _in_validate(frame.f_back):
+        if event != "call":
+            return
+        if _in_validate(frame) and not _in_validate(frame.f_back):
             caller = frame.f_back
             where = f"{caller.f_globals.get('__name__')}.{caller.f_code.co_name}" if caller else "?"
             entries.append(f"{frame.f_code.co_name} from {where}")
+        elif work_bounds is not None and _work_bound(frame):
+            given = tuple(_fingerprint(value) for value in frame.f_locals.values())
+            work_bounds.append((frame.f_code.co_name, *given))
 
     previous = sys.getprofile()
     sys.setprofile(profile)
@@ -86,94 +108,18 @@ def counting_entries() -> Iterator[list[str]]:
 
 # Functions that validate more often than they have parameters, for a reason: the most
 # entries their valid call makes, and why.
-_COST_AFTER = (
-    "checks what flattening or evaluating the curve costs (course._validate's "
-    "require_bounded_*), which its points and its own tolerance decide together, after its "
-    "other arguments, as it always has"
-)
-_STEP_AFTER = (
-    "checks step, then accumulate, then what step costs (course._validate's "
-    "require_step_samples), as it always has: one check of step would report a step too "
-    "fine before a bad accumulate"
-)
-_STEP_COST = (
-    "checks what its step costs (require_step_samples) after the step itself, and what "
-    "evaluating the curve costs (require_bounded_evaluation), which its points and step "
-    "decide together"
-)
-_NUMBERS_SHAPE_FINITE = (
-    "checks its array's numbers, then its shape, then that the values it uses are finite, "
-    "as it always has: one check of numbers and finiteness would report a NaN before a "
-    "wrong shape"
-)
-_CORNER = "and checks each of the corner's two integers by name (corner[0] (x), corner[1] (y))"
-_VERTICES = (
-    "checks the path's vertices as numbers, then its codes, then finite, and the curves' "
-    "points within the coordinates' bound once read (flipped by height), as it always has"
-)
 EXCEEDS: dict[str, tuple[int, str]] = {
-    "course.antialias.curve_quality.intensity_along": (4, _COST_AFTER),
-    "course.antialias.curve_quality.uniformity": (4, _COST_AFTER),
-    "course.antialias.curve_quality.centroid_offsets": (4, _COST_AFTER),
-    "course.antialias.curve_quality.position_error": (4, _COST_AFTER),
-    "course.antialias.curve_quality.render_variant": (5, _COST_AFTER),
-    "course.antialias.curve_quality.variants": (
-        19,
-        "checks what evaluating or flattening the curve costs (require_bounded_*) in each of "
-        "the variants it draws, after its own arguments",
+    "course.curves.bezier_handouts.step_report": (
+        4,
+        "checks its points as numbers, then the samples it draws within the coordinates' "
+        "bound: the curve, not its control polygon, must lie in image space, or a sample far "
+        "away would wrap around to a pixel",
     ),
-    "course.antialias.coverage.reference": (5, _COST_AFTER),
-    "course.antialias.rendering.curve_samples": (4, _STEP_COST),
-    "course.antialias.rendering.stroke_polyline": (3, _COST_AFTER),
-    "course.antialias.curve_quality.quality_table": (
-        6,
-        "checks each image of images once, and at the first image the width and the curve's "
-        "two flattening costs, where the measures it reports checked them (an empty table "
-        "checks neither)",
-    ),
-    "course.curves.bezier.sample_uniform": (4, _STEP_AFTER),
-    "course.curves.drawable_paths.wang_counts": (3, _NUMBERS_SHAPE_FINITE),
-    "course.curves.flattening.uniform_parameters": (3, _STEP_AFTER),
-    "course.curves.paths.path_curves": (4, _VERTICES),
-    "course.curves.paths.text_curves": (
-        6,
-        _VERTICES + ", and the offset that moves them by the margin, which can take them past it",
-    ),
-    "course.poisson.problem.PoissonProblem.paste": (3, _NUMBERS_SHAPE_FINITE),
-    "course.poisson.problem.PoissonProblem.residual": (2, _NUMBERS_SHAPE_FINITE),
-    "course.poisson.windows.planes_of": (2, _NUMBERS_SHAPE_FINITE),
-    "course.poisson.windows.window_at": (5, f"{_NUMBERS_SHAPE_FINITE}, {_CORNER}"),
-    "course.poisson.windows.window_in": (4, f"{_NUMBERS_SHAPE_FINITE}, {_CORNER}"),
     "course.sampling.resample.measure_shift": (
         8,
         "calls the resampler it is given, as any caller would, which checks its own arguments "
         "(supersample: 4), and checks what that resampler returns",
     ),
-}
-
-# Functions that still validate an argument again on its way down: the entries their valid
-# call makes (measured), until they call kernels instead. A function here that passes fails
-# the test (strict): then take it off the list.
-NOT_YET: dict[str, int] = {
-    # course.curves: the accuracy study and the handout loops call the public evaluators
-    # (pascal_row, binomial, de_casteljau, bezier_bernstein), whose cached Pascal rows and
-    # loop form the notebooks print (course.classroom.source), so their kernels cannot move
-    # yet; the handouts' pixels go through course.raster's nearest_pixels and line, which
-    # check their points again (course.raster has no kernel for them yet).
-    "course.curves.bezier_accuracy.accuracy_by_degree": 164,
-    "course.curves.bezier_accuracy.bezier_exact": 3,
-    "course.curves.bezier_accuracy.bezier_power": 14,
-    "course.curves.bezier_accuracy.power_coefficients": 13,
-    "course.curves.bezier_accuracy.relative_errors": 7,
-    "course.curves.bezier_handouts.bresenham_curve": 12,
-    "course.curves.bezier_handouts.curve_pixels": 4,
-    "course.curves.bezier_handouts.segments_report": 15,
-    "course.curves.bezier_handouts.step_report": 6,
-    "course.curves.handout_loops.loop_pixels": 17,
-    "course.curves.handout_loops.yellow_check": 37,
-    # course.poisson: the sweeps check their method (solvers.jacobi_sweeps) again; then it
-    # exceeds as PoissonProblem.residual does (exact: numbers, shape, finite).
-    "course.poisson.methods.convergence": 7,
 }
 
 
@@ -191,14 +137,17 @@ def _valid_call(qualified: str, tmp_path: Path) -> tuple[Any, dict[str, Any]] | 
     return None if arguments is None else (function, arguments)
 
 
-def _entries_of_valid_call(qualified: str, tmp_path: Path) -> tuple[int, list[str]]:
-    """The parameters of the callable and the entries of its valid call."""
+def _entries_of_valid_call(
+    qualified: str, tmp_path: Path, work_bounds: list[tuple[Any, ...]] | None = None
+) -> tuple[int, list[str]]:
+    """The parameters of the callable and the entries of its valid call (and, into
+    ``work_bounds``, the checks of its work)."""
     found = _valid_call(qualified, tmp_path)
     if found is None:
         pytest.skip("no valid input known (tests/test_fuzz.py: VALID)")
     function, arguments = found
     try:
-        with contextlib.redirect_stdout(io.StringIO()), counting_entries() as entries:
+        with contextlib.redirect_stdout(io.StringIO()), counting_entries(work_bounds) as entries:
             result = function(**arguments)
             if inspect.isgenerator(result):  # generators validate at their first step
                 result = [next(result, None), next(result, None)]
@@ -208,20 +157,13 @@ def _entries_of_valid_call(qualified: str, tmp_path: Path) -> tuple[int, list[st
     return len(inspect.signature(function).parameters), entries
 
 
-def _target(qualified: str) -> Any:
-    if qualified in NOT_YET:
-        reason = f"validates {NOT_YET[qualified]} times (measured): an argument again"
-        return pytest.param(qualified, marks=pytest.mark.xfail(strict=True, reason=reason))
-    return qualified
-
-
 #: The library's public surface: everything but the lessons' chapters, which call the
 #: library as any caller does (a figure that draws a curve passes it through the curve's
 #: checked functions; the chapters use public names only).
 LIBRARY_TARGETS = [name for name in test_fuzz.TARGETS if not name.startswith("course.lessons.")]
 
 
-@pytest.mark.parametrize("qualified", [_target(name) for name in LIBRARY_TARGETS])
+@pytest.mark.parametrize("qualified", LIBRARY_TARGETS)
 def test_every_public_function_validates_each_argument_once(qualified, tmp_path):
     parameters, entries = _entries_of_valid_call(qualified, tmp_path)
     most, _why = EXCEEDS.get(qualified, (parameters, ""))
@@ -233,10 +175,37 @@ def test_every_public_function_validates_each_argument_once(qualified, tmp_path)
         assert len(entries) > parameters, f"{qualified} no longer exceeds: take it off EXCEEDS"
 
 
+#: Calls that do the same work twice, and so check its bound twice.
+WORK_DONE_TWICE = {
+    "course.antialias.curve_quality.variants": (
+        "draws each variant from the curve itself: bilinear_centres and normalised_centres "
+        "both evaluate the curve at the same parameters"
+    ),
+}
+
+
+@pytest.mark.parametrize(
+    "qualified",
+    [
+        pytest.param(name, marks=pytest.mark.xfail(strict=True, reason=WORK_DONE_TWICE[name]))
+        if name in WORK_DONE_TWICE
+        else name
+        for name in LIBRARY_TARGETS
+    ],
+)
+def test_no_call_checks_the_same_work_twice(qualified, tmp_path):
+    """The bounds on a call's work (vertices, samples, interpolations: course.limits'
+    ``require_*``) are not argument checks, so the count above leaves them out; each is
+    still made once for what it is given (a path's several curves may each be checked)."""
+    work_bounds: list[tuple[Any, ...]] = []
+    _entries_of_valid_call(qualified, tmp_path, work_bounds)
+    repeated = [check for check, times in collections.Counter(work_bounds).items() if times > 1]
+    assert not repeated, f"{qualified} checks the same work again: {[r[0] for r in repeated]}"
+
+
 def test_the_lists_name_callables_of_the_fuzz_table_once():
     assert set(EXCEEDS) <= set(LIBRARY_TARGETS)
-    assert set(NOT_YET) <= set(LIBRARY_TARGETS)
-    assert not set(EXCEEDS) & set(NOT_YET)
+    assert set(WORK_DONE_TWICE) <= set(LIBRARY_TARGETS)
 
 
 def checked_twice(step: Any) -> float:

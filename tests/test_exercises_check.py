@@ -13,6 +13,7 @@ import importlib
 import inspect
 import re
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -282,3 +283,88 @@ def bezier_binomial(n, k):
     from course.curves import bezier
 
     return bezier.binomial(n, k)
+
+
+# --- every library function that answers an exercise is refused ------------------------------
+
+
+def _library_functions() -> dict[str, Any]:
+    """The library's public functions (not the lessons', the checkers' or the classroom's)."""
+    import test_fuzz
+
+    shared = (
+        "course.lessons",
+        "course.check",
+        "course.classroom",
+        "course.widgets",
+        "course.limits",
+    )
+    return {
+        name: value
+        for name, value in test_fuzz.CALLABLES.items()
+        if inspect.isfunction(value) and not name.startswith(shared)
+    }
+
+
+def _takes(function: Any, count: int) -> bool:
+    """Whether ``function`` can be called with ``count`` positional arguments."""
+    parameters = list(inspect.signature(function).parameters.values())
+    if any(p.kind == p.VAR_POSITIONAL for p in parameters):
+        return True
+    positional = [p for p in parameters if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    required = [p for p in positional if p.default is p.empty]
+    keyword_only = [p for p in parameters if p.kind == p.KEYWORD_ONLY and p.default is p.empty]
+    return len(required) <= count <= len(positional) and not keyword_only
+
+
+def _notebook_exercises() -> list[Any]:
+    import mutation
+
+    return mutation.find_exercises()
+
+
+@pytest.mark.parametrize("found", _notebook_exercises(), ids=lambda e: e.checker)
+def test_no_library_function_passes_a_checker_unrefused(found):
+    """A refused list that leaves out a library function answering the exercise is caught:
+    a student's function that only calls it (with the same arguments) must not pass.
+
+    Every public function of the library that takes the student's arguments is tried, as a
+    student would write it: ``def <function>(<args>): return <module>.<name>(<args>)``.
+    """
+    import contextlib
+    import io
+    import warnings
+
+    import mutation
+
+    tree = ast.parse(found.source)
+    definition = next(
+        s for s in tree.body if isinstance(s, ast.FunctionDef) and s.name == found.function
+    )
+    arguments = ", ".join(a.arg for a in definition.args.args)
+    passing = []
+    for qualified, function in _library_functions().items():
+        if not _takes(function, len(definition.args.args)):
+            continue
+        module, name = qualified.rsplit(".", 1)
+        answer = (
+            f"import {module}\n\n\ndef {found.function}({arguments}):\n"
+            f"    return {module}.{name}({arguments})\n"
+        )
+        namespace: dict[str, Any] = {"__name__": "__student__"}
+        with (
+            contextlib.redirect_stdout(io.StringIO()),
+            contextlib.redirect_stderr(io.StringIO()),
+            warnings.catch_warnings(),
+        ):
+            warnings.simplefilter("ignore")
+            exec(found.setup, namespace)
+            exec(found.source, namespace)
+            exec(answer, namespace)
+            result = eval(found.call, namespace)
+        if mutation.classify(result)[0] == "survived":
+            passing.append(qualified)
+    assert not passing, (
+        f"check.{found.checker} passes a function that only calls {passing}: add them to its "
+        "@exercise(refuses=...) (course.check.exercises)"
+    )

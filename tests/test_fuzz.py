@@ -91,6 +91,17 @@ LEFT_OUT = {
     "course.check.references.call_budget": "a context manager for checkers; no data input",
     "course.lessons.l05_antialiasing.measurements.Table": "a str subclass: str's own constructor",
     "course.widgets.base.SliderApp.still": "the abstract base draws nothing: its apps' do",
+    **{
+        f"course.limits.{name}": (
+            "bounds the work a call asks for, on values its callers have already checked "
+            "(course._validate); fuzzed through every public function that calls it"
+        )
+        for name in (
+            "require_bounded_evaluation",
+            "require_bounded_flattening",
+            "require_step_samples",
+        )
+    },
     "course.lessons.l08_poisson.convergence.write_lab_sweeps": (
         "the maintainers' step, minutes of solving; its path is checked first "
         "(tests/test_poisson_figures.py)"

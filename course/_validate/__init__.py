@@ -13,8 +13,10 @@ by one validator (:func:`as_finite_array`, :func:`as_flattening`, ...).
 ``tests/test__validate.py`` counts the entries into these checks.
 
 By concept: numbers and choices (:mod:`~course._validate.scalars`), arrays and
-images (:mod:`~course._validate.arrays`), points, curves and what they may cost
-(:mod:`~course._validate.points`). Every name is importable from here.
+images (:mod:`~course._validate.arrays`), points and curves
+(:mod:`~course._validate.points`). Every name is importable from here. The bounds on
+the work a call asks for (vertices, samples, interpolations), which several arguments
+decide together, are :mod:`course.limits`' ``require_*`` checks, not argument checks.
 """
 
 from course._validate.arrays import (
@@ -37,15 +39,14 @@ from course._validate.points import (
     as_figure_curve,
     as_flattening,
     as_parameter,
+    as_path_arrays,
     as_point,
     as_points,
     as_scalar_parameter,
-    require_bounded_evaluation,
-    require_bounded_flattening,
-    require_step_samples,
 )
 from course._validate.scalars import (
     as_choice,
+    as_corner,
     as_int,
     as_option,
     as_positive_float,
@@ -58,6 +59,7 @@ from course._validate.scalars import (
 __all__ = [
     "as_app_points",
     "as_choice",
+    "as_corner",
     "as_curve",
     "as_figure_curve",
     "as_finite_array",
@@ -72,6 +74,7 @@ __all__ = [
     "as_kernel",
     "as_option",
     "as_parameter",
+    "as_path_arrays",
     "as_pixels",
     "as_point",
     "as_points",
@@ -82,9 +85,6 @@ __all__ = [
     "as_shape",
     "as_unit",
     "describe",
-    "require_bounded_evaluation",
-    "require_bounded_flattening",
     "require_finite",
-    "require_step_samples",
     "require_within",
 ]

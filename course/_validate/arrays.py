@@ -8,6 +8,7 @@ so that a function validates each argument once.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -79,10 +80,18 @@ def require_within(
 
 
 def as_finite_array(
-    value: Any, name: str, bound: float | None = None, what: str = N_("coordinates")
+    value: Any,
+    name: str,
+    bound: float | None = None,
+    what: str = N_("coordinates"),
+    shape: Callable[[np.ndarray], np.ndarray | None] | None = None,
 ) -> np.ndarray:
-    """:func:`as_float_array`, then :func:`require_finite`, then (with ``bound``)
+    """:func:`as_float_array`, then ``shape`` (the caller's check of the array's shape,
+    which raises its own error), then :func:`require_finite`, then (with ``bound``)
     :func:`require_within`: a float copy of finite real numbers, in one check.
+
+    A ``shape`` that returns an array (a part of the one it is given: the window a caller
+    reads) has only that part required finite and within ``bound``, and it is returned.
 
     Examples
     --------
@@ -90,6 +99,9 @@ def as_finite_array(
     [1.0, 2.0]
     """
     array = as_float_array(value, name)
+    used = shape(array) if shape is not None else None
+    if used is not None:
+        array = used
     require_finite(array, name)
     if bound is not None:
         require_within(array, name, bound, what)

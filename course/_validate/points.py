@@ -1,9 +1,8 @@
 """Points and curves: point lists, curves, curve parameters, and what they may cost.
 
-Part of :mod:`course._validate`, which re-exports every name. The ``require_bounded_*``
-checks bound the work a curve asks for (vertices, samples, interpolations) before any
-is done; :func:`as_flattening` checks a flattening's tolerance and step with it, in one
-call.
+Part of :mod:`course._validate`, which re-exports every name. :func:`as_flattening`
+checks a flattening's tolerance and step, and the work they ask for
+(:func:`course.limits.require_bounded_flattening`), in one call.
 """
 
 from __future__ import annotations
@@ -11,11 +10,13 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+from matplotlib.path import Path
 
 from course import limits
 from course._validate.arrays import as_float_array, require_finite, require_within
 from course._validate.scalars import as_positive_float
 from course.i18n import N_, _
+from course.limits import require_bounded_flattening
 
 __all__ = [
     "as_app_points",
@@ -23,12 +24,10 @@ __all__ = [
     "as_figure_curve",
     "as_flattening",
     "as_parameter",
+    "as_path_arrays",
     "as_point",
     "as_points",
     "as_scalar_parameter",
-    "require_bounded_evaluation",
-    "require_bounded_flattening",
-    "require_step_samples",
 ]
 
 
@@ -200,45 +199,6 @@ def as_app_points(
     return points
 
 
-def require_bounded_flattening(control: np.ndarray, tolerance: float, max_step: float) -> None:
-    """ValueError unless flattening needs at most ``limits.MAX_SAMPLES`` vertices.
-
-    Wang's formula bounds the segments needed for ``tolerance``; the control
-    polygon's length over ``max_step`` bounds those needed for ``max_step``.
-    """
-    degree = len(control) - 1
-    with np.errstate(over="ignore", invalid="ignore"):
-        needed = 1.0
-        if degree >= 2:
-            second = np.linalg.norm(np.diff(control, n=2, axis=0), axis=1).max()
-            needed = max(needed, np.sqrt(degree * (degree - 1) * second / (8 * tolerance)))
-        if degree >= 1 and np.isfinite(max_step):
-            length = np.linalg.norm(np.diff(control, axis=0), axis=1).sum()
-            needed = max(needed, length / max_step)
-    if not needed <= limits.MAX_SAMPLES:
-        raise ValueError(
-            _(
-                "points, tolerance and max_step would need about {needed:.3g} vertices, more than "
-                "the {limit} allowed; raise tolerance (or max_step), or bring the control points "
-                "closer together"
-            ).format(needed=needed, limit=limits.MAX_SAMPLES)
-        )
-    # Degree 4 and up is evaluated by de Casteljau, (degree + 1)**2 / 2 steps a vertex.
-    if degree >= 4 and not needed * (degree + 1) ** 2 <= limits.MAX_EVALUATION_WORK:
-        raise ValueError(
-            _(
-                "points: a curve of {count} control points within this tolerance would need about "
-                "{needed:.3g} vertices of {work} interpolations each, more than the {limit} "
-                "allowed; split the curve into pieces of low degree, or raise tolerance"
-            ).format(
-                count=degree + 1,
-                needed=needed,
-                work=(degree + 1) ** 2,
-                limit=limits.MAX_EVALUATION_WORK,
-            )
-        )
-
-
 def as_flattening(control: np.ndarray, tolerance: Any, max_step: Any = None) -> tuple[float, float]:
     """``(tolerance, max_step)`` for flattening the checked curve ``control``, in one check.
 
@@ -256,46 +216,90 @@ def as_flattening(control: np.ndarray, tolerance: Any, max_step: Any = None) -> 
     return tolerance, limit
 
 
-def require_step_samples(step: float, name: str = "step", curves: int = 1) -> None:
-    """ValueError unless a t step gives at most ``limits.MAX_STEP_SAMPLES`` samples in all.
+_CODE_NAMES = "MOVETO (1), LINETO (2), CURVE3 (3), CURVE4 (4), CLOSEPOLY (79) or STOP (0)"
 
-    ``curves`` curves are each sampled at t = 0, step, 2 step, ... <= 1.
+
+def as_path_arrays(
+    path: Path, name: str = "points", height: float | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """A ``matplotlib.path.Path``'s vertices (a float copy, cut at STOP; y flipped to
+    ``height - y`` with a checked ``height``) and codes, in one check.
+
+    The vertices are real numbers of shape (V, 2), the codes one known code per vertex,
+    starting with MOVETO, CURVE3 runs in pairs and CURVE4 runs in threes; every vertex but
+    a CLOSEPOLY's (which is ignored, whatever it holds) is finite, and every vertex a curve
+    is drawn through is, once flipped, within ``limits.MAX_COORDINATE``.
+
+    Examples
+    --------
+    >>> vertices, codes = as_path_arrays(Path([[0, 0], [2, 0], [0, 0]], [1, 2, 79]), height=4)
+    >>> vertices.tolist(), codes.tolist()
+    ([[0.0, 4.0], [2.0, 4.0], [0.0, 4.0]], [1, 2, 79])
     """
-    count = (np.floor(1 / step * (1 + 1e-12)) + 2) * curves
-    if count > limits.MAX_STEP_SAMPLES:
-        per_curve = _(" over {curves} curves").format(curves=curves) if curves > 1 else ""
-        room = limits.MAX_STEP_SAMPLES / curves - 2
-        smallest = _(", a step of at least {step:.3g}").format(step=1 / room) if room >= 1 else ""
+    vertices = as_float_array(path.vertices, f"{name}.vertices")
+    if vertices.ndim != 2 or vertices.shape[1] != 2:
         raise ValueError(
             _(
-                "{name} must give at most {limit} samples{per_curve}{smallest}; got {step:g}, "
-                "which gives about {count:.3g}"
-            ).format(
-                name=name,
-                limit=limits.MAX_STEP_SAMPLES,
-                per_curve=per_curve,
-                smallest=smallest,
-                step=step,
-                count=count,
-            )
+                "{name}.vertices must have shape (V, 2) in the plane; got shape {vertices_shape}"
+            ).format(name=name, vertices_shape=vertices.shape)
         )
-
-
-def require_bounded_evaluation(points: int, samples: int, name: str = "points") -> None:
-    """ValueError unless ``samples`` evaluations of a curve of ``points`` control points fit
-    ``limits.MAX_EVALUATION_WORK`` interpolations (de Casteljau's (N + 1)**2 / 2 per sample)."""
-    work = float(samples) * points**2
-    if work > limits.MAX_EVALUATION_WORK:
+    codes = path.codes
+    if codes is None:
+        codes = np.full(len(vertices), Path.LINETO, dtype=np.uint8)
+        codes[:1] = Path.MOVETO
+    codes = np.asarray(codes)
+    if codes.shape != (len(vertices),):
         raise ValueError(
             _(
-                "{name}: {samples} samples of a curve of {points} control points would take about "
-                "{work:.3g} interpolations, more than the {limit} allowed; split the curve into "
-                "pieces of low degree, or raise the tolerance or step"
-            ).format(
-                name=name,
-                samples=samples,
-                points=points,
-                work=work,
-                limit=limits.MAX_EVALUATION_WORK,
+                "{name}.codes must have shape ({vertices_count},), one code per vertex; got shape "
+                "{codes_shape}"
+            ).format(name=name, vertices_count=len(vertices), codes_shape=codes.shape)
+        )
+    stop = np.flatnonzero(codes == Path.STOP)
+    if len(stop):
+        vertices, codes = vertices[: stop[0]], codes[: stop[0]]
+    if len(codes) == 0:
+        return vertices, codes
+    known = np.isin(codes, [Path.MOVETO, Path.LINETO, Path.CURVE3, Path.CURVE4, Path.CLOSEPOLY])
+    if not known.all():
+        index = int(np.flatnonzero(~known)[0])
+        raise ValueError(
+            _("{name}.codes must hold only {most}; got code {codes} at vertex {index}").format(
+                name=name, most=_CODE_NAMES, codes=codes[index], index=index
             )
         )
+    if codes[0] != Path.MOVETO:
+        raise ValueError(
+            _("{name}.codes must start with MOVETO (1); got code {codes}").format(
+                name=name, codes=codes[0]
+            )
+        )
+    # CLOSEPOLY's vertex is ignored, whatever it holds (often 0 or NaN).
+    require_finite(vertices[codes != Path.CLOSEPOLY], f"{name}.vertices")
+    if height is not None:
+        vertices[:, 1] = height - vertices[:, 1]
+    change = np.concatenate([[True], codes[1:] != codes[:-1]])
+    run = np.cumsum(change) - 1
+    lengths, run_codes = np.bincount(run), codes[change]
+    broken = ((run_codes == Path.CURVE3) & (lengths % 2 != 0)) | (
+        (run_codes == Path.CURVE4) & (lengths % 3 != 0)
+    )
+    if broken.any():
+        raise ValueError(
+            _(
+                "{name}.codes: CURVE3 vertices come in pairs and CURVE4 vertices in threes; a run "
+                "of {length} code-{code} vertices ends at vertex {end}"
+            ).format(
+                name=name,
+                length=lengths[broken][0],
+                code=run_codes[broken][0],
+                end=int(np.cumsum(lengths)[broken][0]) - 1,
+            )
+        )
+    # Bound what is drawn: a subpath's MOVETO only if the subpath draws something.
+    drawing = np.isin(codes, [Path.LINETO, Path.CURVE3, Path.CURVE4])
+    subpath = np.cumsum(codes == Path.MOVETO) - 1
+    draws = np.bincount(subpath[drawing], minlength=subpath[-1] + 1) > 0
+    drawn = drawing | ((codes == Path.MOVETO) & draws[subpath])
+    require_within(vertices[drawn], "points", limits.MAX_COORDINATE)
+    return vertices, codes

@@ -1,4 +1,4 @@
-"""Numbers and choices: real numbers, integers, canvas shapes, options, generators.
+"""Numbers and choices: real numbers, integers, corners, canvas shapes, options, generators.
 
 Part of :mod:`course._validate`, which re-exports every name; :func:`describe` words a
 value for every message of the package.
@@ -16,6 +16,7 @@ from course.i18n import _
 
 __all__ = [
     "as_choice",
+    "as_corner",
     "as_int",
     "as_option",
     "as_positive_float",
@@ -98,6 +99,24 @@ def as_int(
             )
         )
     return number
+
+
+def as_corner(corner: Any, name: str = "corner") -> tuple[int, int]:
+    """A pair ``(x, y)`` of integers, such as a window's top-left pixel, each checked by
+    :func:`as_int` under the names ``name[0] (x)`` and ``name[1] (y)``.
+
+    Examples
+    --------
+    >>> as_corner([3, -2])
+    (3, -2)
+    """
+    if isinstance(corner, (str, bytes)) or not hasattr(corner, "__len__") or len(corner) != 2:
+        raise ValueError(
+            _("{name} must be a pair (x, y) of integers; got {corner}").format(
+                name=name, corner=describe(corner)
+            )
+        )
+    return as_int(corner[0], f"{name}[0] (x)"), as_int(corner[1], f"{name}[1] (y)")
 
 
 def as_shape(

@@ -2,7 +2,7 @@
 
 Nothing here checks its input (``UNCHECKED = True``): ``control`` is a finite
 float ``(N, 2)`` curve, ``tolerance`` a float > 0 and ``max_step`` a float > 0
-or ``inf``, for which :func:`course._validate.require_bounded_flattening` passed,
+or ``inf``, for which :func:`course.limits.require_bounded_flattening` passed,
 as :func:`course.antialias.coverage.curve_polyline` makes sure before it calls
 :func:`flattened`. :mod:`course.antialias.curve_quality` flattens its checked
 curves here too.

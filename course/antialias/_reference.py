@@ -18,12 +18,13 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import as_curve, as_positive_float, describe, require_bounded_flattening
+from course._validate import as_curve, as_positive_float, describe
 from course.antialias._polyline import flattened
 from course.antialias.near_pixels import HALF_DIAGONAL, NearPixels, first_of_runs, pixels_near
 from course.curves.drawable_paths import flatten_each
 from course.curves.paths import Curves
 from course.i18n import _
+from course.limits import require_bounded_flattening
 
 __all__ = ["REFERENCE_TOLERANCE", "path_polyline", "reference_coverage"]
 

@@ -21,12 +21,7 @@ from matplotlib.path import Path
 from matplotlib.transforms import Affine2D
 
 from course import limits
-from course._validate import (
-    as_points,
-    describe,
-    require_bounded_evaluation,
-    require_step_samples,
-)
+from course._validate import as_points, describe
 from course.antialias._splats import arc_length_weights, splat_points
 from course.antialias.near_pixels import first_of_runs, pixels_near
 from course.antialias.splats import PIXELS_PER_SAMPLE
@@ -36,6 +31,7 @@ from course.curves._uniform import uniform_polyline, uniform_steps
 from course.curves.drawable_paths import matplotlib_path
 from course.curves.paths import Curves
 from course.i18n import _
+from course.limits import require_bounded_evaluation, require_step_samples
 from course.raster._paint import painted_canvas
 from course.raster.canvas import painted
 

@@ -30,7 +30,6 @@ from course._validate import (
     as_int,
     as_positive_float,
     as_shape,
-    require_bounded_flattening,
 )
 from course.antialias import RENDER_METHODS, SPLATS
 from course.antialias._polyline import flattened
@@ -40,6 +39,7 @@ from course.antialias.near_pixels import first_of_runs, pixels_near
 from course.curves._frozen import made
 from course.curves.paths import Curves
 from course.i18n import _
+from course.limits import require_bounded_flattening
 from course.raster.canvas import crop_extent
 
 __all__ = [

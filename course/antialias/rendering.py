@@ -36,14 +36,7 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import (
-    as_choice,
-    as_curve,
-    as_points,
-    as_positive_float,
-    as_shape,
-    require_step_samples,
-)
+from course._validate import as_choice, as_curve, as_points, as_positive_float, as_shape
 from course.antialias._render import (
     DEFAULT_STEP,
     STROKE_TOLERANCE,
@@ -72,6 +65,7 @@ from course.antialias.stroke import stroke_coverage
 from course.curves._uniform import uniform_steps
 from course.curves.paths import as_path, text_curves
 from course.i18n import _
+from course.limits import require_step_samples
 
 __all__ = [
     "DEFAULT_STEP",

@@ -1,9 +1,9 @@
 """Bézier curves: de Casteljau's algorithm, the Bernstein form, whole paths.
 
 The handouts' own code is kept as written in :mod:`~course.curves.bezier_handouts`, and
-:mod:`~course.curves.bezier_accuracy` measures each form in floating point. The fast
-kernels (``_bezier_fast``, ``_flatten``) are unchecked: only :mod:`~course.curves.bezier` and
-:mod:`~course.curves.flattening` call them, on validated input.
+:mod:`~course.curves.bezier_accuracy` measures each form in floating point. The kernels
+(``_bernstein``, ``_bezier_fast``, ``_flatten``, ``_uniform``, ``_handouts``) are unchecked:
+the public functions of this package call them on input they have validated.
 
 The public names of :mod:`~course.curves.bezier` and :mod:`~course.curves.flattening` are
 importable from here too.

@@ -18,9 +18,9 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import require_bounded_evaluation
 from course.curves._bezier_fast import de_casteljau_chunked
 from course.i18n import _
+from course.limits import require_bounded_evaluation
 
 __all__ = ["assemble", "uniform_points", "uniform_polyline", "uniform_steps", "wang_segment_counts"]
 

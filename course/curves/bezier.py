@@ -19,9 +19,7 @@ References
 
 from __future__ import annotations
 
-import itertools
 import sys
-from functools import lru_cache
 from typing import Any
 
 import numpy as np
@@ -34,7 +32,16 @@ from course._validate import (
     as_points,
     as_scalar_parameter,
 )
-from course.curves._bezier_fast import bernstein_horner, de_casteljau_chunked
+from course.curves._bernstein import (
+    MAX_BERNSTEIN_DEGREE,
+    bernstein_loop,
+    horner_or_basis,
+    require_bernstein_degree,
+)
+from course.curves._bernstein import bernstein_basis as bernstein_basis_of
+from course.curves._bernstein import binomial as binomial_of
+from course.curves._bernstein import pascal_row as pascal_row_of
+from course.curves._bezier_fast import de_casteljau_chunked
 from course.curves.flattening import uniform_parameters
 from course.i18n import _
 
@@ -54,9 +61,6 @@ __all__ = [
     "sample_uniform",
     "split",
 ]
-
-# Beyond this degree some binomial(n, k) exceeds the largest float64.
-MAX_BERNSTEIN_DEGREE = 1029
 
 
 # --- de Casteljau ------------------------------------------------------------
@@ -199,20 +203,12 @@ def pascal_row(n: int) -> tuple[int, ...]:
     >>> pascal_row(4)
     (1, 4, 6, 4, 1)
     """
-    return _pascal_row(as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE))
+    return pascal_row_of(as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE))
 
 
 def clear_pascal_cache() -> None:
     """Forget the rows :func:`pascal_row` keeps, so the next call builds its row anew."""
-    _pascal_row.cache_clear()
-
-
-@lru_cache(maxsize=64)
-def _pascal_row(n: int) -> tuple[int, ...]:
-    row: tuple[int, ...] = (1,)
-    for _row in range(n):
-        row = (1, *(a + b for a, b in itertools.pairwise(row)), 1)
-    return row
+    pascal_row_of.cache_clear()
 
 
 def binomial(n: int, k: int) -> int:
@@ -231,9 +227,7 @@ def binomial(n: int, k: int) -> int:
     """
     n = as_int(n, "n", minimum=0, maximum=limits.MAX_DEGREE)
     k = as_int(k, "k")
-    if k < 0 or k > n:
-        return 0
-    return _pascal_row(n)[k]
+    return binomial_of(n, k)
 
 
 def bernstein_basis(n: int, t: Any) -> np.ndarray:
@@ -267,22 +261,10 @@ def bernstein_basis(n: int, t: Any) -> np.ndarray:
             ).format(most=MAX_BERNSTEIN_DEGREE, n=n)
         )
     values, _scalar = as_parameter(t)
-    return _bernstein_basis(n, values)
-
-
-def _bernstein_basis(n: int, t: np.ndarray) -> np.ndarray:
-    t = t[:, None]
-    exponents = np.arange(n + 1)
-    coefficients = np.array([float(c) for c in _pascal_row(n)])
-    # binomial * t^i stays below C(n, n/2) <= 2^n, so no overflow before the
-    # (1 - t) power scales it down.
-    return (coefficients * t**exponents) * (1.0 - t) ** exponents[::-1]
+    return bernstein_basis_of(n, values)
 
 
 BEZIER_BERNSTEIN_METHODS = ("horner", "loop")
-# Up to this degree Horner's rule in t / (1 - t) cannot overflow for any
-# sensible coordinates (C(128, 64) < 2^127); beyond it the basis matrix does.
-_HORNER_MAX_DEGREE = 128
 
 
 def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
@@ -313,18 +295,7 @@ def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
     control = as_points(points)
     values, is_scalar = as_parameter(t)
     method = as_choice(method, "method", BEZIER_BERNSTEIN_METHODS)
-    degree = len(control) - 1
-    if degree > MAX_BERNSTEIN_DEGREE:
-        raise ValueError(
-            _(
-                "points: the float Bernstein form works up to degree {most} "
-                "({most_points} points); got {control_count} points. Use de_casteljau."
-            ).format(
-                most=MAX_BERNSTEIN_DEGREE,
-                most_points=MAX_BERNSTEIN_DEGREE + 1,
-                control_count=len(control),
-            )
-        )
+    require_bernstein_degree(control)
     if method == "loop":
         curve = _bezier_bernstein_loop(control, values)
     else:
@@ -334,21 +305,12 @@ def bezier_bernstein(points: Any, t: Any, method: str = "horner") -> np.ndarray:
 
 def _bezier_bernstein_horner(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     """Horner's rule in t / (1 - t), or the basis matrix beyond degree 128."""
-    degree = len(control) - 1
-    if degree > _HORNER_MAX_DEGREE:
-        return _bernstein_basis(degree, t) @ control
-    binomials = np.array([float(c) for c in _pascal_row(degree)])
-    return bernstein_horner(control, binomials, t)
+    return horner_or_basis(control, t)
 
 
 def _bezier_bernstein_loop(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     """The handouts' loop: one term C(n, i) (1 - t)^(n - i) t^i P[i] at a time."""
-    n = len(control) - 1
-    t = t[:, None]
-    curve = np.zeros((len(t), control.shape[1]))
-    for i, point in enumerate(control):
-        curve += float(binomial(n, i)) * (1 - t) ** (n - i) * t**i * point
-    return curve
+    return bernstein_loop(control, t)
 
 
 # --- operations on control polygons -------------------------------------------

@@ -17,21 +17,23 @@ References
 
 from __future__ import annotations
 
+import numbers
+from collections.abc import Callable
 from fractions import Fraction
+from functools import partial
 from typing import Any
 
 import numpy as np
 
 from course import limits
-from course._validate import (
-    as_float_array,
-    as_int,
-    as_parameter,
-    as_points,
-    as_rng,
-    require_finite,
+from course._validate import as_finite_array, as_int, as_parameter, as_points, as_rng
+from course.curves._bernstein import (
+    bernstein_loop,
+    horner_or_basis,
+    pascal_row,
+    require_bernstein_degree,
 )
-from course.curves.bezier import bezier_bernstein, de_casteljau, pascal_row
+from course.curves._bezier_fast import de_casteljau_chunked
 from course.i18n import _
 
 __all__ = [
@@ -76,9 +78,15 @@ def bezier_exact(points: Any, t: Any) -> np.ndarray:
     """
     control = as_points(points)
     values, is_scalar = as_parameter(t)
+    result = _bezier_exact(control, values)
+    return result[0] if is_scalar else result
+
+
+def _bezier_exact(control: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """(M, d) Fractions: :func:`bezier_exact` of a checked curve at checked parameters."""
     integers, denominator = _as_integers(control)
     degree = len(control) - 1
-    binomials = pascal_row(degree)
+    binomials = _pascal_row_of_degree(degree)
     result = np.empty((len(values), control.shape[1]), dtype=object)
     for row, value in enumerate(values):
         exact_t = Fraction(float(value))
@@ -88,7 +96,18 @@ def bezier_exact(points: Any, t: Any) -> np.ndarray:
         for axis in range(control.shape[1]):
             total = sum(w * point[axis] for w, point in zip(weights, integers, strict=True))
             result[row, axis] = Fraction(total, scale)
-    return result[0] if is_scalar else result
+    return result
+
+
+def _pascal_row_of_degree(degree: int) -> tuple[int, ...]:
+    """Row ``degree`` of Pascal's triangle for a checked curve of that degree.
+
+    Past ``limits.MAX_DEGREE`` it is refused as :func:`course.curves.bezier.pascal_row`
+    refuses its ``n``, in the words it always was (:func:`course._validate.as_int`'s).
+    """
+    if degree > limits.MAX_DEGREE:
+        as_int(degree, "n", minimum=0, maximum=limits.MAX_DEGREE)
+    return pascal_row(degree)
 
 
 def power_coefficients(points: Any) -> np.ndarray:
@@ -106,7 +125,11 @@ def power_coefficients(points: Any) -> np.ndarray:
            [ 3., -9.],
            [-2.,  0.]])
     """
-    control = as_points(points)
+    return _power_coefficients(as_points(points))
+
+
+def _power_coefficients(control: np.ndarray) -> np.ndarray:
+    """:func:`power_coefficients` of a checked curve."""
     degree = len(control) - 1
     # |a_j| reaches 4**n |P| / sqrt(n): past float64's 2**1024 near degree 500.
     if degree > MAX_POWER_DEGREE:
@@ -148,13 +171,19 @@ def bezier_power(points: Any, t: Any) -> np.ndarray:
     >>> bezier_power([[0, 0], [1, 3], [3, 3], [4, 0]], 0.5)
     array([2.  , 2.25])
     """
-    coefficients = power_coefficients(points)
+    coefficients = _power_coefficients(as_points(points))
     values, is_scalar = as_parameter(t)
-    curve = np.broadcast_to(coefficients[-1], (len(values), coefficients.shape[1])).copy()
-    for coefficient in coefficients[-2::-1]:
-        curve *= values[:, None]
-        curve += coefficient
+    curve = _power_horner(coefficients, values)
     return curve[0] if is_scalar else curve
+
+
+def _power_horner(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """(M, d) points ``sum_j a_j t^j`` of the coefficients (N, d) at ``t`` (M,), by Horner."""
+    curve = np.broadcast_to(coefficients[-1], (len(t), coefficients.shape[1])).copy()
+    for coefficient in coefficients[-2::-1]:
+        curve *= t[:, None]
+        curve += coefficient
+    return curve
 
 
 def relative_errors(points: Any, t: Any, computed: Any) -> np.ndarray:
@@ -166,16 +195,24 @@ def relative_errors(points: Any, t: Any, computed: Any) -> np.ndarray:
     """
     control = as_points(points)
     values_t, _scalar = as_parameter(t)
-    exact = bezier_exact(control, values_t)
-    values = as_float_array(computed, "computed")
+    exact = _bezier_exact(control, values_t)
+    values = as_finite_array(computed, "computed", shape=partial(_require_one_point_per_t, exact))
+    return _relative_errors(control, exact, values)
+
+
+def _require_one_point_per_t(exact: np.ndarray, values: np.ndarray) -> None:
     if values.size != exact.size:
         raise ValueError(
             _(
                 "computed must hold one point per t, shape {exact_shape}; got shape {values_shape}"
             ).format(exact_shape=exact.shape, values_shape=values.shape)
         )
-    require_finite(values, "computed")
-    values = values.reshape(exact.shape)
+
+
+def _relative_errors(control: np.ndarray, exact: np.ndarray, computed: np.ndarray) -> np.ndarray:
+    """:func:`relative_errors` of a checked curve, its exact points (M, d) and as many
+    finite computed values."""
+    values = computed.reshape(exact.shape)
     size = Fraction(float(np.abs(control).max()) or 1.0)
     errors = [
         max(abs(Fraction(float(v)) - e) for v, e in zip(row, exact_row, strict=True)) / size
@@ -211,11 +248,11 @@ def accuracy_by_degree(
     """
     generator = as_rng(rng)
     samples = as_int(samples, "samples", minimum=1)
-    evaluate = {
-        "de_casteljau": de_casteljau,
-        "bernstein_loop": lambda p, t: bezier_bernstein(p, t, method="loop"),
-        "bernstein_horner": bezier_bernstein,
-        "power": bezier_power,
+    evaluate: dict[str, Callable[[np.ndarray, np.ndarray], np.ndarray]] = {
+        "de_casteljau": de_casteljau_chunked,
+        "bernstein_loop": partial(_bernstein, bernstein_loop),
+        "bernstein_horner": partial(_bernstein, horner_or_basis),
+        "power": lambda control, t: _power_horner(_power_coefficients(control), t),
     }
     unknown = [m for m in methods if m not in evaluate]
     if unknown:
@@ -224,10 +261,7 @@ def accuracy_by_degree(
                 choices=ACCURACY_BY_DEGREE_METHODS, unknown=unknown
             )
         )
-    degree_list = [
-        as_int(n, "degrees", minimum=0, maximum=limits.MAX_DEGREE)
-        for n in np.atleast_1d(np.asarray(degrees, dtype=object)).tolist()
-    ]
+    degree_list = _as_degrees(degrees)
     if "power" in methods and max(degree_list, default=0) > MAX_POWER_DEGREE:
         raise ValueError(
             _(
@@ -251,6 +285,35 @@ def accuracy_by_degree(
         control = generator.uniform(-1, 1, (degree + 1, 2))
         t = (np.arange(samples) + generator.uniform(0.1, 0.9, samples)) / samples
         for method in methods:
-            errors = relative_errors(control, t, evaluate[method](control, t))
+            computed = evaluate[method](control, t)
+            errors = _relative_errors(control, _bezier_exact(control, t), computed)
             results[method].append(float(errors.max()))
     return {"degree": np.array(degree_list)} | {m: np.array(v) for m, v in results.items()}
+
+
+def _as_degrees(degrees: Any) -> list[int]:
+    """The degrees as ints, each from 0 to ``limits.MAX_DEGREE``, checked in one pass.
+
+    A list of such integers passes at once; any other is read by
+    :func:`course._validate.as_int`, degree after degree, which words the first refusal.
+    """
+    listed = np.atleast_1d(np.asarray(degrees, dtype=object)).tolist()
+    if all(_is_degree(n) for n in listed):
+        return [int(n) for n in listed]
+    return [as_int(n, "degrees", minimum=0, maximum=limits.MAX_DEGREE) for n in listed]
+
+
+def _is_degree(value: Any) -> bool:
+    return (
+        isinstance(value, numbers.Integral)
+        and not isinstance(value, bool)
+        and 0 <= value <= limits.MAX_DEGREE
+    )
+
+
+def _bernstein(
+    form: Callable[[np.ndarray, np.ndarray], np.ndarray], control: np.ndarray, t: np.ndarray
+) -> np.ndarray:
+    """A Bernstein form of a checked curve, refused past the float form's degree."""
+    require_bernstein_degree(control)
+    return form(control, t)

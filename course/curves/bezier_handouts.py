@@ -22,18 +22,14 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import (
-    as_int,
-    as_parameter,
-    as_points,
-    as_scalar_parameter,
-    require_bounded_flattening,
-)
+from course._validate import as_int, as_parameter, as_points, as_scalar_parameter
 from course.curves._bezier_fast import de_casteljau_chunked
 from course.curves._flatten import flatten_curve
+from course.curves._handouts import de_casteljau_swapped
 from course.curves.flattening import uniform_parameters
 from course.i18n import _
-from course.raster import line, nearest_pixels
+from course.limits import require_bounded_flattening
+from course.raster._lines import bresenham_closed_form, pixels_of, require_image_space
 
 __all__ = [
     "MAX_SEGMENTS",
@@ -163,13 +159,9 @@ def de_casteljau_reversed(points: Any, t: Any) -> np.ndarray:
     >>> de_casteljau_reversed([[0, 0], [1, 2], [2, 0]], [0.25])
     array([[1.5 , 0.75]])
     """
-    level = as_points(points)
+    control = as_points(points)
     values, is_scalar = as_parameter(t)
-    t_column = values[:, None, None]
-    level = np.broadcast_to(level, (len(values), *level.shape))
-    while level.shape[1] > 1:
-        level = t_column * level[:, :-1] + (1 - t_column) * level[:, 1:]
-    curve = level[:, 0]
+    curve = de_casteljau_swapped(control, values)
     return curve[0] if is_scalar else curve
 
 
@@ -282,7 +274,10 @@ def step_report(points: Any, step: float, accumulate: str = "exact") -> dict[str
     """
     t = uniform_parameters(step, accumulate)
     samples = de_casteljau_chunked(as_points(points), t)
-    pixels = nearest_pixels(samples)
+    # The samples, not the control points, must lie in image space: refused, as before.
+    as_points(samples, bound=limits.MAX_COORDINATE)
+    require_image_space(samples)
+    pixels = pixels_of(samples, "floor")
     jumps = np.abs(np.diff(pixels, axis=0)).max(axis=1) if len(pixels) > 1 else np.zeros(0)
     # One integer per pixel: np.unique on rows sorts structured records, ten times slower.
     low = pixels.min(axis=0) if len(pixels) else np.zeros(2, np.int64)
@@ -349,8 +344,8 @@ def _as_segments(segments: Any) -> int:
 def _bresenham_curve(control: np.ndarray, segments: int) -> np.ndarray:
     """:func:`bresenham_curve` of a checked curve and count of segments."""
     t = np.linspace(0.0, 1.0, segments + 1)
-    ends = nearest_pixels(de_casteljau_chunked(control, t))
-    return np.concatenate([line(a, b) for a, b in itertools.pairwise(ends)])
+    ends = pixels_of(de_casteljau_chunked(control, t), "floor").tolist()
+    return np.concatenate([bresenham_closed_form(*a, *b) for a, b in itertools.pairwise(ends)])
 
 
 def curve_pixels(points: Any) -> np.ndarray:
@@ -373,7 +368,7 @@ def curve_pixels(points: Any) -> np.ndarray:
 def _curve_pixels(control: np.ndarray) -> np.ndarray:
     """:func:`curve_pixels` of a checked curve; what flattening it costs is checked here."""
     require_bounded_flattening(control, 0.01, 0.5)
-    pixels = nearest_pixels(flatten_curve(control, 0.01, 0.5)[0])
+    pixels = pixels_of(flatten_curve(control, 0.01, 0.5)[0], "floor")
     keep = np.ones(len(pixels), dtype=bool)
     keep[1:] = (np.diff(pixels, axis=0) != 0).any(axis=1)
     pixels = pixels[keep]

@@ -20,12 +20,7 @@ import numpy as np
 from matplotlib.path import Path
 
 from course import limits
-from course._validate import (
-    as_float_array,
-    as_positive_float,
-    describe,
-    require_finite,
-)
+from course._validate import as_finite_array, as_positive_float, describe
 from course.curves._uniform import assemble, uniform_polyline, wang_segment_counts
 from course.curves.paths import Curves
 from course.i18n import _
@@ -85,16 +80,18 @@ def wang_counts(control: np.ndarray, tolerance: float) -> np.ndarray:
     on an interval of width h the chord strays at most ``h^2 / 8 max |B''|``
     and ``|B''| <= n (n - 1) max_i |P[i] - 2 P[i+1] + P[i+2]|``.
     """
-    control = as_float_array(control, "control")
+    control = as_finite_array(control, "control", shape=_require_curve_stack)
+    tolerance = as_positive_float(tolerance, "tolerance")
+    return wang_segment_counts(control, tolerance)
+
+
+def _require_curve_stack(control: np.ndarray) -> None:
     if control.ndim != 3 or control.shape[1] == 0 or control.shape[2] != 2:
         raise ValueError(
             _("control must be a stack (M, N, 2) of curves; got shape {control_shape}").format(
                 control_shape=control.shape
             )
         )
-    require_finite(control, "control")
-    tolerance = as_positive_float(tolerance, "tolerance")
-    return wang_segment_counts(control, tolerance)
 
 
 def flatten_uniform(curves: Curves, tolerance: float) -> tuple[np.ndarray, np.ndarray]:

@@ -19,15 +19,10 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import (
-    as_choice,
-    as_points,
-    as_positive_float,
-    require_bounded_flattening,
-    require_step_samples,
-)
+from course._validate import as_choice, as_points, as_positive_float
 from course.curves._flatten import flatten_curve
 from course.curves._uniform import uniform_steps
+from course.limits import require_bounded_flattening, require_step_samples
 
 __all__ = ["flatten", "uniform_parameters"]
 

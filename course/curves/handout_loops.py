@@ -21,12 +21,15 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course._validate import as_points, as_shape
-from course.curves.bezier import bezier_bernstein, de_casteljau
-from course.curves.bezier_handouts import de_casteljau_reversed
-from course.curves.flattening import uniform_parameters
+from course._validate import as_choice, as_points, as_shape
+from course.curves._bernstein import bernstein_loop, require_bernstein_degree
+from course.curves._bezier_fast import de_casteljau_chunked
+from course.curves._handouts import de_casteljau_swapped
+from course.curves._uniform import uniform_steps
 from course.i18n import _
-from course.raster import nearest_pixels
+from course.raster import ROUNDING
+from course.raster._lines import pixels_of, require_image_space
+from course.raster._paint import on_canvas
 
 __all__ = [
     "HANDOUT_LOOPS",
@@ -106,12 +109,40 @@ def loop_pixels(points: Any, loop: HandoutLoop, shape: Any = None) -> np.ndarray
     """
     control = as_points(points, bound=limits.MAX_COORDINATE)
     _require_loop(loop)
-    t = uniform_parameters(0.001, loop.accumulate)
+    pixels = _loop_pixels(control, loop)
+    if shape is not None:
+        pixels = pixels[on_canvas(pixels, as_shape(shape))]
+    return pixels
+
+
+# The modes of course.curves.flattening.uniform_parameters' accumulate.
+_ACCUMULATE = ("exact", "float32", "float64")
+
+
+def _loop_pixels(control: np.ndarray, loop: HandoutLoop) -> np.ndarray:
+    """:func:`loop_pixels` of a checked curve and loop, on no canvas.
+
+    The loop's ``accumulate`` and ``rounding`` are checked where they are first used, as
+    they always were; :func:`course._validate.as_choice` words a refusal.
+    """
+    if not _is_one_of(loop.accumulate, _ACCUMULATE):
+        as_choice(loop.accumulate, "accumulate", _ACCUMULATE)
+    t = uniform_steps(0.001, loop.accumulate)
     if loop is NAIVE_LOOP:
-        curve = bezier_bernstein(control, t, method="loop")
+        require_bernstein_degree(control)
+        curve = bernstein_loop(control, t)
+    elif loop.reversed:
+        curve = de_casteljau_swapped(control, t)
     else:
-        curve = de_casteljau_reversed(control, t) if loop.reversed else de_casteljau(control, t)
-    return nearest_pixels(curve, rounding=loop.rounding, shape=shape)
+        curve = de_casteljau_chunked(control, t)
+    require_image_space(curve)
+    if not _is_one_of(loop.rounding, ROUNDING):
+        as_choice(loop.rounding, "rounding", ROUNDING)
+    return pixels_of(curve, loop.rounding)
+
+
+def _is_one_of(value: Any, choices: tuple[str, ...]) -> bool:
+    return isinstance(value, str) and value in choices
 
 
 def _require_loop(loop: Any) -> None:
@@ -150,12 +181,12 @@ def yellow_check(points: Any, loop: HandoutLoop, shape: Any = (700, 700)) -> Yel
     """
     height, width = as_shape(shape)
     _require_loop(loop)
+    control = as_points(points, bound=limits.MAX_COORDINATE)
     red = np.zeros((height, width), dtype=bool)
     green = np.zeros((height, width), dtype=bool)
-    for mask, pixels in (
-        (red, loop_pixels(points, NAIVE_LOOP, shape)),
-        (green, loop_pixels(points, loop, shape)),
-    ):
+    for mask, each in ((red, NAIVE_LOOP), (green, loop)):
+        pixels = _loop_pixels(control, each)
+        pixels = pixels[on_canvas(pixels, (height, width))]
         mask[pixels[:, 1], pixels[:, 0]] = True
     image = np.zeros((height, width, 3))
     image[..., 0], image[..., 1] = red, green

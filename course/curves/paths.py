@@ -31,7 +31,7 @@ from matplotlib.textpath import TextPath
 from course import limits
 from course._validate import (
     as_curve,
-    as_float_array,
+    as_path_arrays,
     as_point,
     as_positive_float,
     describe,
@@ -53,7 +53,6 @@ __all__ = [
 
 #: matplotlib's bundled TrueType font: every installation has it.
 FONT = "DejaVu Sans"
-_CODE_NAMES = "MOVETO (1), LINETO (2), CURVE3 (3), CURVE4 (4), CLOSEPOLY (79) or STOP (0)"
 
 # Control points of the curve each code starts (a close is a line).
 _CODE_SIZES = np.zeros(256, dtype=np.int64)
@@ -158,6 +157,12 @@ class Curves:
         return _trusted(points, self.sizes)
 
 
+def _bounded(points: np.ndarray, sizes: np.ndarray) -> Curves:
+    """:func:`_trusted` for finite points whose coordinates are not bounded yet."""
+    require_within(points, "points", limits.MAX_COORDINATE)
+    return _trusted(points, sizes)
+
+
 def _trusted(points: np.ndarray, sizes: np.ndarray) -> Curves:
     """Curves of fields their maker built from checked input, without checking them again.
 
@@ -165,12 +170,6 @@ def _trusted(points: np.ndarray, sizes: np.ndarray) -> Curves:
     >= 1 that add up to P: what :meth:`Curves.__post_init__` checks.
     """
     return made(Curves, points=points, sizes=sizes)
-
-
-def _bounded(points: np.ndarray, sizes: np.ndarray) -> Curves:
-    """:func:`_trusted` for finite points whose coordinates are not bounded yet."""
-    require_within(points, "points", limits.MAX_COORDINATE)
-    return _trusted(points, sizes)
 
 
 def as_path(points: Any, name: str = "points") -> Curves:
@@ -269,69 +268,14 @@ def curves_of_path(path: Path, height: float | None = None, name: str = "points"
 
 
 def _curves_of_path(path: Path, height: float | None, name: str) -> Curves:
-    """:func:`curves_of_path` of a checked ``path`` and ``height``: checks its vertices."""
-    vertices = as_float_array(path.vertices, f"{name}.vertices")
-    if vertices.ndim != 2 or vertices.shape[1] != 2:
-        raise ValueError(
-            _(
-                "{name}.vertices must have shape (V, 2) in the plane; got shape {vertices_shape}"
-            ).format(name=name, vertices_shape=vertices.shape)
-        )
-    codes = path.codes
-    if codes is None:
-        codes = np.full(len(vertices), Path.LINETO, dtype=np.uint8)
-        codes[:1] = Path.MOVETO
-    codes = np.asarray(codes)
-    if codes.shape != (len(vertices),):
-        raise ValueError(
-            _(
-                "{name}.codes must have shape ({vertices_count},), one code per vertex; got shape "
-                "{codes_shape}"
-            ).format(name=name, vertices_count=len(vertices), codes_shape=codes.shape)
-        )
-    stop = np.flatnonzero(codes == Path.STOP)
-    if len(stop):
-        vertices, codes = vertices[: stop[0]], codes[: stop[0]]
+    """:func:`curves_of_path` of a ``Path`` and a checked ``height``: checks its arrays."""
+    vertices, codes = as_path_arrays(path, name, height)  # every vertex gathered below: checked
     if len(codes) == 0:
         return _trusted(np.zeros((0, 2)), np.zeros(0, dtype=np.int64))
-    known = np.isin(codes, [Path.MOVETO, Path.LINETO, Path.CURVE3, Path.CURVE4, Path.CLOSEPOLY])
-    if not known.all():
-        index = int(np.flatnonzero(~known)[0])
-        raise ValueError(
-            _("{name}.codes must hold only {most}; got code {codes} at vertex {index}").format(
-                name=name, most=_CODE_NAMES, codes=codes[index], index=index
-            )
-        )
-    if codes[0] != Path.MOVETO:
-        raise ValueError(
-            _("{name}.codes must start with MOVETO (1); got code {codes}").format(
-                name=name, codes=codes[0]
-            )
-        )
-    # CLOSEPOLY's vertex is ignored, whatever it holds (often 0 or NaN).
-    require_finite(vertices[codes != Path.CLOSEPOLY], f"{name}.vertices")
-    if height is not None:
-        vertices[:, 1] = height - vertices[:, 1]
     index = np.arange(len(codes))
     change = np.concatenate([[True], codes[1:] != codes[:-1]])
     run = np.cumsum(change) - 1
     position = index - np.flatnonzero(change)[run]
-    lengths, run_codes = np.bincount(run), codes[change]
-    broken = ((run_codes == Path.CURVE3) & (lengths % 2 != 0)) | (
-        (run_codes == Path.CURVE4) & (lengths % 3 != 0)
-    )
-    if broken.any():
-        raise ValueError(
-            _(
-                "{name}.codes: CURVE3 vertices come in pairs and CURVE4 vertices in threes; a run "
-                "of {length} code-{code} vertices ends at vertex {end}"
-            ).format(
-                name=name,
-                length=lengths[broken][0],
-                code=run_codes[broken][0],
-                end=int(np.cumsum(lengths)[broken][0]) - 1,
-            )
-        )
     subpath_start = np.maximum.accumulate(np.where(codes == Path.MOVETO, index, 0))
     command = (
         (codes == Path.LINETO)
@@ -354,8 +298,7 @@ def _curves_of_path(path: Path, height: float | None, name: str) -> Curves:
     gather = np.where(offsets == 0, current[command_of], at[command_of] + offsets - 1)
     closing_end = closing[command_of] & (offsets == 1)
     gather = np.where(closing_end, subpath_start[at][command_of], gather)
-    # Finite: no vertex a close holds is gathered, and height is at most limits.LARGEST.
-    return _bounded(vertices[gather], sizes)
+    return _trusted(vertices[gather], sizes)
 
 
 # --- paths for the lessons ----------------------------------------------------------

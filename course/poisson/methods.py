@@ -218,10 +218,8 @@ def _iterates(problem: PoissonProblem, method: str, omega: float) -> Iterator[np
 
 
 def _sweeps(problem: PoissonProblem, method: str, omega: float) -> Iterator[np.ndarray]:
-    values, region, source = problem.planes()
-    if method == "jacobi":
-        return solvers.jacobi_sweeps(values, region, source)
-    return solvers.sor_sweeps(values, region, source, omega)
+    kind = "jacobi" if method == "jacobi" else "sor"
+    return solvers.sweeps(*problem.planes(), kind, omega)
 
 
 # --- solving ----------------------------------------------------------------

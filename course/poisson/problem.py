@@ -11,13 +11,14 @@ channel order are in :mod:`course.poisson.windows`.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from course import limits
-from course._validate import as_choice, as_float_array, as_int, describe, require_finite
+from course._validate import as_choice, as_finite_array, as_int, describe, require_finite
 from course.i18n import _
 from course.poisson import solvers
 from course.poisson._build import clone_problem_of, inpaint_problem_of, paste
@@ -193,8 +194,16 @@ class PoissonProblem:
 
         A float64 array is checked where it lies (the callers only read it).
         """
-        keep = isinstance(image, np.ndarray) and image.dtype == np.float64
-        array = image if keep else as_float_array(image, name)
+        if isinstance(image, np.ndarray) and image.dtype == np.float64:
+            self._require_window(image, name)
+            require_finite(image, name)
+            return image
+        return as_finite_array(
+            image, name, shape=functools.partial(self._require_window, name=name)
+        )
+
+    def _require_window(self, array: np.ndarray, name: str) -> None:
+        """ValueError unless ``array`` is an image of the problem's kind holding its window."""
         kind = "(H, W)" if self.values.ndim == 2 else "(H, W, 3)"
         if array.ndim != self.values.ndim or array.shape[2:] != self.values.shape[2:]:
             raise ValueError(
@@ -216,19 +225,17 @@ class PoissonProblem:
                     name=name, array_size=array.shape[:2], height=height, width=width, x=x, y=y
                 )
             )
-        require_finite(array, name)
-        return array
 
     def _as_solution(self, solution: Any) -> np.ndarray:
-        array = as_float_array(solution, "solution")
+        return as_finite_array(solution, "solution", shape=self._require_solution_shape)
+
+    def _require_solution_shape(self, array: np.ndarray) -> None:
         if array.shape != self.values.shape:
             raise ValueError(
                 _(
                     "solution must have the problem's shape {values_shape}; got {array_shape}"
                 ).format(values_shape=self.values.shape, array_shape=array.shape)
             )
-        require_finite(array, "solution")
-        return array
 
 
 def clone_problem(
@@ -298,15 +305,16 @@ def paste_window(problem: PoissonProblem, image: Any, window: Any) -> np.ndarray
     """
     problem = as_problem(problem)
     image = problem._as_image(image, "image")
-    window = as_float_array(window, "window")
-    if window.shape != problem.values.shape:
-        raise ValueError(
-            _("window must have the problem's shape {values_shape}; got {window_shape}").format(
-                values_shape=problem.values.shape, window_shape=window.shape
+
+    def require_problem_shape(array: np.ndarray) -> None:
+        if array.shape != problem.values.shape:
+            raise ValueError(
+                _("window must have the problem's shape {values_shape}; got {window_shape}").format(
+                    values_shape=problem.values.shape, window_shape=array.shape
+                )
             )
-        )
-    require_finite(window, "window")
-    return paste(problem, image, window)
+
+    return paste(problem, image, as_finite_array(window, "window", shape=require_problem_shape))
 
 
 def as_problem(problem: Any) -> PoissonProblem:

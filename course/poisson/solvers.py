@@ -68,6 +68,7 @@ __all__ = [
     "solve_direct",
     "solve_dst",
     "sor_sweeps",
+    "sweeps",
 ]
 
 UNCHECKED = True  # kernels for checked callers; see the module docstring
@@ -251,6 +252,21 @@ def _sor_sweeps_loop(
                         average = (total + source[c, y, x]) * 0.25
                         u[c, y, x] = (1.0 - omega) * u[c, y, x] + omega * average
         yield u
+
+
+def sweeps(
+    values: np.ndarray, region: np.ndarray, source: np.ndarray, method: str, omega: float = 1.0
+) -> Iterator[np.ndarray]:
+    """:func:`jacobi_sweeps` for ``method="jacobi"``, else :func:`sor_sweeps`: the default forms.
+
+    Examples
+    --------
+    >>> next(sweeps(np.eye(3)[None], np.pad([[True]], 1), np.zeros((1, 3, 3)), "sor", 1.5))[0, 1]
+    array([ 0. , -0.5,  0. ])
+    """
+    if method == "jacobi":
+        return _jacobi_sweeps_slices(values, region, source)
+    return _sor_sweeps_triangular_solve(values, region, source, omega)
 
 
 @with_limited_threads

@@ -14,7 +14,14 @@ from typing import Any
 
 import numpy as np
 
-from course._validate import as_float_array, as_int, as_shape, describe, require_finite
+from course._validate import (
+    as_corner,
+    as_finite_array,
+    as_float_array,
+    as_shape,
+    describe,
+    require_finite,
+)
 from course.i18n import _
 from course.poisson._layout import channels_back, clipped_window
 from course.poisson.problem import PoissonProblem, as_problem
@@ -37,7 +44,7 @@ def window_in(problem: PoissonProblem, image: Any, corner: Any) -> np.ndarray:
     """
     problem = as_problem(problem)
     array = as_float_array(image, "image")
-    x0, y0 = _as_corner(corner, "corner")
+    x0, y0 = as_corner(corner, "corner")
     x = problem.corner[0] - x0
     y = problem.corner[1] - y0
     height, width = problem.region.shape
@@ -84,28 +91,17 @@ def window_at(image: Any, corner: Any, shape: Any) -> np.ndarray:
     >>> window_at(image, (-1, -1), (2, 3))   # one row and two columns on the image
     array([[0., 1.]])
     """
-    array = as_float_array(image, "image")
-    if array.ndim not in (2, 3):
-        raise ValueError(
-            _("image must be (H, W) or (H, W, C); got shape {array_shape}").format(
-                array_shape=array.shape
-            )
-        )
-    x, y = _as_corner(corner, "corner")
-    height, width = as_shape(shape, "shape")
-    window = clipped_window(array, (x, y), (height, width))
-    require_finite(window, "image")
-    return window.copy()
 
-
-def _as_corner(corner: Any, name: str) -> tuple[int, int]:
-    if isinstance(corner, (str, bytes)) or not hasattr(corner, "__len__") or len(corner) != 2:
-        raise ValueError(
-            _("{name} must be a pair (x, y) of integers; got {corner}").format(
-                name=name, corner=describe(corner)
+    def the_window(array: np.ndarray) -> np.ndarray:
+        if array.ndim not in (2, 3):
+            raise ValueError(
+                _("image must be (H, W) or (H, W, C); got shape {array_shape}").format(
+                    array_shape=array.shape
+                )
             )
-        )
-    return as_int(corner[0], f"{name}[0] (x)"), as_int(corner[1], f"{name}[1] (y)")
+        return clipped_window(array, as_corner(corner, "corner"), as_shape(shape, "shape"))
+
+    return as_finite_array(image, "image", shape=the_window).copy()
 
 
 def planes_of(image: Any) -> np.ndarray:
@@ -116,15 +112,17 @@ def planes_of(image: Any) -> np.ndarray:
     >>> planes_of(np.zeros((2, 3, 3))).shape, planes_of(np.zeros((2, 3))).shape
     ((3, 2, 3), (1, 2, 3))
     """
-    array = as_float_array(image, "image")
+    array = as_finite_array(image, "image", shape=_require_image_layout)
+    return array[None] if array.ndim == 2 else np.ascontiguousarray(np.moveaxis(array, -1, 0))
+
+
+def _require_image_layout(array: np.ndarray) -> None:
     if array.ndim not in (2, 3) or 0 in array.shape:
         raise ValueError(
             _(
                 "image must be a non-empty (h, w) or (h, w, C) array; got shape {array_shape}"
             ).format(array_shape=array.shape)
         )
-    require_finite(array, "image")
-    return array[None] if array.ndim == 2 else np.ascontiguousarray(np.moveaxis(array, -1, 0))
 
 
 def image_of(planes: Any, like: Any) -> np.ndarray:
@@ -135,25 +133,28 @@ def image_of(planes: Any, like: Any) -> np.ndarray:
     >>> image_of(np.zeros((3, 2, 4)), np.zeros((2, 4, 3))).shape
     (2, 4, 3)
     """
-    array = as_float_array(planes, "planes")
-    if array.ndim != 3 or 0 in array.shape:
-        raise ValueError(
-            _("planes must be a non-empty (C, h, w) array; got shape {array_shape}").format(
-                array_shape=array.shape
+
+    def require_layout_of_like(array: np.ndarray) -> None:
+        if array.ndim != 3 or 0 in array.shape:
+            raise ValueError(
+                _("planes must be a non-empty (C, h, w) array; got shape {array_shape}").format(
+                    array_shape=array.shape
+                )
             )
-        )
-    layout = np.shape(like) if isinstance(like, np.ndarray) else None
-    if layout is None or len(layout) not in (2, 3):
-        raise TypeError(
-            _("like must be an (h, w) or (h, w, C) array; got {like}").format(like=describe(like))
-        )
-    expected = (1, *layout) if len(layout) == 2 else (layout[2], *layout[:2])
-    if array.shape != expected:
-        raise ValueError(
-            _(
-                "planes must have shape {expected}, channels first, for like of shape {layout}; "
-                "got {array_shape}"
-            ).format(expected=expected, layout=layout, array_shape=array.shape)
-        )
-    require_finite(array, "planes")
-    return channels_back(array, like)
+        layout = np.shape(like) if isinstance(like, np.ndarray) else None
+        if layout is None or len(layout) not in (2, 3):
+            raise TypeError(
+                _("like must be an (h, w) or (h, w, C) array; got {like}").format(
+                    like=describe(like)
+                )
+            )
+        expected = (1, *layout) if len(layout) == 2 else (layout[2], *layout[:2])
+        if array.shape != expected:
+            raise ValueError(
+                _(
+                    "planes must have shape {expected}, channels first, for like of shape "
+                    "{layout}; got {array_shape}"
+                ).format(expected=expected, layout=layout, array_shape=array.shape)
+            )
+
+    return channels_back(as_finite_array(planes, "planes", shape=require_layout_of_like), like)

@@ -17,6 +17,7 @@ import numpy as np
 from course import limits
 from course._validate import as_choice, as_point, as_points, as_shape
 from course.i18n import _
+from course.raster._lines import bresenham_closed_form, pixels_of, require_image_space
 from course.raster._paint import on_canvas
 from course.raster.triangles import hit_counts, triangle, triangle_coverage
 
@@ -68,21 +69,9 @@ def nearest_pixels(points: Any, rounding: str = "floor", shape: Any = None) -> n
     array([[0, 0]])
     """
     samples = as_points(points, bound=limits.MAX_COORDINATE)
-    if samples.shape[1] != 2:
-        raise ValueError(
-            _("points must have shape (K, 2) for image space; got {samples_shape}").format(
-                samples_shape=samples.shape
-            )
-        )
+    require_image_space(samples)
     rounding = as_choice(rounding, "rounding", ROUNDING)
-    if rounding == "floor":
-        pixels = np.floor(samples)
-    elif rounding == "round":
-        # cvRound rounds halves to even, like numpy.
-        pixels = np.rint(samples)
-    else:
-        pixels = np.trunc(samples)
-    pixels = pixels.astype(np.int64)
+    pixels = pixels_of(samples, rounding)
     if shape is not None:
         pixels = pixels[on_canvas(pixels, as_shape(shape))]
     return pixels
@@ -218,33 +207,7 @@ def _line_loop(
 
 def _line_closed_form(x0: int, y0: int, x1: int, y1: int) -> np.ndarray:
     """Bresenham in closed form: step i moves the minor axis by round(i * a / n)."""
-    dx, dy = x1 - x0, y1 - y0
-    if abs(dx) >= abs(dy):
-        n, a, major0, major1, minor0, minor_step, major_column = abs(dx), abs(dy), x0, x1, y0, dy, 0
-    else:
-        n, a, major0, major1, minor0, minor_step, major_column = abs(dy), abs(dx), y0, y1, x0, dx, 1
-    if n == 0:
-        return np.array([[x0, y0]], dtype=np.int64)
-    step = 1 if major1 >= major0 else -1
-    pixels = np.empty((n + 1, 2), dtype=np.int64)
-    pixels[:, major_column] = np.arange(major0, major1 + step, step)
-    if a == 0:
-        pixels[:, 1 - major_column] = minor0
-        return pixels
-    # Step i is i * a / n along the minor axis, rounded to nearest with halves
-    # toward p0 (the loop's choice, as the tests check): minor0 plus
-    # floor((2 i a + n - 1) / (2 n)) going up, minor0 minus it going down.
-    # Both are one floor division of an arithmetic sequence, with minor0
-    # folded into its start.
-    twice_n = 2 * n
-    if minor_step > 0:
-        start, stride = twice_n * minor0 + n - 1, 2 * a
-    else:
-        start, stride = twice_n * minor0 + n, -2 * a
-    minor = np.arange(start, start + (n + 1) * stride, stride, dtype=np.int64)
-    minor //= twice_n
-    pixels[:, 1 - major_column] = minor
-    return pixels
+    return bresenham_closed_form(x0, y0, x1, y1)
 
 
 def line_4connected(p0: Any, p1: Any, shape: Any = None) -> np.ndarray:

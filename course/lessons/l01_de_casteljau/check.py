@@ -39,10 +39,11 @@ from course.check.base import (
     hint,
     run_cases,
 )
-from course.check.exercises import exercise
+from course.check.exercises import exercise, public_name
 from course.check.hints import Hints
 from course.check.pictures import curve_picture
 from course.curves import bezier as library
+from course.curves import bezier_accuracy
 from course.curves.bezier import de_casteljau, de_casteljau_levels
 from course.curves.bezier_handouts import de_casteljau_reversed
 from course.i18n import N_, _
@@ -81,6 +82,8 @@ _LIBRARY_FUNCTIONS = (
     library.bernstein_basis,
     library.split,
     library.sample_uniform,
+    bezier_accuracy.bezier_exact,
+    bezier_accuracy.bezier_power,
 )
 
 
@@ -89,9 +92,9 @@ def library_curves() -> dict[Any, str]:
     current language)."""
     return {
         function: _(
-            "your function calls course.curves.bezier.{function}, the library's own answer: this "
-            "exercise writes the curve itself, from the interpolation step"
-        ).format(function=function.__name__)
+            "your function calls {function}, the library's own answer: this exercise writes the "
+            "curve itself, from the interpolation step"
+        ).format(function=public_name(function))
         for function in _LIBRARY_FUNCTIONS
     }
 

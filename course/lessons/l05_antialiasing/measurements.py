@@ -21,7 +21,7 @@ import functools
 import numpy as np
 from matplotlib.figure import Figure
 
-from course._validate import as_positive_float, describe, require_step_samples
+from course._validate import as_positive_float, describe
 from course.antialias import DEFAULT_STEP, arc_length_step, render
 from course.antialias.coverage import reference
 from course.antialias.curve_quality import (
@@ -34,6 +34,7 @@ from course.antialias.curve_quality import (
 )
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
+from course.limits import require_step_samples
 from course.metrics import rmse
 from course.widgets.base import pad
 from course.widgets.picture import Still

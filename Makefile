@@ -20,8 +20,35 @@ TEACHER_SITE := build/site-teacher
 # MathJax for the website's formulas: npm's mathjax package, pinned.
 MATHJAX_VERSION := 3.2.2
 MATHJAX := build/mathjax-$(MATHJAX_VERSION)
+# Node.js, for its npm: `make site` fetches MathJax with `npm pack` (any Node.js with npm);
+# the hub's proxy comes from `npm ci` in hub/, and configurable-http-proxy 5.3.0 needs
+# Node.js 20 or newer (NODE_HUB). On Node.js 20, npm ci warns EBADENGINE for commander 15,
+# which asks for 22.12: the proxy imports it as a module, which Node.js 20 runs.
+NODE_HUB := 20
+# node -e '$(NODE_AT_LEAST)' MINIMUM: exit status 0 when node's version is MINIMUM or newer.
+NODE_AT_LEAST = const [a, b] = process.versions.node.split(".").map(Number); \
+	const [c, d = 0] = process.argv[1].split(".").map(Number); \
+	process.exit(a > c || (a === c && b >= d) ? 0 : 1)
+# A recipe line: $(call NODE_CHECK,MINIMUM,TARGET) stops TARGET with a clear message when
+# node or npm is missing, or node is older than MINIMUM (MAJOR or MAJOR.MINOR; empty: any).
+NODE_CHECK = @node_version=$$(node --version 2>/dev/null); npm_version=$$(npm --version 2>/dev/null); \
+	if [ -z "$$node_version" ] || [ -z "$$npm_version" ]; then \
+		echo "make $(2): needs Node.js$(if $(1), $(1) or newer) with its npm; node is" \
+			"$${node_version:-missing}, npm $${npm_version:-missing}." >&2; \
+		echo "  Install Node.js from https://nodejs.org (or your system's nodejs and npm" \
+			"packages), then run make $(2) again." >&2; \
+		exit 1; \
+	fi; \
+	if [ -n "$(1)" ] && ! node -e '$(NODE_AT_LEAST)' '$(1)'; then \
+		echo "make $(2): needs Node.js $(1) or newer; node is $$node_version ($$(command -v node))." >&2; \
+		echo "  Install a newer one (https://nodejs.org, or nvm), first on PATH, then run" \
+			"make $(2) again." >&2; \
+		exit 1; \
+	fi
+
 # The editions' language: `make lab COURSE_LANG=zh-CN` (lab, teach, app, student, nbgrader,
-# site). Not LANG, which every shell sets for its own messages. English by default.
+# hub; site builds both languages, test tests both). Not LANG, which every shell sets for its
+# own messages. English by default.
 COURSE_LANG ?= en
 # The folder of a language's edition inside an English one's: nothing for English.
 LANG_DIR := $(if $(filter-out en,$(COURSE_LANG)),/$(COURSE_LANG),)
@@ -100,32 +127,34 @@ messages: $(VENV)/.test-installed
 	$(BIN)/pybabel compile -d course/locale -D course --statistics
 
 ## lab: for students: update the student edition in student/, open its course map in JupyterLab
-# COURSE_LANG=zh-CN (any target): the Chinese edition, student/zh-CN/, notebooks/zh-CN/ ...
+# COURSE_LANG=zh-CN (see COURSE_LANG above): the Chinese edition, student/zh-CN/, notebooks/zh-CN/
 # `python -m course lab` writes new and changed lessons into student/, never over one the
 # student edited (a changed lesson goes beside it), and adds --allow-root when run as root.
+# The servers' lines (lab, teach, app) hold no double quotes nor other shell syntax, so that
+# make runs them itself: through sh, Ctrl-C would end with "make: *** [lab] Interrupt".
 lab: $(VENV)/.lab-installed
 	@echo "make: JupyterLab opens at the course map; its address is printed below, under" \
-		"'Or copy and paste one of these URLs'. Stop it with Ctrl-C, twice."
-	$(BIN)/python -m course lab --language "$(COURSE_LANG)"
+		"'Or copy and paste one of these URLs'. To stop it: Ctrl-C, then y (or Ctrl-C again)."
+	$(BIN)/python -m course lab --language '$(COURSE_LANG)'
 
 ## teach: for teachers: the solved lessons in notebooks/, in JupyterLab
 teach: $(VENV)/.lab-installed
-	$(BIN)/python -m course lab --teacher --language "$(COURSE_LANG)"
+	$(BIN)/python -m course lab --teacher --language '$(COURSE_LANG)'
 
 ## app: the lessons as apps for a projector: Voila, code hidden, sliders live
 # python -m course app runs voila on notebooks/ (notebooks/zh-CN/ in Chinese), with $(PROMPT).
 app: $(VENV)/.app-installed
-	$(BIN)/python -m course app --language "$(COURSE_LANG)" --port $(APP_PORT)
+	$(BIN)/python -m course app --language '$(COURSE_LANG)' --port $(APP_PORT)
 
 ## student: write or update the student edition in student/; a student's edits are kept
 student: $(VENV)/.lab-installed
-	$(BIN)/python -m course student --language "$(COURSE_LANG)" --out student$(LANG_DIR)
+	$(BIN)/python -m course student --language '$(COURSE_LANG)' --out student$(LANG_DIR)
 
 ## nbgrader: write the nbgrader course folder build/nbgrader/ (see the README, For teachers)
 # Its source/ is rewritten from the lessons; release/, submitted/, the gradebook and an
 # nbgrader_config.py already there are left alone.
 nbgrader: $(VENV)/.grade-installed
-	$(BIN)/python -m course nbgrader --language "$(COURSE_LANG)" --out $(NBGRADER) --force
+	$(BIN)/python -m course nbgrader --language '$(COURSE_LANG)' --out $(NBGRADER) --force
 	@echo "make: the nbgrader course is in $(NBGRADER)/; from there, with .venv/bin on PATH:" \
 		"nbgrader generate_assignment 01_de_casteljau"
 
@@ -140,7 +169,7 @@ format: $(VENV)/.test-installed
 	$(BIN)/ruff check --fix $(SOURCES)
 
 ## test: ruff, unit and property tests, doctests, and every notebook with nbval
-test: lint
+test: lint $(VENV)/.hub-installed
 	$(BIN)/python -m pytest -n 2 --dist loadfile course tests \
 		--nbval --nbval-current-env --nbval-cell-timeout=300 $(NOTEBOOKS) $(TWINS)
 
@@ -166,6 +195,7 @@ site: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
 
 # MathJax, fetched once from npm's registry, then served by the site itself.
 $(MATHJAX)/es5/tex-mml-chtml.js:
+	$(call NODE_CHECK,,site)
 	rm -rf $(MATHJAX) && mkdir -p $(MATHJAX)
 	cd $(MATHJAX) && npm pack --silent mathjax@$(MATHJAX_VERSION) > /dev/null
 	tar -xzf $(MATHJAX)/mathjax-$(MATHJAX_VERSION).tgz -C $(MATHJAX) --strip-components=1
@@ -255,29 +285,33 @@ bench-browser: $(VENV)/.browser-installed $(VENV)/.test-installed $(CHROMIUM)
 	$(BIN)/python benchmarks/bench_browser_latency.py
 
 # A class on this machine: the hub's state (database, the students' folders, the student
-# edition they are seeded from) and its proxy from npm, pinned by hub/package-lock.json.
+# edition they are seeded from, nbgrader's exchange) and its proxy from npm, pinned by
+# hub/package-lock.json and installed in hub/ as docs/hub.md's server steps install it.
 HUB_DATA := build/hub
 HUB_PORT ?= 8000
 HUB_PASSWORD ?= trial
-HUB_PROXY := $(HUB_DATA)/node_modules/.bin/configurable-http-proxy
+HUB_PROXY := hub/node_modules/.bin/configurable-http-proxy
 ## hub: a JupyterHub for a trial class at http://127.0.0.1:8000 (any name, password 'trial')
 # hub/jupyterhub_config.py is the file a teacher copies to a server (docs/hub.md). The
 # edition is rebuilt at each start; a student's folder only ever gains the files it lacks.
+# The hub's settings are exported, so that its line holds no shell syntax: make runs it
+# itself, and Ctrl-C ends with the hub's own lines, not "make: *** [hub] Interrupt".
+hub: export COURSE_HUB_DATA := $(HUB_DATA)
+hub: export COURSE_HUB_PORT := $(HUB_PORT)
+hub: export COURSE_HUB_PASSWORD := $(HUB_PASSWORD)
 hub: $(VENV)/.hub-installed $(HUB_PROXY)
-	$(BIN)/python -m course student --language "$(COURSE_LANG)" --out $(HUB_DATA)/student-edition --force
+	$(BIN)/python -m course student --language '$(COURSE_LANG)' --out $(HUB_DATA)/student-edition --force
 	@echo "make: the hub opens at http://127.0.0.1:$(HUB_PORT); log in with any name and" \
-		"the password '$(HUB_PASSWORD)'. Stop it with Ctrl-C."
-	PATH="$(CURDIR)/$(BIN):$$PATH" COURSE_HUB_DATA=$(HUB_DATA) COURSE_HUB_PORT=$(HUB_PORT) \
-		COURSE_HUB_PASSWORD=$(HUB_PASSWORD) $(BIN)/jupyterhub -f hub/jupyterhub_config.py
+		"the password '$(HUB_PASSWORD)' ('teacher' is the teacher). Stop it with Ctrl-C."
+	$(BIN)/jupyterhub -f hub/jupyterhub_config.py
 
 ## bench-hub: simulated students on the hub: memory, drag round trips, N = 1 to 30 (minutes)
 bench-hub: $(VENV)/.hub-installed $(HUB_PROXY)
 	$(BIN)/python benchmarks/bench_hub.py
 
 $(HUB_PROXY): hub/package.json hub/package-lock.json
-	mkdir -p $(HUB_DATA)
-	cp hub/package.json hub/package-lock.json $(HUB_DATA)/
-	cd $(HUB_DATA) && npm ci --no-audit --no-fund
+	$(call NODE_CHECK,$(NODE_HUB),hub)
+	cd hub && npm ci --no-audit --no-fund
 	touch $@
 
 # uv's `pip compile`, pinned, in the venv. The versions already in the lock are kept unless

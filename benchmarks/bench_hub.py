@@ -76,7 +76,8 @@ REPOSITORY = Path(__file__).resolve().parent.parent
 CONFIG = REPOSITORY / "hub" / "jupyterhub_config.py"
 LESSON = REPOSITORY / "notebooks" / "01_de_casteljau.ipynb"
 APP_CELL = "DeCasteljauApp()"
-PROXY = REPOSITORY / "build" / "hub" / "node_modules" / ".bin" / "configurable-http-proxy"
+# `npm ci` in hub/ (make hub): the configuration finds it beside itself.
+PROXY = REPOSITORY / "hub" / "node_modules" / ".bin" / "configurable-http-proxy"
 COUNTS = (1, 5, 10, 20, 30)
 MOVE_INTERVAL = 0.05  # 20 moves a second
 DRAG_SECONDS = 10.0
@@ -137,8 +138,6 @@ class Hub:
             check=True,
             capture_output=True,
         )
-        (self.data / "node_modules" / ".bin").mkdir(parents=True)
-        (self.data / "node_modules" / ".bin" / "configurable-http-proxy").symlink_to(PROXY)
         env = {
             **os.environ,
             "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}",

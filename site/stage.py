@@ -38,10 +38,11 @@ from pathlib import Path
 from course.classroom.edition import (
     EXERCISE_TAG,
     SOLUTION_TAG,
-    hidden_note,
+    hidden_cell,
     reveals,
 )
 from course.classroom.notebooks import DEFAULT_LANGUAGE, LANGUAGES, language_folder
+from course.classroom.release import without_source_import
 from course.classroom.stubs import exercise_stub
 
 REPOSITORY = Path(__file__).resolve().parent.parent
@@ -143,18 +144,17 @@ def student_cells(cells: list[dict], language: str = DEFAULT_LANGUAGE) -> list[d
     for number, cell in enumerate(cells):
         tags = cell.get("metadata", {}).get("tags", [])
         if reveals(cell):
-            cell = {
-                "cell_type": "markdown",
-                "id": cell.get("id", f"hidden-{number}"),
-                "metadata": {"tags": ["hidden"]},
-                "source": hidden_note(language),
-            }
+            cell = hidden_cell(cell, number, language)
+        elif cell["cell_type"] == "code" and without_source_import(cell) is None:
+            continue
         elif cell["cell_type"] == "code" and SOLUTION_TAG in tags:
             cell = dict(cell, source=exercise_stub(text(cell["source"])), outputs=[])
             cell["execution_count"] = None
             cell["metadata"] = dict(
                 cell["metadata"], tags=[EXERCISE_TAG if t == SOLUTION_TAG else t for t in tags]
             )
+        elif cell["cell_type"] == "code":
+            cell = without_source_import(cell)
         shown.append(cell)
     return shown
 

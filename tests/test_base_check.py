@@ -63,12 +63,24 @@ def test_the_picture_is_drawn_for_the_failing_case_only():
 
 def test_in_a_notebook_the_report_shows_as_text_then_picture(monkeypatch):
     shown = []
-    monkeypatch.setattr("IPython.display.display", lambda data, raw: shown.append(data))
+    monkeypatch.setattr(
+        "IPython.display.display",
+        lambda data, raw, metadata=None: shown.append((data, metadata) if metadata else data),
+    )
     CheckResult("x", False, 1, "case 1 is wrong", picture=b"\x89PNG")._ipython_display_()
-    assert shown == [{"text/plain": "FAIL x: case 1 is wrong"}, {"image/png": b"\x89PNG"}]
+    outcome = {
+        "exercise": "x",
+        "passed": False,
+        "mistake": None,
+        "report": "FAIL x: case 1 is wrong",
+    }
+    assert shown == [
+        ({"text/plain": "FAIL x: case 1 is wrong"}, {"course": {"check": outcome}}),
+        {"image/png": b"\x89PNG"},
+    ]  # the outcome rides in the text's metadata, for the class's mistakes report
     shown.clear()
     CheckResult("x", True, 3, "all 3 cases pass")._ipython_display_()
-    assert shown == [{"text/plain": "PASS x: all 3 cases pass"}]
+    assert [entry[0] for entry in shown] == [{"text/plain": "PASS x: all 3 cases pass"}]
 
 
 def test_the_budget_stops_runaway_recursion_and_forbidden_calls_then_steps_aside():

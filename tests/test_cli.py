@@ -1,9 +1,17 @@
 """course.classroom.cli: ``python -m course``, and what each command has to load."""
 
+import importlib.util
 import json
+import os
 import re
+import select
+import signal
+import socket
 import subprocess
 import sys
+import time
+import urllib.error
+import urllib.request
 from pathlib import Path
 
 import pytest
@@ -24,6 +32,30 @@ except SystemExit as stop:
 heavy = ("ipywidgets", "matplotlib", "PIL", "numpy", "scipy")
 print(sorted(name for name in heavy if name in sys.modules), code, file=sys.stderr)
 """
+
+
+class Servers(list):
+    """``subprocess.Popen``'s stand-in for the servers: keeps each command; each stops at once."""
+
+    def __call__(self, command: list[str]) -> "Servers":
+        self.append(command)
+        return self
+
+    def __enter__(self) -> "Servers":
+        return self
+
+    def __exit__(self, *exception) -> None:
+        return None
+
+    def wait(self) -> int:
+        return 0
+
+
+def servers(monkeypatch) -> Servers:
+    """The servers ``python -m course lab`` and ``app`` start, none of them really."""
+    started = Servers()
+    monkeypatch.setattr("subprocess.Popen", started)
+    return started
 
 
 def run_course(*args: str) -> tuple[list[str], int]:
@@ -129,8 +161,7 @@ def test_lab_takes_over_a_student_folder_written_before_the_manifest(tmp_path, m
     old = tmp_path / "student" / "01_first.ipynb"
     old.parent.mkdir()
     old.write_text(json.dumps({"cells": [], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}))
-    started = []
-    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    started = servers(monkeypatch)
     assert main(["lab", "--notebooks", str(lessons), "--no-browser"]) == 0
     assert started and started[0][-1] == "--no-browser"
     assert json.loads(old.read_text())["cells"] == []  # the old copy is kept as the student's
@@ -150,8 +181,7 @@ def test_lab_in_chinese_writes_the_chinese_student_edition_and_opens_its_map(
     tmp_path, monkeypatch, capsys
 ):
     lessons = twin_folder(tmp_path)
-    started = []
-    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    started = servers(monkeypatch)
     monkeypatch.delenv("COURSE_LANG", raising=False)
     assert main(["lab", "--notebooks", str(lessons), "--language", "zh-CN"]) == 0
     chinese = json.loads((tmp_path / "student" / "zh-CN" / "00_index.ipynb").read_text())
@@ -183,8 +213,7 @@ def test_an_unknown_language_is_one_line_exit_2_naming_the_choices(
     tmp_path, monkeypatch, capsys, arguments, variable, named
 ):
     lessons = twin_folder(tmp_path)
-    started = []
-    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    started = servers(monkeypatch)
     if variable is None:
         monkeypatch.delenv("COURSE_LANG", raising=False)
     else:
@@ -201,16 +230,16 @@ def test_an_unknown_language_is_one_line_exit_2_naming_the_choices(
 
 def test_app_serves_a_languages_lessons_in_voila_with_the_prompt_connection(tmp_path, monkeypatch):
     lessons = twin_folder(tmp_path)
-    started = []
-    monkeypatch.setattr("subprocess.call", lambda command: started.append(command) or 0)
+    started = servers(monkeypatch)
     monkeypatch.delenv("COURSE_LANG", raising=False)
     assert (
         main(["app", "--notebooks", str(lessons), "--port", "9000", "--show_tracebacks=True"]) == 0
     )
     assert main(["app", "--notebooks", str(lessons), "--language", "zh-CN"]) == 0
     english, chinese = started
-    assert english[1:4] == ["-m", "voila", str(lessons)]
-    assert chinese[1:4] == ["-m", "voila", str(lessons / "zh-CN")]
+    # Each starts through the module that spares a Ctrl-C during start-up its traceback.
+    assert english[1:5] == ["-m", "course.classroom.foreground", "voila", str(lessons)]
+    assert chinese[1:5] == ["-m", "course.classroom.foreground", "voila", str(lessons / "zh-CN")]
     assert "--port=9000" in english and "--show_tracebacks=True" in english
     assert "--port=8866" in chinese
     for command in started:
@@ -225,8 +254,25 @@ def test_make_passes_course_lang_to_every_edition_and_never_reads_lang():
     makefile = (Path(__file__).resolve().parent.parent / "Makefile").read_text()
     assert "\nCOURSE_LANG ?= en\n" in makefile
     for command in ("lab", "lab --teacher", "app", "student", "nbgrader"):
-        assert f'-m course {command} --language "$(COURSE_LANG)"' in makefile, command
+        # Single quotes: make runs the line itself, not through sh (see the Ctrl-C test).
+        assert f"-m course {command} --language '$(COURSE_LANG)'" in makefile, command
     assert "$(LANG)" not in makefile and "${LANG}" not in makefile
+
+
+def test_the_readme_names_only_targets_that_take_course_lang():
+    """``make test`` and ``make site`` ignore COURSE_LANG (both do both languages)."""
+    repository = Path(__file__).resolve().parent.parent
+    makefile = (repository / "Makefile").read_text()
+    readme = (repository / "README.md").read_text(encoding="utf-8")
+    taking = set(
+        re.findall(
+            r"^(\w[\w-]*):.*\n(?:\t.*\n)*?\t.*--language '\$\(COURSE_LANG\)'",
+            makefile,
+            re.MULTILINE,
+        )
+    )
+    named = set(re.findall(r"make (\w[\w-]*) COURSE_LANG=zh-CN", readme))
+    assert {"lab", "teach", "app", "student", "nbgrader"} <= named <= taking, (named, taking)
 
 
 def test_the_english_edition_goes_beside_a_chinese_one_written_first(tmp_path, monkeypatch):
@@ -243,6 +289,21 @@ def test_the_english_edition_goes_beside_a_chinese_one_written_first(tmp_path, m
     (tmp_path / "other").mkdir()
     (tmp_path / "other" / "notes.txt").write_text("mine")
     assert main(["student", "--notebooks", str(lessons), "--out", str(tmp_path / "other")]) == 2
+
+
+def test_student_without_out_writes_student_beside_the_lessons_as_make_student(
+    tmp_path, monkeypatch
+):
+    """The README's ``python -m course student``: student/, student/zh-CN/ in Chinese."""
+    lessons = twin_folder(tmp_path)
+    monkeypatch.delenv("COURSE_LANG", raising=False)
+    assert main(["student", "--notebooks", str(lessons)]) == 0
+    assert main(["student", "--notebooks", str(lessons), "--language", "zh-CN"]) == 0
+    assert main(["student", "--notebooks", str(lessons)]) == 0  # again: an update
+    assert (tmp_path / "student" / "00_index.ipynb").is_file()
+    assert (tmp_path / "student" / "zh-CN" / "00_index.ipynb").is_file()
+    with pytest.raises(SystemExit):
+        main(["nbgrader", "--notebooks", str(lessons)])  # where a course goes: say it
 
 
 def test_a_chinese_editions_errors_are_chinese_and_the_library_is_english_after(
@@ -271,3 +332,137 @@ def test_a_chinese_editions_errors_are_chinese_and_the_library_is_english_after(
     assert capsys.readouterr().err == (
         f"python -m course student: out: expected a folder; got the file {afile}\n"
     )
+
+
+# Ctrl-C, as a terminal sends it: SIGINT to every process of the foreground group, here the
+# command and the server it started (its own session, so pytest is spared).
+POSIX_ONLY = pytest.mark.skipif(os.name != "posix", reason="process groups and ptys are POSIX")
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+def start_server(tmp_path: Path, command: str, port: int, **streams) -> subprocess.Popen:
+    """``python -m course lab --no-browser`` or ``app`` on a free port, on two tiny lessons."""
+    lessons = tmp_path / "notebooks"
+    lessons.mkdir()
+    write_notebook(lessons / "00_index.ipynb", "# Course map")
+    write_notebook(lessons / "01_first.ipynb", "# First")
+    options = {
+        "lab": ["--no-browser", f"--ServerApp.port={port}", "--ServerApp.port_retries=0"],
+        "app": ["--port", str(port)],
+    }[command]
+    environment = {k: v for k, v in os.environ.items() if k != "COURSE_LANG"}
+    environment |= {"JUPYTER_CONFIG_DIR": str(tmp_path / "config")}
+    environment |= {"JUPYTER_RUNTIME_DIR": str(tmp_path / "runtime")}
+    return subprocess.Popen(
+        [sys.executable, "-m", "course", command, "--notebooks", str(lessons), *options],
+        cwd=tmp_path,
+        env=environment,
+        start_new_session=True,
+        **streams,
+    )
+
+
+def wait_until_up(server: subprocess.Popen, url: str, log) -> None:
+    deadline = time.monotonic() + 120
+    while True:
+        assert server.poll() is None, log()
+        try:
+            with urllib.request.urlopen(url, timeout=5):
+                return
+        except urllib.error.HTTPError:
+            return  # it answers: up (JupyterLab asks for its token)
+        except (urllib.error.URLError, ConnectionError, TimeoutError):
+            assert time.monotonic() < deadline, log()
+            time.sleep(0.3)
+
+
+@POSIX_ONLY
+@pytest.mark.parametrize("command", ["lab", "app"])
+def test_ctrl_c_stops_the_server_without_a_traceback(tmp_path, command):
+    """Without a terminal, as in a service's log: one Ctrl-C stops the server, status 0."""
+    if command == "app" and importlib.util.find_spec("voila") is None:
+        pytest.skip("Voila is in the app set, not installed here")
+    port = free_port()
+    log = tmp_path / "server.log"
+    with log.open("w") as output:
+        server = start_server(
+            tmp_path, command, port, stdout=output, stderr=subprocess.STDOUT, text=True
+        )
+    try:
+        wait_until_up(server, f"http://127.0.0.1:{port}/", log.read_text)
+        os.killpg(server.pid, signal.SIGINT)
+        assert server.wait(timeout=15) == 0, log.read_text()
+    finally:
+        if server.poll() is None:
+            os.killpg(server.pid, signal.SIGKILL)
+            server.wait()
+    said = log.read_text()
+    assert "Traceback" not in said and "KeyboardInterrupt" not in said, said
+    assert ("Interrupted..." if command == "lab" else "[Voila] Stopping...") in said
+
+
+@POSIX_ONLY
+def test_in_a_terminal_ctrl_c_asks_jupyterlabs_question_and_y_stops_it(tmp_path):
+    """The README's words: Ctrl-C, then y; this command waits for the answer, alive."""
+    port = free_port()
+    controller, terminal = os.openpty()
+    server = start_server(tmp_path, "lab", port, stdin=terminal, stdout=terminal, stderr=terminal)
+    os.close(terminal)
+    said = b""
+
+    def read(until: bytes, seconds: float) -> bytes:
+        nonlocal said
+        deadline = time.monotonic() + seconds
+        while until not in said and time.monotonic() < deadline:
+            if select.select([controller], [], [], 0.2)[0]:
+                try:
+                    said += os.read(controller, 65536)
+                except OSError:  # the terminal closed: every process of it ended
+                    break
+        return said
+
+    try:
+        wait_until_up(server, f"http://127.0.0.1:{port}/", lambda: read(b"", 1).decode())
+        read(b"twice to skip confirmation", 60)
+        os.killpg(server.pid, signal.SIGINT)
+        assert b"Shut down this Jupyter server (y/[n])?" in read(b"(y/[n])?", 15)
+        assert server.poll() is None, "the first Ctrl-C leaves the answer to the user"
+        os.write(controller, b"y\n")
+        assert b"Shutdown confirmed" in read(b"Shutdown confirmed", 15)
+        assert server.wait(timeout=15) == 0
+    finally:
+        if server.poll() is None:
+            os.killpg(server.pid, signal.SIGKILL)
+            server.wait()
+        os.close(controller)
+    assert b"Traceback" not in said and b"KeyboardInterrupt" not in said, said.decode()
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text(encoding="utf-8")
+    assert (
+        "press Ctrl-C in that terminal: JupyterLab asks `Shut down this Jupyter server "
+        "(y/[n])?`; answer `y` and Enter, or press Ctrl-C again"
+    ) in " ".join(readme.split())
+
+
+@POSIX_ONLY
+def test_ctrl_c_while_the_server_starts_ends_it_quietly_as_interrupted(tmp_path):
+    """Before JupyterLab answers Ctrl-C itself, the command ends as Ctrl-C ends a program."""
+    port = free_port()
+    server = start_server(
+        tmp_path, "lab", port, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
+    )
+    try:
+        # Its first line: the student edition written, JupyterLab starting (importing).
+        assert server.stdout.readline().startswith("student/: ")
+        os.killpg(server.pid, signal.SIGINT)
+        said, _ = server.communicate(timeout=15)
+    finally:
+        if server.poll() is None:
+            os.killpg(server.pid, signal.SIGKILL)
+            server.wait()
+    assert server.returncode == -signal.SIGINT, said
+    assert "Traceback" not in said and "KeyboardInterrupt" not in said, said

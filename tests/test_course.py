@@ -358,12 +358,13 @@ def test_test_files_are_named_for_what_they_test():
     A chapter ``course/lessons/lNN_<topic>/`` is tested by ``test_<topic>_check.py``,
     ``test_<topic>_apps.py`` and ``test_<topic>_figures.py``; the shared machinery by
     ``test_<module>_check.py`` (``course/check/``) and ``test_<module>_widgets.py``
-    (``course/widgets/``). Five test the whole package: ``test_course.py`` (its layout),
+    (``course/widgets/``). Six test the whole package: ``test_course.py`` (its layout),
     ``test_fuzz.py`` (every public callable, given bad input), ``test_figure_bounds.py``
     (every figure's size bounds), ``test_mutants.py`` (every exercise's checker against the
-    slips of its answer) and ``test_install.py`` (make, the locks, the README's commands).
+    slips of its answer), ``test_install.py`` (make, the locks, the README's commands) and
+    ``test_hub.py`` (docs/hub.md's server steps, on a real hub).
     """
-    whole = {"course", "fuzz", "figure_bounds", "mutants", "install"}
+    whole = {"course", "fuzz", "figure_bounds", "mutants", "install", "hub"}
     stems = {name.rsplit(".", 1)[-1] for name in MODULES} | whole
     chapters = {
         name.split(".")[2].split("_", 1)[1]
@@ -427,6 +428,7 @@ STANDARD_LIBRARY_ONLY = [
         "gallery",
         "notebooks",
         "registry",
+        "release",
         "stubs",
     )
 ] + ["course.classroom.source", "course.classroom", "course.__main__", "course"]

@@ -22,10 +22,10 @@ from course.classroom.edition import (
     hidden_note,
     reveals,
     solution_cells,
-    student_notebook,
 )
 from course.classroom.edition_folder import MANIFEST, write_student_edition
 from course.classroom.notebooks import notebooks
+from course.classroom.release import EXERCISE_POINTS, exercises, student_notebook
 from course.classroom.stubs import BEGIN_SOLUTION, END_SOLUTION, STUB_LINE, exercise_stub
 
 SOLUTION = '''import math
@@ -109,26 +109,45 @@ def test_cells_that_print_source_or_solve_a_variant_reveal_a_solution():
     assert not reveals({"cell_type": "markdown", "metadata": {}, "source": "source_of(f)"})
 
 
-def test_student_notebook_replaces_solutions_hides_reveals_and_leaves_the_input_alone():
+def test_student_notebook_is_nbgraders_release_and_leaves_the_input_alone():
+    """Each exercise: its stub in an answer cell, its check in a locked cell under it; a cell
+    that reveals an answer is a note, the source printer's import is gone, outputs cleared."""
     for book in notebooks(index=True):
         original = json.loads(book.path.read_text(encoding="utf-8"))
         untouched = copy.deepcopy(original)
         student = student_notebook(original)
         assert original == untouched
         assert solution_cells(student) == []
-        assert len(student["cells"]) == len(original["cells"])
-        for before, after in zip(original["cells"], student["cells"], strict=True):
+        assert "source_of" not in json.dumps(student)
+        by_cell = {exercise.cell: exercise for exercise in exercises(original)}
+        shown = iter(student["cells"])
+        for index, before in enumerate(original["cells"]):
+            text = "".join(before["source"])
+            if before["cell_type"] == "code" and not reveals(before):
+                text = "\n".join(
+                    line for line in text.split("\n") if "import source_of" not in line
+                ).strip("\n")
+                if not text.strip():
+                    continue  # only the source printer's import: no cell
+            after = next(shown)
             if reveals(before):
                 assert after["cell_type"] == "markdown" and after["source"] == HIDDEN_NOTE
+            elif index in by_cell:
+                exercise = by_cell[index]
+                answer = "\n".join(text.splitlines()[: exercise.check_line - 1]).rstrip()
+                assert "exercise" in after["metadata"]["tags"]
+                assert after["source"] == exercise_stub(answer)
+                assert after["metadata"]["nbgrader"]["grade_id"] == exercise.function
+                check = next(shown)
+                assert check["source"].endswith(f"{exercise.check}.graded()")
+                assert check["metadata"]["editable"] is False
+                assert check["metadata"]["nbgrader"]["points"] == EXERCISE_POINTS
             elif after["cell_type"] == "code":
                 assert after["outputs"] == [] and after["execution_count"] is None
-                if "solution" in before["metadata"].get("tags", []):
-                    assert "exercise" in after["metadata"]["tags"]
-                    assert after["source"] == exercise_stub("".join(before["source"]))
-                else:
-                    assert after["source"] == before["source"]
+                assert "".join(after["source"]).strip("\n") == text
             else:
                 assert after == before
+        assert next(shown, None) is None
         nbformat.validate(nbformat.from_dict(student))
 
 
@@ -183,19 +202,23 @@ def test_rebuilding_the_edition_never_overwrites_a_students_work(tmp_path):
     assert again.unchanged == [lesson] and again.written == []
     # The student writes the function; a rebuild keeps it, and a new lesson is added.
     edit(lesson, "def f(x):\n    return x  # mine\n\n\ncheck.f(f)")
-    lesson_folder(lessons, "def f(x):\n    return x\n\n\ncheck.f(f)", "def g():\n    pass")
+    lesson_folder(
+        lessons, "def f(x):\n    return x\n\n\ncheck.f(f)", "def g():\n    pass\n\n\ncheck.g(g)"
+    )
     kept = write_student_edition(out, lessons)
     assert kept.kept == [lesson] and [p.name for p in kept.written] == ["02_lesson.ipynb"]
     assert "# mine" in lesson.read_text()
     # The lesson changes under the student's edits: the new one goes beside, and says so.
-    lesson_folder(lessons, "def f(x, y):\n    return x\n\n\ncheck.f(f)", "def g():\n    pass")
+    lesson_folder(
+        lessons, "def f(x, y):\n    return x\n\n\ncheck.f(f)", "def g():\n    pass\n\n\ncheck.g(g)"
+    )
     changed = write_student_edition(out, lessons)
     beside = out / "01_lesson.new.ipynb"
     assert changed.beside == [(lesson, beside)]
     assert "# mine" in lesson.read_text() and "def f(x, y)" in beside.read_text()
     assert "01_lesson.new.ipynb, beside it" in changed.lines()[0]
     # A lesson the student never edited is updated in place.
-    edit(lessons / "02_lesson.ipynb", "def g(y):\n    pass")
+    edit(lessons / "02_lesson.ipynb", "def g(y):\n    pass\n\n\ncheck.g(g)")
     updated = write_student_edition(out, lessons)
     assert out / "02_lesson.ipynb" in updated.written
     assert "def g(y)" in (out / "02_lesson.ipynb").read_text()
@@ -205,7 +228,11 @@ def test_rebuilding_the_edition_never_overwrites_a_students_work(tmp_path):
 
 
 def test_a_target_the_edition_cannot_write_is_refused_before_anything_is_written(tmp_path, capsys):
-    lessons = lesson_folder(tmp_path / "lessons", "def f():\n    pass", "def g():\n    pass")
+    lessons = lesson_folder(
+        tmp_path / "lessons",
+        "def f():\n    pass\n\n\ncheck.f(f)",
+        "def g():\n    pass\n\n\ncheck.g(g)",
+    )
     out = tmp_path / "student"
     (out / "02_lesson.ipynb").mkdir(parents=True)
     assert main(["student", "--notebooks", str(lessons), "--out", str(out), "--force"]) == 2
@@ -334,13 +361,13 @@ def test_executing_and_stripping_as_make_notebooks_does_leaves_the_kernelspec(tm
 
 
 def result_text(cell) -> str:
-    """The checker's report: the exercise cell's last output with text (its picture follows)."""
+    """The checker's report: the check cell's last output with text (its picture follows)."""
     texts = [
         out["data"]["text/plain"]
         for out in cell.outputs
         if out.output_type in ("execute_result", "display_data") and "text/plain" in out["data"]
     ]
-    assert texts, f"the exercise cell must end with its checker call; got {cell.outputs}"
+    assert texts, f"the check cell must show the checker's report; got {cell.outputs}"
     return texts[-1]
 
 
@@ -391,6 +418,7 @@ def test_every_exercise_fails_as_shipped_passes_restored_and_nothing_gives_it_aw
         kernel_name="python3",
         resources={"metadata": {"path": str(book.path.parent)}},
     )
+    found = {exercise.function: exercise for exercise in exercises(original)}
     checked = 0
     shipped_cells = {}
     with client.setup_kernel():
@@ -398,16 +426,20 @@ def test_every_exercise_fails_as_shipped_passes_restored_and_nothing_gives_it_aw
             if cell.cell_type != "code":
                 continue
             client.execute_cell(cell, index)
-            if index not in solutions:
+            grade_id = cell.metadata.get("nbgrader", {}).get("grade_id", "")
+            if not grade_id.endswith("_test"):
                 continue
             shipped = result_text(cell)
             shipped_cells[index] = copy.deepcopy(cell)  # executing the solution replaces it
             assert shipped.startswith("FAIL "), shipped
             assert "NotImplementedError: your code here" in shipped
-            restored = copy.deepcopy(original.cells[index])
+            restored = copy.deepcopy(original.cells[found[grade_id.removesuffix("_test")].cell])
             restored.outputs = []
             client.execute_cell(restored, index)
             assert result_text(restored).startswith("PASS "), result_text(restored)
+            again = copy.deepcopy(cell)
+            client.execute_cell(again, index)
+            assert result_text(again).startswith("PASS "), result_text(again)
             checked += 1
     assert checked == len(solutions) > 0
     # The edition as run, sources and outputs, holds no three lines of any solution.
@@ -490,6 +522,17 @@ def test_the_published_source_shows_stubs_and_no_solution_and_the_teachers_keeps
     assert not (bundled / "sre").exists()
 
 
+def unsummed(metadata: dict) -> dict:
+    """Cell metadata without nbgrader's checksum, which a translated comment changes."""
+    grading = {k: v for k, v in metadata.get("nbgrader", {}).items() if k != "checksum"}
+    return {**metadata, "nbgrader": grading} if grading else metadata
+
+
+def uncommented(source) -> str:
+    lines = "".join(source).splitlines()
+    return "\n".join(line for line in lines if not line.lstrip().startswith("#"))
+
+
 def test_the_chinese_student_edition_is_the_english_one_with_the_chinese_text():
     """The twins go through the same parser: the same stubs, hidden cells and tags."""
     from course.classroom.notebooks import language_folder
@@ -504,9 +547,9 @@ def test_the_chinese_student_edition_is_the_english_one_with_the_chinese_text():
         assert len(chinese["cells"]) == len(english["cells"]), chinese_book.path.name
         first_code = True
         for ours, theirs in zip(chinese["cells"], english["cells"], strict=True):
-            assert (ours["cell_type"], ours["metadata"]) == (
+            assert (ours["cell_type"], unsummed(ours["metadata"])) == (
                 theirs["cell_type"],
-                theirs["metadata"],
+                unsummed(theirs["metadata"]),
             )
             if "hidden" in ours["metadata"].get("tags", []):
                 assert ours["source"] == hidden_note("zh-CN") != theirs["source"] == HIDDEN_NOTE
@@ -516,6 +559,8 @@ def test_the_chinese_student_edition_is_the_english_one_with_the_chinese_text():
             if first_code:
                 assert source.startswith(LANGUAGE_LINES), chinese_book.path.name
                 source, first_code = source[len(LANGUAGE_LINES) :], False
+            if ours["metadata"].get("nbgrader", {}).get("locked"):  # a check: its comments differ
+                source, theirs = uncommented(source), {"source": uncommented(theirs["source"])}
             assert source == "".join(theirs["source"]), (chinese_book.path.name, ours["id"])
             assert ours["outputs"] == [] and ours["execution_count"] is None
         stubs = sum(STUB_LINE in "".join(cell["source"]) for cell in chinese["cells"])

@@ -247,8 +247,7 @@ def test_the_add_an_exercise_recipe_is_picked_up_everywhere(toy_chapter):
     import mutation
 
     from course.classroom import twins
-    from course.classroom.edition import student_notebook
-    from course.classroom.nbgrader import nbgrader_notebook
+    from course.classroom.release import nbgrader_notebook, student_notebook
 
     toy = course_exercises()["09"]
     assert [e.name for e in toy] == ["twice"]  # the list of exercises
@@ -261,12 +260,12 @@ def test_the_add_an_exercise_recipe_is_picked_up_everywhere(toy_chapter):
     notebook = json.loads(toy_chapter.read_text())
     student = "".join(student_notebook(notebook)["cells"][2]["source"])  # the student edition
     assert "def twice(x):" in student and "return 2 * x" not in student
-    graded = nbgrader_notebook(notebook)  # the nbgrader release: a solution cell, a test cell
+    graded = nbgrader_notebook(notebook)  # the nbgrader source: an answer cell, a check cell
     test_cells = [
         c for c in graded["cells"] if c.get("metadata", {}).get("nbgrader", {}).get("grade")
     ]
     assert [c["metadata"]["nbgrader"]["grade_id"] for c in test_cells] == ["twice_test"]
-    assert "check.twice(twice).assert_passed()" in "".join(test_cells[0]["source"])
+    assert "check.twice(twice).graded()" in "".join(test_cells[0]["source"])
 
     found = mutation.find_exercises([toy_chapter])  # the mutation test
     assert [(e.checker, e.function) for e in found] == [("twice", "twice")]

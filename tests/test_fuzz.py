@@ -379,7 +379,7 @@ VALID: dict[str, Any] = {
     "course.lessons.l01_de_casteljau.check.curve_cases:max_points": lambda: 4,
     "course.classroom.edition.reveals:cell": lambda: {"cell_type": "code", "source": "x = 1"},
     "course.classroom.edition.solution_cells:notebook": lambda: {"cells": []},
-    "course.classroom.edition.student_notebook:notebook": lambda: {"cells": [], "metadata": {}},
+    "course.classroom.release.student_notebook:notebook": lambda: {"cells": [], "metadata": {}},
     "course.classroom.gallery.ProgressBar:total": lambda: 3,
     "course.classroom.gallery.ProgressBar:stream": lambda: io.StringIO(),
     "course.classroom.gallery.write_gallery:stream": lambda: io.StringIO(),

@@ -99,6 +99,31 @@ def test_make_test_names_python3_venv_when_the_venv_module_cannot_work(tmp_path)
     assert not (tmp_path / "venv").exists()
 
 
+def test_make_site_asks_for_node_and_npm_before_fetching_mathjax(tmp_path):
+    """MathJax comes from npm's registry: without node and npm, one clear message first."""
+    tools = tmp_path / "bin"  # make and what the Makefile itself runs, but no node, no npm
+    tools.mkdir()
+    for tool in ("make", "id"):
+        (tools / tool).symlink_to(shutil.which(tool))
+    mathjax = tmp_path / "mathjax"
+    done = make(f"MATHJAX={mathjax}", f"{mathjax}/es5/tex-mml-chtml.js", PATH=str(tools))
+    assert done.returncode != 0
+    assert "make site: needs Node.js with its npm; node is missing, npm missing." in done.stderr
+    assert "https://nodejs.org" in done.stderr and not mathjax.exists()
+
+
+@pytest.mark.skipif(shutil.which("node") is None, reason="needs node")
+def test_node_check_names_the_version_a_target_needs_and_the_one_it_found():
+    """``$(call NODE_CHECK,MINIMUM,TARGET)``, as the hub's proxy rule calls it."""
+    found = subprocess.run(["node", "--version"], capture_output=True, text=True).stdout.strip()
+    major = int(found.lstrip("v").split(".")[0])
+    for minimum, passes in [(str(major), True), (f"{major}.0", True), (str(major + 1), False)]:
+        done = make("--eval", f"probe: ; $(call NODE_CHECK,{minimum},probe)", "probe")
+        assert (done.returncode == 0) == passes, done.stderr
+        if not passes:
+            assert f"make probe: needs Node.js {minimum} or newer; node is {found}" in done.stderr
+
+
 def declared() -> dict[str, list[str]]:
     """Each install set's requirements as pyproject.toml declares them."""
     extras = PYPROJECT["project"]["optional-dependencies"]

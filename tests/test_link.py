@@ -9,7 +9,7 @@ import pytest
 
 from course.classroom.cli import main
 from course.classroom.edition_folder import write_student_edition
-from course.classroom.link import nbgitpuller_link
+from course.classroom.link import lessons_folder, nbgitpuller_link, pull_path
 from course.classroom.notebooks import NOTEBOOKS
 
 
@@ -23,6 +23,7 @@ def test_the_link_asks_the_hub_to_pull_the_edition_and_open_its_map():
     assert parse_qs(parts.query) == {
         "repo": ["https://git.example.edu/cg/student-edition.git"],
         "branch": ["main"],
+        "targetpath": ["student-edition"],
         "urlpath": ["lab/tree/student-edition/00_index.ipynb"],
     }
     chosen = parse_qs(
@@ -42,12 +43,34 @@ def test_the_link_asks_the_hub_to_pull_the_edition_and_open_its_map():
 
 
 @pytest.mark.parametrize(
+    "repository",
+    [
+        "https://github.com/ORG/cg-student",
+        "https://github.com/ORG/cg-student.git",  # what a Clone button gives
+        "https://github.com/ORG/cg-student/",
+    ],
+)
+def test_the_folder_pulled_into_is_the_one_the_link_opens(repository):
+    # nbgitpuller clones into targetpath when the link names it (else into the address's last
+    # part, ".git" and all): the link always names it, so the page it opens is in that folder.
+    query = parse_qs(urlsplit(nbgitpuller_link("https://h.edu", repository)).query)
+    assert query["targetpath"] == ["cg-student"]
+    assert query["urlpath"] == ["lab/tree/cg-student/00_index.ipynb"]
+    assert lessons_folder(repository) == "cg-student"
+    # The hub's start page is the same pull, on the student's own server (hub/ config).
+    assert nbgitpuller_link("https://h.edu", repository).endswith(
+        "/user-redirect/" + pull_path(repository)
+    )
+
+
+@pytest.mark.parametrize(
     ("arguments", "error", "message"),
     [
         (("hub.example.edu", "https://g.edu/r"), ValueError, "hub must be an http"),
         (("https://h.edu?x=1", "https://g.edu/r"), ValueError, "no query or fragment"),
         (("https://h.edu", "git@g.edu:r.git"), ValueError, "repository must be an http"),
         (("https://h.edu", "https://g.edu/"), ValueError, "repository must end in"),
+        (("https://h.edu", "https://g.edu/.git"), ValueError, "repository must end in"),
         (("https://h.edu", "https://g.edu/r", "a b"), ValueError, "branch must be a relative"),
         (("https://h.edu", "https://g.edu/r", "main", "../x"), ValueError, "notebook must be"),
         (("https://h.edu", "https://g.edu/r", "main", "a", "/abs"), ValueError, "folder must be"),

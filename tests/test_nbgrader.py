@@ -41,6 +41,7 @@ from course.classroom.nbgrader import (
     write_nbgrader_course,
 )
 from course.classroom.notebooks import NOTEBOOKS, language_folder, notebooks
+from course.classroom.release import student_notebook
 from course.classroom.stubs import STUB_LINE, exercise_stub
 
 REPOSITORY = Path(__file__).resolve().parent.parent
@@ -108,8 +109,10 @@ def test_each_exercise_becomes_a_solution_cell_and_a_locked_test_cell_worth_its_
         assert solution["metadata"]["nbgrader"]["locked"] is False
         assert test["metadata"]["nbgrader"]["points"] == EXERCISE_POINTS
         assert test["metadata"]["nbgrader"]["locked"] is True
-        assert test["source"].splitlines()[-1].strip().endswith(".assert_passed()")
-    # recursive_bezier calls next_level, and bezier recursive_bezier: graded with the library's.
+        assert test["source"].splitlines()[-1].strip().endswith(".graded()")
+        assert "check." not in solution["source"]  # the check is the locked cell's
+    # recursive_bezier calls next_level, and bezier recursive_bezier: checked with the
+    # graders' own answers.
     assert "earlier_exercises(recursive_bezier, 'next_level')" in graded[3]["source"]
     assert "earlier_exercises(bezier, 'recursive_bezier')" in graded[5]["source"]
     assert "earlier_exercises" not in graded[1]["source"]
@@ -178,6 +181,22 @@ def released(course: Path, api: NbGraderAPI, lesson: str) -> dict:
         generated = api.generate_assignment(lesson)
         assert generated["success"], generated.get("log")
     return json.loads(path.read_text(encoding="utf-8"))
+
+
+@pytest.mark.parametrize("book", LESSONS, ids=lambda book: book.path.stem)
+def test_nbgraders_release_is_the_student_edition(book, course, api):
+    """What nbgrader releases is what make lab, the hub and a link give students, cell for
+    cell: sources, ids, tags and nbgrader's metadata, checksums included."""
+    teacher = json.loads(book.path.read_text(encoding="utf-8"))
+    release = released(course, api, book.path.stem)
+    edition = student_notebook(teacher)
+
+    def cells(notebook):
+        return [
+            (c["cell_type"], c.get("id"), cell_source(c), c["metadata"]) for c in notebook["cells"]
+        ]
+
+    assert cells(release) == cells(edition)
 
 
 @pytest.mark.parametrize("book", LESSONS, ids=lambda book: book.path.stem)
@@ -257,11 +276,17 @@ def test_nbgrader_autogrades_and_explains_the_lesson(book, course, api):
         "".join(cell_source(cell) for cell in teacher["cells"]),
     ).group(1)
     module = f"{chapter}.check"
-    release = released(course, api, lesson)
+    released(course, api, lesson)  # the gradebook knows the lesson
+    edition = student_notebook(teacher)  # what the students work in, and submit
 
     tests = {f"{exercise.function}_test": exercise for exercise in found}
     ids = {exercise.function for exercise in found} | set(tests)
-    solutions = {e.function: cell_source(teacher["cells"][e.cell]) for e in found}
+    solutions = {  # each answer cell as the student writes it: the function, no check
+        e.function: "\n".join(
+            cell_source(teacher["cells"][e.cell]).splitlines()[: e.check_line - 1]
+        )
+        for e in found
+    }
     # The checkers' named mistakes: each exercise's k-th in submission k. A mistake whose
     # answer the checker passes, or names as another, is noted for the table.
     mistakes_of = {}
@@ -292,7 +317,7 @@ def test_nbgrader_autogrades_and_explains_the_lesson(book, course, api):
             code = (
                 "from mistakes import mistaken\n\n"
                 f"{exercise.function} = mistaken({module!r}, {checker!r}, {mistake.name!r}, "
-                f"{parameters!r})\n\n\n{exercise.check}\n"
+                f"{parameters!r})\n"
             )
             usable.append((mistake.name, code, first_line, result.mistake))
         mistakes_of[exercise.function] = usable
@@ -312,7 +337,7 @@ def test_nbgrader_autogrades_and_explains_the_lesson(book, course, api):
     for student, answers in students.items():
         folder = course / "submitted" / student / lesson
         folder.mkdir(parents=True, exist_ok=True)
-        notebook = submission(release, answers, ids)
+        notebook = submission(edition, answers, ids)
         (folder / f"{lesson}.ipynb").write_text(json.dumps(notebook), encoding="utf-8")
 
     graded = api.autograde(lesson, "*")
@@ -336,6 +361,8 @@ def test_nbgrader_autogrades_and_explains_the_lesson(book, course, api):
                 assert first_line.split(":")[0] in html, (function, name, first_line)
                 if named:
                     assert f"This is a known mistake, {named}" in html
+                # The diagnosis alone: no traceback through the course, no server's paths.
+                assert "most recent call last" not in html and str(REPOSITORY) not in html
                 row.append(f"{function} '{name}' {available - EXERCISE_POINTS:g}/{available}")
             else:
                 assert score == EXERCISE_POINTS, f"{function} lost points for another mistake"

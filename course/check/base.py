@@ -53,6 +53,7 @@ from course.check.comparisons import close, first_difference, pixel_difference, 
 from course.check.exercises import what_run_cases_takes
 from course.check.hints import Hint, Hints, failure_hint, hint, register_hints
 from course.check.references import CallBudget, call_budget, forbidden_message, known_mistake
+from course.check.results import CheckFailed, CheckResult, Mistake
 from course.check.sandbox import (
     CaseStopped,
     arity_problem,
@@ -88,83 +89,7 @@ __all__ = [
 Case = Mapping[str, Any]
 
 
-@dataclass(frozen=True)
-class Mistake:
-    """One of the handouts' known mistakes, as a checker recognises it.
-
-    ``answer(**case)`` is what code with this mistake returns for a case,
-    computed by the library's reproduction of the mistake; ``explanation``
-    tells the student what their code must have done ("your curve runs
-    backwards: you wrote t P[i] + (1 - t) P[i+1]"). ``matches(answer,
-    given)`` decides whether the student's answer is the mistake's; by
-    default, the checker's own comparison.
-    """
-
-    name: str
-    explanation: str
-    answer: Callable[..., Any]
-    matches: Callable[[Any, Any], bool] | None = None
-
-
-@dataclass(frozen=True)
-class CheckResult:
-    """The outcome of checking one exercise; truthy when it passed.
-
-    ``picture`` is a PNG of the difference (or None); ``mistake`` the name of
-    the known mistake recognised (or None). In a notebook the report shows
-    as text, then the picture. A grader (nbgrader's test cells) calls
-    :meth:`assert_passed`, which raises on a failure with the same report.
-    """
-
-    exercise: str
-    passed: bool
-    cases_run: int
-    message: str
-    picture: bytes | None = None
-    mistake: str | None = None
-
-    def __bool__(self) -> bool:
-        return self.passed
-
-    def assert_passed(self) -> CheckResult:
-        """Return this result if it passed; otherwise raise :class:`CheckFailed` with the report.
-
-        Examples
-        --------
-        >>> CheckResult("f", True, 2, "all 2 cases pass").assert_passed()
-        PASS f: all 2 cases pass
-        >>> CheckResult("f", False, 1, "case 1 is wrong").assert_passed()
-        Traceback (most recent call last):
-        ...
-        course.check.base.CheckFailed: FAIL f: case 1 is wrong
-        """
-        if not self.passed:
-            raise CheckFailed(str(self))
-        return self
-
-    def __str__(self) -> str:
-        if self.passed:
-            return _("PASS {exercise}: {message}").format(
-                exercise=self.exercise, message=self.message
-            )
-        return _("FAIL {exercise}: {message}").format(exercise=self.exercise, message=self.message)
-
-    __repr__ = __str__
-
-    def _ipython_display_(self) -> None:
-        from IPython.display import display
-
-        display({"text/plain": str(self)}, raw=True)
-        if self.picture is not None:
-            display({"image/png": self.picture}, raw=True)
-
-
-class CheckFailed(AssertionError):
-    """A failed check, raised for graders: its message is the checker's whole report."""
-
-
 # How often each exercise has failed in this kernel: the hints' step.
-_FAILURES: Counter[str] = Counter()
 _FAILURES: Counter[str] = Counter()
 
 

@@ -1,10 +1,13 @@
-"""Command line: ``python -m course lab``, ``student``, ``nbgrader``, ``gallery``, ``map``, ``link``
+"""Command line: ``python -m course lab``, ``student``, ``nbgrader``, ``mistakes``, ``map``, ...
 
 Standard library only: ``student`` and ``nbgrader`` are JSON transforms and run
 without numpy, matplotlib or ipywidgets; ``gallery`` loads them when the lesson
 modules draw. ``lab`` updates the student edition, then starts JupyterLab at its
 course map (``--teacher``: the solved lessons), with ``--allow-root`` when run as
-root, as in a container.
+root, as in a container. ``lab`` and ``app`` leave Ctrl-C to the server they start:
+JupyterLab asks before it stops, Voila stops; neither ends with a traceback.
+``student`` writes into ``student/`` beside the lessons' folder unless ``--out`` says
+where, as ``make student`` and ``lab`` do.
 
 The lessons' notebooks are found beside the package in the course's repository (or in
 ``$COURSE_NOTEBOOKS``, or ``./notebooks``; ``--notebooks DIR`` says where). An installed
@@ -21,11 +24,12 @@ from __future__ import annotations
 
 import argparse
 import os
+import signal
 import subprocess
 import sys
 from pathlib import Path
 
-from course.classroom import edition_folder, gallery, link, nbgrader
+from course.classroom import class_mistakes, edition_folder, gallery, link, nbgrader
 from course.classroom.course_map import course_map, update_readme
 from course.classroom.notebooks import (
     DEFAULT_LANGUAGE,
@@ -53,6 +57,9 @@ NOT_FOUND = N_(
 
 #: The connection class that sends the apps' messages at once (course.classroom.serving).
 PROMPT = "course.classroom.serving.PromptConnection"
+
+#: The module a server starts through: ``python -m MODULE``, without a traceback on Ctrl-C.
+FOREGROUND = "course.classroom.foreground"
 
 
 def lab_command(
@@ -151,6 +158,46 @@ def app_command(notebooks: str | Path, port: int, extra: list[str]) -> list[str]
     ]
 
 
+def _student_folder(notebooks: Path, language: str) -> Path:
+    """The student edition's folder: ``student/`` beside the lessons' (``student/zh-CN/``)."""
+    return language_folder(notebooks.resolve().parent / "student", language)
+
+
+def _serve(command: list[str]) -> int:
+    """Run a server, ``python -m MODULE ARGS``, until it stops; its exit status.
+
+    The terminal sends Ctrl-C to its whole foreground process group, so the server gets it
+    too and answers it its own way: JupyterLab asks "Shut down this Jupyter server
+    (y/[n])?", and y or a second Ctrl-C stops it; Voila stops. This process only waits
+    (``subprocess.call`` died at the first Ctrl-C with a traceback, and killed the server
+    before its question could be answered). The server starts through :data:`FOREGROUND`,
+    so a Ctrl-C that comes while it still imports ends it without a traceback too.
+    """
+    python, option, module, *rest = command
+    with subprocess.Popen([python, option, FOREGROUND, module, *rest]) as server:
+        while True:
+            try:
+                status = server.wait()
+            except KeyboardInterrupt:
+                continue  # the server's to answer
+            if status == -signal.SIGINT:
+                return _end_as_interrupted()
+            return 128 - status if status < 0 else status
+
+
+def _end_as_interrupted() -> int:
+    """End this process as Ctrl-C ends a program, without a traceback; 130 where it cannot.
+
+    On POSIX the process ends by SIGINT, as Python ends on a KeyboardInterrupt, so that the
+    shell or make that waits for it reads it as interrupted, not as an error (make prints one
+    line, ``make: *** [Makefile:NN: lab] Interrupt``). Elsewhere: status 130, the shells' own.
+    """
+    if os.name == "posix":
+        signal.signal(signal.SIGINT, signal.SIG_DFL)
+        os.kill(os.getpid(), signal.SIGINT)
+    return 128 + signal.SIGINT
+
+
 def _language(value: str | None) -> str:
     """The ``--language`` asked for, else ``$COURSE_LANG``, else English; checked."""
     language = value if value is not None else os.environ.get(LANGUAGE_VARIABLE) or DEFAULT_LANGUAGE
@@ -197,7 +244,15 @@ def main(argv: list[str] | None = None) -> int:
         "student", help="write the notebooks with solutions replaced by stubs, outputs cleared"
     )
     for command in (gallery_command, student_command, grading):
-        command.add_argument("--out", required=True, type=Path, help="the folder to write")
+        if command is student_command:  # as make student and lab write it
+            command.add_argument(
+                "--out",
+                type=Path,
+                help="the folder to write (default: student/ beside the lessons' folder; "
+                "student/zh-CN/ in Chinese)",
+            )
+        else:
+            command.add_argument("--out", required=True, type=Path, help="the folder to write")
         command.add_argument(
             "--force",
             action="store_true",
@@ -246,6 +301,7 @@ def main(argv: list[str] | None = None) -> int:
             f"${LANGUAGE_VARIABLE}, else {DEFAULT_LANGUAGE})",
         )
     link.add_command(commands)
+    class_mistakes.add_mistakes_command(commands)
     args, extra = parser.parse_known_args(argv)
     language = DEFAULT_LANGUAGE
     if args.command in ("lab", "app", "student", "nbgrader"):
@@ -255,8 +311,11 @@ def main(argv: list[str] | None = None) -> int:
             print(f"python -m course {args.command}: {error}", file=sys.stderr)
             return 2
     # The commands that make an edition speak its language, errors and reports included.
-    with message_language(language):
-        return _run(parser, args, extra, language)
+    try:
+        with message_language(language):
+            return _run(parser, args, extra, language)
+    except KeyboardInterrupt:  # before a server started, or in a command without one
+        return _end_as_interrupted()
 
 
 def _run(
@@ -265,6 +324,8 @@ def _run(
     """The command ``args`` asks for, its messages in the current language; the exit status."""
     if extra and args.command not in ("lab", "app"):
         parser.error(_("unrecognized arguments: {arguments}").format(arguments=" ".join(extra)))
+    if args.command == "mistakes":
+        return class_mistakes.run(args)
     if args.command == "link":
         try:
             print(link.run(args))
@@ -290,13 +351,12 @@ def _run(
             if not args.teacher:
                 # student/ is the edition's own folder: one written before the edition kept
                 # a manifest is taken over (its notebooks count as the student's work).
-                student = language_folder(args.notebooks.resolve().parent / "student", language)
+                student = _student_folder(args.notebooks, language)
                 report = edition_folder.write_student_edition(student, lessons_folder, force=True)
                 shown = student.relative_to(args.notebooks.resolve().parent).as_posix()
                 for line in report.lines():
                     print(f"{shown}/: {line}", file=sys.stderr)
-            command = lab_command(args.notebooks, args.teacher, extra, language)
-            return subprocess.call(command)
+            return _serve(lab_command(args.notebooks, args.teacher, extra, language))
         if args.command == "app":
             if not lessons_folder.is_dir():
                 raise ValueError(
@@ -304,7 +364,7 @@ def _run(
                         lessons_folder=lessons_folder
                     )
                 )
-            return subprocess.call(app_command(lessons_folder, args.port, extra))
+            return _serve(app_command(lessons_folder, args.port, extra))
         if args.command == "map" and args.readme:
             changed = update_readme(args.readme, args.notebooks)
             done = _("lesson table rewritten") if changed else _("lesson table unchanged")
@@ -324,6 +384,8 @@ def _run(
         elif args.command == "nbgrader":
             written = nbgrader.write_nbgrader_course(args.out, lessons_folder, args.force)
         else:
+            if args.out is None:
+                args.out = _student_folder(args.notebooks, language)
             report = edition_folder.write_student_edition(args.out, lessons_folder, args.force)
             for line in report.lines():
                 print(f"{args.out}: {line}", file=sys.stderr)

@@ -16,31 +16,33 @@ student's function and ends with the checker call, for example::
 
     check.recursive_bezier(recursive_bezier)
 
-The student edition keeps every line of that cell but the bodies of its
-top-level functions: each ``def`` line (with its decorators) and docstring
+The student edition keeps every line of that cell but its check and the bodies of
+its top-level functions: each ``def`` line (with its decorators) and docstring
 stay, and the body becomes ``raise NotImplementedError("your code here")``.
-So the notebook still runs from top to bottom, and the checker's report on
-the stub reads ``FAIL ...: case 1 raised NotImplementedError: your code
-here`` until the student writes the function. A partial scaffold marks what
-to remove instead, with the lines ``### BEGIN SOLUTION`` and ``### END
-SOLUTION`` (nbgrader's markers): only the lines between them go, replaced by
-the stub at the marker's indentation, and the rest of the cell stays for the
-student to build on (:mod:`course.classroom.stubs`). The cell's tag becomes
-``exercise``; every output and execution count is cleared, as ThinkDSP's
-student notebooks do.
+The check moves to a locked cell under it, which shows the checker's report: on
+the stub it reads ``FAIL ...: case 1 raised NotImplementedError: your code
+here`` until the student writes the function, and the notebook still runs from
+top to bottom. A partial scaffold marks what to remove instead, with the lines
+``### BEGIN SOLUTION`` and ``### END SOLUTION`` (nbgrader's markers): only the
+lines between them go, replaced by the stub at the marker's indentation, and
+the rest of the cell stays for the student to build on
+(:mod:`course.classroom.stubs`). The cell's tag becomes ``exercise``; every
+output and execution count is cleared, as ThinkDSP's student notebooks do.
 
 A cell that shows a solution another way, by printing library source
 (``source_of``, ``inspect.getsource``, ``??``) or by solving a variant of an
 exercise, is replaced by a note; a cell tagged ``reveals`` is such a cell
 too. Lessons keep those cells under "Going further".
 
-:func:`student_notebook` makes one notebook's edition;
-:mod:`course.classroom.edition_folder` writes every lesson's into a folder.
+:func:`course.classroom.release.student_notebook` makes one notebook's edition, as
+nbgrader's release of the lesson (so the edition a student works in is the one graded);
+:mod:`course.classroom.edition_folder` writes every lesson's into a folder. This module
+holds what the editions share: reading a lesson, its language, its solution cells and the
+cells that reveal one.
 """
 
 from __future__ import annotations
 
-import copy
 import json
 import os
 import re
@@ -48,26 +50,26 @@ from pathlib import Path
 from typing import Any
 
 from course.classroom.notebooks import DEFAULT_LANGUAGE, LANGUAGES
-from course.classroom.stubs import exercise_stub
 from course.i18n import LANGUAGES as LOCALES
 from course.i18n import N_, _, gettext_catalog
 
 # The helpers below __all__'s names (cell_source, check_notebook, notebook_text,
 # read_notebook) serve this package's other editions.
 __all__ = [
+    "EXERCISE_TAG",
     "HIDDEN_NOTE",
     "KERNELSPEC",
     "REVEALS_TAG",
     "SOLUTION_TAG",
     "cell_source",
     "check_notebook",
+    "hidden_cell",
     "hidden_note",
     "notebook_language",
     "notebook_text",
     "read_notebook",
     "reveals",
     "solution_cells",
-    "student_notebook",
     "translated",
 ]
 
@@ -131,6 +133,23 @@ def translated(message: str, language: str) -> str:
 def hidden_note(language: str = DEFAULT_LANGUAGE) -> str:
     """The student edition's note, in ``language``, in place of a cell that reveals a solution."""
     return translated(HIDDEN_NOTE, language)
+
+
+def hidden_cell(cell: dict[str, Any], index: int, language: str = DEFAULT_LANGUAGE) -> dict:
+    """The note, a markdown cell in ``language``, that an edition shows in place of ``cell``
+    (the ``index``-th), which reveals a solution; it keeps the cell's id.
+
+    Examples
+    --------
+    >>> hidden_cell({"cell_type": "code", "source": "", "id": "c1"}, 3)["id"]
+    'c1'
+    """
+    return {
+        "cell_type": "markdown",
+        "id": cell.get("id", f"hidden-{index}"),
+        "metadata": {"tags": ["hidden"]},
+        "source": hidden_note(language),
+    }
 
 
 def reveals(cell: dict[str, Any]) -> bool:
@@ -238,44 +257,6 @@ def solution_cells(notebook: dict[str, Any]) -> list[int]:
         for index, cell in enumerate(notebook["cells"])
         if cell["cell_type"] == "code" and SOLUTION_TAG in _tags(cell)
     ]
-
-
-def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
-    """A copy of ``notebook`` (nbformat 4 JSON) with stubs for solutions and no outputs.
-
-    Cells that reveal a solution (:func:`reveals`) become a markdown note, in the
-    notebook's language (:func:`notebook_language`). The kernelspec is JupyterLab's own
-    (:data:`KERNELSPEC`).
-    """
-    check_notebook(notebook)
-    student = copy.deepcopy(notebook)
-    note = hidden_note(notebook_language(notebook))
-    for index, cell in enumerate(student["cells"]):
-        if reveals(cell):
-            student["cells"][index] = {
-                "cell_type": "markdown",
-                "id": cell.get("id", f"hidden-{index}"),
-                "metadata": {"tags": ["hidden"]},
-                "source": note,
-            }
-    for index in solution_cells(student):
-        cell = student["cells"][index]
-        try:
-            cell["source"] = exercise_stub(cell_source(cell))
-        except ValueError as error:
-            raise ValueError(
-                _("notebook cell {index} (tagged {tag}): {error}").format(
-                    index=index, tag=repr(SOLUTION_TAG), error=error
-                )
-            ) from None
-        tags = [EXERCISE_TAG if tag == SOLUTION_TAG else tag for tag in _tags(cell)]
-        cell["metadata"]["tags"] = tags
-    for cell in student["cells"]:
-        if cell["cell_type"] == "code":
-            cell["outputs"] = []
-            cell["execution_count"] = None
-    student.setdefault("metadata", {})["kernelspec"] = dict(KERNELSPEC)
-    return student
 
 
 def read_notebook(path: str | Path) -> dict[str, Any]:

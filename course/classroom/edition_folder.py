@@ -4,7 +4,7 @@ Standard library only: ``python -m course student`` needs no numpy, matplotlib
 or ipywidgets.
 
 :func:`write_student_edition` writes every lesson's student edition
-(:func:`course.classroom.edition.student_notebook`) into a folder, and records
+(:func:`course.classroom.release.student_notebook`) into a folder, and records
 what it wrote in :data:`MANIFEST`: run again, it tells a notebook the student
 edited from one only run, and never replaces the student's work
 (:class:`EditionReport` says what it did). ``python -m course student``
@@ -27,10 +27,10 @@ from course.classroom.edition import (
     check_notebook,
     notebook_text,
     read_notebook,
-    student_notebook,
 )
 from course.classroom.folders import check_output_folder
 from course.classroom.notebooks import LANGUAGES, NOTEBOOKS, notebooks
+from course.classroom.release import student_notebook
 from course.i18n import _
 
 __all__ = ["MANIFEST", "EditionReport", "write_student_edition"]

@@ -7,6 +7,13 @@ folder the first time; every later click merges the teacher's new lessons in
 and keeps what the student wrote (a file the student changed keeps the
 student's lines where both changed it). The link then opens the course map.
 
+The link names the folder it pulls into (nbgitpuller's ``targetpath``): the
+repository's name without ``.git``, so that ``https://.../cg-student`` and
+``https://.../cg-student.git`` (what a Clone button gives) both pull into
+``cg-student/`` and open ``cg-student/00_index.ipynb``. The course's hub
+(``hub/jupyterhub_config.py``) opens the same pull as its start page when it is
+given the repository, so that a student has one copy of the lessons.
+
 Standard library only, like the rest of ``python -m course``: the teacher
 runs it anywhere.
 """
@@ -23,7 +30,9 @@ from course.i18n import _
 # The command-line helpers (add_command, run) are for cli.py only.
 __all__ = [
     "add_command",
+    "lessons_folder",
     "nbgitpuller_link",
+    "pull_path",
     "run",
 ]
 
@@ -45,32 +54,67 @@ def nbgitpuller_link(
     ``hub`` is the hub's address (``https://hub.example.edu``, or with the
     prefix the hub is served under); ``repository`` the student edition's
     git repository, cloned over http(s). The link opens ``notebook`` in
-    JupyterLab, inside ``folder`` (by default the repository's name, where
-    nbgitpuller clones it).
+    JupyterLab, inside ``folder`` (by default :func:`lessons_folder`: the
+    repository's name without ``.git``).
 
     Examples
     --------
-    >>> print(nbgitpuller_link("https://hub.example.edu/", "https://github.com/u/cg-student"))
-    https://hub.example.edu/hub/user-redirect/git-pull?repo=https%3A%2F%2Fgithub.com%2Fu%2Fcg-student&branch=main&urlpath=lab%2Ftree%2Fcg-student%2F00_index.ipynb
+    >>> print(nbgitpuller_link("https://hub.example.edu/", "https://github.com/u/cg-student.git"))
+    https://hub.example.edu/hub/user-redirect/git-pull?repo=https%3A%2F%2Fgithub.com%2Fu%2Fcg-student.git&branch=main&targetpath=cg-student&urlpath=lab%2Ftree%2Fcg-student%2F00_index.ipynb
     """
     hub = _web_address(hub, "hub").rstrip("/")
+    return f"{hub}/hub/user-redirect/{pull_path(repository, branch, notebook, folder)}"
+
+
+def pull_path(
+    repository: str,
+    branch: str = "main",
+    notebook: str = START_NOTEBOOK,
+    folder: str | None = None,
+) -> str:
+    """nbgitpuller's address on a student's own server: the link without the hub's part.
+
+    The hub's start page (``Spawner.default_url``) is ``"/" + pull_path(...)``:
+    every start merges the teacher's new lessons in, like the link, into the
+    same folder. The arguments are :func:`nbgitpuller_link`'s.
+
+    Examples
+    --------
+    >>> print(pull_path("https://github.com/u/cg-student", folder="lessons"))
+    git-pull?repo=https%3A%2F%2Fgithub.com%2Fu%2Fcg-student&branch=main&targetpath=lessons&urlpath=lab%2Ftree%2Flessons%2F00_index.ipynb
+    """
     repository = _web_address(repository, "repository")
     branch = _name(branch, "branch")
     notebook = _name(notebook, "notebook")
-    if folder is None:
-        folder = posixpath.basename(urlsplit(repository).path.rstrip("/")).removesuffix(".git")
-        if not folder:
-            raise ValueError(
-                _("repository must end in the repository's name; got {repository}").format(
-                    repository=repr(repository)
-                )
+    folder = lessons_folder(repository) if folder is None else _name(folder, "folder")
+    query = {
+        "repo": repository,
+        "branch": branch,
+        "targetpath": folder,
+        "urlpath": f"lab/tree/{folder}/{notebook}",
+    }
+    return f"git-pull?{urlencode(query, quote_via=quote, safe='')}"
+
+
+def lessons_folder(repository: str) -> str:
+    """The folder a student's lessons are pulled into: the repository's name, without ``.git``.
+
+    Examples
+    --------
+    >>> lessons_folder("https://github.com/u/cg-student.git")
+    'cg-student'
+    >>> lessons_folder("https://git.example.edu/cg/lessons/")
+    'lessons'
+    """
+    repository = _web_address(repository, "repository")
+    name = posixpath.basename(urlsplit(repository).path.rstrip("/")).removesuffix(".git")
+    if not name or not _NAME.match(name) or name in (".", ".."):
+        raise ValueError(
+            _("repository must end in the repository's name; got {repository}").format(
+                repository=repr(repository)
             )
-        query = {"repo": repository, "branch": branch}
-    else:
-        folder = _name(folder, "folder")
-        query = {"repo": repository, "branch": branch, "targetpath": folder}
-    query["urlpath"] = f"lab/tree/{folder}/{notebook}"
-    return f"{hub}/hub/user-redirect/git-pull?{urlencode(query, quote_via=quote, safe='')}"
+        )
+    return name
 
 
 def _web_address(value: object, name: str) -> str:

@@ -6,13 +6,11 @@ each lesson with exercises. Plain nbgrader then takes it from there:
 ``nbgrader generate_assignment <lesson>``, ``autograde``,
 ``generate_feedback``.
 
-Each exercise cell becomes an nbgrader solution cell: its answer (each
-function's body, or the lines between ``### BEGIN SOLUTION`` and ``### END
-SOLUTION``) sits between nbgrader's markers, so the release shows the same
-stub as the student edition. After it comes a locked, autograded test
-cell worth :data:`EXERCISE_POINTS` that runs the lesson's checker and
-raises :class:`course.check.base.CheckFailed`, with the checker's whole
-report, when the answer is wrong: the report is the feedback.
+The lessons' sources are :func:`course.classroom.release.nbgrader_notebook`: each exercise
+an answer cell and a locked, autograded check cell worth :data:`EXERCISE_POINTS`, whose
+report is the feedback. ``nbgrader generate_assignment`` releases exactly the student
+edition (:func:`course.classroom.release.student_notebook`), so students may work in the
+edition ``make lab``, the hub or a link gives them, and submit it.
 
 A mistake is charged once. An exercise that calls an earlier one
 (lesson 01's ``recursive_bezier`` calls ``next_level``) is graded with the
@@ -22,39 +20,25 @@ earlier exercise's ``grader_reference``, which its checker declares
 
 from __future__ import annotations
 
-import ast
-import copy
 import os
 import shutil
 import tempfile
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from course.classroom.edition import (
-    KERNELSPEC,
-    SOLUTION_TAG,
-    cell_source,
-    hidden_note,
-    notebook_language,
-    notebook_text,
-    read_notebook,
-    reveals,
-    solution_cells,
-    translated,
-)
+from course.classroom.edition import notebook_text, read_notebook
 from course.classroom.folders import check_output_folder
-from course.classroom.notebooks import DEFAULT_LANGUAGE, NOTEBOOKS, notebooks
-from course.classroom.stubs import (
-    BEGIN_SOLUTION,
-    END_SOLUTION,
-    STUB_LINE,
-    parse_solution,
-    solution_bodies,
+from course.classroom.notebooks import NOTEBOOKS, notebooks
+from course.classroom.release import (
+    EXERCISE_POINTS,
+    Exercise,
+    exercises,
+    nbgrader_notebook,
 )
-from course.i18n import N_, _
+from course.classroom.stubs import STUB_LINE
+from course.i18n import _
 
 __all__ = [
     "EXERCISE_POINTS",
@@ -66,22 +50,6 @@ __all__ = [
     "write_nbgrader_course",
 ]
 
-#: The points of each exercise's test cell.
-EXERCISE_POINTS = 1
-# The test cell's comments, in the lesson's language (edition.translated).
-_TEST_COMMENT = N_(
-    "Autograded test of {function} ({points} point): it raises, with the check's report, "
-    "if the answer is wrong."
-)
-_TEST_COMMENT_POINTS = N_(
-    "Autograded test of {function} ({points} points): it raises, with the check's report, "
-    "if the answer is wrong."
-)
-_EARLIER_COMMENT = N_(
-    "Graded with the library's {earlier}, so that a mistake there is not charged twice."
-)
-#: nbgrader's cell metadata schema.
-SCHEMA_VERSION = 3
 CONFIG = '''"""nbgrader's configuration for the course, written by `python -m course nbgrader`."""
 
 c = get_config()  # noqa: F821 (nbgrader defines it)
@@ -90,178 +58,13 @@ c.CourseDirectory.course_id = "course"
 c.ClearSolutions.code_stub = {{"python": {stub!r}}}
 # A lesson's pictures and apps take a while to compute in a fresh kernel.
 c.Execute.timeout = 600
+# nbgrader zip_collect: a learning platform's download, each upload named
+# <student>_<lesson>.ipynb (01_de_casteljau's by alice: alice_01_de_casteljau.ipynb);
+# change the rule to your platform's file names.
+c.FileNameCollectorPlugin.named_regexp = {collect!r}
 '''
-
-
-@dataclass(frozen=True)
-class Exercise:
-    """One exercise of a lesson, as the nbgrader edition grades it."""
-
-    #: The function the student writes.
-    function: str
-    #: The checker's call that ends the cell, e.g. ``check.bilinear_lookup(bilinear_sample)``.
-    check: str
-    #: The earlier exercises this one calls, graded with their references.
-    uses: tuple[str, ...]
-    #: The index of its cell in the lesson.
-    cell: int
-    points: int = EXERCISE_POINTS
-
-    @property
-    def grade_cell(self) -> str:
-        """The source of the autograded test cell, its comments in English."""
-        return self.grade_source(DEFAULT_LANGUAGE)
-
-    def grade_source(self, language: str) -> str:
-        """The source of the autograded test cell, its comments in ``language``."""
-        call = f"{self.check}.assert_passed()"
-        comment = _TEST_COMMENT if self.points == 1 else _TEST_COMMENT_POINTS
-        lines = [
-            "# " + translated(comment, language).format(function=self.function, points=self.points)
-        ]
-        if not self.uses:
-            return "\n".join([*lines, call])
-        names = ", ".join(repr(name) for name in self.uses)
-        earlier = translated(_EARLIER_COMMENT, language).format(earlier=" and ".join(self.uses))
-        lines += [
-            f"# {earlier}",
-            "from course.classroom.nbgrader import earlier_exercises",
-            "",
-            f"with earlier_exercises({self.function}, {names}):",
-            f"    {call}",
-        ]
-        return "\n".join(lines)
-
-
-def exercises(notebook: dict[str, Any]) -> list[Exercise]:
-    """The exercises of a lesson: each cell tagged ``solution``, in order.
-
-    A solution cell defines its function (the first top-level ``def``) and
-    ends with the checker's call on it, ``check.<name>(<function>)``.
-    """
-    found: list[Exercise] = []
-    for index in solution_cells(notebook):
-        source = cell_source(notebook["cells"][index])
-        tree = parse_solution(source, _("notebook cell {index}").format(index=index))
-        functions = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
-        last = tree.body[-1] if tree.body else None
-        call = last.value if isinstance(last, ast.Expr) else None
-        if (
-            not functions
-            or not isinstance(call, ast.Call)
-            or not isinstance(call.func, ast.Attribute)
-            or not isinstance(call.func.value, ast.Name)
-            or len(call.args) != 1
-            or not isinstance(call.args[0], ast.Name)
-        ):
-            raise ValueError(
-                _(
-                    "notebook cell {index}: a solution cell defines the exercise's function and "
-                    "ends with its check, check.<name>(<function>)"
-                ).format(index=index)
-            )
-        function = call.args[0].id
-        body = next((node for node in functions if node.name == function), None)
-        if body is None:
-            raise ValueError(
-                _("notebook cell {index}: the check's {function} is not defined here").format(
-                    index=index, function=function
-                )
-            )
-        called = {node.id for node in ast.walk(body) if isinstance(node, ast.Name)}
-        uses = tuple(earlier.function for earlier in found if earlier.function in called)
-        unreferenced = [name for name in uses if _grader_reference(name) is None]
-        if unreferenced:
-            raise ValueError(
-                _(
-                    "notebook cell {index}: {function} calls the earlier exercise {unreferenced}, "
-                    "whose checker declares no grader_reference to grade it with"
-                ).format(index=index, function=function, unreferenced=unreferenced[0])
-            )
-        found.append(Exercise(function, ast.unparse(call), uses, index))
-    return found
-
-
-def _marked(source: str) -> str:
-    """``source`` with nbgrader's markers around each answer (the student edition's stubs)."""
-    if BEGIN_SOLUTION in source or END_SOLUTION in source:
-        return source
-    lines = source.splitlines()
-    for start, end, indent in reversed(solution_bodies(source)):
-        lines[start:end] = [indent + BEGIN_SOLUTION, *lines[start:end], indent + END_SOLUTION]
-    return "\n".join(lines)
-
-
-def _nbgrader(grade_id: str, *, solution: bool, grade: bool, points: int = 0) -> dict[str, Any]:
-    metadata = {
-        "grade": grade,
-        "grade_id": grade_id,
-        "locked": not solution,
-        "schema_version": SCHEMA_VERSION,
-        "solution": solution,
-    }
-    if grade:
-        metadata["points"] = points
-    return metadata
-
-
-def nbgrader_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
-    """A copy of a lesson as nbgrader's source: solution cells, test cells, no outputs.
-
-    Cells that reveal a solution another way become the student edition's
-    note; the notes and the test cells' comments are in the lesson's language; every
-    output is cleared; the kernelspec is JupyterLab's.
-    """
-    found = exercises(notebook)
-    language = notebook_language(notebook)
-    source = copy.deepcopy(notebook)
-    cells = []
-    by_cell = {exercise.cell: exercise for exercise in found}
-    for index, cell in enumerate(source["cells"]):
-        if reveals(cell):
-            cell = {
-                "cell_type": "markdown",
-                "id": cell.get("id", f"hidden-{index}"),
-                "metadata": {"tags": ["hidden"]},
-                "source": hidden_note(language),
-            }
-        if cell["cell_type"] == "code":
-            cell["outputs"] = []
-            cell["execution_count"] = None
-        exercise = by_cell.get(index)
-        if exercise is None:
-            cells.append(cell)
-            continue
-        try:
-            cell["source"] = _marked(cell_source(cell))
-        except ValueError as error:
-            raise ValueError(
-                _("notebook cell {index}: {error}").format(index=index, error=error)
-            ) from None
-        metadata = cell.setdefault("metadata", {})
-        metadata["tags"] = [tag for tag in metadata.get("tags", []) if tag != SOLUTION_TAG]
-        metadata["nbgrader"] = _nbgrader(exercise.function, solution=True, grade=False)
-        cells.append(cell)
-        cells.append(
-            {
-                "cell_type": "code",
-                "execution_count": None,
-                "id": f"{exercise.function}-test",
-                "metadata": {
-                    "nbgrader": _nbgrader(
-                        f"{exercise.function}_test",
-                        solution=False,
-                        grade=True,
-                        points=exercise.points,
-                    )
-                },
-                "outputs": [],
-                "source": exercise.grade_source(language),
-            }
-        )
-    source["cells"] = cells
-    source.setdefault("metadata", {})["kernelspec"] = dict(KERNELSPEC)
-    return source
+#: How ``nbgrader zip_collect`` reads a student and a lesson from an uploaded file's path.
+UPLOAD_NAME = r".*/(?P<student_id>[^/_]+)_(?P<file_id>\d\d_\w+)\.ipynb$"
 
 
 def write_nbgrader_course(
@@ -280,12 +83,14 @@ def write_nbgrader_course(
     out = Path(out)
     files: dict[str, str] = {}
     if not (out / "nbgrader_config.py").exists():
-        files["nbgrader_config.py"] = CONFIG.format(stub=STUB_LINE)
+        files["nbgrader_config.py"] = CONFIG.format(stub=STUB_LINE, collect=UPLOAD_NAME)
     for book in notebooks(folder):
         notebook = read_notebook(book.path)
         try:
-            if not exercises(notebook):
+            found = exercises(notebook)
+            if not found:
                 continue
+            _require_grader_references(found)
             converted = nbgrader_notebook(notebook)
         except ValueError as error:
             raise ValueError(_("{path}: {error}").format(path=book.path, error=error)) from None
@@ -318,6 +123,22 @@ def write_nbgrader_course(
     finally:
         shutil.rmtree(staging, ignore_errors=True)
     return written
+
+
+def _require_grader_references(found: list[Exercise]) -> None:
+    """A ValueError naming the cell of an exercise that calls an earlier one whose checker
+    declares no grader answer to check it with."""
+    for exercise in found:
+        unreferenced = [name for name in exercise.uses if _grader_reference(name) is None]
+        if unreferenced:
+            raise ValueError(
+                _(
+                    "notebook cell {index}: {function} calls the earlier exercise {unreferenced}, "
+                    "whose checker declares no grader_reference to grade it with"
+                ).format(
+                    index=exercise.cell, function=exercise.function, unreferenced=unreferenced[0]
+                )
+            )
 
 
 def _grader_reference(name: str) -> Callable[..., Any] | None:

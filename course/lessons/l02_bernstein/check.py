@@ -187,7 +187,7 @@ def _naive_refusals() -> dict[Any, str]:
 @contextmanager
 def _pascal_only() -> Iterator[None]:
     exponential = Mistake(
-        _("the exponential recursion"),
+        N_("the exponential recursion"),
         _(
             "comb(m - 1, n) + comb(m - 1, n - 1) computes the same coefficients again and "
             "again, as the any-degree report's comb does: comb(40, 20) alone would make "
@@ -248,7 +248,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
         )
     mistakes = [
         Mistake(
-            _("32-bit integers"),
+            N_("32-bit integers"),
             _(
                 "your coefficients wrapped around: C(34, 17) = 2,333,606,220 does not fit in a "
                 "32-bit int (the C++ handouts' int), and numpy's int32 wraps silently. Python's "
@@ -257,7 +257,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
             lambda m, n: _entry(_row_with_overflow(m, np.int32), n),
         ),
         Mistake(
-            _("64-bit integers"),
+            N_("64-bit integers"),
             _(
                 "your coefficients wrapped around at C(67, 33), which needs 65 bits: a numpy int64 "
                 "array overflows silently. Keep the row in a list of Python ints, which are exact."
@@ -265,7 +265,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
             lambda m, n: _entry(_row_with_overflow(m, np.int64), n),
         ),
         Mistake(
-            _("floating point"),
+            N_("floating point"),
             _(
                 "your answer is a float: a float holds whole numbers exactly only up to "
                 "2^53, about 9 * 10^15, and C(67, 33) is about 1.4 * 10^19. A binomial "
@@ -279,12 +279,12 @@ def comb(function: Callable[..., Any]) -> CheckResult:
             ),
         ),
         Mistake(
-            _("the arguments swapped"),
+            N_("the arguments swapped"),
             _("you computed C(n, m): comb(m, n) is entry n of row m, the row first."),
             lambda m, n: binomial(n, m) if m <= n else 0,
         ),
         Mistake(
-            _("off by one row"),
+            N_("off by one row"),
             _(
                 "you returned C(m - 1, n): the row of Pascal's triangle for m is reached after m "
                 "steps from the row [1] (row 0)."
@@ -292,7 +292,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
             lambda m, n: binomial(m - 1, n) if m >= 1 else 0,
         ),
         Mistake(
-            _("off by one row"),
+            N_("off by one row"),
             _(
                 "you returned C(m + 1, n): the row of Pascal's triangle for m is reached after m "
                 "steps from the row [1] (row 0), not m + 1."
@@ -302,7 +302,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
         # Last: a comb that multiplies and fails in a way none of the above explains (a float
         # product rounded back to an int loses digits past 2^53).
         Mistake(
-            _("not Pascal's rule"),
+            N_("not Pascal's rule"),
             not_pascal,
             lambda m, n: None,
             matches=lambda expected, given: product is not None,
@@ -333,7 +333,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
         _('Hint: {where}\n(More: check.hint("comb").)').format(where=_(COMB_HINTS.where)),
     ]
     return CheckResult(
-        "comb", False, result.cases_run, "\n".join(lines), mistake=_("not Pascal's rule")
+        "comb", False, result.cases_run, "\n".join(lines), mistake=N_("not Pascal's rule")
     )
 
 

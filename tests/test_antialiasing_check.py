@@ -2,6 +2,7 @@
 
 import math
 
+import graded_draws
 import numpy as np
 import pytest
 
@@ -249,3 +250,46 @@ def test_a_dict_or_a_generator_is_told_to_return_two_lists(wrap, said):
     assert f"return two lists: pixels, weights; {said}" in result.message
     assert "could not convert" not in result.message and "float() argument" not in result.message
     assert check.bilinear_splat(lambda x, y: tuple(np.asarray(v) for v in correct(x, y)))
+
+
+# --- graded: cases drawn for each submission ------------------------------------------------
+
+
+def under_the_point(x, y):
+    return [(math.floor(x), math.floor(y))], [1.0]
+
+
+#: The truncated pixel's own answer is None where rounding lights the same pixel: the
+#: student's code lights it anyway.
+WRITTEN_SPLAT = {1: lambda: under_the_point}
+#: ... and the first case it fails, a corner, is such a point: it is named with the pixel
+#: rounding lights too, on the fixed cases as on the drawn ones.
+NAMED_AS_ONE_PIXEL = {"the pixel under the point (truncated)": "the whole point to one pixel"}
+
+
+def test_graded_splat_cases_are_drawn_in_the_fixed_cases_families():
+    for cases in graded_draws.check_drawn_cases("bilinear_splat"):
+        x, y = np.array([(c["x"], c["y"]) for c in cases]).T
+        assert ((x * 8) % 1 == 0).all() and ((y * 8) % 1 == 0).all()
+        assert (x[0] % 1, y[0] % 1, x[1] % 1, y[1] % 1) == (0.5, 0.5, 0, 0)
+        assert 0.5 < x[4] < 1 and 0 < y[4] < 0.5 and x[5] == y[5] and -0.5 < x[6] < 0
+
+
+def test_graded_weight_cases_are_drawn_in_the_fixed_cases_families():
+    for cases in graded_draws.check_drawn_cases("arc_length_weights"):
+        assert [len(c["samples"]) for c in cases] == [3, 2, 9, 12, 1]
+        chords = mistakes.chords(cases[0]["samples"])
+        assert chords[0] > 2 * chords[1]
+
+
+@pytest.mark.parametrize(
+    ("name", "written", "named_otherwise"),
+    [
+        ("bilinear_splat", WRITTEN_SPLAT, NAMED_AS_ONE_PIXEL),
+        ("arc_length_weights", {}, {}),
+    ],
+)
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(
+    name, written, named_otherwise
+):
+    graded_draws.check_graded(name, written, named_otherwise)

@@ -63,24 +63,22 @@ def test_the_picture_is_drawn_for_the_failing_case_only():
 
 def test_in_a_notebook_the_report_shows_as_text_then_picture(monkeypatch):
     shown = []
+    monkeypatch.setattr("IPython.get_ipython", lambda: object())
     monkeypatch.setattr(
         "IPython.display.display",
         lambda data, raw, metadata=None: shown.append((data, metadata) if metadata else data),
     )
     CheckResult("x", False, 1, "case 1 is wrong", picture=b"\x89PNG")._ipython_display_()
-    outcome = {
-        "exercise": "x",
-        "passed": False,
-        "mistake": None,
-        "report": "FAIL x: case 1 is wrong",
-    }
-    assert shown == [
-        ({"text/plain": "FAIL x: case 1 is wrong"}, {"course": {"check": outcome}}),
-        {"image/png": b"\x89PNG"},
-    ]  # the outcome rides in the text's metadata, for the class's mistakes report
+    assert shown == [{"text/plain": "FAIL x: case 1 is wrong"}, {"image/png": b"\x89PNG"}]
     shown.clear()
     CheckResult("x", True, 3, "all 3 cases pass")._ipython_display_()
-    assert [entry[0] for entry in shown] == [{"text/plain": "PASS x: all 3 cases pass"}]
+    assert shown == [{"text/plain": "PASS x: all 3 cases pass"}]
+    shown.clear()
+    CheckResult("x", False, 1, "case 1 is wrong", mistake="drawn backwards").graded()
+    outcome = {"exercise": "x", "passed": False, "mistake": "drawn backwards"}
+    outcome["report"] = "FAIL x: case 1 is wrong"
+    # A check cell's outcome rides in the text's metadata, for the class's mistakes report.
+    assert shown == [({"text/plain": "FAIL x: case 1 is wrong"}, {"course": {"check": outcome}})]
 
 
 def test_the_budget_stops_runaway_recursion_and_forbidden_calls_then_steps_aside():
@@ -495,3 +493,376 @@ def test_a_large_wrong_array_shows_a_small_window_around_its_first_wrong_value()
     # 2 rows x 2 columns x 3 channels each side: 12 numbers, not 126.
     given_line = text.splitlines()[-1]
     assert given_line.count(",") == 11 and "0.5" in given_line
+
+
+# --- Tricks and accidents: the in-notebook checker holds (issue 33) ---------------------
+
+import time  # noqa: E402
+import warnings  # noqa: E402
+
+from course.check.base import CheckFailed  # noqa: E402
+
+
+def _timed(check):
+    started = time.monotonic()
+    result = check()
+    return result, time.monotonic() - started
+
+
+def _no_traceback(result):
+    assert isinstance(result, CheckResult) and not result
+    assert "Traceback" not in str(result) and 'File "' not in str(result)
+
+
+def test_an_endless_iterator_of_pixels_fails_saying_so_within_the_budget():
+    def endless(n):
+        def pixels():
+            while True:
+                yield (0, 0)
+
+        return pixels()
+
+    result, took = _timed(
+        lambda: run_cases(
+            "pixels",
+            endless,
+            [{"n": 3}],
+            lambda n: np.array([[0, 0]]),
+            same_pixels,
+            base.pixel_rows,
+            hint="h",
+            **SMALL,
+        )
+    )
+    _no_traceback(result)
+    assert str(result).splitlines()[:2] == [
+        "FAIL pixels: case 1: your answer cannot be read: your generator gave more than "
+        "1,048,576 pixels and did not end: return a list (or an array) of the pixels, not an "
+        "endless iterator",
+        "  inputs: n=3",
+    ]
+    assert took < 5
+
+    def endless_pixel(n):
+        return [iter(int, 1)]  # one "pixel" that never ends
+
+    result = run_cases(
+        "pixels",
+        endless_pixel,
+        [{"n": 3}],
+        lambda n: np.array([[0, 0]]),
+        same_pixels,
+        base.pixel_rows,
+        hint="h",
+        **SMALL,
+    )
+    _no_traceback(result)
+    assert "each pixel must be a pair (x, y)" in str(result)
+
+
+def test_an_endless_iterator_for_numbers_is_shown_not_listed():
+    result, took = _timed(lambda: bounded(lambda x: iter(int, 1)))
+    _no_traceback(result)
+    lines = str(result).splitlines()
+    assert lines[0] == "FAIL double: case 1 is wrong"
+    assert lines[3].startswith("  given:    <callable_iterator object at ")
+    assert lines[4] == "  given a callable_iterator, not numbers"
+    assert took < 5
+
+
+class _LyingDtypeArray(np.ndarray):
+    @property
+    def dtype(self):
+        raise RuntimeError("no dtype here")
+
+
+class _LyingDtype:
+    @property
+    def dtype(self):
+        raise RuntimeError("no dtype here")
+
+    def __len__(self):
+        raise RuntimeError("no length either")
+
+
+def test_an_answer_whose_dtype_raises_fails_without_a_traceback():
+    array = bounded(lambda x: np.array(2 * x).view(_LyingDtypeArray))
+    assert array  # numpy's own record of the dtype is read, not the property: 2x is right
+    wrong = bounded(lambda x: np.array(3 * x).view(_LyingDtypeArray))
+    _no_traceback(wrong)
+    assert str(wrong).splitlines()[3] == "  given:    3."
+    lying = bounded(lambda x: _LyingDtype())
+    _no_traceback(lying)
+    assert "given a _LyingDtype, not numbers" in str(lying)
+
+    def strict(value):
+        return np.asarray(value.dtype)
+
+    converted = bounded(lambda x: _LyingDtype(), convert=strict)
+    _no_traceback(converted)
+    assert str(converted).splitlines()[:2] == [
+        "FAIL double: case 1: your answer, a _LyingDtype, cannot be read as the exercise's "
+        "answer (RuntimeError: no dtype here)",
+        "  (the checker raised this while reading your answer; your function ran without an error)",
+    ]
+
+
+class _EndlessNumber:
+    def __array__(self, dtype=None, copy=None):
+        while True:
+            pass
+
+
+class _EndlessMessage(Exception):
+    def __str__(self):
+        while True:
+            pass
+
+
+def test_reading_an_answer_and_an_error_stays_within_the_budget():
+    result, took = _timed(lambda: bounded(lambda x: _EndlessNumber()))
+    _no_traceback(result)
+    assert str(result).splitlines()[:2] == [
+        "FAIL double: case 1: reading your answer was stopped: the loop did not stop within 0.2 s",
+        "  inputs: x=1.0",
+    ]
+
+    def raises(x):
+        raise _EndlessMessage
+
+    message, took_too = _timed(lambda: bounded(raises))
+    _no_traceback(message)
+    assert str(message).splitlines()[0] == "FAIL double: case 1 raised _EndlessMessage: "
+    assert took < 5 and took_too < 5
+
+
+def test_a_base_exception_from_the_students_code_is_a_failure_not_a_traceback():
+    def exits(x):
+        raise SystemExit(3)
+
+    result = bounded(exits)
+    _no_traceback(result)
+    assert str(result).splitlines()[0] == "FAIL double: case 1 raised SystemExit: 3"
+
+
+def test_a_right_answer_that_warns_passes_and_shows_the_warning_once_as_text(capfd):
+    def with_infinity(x):
+        m = np.array([0.0, x])
+        return np.where(m > 0, 9 / m, np.inf)[1] * x * x / 4.5
+
+    with warnings.catch_warnings(record=True) as printed:
+        warnings.simplefilter("default")
+        first = bounded(with_infinity)
+        again = bounded(with_infinity)
+        with_infinity(1.0)  # in the student's own cell after: not shown again either
+    line = with_infinity.__code__.co_firstlineno + 2
+    assert str(first).splitlines() == [
+        "PASS double: all 3 cases pass",
+        "  your code warned (this is not counted): RuntimeWarning: divide by zero encountered "
+        f"in divide (line {line} of test_base_check.py)",
+    ]
+    assert first.passed and str(again) == "PASS double: all 3 cases pass"
+    assert printed == [] and capfd.readouterr().err == ""
+
+
+def test_a_warning_shown_in_the_students_cell_is_not_shown_again_by_the_check(capfd):
+    def with_infinity(x):
+        m = np.array([0.0, x])
+        return np.where(m > 0, 9 / m, np.inf)[1] * x * x / 4.5
+
+    with warnings.catch_warnings(record=True) as printed:
+        warnings.simplefilter("default")
+        with_infinity(1.0)  # the student's cell: shown once, there
+        result = bounded(with_infinity)
+        wrong = bounded(lambda x: with_infinity(x) + 1)
+    assert len(printed) == 1
+    assert str(result) == "PASS double: all 3 cases pass"
+    assert "warned" not in str(wrong)
+
+
+def test_numpy_patched_by_an_earlier_cell_does_not_pass_a_wrong_answer():
+    from course.lessons.l03_lines_and_triangles import check as lines_and_triangles
+
+    saved = np.allclose, np.array_equal, np.asarray
+    seen = []
+
+    def sees_their_patch(x):
+        seen.append(np.allclose(0.0, 1.0))
+        return 3 * x
+
+    try:
+        np.allclose = lambda *args, **kwargs: True
+        np.array_equal = lambda *args, **kwargs: True
+        wrong = bounded(sees_their_patch)
+        pixels = run_cases(
+            "pixels",
+            lambda n: [(1, 1)],
+            [{"n": 3}],
+            lambda n: np.array([[0, 0]]),
+            same_pixels,
+            base.pixel_rows,
+            hint="h",
+        )
+        triangle = lines_and_triangles.draw_triangle_filled(lambda p0, p1, p2: [(0, 0)])
+        still = (np.allclose(0.0, 1.0), np.array_equal([0], [1]))
+        np.asarray = lambda *args, **kwargs: saved[2]([0.0])  # every answer the same
+        as_one = bounded(lambda x: 3 * x)
+    finally:
+        np.allclose, np.array_equal, np.asarray = saved
+    assert str(wrong).splitlines()[0] == "FAIL double: case 1 is wrong"
+    assert seen == [True]  # the student's own code sees what their cell did
+    assert str(pixels).splitlines()[0] == "FAIL pixels: case 1 is wrong"
+    assert not triangle and "is wrong" in str(triangle).splitlines()[0]
+    assert still == (True, True)  # and their patch is theirs again after the check
+    assert str(as_one).splitlines()[0] == "FAIL double: case 1 is wrong"
+
+
+def test_an_int_that_equals_everything_does_not_pass_comb():
+    from course.lessons.l02_bernstein import check as bernstein
+
+    class Agreeable(int):
+        def __eq__(self, other):
+            return True
+
+        __hash__ = int.__hash__
+
+    result = bernstein.comb(lambda m, n: Agreeable(0))
+    _no_traceback(result)
+    assert str(result).splitlines()[:4] == [
+        "FAIL comb: case 1 is wrong",
+        "  inputs: m=0, n=0",
+        "  expected: 1",
+        "  given:    0",
+    ]
+
+
+def test_clearing_the_checkers_cases_from_a_frame_walk_does_not_pass():
+    def clears_cases(x):
+        frame = sys._getframe(1)
+        while frame is not None:
+            try:
+                frame.f_locals["cases"].clear()
+            except Exception:
+                pass
+            frame = frame.f_back
+        return 2 * x if x == 1.0 else 0.0  # right on the first case only
+
+    result = bounded(clears_cases)
+    assert str(result).splitlines()[:2] == ["FAIL double: case 2 is wrong", "  inputs: x=2.0"]
+
+
+def test_a_check_whose_cases_all_vanished_fails():
+    result = run_cases("double", lambda: 2.0, [], lambda: 2.0, close(), hint="h")
+    assert not result and str(result).splitlines()[0] == (
+        "FAIL double: no case ran: a check needs at least one case"
+    )
+
+
+def test_a_result_class_patched_by_an_earlier_cell_is_put_back():
+    saved = CheckResult.assert_passed, CheckResult.__bool__
+    try:
+        CheckResult.assert_passed = lambda self: self
+        CheckResult.__bool__ = lambda self: True
+        failed = bounded(lambda x: 3 * x)
+        with pytest.raises(CheckFailed, match="FAIL double: case 1 is wrong"):
+            failed.assert_passed()
+        assert not failed
+    finally:
+        CheckResult.assert_passed, CheckResult.__bool__ = saved
+
+
+def test_switching_off_the_watch_for_forbidden_calls_fails_the_case():
+    refused = {math.comb: "math.comb was called"}
+
+    def hidden(m, n):
+        sys.setprofile(None)
+        return getattr(math, "co" + "mb")(m, n)
+
+    def hidden_later(m, n):
+        list(map(sys.setprofile, [None]))  # from C: the hook does not see this call
+        return getattr(math, "co" + "mb")(m, n)
+
+    for student in (hidden, hidden_later):
+        result = run_cases(
+            "comb",
+            student,
+            [{"m": 5, "n": 2}],
+            math.comb,
+            lambda a, b: a == b,
+            hint="h",
+            forbidden=refused,
+        )
+        assert str(result).splitlines()[0] == (
+            "FAIL comb: case 1 was stopped: your code switched off the checker's watch "
+            "(sys.setprofile): leave it on, and write the exercise's answer yourself"
+        )
+    assert sys.getprofile() is None
+
+
+def test_a_budget_inside_another_keeps_the_outer_one_watching():
+    with pytest.raises(CallBudget, match="no sorted here"):
+        with call_budget(forbidden={sorted: "no sorted here"}):
+            with call_budget(max_calls=1000):
+                sorted([2, 1])
+    assert sys.getprofile() is None
+
+
+class _Agreeable(int):
+    def __eq__(self, other):
+        return True
+
+    __hash__ = int.__hash__
+
+
+def _endless(*arguments):
+    return iter(int, 1)
+
+
+def _lying(*arguments):
+    return _LyingDtype()
+
+
+def _never_read(*arguments):
+    return _EndlessNumber()
+
+
+def _exits(*arguments):
+    raise SystemExit(0)
+
+
+def _agreeable(*arguments):
+    return _Agreeable(0)
+
+
+def _zeros_with_numpy_patched(*arguments):
+    np.allclose = np.array_equal = lambda *args, **kwargs: True  # an earlier cell's slip
+    return [[0.0, 0.0]]
+
+
+ACCIDENTS = [_endless, _lying, _never_read, _exits, _agreeable, _zeros_with_numpy_patched]
+
+
+def _every_checker():
+    from course.classroom.exercise_list import course_exercises
+
+    return [e for lesson in course_exercises().values() for e in lesson]
+
+
+@pytest.mark.parametrize("accident", ACCIDENTS, ids=lambda f: f.__name__.strip("_"))
+def test_no_checker_passes_an_accident_or_shows_a_traceback(accident, monkeypatch):
+    from course.check import budget
+
+    monkeypatch.setattr(budget, "TIME_BUDGET", 0.2)
+    saved = np.allclose, np.array_equal
+    failed = {}
+    try:
+        for declared in _every_checker():
+            np.allclose, np.array_equal = saved
+            started = time.monotonic()
+            result = declared.checker(accident)
+            failed[declared.name] = (result.passed, "Traceback" in str(result))
+            assert time.monotonic() - started < 10, declared.name
+    finally:
+        np.allclose, np.array_equal = saved
+    assert len(failed) >= 15
+    assert all(outcome == (False, False) for outcome in failed.values()), failed

@@ -4,10 +4,12 @@ import functools
 import itertools
 import math
 
+import graded_draws
 import numpy as np
 import pytest
 
 from course.check import base
+from course.curves.bezier_handouts import comb_recursive_calls
 from course.lessons.l02_bernstein import check
 
 
@@ -290,3 +292,62 @@ def test_the_any_degree_reports_upside_down_binomial_is_named():
     assert not result and result.mistake == "the binomial upside down"
     assert "your curve is t^n P[n] alone" in result.message
     assert result.picture is not None
+
+
+# --- graded: cases drawn for each submission ------------------------------------------------
+
+
+def accumulating_naive_bezier():
+    """A naive_bezier whose sum starts from where the last call left it."""
+    total = np.zeros(2)
+
+    def naive(points, t):
+        nonlocal total
+        total = total + naive_solution(points, t)
+        return total
+
+    return naive
+
+
+#: The mistakes a function answering as the mistake does cannot make: a float that rounds
+#: to the right integer, a product (recognised in the code), an accumulator (across calls).
+WRITTEN_COMB = {2: lambda: float_row, 6: lambda: rounded_float_product}
+WRITTEN_NAIVE = {5: accumulating_naive_bezier}
+
+
+def test_graded_comb_cases_are_drawn_in_the_fixed_cases_families():
+    for cases in graded_draws.check_drawn_cases("comb"):
+        pairs = [(c["m"], c["n"]) for c in cases]
+        assert pairs[:3] == [(0, 0), (1, 0), (1, 1)]
+        assert all(4 <= m <= 7 and 0 < n < m for m, n in pairs[3:5])
+        assert pairs[5][1] == 0 and pairs[6][0] == pairs[6][1]
+        assert all(n > m for m, n in pairs[7:9])
+        assert comb_recursive_calls(*pairs[9]) > 2 * check.MAX_CALLS
+        assert all(2**31 < math.comb(m, n) < 2**53 for m, n in pairs[10:12])
+        assert math.comb(*pairs[12]) > 2**64 and 92 <= pairs[13][0] <= 100
+        # Pascal's rule answers the biggest within the call budget and far within the time.
+        assert str(graded_draws.graded("comb", pascal, 0)).startswith("PASS comb")
+
+
+def test_graded_naive_bezier_cases_are_drawn_in_the_fixed_cases_families():
+    fixed = check.curve_cases(max_points=12)
+    for cases in graded_draws.check_drawn_cases("naive_bezier"):
+        sizes = [len(c["control_points"]) for c in cases]
+        assert sizes[:-2] == [len(c["control_points"]) for c in fixed]
+        assert 39 <= sizes[-1] == sizes[-2] <= 43 and cases[-1]["t"] == 0.5
+
+
+@pytest.mark.parametrize(
+    ("name", "written"), [("comb", WRITTEN_COMB), ("naive_bezier", WRITTEN_NAIVE)]
+)
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name, written):
+    graded_draws.check_graded(name, written)
+
+
+@pytest.mark.parametrize(
+    ("solution", "mistake"),
+    [(handout_recursion, "the exponential recursion"), (product_formula, "not Pascal's rule")],
+)
+def test_graded_comb_stops_the_recursion_and_names_a_product(solution, mistake):
+    for seed in graded_draws.SEEDS:
+        assert graded_draws.graded("comb", solution, seed).mistake == mistake

@@ -35,7 +35,7 @@ OURS = tuple(
         "l08_poisson",
     )
 )
-OURS += ("course/check/sandbox.py",)
+OURS += ("course/check/sandbox.py", "course/check/budget.py", "course/check/views.py")
 OURS += (  # lesson 05's splats as tables, and its checkers' mistakes
     "course/lessons/l05_antialiasing/splat_tables.py",
     "course/lessons/l05_antialiasing/mistakes.py",

@@ -5,11 +5,13 @@ import itertools
 import json
 from pathlib import Path
 
+import graded_draws
 import numpy as np
 import pytest
 from PIL import Image
 
 from course.check import base
+from course.curves.bezier import de_casteljau
 from course.lessons.l01_de_casteljau import check, drawing_loop
 
 
@@ -373,3 +375,68 @@ def test_a_wrong_colour_is_named_as_the_colour_never_as_wrapping(colour):
     assert not result and result.mistake == "the wrong colour"
     assert "the right pixels, but pixel (10, 10)" in result.message
     assert "wraps around" not in result.message
+
+
+# --- graded: cases drawn for each submission ------------------------------------------------
+
+
+def painted_in_8_bit_green(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = recursive_solution(control_points, k / 1000)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x)] = (0, 255, 0)
+
+
+def painted_into_a_copy(control_points, window):
+    window = window.copy()
+    bezier_solution(control_points, window)
+    return window
+
+
+#: The drawing loop's mistakes a function answering with their pixels cannot make: a colour,
+#: a copy, and t accumulated (recognised by what the loop paints on a probe curve too).
+WRITTEN_BEZIER = {
+    0: lambda: painted_in_8_bit_green,
+    1: lambda: painted_into_a_copy,
+    2: lambda: float_loop,
+}
+
+
+@pytest.mark.parametrize("name", ["recursive_bezier", "next_level"])
+def test_graded_curve_cases_are_drawn_in_the_fixed_cases_families(name):
+    fixed = check.curve_cases(max_points=10)
+    for cases in graded_draws.check_drawn_cases(name):
+        assert [len(c["control_points"]) for c in cases] == [
+            len(c["control_points"]) for c in fixed
+        ]
+        assert [c["t"] for c in cases][1::5] == [0.5] * 9
+        assert [c["t"] for c in cases][2::5] == [0.0] * 9
+        assert [c["t"] for c in cases][3::5] == [1.0] * 9
+        assert all(0.1 <= c["t"] < 0.4 for c in cases[::5])
+        assert all(0.6 <= c["t"] < 0.95 for c in cases[4::5])
+        points = np.vstack([c["control_points"] for c in cases[10:]])
+        assert 0 <= points.min() and points.max() <= 700
+
+
+def test_graded_bezier_cases_are_drawn_in_the_fixed_cases_families():
+    for cases in graded_draws.check_drawn_cases("bezier"):
+        shapes = [c["window"].shape for c in cases]
+        assert shapes[0] == (700, 700, 3) and shapes[2] == (24, 24, 3)
+        assert 50 <= shapes[1][0] <= 70 and 70 <= shapes[1][1] <= 90
+        assert shapes[3:] == [(700, 700, 3)] * 5
+        assert not any(c["window"].any() for c in cases)
+        curve = de_casteljau(cases[1]["control_points"], np.linspace(0, 1, 1001))
+        assert curve[:, 0].min() < -1 and curve[:, 0].max() > shapes[1][1]
+        x_0, x_width, y_0, y_height, y_half = (c["control_points"] for c in cases[3:])
+        assert (x_0[:, 0] == 0).all() and x_width[:, 0].max() == 700
+        assert (y_0[:, 1] == 0).all() and (y_height[:, 1] == 700).all()
+        assert (y_half[:, 1] == -0.5).all()
+
+
+@pytest.mark.parametrize(
+    ("name", "written"),
+    [("recursive_bezier", {}), ("next_level", {}), ("bezier", WRITTEN_BEZIER)],
+)
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name, written):
+    graded_draws.check_graded(name, written)

@@ -2,6 +2,7 @@
 
 import warnings
 
+import graded_draws
 import numpy as np
 import pytest
 
@@ -160,3 +161,37 @@ def test_diffusing_into_the_input_fails_and_points_at_the_reports_copy():
     assert not result and "gray" in message
     assert "its input is const, so it pushes the errors into a copy (inputcopy)" in message
     assert "own slip" not in message
+
+
+# --- graded: cases drawn for each submission ------------------------------------------------
+
+
+def test_graded_ordered_cases_are_drawn_in_the_fixed_cases_families():
+    fixed = check._ordered_cases()
+    for cases in graded_draws.check_drawn_cases("dithering_ordered"):
+        assert [c["gray"].shape for c in cases] == [c["gray"].shape for c in fixed]
+        assert sorted(cases[0]["gray"].ravel() * 9) == pytest.approx(range(10))
+        assert all(0 <= c["gray"].min() and c["gray"].max() <= 1 for c in cases)
+
+
+def test_graded_diffusion_cases_are_drawn_in_the_fixed_cases_families():
+    fixed = check._diffusion_cases()
+    for cases in graded_draws.check_drawn_cases("dithering_error_diffuse"):
+        assert [c["gray"].shape for c in cases] == [c["gray"].shape for c in fixed]
+        steps = np.diff(cases[0]["gray"], axis=1)
+        assert (steps > 0).all() or (steps < 0).all()
+        assert (cases[1]["gray"] == 0.5).all() and len(np.unique(cases[3]["gray"])) == 1
+        assert all(0 <= c["gray"].min() and c["gray"].max() <= 1 for c in cases)
+
+
+def test_a_graded_face_is_the_lessons_face_moved_and_toned():
+    face = check._small_face()
+    for cases in graded_draws.check_drawn_cases("dithering_error_diffuse", range(5)):
+        drawn = cases[-1]["gray"]
+        assert drawn.shape == face.shape and not np.array_equal(drawn, face)
+        assert abs(drawn.mean() - face.mean()) < 0.15
+
+
+@pytest.mark.parametrize("name", ["dithering_ordered", "dithering_error_diffuse"])
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name):
+    graded_draws.check_graded(name)

@@ -15,6 +15,8 @@ import re
 from pathlib import Path
 from typing import Any
 
+import graded_draws
+import numpy as np
 import pytest
 
 from course.check.exercises import Exercise, declared, exercise, refused_messages
@@ -138,6 +140,23 @@ def test_each_exercise_refuses_the_library_s_answers_by_name(declaration):
     assert messages
     for function, message in messages.items():
         assert function.__name__ in message, message
+
+
+@pytest.mark.parametrize("declaration", ALL, ids=lambda d: d.name)
+def test_each_exercise_draws_the_cases_a_submission_is_graded_on(declaration):
+    """Graded, a checker runs on cases drawn from the submission's seed, not the fixed ones."""
+    where = f"{declaration.module}.{declaration.name}"
+    assert declaration.draw is not None, (
+        f"{where} declares no draw=: give @exercise a draw(rng) that draws, from the numpy "
+        "Generator rng, cases like its fixed ones (CONTRIBUTING.md, 'Add an exercise'); graded, "
+        "the checker runs on those"
+    )
+    fixed = graded_draws.recorded(declaration)["cases"]
+    drawn = list(declaration.draw(np.random.default_rng(0)))
+    assert [list(case) for case in drawn] == [list(case) for case in fixed], (
+        f"{where}: its draw(rng) must give as many cases as the fixed ones, {len(fixed)}, "
+        f"each with the same keys in the same order, {list(fixed[0])}"
+    )
 
 
 def test_a_declaration_that_leaves_out_its_hints_or_refusals_fails_by_name():

@@ -2,6 +2,7 @@
 
 import warnings
 
+import graded_draws
 import numpy as np
 import pytest
 
@@ -298,3 +299,24 @@ def test_blur_and_edge_report_in_chinese(in_chinese):
     assert "输出像素 (x, y) = (0, 0) 是 NaN；它在边界上，9 个邻居中只有 4 个在图像内" in nan
     colours = str(check.blur(lambda image: nan_padded(image, np.nanmean, pad_colours=True)))
     assert "输出像素 (x, y) = (0, 0) 的通道 0（红） 是 NaN，而且每个像素的红通道都是 NaN" in colours
+
+
+# --- graded: cases drawn for each submission ------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["blur", "edge"])
+def test_graded_cases_are_drawn_in_the_fixed_cases_families(name):
+    fixed = check._cases()
+    for cases in graded_draws.check_drawn_cases(name):
+        assert [c["image"].shape for c in cases] == [c["image"].shape for c in fixed]
+        assert all(0 <= c["image"].min() and c["image"].max() <= 1 for c in cases)
+        square = cases[1]["image"]
+        dark, bright = np.unique(square)
+        inside = np.argwhere(square == bright)
+        assert dark <= 0.3 and bright >= 0.7 and inside.min() >= 1
+        assert (inside.max(axis=0) <= (6, 8)).all() and len(inside) >= 12
+
+
+@pytest.mark.parametrize("name", ["blur", "edge"])
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name):
+    graded_draws.check_graded(name)

@@ -2,6 +2,7 @@
 
 import math
 
+import graded_draws
 import numpy as np
 import pytest
 
@@ -408,3 +409,64 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
     )
     refused = str(check.draw_line(lambda p0, p1: line(p0, p1).tolist()))
     assert "你的函数调用了 course.raster.line，这是课程库自己的答案" in refused
+
+
+# --- graded: cases drawn for each submission ------------------------------------------------
+
+#: Case 1 fails the mirrored and the open rules first, and there both leave out one left-edge
+#: centre: the fixed cases name them so, and so must the drawn ones.
+NAMED_AS_THE_LEFT_EDGE = {
+    "the rule mirrored": "a centre on a left edge left out",
+    "every edge open": "a centre on a left edge left out",
+}
+
+
+def octant_of(case):
+    (x0, y0), (x1, y1) = case["p0"], case["p1"]
+    return (abs(y1 - y0) > abs(x1 - x0), x1 > x0, y1 > y0)
+
+
+def test_graded_line_cases_are_drawn_in_the_fixed_cases_families():
+    fixed = [{"p0": p0, "p1": p1} for p0, p1 in check._LINE_CASES]
+    for cases in graded_draws.check_drawn_cases("draw_line"):
+        assert [octant_of(c) for c in cases[:8]] == [octant_of(c) for c in fixed[:8]]
+        for first, reversed_ in zip(cases[:8:2], cases[1:8:2], strict=True):
+            assert (first["p0"], first["p1"]) == (reversed_["p1"], reversed_["p0"])
+        (x0, y0), (x1, y1) = cases[8]["p0"], cases[8]["p1"]
+        assert y0 == y1 and x1 > x0
+        (x0, y0), (x1, y1) = cases[9]["p0"], cases[9]["p1"]
+        assert x0 == x1 and y1 < y0
+        assert cases[10]["p0"] == cases[10]["p1"]
+        for case, slope in zip(cases[11:14], (1, -1, 0.5), strict=True):
+            (x0, y0), (x1, y1) = case["p0"], case["p1"]
+            assert (y1 - y0) == slope * (x1 - x0) != 0
+        (x0, y0), (x1, y1) = cases[14]["p0"], cases[14]["p1"]
+        dx, dy = x1 - x0, y1 - y0
+        assert 0 < dy < dx and any(2 * dy * k % (2 * dx) == dx for k in range(1, dx))
+
+
+def twice_area(case):
+    (ax, ay), (bx, by), (cx, cy) = case["p0"], case["p1"], case["p2"]
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+
+
+def test_graded_triangle_cases_are_drawn_in_the_fixed_cases_families():
+    fixed = [{"p0": p0, "p1": p1, "p2": p2} for p0, p1, p2 in check._TRIANGLE_CASES]
+    for cases in graded_draws.check_drawn_cases("draw_triangle_filled"):
+        corners = [np.array([c["p0"], c["p1"], c["p2"]], dtype=float) for c in cases]
+        wound = [np.sign(twice_area(c)) for c in cases]
+        assert wound[:10] + wound[11:] == [1, -1, 1, -1, 1, 1, 1, 1, 0, 0, -1, 1]
+        assert all((c == np.round(c)).all() for c in corners[:6] + corners[8:10])
+        for number in (6, 11):  # vertices on pixel centres
+            assert (corners[number] % 1 == 0.5).all()
+        assert (corners[10][:, 1].max() - corners[10][:, 1].min()) < 0.5
+        # The same pixels, each case, as in the fixed case: none, a few, or many.
+        assert [len(triangle(**c)) == 0 for c in cases] == [len(triangle(**c)) == 0 for c in fixed]
+
+
+@pytest.mark.parametrize(
+    ("name", "named_otherwise"),
+    [("draw_line", {}), ("draw_triangle_filled", NAMED_AS_THE_LEFT_EDGE)],
+)
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name, named_otherwise):
+    graded_draws.check_graded(name, named_otherwise=named_otherwise)

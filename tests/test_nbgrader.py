@@ -21,6 +21,7 @@ import ast
 import json
 import os
 import re
+import site
 import sys
 from html import unescape
 from pathlib import Path
@@ -73,6 +74,13 @@ def nbgrader_api(course: Path) -> NbGraderAPI:
     config = Config()
     config.merge(PyFileConfigLoader("nbgrader_config.py", str(course)).load_config())
     config.CourseDirectory.root = str(course)
+    # The planted mistakes are the library's reproductions (tests/mistakes.py): the grader's
+    # child may import the course and the tests, which a real class's never does.
+    config.CheckOutsideKernel.child_paths = [
+        str(REPOSITORY),
+        str(REPOSITORY / "tests"),
+        *site.getsitepackages(),
+    ]
     return NbGraderAPI(config=config)
 
 

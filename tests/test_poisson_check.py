@@ -2,6 +2,7 @@
 
 import itertools
 
+import graded_draws
 import numpy as np
 import pytest
 
@@ -297,3 +298,54 @@ def test_a_count_from_one_says_g_is_right_and_only_the_count_differs():
         result.message
     )
     assert "largest difference" not in result.message
+
+
+# --- graded: cases drawn for each submission ------------------------------------------------
+
+
+def a_thousand_sweeps(g, tolerance):
+    """The lab's fixed count of sweeps (8000 there), whatever the residual."""
+    g = np.array(g, dtype=float)
+    for _sweep in range(1000):
+        g[1:-1, 1:-1] = (g[:-2, 1:-1] + g[2:, 1:-1] + g[1:-1, :-2] + g[1:-1, 2:]) / 4
+    return g, 1000
+
+
+#: A fixed count is recognised by its count, whatever g: its own answer says (g, 0).
+WRITTEN_SWEEP = {1: lambda: a_thousand_sweeps}
+
+
+def test_graded_boundary_cases_are_drawn_in_the_fixed_cases_families():
+    fixed = check._cases()
+    for cases in graded_draws.check_drawn_cases("poisson_boundary"):
+        for case, like in zip(cases, fixed, strict=True):
+            assert case["background"].shape == like["background"].shape
+            assert case["foreground"].shape == like["foreground"].shape
+            for image in (case["background"], case["foreground"]):
+                assert ((image * 16) % 1 == 0).all() and 0 <= image.min() <= image.max() <= 1
+        x, y = cases[1]["offset"]
+        assert x != y and max(x, y) <= 3
+        assert [c["offset"] for c in cases[::2]] == [(1, 1), (2, 3)] and cases[3]["offset"] == (
+            0,
+            0,
+        )
+
+
+def test_graded_sweep_cases_are_drawn_in_the_fixed_cases_families():
+    fixed = check._sweep_cases()
+    for cases in graded_draws.check_drawn_cases("jacobi_sweep"):
+        assert [c["g"].shape for c in cases] == [c["g"].shape for c in fixed]
+        assert not any(cases[number]["g"][1:-1, 1:-1].any() for number in (0, 1, 2, 5))
+        assert [c["tolerance"] for c in cases[:4]] == [1e-4, 1e-6, 1e-4, 1e-6]
+        assert mistakes.jacobi_until(**cases[3])[1] == 0  # already harmonic
+        g, tolerance = cases[4]["g"], cases[4]["tolerance"]
+        assert abs(g[0, 1] + g[2, 1] + g[1, 0] + g[1, 2] - 4 * g[1, 1]) == tolerance
+        red, green = np.abs(cases[5]["g"][..., 0]).max(), np.abs(cases[5]["g"][..., 1]).max()
+        assert red <= 1 / 16 and green <= 1
+
+
+@pytest.mark.parametrize(
+    ("name", "written"), [("poisson_boundary", {}), ("jacobi_sweep", WRITTEN_SWEEP)]
+)
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name, written):
+    graded_draws.check_graded(name, written)

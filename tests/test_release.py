@@ -20,6 +20,7 @@ from __future__ import annotations
 import csv
 import json
 import os
+import site
 import subprocess
 import sys
 import zipfile
@@ -124,6 +125,11 @@ def named_in_feedback(html: str) -> bool:
 def course(tmp_path_factory):
     folder = tmp_path_factory.mktemp("class")
     write_nbgrader_course(folder / "course")
+    # bob's mistake is the library's reproduction (tests/mistakes.py): the grader's child may
+    # import the course and the tests here, which a real class's never does.
+    with (folder / "course" / "nbgrader_config.py").open("a", encoding="utf-8") as config:
+        paths = [str(REPOSITORY), str(REPOSITORY / "tests"), *site.getsitepackages()]
+        config.write(f"c.CheckOutsideKernel.child_paths = {paths!r}\n")
     return folder / "course"
 
 

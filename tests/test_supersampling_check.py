@@ -2,7 +2,9 @@
 
 import math
 
+import graded_draws
 import numpy as np
+import pytest
 
 from course.lessons.l04_supersampling import check
 from course.sampling.resample import (
@@ -245,3 +247,37 @@ def test_swapped_scales_are_named_not_taken_for_a_whole_scale():
         return result
 
     assert check.image_supersampling(swapped).mistake == "the two scales swapped"
+
+
+# --- graded: cases drawn for each submission ------------------------------------------------
+
+
+def test_graded_supersampling_cases_are_drawn_in_the_fixed_cases_families():
+    fixed = check._cases()
+    for cases in graded_draws.check_drawn_cases("image_supersampling"):
+        for case, like in zip(cases, fixed, strict=True):
+            assert case["image"].shape == like["image"].shape
+            assert (case["out_shape"], case["rate"]) == (like["out_shape"], like["rate"])
+            assert 0 <= case["image"].min() and case["image"].max() <= 1
+        stripes = cases[0]["image"]
+        assert all(c["image"] is stripes for c in cases[:3])
+        low, high = sorted(set(stripes[0, :2]))
+        assert low <= 0.4 and high >= 0.6 and (stripes == np.tile(stripes[0, :2], (6, 6))).all()
+
+
+def test_graded_lookup_cases_are_drawn_in_the_fixed_cases_families():
+    for cases in graded_draws.check_drawn_cases("bilinear_lookup"):
+        gray, colour = cases[0]["image"], cases[-1]["image"]
+        assert gray.shape == (3, 4) and colour.shape == (2, 3, 3)
+        assert all(c["image"] is gray for c in cases[:10])
+        x, y = np.array([(c["x"], c["y"]) for c in cases]).T
+        assert (x[2] % 1, y[2] % 1, x[3] % 1, y[3] % 1) == (0.5, 0.5, 0, 0.5)
+        inside = (0.5 < x) & (x < 3.5) & (0.5 < y) & (y < 2.5)
+        assert inside[[0, 1]].all() and not inside[[4, 5, 6, 7, 8, 9]].any()
+        assert (x[[4, 7, 9]] > 3.5).all() and (y[[4, 8, 9]] > 2.5).all()
+        assert -0.5 < x[5] < 0.5 and y[6] < 0.5
+
+
+@pytest.mark.parametrize("name", ["image_supersampling", "bilinear_lookup"])
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name):
+    graded_draws.check_graded(name)

@@ -33,24 +33,25 @@ translated where the report shows it.
 
 from __future__ import annotations
 
-import warnings
 from collections import Counter
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from contextlib import AbstractContextManager, ExitStack
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import partial
 from typing import Any
 
 from course.check.answers import (
     AnswerError,
-    described,
-    holds_complex,
-    narrow_float,
+    Reading,
     non_finite,
+    only_data,
     pixel_rows,
+    read_answer,
     show_value,
 )
 from course.check.comparisons import close, first_difference, pixel_difference, same_pixels
 from course.check.exercises import what_run_cases_takes
+from course.check.grading import drawn_cases, grading_seed
 from course.check.hints import Hint, Hints, failure_hint, hint, register_hints
 from course.check.references import CallBudget, call_budget, forbidden_message, known_mistake
 from course.check.results import CheckFailed, CheckResult, Mistake
@@ -63,6 +64,7 @@ from course.check.sandbox import (
     run_bounded,
     student_line,
 )
+from course.check.views import CheckersView
 from course.i18n import _
 
 # The names the checkers import from here, wherever they are defined.
@@ -92,6 +94,28 @@ Case = Mapping[str, Any]
 # How often each exercise has failed in this kernel: the hints' step.
 _FAILURES: Counter[str] = Counter()
 
+#: Most of the student's warnings a report shows (each once per line of their code).
+_MOST_WARNINGS = 3
+
+# The checker's own result class, held from import, and every class of the report as it was
+# defined: a cell that replaced a method (``CheckResult.assert_passed = lambda self: self``)
+# or left a thread doing so does not make a failure pass; run_cases puts them back.
+_Result = CheckResult
+_AS_DEFINED = {kind: dict(vars(kind)) for kind in (CheckResult, CheckFailed, Mistake)}
+_MISSING = object()
+_PYTHONS_OWN = frozenset({"__slotnames__"})  # what Python adds to a class (copyreg's cache)
+
+
+def _reinstate_own_classes() -> None:
+    """Put back what an earlier cell replaced in the report's classes; remove what it added."""
+    for kind, defined in _AS_DEFINED.items():
+        now = vars(kind)
+        for name, value in defined.items():
+            if now.get(name, _MISSING) is not value:
+                type.__setattr__(kind, name, value)
+        for name in [name for name in now if name not in defined and name not in _PYTHONS_OWN]:
+            type.__delattr__(kind, name)
+
 
 def _hint_line(exercise: str, hint: str | Hints) -> str:
     """The report's hint: a plain text, or the next step of an exercise's hints."""
@@ -101,14 +125,15 @@ def _hint_line(exercise: str, hint: str | Hints) -> str:
     return failure_hint(exercise, hint, _FAILURES[exercise])
 
 
-def _validated_cases(cases: Any) -> list[Case]:
+def _validated_cases(cases: Any) -> tuple[Case, ...]:
+    """The cases as the checker's own tuple: code that reaches it cannot shorten it."""
     if isinstance(cases, (str, bytes, Mapping)) or not isinstance(cases, Iterable):
         raise TypeError(
             _("cases must be a list of mappings, one per case; got {cases_type}").format(
                 cases_type=type(cases).__name__
             )
         )
-    listed = list(cases)
+    listed = tuple(cases)
     for index, case in enumerate(listed):
         if not isinstance(case, Mapping) or not all(isinstance(k, str) for k in case):
             raise TypeError(
@@ -124,14 +149,24 @@ def _validated_cases(cases: Any) -> list[Case]:
 class _Report:
     exercise: str
     hint: str | Hints
+    warned: list[str] = field(default_factory=list)  # the student's warnings, as text
 
     def fail(self, count: int, lines: list[str], hinted: bool = True, **extra: Any) -> CheckResult:
+        lines = [*lines, *self.warnings()]
         text = "\n".join([*lines, _hint_line(self.exercise, self.hint)] if hinted else lines)
-        return CheckResult(self.exercise, False, count, text, **extra)
+        return _Result(self.exercise, False, count, text, **extra)
 
     def start(self) -> str:
         where = self.hint if isinstance(self.hint, str) else self.hint.where
         return _("Start here: {where}").format(where=_(where))
+
+    def warnings(self) -> list[str]:
+        """The warnings the student's code raised, shown once, as text: never printed to
+        stderr (nbgrader zeroes a cell that writes there), never counted."""
+        return [
+            _("  your code warned (this is not counted): {warning}").format(warning=warning)
+            for warning in self.warned[:_MOST_WARNINGS]
+        ]
 
 
 def _quietly(function: Callable[..., Any] | None, *arguments: Any) -> Any:
@@ -139,11 +174,20 @@ def _quietly(function: Callable[..., Any] | None, *arguments: Any) -> Any:
     if function is None:
         return None
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            return function(*arguments)
+        return function(*arguments)
     except Exception:
         return None
+
+
+def _told(what: Callable[[], Any], fallback: Any = "", seconds: float | None = None) -> Any:
+    """``what()`` under a case's budget, or ``fallback``: what a student's object says of itself
+    (an exception's message) may take forever or raise in turn."""
+    try:
+        return run_bounded(what, seconds=seconds)
+    except KeyboardInterrupt:
+        raise
+    except BaseException:
+        return fallback
 
 
 def run_cases(
@@ -185,7 +229,12 @@ def run_cases(
 
     ``convert`` turns the answer into the reference's form (a tuple into an
     array, say; an :class:`AnswerError` it raises is the report's words)
-    before ``compare(expected, given)``. Stops at the first wrong answer, or
+    before ``compare(expected, given)``. Reading the answer (``answer``,
+    ``convert``) runs under the case's budget too, and the answer is then
+    made plain (:func:`~course.check.answers.plain`): no method of the
+    student's runs after it, so an answer that lies (an ``int`` whose
+    ``__eq__`` is always True) or never ends (an endless iterator) fails
+    with a report, never a traceback. Stops at the first wrong answer, or
     at the first exception the student's code raises (naming their line),
     and reports that case: its inputs, both answers, ``difference(expected,
     given)``, ``explain(case, expected, given)`` (``explain_nan(case, given)``
@@ -197,6 +246,14 @@ def run_cases(
     the message given when the student's code calls or names one; ``hint`` and ``forbidden``
     default to the exercise's declaration (:func:`course.check.exercises.exercise`). On a pass,
     ``pass_picture`` draws the (case, expected, given) of every case.
+
+    The checker's own work runs in :class:`~course.check.views.CheckersView`:
+    numpy, math and the builtins as the course imported them, whatever an
+    earlier cell patched. The warnings the student's code raises are shown
+    once in the report, as text, and count for nothing; the checker no
+    longer makes Python show them again. The expected answer is computed
+    after the student's call, and a check passes only when every one of its
+    cases ran.
     """
     if not callable(student):
         raise TypeError(
@@ -204,215 +261,231 @@ def run_cases(
                 exercise=exercise, type=type(student).__name__
             )
         )
-    hint, forbidden = what_run_cases_takes(exercise, hint, forbidden)
-    cases = _validated_cases(cases)
-    report = _Report(exercise, hint)
-    parameters = tuple(cases[0]) if cases else ()
-    mismatch = arity_problem(student, parameters)
-    if mismatch is not None:
-        return report.fail(
-            0,
-            [
-                _("your function cannot be called as the handout does: {mismatch}").format(
-                    mismatch=mismatch
-                )
-            ],
-        )
-    forbidden = dict(forbidden or {})
-    if forbidden:
-        named = forbidden_message(student, forbidden)
-        if named is not None:
-            return report.fail(0, [named])
-
-    def guarded() -> AbstractContextManager[Any]:
-        stack = ExitStack()
+    _reinstate_own_classes()
+    with CheckersView() as view:
+        hint, forbidden = what_run_cases_takes(exercise, hint, forbidden)
+        cases = _validated_cases(drawn_cases(exercise, _validated_cases(cases)))
+        graded = grading_seed() is not None  # a graded report shows no expected value
+        declared = len(cases)  # held apart from the loop's count: both must agree to pass
+        report = _Report(exercise, hint)
+        parameters = tuple(cases[0]) if cases else ()
+        mismatch = arity_problem(student, parameters)
+        if mismatch is not None:
+            return report.fail(
+                0,
+                [
+                    _("your function cannot be called as the handout does: {mismatch}").format(
+                        mismatch=mismatch
+                    )
+                ],
+            )
+        forbidden = dict(forbidden or {})
         if forbidden:
-            stack.enter_context(call_budget(forbidden=forbidden))
-        if watch is not None:
-            stack.enter_context(watch())
-        return stack
+            named = forbidden_message(student, forbidden)
+            if named is not None:
+                return report.fail(0, [named])
 
-    results: list[tuple[Case, Any, Any]] = []
-    count = 0
-    for count, case in enumerate(cases, start=1):
-        inputs = ", ".join(f"{name}={show_value(value)}" for name, value in case.items())
-        inputs_line = _("  inputs: {inputs}").format(inputs=inputs)
-        expected = reference(**case)
-        arguments = copies(tuple(case.values()))
-        try:
-            returned = run_bounded(
-                lambda arguments=arguments: student(*arguments),
-                seconds=seconds,
-                memory=memory,
-                watch=guarded if (forbidden or watch is not None) else None,
-            )
-        except CaseStopped as stopped:
-            return report.fail(
-                count,
-                [
-                    _("case {count} was stopped: {reason}").format(count=count, reason=stopped),
-                    inputs_line,
-                ],
-            )
-        except CallBudget as stopped:
-            reason, *known = str(stopped).split("\n", 1)
-            lines = [
-                _("case {count} was stopped: {reason}").format(count=count, reason=reason),
-                inputs_line,
-                *known,
-            ]
-            return report.fail(count, lines, mistake=stopped.mistake)
-        except NotImplementedError as error:
-            return report.fail(
-                count,
-                [
-                    _("not written yet: your function raised NotImplementedError: {error}").format(
-                        error=error
-                    ),
-                    report.start(),
-                ],
-                hinted=False,
-            )
-        except Exception as error:  # the student's bug, reported, not raised
-            line = student_line(error)
-            lines = [
-                _("case {count} raised {error_type}: {error}").format(
-                    count=count, error_type=type(error).__name__, error=error
-                )
-            ]
-            if line is not None:
-                lines.append(_("  at {line}").format(line=line))
-            return report.fail(count, [*lines, inputs_line])
-        names = tuple(name for name in parameters if name not in writable)
-        keep = [i for i, name in enumerate(parameters) if name not in writable]
-        changed = changed_argument(
-            names, tuple(case[n] for n in names), tuple(arguments[i] for i in keep)
-        )
-        if changed is not None:
-            lines = [
-                _("case {count} changed its input {changed}").format(count=count, changed=changed),
-                _(
-                    "  your function must leave its inputs as they were: work on a copy "
-                    "(np.array(x, dtype=float) or x.copy())"
-                ),
-                inputs_line,
-            ]
-            if on_change:
-                lines.append(f"  {_(on_change)}")
-            return report.fail(count, lines)
-        if answer is None and returned is None:
-            if is_stub(student):
+        def guarded() -> AbstractContextManager[Any]:
+            stack = ExitStack()
+            if forbidden:
+                stack.enter_context(call_budget(forbidden=forbidden))
+            if watch is not None:
+                stack.enter_context(watch())
+            return stack
+
+        results: list[tuple[Case, Any, Any]] = []
+        count = 0
+        for count, case in enumerate(cases, start=1):
+            inputs = ", ".join(f"{name}={show_value(value)}" for name, value in case.items())
+            inputs_line = _("  inputs: {inputs}").format(inputs=inputs)
+            arguments = copies(tuple(case.values()))
+            try:
+                with view.students(report.warned):
+                    returned = run_bounded(
+                        lambda arguments=arguments: student(*arguments),
+                        seconds=seconds,
+                        memory=memory,
+                        watch=guarded if (forbidden or watch is not None) else None,
+                    )
+            except CaseStopped as stopped:
                 return report.fail(
                     count,
-                    [_("not written yet: your function returns nothing"), report.start()],
+                    [
+                        _("case {count} was stopped: {reason}").format(count=count, reason=stopped),
+                        inputs_line,
+                    ],
+                )
+            except CallBudget as stopped:
+                reason, *known = str(stopped).split("\n", 1)
+                lines = [
+                    _("case {count} was stopped: {reason}").format(count=count, reason=reason),
+                    inputs_line,
+                    *known,
+                ]
+                return report.fail(count, lines, mistake=stopped.mistake)
+            except NotImplementedError as error:
+                return report.fail(
+                    count,
+                    [
+                        _(
+                            "not written yet: your function raised NotImplementedError: {error}"
+                        ).format(error=_told(lambda error=error: str(error), "", seconds)),
+                        report.start(),
+                    ],
                     hinted=False,
                 )
-            return report.fail(
-                count,
-                [
-                    _("case {count} returned None: did you forget `return`?").format(count=count),
-                    inputs_line,
-                ],
-            )
-        raw = answer(returned, arguments) if answer is not None else returned
-        if holds_complex(raw):
-            return report.fail(
-                count,
-                [
-                    _("case {count}: your answer holds complex numbers; the answer is real").format(
-                        count=count
-                    ),
-                    inputs_line,
-                ],
-            )
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                given = convert(raw)
-        except AnswerError as unreadable:
-            return report.fail(
-                count,
-                [
-                    _("case {count}: your answer cannot be read: {reason}").format(
-                        count=count, reason=unreadable
-                    ),
-                    inputs_line,
-                ],
-            )
-        except Exception as unreadable:
-            return report.fail(
-                count,
-                [
-                    _(
-                        "case {count}: your answer, {described}, cannot be read as the "
-                        "exercise's answer ({error_type}: {error})"
-                    ).format(
+            except KeyboardInterrupt:  # the student stopped the kernel: stop the check
+                raise
+            except BaseException as error:  # the student's bug, reported, not raised
+                line = _told(lambda error=error: student_line(error), None, seconds)
+                lines = [
+                    _("case {count} raised {error_type}: {error}").format(
                         count=count,
-                        described=described(raw),
-                        error_type=type(unreadable).__name__,
-                        error=unreadable,
+                        error_type=type(error).__name__,
+                        error=_told(lambda error=error: str(error), "", seconds),
+                    )
+                ]
+                if line is not None:
+                    lines.append(_("  at {line}").format(line=line))
+                return report.fail(count, [*lines, inputs_line])
+            names = tuple(name for name in parameters if name not in writable)
+            keep = [i for i, name in enumerate(parameters) if name not in writable]
+            compared = (names, tuple(case[n] for n in names), tuple(arguments[i] for i in keep))
+            if only_data(arguments):  # the budget's thread is needed only for the student's code
+                changed = changed_argument(*compared)
+            else:
+                changed = _told(
+                    lambda compared=compared: changed_argument(*compared), None, seconds
+                )
+            if changed is not None:
+                lines = [
+                    _("case {count} changed its input {changed}").format(
+                        count=count, changed=changed
                     ),
                     _(
-                        "  (the checker raised this while reading your answer; your function ran "
-                        "without an error)"
+                        "  your function must leave its inputs as they were: work on a copy "
+                        "(np.array(x, dtype=float) or x.copy())"
                     ),
                     inputs_line,
-                ],
-            )
-        bad = non_finite(given)
-        if bad is not None:
-            lines = [_("case {count}: {problem}").format(count=count, problem=bad), inputs_line]
-            said = _quietly(explain_nan, case, given)
-            if said:
-                lines.append(f"  {said}")
-            # A mistake with its own rule may expect NaN (an empty window's mean).
-            known = _recognise([m for m in mistakes if m.matches], case, given, compare)
+                ]
+                if on_change:
+                    lines.append(f"  {_(on_change)}")
+                return report.fail(count, lines)
+            if answer is None and returned is None:
+                if is_stub(student):
+                    return report.fail(
+                        count,
+                        [_("not written yet: your function returns nothing"), report.start()],
+                        hinted=False,
+                    )
+                return report.fail(
+                    count,
+                    [
+                        _("case {count} returned None: did you forget `return`?").format(
+                            count=count
+                        ),
+                        inputs_line,
+                    ],
+                )
+            read = partial(read_answer, count, returned, arguments, answer, convert, compare)
+            try:
+                data = only_data((returned, arguments))
+                reading = read() if data else run_bounded(read, seconds=seconds, memory=memory)
+            except CaseStopped as stopped:
+                reading = Reading(
+                    lines=[
+                        _("case {count}: reading your answer was stopped: {reason}").format(
+                            count=count, reason=stopped
+                        )
+                    ]
+                )
+            except KeyboardInterrupt:
+                raise
+            except BaseException as error:  # a student's method raised more than an Exception
+                said = _told(lambda error=error: str(error), "", seconds)
+                reason = f"{type(error).__name__}: {said}"
+                reading = Reading(
+                    lines=[
+                        _("case {count}: your answer cannot be read: {reason}").format(
+                            count=count, reason=reason
+                        )
+                    ]
+                )
+            if reading.lines is not None:
+                return report.fail(count, [*reading.lines, inputs_line])
+            given = reading.given
+            # Computed only now, after the student's call: no frame of theirs can read it.
+            expected = reference(**case)
+            bad = non_finite(given)
+            if bad is not None:
+                lines = [
+                    _("case {count}: {problem}").format(count=count, problem=bad),
+                    inputs_line,
+                ]
+                said = _quietly(explain_nan, case, given)
+                if said:
+                    lines.append(f"  {said}")
+                # A mistake with its own rule may expect NaN (an empty window's mean).
+                known = _recognise([m for m in mistakes if m.matches], case, given, compare)
+                if known is not None:
+                    lines.append(known_mistake(known))
+                return report.fail(count, lines, mistake=None if known is None else known.name)
+            try:
+                same = bool(compare(expected, given))
+            except Exception:  # an answer of another form than the reference's
+                same = False
+            if same:
+                results.append((case, expected, given))
+                continue
+            writer = show or show_value
+            lines = [
+                _("case {count} is wrong").format(count=count),
+                inputs_line,
+                _("  expected: {value}").format(value=_quietly(writer, expected)),
+                _("  given:    {value}").format(value=_quietly(writer, given) or reading.described),
+            ]
+            for extra in (_quietly(difference, expected, given), reading.narrow):
+                if extra:
+                    lines.append(f"  {extra}")
+            if graded:  # the case's inputs and the student's answer, not the expected one
+                lines = [lines[0], lines[1], lines[3]]
+            elif explain is not None:
+                said = _quietly(explain, case, expected, given)
+                if said:
+                    lines.append(f"  {said}")
+            known = _recognise(mistakes, case, given, compare)
             if known is not None:
                 lines.append(known_mistake(known))
-            return report.fail(count, lines, mistake=None if known is None else known.name)
-        try:
-            same = compare(expected, given)
-        except (TypeError, ValueError):
-            same = False
-        if same:
-            results.append((case, expected, given))
-            continue
-        writer = show or show_value
-        lines = [
-            _("case {count} is wrong").format(count=count),
-            inputs_line,
-            _("  expected: {value}").format(value=_quietly(writer, expected)),
-            _("  given:    {value}").format(value=_quietly(writer, given) or described(raw)),
-        ]
-        for extra in (_quietly(difference, expected, given), narrow_float(raw, compare)):
-            if extra:
-                lines.append(f"  {extra}")
-        if explain is not None:
-            said = _quietly(explain, case, expected, given)
-            if said:
-                lines.append(f"  {said}")
-        known = _recognise(mistakes, case, given, compare)
-        if known is not None:
-            lines.append(known_mistake(known))
-        drawn = _quietly(picture, case, expected, given)
-        return report.fail(
-            count, lines, picture=drawn, mistake=None if known is None else known.name
-        )
-    drawn = _quietly(pass_picture, results)
-    passed = _("all {count} cases pass").format(count=count)
-    return CheckResult(exercise, True, count, passed, picture=drawn)
+            drawn = None if graded else _quietly(picture, case, expected, given)
+            return report.fail(
+                count, lines, picture=drawn, mistake=None if known is None else known.name
+            )
+        if not declared:
+            return report.fail(0, [_("no case ran: a check needs at least one case")])
+        if count != declared or len(results) != declared:
+            return report.fail(
+                count,
+                [
+                    _(
+                        "only {count} of the {declared} cases ran: a check passes only when "
+                        "every case runs"
+                    ).format(count=len(results), declared=declared)
+                ],
+            )
+        drawn = _quietly(pass_picture, results)
+        passed = "\n".join([_("all {count} cases pass").format(count=count), *report.warnings()])
+        return _Result(exercise, True, count, passed, picture=drawn)
 
 
 def _recognise(
     mistakes: Sequence[Mistake], case: Case, given: Any, compare: Callable[[Any, Any], bool]
 ) -> Mistake | None:
-    """The first mistake whose answer for ``case`` is the student's."""
+    """The first mistake whose answer for ``case`` is the student's (inside the checker's view,
+    where no warning is shown)."""
     for mistake in mistakes:
         try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                if (mistake.matches or compare)(mistake.answer(**copies_of(case)), given):
-                    return mistake
+            if (mistake.matches or compare)(mistake.answer(**copies_of(case)), given):
+                return mistake
         except Exception:
             continue
     return None

@@ -6,16 +6,22 @@ pixel sets in any order (:func:`same_pixels`, :func:`pixel_difference`).
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
-from course.check.answers import pixel_rows
+from course.check.answers import pixel_rows, type_name
+from course.check.views import quiet
 from course.i18n import _
 
 __all__ = ["close", "first_difference", "pixel_difference", "same_pixels"]
+
+# The comparisons' own numpy, held from import: an earlier cell's `np.allclose = lambda *a,
+# **k: True` does not make a wrong answer pass (course.check.views.CheckersView puts numpy
+# back for the rest of a check).
+_allclose, _array_equal, _isclose = np.allclose, np.array_equal, np.isclose
+_asarray, _unique = np.asarray, np.unique
 
 
 def close(atol: float = 1e-9, rtol: float = 1e-9) -> Callable[[Any, Any], bool]:
@@ -31,9 +37,9 @@ def close(atol: float = 1e-9, rtol: float = 1e-9) -> Callable[[Any, Any], bool]:
     """
 
     def compare(expected: Any, given: Any) -> bool:
-        expected, given = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+        expected, given = _asarray(expected, dtype=float), _asarray(given, dtype=float)
         return expected.shape == given.shape and bool(
-            np.allclose(given, expected, atol=atol, rtol=rtol)
+            _allclose(given, expected, atol=atol, rtol=rtol)
         )
 
     compare.atol, compare.rtol = atol, rtol  # type: ignore[attr-defined]
@@ -48,7 +54,7 @@ _WIDE = 2**22
 def _keys(pixels: Any, name: str) -> np.ndarray:
     rows = pixels if isinstance(pixels, np.ndarray) and pixels.dtype == np.int64 else None
     rows = pixel_rows(pixels, name) if rows is None else rows.reshape(-1, 2)
-    return np.unique((rows[:, 1] + _OFFSET) * _WIDE + (rows[:, 0] + _OFFSET))
+    return _unique((rows[:, 1] + _OFFSET) * _WIDE + (rows[:, 0] + _OFFSET))
 
 
 def _pixel_of(key: int) -> tuple[int, int]:
@@ -63,7 +69,7 @@ def same_pixels(expected: Any, given: Any) -> bool:
     >>> same_pixels([[1, 2], [3, 4]], [[3, 4], [1, 2], [1, 2]])
     True
     """
-    return bool(np.array_equal(_keys(expected, "expected"), _keys(given, "given")))
+    return bool(_array_equal(_keys(expected, "expected"), _keys(given, "given")))
 
 
 def first_difference(expected: Any, given: Any, atol: float = 1e-9, rtol: float = 1e-9) -> str:
@@ -83,18 +89,17 @@ def first_difference(expected: Any, given: Any, atol: float = 1e-9, rtol: float 
         given    [[0., 0., 0.], [0., 1., 0.], [0., 0., 0.]]
     """
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            expected, given = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+        with quiet():
+            expected, given = _asarray(expected, dtype=float), _asarray(given, dtype=float)
     except (TypeError, ValueError):
-        return _("given a {type}, not numbers").format(type=type(given).__name__)
+        return _("given a {type}, not numbers").format(type=type_name(given))
     if expected.shape != given.shape:
         return _("expected shape {expected}, given shape {given}").format(
             expected=expected.shape, given=given.shape
         )
     if expected.ndim == 0:
         return ""  # one value: the lines above say it all
-    wrong = ~np.isclose(given, expected, atol=atol, rtol=rtol)
+    wrong = ~_isclose(given, expected, atol=atol, rtol=rtol)
     if not wrong.any():
         return _("the values agree within the tolerance")
     index = tuple(int(i) for i in np.argwhere(wrong)[0])

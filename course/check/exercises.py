@@ -66,7 +66,9 @@ class Exercise:
     write it, with :data:`DEFAULT_REFUSAL`; or it is a function that maps them to their
     messages, made in the language of the moment (:func:`refused_messages`).
     ``grader_reference`` is the grader's own answer, for a later exercise that calls this one
-    (nbgrader grades it with that answer, so that a mistake is charged once).
+    (nbgrader grades it with that answer, so that a mistake is charged once). ``draw(rng)``
+    draws the cases a submission is graded on, from the families of the fixed ones
+    (:mod:`course.check.grading`).
     """
 
     name: str
@@ -77,6 +79,7 @@ class Exercise:
     refuses: tuple[Any, ...] | Callable[[], Mapping[Any, str]]
     handout_names: tuple[str, ...] = ()
     grader_reference: Callable[..., Any] | None = None
+    draw: Callable[[Any], Sequence[Mapping[str, Any]]] | None = None
 
     @property
     def module(self) -> str:
@@ -95,6 +98,7 @@ def exercise(
     function: str | None = None,
     reported_as: str | None = None,
     grader_reference: Callable[..., Any] | None = None,
+    draw: Callable[[Any], Sequence[Mapping[str, Any]]] | None = None,
 ) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """Declare the decorated checker an exercise: its hints and the library answers it refuses.
 
@@ -153,6 +157,7 @@ def exercise(
             refuses=refuses if callable(refuses) else tuple(refuses),
             handout_names=tuple(handout_names),
             grader_reference=grader_reference,
+            draw=draw,
         )
         for key in {declaration.name, declaration.function, declaration.reported_as}:
             _DECLARED[key] = declaration

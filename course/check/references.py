@@ -10,14 +10,24 @@ from __future__ import annotations
 
 import builtins
 import dis
+import os
 import sys
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
+from contextvars import ContextVar
 from typing import Any
 
 from course.i18n import _
 
-__all__ = ["CallBudget", "call_budget", "forbidden_message", "known_mistake"]
+__all__ = ["CallBudget", "call_budget", "call_limits", "forbidden_message", "known_mistake"]
+
+# Held from import: a cell that rebinds sys.setprofile does not keep the watch from starting.
+_getprofile, _setprofile = sys.getprofile, sys.setprofile
+# The checker's own files, whose calls of sys.setprofile (starting and ending a watch) are its.
+_OWN_FILES = frozenset(
+    os.path.join(os.path.dirname(os.path.abspath(__file__)), name)
+    for name in ("references.py", "budget.py")
+)
 
 
 class CallBudget(Exception):
@@ -47,15 +57,26 @@ def call_budget(
     every call of a C function made from Python, however the student
     imported them. With ``too_many``, running out of calls is reported as
     that known mistake.
+
+    A budget entered inside another keeps the outer one watching too. The
+    student's code may not switch the watch off: its call of ``sys.setprofile``
+    is refused, and a watch found switched off when the code returns fails the
+    case, so a forbidden call cannot hide behind ``sys.setprofile(None)``.
     """
     forbidden = dict(forbidden or {})
     forbidden_codes = {getattr(f, "__code__", None): text for f, text in forbidden.items()}
     forbidden_codes.pop(None, None)
     calls = 0
+    previous = _getprofile()
+    outer = previous if getattr(previous, "course_call_budget", False) else None
 
     def watch(frame: Any, event: str, argument: Any) -> None:
         nonlocal calls
+        if outer is not None:
+            outer(frame, event, argument)
         if event == "c_call":
+            if argument is _setprofile and frame.f_code.co_filename not in _OWN_FILES:
+                raise CallBudget(_switched_off())
             for function, text in forbidden.items():
                 if argument is function:
                     raise CallBudget(text)
@@ -69,12 +90,33 @@ def call_budget(
                     raise CallBudget(message)
                 raise CallBudget(f"{message}\n{known_mistake(too_many)}", too_many.name)
 
-    previous = sys.getprofile()
-    sys.setprofile(watch)
+    watch.course_call_budget = True  # type: ignore[attr-defined]
+    _setprofile(watch)
+    limits = _LIMITS.set((max_calls, too_many))
     try:
         yield
+        if _getprofile() is not watch:
+            raise CallBudget(_switched_off())
     finally:
-        sys.setprofile(previous)
+        _LIMITS.reset(limits)
+        _setprofile(previous)
+
+
+def _switched_off() -> str:
+    return _(
+        "your code switched off the checker's watch (sys.setprofile): leave it on, and write "
+        "the exercise's answer yourself"
+    )
+
+
+# The innermost call_budget's (max_calls, too_many): a student's code run in another process
+# (course.check.outside) is held to it there.
+_LIMITS: ContextVar[tuple[int | None, Any]] = ContextVar("course_call_budget", default=(None, None))
+
+
+def call_limits() -> tuple[int | None, Any]:
+    """The innermost :func:`call_budget`'s ``max_calls`` and ``too_many``; (None, None) outside."""
+    return _LIMITS.get()
 
 
 def known_mistake(mistake: Any) -> str:

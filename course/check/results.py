@@ -41,10 +41,9 @@ class CheckResult:
 
     ``picture`` is a PNG of the difference (or None); ``mistake`` the name of
     the known mistake recognised (or None). In a notebook the report shows
-    as text, then the picture; the text's output carries the outcome in its
-    metadata (:meth:`outcome`), where the class's mistakes report reads it. The
-    lessons' autograded test cells call :meth:`graded`: the report, and under
-    nbgrader a failure raised; :meth:`assert_passed` always raises on a failure.
+    as text, then the picture. The lessons' check cells call :meth:`graded`: the
+    report, its outcome (:meth:`outcome`) in the text's metadata, and under nbgrader a
+    failure raised; :meth:`assert_passed` always raises on a failure.
     """
 
     exercise: str
@@ -84,9 +83,7 @@ class CheckResult:
         >>> CheckResult("f", True, 2, "all 2 cases pass").graded()
         PASS f: all 2 cases pass
         """
-        from IPython.display import display
-
-        display(self)
+        self._show({"course": {"check": self.outcome()}})
         if not self.passed and os.environ.get("NBGRADER_EXECUTION"):
             raise CheckFailed(str(self))
 
@@ -117,9 +114,21 @@ class CheckResult:
     __repr__ = __str__
 
     def _ipython_display_(self) -> None:
+        self._show()
+
+    def _show(self, metadata: dict[str, Any] | None = None) -> None:
+        """The report as text, then its picture; ``metadata`` rides with the text (a check
+        cell's outcome, which the class's mistakes report reads). Printed outside IPython."""
+        from IPython import get_ipython
         from IPython.display import display
 
-        display({"text/plain": str(self)}, raw=True, metadata={"course": {"check": self.outcome()}})
+        if get_ipython() is None:
+            print(self)
+            return
+        if metadata is None:
+            display({"text/plain": str(self)}, raw=True)
+        else:
+            display({"text/plain": str(self)}, raw=True, metadata=metadata)
         if self.picture is not None:
             display({"image/png": self.picture}, raw=True)
 

@@ -1,17 +1,12 @@
-"""Running a student's function safely: a time and memory budget, its inputs kept, its errors read.
+"""Running a student's function safely: its budget, its inputs kept, its errors read.
 
-The student's code runs in the calling thread (in a notebook, the kernel's
-own), so their globals, prints and breakpoints behave as usual. A watchdog
-thread looks at the clock and at ``tracemalloc``'s count of the memory
-allocated since the case began (numpy reports its buffers there too); past
-either budget it raises :class:`_BudgetExceeded` inside the student's code
-with ``PyThreadState_SetAsyncExc``, which CPython offers on every operating
-system, and raises it again every :data:`_REPEAT` seconds in case the code
-catches it. The kernel survives; the caller gets :class:`CaseStopped`.
-
-A call that stays inside one long C function (a single ``time.sleep(60)``)
-cannot be interrupted this way, nor a loop whose bare ``except:`` catches
-every raise; every other loop written in Python can.
+The call itself runs under a time and a memory budget (:func:`run_bounded`,
+:class:`CaseStopped`, from :mod:`course.check.budget`, re-exported here); the
+checker's own work runs in :class:`course.check.views.CheckersView`. This module
+copies a case's inputs for the call (:func:`copies`) and finds what the call
+changed in them (:func:`changed_argument`), reads the student's function
+before it runs (:func:`arity_problem`, :func:`is_stub`) and the line of theirs
+an error came from (:func:`student_line`).
 
 Unchecked: this is the checkers' kernel (``UNCHECKED = True``). It runs and
 copies whatever it is given, NaN included; ``course.check.base`` validates
@@ -22,21 +17,17 @@ from __future__ import annotations
 
 import ast
 import copy
-import ctypes
 import inspect
 import os
 import sys
 import textwrap
-import threading
-import time
 import traceback
-import tracemalloc
 from collections.abc import Callable, Mapping
-from contextlib import AbstractContextManager, nullcontext
 from typing import Any
 
 import numpy as np
 
+from course.check.budget import MEMORY_BUDGET, TIME_BUDGET, CaseStopped, run_bounded
 from course.i18n import _
 
 UNCHECKED = True  # see the module docstring
@@ -50,221 +41,25 @@ __all__ = [
     "changed_argument",
     "copies",
     "describe_function",
+    "is_notebook_cell",
     "is_stub",
     "run_bounded",
     "student_line",
 ]
 
-#: Seconds of computing one case may take before it is stopped as a loop that does not end.
-#: Counted on the case's own thread's CPU clock where the system has one (Linux, macOS), so a
-#: busy machine (a class on one server, a test run beside others) never stops a right answer;
-#: on the wall clock elsewhere.
-TIME_BUDGET = 3.0
-#: A case that waits rather than computes (``time.sleep``, ``input``) is stopped after this many
-#: times the budget on the wall clock.
-_WALL_FACTOR = 10
-#: Bytes one case may allocate (and keep) before it is stopped as memory that keeps growing.
-MEMORY_BUDGET = 512 * 2**20
-#: How often the watchdog looks, and how long it waits before raising again if it is caught.
-_POLL = 0.01
-_REPEAT = 0.2
 _COURSE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Frames in these folders are the course's, Python's or a library's, never the student's.
 _NOT_THEIRS = tuple(
     {_COURSE, *(os.path.abspath(p) for p in (sys.prefix, sys.base_prefix, sys.exec_prefix))}
 )
 
-
-class CaseStopped(Exception):
-    """A case the watchdog stopped: ``reason`` says why, in the student's terms."""
-
-    def __init__(self, reason: str, kind: str) -> None:
-        super().__init__(reason)
-        self.reason = reason
-        self.kind = kind
-
-
-class _BudgetExceeded(BaseException):
-    """Raised inside the student's code; a BaseException, so ``except Exception`` lets it by."""
-
-
-#: The one watchdog allowed to raise: a watchdog left over from an earlier case never does.
-_ACTIVE: list[Any] = [None]
-
-
-class _Watchdog(threading.Thread):
-    """Raises in the target thread past a budget. It shares no lock with it: an exception
-    delivered inside a ``with lock`` could leave the lock held, so the two talk through
-    plain attributes, each written in one step."""
-
-    def __init__(self, target: int, seconds: float, memory: int, baseline: int) -> None:
-        super().__init__(name="course-check-watchdog", daemon=True)
-        self.target, self.seconds, self.memory, self.baseline = target, seconds, memory, baseline
-        self.done = False  # set by the target thread: raise no more
-        self.exited = False  # set here: no raise will follow
-        self.kind: str | None = None
-
-    def run(self) -> None:
-        try:
-            self._watch()
-        finally:
-            self.exited = True
-
-    def _watch(self) -> None:
-        computing = _cpu_clock(self.target)
-        start, start_computing = time.monotonic(), computing()
-        next_raise = 0.0
-        while not self.done and _ACTIVE[0] is self:
-            time.sleep(_POLL)
-            now = time.monotonic()
-            kind = None
-            if (
-                computing() - start_computing > self.seconds
-                or now - start > self.seconds * _WALL_FACTOR
-            ):
-                kind = "time"
-            elif tracemalloc.is_tracing():
-                current, _ = tracemalloc.get_traced_memory()
-                if current - self.baseline > self.memory:
-                    kind = "memory"
-            if kind is None or now < next_raise or self.done or _ACTIVE[0] is not self:
-                continue
-            self.kind = self.kind or kind
-            _raise_in(self.target, _BudgetExceeded)
-            next_raise = now + _REPEAT
-
-    def stop(self) -> None:
-        self.done = True
-        if _ACTIVE[0] is self:
-            _ACTIVE[0] = None
-        deadline = time.monotonic() + 1.0
-        while not self.exited and time.monotonic() < deadline:
-            time.sleep(_POLL / 10)
-        if self.kind is not None:
-            _drain(self.target)
-
-
-def _cpu_clock(thread_id: int) -> Callable[[], float]:
-    """The CPU time of thread ``thread_id`` as a function, or the wall clock where there is none."""
-    try:
-        clock = time.pthread_getcpuclockid(thread_id)
-        time.clock_gettime(clock)
-    except (AttributeError, OSError, OverflowError):
-        return time.monotonic
-    return lambda: time.clock_gettime(clock)
-
-
-class _Drained(BaseException):
-    """Replaces a raise not yet delivered, and is caught at once by :func:`_drain`."""
-
-
-def _drain(thread_id: int) -> None:
-    """Take delivery here of any raise still pending, so none reaches the checker's code.
-
-    Cancelling a pending raise (``PyThreadState_SetAsyncExc`` with NULL) leaves
-    CPython's "asynchronous exception" flag set with nothing to deliver: a
-    profile hook (``call_budget``) then spins forever at the next function
-    entry. So the pending raise is replaced by one that is delivered, which
-    clears the flag, and caught here, in a loop that gives it a place to land.
-    """
-    try:
-        _raise_in(thread_id, _Drained)
-        for _ in range(10**8):
-            pass
-    except _Drained:
-        return
-
-
-def _raise_in(thread_id: int, exception: type[BaseException] | None) -> None:
-    ctypes.pythonapi.PyThreadState_SetAsyncExc(
-        ctypes.c_ulong(thread_id), ctypes.py_object(exception) if exception else None
-    )
-
-
-def _reason(kind: str, seconds: float, memory: int) -> str:
-    if kind == "memory":
-        return _("memory kept growing (past {mebibytes} MiB)").format(
-            mebibytes=f"{memory / 2**20:g}"
-        )
-    return _("the loop did not stop within {seconds} s").format(seconds=f"{seconds:g}")
-
-
-def run_bounded(
-    call: Callable[[], Any],
-    seconds: float | None = None,
-    memory: int | None = None,
-    watch: Callable[[], AbstractContextManager[Any]] | None = None,
-) -> Any:
-    """``call()`` under a time and a memory budget; past one, :class:`CaseStopped`.
-
-    ``watch()``, if given, makes a context manager ``call`` runs inside (a
-    :func:`~course.check.base.call_budget`). ``tracemalloc`` is started for
-    the call and stopped after it unless it was already running. A
-    ``MemoryError`` counts as memory that kept growing.
-
-    Examples
-    --------
-    >>> run_bounded(lambda: sum(range(10)))
-    45
-    >>> def forever():
-    ...     while True:
-    ...         pass
-    >>> run_bounded(forever, seconds=0.05)
-    Traceback (most recent call last):
-    ...
-    course.check.sandbox.CaseStopped: the loop did not stop within 0.05 s
-    """
-    seconds = TIME_BUDGET if seconds is None else float(seconds)
-    memory = MEMORY_BUDGET if memory is None else int(memory)
-    was_tracing = tracemalloc.is_tracing()
-    if not was_tracing:
-        tracemalloc.start()
-    watchdog = _Watchdog(threading.get_ident(), seconds, memory, tracemalloc.get_traced_memory()[0])
-    profile = sys.getprofile()
-    _ACTIVE[0] = watchdog
-    try:
-        try:
-            watchdog.start()
-            with watch() if watch is not None else nullcontext():
-                return call()
-        finally:
-            _stop(watchdog)
-    except _BudgetExceeded:
-        _stop(watchdog)
-        kind = watchdog.kind or "time"
-        raise CaseStopped(_reason(kind, seconds, memory), kind) from None
-    except MemoryError:
-        raise CaseStopped(_reason("memory", seconds, memory), "memory") from None
-    finally:
-        _restore(profile, was_tracing, watchdog)
-
-
-def _stop(watchdog: _Watchdog) -> None:
-    """Stop the watchdog, even if its last raise arrives while this runs."""
-    for _attempt in range(100):
-        try:
-            watchdog.stop()
-            return
-        except _BudgetExceeded:
-            continue
-    watchdog.stop()
-
-
-def _restore(profile: Any, was_tracing: bool, watchdog: _Watchdog) -> None:
-    while True:
-        try:
-            _stop(watchdog)
-            sys.setprofile(profile)
-            if not was_tracing and tracemalloc.is_tracing():
-                tracemalloc.stop()
-            return
-        except _BudgetExceeded:
-            continue
+# Held from import: a cell that patches copy.deepcopy does not share the inputs.
+_deepcopy = copy.deepcopy
 
 
 def copies(values: tuple[Any, ...]) -> tuple[Any, ...]:
     """Deep copies of a case's inputs, so the student's code cannot change the checker's."""
-    return tuple(copy.deepcopy(value) for value in values)
+    return tuple(_deepcopy(value) for value in values)
 
 
 def changed_argument(
@@ -335,8 +130,8 @@ def arity_problem(function: Callable[..., Any], parameters: tuple[str, ...]) -> 
     """
     try:
         signature = inspect.signature(function)
-    except (TypeError, ValueError):
-        return None  # a builtin without a signature: the call will tell
+    except Exception:  # a builtin without a signature, an odd callable: the call will tell
+        return None
     try:
         signature.bind(*parameters)
         return None
@@ -364,7 +159,7 @@ def is_stub(function: Callable[..., Any]) -> bool:
     try:
         source = textwrap.dedent(inspect.getsource(function))
         tree = ast.parse(source)
-    except (OSError, TypeError, SyntaxError, IndentationError):
+    except Exception:  # no source to read (a builtin, an odd callable): not a stub
         return False
     definitions = [n for n in ast.walk(tree) if isinstance(n, ast.FunctionDef)]
     if not definitions:
@@ -396,6 +191,9 @@ def student_line(error: BaseException) -> str | None:
     ...     print(student_line(error))
     line 2 of mine: return 1 / 0
     """
+    told = getattr(error, "course_student_line", None)  # from a child (course.check.outside)
+    if isinstance(told, str):
+        return told
     frames = traceback.extract_tb(error.__traceback__)
     own = [
         f
@@ -406,7 +204,7 @@ def student_line(error: BaseException) -> str | None:
         return None
     frame = own[-1]
     text = (frame.line or "").strip()
-    if _is_cell(frame.filename):
+    if is_notebook_cell(frame.filename):
         # IPython compiles each cell on its own, so the line number counts from the cell's top.
         where = _("line {line} of your cell, in {function}").format(
             line=frame.lineno, function=frame.name
@@ -416,7 +214,7 @@ def student_line(error: BaseException) -> str | None:
     return f"{where}: {text}" if text else where
 
 
-def _is_cell(filename: str) -> bool:
+def is_notebook_cell(filename: str) -> bool:
     """Whether ``filename`` is a notebook cell's: ipykernel's ``.../ipykernel_N/M.py``, or older
     IPython's ``<ipython-input-N-...>``."""
     if filename.startswith("<ipython-input-"):

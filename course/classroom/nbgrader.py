@@ -58,6 +58,15 @@ c.CourseDirectory.course_id = "course"
 c.ClearSolutions.code_stub = {{"python": {stub!r}}}
 # A lesson's pictures and apps take a while to compute in a fresh kernel.
 c.Execute.timeout = 600
+# Each exercise graded outside the student's kernel (course.classroom.autograder), right
+# after nbgrader has run the notebook: the check cells' points are its verdicts.
+from course.classroom.autograder import CheckOutsideKernel  # noqa: E402
+from nbgrader.converters import Autograde  # noqa: E402
+from nbgrader.preprocessors import Execute  # noqa: E402
+
+_steps = list(Autograde.class_traits()["autograde_preprocessors"].make_dynamic_default())
+_steps.insert(_steps.index(Execute) + 1, CheckOutsideKernel)
+c.Autograde.autograde_preprocessors = _steps
 # nbgrader zip_collect: a learning platform's download, each upload named
 # <student>_<lesson>.ipynb (01_de_casteljau's by alice: alice_01_de_casteljau.ipynb);
 # change the rule to your platform's file names.

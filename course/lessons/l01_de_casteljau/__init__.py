@@ -2,6 +2,7 @@
 
 - :mod:`.lesson`: lesson 01, de Casteljau's algorithm: its registry entry, pictures, landmarks and
   printed lines;
+- :mod:`.drawn`: lesson 01's graded cases, drawn per submission from the fixed cases' families;
 - :mod:`.check`: lesson 01's checkers: one de Casteljau level, ``recursive_bezier`` and the drawing
   loop;
 - :mod:`.apps`: lesson 01's app: de Casteljau's construction, level by level, as t moves;

@@ -55,10 +55,12 @@ from course.lessons.l01_de_casteljau.drawing_loop import (
     bezier_pass_picture,
     bezier_picture,
     bezier_reference,
+    draw_bezier_cases,
     painting_difference,
     same_painting,
     show_painting,
 )
+from course.lessons.l01_de_casteljau.drawn import draw_curve_cases
 
 __all__ = [
     "LIBRARY_CURVES",
@@ -244,10 +246,17 @@ def _graded_recursive_bezier(control_points: Any, t: float) -> Any:
     return points[0]
 
 
+def _drawn_curve_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """The graded cases of ``recursive_bezier`` and ``next_level``: :func:`draw_curve_cases`'
+    families (a quadratic, a line, a cubic, curves of 5 to 10 points, each at five t)."""
+    return draw_curve_cases(rng, max_points=10)
+
+
 @exercise(
     hints=RECURSIVE_HINTS,
     refuses=library_curves,
     grader_reference=_graded_recursive_bezier,
+    draw=_drawn_curve_cases,
 )
 def recursive_bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's de Casteljau ``recursive_bezier(control_points, t)``.
@@ -372,6 +381,7 @@ def _graded_next_level(control_points: Any, t: float) -> Any:
     hints=NEXT_LEVEL_HINTS,
     refuses=library_curves,
     grader_reference=_graded_next_level,
+    draw=_drawn_curve_cases,
 )
 def next_level(function: Callable[..., Any]) -> CheckResult:
     """Check ``next_level(control_points, t)``: the N - 1 points of one de Casteljau step.
@@ -416,6 +426,7 @@ BEZIER_HINTS = Hints(
 @exercise(
     hints=BEZIER_HINTS,
     refuses=library_curves,
+    draw=draw_bezier_cases,
 )
 def bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's drawing loop ``bezier(control_points, window)``.

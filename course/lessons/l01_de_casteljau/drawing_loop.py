@@ -47,6 +47,7 @@ __all__ = [
     "bezier_pass_picture",
     "bezier_picture",
     "bezier_reference",
+    "draw_bezier_cases",
     "painting_difference",
     "same_painting",
     "show_painting",
@@ -88,6 +89,119 @@ def bezier_cases() -> list[dict[str, Any]]:
         {"control_points": points.copy(), "window": np.zeros((*shape, 3))}
         for points, shape in BEZIER_SHAPES
     ]
+
+
+def draw_bezier_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of :data:`BEZIER_SHAPES`' families, drawn from ``rng``, each with a black
+    window.
+
+    In the same order: a cubic across a 700 x 700 window with a long last leg, on which the
+    drawing loop's mistakes each paint pixels of their own (the loop stopped before t = 1,
+    float32 t, rounding, both, x and y swapped, a step of 0.01); a cubic that leaves a window
+    of about 60 x 80 on the left and the right, on which int() before the window test and
+    the two wrapped negative indices each paint pixels of their own; a quadratic inside a
+    24 x 24 window; then lines of drawn lengths along the 700 x 700 window's edges, either way
+    round: on x = 0, ending at x = width, on y = 0, on y = height and on y = -0.5.
+
+    Examples
+    --------
+    >>> cases = draw_bezier_cases(np.random.default_rng(1))
+    >>> [case["window"].shape[:2] for case in cases][:3], len(cases)
+    ([(700, 700), (63, 81), (24, 24)], 8)
+    >>> cases[3]["control_points"][:, 0].tolist(), cases[7]["control_points"][:, 1].tolist()
+    ([0.0, 0.0], [-0.5, -0.5])
+    """
+    shapes = [(700, 700)]
+
+    def spanning() -> np.ndarray:  # a long last leg: the pixel of t = 1 is its own
+        while True:
+            points = rng.uniform(10, 690, (4, 2)).round(1)
+            if np.hypot(*(points[3] - points[2])) >= 300:
+                return points
+
+    float32_loop = uniform_parameters(STEP, accumulate="float32")
+    cubic = _drawn_until_apart(
+        spanning,
+        shapes[0],
+        [
+            lambda points, shape: _loop_pixels(points, shape, _every_t()),
+            lambda points, shape: _loop_pixels(points, shape, float32_loop),
+            lambda points, shape: _loop_pixels(points, shape, _every_t()[:-1]),
+            lambda points, shape: _loop_pixels(points, shape, _every_t(), "round"),
+            lambda points, shape: _loop_pixels(points, shape, float32_loop, "round"),
+            lambda points, shape: _loop_pixels(points, shape[1::-1], _every_t())[:, ::-1],
+            lambda points, shape: _loop_pixels(points, shape, np.arange(101) / 100),
+        ],
+    )
+    height, width = int(rng.integers(50, 71)), int(rng.integers(70, 91))
+    shapes.append((height, width))
+
+    def leaving() -> np.ndarray:
+        while True:
+            points = np.array(
+                [
+                    [-rng.uniform(15, 30), rng.uniform(0.7, 0.9) * height],
+                    [rng.uniform(0.3, 0.45) * width, -rng.uniform(0.5, 0.8) * height],
+                    [rng.uniform(0.8, 0.95) * width, rng.uniform(1.3, 1.6) * height],
+                    [rng.uniform(1.15, 1.35) * width, rng.uniform(0.25, 0.45) * height],
+                ]
+            ).round(1)
+            curve = de_casteljau(points, _every_t())
+            if curve[:, 0].min() < -1 and curve[:, 0].max() > width:
+                return points
+
+    off_window = _drawn_until_apart(
+        leaving,
+        shapes[1],
+        [
+            lambda points, shape: _loop_pixels(points, shape, _every_t()),
+            lambda points, shape: _loop_pixels(points, shape, _every_t(), "trunc"),
+            lambda points, shape: _wrapped("trunc")(points, np.zeros(shape)),
+            lambda points, shape: _wrapped("floor")(points, np.zeros(shape)),
+        ],
+    )
+    shapes.append((24, 24))
+    polygons = [cubic, off_window, rng.uniform(1.5, 22.5, (3, 2)).round(1)]
+
+    def along(start: float, stop: float) -> tuple[float, float]:
+        first = round(float(rng.uniform(start, stop)), 1)
+        return first, round(first + float(rng.uniform(50, 350)), 1)
+
+    top, bottom = along(5, 300)
+    left, right = along(50, 300)
+    edges = [
+        [[0.0, top], [0.0, bottom]],
+        [[round(float(rng.uniform(550, 680)), 1), float(rng.integers(20, 680))], [700.0, 0.0]],
+        [[left, 0.0], [right, 0.0]],
+        [[left + 30, 700.0], [right + 30, 700.0]],
+        [[left + 60, -0.5], [right + 60, -0.5]],
+    ]
+    edges[1][1][1] = edges[1][0][1]  # the line ends at x = width, on the row it started in
+    for points in edges:
+        polygons.append(np.array(points if rng.random() < 0.5 else points[::-1]))
+        shapes.append((700, 700))
+    return [
+        {"control_points": points, "window": np.zeros((*shape, 3))}
+        for points, shape in zip(polygons, shapes, strict=True)
+    ]
+
+
+def _drawn_until_apart(
+    draw: Callable[[], np.ndarray],
+    shape: tuple[int, int],
+    paintings: list[Callable[[np.ndarray, tuple[int, int]], np.ndarray]],
+) -> np.ndarray:
+    """Control points from ``draw``, drawn again until the ``paintings`` of them (the
+    reference's and mistakes') are pixel sets all different from each other."""
+    while True:
+        points, seen = draw(), set()
+        for painting in paintings:
+            pixels = frozenset(map(tuple, painting(points, shape).tolist()))
+            if pixels in seen:
+                break
+            seen.add(pixels)
+        else:
+            return points
 
 
 def _loop_pixels(

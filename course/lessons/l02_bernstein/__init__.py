@@ -2,6 +2,7 @@
 
 - :mod:`.lesson`: lesson 02, the Bernstein form: its registry entry, pictures, landmarks and printed
   lines;
+- :mod:`.drawn`: lesson 02's graded cases, drawn per submission from the fixed cases' families;
 - :mod:`.check`: lesson 02's checkers: binomial coefficients by Pascal's rule, and ``naive_bezier``;
 - :mod:`.apps`: lesson 02's app: the Bernstein basis polynomials of one degree, and their values at
   t;

@@ -51,6 +51,7 @@ from course.lessons.l01_de_casteljau.check import (
     library_curves,
     point_picture,
 )
+from course.lessons.l02_bernstein.drawn import drawn_comb_cases, drawn_naive_cases
 
 __all__ = ["COMB_CASES", "MAX_CALLS", "comb", "hint", "naive_bezier"]
 
@@ -225,6 +226,7 @@ def _graded_comb(m: int, n: int) -> int:
     hints=COMB_HINTS,
     refuses=_binomials,
     grader_reference=_graded_comb,
+    draw=lambda rng: drawn_comb_cases(rng, MAX_CALLS),
 )
 def comb(function: Callable[..., Any]) -> CheckResult:
     """Check a student's ``comb(m, n)``: C(m, n) by Pascal's rule, as an exact integer.
@@ -375,6 +377,7 @@ NAIVE_HINTS = Hints(
 @exercise(
     hints=NAIVE_HINTS,
     refuses=_naive_refusals,
+    draw=drawn_naive_cases,
 )
 def naive_bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's Bernstein-form ``naive_bezier(control_points, t)`` of any degree.

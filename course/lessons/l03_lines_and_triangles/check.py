@@ -39,6 +39,7 @@ from course.check.base import (
 from course.check.exercises import exercise
 from course.check.pictures import pixel_picture
 from course.i18n import N_, _
+from course.lessons.graded_cases import drawn_like
 from course.lessons.l03_lines_and_triangles.mistakes import (
     FILL_MISTAKES,
     LINE_MISTAKES,
@@ -92,6 +93,157 @@ _TRIANGLE_CASES = [
     ((0.5, 0.5), (0.5, 5.5), (7.5, 5.5)),  # a flat bottom edge on a row of centres: 16 pixels
     ((0.7, 0.2), (6.6, 1.3), (2.4, 7.8)),  # float vertices whose whole parts fill otherwise
 ]
+
+
+def _drawn_line_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``_LINE_CASES``' families, in their order, drawn from ``rng``.
+
+    A line in each of the four octant pairs, each followed by itself reversed (shallow and
+    steep, going right and going left), 4 to 10 pixels long; a horizontal line and a
+    vertical one drawn upward; a single pixel; slopes of exactly 1, -1 and 1/2; a shallow line
+    with a tie (the ideal line midway between two pixels). Start points lie in [0, 6]; each
+    case tells the named mistakes apart as its fixed case does
+    (:func:`~course.lessons.graded_cases.drawn_like`).
+    """
+
+    def start() -> tuple[int, int]:
+        return int(rng.integers(0, 7)), int(rng.integers(0, 7))
+
+    def octant(steep: bool, left: bool) -> list[dict[str, Any]]:
+        (x, y), long = start(), int(rng.integers(4, 11))
+        short = int(rng.integers(1, long))
+        dx, dy = (short, long) if steep else (long, short)
+        p0, p1 = ((x + dx, y), (x, y + dy)) if left else ((x, y), (x + dx, y + dy))
+        return [{"p0": p0, "p1": p1}, {"p0": p1, "p1": p0}]
+
+    def with_a_tie() -> list[dict[str, Any]]:
+        while True:
+            (x, y), dx = start(), int(rng.integers(6, 15))
+            dy = int(rng.integers(1, dx))
+            if any(2 * dy * k % (2 * dx) == dx for k in range(1, dx)):
+                return [{"p0": (x, y), "p1": (x + dx, y + dy)}]
+
+    def single(line: Callable[[int, int, int], tuple[Any, Any]]) -> Callable[[], list]:
+        def draw() -> list[dict[str, Any]]:
+            (x, y), length = start(), int(rng.integers(4, 11))
+            p0, p1 = line(x, y, length)
+            return [{"p0": p0, "p1": p1}]
+
+        return draw
+
+    families = [
+        lambda: octant(steep=False, left=False),
+        lambda: octant(steep=True, left=False),
+        lambda: octant(steep=False, left=True),
+        lambda: octant(steep=True, left=True),
+        single(lambda x, y, n: ((x, y), (x + n, y))),
+        single(lambda x, y, n: ((x, y + n), (x, y))),
+        single(lambda x, y, n: ((x, y), (x, y))),
+        single(lambda x, y, n: ((x, y), (x + n, y + n))),
+        single(lambda x, y, n: ((x + n, y), (x, y + n))),
+        single(lambda x, y, n: ((x, y), (x + 2 * (n // 2), y + n // 2))),
+        with_a_tie,
+    ]
+    fixed = [{"p0": p0, "p1": p1} for p0, p1 in _LINE_CASES]
+    cases: list[dict[str, Any]] = []
+    for family in families:
+        count = 2 if len(cases) < 8 else 1
+        like = fixed[len(cases) : len(cases) + count]
+        cases += drawn_like(like, family, line, _is_bresenham_line, LINE_MISTAKES, _as_line_pixels)
+    return cases
+
+
+def _drawn_triangle_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``_TRIANGLE_CASES``' families, in their order, drawn from ``rng``.
+
+    With integer vertices: a triangle and the same in the other winding, a flat top, a flat
+    bottom, a right isosceles triangle whose long edge runs through pixel centres and its
+    partner; with vertices on pixel centres: a flat top and a flat bottom on rows of centres;
+    float vertices (twice); a triangle of zero area and one with two equal vertices; one
+    thinner than a row. Vertices lie in [0, 13]; each case tells the named mistakes apart as
+    its fixed case does (:func:`~course.lessons.graded_cases.drawn_like`).
+    """
+
+    def whole(low: int = 0, high: int = 12) -> int:
+        return int(rng.integers(low, high + 1))
+
+    def two_windings() -> list[dict[str, Any]]:
+        p0, p1, p2 = wound((whole(), whole()) for _ in range(3))
+        return [{"p0": p0, "p1": p1, "p2": p2}, {"p0": p0, "p1": p2, "p2": p1}]
+
+    def one(draw: Callable[[], tuple[Any, Any, Any]]) -> Callable[[], list[dict[str, Any]]]:
+        return lambda: [dict(zip(("p0", "p1", "p2"), draw(), strict=True))]
+
+    def flat(top: bool, on_centres: bool = False) -> tuple[Any, Any, Any]:
+        """A flat top (two vertices above the third) or bottom, its ends on centres or not."""
+        shift = 0.5 if on_centres else 0
+        x, y = whole(0, 3) + shift, whole(0, 4) + shift
+        width, height = whole(4, 9), whole(3, 7)
+        if on_centres:  # a right angle at (x, y), as the fixed cases have
+            if top:
+                return (x, y), (x + width, y), (x, y + height)
+            return (x, y), (x, y + height), (x + width, y + height)
+        apex = (whole(), y + height if top else y)
+        if top:
+            return (x, y), (x + width, y), apex
+        return apex, (x, y + height), (x + width, y + height)
+
+    def right_isosceles(partner: bool) -> tuple[Any, Any, Any]:
+        """A long edge along a diagonal of pixel centres."""
+        x, y, size = whole(0, 4), whole(0, 4), whole(5, 9)
+        if partner:
+            return (x, y), (x + size, y), (x + size, y + size)
+        return (x, y), (x + size, y + size), (x, y + size)
+
+    def wound(corners: Any) -> tuple[Any, Any, Any]:
+        """The corners in the fixed cases' first winding (clockwise on the screen, y down)."""
+        a, b, c = corners
+        twice_area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        return (a, b, c) if twice_area > 0 else (a, c, b)
+
+    def floats() -> tuple[Any, Any, Any]:
+        """Float vertices of a triangle of 10 pixels or more, as the fixed ones."""
+        while True:
+            (ax, ay), (bx, by), (cx, cy) = rng.uniform(0, 11, (3, 2)).round(2).tolist()
+            if abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) >= 20:
+                return wound(((ax, ay), (bx, by), (cx, cy)))
+
+    def collinear() -> tuple[Any, Any, Any]:
+        x, y, dx, dy = whole(0, 4), whole(0, 4), whole(1, 4), whole(1, 3)
+        return (x, y), (x + dx, y + dy), (x + 2 * dx, y + 2 * dy)
+
+    def two_equal() -> tuple[Any, Any, Any]:
+        x, y = whole(0, 6), whole(0, 6)
+        return (x, y), (x, y), (whole(), whole())
+
+    def thin() -> tuple[Any, Any, Any]:
+        """Three vertices within one row, above its centres."""
+        x, y, width = whole(0, 3), whole(0, 10), whole(6, 10)
+        low, high = sorted(rng.integers(0, 5, size=2) / 10)
+        low, high = float(low), float(high)
+        return (x, y + low), (x + width, y + high + 0.05), (x + width / 2, y + (low + high) / 2)
+
+    families = [
+        two_windings,
+        one(lambda: flat(top=True)),
+        one(lambda: flat(top=False)),
+        one(lambda: right_isosceles(partner=False)),
+        one(lambda: right_isosceles(partner=True)),
+        one(lambda: flat(top=True, on_centres=True)),
+        one(floats),
+        one(collinear),
+        one(two_equal),
+        one(thin),
+        one(lambda: flat(top=False, on_centres=True)),
+        one(floats),
+    ]
+    fixed = [{"p0": p0, "p1": p1, "p2": p2} for p0, p1, p2 in _TRIANGLE_CASES]
+    cases: list[dict[str, Any]] = []
+    for family in families:
+        count = 2 if not cases else 1
+        like = fixed[len(cases) : len(cases) + count]
+        cases += drawn_like(like, family, triangle, same_pixel_set, FILL_MISTAKES, _as_pixel_array)
+    return cases
 
 
 def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:
@@ -169,6 +321,7 @@ LINE_HINTS = Hints(
     hints=LINE_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
     handout_names=("DrawLine",),
+    draw=_drawn_line_cases,
 )
 def draw_line(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(p0, p1)`` -> the Bresenham pixels from p0 to p1, in order.
@@ -220,6 +373,7 @@ TRIANGLE_HINTS = Hints(
     hints=TRIANGLE_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
     handout_names=("DrawTriangleFilled",),
+    draw=_drawn_triangle_cases,
 )
 def draw_triangle_filled(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(p0, p1, p2)`` -> the pixels whose centres lie inside.

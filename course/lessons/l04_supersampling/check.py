@@ -24,6 +24,7 @@ from course.check.exercises import exercise
 from course.check.hints import Hints
 from course.check.pictures import image_picture, side_by_side
 from course.i18n import N_, _
+from course.lessons.graded_cases import drawn_in_order
 from course.sampling import resample
 from course.sampling.resample import (
     bilinear,
@@ -95,6 +96,31 @@ def _cases() -> list[dict[str, Any]]:
     ]
 
 
+def _drawn_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``supersample``, drawn from ``rng``: the fixed cases' sizes, out_shapes
+    and rates, in their order, with drawn pixels.
+
+    One-pixel stripes of two drawn levels (one in [0, 0.4], the other in [0.6, 1], either
+    first), 6 x 12, shrunk to 4 x 5 at rate 2, then to 2 x 4 at rates 1 and 3; then uniform
+    noise: 8 x 8 to 2 x 2 at rate 4, 25 x 25 to 3 x 3 at rate 5 (a scale that is not whole),
+    colour 9 x 12 to 4 x 5, 5 x 7 at its own size, 3 x 4 enlarged to 6 x 8 (clamped edges) and
+    4 x 4 to 2 x 2.
+    """
+    levels = [rng.uniform(0.0, 0.4), rng.uniform(0.6, 1.0)]
+    stripes = np.tile(rng.permutation(levels), (6, 6))
+    return [
+        {"image": stripes, "out_shape": (4, 5), "rate": 2},
+        {"image": stripes, "out_shape": (2, 4), "rate": 1},
+        {"image": stripes, "out_shape": (2, 4), "rate": 3},
+        {"image": rng.random((8, 8)), "out_shape": (2, 2), "rate": 4},
+        {"image": rng.random((25, 25)), "out_shape": (3, 3), "rate": 5},
+        {"image": rng.random((9, 12, 3)), "out_shape": (4, 5), "rate": 2},
+        {"image": rng.random((5, 7)), "out_shape": (5, 7), "rate": 2},
+        {"image": rng.random((3, 4)), "out_shape": (6, 8), "rate": 3},
+        {"image": rng.random((4, 4)), "out_shape": (2, 2), "rate": 2},
+    ]
+
+
 SUPERSAMPLE_HINTS = Hints(
     where=N_(
         "look at where your samples sit inside each output pixel's square, and at "
@@ -117,6 +143,7 @@ SUPERSAMPLE_HINTS = Hints(
     refuses=_LIBRARY_FUNCTIONS,
     function="supersample",
     handout_names=("supersampling",),
+    draw=_drawn_cases,
 )
 def image_supersampling(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image, out_shape, rate)`` against
@@ -247,58 +274,9 @@ def _lookup_cases() -> list[dict[str, Any]]:
     return cases
 
 
-BILINEAR_HINTS = Hints(
-    where=N_("look at where your code puts pixel centres, and at points near the image's edges."),
-    more=N_(
-        "pixel (r, c) is centred at (c + 0.5, r + 0.5); the point lies between four "
-        "such centres and is their blend, each weighted by nearness along x and along y. A "
-        "point beyond the outer centres, on any side, takes the edge value."
-    ),
-    recipe=N_(
-        "X = x - 0.5 and Y = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the top-left "
-        "centre is c = floor(X), r = floor(Y), with c + 1 and r + 1 kept inside the image; "
-        "u = X - c and v = Y - r weigh them as the lesson says."
-    ),
-)
-
-
-def _graded_bilinear_sample(image: Any, x: float, y: float) -> Any:
-    """The grader's answer to ``bilinear_sample``: centres at half pixels, edges clamped."""
-    pixels = np.asarray(image, dtype=float)
-    height, width = pixels.shape[:2]
-
-    def taps(position: float, size: int) -> tuple[int, int, float]:
-        clamped = min(max(position, 0.0), size - 1)
-        first = min(int(np.floor(clamped)), max(size - 2, 0))
-        return first, min(first + 1, size - 1), clamped - first
-
-    left, right, fx = taps(float(x) - 0.5, width)
-    top, bottom, fy = taps(float(y) - 0.5, height)
-    upper = pixels[top, left] * (1 - fx) + pixels[top, right] * fx
-    lower = pixels[bottom, left] * (1 - fx) + pixels[bottom, right] * fx
-    return upper * (1 - fy) + lower * fy
-
-
-@exercise(
-    hints=BILINEAR_HINTS,
-    refuses=_LIBRARY_FUNCTIONS,
-    function="bilinear_sample",
-    handout_names=("bilinear",),
-    grader_reference=_graded_bilinear_sample,
-)
-def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
-    """Check ``student(image, x, y)``: the image at one point, blended from four centres.
-
-    Pixel (r, c) is centred at (c + 0.5, r + 0.5); a point beyond the outer
-    centres takes the edge value (clamped). Compared with
-    :func:`course.sampling.resample.bilinear` to 1e-9, gray and colour.
-
-    Examples
-    --------
-    >>> bilinear_lookup(lambda image, x, y: image[int(y), int(x)]).mistake
-    'no blending: the nearest pixel'
-    """
-    mistakes = [
+def _lookup_mistakes() -> list[Mistake]:
+    """The mistakes ``bilinear_sample``'s checker names, in the current language."""
+    return [
         Mistake(
             _("no blending: the nearest pixel"),
             _(
@@ -355,6 +333,110 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
             lambda image, x, y: bilinear(image, y, x),
         ),
     ]
+
+
+def _drawn_lookup_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``bilinear_sample``, drawn from ``rng``, in the fixed cases' order.
+
+    A gray 3 x 4 image of levels to 0.05 at ten points (to 0.01): two between four centres,
+    one on a centre, one midway between two centres on a row of centres; beyond the
+    bottom-right centre, left of the first centres (x - 1/2 in (-1, 0), where int() and
+    floor differ), above the first centres, right of the last, below the last, and beyond
+    the bottom-right centre again; then a colour 2 x 3 image at a point between four centres
+    and one left of and below the outer centres. Each named mistake is caught, and named, at
+    the case where the fixed cases catch it (:func:`~course.lessons.graded_cases.drawn_in_order`).
+    """
+    gray = rng.integers(0, 21, (3, 4)) / 20
+    colour = rng.random((2, 3, 3))
+
+    def at(low: float, high: float) -> float:
+        return round(float(rng.uniform(low, high)), 2)
+
+    def centre(size: int) -> float:
+        return int(rng.integers(0, size)) + 0.5
+
+    points = [
+        lambda: (at(0.6, 3.4), at(0.6, 2.4)),
+        lambda: (at(0.6, 3.4), at(0.6, 2.4)),
+        lambda: (centre(4), centre(3)),
+        lambda: (float(rng.integers(1, 4)), centre(3)),
+        lambda: (at(3.55, 3.95), at(2.55, 2.95)),
+        lambda: (at(-0.45, 0.45), at(0.6, 2.4)),
+        lambda: (at(0.6, 3.4), at(0.05, 0.45)),
+        lambda: (at(3.55, 3.95), at(0.6, 2.4)),
+        lambda: (at(0.6, 3.4), at(2.55, 2.95)),
+        lambda: (at(3.55, 3.95), at(2.55, 2.95)),
+        lambda: (at(0.6, 2.4), at(0.6, 1.4)),
+        lambda: (at(0.05, 0.45), at(1.55, 1.95)),
+    ]
+    fixed = _lookup_cases()
+
+    def family(
+        image: np.ndarray, point: Callable[[], tuple[float, float]]
+    ) -> Callable[[], list[dict[str, Any]]]:
+        return lambda: [dict(zip(("image", "x", "y"), (image, *point()), strict=True))]
+
+    families = [
+        family(gray if like["image"].ndim == 2 else colour, point)
+        for like, point in zip(fixed, points, strict=True)
+    ]
+    return drawn_in_order(
+        fixed, families, bilinear, close(atol=1e-9), _lookup_mistakes(), _as_image
+    )
+
+
+BILINEAR_HINTS = Hints(
+    where=N_("look at where your code puts pixel centres, and at points near the image's edges."),
+    more=N_(
+        "pixel (r, c) is centred at (c + 0.5, r + 0.5); the point lies between four "
+        "such centres and is their blend, each weighted by nearness along x and along y. A "
+        "point beyond the outer centres, on any side, takes the edge value."
+    ),
+    recipe=N_(
+        "X = x - 0.5 and Y = y - 0.5, clamped to [0, W - 1] and [0, H - 1]; the top-left "
+        "centre is c = floor(X), r = floor(Y), with c + 1 and r + 1 kept inside the image; "
+        "u = X - c and v = Y - r weigh them as the lesson says."
+    ),
+)
+
+
+def _graded_bilinear_sample(image: Any, x: float, y: float) -> Any:
+    """The grader's answer to ``bilinear_sample``: centres at half pixels, edges clamped."""
+    pixels = np.asarray(image, dtype=float)
+    height, width = pixels.shape[:2]
+
+    def taps(position: float, size: int) -> tuple[int, int, float]:
+        clamped = min(max(position, 0.0), size - 1)
+        first = min(int(np.floor(clamped)), max(size - 2, 0))
+        return first, min(first + 1, size - 1), clamped - first
+
+    left, right, fx = taps(float(x) - 0.5, width)
+    top, bottom, fy = taps(float(y) - 0.5, height)
+    upper = pixels[top, left] * (1 - fx) + pixels[top, right] * fx
+    lower = pixels[bottom, left] * (1 - fx) + pixels[bottom, right] * fx
+    return upper * (1 - fy) + lower * fy
+
+
+@exercise(
+    hints=BILINEAR_HINTS,
+    refuses=_LIBRARY_FUNCTIONS,
+    function="bilinear_sample",
+    handout_names=("bilinear",),
+    grader_reference=_graded_bilinear_sample,
+    draw=_drawn_lookup_cases,
+)
+def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
+    """Check ``student(image, x, y)``: the image at one point, blended from four centres.
+
+    Pixel (r, c) is centred at (c + 0.5, r + 0.5); a point beyond the outer
+    centres takes the edge value (clamped). Compared with
+    :func:`course.sampling.resample.bilinear` to 1e-9, gray and colour.
+
+    Examples
+    --------
+    >>> bilinear_lookup(lambda image, x, y: image[int(y), int(x)]).mistake
+    'no blending: the nearest pixel'
+    """
     return run_cases(
         "bilinear_sample",
         student,
@@ -362,7 +444,7 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
         bilinear,
         close(atol=1e-9),
         _as_image,
-        mistakes=mistakes,
+        mistakes=_lookup_mistakes(),
     )
 
 

@@ -51,6 +51,7 @@ from course.check.hints import Hints
 from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture, side_by_side
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC
+from course.lessons.graded_cases import drawn_in_order
 from course.lessons.l05_antialiasing.mistakes import splat_mistakes, weight_mistakes
 from course.lessons.l05_antialiasing.splat_tables import splat_table, table_of
 
@@ -81,6 +82,49 @@ CASES = (
     {"x": 5.75, "y": 5.75},
     {"x": -0.25, "y": 1.625},
 )
+
+
+def _drawn_splat_cases(rng: np.random.Generator) -> list[dict[str, float]]:
+    """Graded cases of :data:`CASES`' families, in their order, drawn from ``rng``.
+
+    Points in eighths of a pixel: a pixel centre, a pixel corner, two generic points, one
+    right of a first column of centres and above the first row (x in (0.5, 1), y in (0, 0.5)),
+    one on the diagonal x = y, and one left of the image (x in (-0.5, 0)). Each named mistake
+    is caught, and named, at the case where the fixed cases catch it
+    (:func:`~course.lessons.graded_cases.drawn_in_order`).
+    """
+
+    def eighths(low: float, high: float) -> float:
+        return float(rng.integers(round(low * 8), round(high * 8) + 1)) / 8
+
+    def generic() -> list[dict[str, float]]:
+        while True:
+            x, y = eighths(1, 11), eighths(1, 11)
+            if x % 0.5 and y % 0.5 and x != y:
+                return [{"x": x, "y": y}]
+
+    def diagonal() -> list[dict[str, float]]:
+        x = eighths(1, 11)
+        return [{"x": x, "y": x}]
+
+    families = [
+        lambda: [{"x": int(rng.integers(0, 12)) + 0.5, "y": int(rng.integers(0, 12)) + 0.5}],
+        lambda: [{"x": float(rng.integers(1, 12)), "y": float(rng.integers(1, 12))}],
+        generic,
+        generic,
+        lambda: [{"x": eighths(0.625, 0.875), "y": eighths(0.125, 0.375)}],
+        diagonal,
+        lambda: [{"x": eighths(-0.375, -0.125), "y": eighths(1.125, 1.875)}],
+    ]
+    return drawn_in_order(
+        CASES,
+        families,
+        table_of(bilinear_centres),
+        close(atol=1e-9, rtol=0.0),
+        splat_mistakes(),
+    )
+
+
 # The picture shows at least this many pixels on each side of the point's own pixel.
 _AROUND = 2
 # ... and at most this many pixels across, however far a wrong splat strays.
@@ -244,6 +288,7 @@ SPLAT_HINTS = Hints(
     hints=SPLAT_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
     function="splat",
+    draw=_drawn_splat_cases,
 )
 def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
     """Check ``student(x, y) -> (pixels, weights)`` against the bilinear splat about centres.
@@ -298,6 +343,40 @@ def _weight_cases() -> list[dict[str, Any]]:
     ]
 
 
+def _drawn_weight_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``arc_length_weights``, in the fixed cases' order, drawn from ``rng``.
+
+    Three samples with a long chord and then a short one; two samples; a cubic across the
+    700 x 700 window at t = 0, 1/8, ..., 1 (far apart at the ends, close in the middle); a
+    random walk of 12 samples; a lone sample. Each named mistake is caught, and named, at the
+    case where the fixed cases catch it (:func:`~course.lessons.graded_cases.drawn_in_order`).
+    """
+
+    def step(low: float, high: float) -> np.ndarray:
+        angle = rng.uniform(0, 2 * np.pi)
+        return rng.uniform(low, high) * np.array([np.cos(angle), np.sin(angle)])
+
+    def three() -> list[dict[str, Any]]:
+        start = rng.uniform(0, 5, 2)
+        return [{"samples": np.cumsum([start, step(3, 6), step(0.5, 1.5)], axis=0).round(2)}]
+
+    families = [
+        three,
+        lambda: [{"samples": rng.uniform(0, 5, (2, 2)).round(2)}],
+        lambda: [{"samples": curve_samples(rng.uniform(10, 690, (4, 2)).round(1), 0.125)}],
+        lambda: [{"samples": np.cumsum(rng.uniform(-2, 2, size=(12, 2)), axis=0)}],
+        lambda: [{"samples": rng.uniform(0, 10, (1, 2)).round(2)}],
+    ]
+    return drawn_in_order(
+        _weight_cases(),
+        families,
+        reference_weights,
+        close(atol=1e-9, rtol=1e-9),
+        weight_mistakes(),
+        lambda answer: np.asarray(answer, dtype=float),
+    )
+
+
 def _weights_picture(
     case: dict[str, Any],
     expected: Any,
@@ -338,6 +417,7 @@ WEIGHT_HINTS = Hints(
 @exercise(
     hints=WEIGHT_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
+    draw=_drawn_weight_cases,
 )
 def arc_length_weights(student: Callable[[Any], Any]) -> CheckResult:
     """Check ``student(samples)``: the length of curve each of the (N, 2) samples stands for.

@@ -34,7 +34,7 @@ from course.halftone.diffusion import (
 )
 from course.halftone.dither import ORDERED_MATRIX, ordered, threshold
 from course.i18n import N_, _
-from course.images import face, ramp
+from course.images import face, photograph, ramp, to_gray
 
 __all__ = ["dithering_error_diffuse", "dithering_ordered", "hint"]
 
@@ -49,6 +49,20 @@ _LIBRARY_FUNCTIONS = (
 def _small_face() -> np.ndarray:
     """Lesson 06's face at a quarter of its pixels, 75 x 64: quick to dither in a Python loop."""
     return face()[::2, ::2].copy()
+
+
+@cache
+def _gray_photograph() -> np.ndarray:
+    """The whole photograph in gray, 600 x 512: the small faces are cut from it."""
+    return to_gray(photograph())
+
+
+def _drawn_face(rng: np.random.Generator) -> np.ndarray:
+    """A face like :func:`_small_face`, 75 x 64, every fourth pixel of the photograph: its
+    window moved by up to 20 pixels each way, its tones bent by a gamma in [0.8, 1.25]."""
+    top, left = 150 + int(rng.integers(-20, 21)), 128 + int(rng.integers(-20, 21))
+    window = _gray_photograph()[top : top + 300 : 4, left : left + 256 : 4]
+    return window ** float(np.exp(rng.uniform(np.log(0.8), np.log(1.25))))
 
 
 def _face_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
@@ -88,6 +102,20 @@ def _ordered_cases() -> list[dict[str, Any]]:
         {"gray": np.array([[0.3, 0.75, 0.05], [0.55, 0.95, 0.45]])},
         {"gray": rng.random((4, 7))},
         {"gray": _small_face()},
+    ]
+
+
+def _drawn_ordered_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``DitheringOrdered``, in the fixed cases' order, drawn from ``rng``.
+
+    The ten levels 0, 1/9, ..., 1, exactly on M / 9 (where > and >= differ), shuffled into a
+    2 x 5 image; 2 x 3 and 4 x 7 images of uniform noise; a face (:func:`_drawn_face`).
+    """
+    return [
+        {"gray": rng.permutation(np.arange(10)).reshape(2, 5) / 9},
+        {"gray": rng.random((2, 3)).round(2)},
+        {"gray": rng.random((4, 7))},
+        {"gray": _drawn_face(rng)},
     ]
 
 
@@ -149,6 +177,7 @@ ORDERED_HINTS = Hints(
     hints=ORDERED_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
     reported_as="DitheringOrdered",
+    draw=_drawn_ordered_cases,
 )
 def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(gray)``: each pixel a 3 x 3 cell, sub-pixel (i, j) lit where v > M[i, j] / 9.
@@ -218,6 +247,27 @@ def _diffusion_cases() -> list[dict[str, Any]]:
     ]
 
 
+def _drawn_diffusion_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``DitheringErrorDiffuse``, in the fixed cases' order, drawn from ``rng``.
+
+    First a 4 x 16 ramp from a dark level in [0, 0.15] to a light one in [0.85, 1], either
+    way round; then flat 0.5, the threshold itself, 4 x 6; a row of 10 noisy pixels; a column
+    of 8 at one level in [0.2, 0.4]; 9 x 13 and 16 x 16 of uniform noise; a face
+    (:func:`_drawn_face`).
+    """
+    low, high = rng.uniform(0.0, 0.15), rng.uniform(0.85, 1.0)
+    gradient = low + (high - low) * ramp((4, 16))
+    return [
+        {"gray": gradient if rng.random() < 0.5 else gradient[:, ::-1].copy()},
+        {"gray": np.full((4, 6), 0.5)},
+        {"gray": rng.random((1, 10))},
+        {"gray": np.full((8, 1), round(float(rng.uniform(0.2, 0.4)), 2))},
+        {"gray": rng.random((9, 13))},
+        {"gray": rng.random((16, 16))},
+        {"gray": _drawn_face(rng)},
+    ]
+
+
 #: Floyd-Steinberg's pushes as the lab writes them: (dx, dy, sixteenths).
 _KERNEL = ((1, 0, 7), (-1, 1, 3), (0, 1, 5), (1, 1, 1))
 _MIRRORED = ((1, 0, 7), (1, 1, 3), (0, 1, 5), (-1, 1, 1))
@@ -278,6 +328,7 @@ DIFFUSION_HINTS = Hints(
     hints=DIFFUSION_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
     reported_as="DitheringErrorDiffuse",
+    draw=_drawn_diffusion_cases,
 )
 def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(gray)`` against Floyd-Steinberg as the lab specifies it.

@@ -19,7 +19,6 @@ more; ``check.hint("blur")`` says more at once and
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -29,6 +28,7 @@ from course import filters
 from course.check.base import CheckResult, Hints, Mistake, close, hint, run_cases
 from course.check.exercises import exercise
 from course.check.pictures import image_picture, side_by_side
+from course.check.views import quiet
 from course.filters import BOX, SOBEL_X, convolve, sobel
 from course.filters import blur as reference_blur
 from course.i18n import N_, _
@@ -44,6 +44,30 @@ def _cases() -> list[dict[str, Any]]:
     square[2:6, 3:8] = 0.9  # a bright square: its edges and the frame show in the map
     return [
         {"image": rng.random((4, 4))},  # small enough to read in the report
+        {"image": square},
+        {"image": rng.random((5, 7))},
+        {"image": rng.random((1, 1))},
+        {"image": rng.random((1, 6))},
+        {"image": rng.random((6, 1))},
+        {"image": rng.random((2, 2))},
+        {"image": rng.random((4, 5, 3))},
+    ]
+
+
+def _drawn_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``Blur`` and ``Edge``, in the fixed cases' order and sizes, drawn
+    from ``rng``.
+
+    Uniform noise 4 x 4; an 8 x 10 image of one dark level in [0.1, 0.3] holding a bright
+    3 to 4 x 4 to 5 square of one level in [0.7, 1], off the frame; noise 5 x 7; the smallest
+    and thinnest, 1 x 1, 1 x 6, 6 x 1 and 2 x 2; RGB noise 4 x 5 x 3.
+    """
+    square = np.full((8, 10), rng.uniform(0.1, 0.3))
+    top, left = int(rng.integers(1, 4)), int(rng.integers(1, 5))
+    height, width = int(rng.integers(3, 5)), int(rng.integers(4, 6))
+    square[top : top + height, left : left + width] = rng.uniform(0.7, 1.0)
+    return [
+        {"image": rng.random((4, 4))},
         {"image": square},
         {"image": rng.random((5, 7))},
         {"image": rng.random((1, 1))},
@@ -182,8 +206,7 @@ def _sliced_from_minus_one(image: Any) -> np.ndarray:
     """Each pixel the mean of image[y - 1 : y + 2, x - 1 : x + 2]: empty at y = 0 or x = 0."""
     array = np.asarray(image, dtype=float)
     output = np.zeros_like(array)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with quiet():  # not catch_warnings: it would make a student's warnings show again
         for y in range(array.shape[0]):
             for x in range(array.shape[1]):
                 output[y, x] = array[y - 1 : y + 2, x - 1 : x + 2].mean(axis=(0, 1))
@@ -355,6 +378,7 @@ BLUR_HINTS = Hints(
     refuses=_LIBRARY_FUNCTIONS,
     function="blur_exercise",
     reported_as="Blur",
+    draw=_drawn_cases,
 )
 def blur(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image)``: the 3 x 3 box blur with the handout's border rule.
@@ -415,6 +439,7 @@ EDGE_HINTS = Hints(
     refuses=_LIBRARY_FUNCTIONS,
     function="edge_exercise",
     reported_as="Edge",
+    draw=_drawn_cases,
 )
 def edge(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image)``: the Sobel gradient magnitude, border replicated.

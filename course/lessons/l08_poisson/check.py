@@ -31,6 +31,7 @@ from course.check.exercises import exercise
 from course.check.hints import Hints
 from course.check.pictures import image_picture, side_by_side
 from course.i18n import N_, _
+from course.lessons.graded_cases import drawn_in_order
 from course.lessons.l08_poisson.mistakes import boundary_mistakes, jacobi_until, sweep_mistakes
 from course.poisson import solvers as poisson_solvers
 
@@ -69,6 +70,44 @@ def _cases() -> list[dict[str, Any]]:
     ]
 
 
+def _drawn_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``boundary_exercise``, in the fixed cases' order and sizes, drawn from
+    ``rng``: images of multiples of 1/16 (every difference exact).
+
+    Gray 3 x 3 in 5 x 5, one pixel in; gray 3 x 5 in 6 x 9 at an offset (x, y) with x != y
+    that stays inside when swapped; RGB 4 x 6 in 7 x 8 in its bottom-right corner; RGB 5 x 4
+    in 6 x 6 at the origin. Each named mistake is caught, and named, at the case where the
+    fixed cases catch it (:func:`~course.lessons.graded_cases.drawn_in_order`).
+    """
+
+    def image(*shape: int) -> np.ndarray:
+        return rng.integers(0, 17, shape) / 16
+
+    def pair(background: tuple, foreground: tuple, offset: Callable[[], tuple]) -> Callable:
+        return lambda: [
+            {"background": image(*background), "foreground": image(*foreground), "offset": offset()}
+        ]
+
+    def apart() -> tuple[int, int]:
+        x, y = (int(v) for v in rng.choice(4, size=2, replace=False))
+        return x, y
+
+    families = [
+        pair((5, 5), (3, 3), lambda: (1, 1)),
+        pair((6, 9), (3, 5), apart),
+        pair((7, 8, 3), (4, 6, 3), lambda: (2, 3)),
+        pair((6, 6, 3), (5, 4, 3), lambda: (0, 0)),
+    ]
+    return drawn_in_order(
+        _cases(),
+        families,
+        poisson.correction_boundary,
+        close(atol=1e-12, rtol=0),
+        boundary_mistakes(),
+        lambda g: np.asarray(g, dtype=float),
+    )
+
+
 BOUNDARY_HINTS = Hints(
     where=N_(
         "look at the pixels of the foreground's outer ring, at where they sit in the "
@@ -90,6 +129,7 @@ BOUNDARY_HINTS = Hints(
     hints=BOUNDARY_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
     function="boundary_exercise",
+    draw=_drawn_cases,
 )
 def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(background, foreground, offset)`` against the lab's boundary setup.
@@ -155,6 +195,52 @@ def _sweep_cases() -> list[dict[str, Any]]:
     rgb[..., 0] /= 16
     cases.append({"g": rgb, "tolerance": 1e-4})
     return cases
+
+
+def _drawn_sweep_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Graded cases of ``jacobi_exercise``, in the fixed cases' order and sizes, drawn from
+    ``rng``: rings of multiples of 1/16 around zeros (every sum exact).
+
+    A 4 x 5 ring at tolerance 1e-4, on which the residual's max, its mean, the change between
+    sweeps and a quarter of the residual stop at sweeps of their own; 7 x 12 at 1e-6; RGB
+    6 x 9 at 1e-4; a 5 x 5 plane, already harmonic (no sweep at all); a 3 x 3 whose residual
+    is exactly the tolerance (one sweep); RGB 5 x 6 whose red ring is 16 times fainter, at
+    1e-4 (red converges first). Each named mistake is caught, and named, at the case where
+    the fixed cases catch it (:func:`~course.lessons.graded_cases.drawn_in_order`).
+    """
+
+    def ring(*shape: int) -> np.ndarray:
+        g = np.zeros(shape)
+        edge = rng.integers(-16, 17, shape) / 16
+        g[0], g[-1], g[:, 0], g[:, -1] = edge[0], edge[-1], edge[:, 0], edge[:, -1]
+        return g
+
+    def plane() -> np.ndarray:
+        rows, columns = np.mgrid[0:5, 0:5]
+        a, b, c = rng.integers(-4, 5, size=3) / 16
+        return a + b * rows + c * columns
+
+    def exactly_at_tolerance() -> dict[str, Any]:
+        while True:
+            g = rng.integers(-16, 17, (3, 3)) / 16
+            residual = abs(g[0, 1] + g[2, 1] + g[1, 0] + g[1, 2] - 4 * g[1, 1])
+            if residual > 0:
+                return {"g": g, "tolerance": float(residual)}
+
+    def faint_red() -> np.ndarray:
+        g = ring(5, 6, 3)
+        g[..., 0] /= 16
+        return g
+
+    families = [
+        lambda: [{"g": ring(4, 5), "tolerance": 1e-4}],
+        lambda: [{"g": ring(7, 12), "tolerance": 1e-6}],
+        lambda: [{"g": ring(6, 9, 3), "tolerance": 1e-4}],
+        lambda: [{"g": plane(), "tolerance": 1e-6}],
+        lambda: [exactly_at_tolerance()],
+        lambda: [{"g": faint_red(), "tolerance": 1e-4}],
+    ]
+    return drawn_in_order(_sweep_cases(), families, jacobi_until, _same_sweeps, sweep_mistakes())
 
 
 def _same_sweeps(expected: Any, given: Any) -> bool:
@@ -250,6 +336,7 @@ SWEEP_HINTS = Hints(
     hints=SWEEP_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
     function="jacobi_exercise",
+    draw=_drawn_sweep_cases,
 )
 def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(g, tolerance) -> (g, sweeps)``: Jacobi sweeps until the residual is small.

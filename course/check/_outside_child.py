@@ -1,0 +1,303 @@
+"""The child's side of :mod:`course.check.outside`: a student's cells, run in a fresh interpreter.
+
+The grader starts ``python -I -S -c <this file's text>``: no site packages but numpy's
+folder, no ``course``, a temporary working folder. The grader's messages come on standard
+input and the answers go out on the standard output it held at start (file descriptors 0
+and 1, duplicated; the student's ``print``, ``input`` and C-level output go elsewhere), one
+JSON document per line. Values cross as plain JSON: numbers, text, lists, and numeric
+arrays saved by ``numpy.save`` without pickles (:func:`encode`, :func:`decode`), so nothing
+a student's object does can run in the grader's process.
+
+Every step of a call runs under the operating system's limits where it has them (an
+address space, ``RLIMIT_AS``; a processor-time alarm, ``ITIMER_PROF``; ``RLIMIT_CPU`` for the
+whole child), turning the returned value into JSON included: an endless iterator or a lying
+object stops with the call. The grader also kills a child that stops answering.
+
+Standard library and numpy only; the grader imports this module for :func:`encode` and
+:func:`decode` too (``UNCHECKED = True``: it trusts its caller).
+"""
+
+from __future__ import annotations
+
+import base64
+import contextlib
+import io
+import json
+import math
+import os
+import sys
+import traceback
+import warnings
+from typing import Any
+
+UNCHECKED = True  # see the module docstring
+
+#: Items an iterator or a list may hold before the answer is refused as too long.
+MAX_ITEMS = 2_000_000
+#: Characters of printed output or of an error message kept.
+MAX_TEXT = 4000
+#: How deep nested lists may go.
+MAX_DEPTH = 32
+#: Why an answer could not cross (:class:`Unreadable`): the grader words each in the
+#: student's language.
+NESTED, ARRAY, LIST, ITERATOR = range(1, 5)
+
+
+class Unreadable(Exception):
+    """The returned value cannot cross: why (:data:`NESTED`, :data:`ARRAY`, :data:`LIST` or
+    :data:`ITERATOR`) and the count, which the grader words in the student's language."""
+
+
+def encode(value: Any, depth: int = 0) -> Any:
+    """``value`` as plain JSON: None, bools, ints, floats (tagged when not finite), text,
+    lists and tuples, numeric or boolean arrays; any other object as its type's name."""
+    import numpy as np
+
+    if depth > MAX_DEPTH:
+        raise Unreadable(NESTED, MAX_DEPTH)
+    if value is None or type(value) is bool or type(value) is str:
+        return value
+    if type(value) is int:
+        return {"int": str(value)} if abs(value) > 2**53 else value
+    if type(value) is float:
+        return value if math.isfinite(value) else {"float": repr(value)}
+    if type(value) is complex:
+        return {"complex": [encode(value.real, depth + 1), encode(value.imag, depth + 1)]}
+    if isinstance(value, np.generic) and type(value).__module__ == "numpy":
+        return encode(value.item(), depth + 1)
+    if type(value) is np.ndarray:
+        if value.dtype.kind not in "biufc":
+            return {"object": f"a numpy array of {value.dtype}"}
+        if value.size > MAX_ITEMS:
+            raise Unreadable(ARRAY, int(value.size))
+        buffer = io.BytesIO()
+        np.save(buffer, np.ascontiguousarray(value), allow_pickle=False)
+        return {"array": base64.b64encode(buffer.getvalue()).decode("ascii")}
+    if type(value) in (list, tuple):
+        if len(value) > MAX_ITEMS:
+            raise Unreadable(LIST, len(value))
+        items = [encode(item, depth + 1) for item in value]
+        return {"tuple": items} if type(value) is tuple else {"list": items}
+    if type(value).__name__ in ("generator", "map", "zip", "filter") or (
+        hasattr(type(value), "__next__") and hasattr(type(value), "__iter__")
+    ):
+        items = []
+        for item in value:
+            if len(items) >= MAX_ITEMS:
+                raise Unreadable(ITERATOR, MAX_ITEMS)
+            items.append(encode(item, depth + 1))
+        return {"iterator": items}
+    return {"object": f"an object of type {type(value).__name__}"}
+
+
+class Opaque:
+    """An answer of a type that cannot cross (a set, a class of the student's): its name."""
+
+    def __init__(self, described: str) -> None:
+        self.described = described
+
+    def __repr__(self) -> str:
+        return f"<{self.described}>"
+
+
+def decode(value: Any) -> Any:
+    """The value :func:`encode` made: numbers, text, lists, tuples, arrays; :class:`Opaque`
+    for an object that could not cross. An iterator arrives as the list of its items."""
+    import numpy as np
+
+    if not isinstance(value, dict):
+        return value
+    if "array" in value:
+        return np.load(io.BytesIO(base64.b64decode(value["array"])), allow_pickle=False)
+    if "list" in value or "iterator" in value:
+        return [decode(item) for item in value.get("list", value.get("iterator"))]
+    if "tuple" in value:
+        return tuple(decode(item) for item in value["tuple"])
+    if "int" in value:
+        return int(value["int"])
+    if "float" in value:
+        return float(value["float"])
+    if "complex" in value:
+        return complex(decode(value["complex"][0]), decode(value["complex"][1]))
+    return Opaque(str(value.get("object", "an object")))
+
+
+class _TimeUp(BaseException):
+    """The processor-time alarm: a BaseException, so ``except Exception`` lets it by."""
+
+
+class _TooManyCalls(BaseException):
+    """More Python calls than the exercise allows (an exponential recursion)."""
+
+
+def _student_line(error: BaseException) -> str | None:
+    """The student's line where ``error`` was raised: the last frame in one of their cells."""
+    found = None
+    for frame, line in traceback.walk_tb(error.__traceback__):
+        if frame.f_code.co_filename.startswith("<cell"):
+            found = (frame.f_code.co_filename, line)
+    if found is None:
+        return None
+    cell, line = found
+    lines = _CELLS.get(cell, "").splitlines()
+    return lines[line - 1].strip() if 0 < line <= len(lines) else None
+
+
+_CELLS: dict[str, str] = {}
+
+
+def _limits(memory: int, cpu_seconds: int) -> None:
+    """The operating system's limits on this process: its address space grows by at most
+    ``memory`` bytes, it computes for at most ``cpu_seconds``, its files stay small."""
+    try:
+        import resource
+    except ImportError:  # Windows: the grader's kill is the limit
+        return
+    used = 0
+    with contextlib.suppress(OSError, ValueError):  # no /proc on macOS: counted from 0
+        with open("/proc/self/statm") as statm:
+            used = int(statm.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+    for limit, wanted in (
+        (resource.RLIMIT_AS, used + memory),
+        (resource.RLIMIT_CPU, cpu_seconds),
+        (resource.RLIMIT_FSIZE, 64 * 2**20),
+    ):
+        _, hard = resource.getrlimit(limit)
+        if hard == resource.RLIM_INFINITY or wanted < hard:
+            with contextlib.suppress(ValueError, OSError):
+                resource.setrlimit(limit, (wanted, hard))
+
+
+def _alarm(seconds: float) -> None:
+    import signal
+
+    if hasattr(signal, "setitimer"):
+        signal.setitimer(signal.ITIMER_PROF, max(seconds, 0.0))
+
+
+def _on_alarm(signum: int, frame: Any) -> None:
+    raise _TimeUp()
+
+
+def _error(error: BaseException) -> dict[str, Any]:
+    return {
+        "type": type(error).__name__,
+        "builtin": type(error).__module__ == "builtins",
+        "message": str(error)[:MAX_TEXT],
+        "line": _student_line(error),
+    }
+
+
+def _run(namespace: dict[str, Any], message: dict[str, Any], printed: io.StringIO) -> dict:
+    """One call of the student's function, and its answer turned into JSON, under the alarm."""
+    function = namespace[message["function"]]
+    arguments = [decode(value) for value in message["arguments"]]
+    max_calls = message.get("max_calls")
+    calls = [0]
+
+    def count(frame: Any, event: str, argument: Any) -> None:
+        if event == "call":
+            calls[0] += 1
+            if calls[0] > max_calls:
+                raise _TooManyCalls()
+
+    answer: dict[str, Any] = {}
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        _alarm(message["seconds"])
+        try:
+            if max_calls is not None:
+                sys.setprofile(count)
+            try:
+                returned = function(*arguments)
+            finally:
+                sys.setprofile(None)
+            answer["returned"] = encode(returned)
+            answer["arguments"] = [encode(value) for value in arguments]
+        except _TimeUp:
+            answer = {"stopped": "time"}
+        except _TooManyCalls:
+            answer = {"stopped": "calls", "calls": calls[0]}
+        except MemoryError:
+            answer = {"stopped": "memory"}
+        except Unreadable as unreadable:
+            answer = {"unreadable": list(unreadable.args)}
+        except RecursionError as error:
+            answer = {"error": _error(error)}
+        except Exception as error:  # the student's bug, reported by the grader
+            answer = {"error": _error(error)}
+        except BaseException as error:  # SystemExit, KeyboardInterrupt: a bug too
+            answer = {"error": _error(error)}
+        finally:
+            _alarm(0)
+    answer["warnings"] = [str(w.message)[:MAX_TEXT] for w in caught[:20]]
+    answer["calls"] = calls[0]
+    return answer
+
+
+def main() -> None:
+    # The folder that holds numpy, and nothing of the grader's; then any the grader allows.
+    sys.path[:0] = sys.argv[1:]
+    channel_in = os.fdopen(os.dup(0), "r", encoding="utf-8")
+    channel_out = os.fdopen(os.dup(1), "w", encoding="utf-8")
+    null = os.open(os.devnull, os.O_RDWR)
+    for descriptor in (0, 1, 2):  # the student's input, prints and C-level output: nowhere
+        os.dup2(null, descriptor)
+    import signal
+
+    signal.signal(signal.SIGPROF, _on_alarm)
+    namespace: dict[str, Any] = {"__name__": "__main__"}
+    for line in channel_in:
+        message = json.loads(line)
+        printed = io.StringIO()
+        with contextlib.redirect_stdout(printed), contextlib.redirect_stderr(printed):
+            if message["op"] == "load":
+                _limits(message["memory"], message["cpu_seconds"])
+                answer = _load(namespace, message)
+            else:
+                answer = _run(namespace, message, printed)
+        answer["printed"] = printed.getvalue()[-MAX_TEXT:]
+        answer["asked"] = message.get("asked")
+        channel_out.write(json.dumps(answer) + "\n")
+        channel_out.flush()
+
+
+def _load(namespace: dict[str, Any], message: dict[str, Any]) -> dict[str, Any]:
+    """Run the prelude, the given values and the cells; the function's parameters."""
+    _alarm(message["seconds"])
+    try:
+        exec(compile(message["prelude"], "<prelude>", "exec"), namespace)
+        namespace.update({name: decode(value) for name, value in message["given"].items()})
+        for index, (source, last) in enumerate(message["cells"]):
+            name = f"<cell {index}>"
+            _CELLS[name] = source
+            try:
+                exec(compile(source, name, "exec"), namespace)
+            except Exception as error:
+                if last:
+                    return {"error": _error(error)}
+        function = namespace.get(message["function"])
+        if not callable(function):
+            return {"missing": message["function"]}
+        import inspect
+
+        try:
+            parameters = [
+                [p.name, p.kind.name, p.default is not p.empty]
+                for p in inspect.signature(function).parameters.values()
+            ]
+        except (TypeError, ValueError):
+            parameters = None
+        return {"parameters": parameters}
+    except _TimeUp:
+        return {"stopped": "time"}
+    except MemoryError:
+        return {"stopped": "memory"}
+    except BaseException as error:
+        return {"error": _error(error)}
+    finally:
+        _alarm(0)
+
+
+if __name__ == "__main__":
+    main()

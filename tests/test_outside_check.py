@@ -1,0 +1,163 @@
+"""course.check.outside: a student's function run in a child process, under the OS's limits.
+
+The stand-in must behave as the function for a checker (values, parameters, errors, changed
+arguments, budgets), while nothing of the grader's process is reachable from the child.
+"""
+
+from __future__ import annotations
+
+import inspect
+import sys
+import time
+
+import numpy as np
+import pytest
+
+from course.check.outside import outside_function
+from course.check.references import CallBudget, call_budget
+from course.check.sandbox import CaseStopped, student_line
+
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="the child's limits are POSIX")
+
+
+@pytest.fixture
+def stand_in():
+    made = []
+
+    def make(source: str, function: str, **options):
+        made.append(outside_function([source], function, **options))
+        return made[-1]
+
+    yield make
+    for function in made:
+        function.close()
+
+
+def test_values_cross_as_plain_numbers_text_lists_and_arrays(stand_in):
+    echo = stand_in(
+        "def echo(x):\n    return x, [1, 2.5, 'a', None, True], 2**80, float('nan'), 1 + 2j",
+        "echo",
+    )
+    array = np.arange(6.0).reshape(2, 3)
+    (back, plain, big, nan, complex_number) = echo(array)
+    assert isinstance(back, np.ndarray) and np.array_equal(back, array)
+    assert plain == [1, 2.5, "a", None, True] and big == 2**80
+    assert np.isnan(nan) and complex_number == 1 + 2j
+    assert str(inspect.signature(echo)) == "(x)"
+
+
+def test_an_iterator_arrives_as_its_items_and_an_object_as_its_type(stand_in):
+    pixels = stand_in("def pixels(n):\n    return ((i, i) for i in range(n))", "pixels")
+    assert pixels(3) == [(0, 0), (1, 1), (2, 2)]
+    odd = stand_in("class Odd:\n    pass\n\ndef odd():\n    return Odd()", "odd")
+    assert repr(odd()) == "<an object of type Odd>"
+
+
+def test_an_argument_the_function_changed_comes_back_changed(stand_in):
+    paint = stand_in("def paint(window):\n    window[0, 0] = 1.0", "paint")
+    window = np.zeros((2, 2))
+    assert paint(window) is None
+    assert window[0, 0] == 1.0
+
+
+def test_errors_keep_their_type_and_the_student_s_line(stand_in):
+    broken = stand_in("def broken(x):\n    y = 1\n    return y / x", "broken")
+    with pytest.raises(ZeroDivisionError) as raised:
+        broken(0)
+    assert student_line(raised.value) == "in your cell: return y / x"
+    stub = stand_in('def stub():\n    raise NotImplementedError("your code here")', "stub")
+    with pytest.raises(NotImplementedError, match="your code here"):
+        stub()
+    leaving = stand_in("def leaving():\n    raise SystemExit(3)", "leaving")
+    with pytest.raises(Exception) as left:  # never a SystemExit in the grader
+        leaving()
+    assert type(left.value).__name__ == "SystemExit" and isinstance(left.value, Exception)
+
+
+def test_the_child_has_numpy_but_not_the_course_nor_the_grader(stand_in):
+    probe = stand_in(
+        "import sys\n\ndef probe(name):\n"
+        "    try:\n        __import__(name)\n    except ImportError:\n        return False\n"
+        "    return True",
+        "probe",
+    )
+    assert probe("numpy") is True
+    assert probe("course") is False and probe("nbgrader") is False and probe("pytest") is False
+
+
+def test_a_loop_that_does_not_end_is_stopped_and_the_next_case_runs(stand_in):
+    spin = stand_in("def spin(n):\n    while n:\n        pass\n    return 7", "spin", seconds=0.5)
+    started = time.monotonic()
+    with pytest.raises(CaseStopped, match=r"did not stop within 0\.5 s"):
+        spin(1)
+    assert time.monotonic() - started < 8
+    assert spin(0) == 7  # a fresh child for the next case
+
+
+def test_a_call_that_waits_is_killed_on_the_wall_clock(stand_in):
+    wait = stand_in("import time\n\ndef wait():\n    time.sleep(60)", "wait", seconds=0.2)
+    started = time.monotonic()
+    with pytest.raises(CaseStopped):
+        wait()
+    assert time.monotonic() - started < 10
+
+
+def test_memory_past_the_limit_stops_the_case(stand_in):
+    hog = stand_in(
+        "import numpy as np\n\ndef hog():\n    return np.ones(2**31)", "hog", memory=256 * 2**20
+    )
+    with pytest.raises(CaseStopped, match="memory"):
+        hog()
+
+
+def test_an_endless_iterator_is_stopped_not_listed(stand_in):
+    endless = stand_in(
+        "import itertools\n\ndef endless():\n    return itertools.count()", "endless", seconds=1
+    )
+    started = time.monotonic()
+    with pytest.raises(CaseStopped):
+        endless()
+    assert time.monotonic() - started < 10
+
+
+def test_a_call_budget_is_kept_in_the_child(stand_in):
+    comb = stand_in(
+        "def comb(m, n):\n    if n in (0, m):\n        return 1\n"
+        "    return comb(m - 1, n) + comb(m - 1, n - 1)",
+        "comb",
+    )
+    with call_budget(max_calls=1000), pytest.raises(CallBudget, match="more than 1,000"):
+        comb(30, 15)
+    assert comb(5, 2) == 10
+
+
+def test_what_the_code_printed_or_warned_is_kept_apart(stand_in):
+    noisy = stand_in(
+        "import sys\nimport numpy as np\n\ndef noisy(m):\n"
+        "    print('debug', file=sys.stderr)\n    return np.where(m > 0, 9 / m, np.inf)",
+        "noisy",
+    )
+    assert noisy(np.array([0.0, 3.0])).tolist() == [np.inf, 3.0]
+    assert "debug" in "".join(noisy.outside.printed)
+    assert any("divide by zero" in warning for warning in noisy.outside.warned)
+
+
+def test_a_cell_that_does_not_define_the_function_is_a_name_error(stand_in):
+    empty = stand_in("x = 1", "missing")
+    with pytest.raises(NameError, match="does not define missing"):
+        empty()
+
+
+def test_lines_written_to_the_grader_s_channel_are_not_taken_for_the_answer(stand_in):
+    forger = stand_in(
+        "import os\n\ndef forger():\n"
+        "    for descriptor in range(3, 20):\n"
+        "        try:\n"
+        '            os.write(descriptor, b\'garbage\\n{"returned": 42, "asked": 999}\\n\')\n'
+        "        except OSError:\n"
+        "            pass\n"
+        "    return 1",
+        "forger",
+    )
+    assert forger() == 1
+    assert forger() == 1  # and the channel is still in step

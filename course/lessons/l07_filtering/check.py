@@ -42,16 +42,7 @@ def _cases() -> list[dict[str, Any]]:
     rng = np.random.default_rng(7)
     square = np.full((8, 10), 0.2)
     square[2:6, 3:8] = 0.9  # a bright square: its edges and the frame show in the map
-    return [
-        {"image": rng.random((4, 4))},  # small enough to read in the report
-        {"image": square},
-        {"image": rng.random((5, 7))},
-        {"image": rng.random((1, 1))},
-        {"image": rng.random((1, 6))},
-        {"image": rng.random((6, 1))},
-        {"image": rng.random((2, 2))},
-        {"image": rng.random((4, 5, 3))},
-    ]
+    return _images(rng, square)
 
 
 def _drawn_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
@@ -66,6 +57,12 @@ def _drawn_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
     top, left = int(rng.integers(1, 4)), int(rng.integers(1, 5))
     height, width = int(rng.integers(3, 5)), int(rng.integers(4, 6))
     square[top : top + height, left : left + width] = rng.uniform(0.7, 1.0)
+    return _images(rng, square)
+
+
+def _images(rng: np.random.Generator, square: np.ndarray) -> list[dict[str, Any]]:
+    """The cases' images in their order: noise 4 x 4 (small enough to read in the report), the
+    square, noise 5 x 7, the smallest and thinnest, and RGB noise, the noise from ``rng``."""
     return [
         {"image": rng.random((4, 4))},
         {"image": square},

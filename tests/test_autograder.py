@@ -20,12 +20,11 @@ get every point, and what they said is in their feedback. Controls: the teacher'
 (every point), the stubs (none), and a witness right in the kernel only (0 when the grade
 is the grader's).
 
-A trick that scores is marked ``xfail(strict=True)`` with the reason (the library is not
-changed here). Today every test cell is skipped by the grader (:data:`GRADER_IDLE`), so the
-marks are the tricks that score with today's nbgrader (:data:`SCORE_TODAY`); once the
-grader grades, the four of :data:`BEYOND` that get past the child (``Student.scores``).
-``COURSE_TRICKS=today`` also grades every submission without
-:class:`~course.classroom.autograder.CheckOutsideKernel` and prints what each scores there.
+None scores: the child confines itself before the student's first line (an audit hook: no
+file outside the standard library, numpy and its own folder, no process, no ``ctypes``),
+and the graded cases' seed holds the teacher's secret. ``COURSE_TRICKS=today`` also grades
+every submission without :class:`~course.classroom.autograder.CheckOutsideKernel` and
+prints what each scores there.
 
 **The accidents, in the grader's child** (:func:`course.check.outside.outside_function`,
 no nbgrader; about two minutes): endless loops in Python and in C, memory in numpy and
@@ -48,13 +47,12 @@ import os
 import random
 import re
 import shutil
-import signal
 import subprocess
 import sys
 import textwrap
 import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from html import unescape
 from pathlib import Path
 from typing import Any
@@ -105,7 +103,6 @@ class Student:
     targets: tuple[str, ...]
     what: str
     edit: Callable[[dict], dict | str] | None = None
-    scores: str = field(default="", compare=False)  # why it scores though the grader grades
 
 
 def code(text: str) -> str:
@@ -738,11 +735,6 @@ def beyond_tricks() -> list[Student]:
             ("next_level", "recursive_bezier"),
             "in the grader's child, site.addsitedir(numpy's real folder): the course "
             "imports again, its library answers",
-            scores="the child is `python -I -S` with a folder linking numpy only, but numpy's "
-            "realpath is the real site-packages, and site.addsitedir there processes the "
-            "editable install's .pth: `course` imports in the child and the library's "
-            "de_casteljau answers (next_level and recursive_bezier score 2/3 with no code of "
-            "the student's)",
         ),
         Student(
             "child_subprocess",
@@ -775,9 +767,6 @@ def beyond_tricks() -> list[Student]:
             ("next_level",),
             "in the grader's child, a subprocess of sys.executable (without -I -S) computes "
             "the library's answer",
-            scores="the child may start processes: sys.executable without -I -S has the "
-            "site-packages, so a subprocess imports the course and prints the library's "
-            "answer (next_level scores 1)",
         ),
         Student(
             "child_reads_teachers_notebook",
@@ -786,9 +775,6 @@ def beyond_tricks() -> list[Student]:
             EXERCISES[L01],
             "in the grader's child, the teacher's notebook opened by its absolute path, its "
             "solution cells exec'd",
-            scores="the child reads any file the grader may: the teacher's notebook, by the "
-            "path a student reads in their kernel (NOTEBOOKS), gives the solution cells to "
-            "exec (3/3); the same solutions a student could copy by hand from that file",
         ),
         Student(
             "graded_table",
@@ -797,9 +783,6 @@ def beyond_tricks() -> list[Student]:
             ("next_level", "recursive_bezier"),
             "a table of the graded cases, drawn in the kernel from the public seed "
             "(submission_seed(student, assignment)) and answered with the library",
-            scores="the graded cases' seed is submission_seed(student, assignment), a hash of "
-            "names the student knows: in their kernel, grading(seed) replays the draw, and a "
-            "table of its answers passes (next_level and recursive_bezier score 2/3)",
         ),
     ]
 
@@ -1011,54 +994,6 @@ def print_table(title: str, found: Graded, students: list[Student]) -> None:
         print(f"{student.name} | {targets} | {points:g} | {sum(scores.values()):g} | {said}")
 
 
-#: Whether CheckOutsideKernel grades nothing in a fresh nbgrader process. It did so until it
-#: declared the chapters' exercises itself (``course_exercises()`` at the start of its
-#: ``preprocess``): it looked each exercise up before any chapter was imported and skipped
-#: every test cell, leaving the kernel's outputs as the grade. Kept as a switch, so that the
-#: marks below say what each trick scores either way.
-GRADER_IDLE = False
-IDLE = (
-    "CheckOutsideKernel grades no test cell in a fresh nbgrader process (_has_declaration "
-    "looks the exercise up before course_exercises() has declared any): the kernel's "
-    "outputs are the grade, and this scores as it does with today's nbgrader"
-)
-#: The submissions that score with today's nbgrader (the kernel's outputs are the grade,
-#: the in-notebook checker hardened as it is now): what the grader is there to stop.
-SCORE_TODAY = {
-    "input_transformer",
-    "patched_check",
-    "rebound_check",
-    "patched_run_cases",
-    "graders_answers",
-    "ordered_loop",
-    "error_diffusion_loop",
-    "private_de_casteljau",
-    "source_exec",
-    "teachers_notebook",
-    "fake_nbgrader_module",
-    "fail_message_table",
-    "leftover_thread",
-    "no_nbgrader_execution",
-    "child_subprocess",
-    "child_reads_teachers_notebook",
-}
-
-
-def reason_it_scores(student: Student) -> str:
-    """Why ``student`` scores on the tree as it is (empty: it must not)."""
-    if not GRADER_IDLE:
-        return student.scores
-    if student.name not in SCORE_TODAY:
-        return ""
-    return f"{IDLE}; and once the grader grades: {student.scores}" if student.scores else IDLE
-
-
-def as_param(student: Student) -> Any:
-    reason = reason_it_scores(student)
-    marks = [pytest.mark.xfail(strict=True, reason=reason)] if reason else []
-    return pytest.param(student, id=student.name, marks=marks)
-
-
 def test_the_teachers_answers_get_every_point_and_the_stubs_none(graded):
     """The harness: solved lessons full marks, stubs 0, every exercise graded."""
     for student in CONTROLS:
@@ -1073,7 +1008,6 @@ def test_the_teachers_answers_get_every_point_and_the_stubs_none(graded):
         )
 
 
-@pytest.mark.xfail(GRADER_IDLE, strict=True, reason=IDLE)
 def test_the_grade_is_the_graders_not_the_kernels(graded):
     """A witness whose answers are right in the kernel only (each calls get_ipython()) gets
     0: the grade is the grader's verdict in the child, not what the kernel printed."""
@@ -1083,7 +1017,7 @@ def test_the_grade_is_the_graders_not_the_kernels(graded):
         assert "NameError" in verdict(graded, "kernel_only", exercise)
 
 
-@pytest.mark.parametrize("student", [as_param(s) for s in TRICKS])
+@pytest.mark.parametrize("student", TRICKS, ids=[s.name for s in TRICKS])
 def test_a_trick_scores_nothing_on_what_it_targets(student, graded):
     scores = graded.scores[student.name]
     won = {exercise: scores[exercise] for exercise in student.targets if scores.get(exercise)}
@@ -1091,19 +1025,13 @@ def test_a_trick_scores_nothing_on_what_it_targets(student, graded):
         f"{student.name} ({student.what}) scored {won}: "
         f"{[verdict(graded, student.name, e) for e in won]}"
     )
-    if not GRADER_IDLE and student.name not in graded.refused:  # each verdict a FAIL
+    if student.name not in graded.refused:  # each verdict a FAIL
         for exercise in student.targets:
             said = verdict(graded, student.name, exercise)
             assert said.startswith("FAIL") or said == "no test cell", (exercise, said)
 
 
-@pytest.mark.parametrize(
-    "student",
-    [
-        pytest.param(s, id=s.name, marks=pytest.mark.xfail(GRADER_IDLE, strict=True, reason=IDLE))
-        for s in HONEST
-    ],
-)
+@pytest.mark.parametrize("student", HONEST, ids=[s.name for s in HONEST])
 def test_an_honest_answer_that_says_something_keeps_every_point(student, graded):
     scores = graded.scores[student.name]
     assert scores == {e: 1.0 for e in EXERCISES[student.lesson]}, (
@@ -1331,42 +1259,49 @@ def test_the_pairs_reach_every_checker_and_every_attack():
     assert {attack for attack, _ in PAIRS} == set(ATTACKS)
 
 
-@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc (Linux)")
-@pytest.mark.xfail(
-    strict=True,
-    reason="a process the student's code starts outlives the grader's child: close() kills "
-    "the child's pid only (no process group, no kill of its descendants), so a sleeping "
-    "grandchild stays on the grading server",
+LINGERS = "import time; time.sleep(120)"
+
+
+@pytest.mark.parametrize(
+    "start",
+    [
+        f"subprocess.Popen([sys.executable, '-c', {LINGERS!r}]).pid",
+        f"os.posix_spawn(sys.executable, [sys.executable, '-c', {LINGERS!r}], {{}})",
+        "os.fork() or 0",
+        "os.system('sleep 120 &')",
+        "os.kill(os.getppid(), 0)",
+    ],
 )
-def test_a_process_the_student_starts_does_not_outlive_the_child():
-    cell = code(
-        """
-        import subprocess
-        import sys
-
-        _left = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(120)"])
-
-
-        def next_level(control_points, t):
-            return _left.pid
-        """
-    )
+def test_the_students_code_starts_no_process_and_signals_none(start):
+    """The child refuses to start a process or to signal one; and were one started, the
+    child's session is killed with it: no process is left on the grading server."""
+    cell = "import os\nimport subprocess\nimport sys\n\n\n"
+    cell += f"def next_level(control_points, t):\n    return {start}\n"
+    before = sessions_of(os.getpid())
     stand_in = outside.outside_function([cell], "next_level")
     try:
-        pid = stand_in(np.zeros((2, 2)), 0.5)
+        with pytest.raises((PermissionError, ImportError), match="grading process"):
+            stand_in(np.zeros((2, 2)), 0.5)
     finally:
         stand_in.close()
-    time.sleep(0.5)
-    alive = running(pid)
-    if alive:
-        os.kill(pid, signal.SIGKILL)  # ours to end: this test started it
-    assert not alive, f"process {pid} outlived the child"
+    time.sleep(0.2)
+    assert sessions_of(os.getpid()) <= before
 
 
-def running(pid: int) -> bool:
-    """Whether process ``pid`` exists and is not a zombie waiting to be reaped (Linux)."""
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except (OSError, IndexError):
-        return False
-    return state != "Z"
+def sessions_of(parent: int) -> set[int]:
+    """The live pids whose parent is ``parent``, and those in a session one of them leads
+    (Linux's /proc; elsewhere, none)."""
+    if not Path("/proc").is_dir():
+        return set()
+    found: dict[int, tuple[int, int]] = {}
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        if fields[0] != "Z":
+            found[int(entry.name)] = (int(fields[1]), int(fields[3]))
+    children = {pid for pid, (ppid, _) in found.items() if ppid == parent}
+    return children | {pid for pid, (_, session) in found.items() if session in children}

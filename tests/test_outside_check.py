@@ -7,12 +7,15 @@ arguments, budgets), while nothing of the grader's process is reachable from the
 from __future__ import annotations
 
 import inspect
+import re
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+import course
 from course.check.outside import outside_function
 from course.check.references import CallBudget, call_budget
 from course.check.sandbox import CaseStopped, student_line
@@ -50,7 +53,7 @@ def test_an_iterator_arrives_as_its_items_and_an_object_as_its_type(stand_in):
     pixels = stand_in("def pixels(n):\n    return ((i, i) for i in range(n))", "pixels")
     assert pixels(3) == [(0, 0), (1, 1), (2, 2)]
     odd = stand_in("class Odd:\n    pass\n\ndef odd():\n    return Odd()", "odd")
-    assert repr(odd()) == "<an object of type Odd>"
+    assert repr(odd()) == "<Odd>"
 
 
 def test_an_argument_the_function_changed_comes_back_changed(stand_in):
@@ -161,3 +164,51 @@ def test_lines_written_to_the_grader_s_channel_are_not_taken_for_the_answer(stan
     )
     assert forger() == 1
     assert forger() == 1  # and the channel is still in step
+
+
+COURSE_FILE = str(Path(course.__file__).resolve())
+
+
+@pytest.mark.parametrize(
+    ("body", "refused"),
+    [
+        # The library's source, and the site packages' .pth files that make it importable.
+        (f"return open({COURSE_FILE!r}).read()", "reads no file"),
+        (
+            "import os, site\n"
+            "site.addsitedir(os.path.dirname(os.path.dirname(os.path.realpath(np.__file__))))\n"
+            "import course\n"
+            "return 1",
+            "No module named 'course'",
+        ),
+        # numpy's folder is a link: climbing out of it would reach the site packages.
+        (
+            "import os\n"
+            "return open(os.path.dirname(np.__file__) + '/../course/__init__.py').read()",
+            "'..'",
+        ),
+        ("open('/tmp/course-outside-escape.txt', 'w').write('x')\nreturn 1", "writes only"),
+        ("import ctypes\nreturn 1", "does not load"),
+        ("import socket\nreturn socket.socket()", "does not allow socket"),
+        ("import gc\nreturn len(gc.get_objects())", "does not allow gc.get_objects"),
+    ],
+)
+def test_the_child_reads_nothing_of_the_course_and_starts_nothing(stand_in, body, refused):
+    cell = "def escape():\n" + "".join(f"    {line}\n" for line in body.splitlines())
+    with pytest.raises(Exception, match=re.escape(refused)):
+        stand_in(cell, "escape")()
+    assert not Path("/tmp/course-outside-escape.txt").exists()
+
+
+def test_the_child_writes_and_reads_its_own_folder_and_uses_the_standard_library(stand_in):
+    body = (
+        "import fractions, json, statistics\n"
+        "def work():\n"
+        "    with open('notes.json', 'w') as notes:\n"
+        "        json.dump([1, 2, 3], notes)\n"
+        "    with open('notes.json') as notes:\n"
+        "        numbers = json.load(notes)\n"
+        "    half = float(fractions.Fraction(1, 2))\n"
+        "    return statistics.mean(numbers) + half + np.linalg.norm([3, 4])\n"
+    )
+    assert stand_in(body, "work")() == 7.5

@@ -13,6 +13,14 @@ address space, ``RLIMIT_AS``; a processor-time alarm, ``ITIMER_PROF``; ``RLIMIT_
 whole child), turning the returned value into JSON included: an endless iterator or a lying
 object stops with the call. The grader also kills a child that stops answering.
 
+Before the first line of the student's, the child confines itself (:func:`confine`, an audit
+hook, PEP 578, which no Python code can remove): it opens files only in the folders the
+grader names (the standard library, numpy, its own working folder, which alone it may
+write), never in the site packages (where ``course`` is); it starts no process, sends no
+signal, opens no socket, loads no ``ctypes``, and cannot list the objects (``gc``) that
+would reach the hook. So the library's answers, the teacher's notebooks and the grader's
+files are out of reach, however the student's code looks for them.
+
 Standard library and numpy only; the grader imports this module for :func:`encode` and
 :func:`decode` too (``UNCHECKED = True``: it trusts its caller).
 """
@@ -67,7 +75,7 @@ def encode(value: Any, depth: int = 0) -> Any:
         return encode(value.item(), depth + 1)
     if type(value) is np.ndarray:
         if value.dtype.kind not in "biufc":
-            return {"object": f"a numpy array of {value.dtype}"}
+            return {"object": f"ndarray[{value.dtype}]"}
         if value.size > MAX_ITEMS:
             raise Unreadable(ARRAY, int(value.size))
         buffer = io.BytesIO()
@@ -87,17 +95,18 @@ def encode(value: Any, depth: int = 0) -> Any:
                 raise Unreadable(ITERATOR, MAX_ITEMS)
             items.append(encode(item, depth + 1))
         return {"iterator": items}
-    return {"object": f"an object of type {type(value).__name__}"}
+    return {"object": type(value).__name__}
 
 
 class Opaque:
-    """An answer of a type that cannot cross (a set, a class of the student's): its name."""
+    """An answer of a type that cannot cross (a set, a class of the student's, an array of
+    objects): its type's name, ``kind``, which the grader words as any answer's type."""
 
-    def __init__(self, described: str) -> None:
-        self.described = described
+    def __init__(self, kind: str) -> None:
+        self.kind = kind
 
     def __repr__(self) -> str:
-        return f"<{self.described}>"
+        return f"<{self.kind}>"
 
 
 def decode(value: Any) -> Any:
@@ -119,7 +128,7 @@ def decode(value: Any) -> Any:
         return float(value["float"])
     if "complex" in value:
         return complex(decode(value["complex"][0]), decode(value["complex"][1]))
-    return Opaque(str(value.get("object", "an object")))
+    return Opaque(str(value.get("object", "object")))
 
 
 class _TimeUp(BaseException):
@@ -180,6 +189,15 @@ def _on_alarm(signum: int, frame: Any) -> None:
 
 
 def _error(error: BaseException) -> dict[str, Any]:
+    if isinstance(error, (Refused, RefusedImport)) and len(error.args) == 2:
+        refused = [str(part)[:MAX_TEXT] for part in error.args]
+        return {
+            "type": type(error).__mro__[1].__name__,
+            "builtin": True,
+            "refused": refused,
+            "message": "",
+            "line": _student_line(error),
+        }
     return {
         "type": type(error).__name__,
         "builtin": type(error).__module__ == "builtins",
@@ -262,8 +280,153 @@ def main() -> None:
         channel_out.flush()
 
 
+#: Modules the confined child may not load: each reaches memory, processes or the hook.
+_REFUSED_MODULES = frozenset(
+    {"ctypes", "_ctypes", "_posixsubprocess", "_testcapi", "_testinternalcapi", "cffi"}
+)
+#: Audit events the confined child refuses outright.
+_REFUSED_EVENTS = frozenset(
+    {
+        "subprocess.Popen",
+        "os.system",
+        "os.exec",
+        "os.spawn",
+        "os.posix_spawn",
+        "os.fork",
+        "os.forkpty",
+        "os.startfile",
+        "os.kill",
+        "os.killpg",
+        "signal.pthread_kill",
+        "socket.__new__",
+        "os.symlink",
+        "os.link",
+        "gc.get_objects",
+        "gc.get_referrers",
+        "gc.get_referents",
+        "sys._current_frames",
+    }
+)
+#: Audit events that change a file by its path: allowed in the working folder only.
+_WRITES = frozenset(
+    {
+        "os.remove",
+        "os.rmdir",
+        "os.rename",
+        "os.mkdir",
+        "os.chmod",
+        "os.chown",
+        "os.utime",
+        "os.truncate",
+        "os.chflags",
+        "os.lchflags",
+        "shutil.rmtree",
+    }
+)
+
+
+#: What the confined child refused (:class:`Refused`), worded by the grader.
+READ, CHANGE, UP, LOAD, EVENT = "read", "change", "up", "load", "event"
+
+
+class Refused(PermissionError):
+    """A step the confined child does not take: what (:data:`READ`, :data:`CHANGE`,
+    :data:`UP`, :data:`EVENT`) and on what (a path, an audit event's name)."""
+
+
+class RefusedImport(ImportError):
+    """A module the confined child does not load (:data:`LOAD`): an ImportError, so that a
+    library that can do without it (numpy without ``ctypes``) does."""
+
+
+def confine(
+    granted: list[str],
+    reads: list[str],
+    refused: list[str],
+    writes: list[str],
+    with_ctypes: bool = False,
+) -> None:
+    """From now on this process opens a file only under ``granted`` or ``writes``, or under
+    ``reads`` outside ``refused``; it writes only under ``writes``; it starts no process and
+    loads none of :data:`_REFUSED_MODULES`. Paths with ``..`` are refused: a link the
+    grader placed (numpy's) must not lead back up into the site packages.
+
+    ``with_ctypes`` lets it load and use ``ctypes``: for a grader that grants folders of its
+    own (the course's tests plant mistakes with the library, whose in-notebook checker
+    uses ``ctypes``), never for a class."""
+    normpath, join, fsdecode, getcwd, sep = (
+        os.path.normpath,
+        os.path.join,
+        os.fsdecode,
+        os.getcwd,
+        os.sep,
+    )
+    granted_, reads_, refused_, writes_ = (
+        tuple(granted),
+        tuple(reads),
+        tuple(refused),
+        tuple(writes),
+    )
+    writing = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_APPEND
+    refused_events, refused_modules, write_events = _REFUSED_EVENTS, _REFUSED_MODULES, _WRITES
+    if with_ctypes:
+        refused_modules = refused_modules - {"ctypes", "_ctypes"}
+
+    def under(path: str, roots: tuple[str, ...]) -> bool:
+        return any(path == root or path.startswith(root + sep) for root in roots)
+
+    def where(path: Any) -> str:
+        text = fsdecode(path)
+        if ".." in text.replace("\\", "/").split("/"):
+            raise Refused(UP, text)
+        return normpath(join(getcwd(), text))
+
+    def opens(path: Any, changes: bool) -> None:
+        if isinstance(path, int):  # a descriptor already open: the channels, /dev/null
+            return
+        place = where(path)
+        if under(place, writes_):
+            return
+        if not changes and (
+            under(place, granted_) or (under(place, reads_) and not under(place, refused_))
+        ):
+            return
+        raise Refused(CHANGE if changes else READ, place)
+
+    def hook(event: str, arguments: tuple) -> None:
+        if event == "open":
+            path, mode, flags = arguments
+            changes = (
+                any(c in mode for c in "wax+") if isinstance(mode, str) else bool(flags & writing)
+            )
+            opens(path, changes)
+        elif event == "import":
+            if arguments[0] in refused_modules:
+                raise RefusedImport(LOAD, arguments[0])
+        elif event in refused_events or (event.startswith("ctypes.") and not with_ctypes):
+            raise Refused(EVENT, event)
+        elif event in write_events:
+            for path in arguments[:2]:
+                if isinstance(path, (str, bytes, os.PathLike)):
+                    opens(path, changes=True)
+
+    # ``subprocess`` imports it at import time (and matplotlib imports ``subprocess``): a
+    # stand-in whose one function refuses, so the imports work and no process starts.
+    stand_in = type(sys)("_posixsubprocess")
+    stand_in.fork_exec = _refuse_fork_exec  # type: ignore[attr-defined]
+    sys.modules["_posixsubprocess"] = stand_in
+    sys.addaudithook(hook)
+
+
+def _refuse_fork_exec(*arguments: Any) -> None:
+    raise Refused(EVENT, "subprocess")
+
+
 def _load(namespace: dict[str, Any], message: dict[str, Any]) -> dict[str, Any]:
-    """Run the prelude, the given values and the cells; the function's parameters."""
+    """Confine the process, then run the prelude, the given values and the cells; the
+    function's parameters."""
+    if message.get("confine"):
+        confine(**message["confine"])
     _alarm(message["seconds"])
     try:
         exec(compile(message["prelude"], "<prelude>", "exec"), namespace)
@@ -299,5 +462,11 @@ def _load(namespace: dict[str, Any], message: dict[str, Any]) -> dict[str, Any]:
         _alarm(0)
 
 
+#: The child's exit status when memory ran out outside a call (printing, answering).
+MEMORY_EXIT = 75
+
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except MemoryError:
+        os._exit(MEMORY_EXIT)

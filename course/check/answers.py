@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from course import limits
+from course.check._outside_child import Opaque
 from course.i18n import _
 
 __all__ = [
@@ -294,7 +295,7 @@ def type_name(value: Any) -> str:
     >>> type_name(2.5), type_name(plain(iter([1])))
     ('float', 'list_iterator')
     """
-    if isinstance(value, _Unread):
+    if isinstance(value, (_Unread, Opaque)):
         return value.kind
     return type(value).__name__
 

@@ -3,8 +3,9 @@
 A student meets an exercise's fixed cases in the notebook, and a failure's report shows the
 expected answer beside theirs. Graded, the checker runs inside :func:`grading`: its cases
 are drawn by the exercise's declared ``draw(rng)`` (:func:`course.check.exercises.exercise`),
-from a seed of the submission (:func:`submission_seed`: the student and the assignment), so
-a table of answers memorised from the notebook's reports is no use; and a failure's report
+from a seed of the submission (:func:`submission_seed`: the student, the assignment and the
+teacher's secret), so a table of answers memorised from the notebook's reports, or drawn
+in the student's kernel, is no use; and a failure's report
 keeps the case's inputs, the diagnosis and the named mistake, not the expected values.
 
 Unchecked: the grader, not a student, calls these (``UNCHECKED = True``).
@@ -28,8 +29,10 @@ UNCHECKED = True  # see the module docstring
 _SEED: ContextVar[int | None] = ContextVar("course_grading_seed", default=None)
 
 
-def submission_seed(student: str, assignment: str) -> int:
-    """The seed of one student's submission of one assignment: the same every time it is graded.
+def submission_seed(student: str, assignment: str, secret: str = "") -> int:
+    """The seed of one student's submission of one assignment: the same every time it is
+    graded. ``secret`` is the teacher's (``nbgrader_config.py``): without it, a student who
+    knows the names could draw their own graded cases.
 
     Examples
     --------
@@ -37,8 +40,10 @@ def submission_seed(student: str, assignment: str) -> int:
     True
     >>> submission_seed("alice", "01_de_casteljau") == submission_seed("bob", "01_de_casteljau")
     False
+    >>> submission_seed("alice", "01", "x") == submission_seed("alice", "01", "y")
+    False
     """
-    digest = hashlib.sha256(f"{student}\0{assignment}".encode()).digest()
+    digest = hashlib.sha256(f"{student}\0{assignment}\0{secret}".encode()).digest()
     return int.from_bytes(digest[:8], "little")
 
 

@@ -24,15 +24,20 @@ Unchecked: the grader, not a student, calls these (``UNCHECKED = True``).
 
 from __future__ import annotations
 
+import atexit
 import builtins
+import contextlib
 import importlib.util
 import inspect
 import json
 import os
 import queue
 import shutil
+import signal
+import site
 import subprocess
 import sys
+import sysconfig
 import tempfile
 import threading
 import time
@@ -42,7 +47,18 @@ from typing import Any
 
 import numpy as np
 
-from course.check._outside_child import ARRAY, LIST, NESTED, decode, encode
+from course.check._outside_child import (
+    ARRAY,
+    CHANGE,
+    LIST,
+    LOAD,
+    MEMORY_EXIT,
+    NESTED,
+    READ,
+    UP,
+    decode,
+    encode,
+)
 from course.check.references import CallBudget, call_limits, known_mistake
 from course.check.sandbox import MEMORY_BUDGET, TIME_BUDGET, CaseStopped
 from course.i18n import _
@@ -60,18 +76,49 @@ CHILD_CPU_SECONDS = 120
 _WALL_FACTOR, _WALL_EXTRA = 4, 5.0
 
 
-def _numpy_site() -> Path:
-    """A folder holding only numpy (and its bundled libraries): the child's site packages."""
+def _numpy_folders() -> list[Path]:
+    """numpy's package folder and its bundled libraries' (``numpy.libs``, ``.dylibs``)."""
     spec = importlib.util.find_spec("numpy")
     if spec is None or not spec.submodule_search_locations:
         raise RuntimeError(_("numpy is not installed: the grader's child needs it"))
-    package = Path(next(iter(spec.submodule_search_locations)))
-    site = Path(tempfile.mkdtemp(prefix="course-numpy-"))
-    for name in ("numpy", "numpy.libs", ".dylibs"):
-        source = package.parent / name
-        if source.exists():
-            (site / name).symlink_to(source, target_is_directory=True)
-    return site
+    package = Path(next(iter(spec.submodule_search_locations))).resolve()
+    found = [package.parent / name for name in ("numpy", "numpy.libs", ".dylibs")]
+    return [folder for folder in found if folder.exists()]
+
+
+def _numpy_site() -> Path:
+    """A folder holding only numpy (and its bundled libraries): the child's site packages.
+    Removed when the grader's process ends."""
+    folder = Path(tempfile.mkdtemp(prefix="course-numpy-"))
+    for source in _numpy_folders():
+        (folder / source.name).symlink_to(source, target_is_directory=True)
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    return folder
+
+
+def _confinement(folder: Path, paths: Sequence[str]) -> dict[str, Any]:
+    """Where the child may open files (:func:`course.check._outside_child.confine`): the
+    standard library, but not the site packages inside it or beside it; numpy, the grader's
+    ``paths`` and the folder linking numpy; and ``folder``, its working folder, to write.
+    ``ctypes`` only where the grader grants ``paths`` (the course's own tests)."""
+    stdlib = {sysconfig.get_paths()[key] for key in ("stdlib", "platstdlib")}
+    refused = {sysconfig.get_paths()[key] for key in ("purelib", "platlib")}
+    refused.update(site.getsitepackages())
+    refused.add(site.getusersitepackages())
+    granted = [*map(str, _numpy_folders()), str(_site()), *paths]
+
+    def real(folders: Any) -> list[str]:
+        return sorted(
+            {os.path.realpath(path) for path in folders} | {str(path) for path in folders}
+        )
+
+    return {
+        "granted": real(granted),
+        "reads": real(stdlib),
+        "refused": real(refused),
+        "writes": real([folder]),
+        "with_ctypes": bool(paths),
+    }
 
 
 _SITE: list[Path] = []
@@ -147,6 +194,7 @@ class Outside:
             text=True,
             encoding="utf-8",
             errors="replace",
+            start_new_session=sys.platform != "win32",  # its own group: close() ends them all
         )
         self._lines = queue.Queue()
         threading.Thread(
@@ -160,6 +208,7 @@ class Outside:
                 [cell, index == len(self.cells) - 1] for index, cell in enumerate(self.cells)
             ],
             "function": self.function,
+            "confine": _confinement(self._folder, self.paths),
             "memory": self.memory + 256 * 2**20,  # numpy's own, and the cells'
             "cpu_seconds": CHILD_CPU_SECONDS,
             "seconds": max(self.seconds, 10.0),  # importing numpy takes a while
@@ -204,14 +253,24 @@ class Outside:
         return answer
 
     def _died(self) -> dict[str, Any]:
-        code = self._process.poll() if self._process is not None else None
+        code = None
+        if self._process is not None:
+            try:
+                code = self._process.wait(timeout=2)
+            except subprocess.TimeoutExpired:  # it closed the grader's channel and runs on
+                code = 0
         self.close()
-        # Killed by the processor-time cap (SIGXCPU, SIGKILL) or by the address space.
-        return {"stopped": "memory" if code not in (-24, -9) else "time", "died": code}
+        if code is not None and code >= 0 and code != MEMORY_EXIT:  # os._exit, a closed channel
+            return {"stopped": "ended", "died": code}
+        # Killed by the processor-time cap (SIGXCPU, SIGKILL), else by the address space.
+        return {"stopped": "time" if code in (-24, -9) else "memory", "died": code}
 
     def close(self) -> None:
-        """Stop the child and remove its folder."""
+        """Stop the child, and any process left in its group, and remove its folder."""
         if self._process is not None:
+            if sys.platform != "win32":
+                with contextlib.suppress(OSError):  # the group is gone already
+                    os.killpg(self._process.pid, signal.SIGKILL)
             if self._process.poll() is None:
                 self._process.kill()
             self._process.wait()
@@ -280,6 +339,11 @@ class Outside:
                     mebibytes=f"{self.memory / 2**20:g}"
                 )
                 raise CaseStopped(reason, "memory")
+            if answer["stopped"] == "ended":
+                reason = _(
+                    "your code ended the process it ran in, or closed its channel to the grader"
+                )
+                raise CaseStopped(reason, "ended")
             reason = _("the loop did not stop within {seconds} s").format(
                 seconds=f"{self.seconds:g}"
             )
@@ -330,6 +394,8 @@ def _rebuilt(error: Mapping[str, Any]) -> Exception:
     NotImplementedError is still "not written yet"), a look-alike for their own, and never a
     BaseException (a SystemExit stays in the report)."""
     name, message = str(error.get("type", "Exception")), str(error.get("message", ""))
+    if isinstance(error.get("refused"), list) and len(error["refused"]) == 2:
+        message = _refusal(*map(str, error["refused"]))
     kind = getattr(builtins, name, None) if error.get("builtin") else None
     if not (isinstance(kind, type) and issubclass(kind, Exception)):
         kind = type(name, (Exception,), {"__module__": "student"})
@@ -341,6 +407,24 @@ def _rebuilt(error: Mapping[str, Any]) -> Exception:
     if isinstance(line, str):
         rebuilt.course_student_line = _("in your cell: {line}").format(line=line)
     return rebuilt
+
+
+def _refusal(kind: str, subject: str) -> str:
+    """What the grader's confined child refused to do, in the student's language."""
+    if kind == READ:
+        text = _("the grading process reads no file outside Python's and numpy's own: {subject}")
+    elif kind == CHANGE:
+        text = _("the grading process writes only in its own working folder: {subject}")
+    elif kind == UP:
+        text = _("the grading process opens no path that climbs with '..': {subject}")
+    elif kind == LOAD:
+        text = _("the grading process does not load {subject}: numpy and Python's own modules only")
+    else:
+        text = _(
+            "the grading process does not allow {subject} "
+            "(no processes, signals, sockets or ctypes)"
+        )
+    return text.format(subject=subject)
 
 
 def outside_function(

@@ -29,6 +29,7 @@ import ast
 import importlib
 import inspect
 import textwrap
+from collections import Counter
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -162,8 +163,25 @@ def grade_exercise(
     finally:
         stand_in.close()
     outside = stand_in.outside
-    said = [text for text in outside.printed if text.strip()] + list(outside.warned)
-    return result, said
+    return result, _once([text for text in outside.printed if text.strip()] + outside.warned)
+
+
+def _once(said: list[str]) -> list[str]:
+    r"""What the code said, each text once (a print in the function says it every case), with
+    how many times it was said.
+
+    Examples
+    --------
+    >>> _once(["level 2", "level 2", "done"])
+    ['level 2\n(said 2 times)', 'done']
+    """
+    counts = Counter(said)
+    return [
+        text
+        if counts[text] == 1
+        else _("{text}\n(said {count} times)").format(text=text.rstrip("\n"), count=counts[text])
+        for text in counts
+    ]
 
 
 def _has_declaration(name: str) -> bool:
@@ -218,11 +236,23 @@ class CheckOutsideKernel(NbGraderPreprocessor):
         help="Folders the child process may import from besides numpy's (none: no course).",
     ).tag(config=True)
 
+    grading_secret = Unicode(
+        "",
+        help="The teacher's secret the graded cases are drawn from, with the student and the "
+        "assignment (empty: a student who knows the names can draw them too).",
+    ).tag(config=True)
+
     def preprocess(self, nb: NotebookNode, resources: dict) -> tuple[NotebookNode, dict]:
         grading_of = resources.get("nbgrader", {})
         student = str(grading_of.get("student", ""))
         assignment = str(grading_of.get("assignment", ""))
-        seed = submission_seed(student, assignment)
+        if not self.grading_secret:
+            self.log.warning(
+                "CheckOutsideKernel.grading_secret is not set: a student can draw the graded "
+                "cases in their kernel (python -m course nbgrader writes one into a new "
+                "nbgrader_config.py)"
+            )
+        seed = submission_seed(student, assignment, self.grading_secret)
         course_exercises()  # every chapter's checkers declared, in nbgrader's fresh process
         for cell in nb.cells:
             grade_id = str(_grading(cell).get("grade_id", ""))

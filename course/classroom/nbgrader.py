@@ -21,6 +21,7 @@ earlier exercise's ``grader_reference``, which its checker declares
 from __future__ import annotations
 
 import os
+import secrets
 import shutil
 import tempfile
 from collections.abc import Callable, Iterator
@@ -67,6 +68,9 @@ from nbgrader.preprocessors import Execute  # noqa: E402
 _steps = list(Autograde.class_traits()["autograde_preprocessors"].make_dynamic_default())
 _steps.insert(_steps.index(Execute) + 1, CheckOutsideKernel)
 c.Autograde.autograde_preprocessors = _steps
+# The graded cases are drawn from this secret, the student and the lesson: keep this file
+# where students cannot read it. A new secret draws new cases for every submission.
+c.CheckOutsideKernel.grading_secret = {secret!r}
 # nbgrader zip_collect: a learning platform's download, each upload named
 # <student>_<lesson>.ipynb (01_de_casteljau's by alice: alice_01_de_casteljau.ipynb);
 # change the rule to your platform's file names.
@@ -92,7 +96,9 @@ def write_nbgrader_course(
     out = Path(out)
     files: dict[str, str] = {}
     if not (out / "nbgrader_config.py").exists():
-        files["nbgrader_config.py"] = CONFIG.format(stub=STUB_LINE, collect=UPLOAD_NAME)
+        files["nbgrader_config.py"] = CONFIG.format(
+            stub=STUB_LINE, collect=UPLOAD_NAME, secret=secrets.token_hex(16)
+        )
     for book in notebooks(folder):
         notebook = read_notebook(book.path)
         try:

@@ -217,9 +217,11 @@ site-teacher: $(VENV)/.site-installed $(MATHJAX)/es5/tex-mml-chtml.js
 # screenshots in build/screenshots/. Not in `make test`.
 CHROMIUM ?= /usr/bin/chromium
 export CHROMIUM
+# Two workers, each with its own JupyterLab and Voila on free ports: a lesson's kernel
+# computes while the other worker's browser waits.
 test-browser: site $(VENV)/.browser-installed $(VENV)/.test-installed $(CHROMIUM)
-	SITE=$(SITE) $(BIN)/python -m pytest -p no:cacheprovider --timeout=900 --durations=0 -v \
-		tests_browser
+	SITE=$(SITE) $(BIN)/python -m pytest -p no:cacheprovider --timeout=900 --durations=20 -v \
+		-n 2 tests_browser
 
 # Only Debian's package is installed for you (as root, or through sudo): elsewhere, install
 # Chromium yourself and name it with CHROMIUM.

@@ -35,7 +35,8 @@ the course's code in it, within the child's wall-clock budget (its start timed a
 Not every attack meets every checker: :func:`accident_pairs` deals them out round a list
 shuffled with a fixed seed, each attack to :data:`MEETS` checkers (five for the quick, two
 for those the processor-time alarm stops, one for those only the wall-clock kill stops,
-which take its whole 17 s), 121 pairs, every checker meeting at least five attacks.
+which take its whole 9 s: each case gets ACCIDENT_SECONDS, 1 s), 122 pairs, every checker
+meeting at least five attacks.
 """
 
 from __future__ import annotations
@@ -61,7 +62,6 @@ import numpy as np
 import pytest
 
 from course.check import outside
-from course.check.budget import TIME_BUDGET
 from course.check.exercises import declared
 from course.check.grading import grading, submission_seed
 from course.classroom.edition import cell_source
@@ -1078,11 +1078,14 @@ WITHOUT_THE_GRADER = (
 #: How long the check may take on the wall clock: a case's wall-clock budget, after which
 #: the grader kills the child, and a margin for a busy machine (the child's start, a fresh
 #: interpreter importing numpy, is timed apart and not counted).
-WALL_BUDGET = TIME_BUDGET * outside._WALL_FACTOR + outside._WALL_EXTRA + 3.0
+#: Each accident's time budget in the child: shorter than a lesson's (TIME_BUDGET), so that
+#: the attacks only a limit stops take seconds, not tens; the limits are the same ones.
+ACCIDENT_SECONDS = 1.0
+WALL_BUDGET = ACCIDENT_SECONDS * outside._WALL_FACTOR + outside._WALL_EXTRA + 3.0
 
 #: The attacks: the body of the student's function (indented by four), and how it is
 #: stopped: "fast" (an error, or a refusal: well under a second), "cpu" (the child's
-#: processor-time alarm, TIME_BUDGET) or "wall" (only the grader's kill on the wall clock).
+#: processor-time alarm, ACCIDENT_SECONDS) or "wall" (only the grader's kill on the wall clock).
 ATTACKS: dict[str, tuple[str, str]] = {
     "python loop": ("while True:\n    pass", "cpu"),
     "loop catching the alarm": (
@@ -1233,7 +1236,7 @@ def attack_cell(attack: str, checker: str) -> tuple[str, str]:
 def test_an_accident_in_the_graders_child_is_a_fail_within_the_budget(attack, checker):
     function, cell = attack_cell(attack, checker)
     start = time.perf_counter()
-    stand_in = outside.outside_function([cell], function)  # the child started, cells run
+    stand_in = outside.outside_function([cell], function, seconds=ACCIDENT_SECONDS)
     checking = time.perf_counter()
     try:
         with grading(submission_seed("accident", checker)):

@@ -61,7 +61,7 @@ class EditionReport:
         ]
         notes.append(
             _(
-                "{written} notebooks written, {unchanged} unchanged, {kept} with your edits kept"
+                "notebooks written: {written}; unchanged: {unchanged}; with your edits kept: {kept}"
             ).format(
                 written=len(self.written),
                 unchanged=len(self.unchanged),

@@ -293,3 +293,71 @@ def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(
     name, written, named_otherwise
 ):
     graded_draws.check_graded(name, written, named_otherwise)
+
+
+# --- issue 34: answers written as the readers wrote them ------------------------------------
+
+
+def pictures_drawn(monkeypatch):
+    """Every matplotlib figure a checker turns into a PNG, in order (the pictures are bytes)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    drawn = []
+    print_png = FigureCanvasAgg.print_png
+
+    def keeping(canvas, *args, **kwargs):
+        drawn.append(canvas.figure)
+        return print_png(canvas, *args, **kwargs)
+
+    monkeypatch.setattr(FigureCanvasAgg, "print_png", keeping)
+    return drawn
+
+
+def tick_at(axis_ticks, labels, position):
+    """The label of the tick nearest ``position``."""
+    nearest = int(np.argmin(np.abs(np.asarray(axis_ticks) - position)))
+    return labels[nearest].get_text()
+
+
+def test_the_difference_panel_numbers_each_pixel_as_the_report_does(monkeypatch):
+    drawn = pictures_drawn(monkeypatch)
+    result = check.bilinear_splat(corners_at_integers)
+    # Case 1, (2.5, 1.5): pixel (2, 1) should get 1 and gets 0.25, the one pixel 0.75 short.
+    assert "first wrong pixel: (2, 1) should get 1, yours gets 0.25" in result.message
+    (difference,) = [a for a in drawn[-1].axes if a.get_title() == "yours minus expected"]
+    (image,) = difference.get_images()
+    values = image.get_array()
+    row, column = np.unravel_index(np.argmin(values), values.shape)
+    assert values[row, column] == pytest.approx(-0.75)
+    left, right, bottom, top = image.get_extent()
+    height, width = values.shape
+    x = left + (column + 0.5) * (right - left) / width
+    y = top + (row + 0.5) * (bottom - top) / height
+    assert tick_at(difference.get_xticks(), difference.get_xticklabels(), x) == "2"
+    assert tick_at(difference.get_yticks(), difference.get_yticklabels(), y) == "1"
+
+
+def test_weights_returned_before_pixels_are_named_as_such():
+    def weights_first(x, y):
+        left, top = math.floor(x - 0.5), math.floor(y - 0.5)
+        dx, dy = x - (left + 0.5), y - (top + 0.5)
+        pixels = [(left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)]
+        weights = [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy]
+        return weights, pixels
+
+    result = check.bilinear_splat(weights_first)
+    assert not result and "case 1" in result.message
+    assert "you returned the weights first" in result.message
+    assert "must match" not in result.message and "8 weights" not in result.message
+    # One pixel and its weight, the wrong way round, is told the same.
+    result = check.bilinear_splat(lambda x, y: ([1.0], [(round(x), round(y))]))
+    assert "you returned the weights first" in result.message
+
+
+def test_the_weights_picture_numbers_samples_with_whole_numbers(monkeypatch):
+    drawn = pictures_drawn(monkeypatch)
+    assert not check.arc_length_weights(lambda samples: np.ones(len(samples)))
+    (axes,) = drawn[-1].axes
+    low, high = axes.get_xlim()
+    shown = [tick for tick in axes.get_xticks() if low <= tick <= high]
+    assert shown and all(float(tick).is_integer() for tick in shown), shown

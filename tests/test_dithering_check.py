@@ -195,3 +195,44 @@ def test_a_graded_face_is_the_lessons_face_moved_and_toned():
 @pytest.mark.parametrize("name", ["dithering_ordered", "dithering_error_diffuse"])
 def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name):
     graded_draws.check_graded(name)
+
+
+# --- issue 34: answers written as the readers wrote them ------------------------------------
+
+
+def test_a_cell_written_with_i_and_j_swapped_is_told_what_it_wrote():
+    def swapped_in_the_cell(gray):
+        height, width = gray.shape
+        output = np.zeros((3 * height, 3 * width))
+        for y in range(height):
+            for x in range(width):
+                for i in range(3):
+                    for j in range(3):
+                        lit = gray[y, x] > M[i][j] / 9
+                        output[3 * y + j, 3 * x + i] = 1.0 if lit else 0.0
+        return output
+
+    result = check.dithering_ordered(swapped_in_the_cell)
+    assert result.mistake == "the matrix transposed"
+    message = str(result)
+    assert "output[3 y + j, 3 x + i]" in message
+    # The old message's suggestion swaps the image's x and y: it crashes a 2 x 5 case.
+    assert "output[3 x + i, 3 y + j]" not in message
+
+
+def png_size(picture):
+    """(width, height) of PNG bytes, from the IHDR chunk."""
+    return int.from_bytes(picture[16:20], "big"), int.from_bytes(picture[20:24], "big")
+
+
+def test_the_pass_pictures_show_each_dot_at_a_whole_zoom_large_enough_to_see():
+    face = check._small_face()
+    diffused = check.dithering_error_diffuse(floyd_steinberg)
+    ordered = check.dithering_ordered(nine_ifs)
+    # Two faces side by side, each dot at least 3 x 3 screen pixels (the face is 75 x 64):
+    # the dithered pattern, not a blur of it.
+    width, height = png_size(diffused.picture)
+    assert width >= 2 * 3 * face.shape[1] and height >= 3 * face.shape[0]
+    # The ordered face is 225 x 192, three times larger: each dot at least one screen pixel.
+    width, height = png_size(ordered.picture)
+    assert width >= 2 * 3 * face.shape[1] and height >= 3 * face.shape[0]

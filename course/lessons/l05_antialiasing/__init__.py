@@ -12,6 +12,8 @@
   x 700 canvas);
 - :mod:`.mistakes`: the known mistakes lesson 05's checkers name, each reproduced on the checker's
   cases;
+- :mod:`.splat_pictures`: the splat checker's pictures: a wrong splat beside the right one, its
+  pixels numbered;
 - :mod:`.splat_tables`: a splat as a table: rows (x, y, weight), the one form lesson 05's splat
   checker compares;
 - :mod:`.zoom_panel`: zoomed pixel views of a rendered curve: where the window sits, one panel, a

@@ -29,6 +29,7 @@ from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from course.antialias import (
     arc_length_weights as reference_weights,
@@ -48,11 +49,12 @@ from course.check.base import (
 )
 from course.check.exercises import exercise
 from course.check.hints import Hints
-from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture, side_by_side
+from course.check.pictures import EXPECTED, GIVEN, figure_png
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC
 from course.lessons.graded_cases import drawn_in_order
 from course.lessons.l05_antialiasing.mistakes import splat_mistakes, weight_mistakes
+from course.lessons.l05_antialiasing.splat_pictures import failure_picture, pass_picture
 from course.lessons.l05_antialiasing.splat_tables import splat_table, table_of
 
 __all__ = [
@@ -125,12 +127,6 @@ def _drawn_splat_cases(rng: np.random.Generator) -> list[dict[str, float]]:
     )
 
 
-# The picture shows at least this many pixels on each side of the point's own pixel.
-_AROUND = 2
-# ... and at most this many pixels across, however far a wrong splat strays.
-_LARGEST_WINDOW = 16
-
-
 def _student_table(answer: Any) -> np.ndarray:
     """The student's (pixels, weights) as a splat table; AnswerError in their terms."""
     if not isinstance(answer, (list, tuple, np.ndarray)):
@@ -162,10 +158,38 @@ def _student_table(answer: Any) -> np.ndarray:
                 pixels=type(pixels).__name__, weights=type(weights).__name__
             )
         )
+    if _weights_first(pixels, weights):
+        raise AnswerError(
+            _(
+                "you returned the weights first: your first list holds {count} numbers and your "
+                "second {count} (x, y) pairs. Return pixels, weights, the pixels first."
+            ).format(count=len(weights))
+        )
     try:
         return splat_table(pixels, weights)
     except (TypeError, ValueError) as error:
         raise AnswerError(str(error)) from None
+
+
+def _weights_first(pixels: Any, weights: Any) -> bool:
+    """Whether ``(pixels, weights)`` is a splat returned the other way round: as many
+    plain numbers first as (x, y) pairs second.
+
+    Examples
+    --------
+    >>> _weights_first([0.25, 0.75], [(2, 1), (3, 1)]), _weights_first([(2, 1)], [1.0])
+    (True, False)
+    """
+    try:
+        first, second = np.asarray(pixels), np.asarray(weights)
+    except (TypeError, ValueError):  # ragged: not the other way round, and splat_table says so
+        return False
+    return (
+        first.ndim == 1
+        and second.ndim == 2
+        and second.shape[1] == 2
+        and len(first) == len(second) > 0
+    )
 
 
 def _weights_by_pixel(table: np.ndarray) -> dict[tuple[int, int], float]:
@@ -206,45 +230,6 @@ def _show_splat(table: np.ndarray) -> str:
         return _("no pixel lit")
     each = _("pixel ({x}, {y}) gets {weight}")
     return ", ".join(each.format(x=int(x), y=int(y), weight=f"{w:.4g}") for x, y, w in table)
-
-
-def _window(case: dict[str, Any], tables: list[np.ndarray]) -> tuple[int, int, int, int]:
-    """(left, top, width, height): the point's pixel and every lit pixel, within limits."""
-    px, py = math.floor(case["x"]), math.floor(case["y"])
-    xs = [px - _AROUND, px + _AROUND] + [int(x) for t in tables for x in t[:, 0]]
-    ys = [py - _AROUND, py + _AROUND] + [int(y) for t in tables for y in t[:, 1]]
-    left = max(min(xs), px - _LARGEST_WINDOW // 2)
-    top = max(min(ys), py - _LARGEST_WINDOW // 2)
-    right = min(max(xs), left + _LARGEST_WINDOW - 1)
-    bottom = min(max(ys), top + _LARGEST_WINDOW - 1)
-    return left, top, right - left + 1, bottom - top + 1
-
-
-def _painted(table: np.ndarray, window: tuple[int, int, int, int]) -> np.ndarray:
-    left, top, width, height = window
-    image = np.zeros((height, width))
-    for x, y, weight in table:
-        column, row = int(x) - left, int(y) - top
-        if 0 <= row < height and 0 <= column < width:
-            image[row, column] += weight
-    return image
-
-
-def _splat_picture(case: dict[str, Any], expected: np.ndarray, given: np.ndarray) -> bytes:
-    window = _window(case, [expected, given])
-    left, top, width, height = window
-    return image_picture(
-        _painted(expected, window),
-        _painted(given, window),
-        title=_("the splat of ({x}, {y}): pixels x {left}..{right}, y {top}..{bottom}").format(
-            x=case["x"],
-            y=case["y"],
-            left=left,
-            right=left + width - 1,
-            top=top,
-            bottom=top + height - 1,
-        ),
-    )
 
 
 def _splat_explain(case: dict[str, Any], expected: np.ndarray, given: np.ndarray) -> str:
@@ -313,20 +298,11 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
         convert=_student_table,
         mistakes=splat_mistakes(),
         difference=_splat_difference,
-        picture=_splat_picture,
+        picture=failure_picture,
         explain=_splat_explain,
         show=_show_splat,
-        pass_picture=_splat_pass_picture,
-    )
-
-
-def _splat_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
-    case, expected, given = results[2]  # (3.25, 7.875): four unequal weights
-    window = _window(case, [expected, given])
-    return side_by_side(
-        _painted(expected, window),
-        _painted(given, window),
-        (_("expected"), _("your splat of ({x}, {y})").format(x=case["x"], y=case["y"])),
+        # Case 3, (3.25, 7.875): four unequal weights.
+        pass_picture=lambda results: pass_picture(*results[2]),
     )
 
 
@@ -391,6 +367,8 @@ def _weights_picture(
     index = np.arange(len(want))
     axes.plot(index, want, "o-", color=EXPECTED, label=_("expected"), markersize=5)
     axes.plot(index, have, "x--", color=GIVEN, label=_("yours"), markersize=6)
+    # Samples are counted: ticks on whole numbers only, never "sample 0.25".
+    axes.xaxis.set_major_locator(MaxNLocator(integer=True))
     axes.set_xlabel(_("sample"), fontsize=8)
     axes.set_ylabel(_("weight (px of curve)"), fontsize=8)
     axes.tick_params(labelsize=7)

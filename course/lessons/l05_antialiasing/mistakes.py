@@ -168,7 +168,8 @@ def splat_mistakes() -> tuple[Mistake, ...]:
             _("int() for floor"),
             _(
                 "left of or above the first centres your pixels are one off: int() rounds toward "
-                "zero, so int(-0.75) is 0, while the pixel to the left is floor(-0.75) = -1."
+                "zero, so int(-0.25) is 0, while the column left of pixel 0, or the row above it, "
+                "is floor(-0.25) = -1."
             ),
             truncated,
         ),

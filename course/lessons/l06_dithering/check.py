@@ -22,10 +22,11 @@ from functools import cache
 from typing import Any
 
 import numpy as np
+from matplotlib.figure import Figure
 
 from course.check.base import CheckResult, Hints, Mistake, close, hint, run_cases
 from course.check.exercises import exercise
-from course.check.pictures import image_picture, side_by_side
+from course.check.pictures import figure_png, image_picture
 from course.halftone import diffusion, dither
 from course.halftone.diffusion import (
     error_diffusion,
@@ -65,9 +66,29 @@ def _drawn_face(rng: np.random.Generator) -> np.ndarray:
     return window ** float(np.exp(rng.uniform(np.log(0.8), np.log(1.25))))
 
 
+#: A pass picture's faces are zoomed to about this many screen pixels down: the face
+#: of error diffusion (75 rows) four times, so that every dot shows; the ordered one
+#: (225 rows) at 1:1, each dot a screen pixel, never blurred by shrinking.
+_PASS_PICTURE_ROWS = 300
+
+
 def _face_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:
-    _, expected, given = results[-1]
-    return side_by_side(expected, given, (N_("expected"), N_("your dithered face")))
+    """The expected face beside the student's, each dot a flat square at a whole zoom."""
+    _case, expected, given = results[-1]
+    panels = ((_as_output(expected), _("expected")), (_as_output(given), _("your dithered face")))
+    height, width = panels[0][0].shape
+    zoom = max(1, _PASS_PICTURE_ROWS // max(height, width))
+    gap, above = 16, 22
+    columns, rows = 2 * width * zoom + 3 * gap, height * zoom + above + gap // 2
+    figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
+    for index, (dots, title) in enumerate(panels):
+        left = gap + index * (width * zoom + gap)
+        box = (left / columns, (gap // 2) / rows, width * zoom / columns, height * zoom / rows)
+        axes = figure.add_axes(box)
+        axes.imshow(dots, cmap="gray", vmin=0.0, vmax=1.0, interpolation="nearest")
+        axes.set_axis_off()
+        axes.set_title(title, fontsize=8, pad=3)
+    return figure_png(figure)
 
 
 def _as_output(value: Any) -> np.ndarray:
@@ -194,9 +215,9 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
         Mistake(
             N_("the matrix transposed"),
             N_(
-                "your cells are the slide's patterns mirrored on the diagonal: you indexed "
-                "output[3 x + i, 3 y + j] (or read M[j][i]). Row i of a cell is row i of M: "
-                "output[3 y + i, 3 x + j] compares with M[i][j]."
+                "your cells are the slide's patterns mirrored on the diagonal: i and j are "
+                "swapped, in the output (output[3 y + j, 3 x + i]) or in the matrix (M[j][i]). "
+                "Row i of a cell is row i of M: output[3 y + i, 3 x + j] compares with M[i][j]."
             ),
             _ordered_with(ORDERED_MATRIX.T, np.greater),
         ),

@@ -10,9 +10,9 @@ from course.lessons.l07_filtering.apps import (
     KERNELS,
     KernelApp,
     RepeatedBlurApp,
-    border_ring_mean,
     format_kernel,
     parse_kernel,
+    right_column_mean,
 )
 
 
@@ -42,8 +42,8 @@ def test_repeated_blur_app_measures_the_dark_frame_of_zero_padding():
     app = RepeatedBlurApp(np.full((16, 16), 0.5), repeats=4)
     assert "at 1.00 x" in app.titles["handout"].get_text()
     assert "at 1.00 x" in app.titles["reflect"].get_text()
-    ratio = border_ring_mean(app.wholes["zero"].get_array()) / 0.5
-    assert ratio < 0.8 and f"at {ratio:.2f} x" in app.titles["zero"].get_text()
+    ratio = right_column_mean(app.wholes["zero"].get_array()) / 0.5
+    assert ratio < 0.8 and f"right column at {ratio:.2f} x" in app.titles["zero"].get_text()
 
 
 def test_kernel_app_applies_the_lab_dot_product_under_the_chosen_border():
@@ -157,3 +157,33 @@ def test_the_blur_app_titles_give_the_dark_frame_depth_as_lesson_07_measures_it(
         assert app.titles["reflect"].get_text().endswith("\ndark frame: 0 px deep")
         assert app.titles["replicate"].get_text().endswith("\nthe frames' reference")
     assert depth >= 2  # 10 blurs darken more than the outermost column
+
+
+def test_the_border_caption_and_the_app_titles_measure_the_same_rightmost_column():
+    from course import images
+    from course.lessons.l07_filtering import figures
+    from course.lessons.l07_filtering.apps import blurred
+
+    face = images.face()
+    results = dict.fromkeys(filters.BORDERS, face)
+    for _blur in range(20):
+        results = {border: blurred(result, border) for border, result in results.items()}
+    caption = figures.border_figure(passes=20).caption
+    app = RepeatedBlurApp(face, repeats=20)
+    assert "the face's right column" in caption
+    for border, result in results.items():
+        ratio = result[:, -1].mean() / face[:, -1].mean()  # the column the figure plots at 0 px
+        assert f"{ratio:.2f} ({border})" in caption
+        assert f"right column at {ratio:.2f} x the original" in app.titles[border].get_text()
+
+
+def test_the_presets_weights_are_printed_as_the_app_reads_them(capsys):
+    from course.lessons.l07_filtering import lesson
+
+    lesson.print_kernel_presets()
+    header, *rows = capsys.readouterr().out.splitlines()
+    assert header.split("   ")[0].strip() == "box" and "Gaussian" in header and "sharpen" in header
+    starts = [header.index(name) for name in KERNELS]
+    for name, start, end in zip(KERNELS, starts, [*starts[1:], None], strict=True):
+        printed = "; ".join(" ".join(row[start:end].split()) for row in rows)
+        np.testing.assert_array_equal(parse_kernel(printed), parse_kernel(KERNELS[name]))

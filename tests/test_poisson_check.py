@@ -349,3 +349,96 @@ def test_graded_sweep_cases_are_drawn_in_the_fixed_cases_families():
 )
 def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name, written):
     graded_draws.check_graded(name, written)
+
+
+# --- RGB, the pair's order, and the picture of a wrong count (issue 34) ----------------------
+
+
+def each_channel_on_its_own(count):
+    """Each channel swept until its own residual is small; ``count`` makes the count returned
+    from the channels' counts (the largest, their sum, the last one)."""
+
+    def sweep(g, tolerance):
+        g = np.array(g, dtype=float)
+        planes = [g] if g.ndim == 2 else [g[..., channel] for channel in range(g.shape[2])]
+        counts = []
+        for plane in planes:  # a view: sweeping it sweeps g
+            sweeps = 0
+            while True:
+                neighbours = plane[:-2, 1:-1] + plane[2:, 1:-1] + plane[1:-1, :-2] + plane[1:-1, 2:]
+                if np.abs(neighbours - 4 * plane[1:-1, 1:-1]).max() < tolerance:
+                    break
+                plane[1:-1, 1:-1] = neighbours / 4
+                sweeps += 1
+            counts.append(sweeps)
+        return g, count(counts)
+
+    return sweep
+
+
+@pytest.mark.parametrize("count", [max, sum, lambda counts: counts[-1]])
+def test_each_channel_stopped_on_its_own_is_named(count):
+    result = check.jacobi_sweep(each_channel_on_its_own(count))
+    assert not result and result.mistake == "each channel stopped on its own"
+    assert "case 3 is wrong" in result.message
+    assert "sweeps the three channels together" in result.message
+
+
+def test_a_right_count_with_a_wrong_g_says_the_count_is_right():
+    result = check.jacobi_sweep(each_channel_on_its_own(max))
+    assert "the number of sweeps is right (52); g is not" in result.message
+    assert "sweeps: expected 52, given 52" not in result.message
+    assert "largest difference in g at [row, column, channel] [2, 4, 1]" in result.message
+
+
+def test_the_count_returned_first_is_named_and_g_is_not_printed():
+    def count_first(g, tolerance):
+        g, sweeps = jacobi(g, tolerance)
+        return sweeps, g
+
+    result = check.jacobi_sweep(count_first)
+    assert not result and result.mistake == "the number of sweeps first"
+    assert "given:    (16, an array of shape (4, 5)): expected g, then the number of sweeps" in (
+        result.message
+    )
+    assert "you returned the number of sweeps first: return g, sweeps" in result.message
+    assert "[[" not in result.message.split("given:")[1]  # no array printed whole
+    assert "of shape ()" not in result.message
+
+
+def drawn(student, monkeypatch):
+    """The report of ``student`` and the figure its picture was drawn from."""
+    from course.lessons.l08_poisson import sweep_picture
+
+    figures = []
+    drawing = sweep_picture.figure_png
+    monkeypatch.setattr(sweep_picture, "figure_png", lambda f: figures.append(f) or drawing(f))
+    result = check.jacobi_sweep(student)
+    assert result.picture is not None and len(figures) == 1
+    return result, figures[0]
+
+
+def test_the_gauss_seidel_picture_shows_both_counts_and_no_text_overlaps(monkeypatch):
+    result, figure = drawn(in_place, monkeypatch)
+    assert result.mistake == "in place: Gauss-Seidel"
+    assert figure._suptitle.get_text() == "Jacobi stops after 16 sweeps, yours after 10"
+    plot = figure.axes[0]
+    stops = {line.get_label(): line.get_xdata()[0] for line in plot.get_lines()[1:]}
+    assert stops["Jacobi stops: 16"] == 16 and stops["your loop stops: 10"] == 10
+    # The difference, 3.1e-05 at most, in its own scale: no "1e-5" offset above the bar.
+    bar = figure.axes[-1]
+    assert bar.yaxis.get_offset_text().get_text() == ""
+    renderer = figure.canvas.get_renderer()
+    texts = [figure._suptitle] + [axes.title for axes in figure.axes]
+    texts += [label for label in bar.get_yticklabels() if label.get_text()]
+    boxes = [text.get_window_extent(renderer) for text in texts if text.get_text()]
+    for first, box in enumerate(boxes):
+        for other in boxes[first + 1 :]:
+            assert not box.overlaps(other), (box, other)
+
+
+def test_the_picture_of_a_fixed_count_says_it_is_off_the_axis(monkeypatch):
+    _result, figure = drawn(a_thousand_sweeps, monkeypatch)
+    assert figure._suptitle.get_text() == "Jacobi stops after 16 sweeps, yours after 1000"
+    said = [text.get_text() for text in figure.axes[0].texts]
+    assert "your loop: 1000 sweeps,\noff this axis" in said

@@ -34,9 +34,9 @@ __all__ = [
     "KernelApp",
     "RepeatedBlurApp",
     "blurred",
-    "border_ring_mean",
     "format_kernel",
     "parse_kernel",
+    "right_column_mean",
 ]
 
 #: The presets of :class:`KernelApp`, as the student would type them.
@@ -132,21 +132,17 @@ def format_kernel(kernel: np.ndarray) -> str:
     return "; ".join(" ".join(f"{value:g}" for value in row) for row in np.asarray(kernel))
 
 
-def border_ring_mean(image: Any, thickness: int = 1) -> float:
-    """Mean of the outermost ``thickness`` pixels all around the image.
+def right_column_mean(image: Any) -> float:
+    """Mean of the image's rightmost column (every channel): lesson 07's edge brightness.
 
     Examples
     --------
-    >>> image = np.ones((4, 5))
-    >>> image[1:-1, 1:-1] = 0
-    >>> border_ring_mean(image)
-    1.0
+    >>> image = np.zeros((4, 5))
+    >>> image[:, -1] = 0.5
+    >>> right_column_mean(image)
+    0.5
     """
-    array = as_image(image, "image")
-    thickness = as_int(thickness, "thickness", minimum=1, maximum=min(array.shape[:2]))
-    ring = np.ones(array.shape[:2], dtype=bool)
-    ring[thickness:-thickness, thickness:-thickness] = False
-    return float(array[ring].mean())
+    return float(as_image(image, "image")[:, -1].mean())
 
 
 def blurred(image: np.ndarray, border: str) -> np.ndarray:
@@ -182,8 +178,8 @@ def _frame_depth(image: np.ndarray, reference: np.ndarray) -> int:
 class RepeatedBlurApp(SliderApp):
     """Blur n times with each border rule; the corner crop shows the frame.
 
-    Each title gives the edge pixels' brightness against the original and the
-    depth of the rule's dark frame, as lesson 07 measures it: the columns in
+    Each title gives the right (last) column's brightness against the original's
+    and the depth of the rule's dark frame, as lesson 07 measures it: the columns in
     from the right edge whose mean is below 95 % of the same column under
     ``'replicate'`` (:func:`course.lessons.l07_filtering.figures.frame_depth`).
 
@@ -200,7 +196,7 @@ class RepeatedBlurApp(SliderApp):
         self.image = as_image(image, "image")
         self.corner = as_int(corner, "corner", minimum=2)
         repeats = as_int(repeats, "repeats", minimum=0, maximum=30)
-        self.original_ring = border_ring_mean(self.image)
+        self.original_column = right_column_mean(self.image)
         controls = {
             "repeats": widgets.IntSlider(value=repeats, min=0, max=30, description=_("blurs"))
         }
@@ -252,13 +248,13 @@ class RepeatedBlurApp(SliderApp):
         for border, result in self.blurred(repeats).items():
             self.wholes[border].set_data(result)
             self.crops[border].set_data(self._corner_of(result))
-            ring = border_ring_mean(result)
-            if self.original_ring > 0:
-                edge = _("edge pixels at {ratio:.2f} x the original").format(
-                    ratio=ring / self.original_ring
+            column = right_column_mean(result)
+            if self.original_column > 0:
+                edge = _("right column at {ratio:.2f} x the original").format(
+                    ratio=column / self.original_column
                 )
-            else:  # a black frame: no ratio to show
-                edge = _("edge pixels' mean {mean:.2f} (the original's is 0)").format(mean=ring)
+            else:  # a black column: no ratio to show
+                edge = _("right column's mean {mean:.2f} (the original's is 0)").format(mean=column)
             if border == "replicate":
                 frame = _("the frames' reference")
             else:

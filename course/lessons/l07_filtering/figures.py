@@ -18,7 +18,7 @@ from matplotlib.patches import Rectangle
 from course import filters, images
 from course._validate import as_int
 from course.i18n import _
-from course.lessons.l07_filtering.apps import blurred, border_ring_mean
+from course.lessons.l07_filtering.apps import blurred, right_column_mean
 from course.widgets.picture import Still, pixel_figure
 
 __all__ = [
@@ -132,9 +132,10 @@ def frame_depth(zero: np.ndarray, other: np.ndarray, share: float = 0.95) -> int
 
 
 def ratios_at_edge(results: dict[str, np.ndarray], image: np.ndarray) -> dict[str, float]:
-    """Each rule's outermost right column: its mean after the blurs over its mean before."""
-    before = float(np.mean(image[:, -1]))
-    return {border: float(np.mean(result[:, -1])) / before for border, result in results.items()}
+    """Each rule's rightmost column: its mean after the blurs over its mean before (the
+    repeated-blur app's titles measure the same, :func:`.apps.right_column_mean`)."""
+    before = right_column_mean(image)
+    return {border: right_column_mean(result) / before for border, result in results.items()}
 
 
 def border_figure(passes: int = 20, depth: int = 16) -> Still:
@@ -147,8 +148,8 @@ def border_figure(passes: int = 20, depth: int = 16) -> Still:
     Examples
     --------
     >>> border_figure()  # doctest: +NORMALIZE_WHITESPACE
-    after 20 blurs the outermost pixels are at 0.97 (handout), 0.20 (zero),
-    0.98 (replicate), 0.97 (reflect) times their first brightness
+    after 20 blurs the face's right column is at 0.98 (handout), 0.20 (zero),
+    0.99 (replicate), 0.98 (reflect) times its first brightness
     """
     passes = as_int(passes, "passes", minimum=0, maximum=200)
     depth = as_int(depth, "depth", minimum=2, maximum=64)
@@ -187,13 +188,11 @@ def border_figure(passes: int = 20, depth: int = 16) -> Still:
     axes.tick_params(labelsize=7)
     axes.legend(fontsize=8, title=_("border rule"), title_fontsize=8, loc="lower left")
     figure.tight_layout()
-    original = border_ring_mean(image)
     ratios = _(", ").join(
-        f"{border_ring_mean(result) / original:.2f} ({border})"
-        for border, result in results.items()
+        f"{ratio:.2f} ({border})" for border, ratio in ratios_at_edge(results, image).items()
     )
     caption = _(
-        "after {passes} blurs the outermost pixels are at {ratios} times their first brightness"
+        "after {passes} blurs the face's right column is at {ratios} times its first brightness"
     ).format(passes=passes, ratios=ratios)
     return Still.of(figure, caption)
 

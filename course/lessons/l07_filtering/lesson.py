@@ -24,11 +24,36 @@ from course.classroom.pictures import (
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.i18n import N_, _
 from course.lessons.l07_filtering import figures
-from course.lessons.l07_filtering.apps import KernelApp, RepeatedBlurApp, blurred
+from course.lessons.l07_filtering.apps import KERNELS, KernelApp, RepeatedBlurApp, blurred
 from course.lessons.printed import display_width, title_on_one_line
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
+
+
+def print_kernel_presets() -> None:
+    """Print the kernel app's presets side by side, each a name over its three rows of weights.
+
+    Examples
+    --------
+    >>> print_kernel_presets()  # doctest: +NORMALIZE_WHITESPACE
+    box           Gaussian         sharpen    Sobel x    Sobel y    identity
+    1/9 1/9 1/9   1/16 2/16 1/16    0 -1  0   -1  0  1   -1 -2 -1   0 0 0
+    1/9 1/9 1/9   2/16 4/16 2/16   -1  5 -1   -2  0  2    0  0  0   0 1 0
+    1/9 1/9 1/9   1/16 2/16 1/16    0 -1  0   -1  0  1    1  2  1   0 0 0
+    """
+    columns = []
+    for name, kernel in KERNELS.items():
+        rows = [row.split() for row in kernel.split(";")]
+        width = max(len(weight) for row in rows for weight in row)
+        columns.append([name, *(" ".join(weight.rjust(width) for weight in row) for row in rows)])
+    widths = [max(len(line) for line in column) for column in columns]
+    for lines in zip(*columns, strict=True):
+        print(
+            "   ".join(
+                line.ljust(width) for line, width in zip(lines, widths, strict=True)
+            ).rstrip()
+        )
 
 
 def print_loop_equals_fast(name: str, equal: bool) -> None:

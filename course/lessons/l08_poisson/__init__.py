@@ -10,7 +10,9 @@
 - :mod:`.convergence`: lesson 08's convergence: how far the lab's sweeps get, how slowly Jacobi's
   error decays, and the sweeps app's questions answered;
 - :mod:`.mistakes`: the known mistakes lesson 08's checkers name, each reproduced on the checker's
-  cases.
+  cases;
+- :mod:`.sweep_picture`: the picture of a wrong sweep: when Jacobi stops and when the student's
+  loop did, and where the student's ``g`` differs from Jacobi's.
 
 The notebook imports its checkers as ``from course.lessons.l08_poisson import check``.
 """

@@ -4,11 +4,15 @@ The lab's skeleton solves for ``g = result - foreground``, starting from an
 array of zeros whose outer ring the student fills with ``background -
 foreground`` (:func:`poisson_boundary`); Jacobi sweeps then make ``g``
 harmonic inside, each pixel the mean of its four neighbours, until the
-residual is small (:func:`jacobi_sweep`). Failures draw the difference and
-recognise the sign flipped, x and y swapped, the sweep done in place (the
-lab's loop: Gauss-Seidel), a stop one sweep late, the lab's fixed count of
-sweeps, a stop on the change between sweeps, on a quarter of the residual, on
-its mean or on its first channel alone (:mod:`.mistakes` reproduces each). A
+residual is small (:func:`jacobi_sweep`; an RGB ``g``'s channels are swept
+together, and its residual is the largest over every channel). Failures draw
+the difference (a wrong sweep: both loops' stops on Jacobi's residual, and
+the difference, :mod:`.sweep_picture`) and recognise the sign flipped, x and
+y swapped, the sweep done in place (the lab's loop: Gauss-Seidel), a stop one
+sweep late, the lab's fixed count of sweeps, a stop on the change between
+sweeps, on a quarter of the residual, on its mean or on its first channel
+alone, each channel stopped on its own, and the count returned before ``g``
+(:mod:`.mistakes` reproduces each). A
 function that writes into its inputs (``g = background[...]; g -= foreground``
 changes the background) fails, however right its values. A pass shows the
 student's ``g`` beside the expected one.
@@ -26,13 +30,21 @@ from typing import Any
 import numpy as np
 
 from course import poisson
+from course.check.answers import show_value
 from course.check.base import CheckResult, close, hint, run_cases
 from course.check.exercises import exercise
 from course.check.hints import Hints
 from course.check.pictures import image_picture, side_by_side
 from course.i18n import N_, _
 from course.lessons.graded_cases import drawn_in_order
-from course.lessons.l08_poisson.mistakes import boundary_mistakes, jacobi_until, sweep_mistakes
+from course.lessons.l08_poisson.mistakes import (
+    boundary_mistakes,
+    count_of,
+    jacobi_until,
+    same_sweeps,
+    sweep_mistakes,
+)
+from course.lessons.l08_poisson.sweep_picture import sweep_picture
 from course.poisson import solvers as poisson_solvers
 
 __all__ = ["hint", "jacobi_sweep", "poisson_boundary"]
@@ -240,21 +252,18 @@ def _drawn_sweep_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
         lambda: [exactly_at_tolerance()],
         lambda: [{"g": faint_red(), "tolerance": 1e-4}],
     ]
-    return drawn_in_order(_sweep_cases(), families, jacobi_until, _same_sweeps, sweep_mistakes())
+    return drawn_in_order(_sweep_cases(), families, jacobi_until, same_sweeps, sweep_mistakes())
 
 
-def _same_sweeps(expected: Any, given: Any) -> bool:
+def _what(value: Any) -> str:
+    """One thing a student returned, in a few words: an array by its shape."""
     try:
-        g, sweeps = given
+        shape = np.shape(value)
     except (TypeError, ValueError):
-        return False
-    want_g, want_sweeps = expected
-    g = np.asarray(g, dtype=float)
-    return (
-        int(sweeps) == want_sweeps
-        and g.shape == want_g.shape
-        and bool(np.allclose(g, want_g, atol=1e-12, rtol=0.0))
-    )
+        return type(value).__name__
+    if shape:
+        return _("an array of shape {shape}").format(shape=shape)
+    return show_value(value)
 
 
 def _sweep_difference(expected: Any, given: Any) -> str:
@@ -264,13 +273,23 @@ def _sweep_difference(expected: Any, given: Any) -> str:
         g = np.asarray(g, dtype=float)
     except (TypeError, ValueError):
         return _("return two things: the array g and the number of sweeps")
-    parts = [
-        _("sweeps: expected {expected}, given {given}").format(expected=want_sweeps, given=sweeps)
-    ]
+    count = count_of(sweeps)
+    if count is None:
+        if g.ndim == 0 and np.ndim(sweeps) > 0:
+            return _("you returned the number of sweeps first: return g, sweeps")
+        return _("the second thing returned must be the number of sweeps, a whole number")
     if g.shape == want_g.shape and np.allclose(g, want_g, atol=1e-12, rtol=0.0):
         return _(
             "g is right; only the number of sweeps differs (expected {expected}, given {given})"
-        ).format(expected=want_sweeps, given=sweeps)
+        ).format(expected=want_sweeps, given=count)
+    if count == want_sweeps:
+        parts = [_("the number of sweeps is right ({count}); g is not").format(count=count)]
+    else:
+        parts = [
+            _("sweeps: expected {expected}, given {given}").format(
+                expected=want_sweeps, given=count
+            )
+        ]
     if g.shape != want_g.shape:
         parts.append(
             _("g: expected shape {expected}, given {given}").format(
@@ -279,39 +298,40 @@ def _sweep_difference(expected: Any, given: Any) -> str:
         )
     else:
         worst = np.unravel_index(np.abs(g - want_g).argmax(), g.shape)
-        parts.append(
+        place = (
             _(
                 "largest difference in g at [row, column] {where}: expected {expected}, "
                 "given {given}"
-            ).format(
-                where=list(map(int, worst[:2])),
+            )
+            if g.ndim == 2
+            else _(
+                "largest difference in g at [row, column, channel] {where}: expected "
+                "{expected}, given {given}"
+            )
+        )
+        parts.append(
+            place.format(
+                where=list(map(int, worst)),
                 expected=f"{want_g[worst]:.6g}",
                 given=f"{g[worst]:.6g}",
             )
         )
-    return "; ".join(parts)
-
-
-def _sweep_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:
-    try:
-        g = np.asarray(given[0], dtype=float)
-    except (TypeError, ValueError, IndexError):
-        return None
-    return image_picture(
-        (expected[0] + 1) / 2, (g + 1) / 2, title=_("g after the sweeps, shown as (g + 1) / 2")
-    )
+    return _("; ").join(parts)
 
 
 def _show_sweeps(answer: Any) -> str:
     try:
         g, sweeps = answer
-        return _("g of shape {shape} after {sweeps} sweeps").format(
-            shape=np.shape(g), sweeps=sweeps
-        )
     except (TypeError, ValueError):
         return _("{kind} (expected a pair: g and the number of sweeps)").format(
             kind=type(answer).__name__
         )
+    count = count_of(sweeps)
+    if count is None:
+        return _("({first}, {second}): expected g, then the number of sweeps").format(
+            first=_what(g), second=_what(sweeps)
+        )
+    return _("g of shape {shape} after {sweeps} sweeps").format(shape=np.shape(g), sweeps=count)
 
 
 SWEEP_HINTS = Hints(
@@ -321,8 +341,9 @@ SWEEP_HINTS = Hints(
     ),
     more=N_(
         "before each sweep, the residual max |up + down + left + right - 4 g| over the "
-        "inside is compared with the tolerance; a sweep computes every new inside value "
-        "from the previous array only, and the ring never changes. Work on a copy of g."
+        "inside and every channel is compared with the tolerance; a sweep computes every new "
+        "inside value, all channels together, from the previous array only, and the ring "
+        "never changes. Work on a copy of g."
     ),
     recipe=N_(
         "g = np.array(g, dtype=float); for sweeps in itertools.count(): n = the sum of "
@@ -343,10 +364,11 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
 
     The outer ring of ``g`` (gray ``(H, W)`` or RGB ``(H, W, 3)``) is fixed;
     each sweep replaces every inside pixel by the mean of its four
-    neighbours in the previous array. Before each sweep, the residual
-    ``max |g_up + g_down + g_left + g_right - 4 g|`` over the inside is
-    compared with ``tolerance``: below it, stop and return the array and the
-    number of sweeps done. The input is not changed.
+    neighbours in the previous array, every channel at once. Before each
+    sweep, the residual ``max |g_up + g_down + g_left + g_right - 4 g|`` over
+    the inside and every channel is compared with ``tolerance``: below it,
+    stop and return the array and the number of sweeps done. The input is
+    not changed.
 
     Examples
     --------
@@ -359,10 +381,10 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
         student,
         _sweep_cases(),
         jacobi_until,
-        _same_sweeps,
+        same_sweeps,
         mistakes=sweep_mistakes(),
         difference=_sweep_difference,
-        picture=_sweep_picture,
+        picture=sweep_picture,
         show=_show_sweeps,
         pass_picture=lambda results: side_by_side(
             _shown(results[1][1][0]), _shown(results[1][2][0]), (_("expected g"), _("your g"))

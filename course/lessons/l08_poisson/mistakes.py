@@ -5,9 +5,11 @@ sign flipped, the background alone, x and y swapped. :func:`sweep_mistakes` are 
 wrong loops :func:`.check.jacobi_sweep` names: the sweep done in place (the lab's loop:
 Gauss-Seidel), the lab's fixed count of sweeps, a stop one sweep late, a stop on the
 change between sweeps, on the residual's mean, at a residual equal to the tolerance, on
-a quarter of the residual or on its first channel alone. Beside them,
-:func:`jacobi_until`, the sweep checker's own answer, which the "one sweep late" mistake
-runs a sweep longer. Both lists are built in the current language, at each check.
+a quarter of the residual or on its first channel alone, each channel of an RGB ``g``
+swept until its own residual is small, and the pair returned as ``(sweeps, g)``. Beside
+them, :func:`jacobi_until`, the sweep checker's own answer, which the "one sweep late"
+mistake runs a sweep longer, and :func:`same_sweeps`, its comparison. Both lists are
+built in the current language, at each check.
 
 Only the checkers call these, with their own cases and the student's answer as
 :mod:`.check` has read it, so this module checks none (``UNCHECKED = True``; the fuzz
@@ -16,6 +18,7 @@ test skips it).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -33,10 +36,18 @@ __all__ = [
     "BOUNDARY_MISTAKES",
     "SWEEP_MISTAKES",
     "boundary_mistakes",
+    "count_first",
+    "count_of",
+    "each_channel_alone",
     "first_channel",
     "fixed_count",
+    "g_residual",
     "gauss_seidel_until",
+    "jacobi_residuals",
     "jacobi_until",
+    "same_count_first",
+    "same_each_channel",
+    "same_sweeps",
     "swapped_offset",
     "sweep_mistakes",
     "until_change",
@@ -86,14 +97,19 @@ def boundary_mistakes() -> tuple[Mistake, ...]:
 BOUNDARY_MISTAKES = boundary_mistakes()
 
 
+def _inside(image: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``image`` as channel planes, its inside as the region, and no source: g's problem."""
+    planes = planes_of(image)
+    region = np.zeros(planes.shape[1:], dtype=bool)
+    region[1:-1, 1:-1] = True
+    return planes, region, np.zeros_like(planes)
+
+
 def jacobi_until(g: Any, tolerance: float, late: int = 0) -> tuple[np.ndarray, int]:
     """Jacobi sweeps on ``g``'s inside until the residual is below ``tolerance``, then
     ``late`` more (a loop that tests after it sweeps)."""
     image = np.asarray(g, dtype=float)
-    planes = planes_of(image)
-    region = np.zeros(planes.shape[1:], dtype=bool)
-    region[1:-1, 1:-1] = True
-    source = np.zeros_like(planes)
+    planes, region, source = _inside(image)
     count, u = 0, planes
     sweeps = jacobi_sweeps(planes, region, source)
     while residual(u, region, source) >= tolerance:
@@ -101,6 +117,92 @@ def jacobi_until(g: Any, tolerance: float, late: int = 0) -> tuple[np.ndarray, i
     for _late in range(late):
         u, count = next(sweeps), count + 1
     return image_of(u, image), count
+
+
+def jacobi_residuals(g: Any, sweeps: int) -> np.ndarray:
+    """The residual of ``g`` (the largest over the inside and every channel) before the first
+    sweep and after each of ``sweeps`` Jacobi sweeps: ``sweeps + 1`` values."""
+    planes, region, source = _inside(np.asarray(g, dtype=float))
+    iterates = jacobi_sweeps(planes, region, source)
+    after = (residual(next(iterates), region, source) for _sweep in range(sweeps))
+    return np.array([residual(planes, region, source), *after])
+
+
+def g_residual(g: Any) -> float:
+    """The residual of ``g`` itself: the largest |up + down + left + right - 4 g| inside."""
+    planes, region, source = _inside(np.asarray(g, dtype=float))
+    return residual(planes, region, source)
+
+
+def count_of(sweeps: Any) -> int | None:
+    """A returned count as an int, or None when it is not one whole number."""
+    try:
+        count = float(sweeps) if np.ndim(sweeps) == 0 else math.nan
+    except (TypeError, ValueError, OverflowError):
+        return None
+    return int(count) if math.isfinite(count) and count == int(count) else None
+
+
+def same_sweeps(expected: Any, given: Any) -> bool:
+    """Whether ``given`` is the pair ``expected`` is: g to 1e-12, and the same count."""
+    try:
+        g, sweeps = given
+    except (TypeError, ValueError):
+        return False
+    want_g, want_sweeps = expected
+    g = np.asarray(g, dtype=float)
+    return (
+        count_of(sweeps) == want_sweeps
+        and g.shape == want_g.shape
+        and bool(np.allclose(g, want_g, atol=1e-12, rtol=0.0))
+    )
+
+
+class _ChannelByChannel(tuple):
+    """``(g, sweeps)`` of a loop that sweeps each channel apart; ``counts``: each channel's."""
+
+    counts: tuple[int, ...]
+
+
+def each_channel_alone(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
+    """Each channel of an RGB ``g`` swept on its own until its own residual is below
+    ``tolerance``: the largest of the channels' counts is the count returned."""
+    image = np.asarray(g, dtype=float)
+    if image.ndim != 3:
+        return jacobi_until(image, tolerance)
+    swept = [jacobi_until(image[..., channel], tolerance) for channel in range(image.shape[2])]
+    counts = tuple(count for _plane, count in swept)
+    answer = _ChannelByChannel((np.stack([plane for plane, _count in swept], axis=-1), max(counts)))
+    answer.counts = counts
+    return answer
+
+
+def same_each_channel(theirs: Any, given: Any) -> bool:
+    """``given`` is :func:`each_channel_alone`'s g, with the largest of its channels' counts,
+    their sum or the last channel's (when the channels' counts differ)."""
+    counts = getattr(theirs, "counts", (theirs[1],))
+    allowed = {max(counts)} | ({sum(counts), counts[-1]} if len(set(counts)) > 1 else set())
+    try:
+        g, sweeps = given
+    except (TypeError, ValueError):
+        return False
+    count = count_of(sweeps)
+    return count in allowed and same_sweeps((theirs[0], count), (g, count))
+
+
+def count_first(g: Any, tolerance: float) -> tuple[int, np.ndarray]:
+    """The right sweeps, returned in the wrong order: ``(sweeps, g)``."""
+    swept, sweeps = jacobi_until(g, tolerance)
+    return sweeps, swept
+
+
+def same_count_first(theirs: Any, given: Any) -> bool:
+    """``given`` is ``(sweeps, g)`` as :func:`count_first` returns it."""
+    try:
+        sweeps, g = given
+    except (TypeError, ValueError):
+        return False
+    return same_sweeps((theirs[1], theirs[0]), (g, sweeps))
 
 
 def gauss_seidel_until(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
@@ -244,6 +346,27 @@ def sweep_mistakes() -> tuple[Mistake, ...]:
                 "inside and all three channels."
             ),
             lambda g, tolerance: until_residual_measure(g, tolerance, first_channel),
+        ),
+        Mistake(
+            _("each channel stopped on its own"),
+            _(
+                "you swept each channel until its own residual was below the tolerance, so a "
+                "channel that settles early stops while the others go on. The exercise sweeps "
+                "the three channels together, all of them at each sweep, and stops when the "
+                "largest residual over every pixel and every channel is below the tolerance: "
+                "the sweep of the whole (H, W, 3) array at once does it."
+            ),
+            each_channel_alone,
+            matches=same_each_channel,
+        ),
+        Mistake(
+            _("the number of sweeps first"),
+            _(
+                "you returned (sweeps, g): the exercise returns the array first, then the "
+                "number of sweeps, as return g, sweeps."
+            ),
+            count_first,
+            matches=same_count_first,
         ),
     )
 

@@ -16,7 +16,6 @@ import argparse
 import csv
 import importlib
 import io
-import json
 import os
 import sqlite3
 import sys
@@ -29,7 +28,7 @@ from pathlib import Path
 from typing import Any
 from unittest import mock
 
-from course.classroom.folders import check_output_folder
+from course.classroom.folders import check_output_folder, read_json_file
 from course.i18n import DEFAULT_LANGUAGE, LANGUAGES, N_, _, current_language, message_language
 
 # The command-line helpers (add_mistakes_command, run) are for cli.py only.
@@ -123,8 +122,8 @@ def checker_mistakes(checker: str) -> list[str]:
 
 def _read_json(path: Path) -> Any:
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
+        return read_json_file(path)
+    except (OSError, ValueError):  # a pipe, not UTF-8, not JSON, nested too deep
         return None  # an unreadable notebook is one whose tests did not run
 
 

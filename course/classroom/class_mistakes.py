@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Any
 from unittest import mock
 
-from course.classroom.folders import check_output_folder, read_json_file
+from course.classroom.folders import check_output_folder, read_json_file, require_inside
 from course.i18n import DEFAULT_LANGUAGE, LANGUAGES, N_, _, current_language, message_language
 
 # The command-line helpers (add_mistakes_command, run) are for cli.py only.
@@ -427,6 +427,7 @@ def write_mistakes(outcomes: list[ExerciseOutcomes], out: str | os.PathLike[str]
     In the current language; a language other than English suffixes the names
     (``mistakes.zh-CN.csv``), so each language's files stay. The CSV has one row per
     exercise and outcome, UTF-8 with a byte-order mark (spreadsheets then read Chinese).
+    A file of those names that is a link leading outside ``out`` is refused.
     """
     mistakes_table(outcomes)  # checks the outcomes
     check_output_folder(out, force=True)
@@ -434,6 +435,7 @@ def write_mistakes(outcomes: list[ExerciseOutcomes], out: str | os.PathLike[str]
     language = current_language()
     stem = "mistakes" if language == DEFAULT_LANGUAGE else f"mistakes.{language}"
     font = _cjk_font() if language != DEFAULT_LANGUAGE else None
+    require_inside(folder, [folder / f"{stem}.csv", folder / f"{stem}.png"])
     try:
         folder.mkdir(parents=True, exist_ok=True)
         (folder / f"{stem}.csv").write_text(_csv_text(outcomes), encoding="utf-8-sig")

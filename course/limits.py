@@ -43,6 +43,7 @@ __all__ = [
     "MAX_STROKE_WIDTH",
     "MAX_SUPERSAMPLES",
     "MAX_TEXT_LENGTH",
+    "MAX_TYPED_TEXT",
     "MAX_ZOOM",
     "SMALLEST",
     "require_bounded_evaluation",
@@ -119,6 +120,10 @@ thresholds, far more levels than any image has)."""
 
 MAX_TEXT_LENGTH = 1000
 """Most characters of a line of text turned into curves."""
+
+MAX_TYPED_TEXT = 4000
+"""Most characters an app's text box reads (points, a kernel): a hundred points written with
+long decimals. Longer text is refused before it is parsed."""
 
 MAX_STROKED_TEXT = 160
 """Largest ``len(text) * size`` (characters times pixels to the em) of a line of text a

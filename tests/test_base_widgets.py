@@ -1,6 +1,7 @@
 """course.widgets.base: a control or a drag redraws the picture; the text repr is stable."""
 
 import base64
+import types
 
 import ipywidgets as widgets
 import numpy as np
@@ -337,6 +338,81 @@ def test_every_app_survives_malformed_pointer_messages_and_nan_sliders(name):
         app.controls[key].value = float("nan")
         assert app.value(key) == before
         assert app.status.value.startswith(f"Refused {key} = nan: expected a finite number")
+
+
+#: What a student typed into the apps' boxes (issue 34), and what the app must answer: runs of
+#: 16,000 and 32,000 digits froze eight apps for 7 to 37 s, 1e10000000 froze the kernel app
+#: for 10 s, and Arabic-Indic and full-width digits were read as numbers.
+TYPED_POINTS = [
+    ("1" * 16_000, "expected at most 4000 characters; got 16000"),
+    ("1" * 32_000 + ", 1", "expected at most 4000 characters; got 32003"),
+    ("1" * 3999, "is not x, y"),
+    ("1e10000000, 5", "points must be finite numbers"),
+    ("١٢, ٣٤", "digits 0-9"),
+    ("１２, ３４", "digits 0-9"),
+]
+TYPED_KERNEL = [
+    ("1" * 16_000, "expected at most 4000 characters; got 16000"),
+    ("1 1 1; 1 1 1; 1 1 " + "1" * 3900 + "/", "decimal number like 2, -0.5 or 1/9; got '111"),
+    ("1e10000000 0 0; 0 1 0; 0 0 0", "every entry must lie within"),
+    ("١ ٢ ١; ٢ ٤ ٢; ١ ٢ ١", "decimal number like 2, -0.5 or 1/9; got '١'"),
+    ("１ ２ １; ２ ４ ２; １ ２ １", "decimal number like 2, -0.5 or 1/9; got '１'"),
+]
+
+
+@pytest.mark.parametrize("name", sorted(small_apps()))
+def test_every_apps_text_boxes_answer_the_issues_texts_with_a_reason(name):
+    app = small_apps()[name]()
+    app.refresh()
+    boxes = [key for key, control in app.controls.items() if isinstance(control, widgets.Text)]
+    boxes += [key for key, control in app.controls.items() if isinstance(control, widgets.Textarea)]
+    if not boxes:
+        pytest.skip("no text box")
+    for box in boxes:
+        before = app.view.pixels().copy()
+        typed = TYPED_KERNEL if box == "kernel" else TYPED_POINTS
+        for text, reason in typed:
+            app.controls[box].value = text
+            assert app.status.value.startswith("Kept the last"), (box, text[:20])
+            assert reason in app.status.value, (box, text[:20], app.status.value[:200])
+            np.testing.assert_array_equal(app.view.pixels(), before)
+
+
+def test_typed_text_beyond_the_limit_is_refused_before_it_is_parsed(monkeypatch):
+    """The parser's work is bounded: too long a text never reaches the patterns."""
+    from course import limits
+    from course.lessons.l07_filtering import apps as filtering
+
+    limit = limits.MAX_TYPED_TEXT
+    at_limit = "1, 2;" + " " * (limit - 5)
+    assert parse_points(at_limit).tolist() == [[1, 2]]
+    kernel_at_limit = "0 0 0; 0 1 0; 0 0 0" + " " * (limit - 19)
+    assert filtering.parse_kernel(kernel_at_limit).sum() == 1
+
+    def never(*args):
+        raise AssertionError("parsed")
+
+    monkeypatch.setattr("course.widgets.base._POINT", types.SimpleNamespace(fullmatch=never))
+    monkeypatch.setattr(filtering, "_kernel_row", never)
+    with pytest.raises(ValueError, match=f"points: expected at most {limit} characters"):
+        parse_points(at_limit + " ")
+    with pytest.raises(ValueError, match=f"kernel: expected at most {limit} characters"):
+        filtering.parse_kernel(kernel_at_limit + "\n")
+
+
+@pytest.mark.parametrize("digits", ["١٢", "۱۲", "１２", "𝟑𝟒"])  # float() reads them all
+def test_only_the_digits_0_to_9_are_numbers(digits):
+    from course.lessons.l07_filtering.apps import parse_kernel
+
+    with pytest.raises(ValueError, match=f"digits 0-9 and the ASCII comma.*got '{digits[0]}'"):
+        parse_points(f"3, {digits}")
+    with pytest.raises(ValueError, match=f"a decimal number like 2, -0.5 or 1/9; got '{digits}'"):
+        parse_kernel(f"1 1 1; 1 {digits} 1; 1 1 1")
+
+
+def test_a_full_width_comma_is_named_as_the_character_to_retype():
+    with pytest.raises(ValueError, match="got '，'"):
+        parse_points("10，10")
 
 
 tenths = st.integers(-99_999, 99_999).map(lambda n: n / 10)

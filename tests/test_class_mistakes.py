@@ -22,6 +22,7 @@ from mistakes import named_mistakes
 
 from course.classroom.class_mistakes import (
     ExerciseOutcomes,
+    Outcome,
     add_mistakes_command,
     checker_mistakes,
     class_mistakes,
@@ -335,3 +336,15 @@ def test_the_real_nbgrader_s_autograded_notebooks_are_counted(tmp_path, monkeypa
     }
     example = next(o.example for o in row.outcomes if o.name == "failed, not named")
     assert example.startswith("FAIL next_level: not written yet")
+
+
+def test_the_report_writes_nothing_through_a_link_that_leads_out(tmp_path):
+    rows = [ExerciseOutcomes(LESSON, "next_level", "next_level", (Outcome("passed", "", 3),))]
+    outside = tmp_path / "outside.csv"
+    outside.write_text("mine")
+    out = tmp_path / "report"
+    out.mkdir()
+    (out / "mistakes.csv").symlink_to(outside)
+    with pytest.raises(ValueError, match=r"mistakes\.csv leads outside .*report"):
+        write_mistakes(rows, out)
+    assert outside.read_text() == "mine" and [p.name for p in out.iterdir()] == ["mistakes.csv"]

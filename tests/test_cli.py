@@ -5,6 +5,7 @@ import json
 import os
 import re
 import select
+import shutil
 import signal
 import socket
 import subprocess
@@ -19,6 +20,7 @@ from conftest import write_notebook
 
 from course.classroom.cli import app_command, lab_command, main
 from course.classroom.folders import inside_folder
+from course.classroom.notebooks import NOTEBOOKS
 
 # Runs ``python -m course ARGS`` in a fresh interpreter, then reports which of the
 # heavy packages that run imported.
@@ -466,3 +468,101 @@ def test_ctrl_c_while_the_server_starts_ends_it_quietly_as_interrupted(tmp_path)
             server.wait()
     assert server.returncode == -signal.SIGINT, said
     assert "Traceback" not in said and "KeyboardInterrupt" not in said, said
+
+
+# --- what a student or a careless folder hands the commands (issue 34) ------------------------
+
+
+def deep_notebook(path: Path, depth: int) -> None:
+    """A notebook whose cell metadata nests ``depth`` lists deep."""
+    write_notebook(path, "# Deep")
+    notebook = json.loads(path.read_text())
+    text = json.dumps(notebook).replace('"metadata": {}', '"metadata": {"deep": []}', 1)
+    path.write_text(text.replace("[]", "[" * depth + "]" * depth, 1))
+
+
+@pytest.mark.parametrize("depth", [100_000, 700])  # json.loads gives up; what follows did
+@pytest.mark.parametrize("command", ["student", "map", "nbgrader"])
+def test_json_nested_deep_is_one_line_naming_the_file(tmp_path, capsys, command, depth):
+    lessons = tmp_path / "lessons"
+    lessons.mkdir()
+    write_notebook(lessons / "01_first.ipynb", "# First")
+    deep_notebook(lessons / "02_deep.ipynb", depth)
+    out = [] if command == "map" else ["--out", str(tmp_path / "out")]
+    assert main([command, "--notebooks", str(lessons), *out]) == 2
+    error = capsys.readouterr().err
+    assert len(error.strip().splitlines()) == 1
+    assert f"{lessons / '02_deep.ipynb'}: not a notebook file" in error
+    assert "nested deeper than 100 levels" in error
+
+
+def test_a_students_deep_notebook_in_the_edition_is_kept_as_their_work(tmp_path, capsys):
+    lessons = tmp_path / "lessons"
+    lessons.mkdir()
+    write_notebook(lessons / "01_first.ipynb", "# First")
+    out = tmp_path / "student"
+    assert main(["student", "--notebooks", str(lessons), "--out", str(out)]) == 0
+    deep_notebook(out / "01_first.ipynb", 100_000)
+    assert main(["student", "--notebooks", str(lessons), "--out", str(out)]) == 0
+    assert (out / "01_first.ipynb").read_text().startswith('{"cells"')  # untouched
+    assert "0 notebooks written, 0 unchanged, 1 with your edits kept" in capsys.readouterr().err
+
+
+def run_command(*args: str) -> subprocess.CompletedProcess:
+    """``python -m course ARGS`` in a fresh interpreter: a command that waits fails, not hangs."""
+    return subprocess.run(
+        [sys.executable, "-m", "course", *args], capture_output=True, text=True, timeout=300
+    )
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
+def test_a_pipe_named_as_a_lesson_is_one_line_naming_it_never_waited_on(tmp_path):
+    lessons = tmp_path / "lessons"
+    lessons.mkdir()
+    write_notebook(lessons / "01_first.ipynb", "# First")
+    os.mkfifo(lessons / "01_x.ipynb")
+    done = run_command("student", "--notebooks", str(lessons), "--out", str(tmp_path / "out"))
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1
+    assert f"{lessons / '01_x.ipynb'}: not a notebook file (not a regular file" in done.stderr
+    # In the edition's own folder: the name the edition needs is refused, nothing written.
+    (lessons / "01_x.ipynb").unlink()
+    out = tmp_path / "student"
+    out.mkdir()
+    os.mkfifo(out / "01_first.ipynb")
+    done = run_command("student", "--notebooks", str(lessons), "--out", str(out), "--force")
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1
+    assert f"out: {out / '01_first.ipynb'} is not a regular file" in done.stderr
+    assert [path.name for path in out.iterdir()] == ["01_first.ipynb"]
+
+
+def test_nbgrader_force_writes_nothing_through_a_source_link_that_leads_out(tmp_path, capsys):
+    lessons = tmp_path / "lessons"
+    lessons.mkdir()
+    shutil.copy(NOTEBOOKS / "01_de_casteljau.ipynb", lessons)
+    outside, out = tmp_path / "outside", tmp_path / "course"
+    outside.mkdir()
+    out.mkdir()
+    (out / "source").symlink_to(outside)
+    command = ["nbgrader", "--notebooks", str(lessons), "--out", str(out), "--force"]
+    assert main(command) == 2
+    error = capsys.readouterr().err
+    assert len(error.strip().splitlines()) == 1
+    assert f"{out / 'source' / '01_de_casteljau'}" in error and "leads outside" in error
+    assert list(outside.iterdir()) == [] and sorted(p.name for p in out.iterdir()) == ["source"]
+    # A link that stays inside the folder is followed.
+    (out / "source").unlink()
+    (out / "lessons").mkdir()
+    (out / "source").symlink_to("lessons")
+    assert main(command) == 0
+    assert (out / "lessons" / "01_de_casteljau" / "01_de_casteljau.ipynb").is_file()
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes are POSIX")
+def test_gallery_force_replaces_a_pipe_of_a_pictures_name_never_waits_on_it(tmp_path):
+    out = tmp_path / "gallery"
+    out.mkdir()
+    os.mkfifo(out / "02_pascal_triangle.png")
+    done = run_command("gallery", "--only", "02_pascal_triangle", "--out", str(out), "--force")
+    assert done.returncode == 0, done.stderr
+    assert (out / "02_pascal_triangle.png").read_bytes().startswith(b"\x89PNG")
+    assert [path.name for path in out.iterdir()] == ["02_pascal_triangle.png"]

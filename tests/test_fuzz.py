@@ -332,6 +332,7 @@ VALID: dict[str, Any] = {
     "course.poisson.problem.PoissonProblem:corner": lambda: _problem().corner,
     "course.classroom.folders.inside_folder:name": lambda: "picture",
     "course.classroom.folders.inside_folder:suffix": lambda: ".png",
+    "course.classroom.folders.loads_json:text": lambda: '{"cells": [], "nbformat": 4}',
     "course.lessons.l01_de_casteljau.check.as_point:value": lambda: (1.0, 2.0),
     "course.check.pictures.figure_png:figure": lambda: _figure(),
     "course.lessons.l03_lines_and_triangles.grid.pixel_grid:axes": lambda: _figure().add_subplot(),
@@ -514,6 +515,14 @@ RAISES: dict[str, tuple[tuple[type[BaseException], ...], str]] = {
         "the handouts' recursion: it raises RecursionError up front, naming the degree and "
         "the limit, and lesson 01 shows that error",
     ),
+    **{
+        f"course.classroom.folders.{name}": (
+            (OSError,),
+            "reads a file: OSError as the system raises it (a missing file, a folder); its "
+            "callers, the commands, say it in one line naming the file",
+        )
+        for name in ("read_json_file", "read_text_file")
+    },
 }
 
 # Inputs a callable modifies by design, as its name and docstring say.
@@ -573,7 +582,11 @@ def valid_arguments(qualified: str, function: Any, tmp: Path) -> dict[str, Any] 
             elif name == "folder":
                 arguments[name].mkdir()
             continue
-        if qualified == "course.classroom.edition.read_notebook" and name == "path":
+        if name == "path" and qualified in (
+            "course.classroom.edition.read_notebook",
+            "course.classroom.folders.read_json_file",
+            "course.classroom.folders.read_text_file",
+        ):
             arguments[name] = tmp / f"lesson-{next(_PATH_NUMBERS)}.ipynb"
             arguments[name].write_text('{"cells": [], "metadata": {}, "nbformat": 4}')
             continue

@@ -135,3 +135,35 @@ def test_only_renders_the_named_pictures_and_names_an_unknown_one(tmp_path, caps
     assert main(["gallery", "--out", str(tmp_path / "x"), "--only", "c"]) == 2
     assert "no picture named 'c'; the pictures are: a, b" in capsys.readouterr().err
     assert not (tmp_path / "x").exists()
+
+
+def test_force_writes_nothing_through_a_picture_named_link_that_leads_out(tmp_path, capsys):
+    outside = tmp_path / "outside.png"
+    outside.write_bytes(b"mine")
+    out = tmp_path / "gallery"
+    out.mkdir()
+    (out / "b.png").symlink_to(outside)
+    with pytest.raises(ValueError, match=r"b\.png leads outside .*gallery, to .*outside\.png"):
+        write_gallery(out, force=True, pictures=TINY, stream=io.StringIO())
+    assert outside.read_bytes() == b"mine" and [p.name for p in out.iterdir()] == ["b.png"]
+    # Inside the folder, a link of a picture's name is replaced by the picture, not written
+    # through: the file it led to is left as it was.
+    (out / "b.png").unlink()
+    (out / "mine.png").write_bytes(b"mine too")
+    (out / "b.png").symlink_to("mine.png")
+    write_gallery(out, force=True, pictures=TINY, stream=io.StringIO())
+    assert not (out / "b.png").is_symlink() and (out / "mine.png").read_bytes() == b"mine too"
+    assert np.asarray(Image.open(out / "b.png")).min() == 255
+    assert sorted(p.name for p in out.iterdir()) == ["a.png", "b.png", "mine.png"]
+
+
+def test_the_command_line_names_the_link_in_one_line(tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr("course.classroom.gallery.gallery_pictures", lambda folder: TINY)
+    (tmp_path / "outside").mkdir()
+    out = tmp_path / "gallery"
+    out.mkdir()
+    (out / "a.png").symlink_to(tmp_path / "outside" / "a.png")  # a link to nothing yet
+    assert main(["gallery", "--out", str(out), "--force"]) == 2
+    error = capsys.readouterr().err
+    assert len(error.strip().splitlines()) == 1 and "a.png leads outside" in error
+    assert list((tmp_path / "outside").iterdir()) == []

@@ -541,6 +541,24 @@ def test_window_at_with_a_negative_corner_keeps_the_part_on_the_image():
     assert window_at(np.ones((8, 8)), (-2, 1), (3, 4)).shape == (3, 2)
 
 
+@pytest.mark.parametrize(
+    ("shape", "said"),
+    [
+        ((0, 0), "non-empty"),
+        ((0, 5), "non-empty"),
+        ((8, 8, 0), "non-empty"),
+        ((1, 8, 8), r"at most 4 channels \(its last axis\); got shape \(1, 8, 8\): an extra axis"),
+        ((1, 8, 8, 3), "non-empty"),
+    ],
+)
+def test_window_at_refuses_an_empty_image_or_an_extra_axis_by_name(shape, said):
+    from course.poisson.windows import window_at
+
+    with pytest.raises(ValueError, match=f"^image must .*{said}"):
+        window_at(np.zeros(shape), (1, 1), (3, 3))
+    assert window_at(np.zeros((8, 8, 4)), (1, 1), (3, 3)).shape == (3, 3, 4)  # RGBA
+
+
 @pytest.mark.parametrize("bad", [np.nan, np.inf])
 def test_the_window_helpers_reject_non_finite_pixels(bad):
     from course.poisson.problem import clone_problem, paste_window

@@ -1,7 +1,10 @@
 """Lesson 08's figures: the stored record of the lab's sweeps is what the solvers compute."""
 
 import itertools
+import json
+import os
 from functools import partial
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -78,6 +81,57 @@ def test_write_lab_sweeps_checks_its_path_before_solving(path):
 def test_write_lab_sweeps_refuses_a_folder(tmp_path):
     with pytest.raises(ValueError, match="is a folder"):
         convergence.write_lab_sweeps(str(tmp_path))
+
+
+@pytest.fixture
+def solves(monkeypatch):
+    """The record's seconds of solving, replaced by a count of the calls that got that far."""
+    calls = []
+    monkeypatch.setattr(convergence, "compute_lab_sweeps", lambda: calls.append(1) or {"a": 1})
+    return calls
+
+
+@pytest.mark.parametrize("kind", [str, Path])
+def test_write_lab_sweeps_refuses_every_bad_path_before_solving(tmp_path, solves, kind):
+    (tmp_path / "notes.txt").write_text("mine")
+    for path, said in [
+        (tmp_path / "notes.txt" / "sweeps.json", r"notes\.txt, a parent of .*, is a file"),
+        (tmp_path / "notes.txt" / "deeper" / "sweeps.json", "is a file, not a folder"),
+        (tmp_path, "is a folder"),
+        (f"{tmp_path}/sweeps\0.json", "without NUL"),
+        (tmp_path / ("s" * 300 + ".json"), "of at most 255 bytes"),
+        (f"{tmp_path}/new/..", "not '..'"),
+    ]:
+        with pytest.raises(ValueError, match=f"^path.*{said}"):
+            convergence.write_lab_sweeps(kind(path))
+    assert solves == [] and (tmp_path / "notes.txt").read_text() == "mine"
+    assert [p.name for p in tmp_path.iterdir()] == ["notes.txt"]
+
+
+def test_write_lab_sweeps_says_a_folder_it_cannot_write_before_solving(
+    tmp_path, solves, monkeypatch
+):
+    """As root every folder can be written: the refusal the file system gives is simulated."""
+    real_open = os.open
+
+    def refusing_open(path, *args, **kwargs):
+        if str(path).endswith(".writing"):
+            raise PermissionError(13, "Permission denied", str(path))
+        return real_open(path, *args, **kwargs)
+
+    monkeypatch.setattr(os, "open", refusing_open)
+    with pytest.raises(ValueError, match=r"path: cannot write into .* \(Permission denied\)"):
+        convergence.write_lab_sweeps(str(tmp_path / "sweeps.json"))
+    assert solves == []
+
+
+@pytest.mark.parametrize("kind", [str, Path])
+def test_write_lab_sweeps_takes_a_str_as_a_path_and_replaces_the_file_whole(tmp_path, solves, kind):
+    path = tmp_path / "new" / "sweeps.json"
+    convergence.write_lab_sweeps(kind(path))
+    convergence.write_lab_sweeps(kind(path))  # again: replaced
+    assert json.loads(path.read_text()) == {"a": 1} and solves == [1, 1]
+    assert [p.name for p in path.parent.iterdir()] == ["sweeps.json"]  # no temporary left
 
 
 def test_the_tiny_clone_in_chinese_has_chinese_words_and_every_glyph(monkeypatch, caplog):

@@ -16,7 +16,6 @@ import argparse
 import csv
 import importlib
 import io
-import json
 import os
 import sqlite3
 import sys
@@ -29,7 +28,7 @@ from pathlib import Path
 from typing import Any
 from unittest import mock
 
-from course.classroom.folders import check_output_folder
+from course.classroom.folders import check_output_folder, read_json_file, require_inside
 from course.i18n import DEFAULT_LANGUAGE, LANGUAGES, N_, _, current_language, message_language
 
 # The command-line helpers (add_mistakes_command, run) are for cli.py only.
@@ -123,8 +122,8 @@ def checker_mistakes(checker: str) -> list[str]:
 
 def _read_json(path: Path) -> Any:
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
+        return read_json_file(path)
+    except (OSError, ValueError):  # a pipe, not UTF-8, not JSON, nested too deep
         return None  # an unreadable notebook is one whose tests did not run
 
 
@@ -428,6 +427,7 @@ def write_mistakes(outcomes: list[ExerciseOutcomes], out: str | os.PathLike[str]
     In the current language; a language other than English suffixes the names
     (``mistakes.zh-CN.csv``), so each language's files stay. The CSV has one row per
     exercise and outcome, UTF-8 with a byte-order mark (spreadsheets then read Chinese).
+    A file of those names that is a link leading outside ``out`` is refused.
     """
     mistakes_table(outcomes)  # checks the outcomes
     check_output_folder(out, force=True)
@@ -435,6 +435,7 @@ def write_mistakes(outcomes: list[ExerciseOutcomes], out: str | os.PathLike[str]
     language = current_language()
     stem = "mistakes" if language == DEFAULT_LANGUAGE else f"mistakes.{language}"
     font = _cjk_font() if language != DEFAULT_LANGUAGE else None
+    require_inside(folder, [folder / f"{stem}.csv", folder / f"{stem}.png"])
     try:
         folder.mkdir(parents=True, exist_ok=True)
         (folder / f"{stem}.csv").write_text(_csv_text(outcomes), encoding="utf-8-sig")

@@ -49,6 +49,7 @@ import re
 from pathlib import Path
 from typing import Any
 
+from course.classroom.folders import read_json_file
 from course.classroom.notebooks import DEFAULT_LANGUAGE, LANGUAGES
 from course.i18n import LANGUAGES as LOCALES
 from course.i18n import N_, _, gettext_catalog
@@ -269,8 +270,8 @@ def read_notebook(path: str | Path) -> dict[str, Any]:
         )
     path = Path(path)
     try:
-        notebook = json.loads(path.read_text(encoding="utf-8"))
-    except (json.JSONDecodeError, UnicodeDecodeError) as error:
+        notebook = read_json_file(path)
+    except ValueError as error:  # a pipe, not UTF-8, not JSON, nested too deep
         raise ValueError(
             _("{path}: not a notebook file ({error})").format(path=path, error=error)
         ) from None

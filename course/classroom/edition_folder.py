@@ -28,7 +28,12 @@ from course.classroom.edition import (
     notebook_text,
     read_notebook,
 )
-from course.classroom.folders import check_output_folder
+from course.classroom.folders import (
+    check_output_folder,
+    loads_json,
+    read_json_file,
+    read_text_file,
+)
 from course.classroom.notebooks import LANGUAGES, NOTEBOOKS, notebooks
 from course.classroom.release import student_notebook
 from course.i18n import _
@@ -78,10 +83,10 @@ def _work(text: str) -> str:
     is replaced by a new edition; one whose sources differ is the student's.
     """
     try:
-        notebook = json.loads(text)
+        notebook = loads_json(text)
         check_notebook(notebook)
         cells = [[cell["cell_type"], cell_source(cell)] for cell in notebook["cells"]]
-    except (json.JSONDecodeError, ValueError):
+    except ValueError:  # not JSON, nested too deep, not a notebook
         cells = ["unreadable", text]
     return hashlib.sha256(json.dumps(cells).encode("utf-8")).hexdigest()
 
@@ -91,7 +96,7 @@ def _read_manifest(out: Path) -> dict[str, str]:
     if not path.is_file():
         return {}
     try:
-        manifest = json.loads(path.read_text(encoding="utf-8"))
+        manifest = read_json_file(path)
     except (OSError, ValueError):
         return {}
     if not isinstance(manifest, dict):
@@ -136,8 +141,8 @@ def _is_edition(out: Any) -> bool:
 
 def _read_text(path: Path) -> str:
     try:
-        return path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError):
+        return read_text_file(path)
+    except (OSError, ValueError):  # ValueError: not UTF-8, or replaced by a pipe since checked
         return ""
 
 
@@ -184,6 +189,13 @@ def write_student_edition(
                 _("out: {path} is a folder; the edition needs that name for a notebook").format(
                     path=path
                 )
+            )
+        if path.exists() and not path.is_file():
+            raise ValueError(
+                _(
+                    "out: {path} is not a regular file but a pipe, a device or a socket; the "
+                    "edition needs that name for a notebook"
+                ).format(path=path)
             )
         if not path.exists():
             plan.append((name, text))

@@ -9,11 +9,13 @@ own files, replacing only files of the same names.
 
 from __future__ import annotations
 
+import os
+import secrets
 import sys
 from pathlib import Path
 from typing import TextIO
 
-from course.classroom.folders import check_output_folder, inside_folder
+from course.classroom.folders import check_output_folder, inside_folder, require_inside
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 from course.classroom.registry import Picture, lessons
 from course.i18n import _
@@ -141,6 +143,9 @@ def write_gallery(
         If ``out`` holds anything and ``force`` is false, before anything is written.
     NotADirectoryError
         If ``out`` exists and is not a folder.
+    ValueError
+        If a symbolic link under ``out`` (a PNG of a picture's name) leads outside it,
+        before anything is written.
     """
     check_output_folder(out, force)
     out = Path(out)
@@ -149,15 +154,35 @@ def write_gallery(
     if len(set(names)) != len(names):
         raise ValueError(_("pictures: expected distinct names; got {names}").format(names=names))
     paths = [inside_folder(out, name, ".png") for name in names]  # all, before writing any
+    require_inside(out, paths)  # a PNG of that name may be a link that leads out
     out.mkdir(parents=True, exist_ok=True)
     bar = ProgressBar(len(pictures), stream)
     written = []
     for picture, path in zip(pictures, paths, strict=True):
-        path.write_bytes(picture.render())
+        _write_whole(path, picture.render())
         written.append(path)
         bar.advance(path.name)
     bar.close()
     return written
+
+
+def _write_whole(path: Path, data: bytes) -> None:
+    """Write ``data`` to a temporary file beside ``path``, then move it into place.
+
+    A file of that name is replaced whole, never written through: not a pipe (whose
+    opening would wait for a reader), nor a symbolic link.
+    """
+    temporary = path.with_name(f".{path.name}.{secrets.token_hex(4)}.writing")
+    # A new file (O_EXCL: not a link nor a pipe planted there), with the umask's permissions.
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
+    descriptor = os.open(temporary, flags, 0o666)
+    try:
+        with open(descriptor, "wb") as file:
+            file.write(data)
+        os.replace(temporary, path)
+    except BaseException:
+        temporary.unlink(missing_ok=True)
+        raise
 
 
 def _as_pictures(pictures: object) -> list[Picture]:

@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from course.classroom.edition import notebook_text, read_notebook
-from course.classroom.folders import check_output_folder
+from course.classroom.folders import check_output_folder, require_inside
 from course.classroom.notebooks import NOTEBOOKS, notebooks
 from course.classroom.release import (
     EXERCISE_POINTS,
@@ -90,7 +90,8 @@ def write_nbgrader_course(
     (then the lessons' sources are replaced, a teacher's
     ``nbgrader_config.py`` is kept, nothing is deleted). Every
     lesson is converted before anything is written, and the files are
-    written to a temporary folder first, then moved into place.
+    written to a temporary folder first, then moved into place. A symbolic
+    link under ``out`` (``source/``, say) that leads outside it is refused.
     """
     check_output_folder(out, force)
     out = Path(out)
@@ -111,6 +112,7 @@ def write_nbgrader_course(
             raise ValueError(_("{path}: {error}").format(path=book.path, error=error)) from None
         lesson = book.path.stem
         files[f"source/{lesson}/{lesson}.ipynb"] = notebook_text(converted)
+    require_inside(out, [out / name for name in files])  # source/ may be a link
     out.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=".nbgrader-", dir=out))
     written = []

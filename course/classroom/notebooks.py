@@ -7,12 +7,12 @@ summary the paragraph after it. Standard library only (and :mod:`course.i18n`, w
 
 from __future__ import annotations
 
-import json
 import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from course.classroom.folders import read_json_file
 from course.i18n import DEFAULT_LANGUAGE, _
 from course.i18n import LANGUAGES as _LIBRARY_LANGUAGES
 
@@ -126,9 +126,9 @@ def notebooks(folder: str | Path = NOTEBOOKS, index: bool = False) -> list[Noteb
 def _title_and_summary(path: Path) -> tuple[str, str]:
     """The first markdown heading and the first paragraph after it."""
     try:
-        cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+        cells = read_json_file(path)["cells"]
         markdown = ["".join(cell["source"]) for cell in cells if cell["cell_type"] == "markdown"]
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
+    except (OSError, ValueError) as error:  # a pipe, not UTF-8, not JSON, nested too deep
         raise ValueError(
             _("{path}: not a notebook file ({error})").format(path=path, error=error)
         ) from None

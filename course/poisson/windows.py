@@ -26,7 +26,10 @@ from course.i18n import _
 from course.poisson._layout import channels_back, clipped_window
 from course.poisson.problem import PoissonProblem, as_problem
 
-__all__ = ["image_of", "planes_of", "window_at", "window_in"]
+__all__ = ["MAX_CHANNELS", "image_of", "planes_of", "window_at", "window_in"]
+
+#: The most channels an image's window has: gray, gray and alpha, RGB, RGBA.
+MAX_CHANNELS = 4
 
 
 def window_in(problem: PoissonProblem, image: Any, corner: Any) -> np.ndarray:
@@ -80,7 +83,9 @@ def window_at(image: Any, corner: Any, shape: Any) -> np.ndarray:
 
     The part of the window off the image is clipped, never wrapped around:
     the result is a copy of the pixels the window and the image share (empty
-    when they share none).
+    when they share none). ``image`` is a non-empty ``(H, W)`` or ``(H, W, C)`` array
+    of at most :data:`MAX_CHANNELS` channels: a ValueError names it otherwise (an
+    empty image, or an extra axis such as ``(1, H, W)``, would give an empty window).
 
     Examples
     --------
@@ -90,14 +95,21 @@ def window_at(image: Any, corner: Any, shape: Any) -> np.ndarray:
            [13., 14.]])
     >>> window_at(image, (-1, -1), (2, 3))   # one row and two columns on the image
     array([[0., 1.]])
+    >>> window_at(np.zeros((1, 6, 6)), (1, 2), (2, 2))
+    Traceback (most recent call last):
+    ...
+    ValueError: image must have at most 4 channels (its last axis); got shape (1, 6, 6): an \
+extra axis?
     """
 
     def the_window(array: np.ndarray) -> np.ndarray:
-        if array.ndim not in (2, 3):
+        _require_image_layout(array)
+        if array.ndim == 3 and array.shape[2] > MAX_CHANNELS:
             raise ValueError(
-                _("image must be (H, W) or (H, W, C); got shape {array_shape}").format(
-                    array_shape=array.shape
-                )
+                _(
+                    "image must have at most {most} channels (its last axis); got shape "
+                    "{array_shape}: an extra axis?"
+                ).format(most=MAX_CHANNELS, array_shape=array.shape)
             )
         return clipped_window(array, as_corner(corner, "corner"), as_shape(shape, "shape"))
 

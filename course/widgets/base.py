@@ -45,7 +45,10 @@ __all__ = [
     "parse_points",
 ]
 
-_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+# A decimal number in ASCII digits (``\\d`` would take Arabic-Indic and full-width ones too).
+# Each digit has one place in it, so a long run of digits that fails is given up in one pass:
+# the ambiguous ``\\d+\\.?\\d*`` tried every split of the run, and took seconds on 16,000.
+_NUMBER = r"[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?"
 # One point: two decimal numbers and a comma between them, in brackets if the student likes.
 _POINT = re.compile(
     rf"\s*(?:\(\s*({_NUMBER})\s*,\s*({_NUMBER})\s*\)"
@@ -79,9 +82,15 @@ def pad(text: str, width: int, align: str = "<") -> str:
 def _why_not_a_point(piece: str) -> str:
     """What keeps ``piece`` (one point's text) from reading as x, y, for the student to fix."""
     numbers = re.findall(_NUMBER, piece)
+    foreign = next((character for character in piece if not character.isascii()), None)
+    if foreign is not None:
+        return _(
+            "write the numbers with the digits 0-9 and the ASCII comma, point and minus; "
+            "got {character}"
+        ).format(character=repr(foreign))
     if re.search(r"\b0[xXbBoO]", piece):
         return _("numbers must be decimal (0x10 and 0b1 are not read)")
-    if re.search(r"\d,\d", piece) and len(numbers) > 2:
+    if re.search(r"[0-9],[0-9]", piece) and len(numbers) > 2:
         return _("a decimal comma is not read: write 90.5, not 90,5")
     if len(numbers) > 2:
         return _("a point is two numbers; got {count}").format(count=len(numbers))
@@ -97,7 +106,8 @@ def parse_points(text: str) -> np.ndarray:
     brackets; points are separated by ``;`` or new lines. Text that could be
     read more than one way is refused, never guessed at: decimal commas
     (``90,5``), hexadecimal or binary literals (``0x10``), a point without
-    its comma (``3 4``).
+    its comma (``3 4``), digits other than 0-9 (``١٢``, ``１２``). Text longer than
+    ``course.limits.MAX_TYPED_TEXT`` characters is refused before it is read.
 
     Examples
     --------
@@ -115,6 +125,12 @@ write 90.5, not 90,5 (write each point as x, y and separate points with ';' or a
         raise TypeError(
             _("text must be a string such as '10, 10; 690, 10'; got {text}").format(
                 text=describe(text)
+            )
+        )
+    if len(text) > limits.MAX_TYPED_TEXT:  # before any parsing: its work stays bounded
+        raise ValueError(
+            _("points: expected at most {most} characters; got {count}").format(
+                most=limits.MAX_TYPED_TEXT, count=len(text)
             )
         )
     pieces = [piece.strip() for piece in re.split(r"[;\n]", text)]

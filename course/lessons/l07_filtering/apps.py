@@ -50,9 +50,13 @@ KERNELS = {
 }
 
 
-# A kernel entry: a decimal number or a fraction of two whole numbers. Nothing Python
-# alone would read (0x10, 1_0, inf): the student sees the number the app uses.
-_KERNEL_ENTRY = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?\d+/[-+]?\d+")
+# A kernel entry: a decimal number or a fraction of two whole numbers, in the digits 0-9.
+# Nothing Python alone would read (0x10, 1_0, inf, Arabic-Indic or full-width digits): the
+# student sees the number the app uses. Each digit has one place in the pattern, so a long
+# run of digits that fails is given up in one pass (the ambiguous \\d+\\.?\\d* tried every
+# split of it: seconds on 16,000 digits).
+_DECIMAL = re.compile(r"[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+_FRACTION = re.compile(r"[-+]?[0-9]+/[-+]?[0-9]+")
 
 
 def _kernel_row(row: str) -> list[str]:
@@ -77,6 +81,9 @@ def _kernel_row(row: str) -> list[str]:
 def parse_kernel(text: str) -> np.ndarray:
     """Three rows of three numbers (fractions allowed), rows split by ``;`` or new lines.
 
+    Numbers are written in the digits 0-9; text longer than
+    ``course.limits.MAX_TYPED_TEXT`` characters is refused before it is read.
+
     Examples
     --------
     >>> parse_kernel("1/16 2/16 1/16; 2/16 4/16 2/16; 1/16 2/16 1/16").sum()
@@ -92,6 +99,12 @@ def parse_kernel(text: str) -> np.ndarray:
                 text=describe(text)
             )
         )
+    if len(text) > limits.MAX_TYPED_TEXT:  # before any parsing: its work stays bounded
+        raise ValueError(
+            _("kernel: expected at most {most} characters; got {count}").format(
+                most=limits.MAX_TYPED_TEXT, count=len(text)
+            )
+        )
     rows = [_kernel_row(row) for row in re.split(r"[;\n]+", text) if row.strip()]
     if len(rows) != 3 or any(len(row) != 3 for row in rows):
         lengths = ", ".join(str(len(row)) for row in rows) or "nothing"
@@ -99,14 +112,17 @@ def parse_kernel(text: str) -> np.ndarray:
             _("kernel: expected 3 rows of 3 numbers; got rows of {lengths}").format(lengths=lengths)
         )
     for token in (token for row in rows for token in row):
-        if not _KERNEL_ENTRY.fullmatch(token):
+        if not (_DECIMAL.fullmatch(token) or _FRACTION.fullmatch(token)):
             raise ValueError(
                 _(
                     "kernel: every entry must be a decimal number like 2, -0.5 or 1/9; got {token}"
-                ).format(token=repr(token))
+                ).format(token=repr(token if len(token) <= 40 else token[:37] + "..."))
             )
     try:
-        values = [[float(Fraction(token)) for token in row] for row in rows]
+        # A decimal is read as a float, which rounds 1e10000000 to inf at once; the exact
+        # Fraction would first build its ten million digits. A fraction's two whole numbers
+        # are exact, then rounded once.
+        values = [[_entry_value(token) for token in row] for row in rows]
     except (ValueError, ZeroDivisionError, OverflowError) as error:
         raise ValueError(
             _("kernel: every entry must be a number like 2, -0.5 or 1/9 ({error})").format(
@@ -119,6 +135,13 @@ def parse_kernel(text: str) -> np.ndarray:
             _("kernel: every entry must lie within +-{largest:g}").format(largest=limits.LARGEST)
         )
     return kernel
+
+
+def _entry_value(token: str) -> float:
+    """A checked kernel entry's value: ``float`` of a decimal, the exact quotient of a fraction."""
+    if "/" in token:
+        return float(Fraction(token))
+    return float(token)
 
 
 def format_kernel(kernel: np.ndarray) -> str:

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import json
 import os
+import secrets
 from pathlib import Path
 from typing import Any
 
@@ -80,8 +81,10 @@ def lab_sweeps() -> dict[str, Any]:
 def write_lab_sweeps(path: str | os.PathLike[str] = LAB_SWEEPS_FILE) -> None:
     """Compute the record again and store it (the maintainers' step; a test compares).
 
-    ``path`` is a file path, a ``str`` or a ``Path``; it is checked before the
-    minutes of solving.
+    ``path`` is a file path, a ``str`` or a ``Path``. Everything that could refuse it is
+    checked before the seconds of solving, by creating the temporary file it is written to:
+    a folder, a file where a folder should be, a name too long, a folder that cannot be
+    written. The record replaces ``path`` whole (the temporary file moved into place).
     """
     if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
         raise TypeError(
@@ -90,13 +93,46 @@ def write_lab_sweeps(path: str | os.PathLike[str] = LAB_SWEEPS_FILE) -> None:
             )
         )
     path = Path(path)
-    if path.is_dir():
+    if "\0" in str(path) or path.name == ".." or len(os.fsencode(path.name)) > _NAME_MAX:
         raise ValueError(
-            _("path must name a file; {path} is a folder").format(path=repr(str(path)))
+            _(
+                "path must name a file, not '..', without NUL, of at most {most} bytes; got {start}"
+            ).format(most=_NAME_MAX, start=repr(str(path)[:60]))
         )
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps(compute_lab_sweeps(), indent=1) + "\n")
+    try:
+        if path.is_dir():
+            raise ValueError(
+                _("path must name a file; {path} is a folder").format(path=repr(str(path)))
+            )
+        temporary = path.with_name(f".lab_sweeps-{secrets.token_hex(4)}.writing")
+        existing = path.parent
+        while not existing.exists() and existing != existing.parent:
+            existing = existing.parent
+        if not existing.is_dir():
+            raise ValueError(
+                _("path: {existing}, a parent of {path}, is a file, not a folder").format(
+                    existing=existing, path=path
+                )
+            )
+        path.parent.mkdir(parents=True, exist_ok=True)
+        flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
+        descriptor = os.open(temporary, flags, 0o666)
+    except OSError as error:
+        raise ValueError(
+            _("path: cannot write into {folder} ({reason})").format(
+                folder=path.parent, reason=error.strerror or error
+            )
+        ) from None
+    try:
+        with open(descriptor, "w", encoding="utf-8") as file:
+            file.write(json.dumps(compute_lab_sweeps(), indent=1) + "\n")
+        os.replace(temporary, path)
+    finally:
+        temporary.unlink(missing_ok=True)
 
+
+# The longest file name most file systems take (NAME_MAX).
+_NAME_MAX = 255
 
 _NAMES = {"jacobi": "Jacobi", "gauss_seidel": N_("Gauss-Seidel (the lab's loop)"), "sor": "SOR"}
 

@@ -505,7 +505,7 @@ def test_a_students_deep_notebook_in_the_edition_is_kept_as_their_work(tmp_path,
     deep_notebook(out / "01_first.ipynb", 100_000)
     assert main(["student", "--notebooks", str(lessons), "--out", str(out)]) == 0
     assert (out / "01_first.ipynb").read_text().startswith('{"cells"')  # untouched
-    assert "0 notebooks written, 0 unchanged, 1 with your edits kept" in capsys.readouterr().err
+    assert "notebooks written: 0; unchanged: 0; with your edits kept: 1" in capsys.readouterr().err
 
 
 def run_command(*args: str) -> subprocess.CompletedProcess:

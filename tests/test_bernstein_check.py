@@ -119,9 +119,51 @@ def test_a_refused_import_is_caught_however_it_was_imported():
     assert "math.comb was called" in str(check.comb(lambda m, n: imported(m, n)))
 
 
+comb = pascal  # the student's comb of exercise 1, under the name the notebook gives it
+
+
 def naive_solution(points, t):
     n = len(points) - 1
-    return sum(pascal(n, i) * t**i * (1 - t) ** (n - i) * p for i, p in enumerate(points))
+    return sum(comb(n, i) * t**i * (1 - t) ** (n - i) * p for i, p in enumerate(points))
+
+
+def de_casteljau_loop(points, t):
+    """Right points, by lesson 01's repeated interpolation: no Bernstein sum, no comb."""
+    points = np.asarray(points, dtype=float)
+    while len(points) > 1:
+        points = (1 - t) * points[:-1] + t * points[1:]
+    return points[0]
+
+
+def test_right_points_without_comb_are_told_the_exercise_is_the_bernstein_sum(monkeypatch):
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    result = check.naive_bezier(de_casteljau_loop)
+    assert not result and result.mistake == "not the Bernstein sum"
+    message = str(result)
+    assert message.startswith(
+        "FAIL naive_bezier: your naive_bezier gives the right points, but not by the Bernstein sum"
+    )
+    assert "weighted by comb(n, i) t^i (1 - t)^(n - i)" in message
+    assert f"Hint: {check.NAIVE_HINTS.where}" in message
+
+    # A helper of the student's that calls comb counts: the sum is theirs.
+    def weight(n, i, t):
+        return comb(n, i) * t**i * (1 - t) ** (n - i)
+
+    def with_a_helper(points, t):
+        n = len(points) - 1
+        return sum(weight(n, i, t) * p for i, p in enumerate(points))
+
+    assert check.naive_bezier(with_a_helper)
+
+
+def test_a_wrong_answer_without_comb_that_no_mistake_explains_is_told_so_too():
+    def off_de_casteljau(points, t):
+        return de_casteljau_loop(points, t) + 1.0
+
+    result = check.naive_bezier(off_de_casteljau)
+    assert not result and result.mistake == "not the Bernstein sum"
+    assert "your naive_bezier never calls your comb" in result.message
 
 
 def test_naive_bezier_passes_in_one_line_whatever_it_returns_a_point_in():
@@ -310,9 +352,10 @@ def accumulating_naive_bezier():
 
 
 #: The mistakes a function answering as the mistake does cannot make: a float that rounds
-#: to the right integer, a product (recognised in the code), an accumulator (across calls).
+#: to the right integer, a product (recognised in the code), an accumulator (across calls),
+#: right points without comb (recognised in the code).
 WRITTEN_COMB = {2: lambda: float_row, 6: lambda: rounded_float_product}
-WRITTEN_NAIVE = {5: accumulating_naive_bezier}
+WRITTEN_NAIVE = {5: accumulating_naive_bezier, 6: lambda: de_casteljau_loop}
 
 
 def test_graded_comb_cases_are_drawn_in_the_fixed_cases_families():

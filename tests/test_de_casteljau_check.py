@@ -77,6 +77,22 @@ def test_each_known_mistake_of_recursive_bezier_is_named_with_its_picture(
     assert picture_size(result)[0] > 300
 
 
+@pytest.mark.parametrize(
+    ("solution", "words"),
+    [
+        (reversed_step, "t of the way along each edge, from its first end"),
+        (one_level_short, "when the recursion stops"),
+        (swapped, "the point you return"),
+    ],
+)
+def test_the_first_hint_after_a_named_mistake_points_where_it_lives(solution, words, monkeypatch):
+    # After "the reversed step" the hint spoke only of what one call hands to the next and of
+    # when the recursion stops.
+    monkeypatch.setattr(base, "_FAILURES", base.Counter())
+    hint_line = str(check.recursive_bezier(solution)).splitlines()[-2]
+    assert hint_line.startswith("Hint: ") and words in hint_line
+
+
 def test_an_unknown_mistake_gets_the_first_wrong_value_the_picture_and_the_hint():
     result = check.recursive_bezier(lambda points, t: recursive_solution(points, t) + 0.5)
     assert not result and result.mistake is None
@@ -289,9 +305,9 @@ def test_the_rounding_mistake_is_worded_as_the_lesson_words_the_pixel():
     ("points", "slip"),
     [
         ([[0.0, 10.0], [0.0, 100.0]], "0 < x"),
-        ([[650.0, 100.0], [700.0, 100.0]], "x <= width"),
+        ([[650.0, 100.5], [700.0, 100.5]], "x <= width"),
         ([[100.0, 0.0], [300.0, 0.0]], "0 < y"),
-        ([[100.0, 700.0], [300.0, 700.0]], "y <= height"),
+        ([[100.5, 600.0], [100.5, 700.0]], "y <= height"),
         ([[100.0, -0.5], [300.0, -0.5]], "-1 <= y"),
     ],
 )
@@ -356,6 +372,108 @@ def the_games101_reports_loop(control_points, window):
         t = np.float32(t + np.float32(0.001))
 
 
+def next_level_by_difference(control_points, t):
+    """The VS2022 report's form of the step: P[i] + t (P[i+1] - P[i])."""
+    return control_points[:-1] + t * (control_points[1:] - control_points[:-1])
+
+
+def next_level_textbook(control_points, t):
+    return (1 - t) * control_points[:-1] + t * control_points[1:]
+
+
+#: The ways students write the loop's t: each is k / 1000 to within a unit in the last place.
+LOOP_TS = {
+    "k / 1000": lambda: [k / 1000 for k in range(1001)],
+    "k * 0.001": lambda: [k * 0.001 for k in range(1001)],
+    "linspace": lambda: np.linspace(0, 1, 1001),
+    "arange to 1.0005": lambda: np.arange(0, 1.0005, 0.001),
+}
+
+
+def drawing_loop_with(next_level, ts):
+    """A student's notebook: their next_level, recursive_bezier on it, and bezier over ts."""
+
+    def recursive_bezier(control_points, t):
+        if len(control_points) == 1:
+            return control_points[0]
+        return recursive_bezier(next_level(control_points, t), t)
+
+    def bezier(control_points, window):
+        height, width = window.shape[:2]
+        for t in ts():
+            x, y = recursive_bezier(control_points, t)
+            if 0 <= x < width and 0 <= y < height:
+                window[int(y), int(x)] = (0, 1, 0)
+
+    return bezier
+
+
+@pytest.mark.parametrize("ts", LOOP_TS)
+@pytest.mark.parametrize("next_level", [next_level_textbook, next_level_by_difference])
+def test_a_right_loop_passes_however_it_writes_the_step_and_t(next_level, ts):
+    # (1 - t) 100 + t 100 is 99.99999999999999 for some t: a line on y = 100 or y = 700 made
+    # the expected pixels hang on the last bit, and these right answers failed (case 5 named
+    # "the float32 loop of the GAMES101 report"; case 7 "1 pixel missing, 2 extra").
+    student = drawing_loop_with(next_level, LOOP_TS[ts])
+    assert str(check.bezier(student)) == "PASS bezier: all 8 cases pass"
+
+
+@pytest.mark.parametrize(("next_level", "ts"), [(next_level_by_difference, "k * 0.001")])
+def test_a_right_loop_passes_the_graded_cases_however_it_writes_the_step_and_t(next_level, ts):
+    student = drawing_loop_with(next_level, LOOP_TS[ts])
+    for seed in graded_draws.SEEDS:
+        result = graded_draws.graded("bezier", student, seed)
+        assert result.passed, f"seed {seed}:\n{result}"
+
+
+def test_no_case_leaves_a_pixel_to_the_last_bit_of_a_float():
+    # The drawn families are redrawn until they put no point within rounding of a pixel edge
+    # where its side matters; the fixed cases are chosen so.
+    fixed = drawing_loop.bezier_cases()
+    drawn = [
+        case
+        for seed in graded_draws.SEEDS
+        for case in graded_draws.draw(graded_draws.declared("bezier"), seed)
+    ]
+    for case in fixed + drawn:
+        points, shape = case["control_points"], case["window"].shape
+        assert drawing_loop.rounding_sensitive_pixels(points, shape).size == 0, points.tolist()
+
+
+@pytest.mark.parametrize(
+    ("points", "row"),
+    [([[650.0, 100.0], [700.0, 100.0]], 99), ([[100.0, 700.0], [300.0, 700.0]], 699)],
+)
+def test_a_line_on_a_pixel_edge_is_found_to_hang_on_rounding(points, row):
+    found = drawing_loop.rounding_sensitive_pixels(np.array(points), (700, 700))
+    assert len(found) and (found[:, 1] == row).any()
+    # The pixels that differ between (1 - t) P0 + t P1 and P0 + t (P1 - P0) are among them.
+    window_a, window_b = np.zeros((700, 700, 3)), np.zeros((700, 700, 3))
+    drawing_loop_with(next_level_textbook, LOOP_TS["k / 1000"])(np.array(points), window_a)
+    drawing_loop_with(next_level_by_difference, LOOP_TS["k / 1000"])(np.array(points), window_b)
+    rows, columns = np.nonzero((window_a != window_b).any(axis=2))
+    assert len(rows) and set(zip(columns.tolist(), rows.tolist(), strict=True)) <= set(
+        map(tuple, found.tolist())
+    )
+
+
+def green_channel_only(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = recursive_solution(control_points, k / 1000)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x), 1] = 1
+
+
+def test_painting_only_the_green_channel_is_named_on_the_grey_window():
+    # On a black window window[y, x, 1] = 1 is (0, 1, 0); on the grey one it is not green.
+    result = check.bezier(green_channel_only)
+    assert not result and result.mistake == "only the green channel"
+    assert str(result).startswith("FAIL bezier: case 3 is wrong")
+    assert "values 0.25 to 0.25" in result.message and "is (0.25, 1, 0.25)" in result.message
+    assert "window[y, x] = (0, 1, 0)" in result.message
+
+
 def test_the_games101_reports_own_loop_is_named_as_the_pair():
     result = check.bezier(the_games101_reports_loop)
     assert result.mistake == "the GAMES101 report's loop: float32 t and cv::Point rounding"
@@ -394,12 +512,14 @@ def painted_into_a_copy(control_points, window):
     return window
 
 
-#: The drawing loop's mistakes a function answering with their pixels cannot make: a colour,
-#: a copy, and t accumulated (recognised by what the loop paints on a probe curve too).
+#: The drawing loop's mistakes a function answering with their pixels cannot make: the green
+#: channel alone, a colour, a copy, and t accumulated (recognised by what the loop paints on a
+#: probe curve too).
 WRITTEN_BEZIER = {
-    0: lambda: painted_in_8_bit_green,
-    1: lambda: painted_into_a_copy,
-    2: lambda: float_loop,
+    0: lambda: green_channel_only,
+    1: lambda: painted_in_8_bit_green,
+    2: lambda: painted_into_a_copy,
+    3: lambda: float_loop,
 }
 
 
@@ -425,12 +545,14 @@ def test_graded_bezier_cases_are_drawn_in_the_fixed_cases_families():
         assert shapes[0] == (700, 700, 3) and shapes[2] == (24, 24, 3)
         assert 50 <= shapes[1][0] <= 70 and 70 <= shapes[1][1] <= 90
         assert shapes[3:] == [(700, 700, 3)] * 5
-        assert not any(c["window"].any() for c in cases)
+        assert not any(c["window"].any() for number, c in enumerate(cases) if number != 2)
+        assert (cases[2]["window"] == drawing_loop.GREY).all()
         curve = de_casteljau(cases[1]["control_points"], np.linspace(0, 1, 1001))
         assert curve[:, 0].min() < -1 and curve[:, 0].max() > shapes[1][1]
         x_0, x_width, y_0, y_height, y_half = (c["control_points"] for c in cases[3:])
         assert (x_0[:, 0] == 0).all() and x_width[:, 0].max() == 700
-        assert (y_0[:, 1] == 0).all() and (y_height[:, 1] == 700).all()
+        assert x_width[0, 1] == x_width[1, 1] and y_height[0, 0] == y_height[1, 0]
+        assert (y_0[:, 1] == 0).all() and y_height[:, 1].max() == 700
         assert (y_half[:, 1] == -0.5).all()
 
 

@@ -13,7 +13,8 @@ Each recognises the handouts' mistakes: the reversed step of seeds 002 and
 004, stopping one level early, x and y swapped, a loop that never reaches
 t = 1, the GAMES101 report's float32 t, OpenCV's rounding to the nearest
 pixel, the two together (the GAMES101 report's loop), a negative index that
-wraps around to the other side of the window, and the wrong colour. An
+wraps around to the other side of the window, the wrong colour, and only the
+green channel set (on a window painted grey before the loop runs). An
 answer that calls the library's own curve is told to write it. The drawing
 loop's cases, reference, mistakes and pictures are in
 :mod:`~course.lessons.l01_de_casteljau.drawing_loop`.
@@ -55,12 +56,11 @@ from course.lessons.l01_de_casteljau.drawing_loop import (
     bezier_pass_picture,
     bezier_picture,
     bezier_reference,
-    draw_bezier_cases,
     painting_difference,
     same_painting,
     show_painting,
 )
-from course.lessons.l01_de_casteljau.drawn import draw_curve_cases
+from course.lessons.l01_de_casteljau.drawn import draw_bezier_cases, draw_curve_cases
 
 __all__ = [
     "LIBRARY_CURVES",
@@ -225,11 +225,16 @@ def _curve(control_points: np.ndarray, t: Any) -> np.ndarray:
     return de_casteljau(control_points, t)
 
 
+# The first step names where each of the named mistakes lives: the step along the edge (the
+# reversed step), the end of the recursion (one level short), the point returned (x and y).
 RECURSIVE_HINTS = Hints(
-    where=N_("look at what one call hands to the next, and at when the recursion stops."),
+    where=N_(
+        "look at where each call puts its new points (t of the way along each edge, from its "
+        "first end), at when the recursion stops, and at the point you return."
+    ),
     more=N_(
         "each call makes one level with one point fewer (your next_level), and passes "
-        "it on with the same t; the call that gets a single point has B(t)."
+        "it on with the same t; the call that gets a single point has B(t), (x, y)."
     ),
     recipe=N_(
         "if len(control_points) == 1, return control_points[0]; otherwise return "

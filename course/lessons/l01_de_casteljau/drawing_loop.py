@@ -7,7 +7,8 @@ the pixels painted with :func:`bezier_reference`, one pixel per t = 0, 0.001,
 the student's window read back (:func:`same_painting`,
 :func:`painting_difference`, :func:`show_painting` compare and show it); the
 handouts' drawing-loop mistakes the report names (:func:`bezier_mistakes`);
-and the failure and pass pictures.
+the failure and pass pictures; and :func:`rounding_sensitive_pixels`, which
+keeps every case's answer independent of the last bit of a float.
 
 The checker calls these with its own cases; the student's answer is read by
 :class:`Painting`, which checks it. So this module checks no input of its own
@@ -39,7 +40,10 @@ from course.raster import nearest_pixels
 __all__ = [
     "ACCUMULATION_PROBE",
     "BEZIER_SHAPES",
+    "EDGE_TOLERANCE",
     "GREEN",
+    "GREY",
+    "GREY_CASE",
     "STEP",
     "Painting",
     "bezier_cases",
@@ -47,10 +51,14 @@ __all__ = [
     "bezier_pass_picture",
     "bezier_picture",
     "bezier_reference",
-    "draw_bezier_cases",
+    "curve_pixels",
+    "loop_parameters",
     "painting_difference",
+    "rounding_sensitive_pixels",
     "same_painting",
     "show_painting",
+    "window_for",
+    "wrapped_pixels",
 ]
 
 UNCHECKED = True  # see the module docstring
@@ -63,165 +71,151 @@ _STEPS = round(1 / STEP)
 #: The drawing loop's windows: seed 000's curve on its 700 x 700 window, a curve that
 #: leaves a small window on every side (its pixels off the window must be skipped, and it
 #: crosses x = width and y = height, where a test `x <= width` indexes past the end), a
-#: curve on a 24 x 24 window, then lines along the window's edges, where a test one off
-#: (`0 < x`, `x <= width`, `0 < y`, `y <= height`, `-1 <= y`) paints too much or too little:
-#: x = 0 and y = 0 exactly (painted), x = width and y = height exactly (skipped), and
-#: y = -0.5 (skipped, although int(-0.5) is row 0).
+#: curve on a 24 x 24 window already painted grey (:data:`GREY`: painting a pixel green sets
+#: all three channels, not only the green one), then lines on the window's edges, where a
+#: test one off (`0 < x`, `x <= width`, `0 < y`, `y <= height`, `-1 <= y`) paints too much or
+#: too little: x = 0 and y = 0 exactly (painted), a line that ends at x = width and one that
+#: ends at y = height (their last point skipped), and y = -0.5 (skipped, although int(-0.5)
+#: is row 0). No point lies within rounding of a pixel edge where its side matters
+#: (:func:`rounding_sensitive_pixels`): y = 100.5 and x = 100.5, not 100, which
+#: (1 - t) 100 + t 100 computes as 99.99999999999999 for some t.
 BEZIER_SHAPES = (
     (SEED_000_CUBIC, (700, 700)),
     (np.array([[-20.0, 50.0], [30.0, -40.0], [70.0, 90.0], [100.0, 20.0]]), (60, 80)),
     (np.array([[2.2, 20.5], [5.0, 1.5], [21.0, 3.5]]), (24, 24)),
     (np.array([[0.0, 10.0], [0.0, 100.0]]), (700, 700)),
-    (np.array([[650.0, 100.0], [700.0, 100.0]]), (700, 700)),
+    (np.array([[650.0, 100.5], [700.0, 100.5]]), (700, 700)),
     (np.array([[100.0, 0.0], [300.0, 0.0]]), (700, 700)),
-    (np.array([[100.0, 700.0], [300.0, 700.0]]), (700, 700)),
+    (np.array([[100.5, 600.0], [100.5, 700.0]]), (700, 700)),
     (np.array([[100.0, -0.5], [300.0, -0.5]]), (700, 700)),
 )
+#: The case painted grey before the student's loop runs: the third, the 24 x 24 window.
+GREY_CASE = 2
 #: A curve that tells t accumulated in float steps from range(1000): it runs right to left
-#: two pixels per step, so t a few ulps above k / 1000 lands one pixel to the left.
+#: two pixels per step, so t a few ulps above k / 1000 lands one pixel to the left. (Its
+#: points lie on pixel edges on purpose: it is a probe, never a case.)
 ACCUMULATION_PROBE = {"control_points": np.array([[699.0, 0.5], [-1301.0, 0.5]]), "shape": (2, 700)}
 GREEN = (0.0, 1.0, 0.0)
+#: The colour of the window painted before the loop runs: a pixel painted green must be
+#: (0, 1, 0) there too, so setting only the green channel (window[y, x, 1] = 1) shows.
+GREY = (0.25, 0.25, 0.25)
+#: How near a whole x or y, relative to the control points' size, a curve point counts as
+#: within rounding of a pixel edge: a thousand times the few units in the last place that any
+#: way of computing B(t) or t loses, far below the float32 loop's drift, which is a mistake.
+EDGE_TOLERANCE = 1e-10
 
 
-def bezier_cases() -> list[dict[str, Any]]:
-    """The checker's cases: each of :data:`BEZIER_SHAPES`, its points and a black window."""
-    return [
-        {"control_points": points.copy(), "window": np.zeros((*shape, 3))}
-        for points, shape in BEZIER_SHAPES
-    ]
-
-
-def draw_bezier_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
-    """Graded cases of :data:`BEZIER_SHAPES`' families, drawn from ``rng``, each with a black
-    window.
-
-    In the same order: a cubic across a 700 x 700 window with a long last leg, on which the
-    drawing loop's mistakes each paint pixels of their own (the loop stopped before t = 1,
-    float32 t, rounding, both, x and y swapped, a step of 0.01); a cubic that leaves a window
-    of about 60 x 80 on the left and the right, on which int() before the window test and
-    the two wrapped negative indices each paint pixels of their own; a quadratic inside a
-    24 x 24 window; then lines of drawn lengths along the 700 x 700 window's edges, either way
-    round: on x = 0, ending at x = width, on y = 0, on y = height and on y = -0.5.
+def window_for(shape: tuple[int, int], grey: bool = False) -> np.ndarray:
+    """A case's window: black, or painted :data:`GREY` all over.
 
     Examples
     --------
-    >>> cases = draw_bezier_cases(np.random.default_rng(1))
-    >>> [case["window"].shape[:2] for case in cases][:3], len(cases)
-    ([(700, 700), (63, 81), (24, 24)], 8)
-    >>> cases[3]["control_points"][:, 0].tolist(), cases[7]["control_points"][:, 1].tolist()
-    ([0.0, 0.0], [-0.5, -0.5])
+    >>> window_for((2, 3)).shape, window_for((2, 3), grey=True)[0, 0].tolist()
+    ((2, 3, 3), [0.25, 0.25, 0.25])
     """
-    shapes = [(700, 700)]
+    window = np.zeros((*shape, 3))
+    if grey:
+        window[...] = GREY
+    return window
 
-    def spanning() -> np.ndarray:  # a long last leg: the pixel of t = 1 is its own
-        while True:
-            points = rng.uniform(10, 690, (4, 2)).round(1)
-            if np.hypot(*(points[3] - points[2])) >= 300:
-                return points
 
-    float32_loop = uniform_parameters(STEP, accumulate="float32")
-    cubic = _drawn_until_apart(
-        spanning,
-        shapes[0],
-        [
-            lambda points, shape: _loop_pixels(points, shape, _every_t()),
-            lambda points, shape: _loop_pixels(points, shape, float32_loop),
-            lambda points, shape: _loop_pixels(points, shape, _every_t()[:-1]),
-            lambda points, shape: _loop_pixels(points, shape, _every_t(), "round"),
-            lambda points, shape: _loop_pixels(points, shape, float32_loop, "round"),
-            lambda points, shape: _loop_pixels(points, shape[1::-1], _every_t())[:, ::-1],
-            lambda points, shape: _loop_pixels(points, shape, np.arange(101) / 100),
-        ],
-    )
-    height, width = int(rng.integers(50, 71)), int(rng.integers(70, 91))
-    shapes.append((height, width))
-
-    def leaving() -> np.ndarray:
-        while True:
-            points = np.array(
-                [
-                    [-rng.uniform(15, 30), rng.uniform(0.7, 0.9) * height],
-                    [rng.uniform(0.3, 0.45) * width, -rng.uniform(0.5, 0.8) * height],
-                    [rng.uniform(0.8, 0.95) * width, rng.uniform(1.3, 1.6) * height],
-                    [rng.uniform(1.15, 1.35) * width, rng.uniform(0.25, 0.45) * height],
-                ]
-            ).round(1)
-            curve = de_casteljau(points, _every_t())
-            if curve[:, 0].min() < -1 and curve[:, 0].max() > width:
-                return points
-
-    off_window = _drawn_until_apart(
-        leaving,
-        shapes[1],
-        [
-            lambda points, shape: _loop_pixels(points, shape, _every_t()),
-            lambda points, shape: _loop_pixels(points, shape, _every_t(), "trunc"),
-            lambda points, shape: _wrapped("trunc")(points, np.zeros(shape)),
-            lambda points, shape: _wrapped("floor")(points, np.zeros(shape)),
-        ],
-    )
-    shapes.append((24, 24))
-    polygons = [cubic, off_window, rng.uniform(1.5, 22.5, (3, 2)).round(1)]
-
-    def along(start: float, stop: float) -> tuple[float, float]:
-        first = round(float(rng.uniform(start, stop)), 1)
-        return first, round(first + float(rng.uniform(50, 350)), 1)
-
-    top, bottom = along(5, 300)
-    left, right = along(50, 300)
-    edges = [
-        [[0.0, top], [0.0, bottom]],
-        [[round(float(rng.uniform(550, 680)), 1), float(rng.integers(20, 680))], [700.0, 0.0]],
-        [[left, 0.0], [right, 0.0]],
-        [[left + 30, 700.0], [right + 30, 700.0]],
-        [[left + 60, -0.5], [right + 60, -0.5]],
-    ]
-    edges[1][1][1] = edges[1][0][1]  # the line ends at x = width, on the row it started in
-    for points in edges:
-        polygons.append(np.array(points if rng.random() < 0.5 else points[::-1]))
-        shapes.append((700, 700))
+def bezier_cases() -> list[dict[str, Any]]:
+    """The checker's cases: each of :data:`BEZIER_SHAPES`, its points and its window."""
     return [
-        {"control_points": points, "window": np.zeros((*shape, 3))}
-        for points, shape in zip(polygons, shapes, strict=True)
+        {"control_points": points.copy(), "window": window_for(shape, number == GREY_CASE)}
+        for number, (points, shape) in enumerate(BEZIER_SHAPES)
     ]
 
 
-def _drawn_until_apart(
-    draw: Callable[[], np.ndarray],
-    shape: tuple[int, int],
-    paintings: list[Callable[[np.ndarray, tuple[int, int]], np.ndarray]],
-) -> np.ndarray:
-    """Control points from ``draw``, drawn again until the ``paintings`` of them (the
-    reference's and mistakes') are pixel sets all different from each other."""
-    while True:
-        points, seen = draw(), set()
-        for painting in paintings:
-            pixels = frozenset(map(tuple, painting(points, shape).tolist()))
-            if pixels in seen:
-                break
-            seen.add(pixels)
-        else:
-            return points
-
-
-def _loop_pixels(
+def curve_pixels(
     control_points: np.ndarray, shape: tuple[int, ...], t: np.ndarray, rounding: str = "floor"
 ) -> np.ndarray:
+    """The pixels a loop over ``t`` paints on a window of ``shape``: one per point on it.
+
+    Examples
+    --------
+    >>> curve_pixels(np.array([[0.5, 0.5], [3.5, 0.5]]), (1, 3), np.array([0, 0.5, 1])).tolist()
+    [[0, 0], [2, 0]]
+    """
     curve = de_casteljau(control_points, t)
     return nearest_pixels(curve, rounding=rounding, shape=shape[:2])
 
 
-def _every_t() -> np.ndarray:
+def loop_parameters() -> np.ndarray:
+    """The t of seed 000's loop, each from a whole count: 0, 0.001, ..., 1 (1001 values)."""
     return np.arange(_STEPS + 1) / _STEPS
+
+
+def rounding_sensitive_pixels(control_points: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
+    """The pixels a right drawing loop may paint or not, by the last bits of its arithmetic.
+
+    A point of the curve within rounding of a pixel edge (a whole x or y, to
+    :data:`EDGE_TOLERANCE`) lands on either side of it, by how the loop
+    computed it: ``(1 - t) P0 + t P1`` or ``P0 + t (P1 - P0)``, ``k / 1000`` or
+    ``k * 0.001``. That is harmless where every pixel it may land in is
+    painted anyway by a point clear of all edges, or is off the window; the
+    pixels where it is not are returned, (K, 2) (x, y). The points every way
+    computes exactly are not within rounding: at t = 0 (P0), at t = 1 (Pn, when
+    ``P[i] + (P[i+1] - P[i])`` is P[i+1] in floats), a coordinate 0 in every
+    control point, and whole coordinates at t a multiple of 1/8. The checker's
+    cases, fixed and drawn, have none.
+
+    Examples
+    --------
+    >>> rounding_sensitive_pixels(np.array([[650.0, 100.0], [700.0, 100.0]]), (700, 700))[:2]
+    array([[650,  99],
+           [651,  99]])
+    >>> rounding_sensitive_pixels(np.array([[650.0, 100.5], [700.0, 100.5]]), (700, 700)).size
+    0
+    """
+    control = np.asarray(control_points, dtype=float)
+    t = loop_parameters()
+    curve = de_casteljau(control, t)
+    whole = np.round(curve)
+    scale = max(1.0, float(np.abs(control).max()))
+    near = (np.abs(curve - whole) <= EDGE_TOLERANCE * scale) & ~_computed_exactly(control, t)
+    low = np.where(near, whole - 1, np.floor(curve)).astype(np.int64)
+    high = np.where(near, whole, np.floor(curve)).astype(np.int64)
+    height, width = shape[:2]
+    settled = ~near.any(axis=1)
+    on_window = (low[:, 0] >= 0) & (low[:, 0] < width) & (low[:, 1] >= 0) & (low[:, 1] < height)
+    certain = set(map(tuple, low[settled & on_window].tolist()))
+    sensitive = {
+        (x, y)
+        for (x_low, y_low), (x_high, y_high) in zip(
+            low[~settled].tolist(), high[~settled].tolist(), strict=True
+        )
+        for x in {x_low, x_high}
+        for y in {y_low, y_high}
+        if 0 <= x < width and 0 <= y < height and (x, y) not in certain
+    }
+    return np.array(sorted(sensitive), dtype=np.int64).reshape(-1, 2)
+
+
+def _computed_exactly(control: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """(M, d): whether every way of computing coordinate d of B(t) gets it exactly."""
+    degree = len(control) - 1
+    whole = (control == np.round(control)).all(axis=0)
+    # Whole coordinates times powers of 1/8 up to the degree, summed: exact within 53 bits.
+    whole &= np.abs(control).max(axis=0) < 2.0 ** (52 - 4 * degree)
+    exact = (t * 8 == np.round(t * 8))[:, None] & whole[None, :]
+    exact |= (control == 0).all(axis=0)[None, :]
+    exact[t == 0] = True
+    level = control
+    while len(level) > 1:
+        level = level[:-1] + (level[1:] - level[:-1])  # the step P0 + t (P1 - P0) at t = 1
+    exact[t == 1] |= level[0] == control[-1]
+    return exact
 
 
 def bezier_reference(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
     """The pixels to paint: the one holding B(t) for each t = 0, 0.001, ..., 1 on the window."""
-    return _loop_pixels(control_points, window.shape, _every_t())
+    return curve_pixels(control_points, window.shape, loop_parameters())
 
 
-def _wrapped(rounding: str) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
-    """The pixels of a loop that tests only ``x < width and y < height``.
+def wrapped_pixels(rounding: str) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
+    """The pixels of a loop that tests only ``x < width and y < height``, as a function of
+    ``(control_points, window)``; ``rounding`` is :func:`course.raster.nearest_pixels`'.
 
     A negative index counts from the end of the row or column, so a pixel
     left of or above the window lands on its other side; ``int`` truncates
@@ -230,7 +224,7 @@ def _wrapped(rounding: str) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
 
     def pixels(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
         height, width = window.shape[:2]
-        curve = de_casteljau(control_points, _every_t())
+        curve = de_casteljau(control_points, loop_parameters())
         kept = curve[(curve[:, 0] < width) & (curve[:, 1] < height)]
         found = nearest_pixels(kept, rounding=rounding)
         # Python raises past -length, so such a loop stops there: not this mistake.
@@ -241,7 +235,8 @@ def _wrapped(rounding: str) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
 
 
 class Painting:
-    """The pixels a student painted (any channel not 0), and the first in the wrong colour.
+    """The pixels a student painted (neither black nor :data:`GREY`), and the first in the
+    wrong colour.
 
     Made from ``(window, returned)``: the window after the call, and what the
     function returned, kept to recognise a painted copy returned instead.
@@ -264,7 +259,7 @@ class Painting:
 
 
 def _painted(image: np.ndarray) -> tuple[np.ndarray, tuple[int, int, tuple] | None]:
-    painted = (image != 0).any(axis=2)
+    painted = (image != 0).any(axis=2) & ~(image == GREY).all(axis=2)
     rows, columns = np.nonzero(painted)
     pixels = np.column_stack([columns, rows]).astype(np.int64)
     colours = image[rows, columns].astype(float)
@@ -312,7 +307,7 @@ def _accumulates(student: Callable[..., Any]) -> bool:
     window = np.zeros((*probe["shape"], 3))
     run_bounded(lambda: student(probe["control_points"].copy(), window))
     steps = uniform_parameters(STEP, accumulate="float64")
-    expected = _loop_pixels(probe["control_points"], window.shape, steps)
+    expected = curve_pixels(probe["control_points"], window.shape, steps)
     return bool(same_pixels(expected, _painted(window)[0]))
 
 
@@ -332,6 +327,14 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
             same_pixels(expected, _pixels_of(given))
         )
 
+    def green_channel_match(expected: Any, given: Any) -> bool:
+        wrong = getattr(given, "wrong_colour", None)
+        return (
+            wrong is not None
+            and (wrong[2][0], wrong[2][2]) == (GREY[0], GREY[2])
+            and bool(same_pixels(expected, _pixels_of(given)))
+        )
+
     def copy_match(expected: Any, given: Any) -> bool:
         returned = getattr(given, "returned_pixels", None)
         return (
@@ -347,9 +350,20 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
         "every point off the window."
     )
     return [
-        # First: with the right pixels in the wrong colour, every mistake that only compares
-        # pixels and agrees with the reference on this case (off-window points wrapped, when
-        # there are none) would match too.
+        # The colours first: with the right pixels in the wrong colour, every mistake that only
+        # compares pixels and agrees with the reference on this case (off-window points
+        # wrapped, when there are none) would match too.
+        Mistake(
+            _("only the green channel"),
+            _(
+                "you set only the green channel, window[y, x, 1] = 1, as some reports do: this "
+                "window was painted grey before your loop ran, so your pixels kept their red and "
+                "blue. Paint the whole pixel green, window[y, x] = (0, 1, 0), as the GAMES101 "
+                "handout does."
+            ),
+            bezier_reference,
+            matches=green_channel_match,
+        ),
         Mistake(
             _("the wrong colour"),
             _(
@@ -379,7 +393,7 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
                 "the way t drifts a few units in the last place. Count whole steps instead: "
                 "for k in range(1001): t = k / 1000."
             ),
-            lambda control_points, window: _loop_pixels(control_points, window.shape, accumulated),
+            lambda control_points, window: curve_pixels(control_points, window.shape, accumulated),
             matches=accumulated_match,
         ),
         Mistake(
@@ -389,8 +403,8 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
                 "and np.arange(0, 1, 0.001) stop at 0.999. Count whole steps up to and including "
                 "1000: for k in range(1001): t = k / 1000."
             ),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape, _every_t()[:-1]
+            lambda control_points, window: curve_pixels(
+                control_points, window.shape, loop_parameters()[:-1]
             ),
             matches=pixels_match,
         ),
@@ -401,7 +415,7 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
                 "additions of 0.001 move the points enough to change pixels in the middle of the "
                 "curve. Compute each t from a whole count, in Python's float."
             ),
-            lambda control_points, window: _loop_pixels(control_points, window.shape, float32_loop),
+            lambda control_points, window: curve_pixels(control_points, window.shape, float32_loop),
             matches=pixels_match,
         ),
         Mistake(
@@ -412,8 +426,8 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
                 "the pixel whose square holds the point (x, y) is (int(x), int(y)) for x, y >= 0: "
                 "the whole parts, not the rounded values."
             ),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape, _every_t(), "round"
+            lambda control_points, window: curve_pixels(
+                control_points, window.shape, loop_parameters(), "round"
             ),
             matches=pixels_match,
         ),
@@ -426,7 +440,7 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
                 "Python's float) and paint (int(x), int(y)), the pixel whose square holds the "
                 "point."
             ),
-            lambda control_points, window: _loop_pixels(
+            lambda control_points, window: curve_pixels(
                 control_points, window.shape, float32_loop, "round"
             ),
             matches=pixels_match,
@@ -434,8 +448,8 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
         Mistake(
             _("x and y swapped"),
             _("you wrote window[x, y]: an image is indexed by row first, window[y, x]."),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape[1::-1], _every_t()
+            lambda control_points, window: curve_pixels(
+                control_points, window.shape[1::-1], loop_parameters()
             )[:, ::-1],
             matches=pixels_match,
         ),
@@ -447,20 +461,24 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
                 "passes a test of the pixel. Test the point itself, 0 <= x < width and "
                 "0 <= y < height, before you take int(), or take math.floor."
             ),
-            lambda control_points, window: _loop_pixels(
-                control_points, window.shape, _every_t(), "trunc"
+            lambda control_points, window: curve_pixels(
+                control_points, window.shape, loop_parameters(), "trunc"
             ),
             matches=pixels_match,
         ),
-        Mistake(_("a negative index wraps around"), wraps, _wrapped("trunc"), matches=pixels_match),
-        Mistake(_("a negative index wraps around"), wraps, _wrapped("floor"), matches=pixels_match),
+        Mistake(
+            _("a negative index wraps around"), wraps, wrapped_pixels("trunc"), matches=pixels_match
+        ),
+        Mistake(
+            _("a negative index wraps around"), wraps, wrapped_pixels("floor"), matches=pixels_match
+        ),
         Mistake(
             _("a step of 0.01"),
             _(
                 "your step is ten times too coarse: 101 points leave gaps on a curve about 1400 "
                 "pixels long. Use 0.001, as the handout does."
             ),
-            lambda control_points, window: _loop_pixels(
+            lambda control_points, window: curve_pixels(
                 control_points, window.shape, np.arange(101) / 100
             ),
             matches=pixels_match,

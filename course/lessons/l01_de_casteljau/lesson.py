@@ -13,6 +13,7 @@ import re
 from course.classroom.pictures import CRIMSON, app_picture, landmark_at, still_picture
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
 from course.curves.bezier import de_casteljau
+from course.curves.handout_loops import HandoutLoop
 from course.i18n import N_, _
 from course.images import EXAMPLE_POINTS, SEED_000_CUBIC
 from course.lessons.l01_de_casteljau import figures
@@ -32,6 +33,14 @@ LOOP_NAMES = (
     N_("the VS2022 report"),
     N_("the lab 6 report"),
     N_("textbook step, float t"),
+)
+#: The textbook step, (1 - t) P[i] + t P[i+1], in the reports' ``float t`` loop, each point
+#: truncated to its pixel: the yellow check's yardstick for the handouts' own loops.
+TEXTBOOK_FLOAT_LOOP = HandoutLoop(
+    LOOP_NAMES[4],
+    "for (float t = 0; t <= 1; t += 0.001f) window.at<cv::Vec3b>(point.y, point.x)",
+    accumulate="float32",
+    rounding="trunc",
 )
 #: What the pixel holding B(1) shows, indexed by ``red + 2 * green``.
 END_PIXEL_STATES = (N_("dark"), N_("red only"), N_("green only"), N_("yellow"))

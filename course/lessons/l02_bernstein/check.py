@@ -15,12 +15,9 @@ more; ``check.hint("comb")`` says more at once and
 
 from __future__ import annotations
 
-import ast
-import inspect
 import itertools
 import math
 import sys
-import textwrap
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
@@ -36,7 +33,7 @@ from course.check.base import (
     run_cases,
 )
 from course.check.exercises import exercise
-from course.check.hints import Hints
+from course.check.hints import Hints, failure_hint
 from course.curves.bezier import bernstein_basis, bezier_bernstein, binomial, pascal_row
 from course.curves.bezier_handouts import (
     comb_recursive_calls,
@@ -51,6 +48,7 @@ from course.lessons.l01_de_casteljau.check import (
     library_curves,
     point_picture,
 )
+from course.lessons.l02_bernstein.code_reading import multiplies, names_comb
 from course.lessons.l02_bernstein.drawn import drawn_comb_cases, drawn_naive_cases
 
 __all__ = ["COMB_CASES", "MAX_CALLS", "comb", "hint", "naive_bezier"]
@@ -100,54 +98,6 @@ def _exact(expected: int, given: Any) -> bool:
     """An integer equal to C(m, n): a float, even 10.0, is not a sum of integers."""
     integer = isinstance(given, (int, np.integer)) and not isinstance(given, (bool, np.bool_))
     return integer and given == expected
-
-
-def _multiplies(function: Callable[..., Any]) -> str | None:
-    """The first multiplication or division in ``function``'s code, and the helpers it calls.
-
-    Pascal's rule only adds; ``[0] * (m + 1)``, a list made longer, is not a product.
-    """
-    seen: set[Any] = set()
-    todo = [function]
-    while todo:
-        current = inspect.unwrap(todo.pop())
-        code = getattr(current, "__code__", None)
-        if code is None or code in seen or _is_library(current):
-            continue
-        seen.add(code)
-        try:
-            tree = ast.parse(textwrap.dedent(inspect.getsource(current)))
-        except (OSError, TypeError, SyntaxError):
-            continue
-        names = getattr(current, "__globals__", {})
-        for node in ast.walk(tree):
-            if isinstance(node, (ast.BinOp, ast.AugAssign)) and isinstance(
-                node.op, (ast.Mult, ast.Div, ast.FloorDiv)
-            ):
-                operands = (
-                    [node.target, node.value]
-                    if isinstance(node, ast.AugAssign)
-                    else [
-                        node.left,
-                        node.right,
-                    ]
-                )
-                if not any(isinstance(o, (ast.List, ast.ListComp, ast.Tuple)) for o in operands):
-                    return ast.unparse(node).strip()
-            if isinstance(node, ast.Call):
-                called = node.func
-                if isinstance(called, ast.Name) and called.id in {"prod", "factorial"}:
-                    return ast.unparse(node)
-                if isinstance(called, ast.Attribute) and called.attr in {"prod", "factorial"}:
-                    return ast.unparse(node)
-                if isinstance(called, ast.Name) and callable(names.get(called.id)):
-                    todo.append(names[called.id])
-    return None
-
-
-def _is_library(function: Any) -> bool:
-    module = getattr(function, "__module__", "") or ""
-    return module.split(".")[0] in {"course", "numpy", "math", "builtins", "scipy"}
 
 
 def _binomials(refused: str | None = None) -> dict[Any, str]:
@@ -237,7 +187,7 @@ def comb(function: Callable[..., Any]) -> CheckResult:
     >>> comb(math.comb).passed
     False
     """
-    product = _multiplies(function)
+    product = multiplies(function)
     not_pascal = _(
         "your comb multiplies or divides ({product}), as the formula m! / (n! (m - n)!) does, "
         "and gets this case wrong. The exercise builds each coefficient from the two above it, "
@@ -383,8 +333,9 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
     """Check a student's Bernstein-form ``naive_bezier(control_points, t)`` of any degree.
 
     Compared with the library's Bernstein form on curves of 2 to 12 control
-    points and one of 41, to 1e-9. A pass shows the student's points on
-    seed 000's curve.
+    points and one of 41, to 1e-9. Right points computed without ``comb`` (a
+    de Casteljau loop) fail as "not the Bernstein sum", when the code can be
+    read. A pass shows the student's points on seed 000's curve.
 
     Examples
     --------
@@ -393,6 +344,13 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
     'the reversed weights'
     """
     history: list[np.ndarray] = []
+    with_comb = names_comb(function)
+    another_way = _(
+        "your naive_bezier never calls your comb: it computes the curve another way, as "
+        "lesson 01's de Casteljau does by repeated interpolation. The exercise is the Bernstein "
+        "sum, each control point P[i] weighted by comb(n, i) t^i (1 - t)^(n - i), with the comb "
+        "you wrote in exercise 1."
+    )
 
     def curve(control_points: np.ndarray, t: float) -> np.ndarray:
         point = bezier_bernstein(control_points, t)
@@ -448,8 +406,15 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
             ),
             lambda control_points, t: np.sum(history, axis=0),
         ),
+        # Last: a wrong answer that weights nothing by comb, and no other mistake explains.
+        Mistake(
+            N_("not the Bernstein sum"),
+            another_way,
+            lambda control_points, t: None,
+            matches=lambda expected, given: with_comb is False,
+        ),
     ]
-    return run_cases(
+    result = run_cases(
         "naive_bezier",
         function,
         curve_cases(max_points=12) + _high_degree_cases(),
@@ -459,4 +424,18 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
         mistakes=mistakes,
         picture=point_picture(bezier_bernstein, N_("your naive_bezier")),
         pass_picture=curve_pass_picture(bezier_bernstein, "naive_bezier"),
+    )
+    if not result.passed or with_comb is not False:
+        return result
+    lines = [
+        _("your naive_bezier gives the right points, but not by the Bernstein sum."),
+        f"  {another_way}",
+        failure_hint("naive_bezier", NAIVE_HINTS, 1),
+    ]
+    return CheckResult(
+        "naive_bezier",
+        False,
+        result.cases_run,
+        "\n".join(lines),
+        mistake=N_("not the Bernstein sum"),
     )

@@ -465,13 +465,20 @@ def green_channel_only(control_points, window):
             window[int(y), int(x), 1] = 1
 
 
-def test_painting_only_the_green_channel_is_named_on_the_grey_window():
-    # On a black window window[y, x, 1] = 1 is (0, 1, 0); on the grey one it is not green.
-    result = check.bezier(green_channel_only)
-    assert not result and result.mistake == "only the green channel"
+def test_green_is_the_whole_pixel_or_the_green_channel_alone_as_the_reports_paint():
+    # Every report sets one channel (window.at<cv::Vec3b>(y, x)[1] = 255), and the homework's
+    # red and green check relies on it: on the grey window the pixel keeps its red and blue.
+    assert check.bezier(green_channel_only)
+
+
+def test_a_loop_that_paints_a_pixel_half_green_on_the_grey_window_is_the_wrong_colour():
+    def red_cleared(control_points, window):
+        green_channel_only(control_points, window)
+        window[..., 0][window[..., 1] == 1] = 0  # red cleared, blue kept: neither way
+
+    result = check.bezier(red_cleared)
+    assert not result and result.mistake == "the wrong colour"
     assert str(result).startswith("FAIL bezier: case 3 is wrong")
-    assert "values 0.25 to 0.25" in result.message and "is (0.25, 1, 0.25)" in result.message
-    assert "window[y, x] = (0, 1, 0)" in result.message
 
 
 def test_the_games101_reports_own_loop_is_named_as_the_pair():

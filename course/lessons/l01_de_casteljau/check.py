@@ -13,8 +13,9 @@ Each recognises the handouts' mistakes: the reversed step of seeds 002 and
 004, stopping one level early, x and y swapped, a loop that never reaches
 t = 1, the GAMES101 report's float32 t, OpenCV's rounding to the nearest
 pixel, the two together (the GAMES101 report's loop), a negative index that
-wraps around to the other side of the window, the wrong colour, and only the
-green channel set (on a window painted grey before the loop runs). An
+wraps around to the other side of the window, and the wrong colour (on one
+window painted grey before the loop runs, green is the whole pixel (0, 1, 0) or
+the green channel alone, as the reports set it). An
 answer that calls the library's own curve is told to write it. The drawing
 loop's cases, reference, mistakes and pictures are in
 :mod:`~course.lessons.l01_de_casteljau.drawing_loop`.

@@ -71,8 +71,9 @@ _STEPS = round(1 / STEP)
 #: The drawing loop's windows: seed 000's curve on its 700 x 700 window, a curve that
 #: leaves a small window on every side (its pixels off the window must be skipped, and it
 #: crosses x = width and y = height, where a test `x <= width` indexes past the end), a
-#: curve on a 24 x 24 window already painted grey (:data:`GREY`: painting a pixel green sets
-#: all three channels, not only the green one), then lines on the window's edges, where a
+#: curve on a 24 x 24 window already painted grey (:data:`GREY`: a pixel painted green is
+#: (0, 1, 0), or keeps its red and blue when only its green channel is set, as the reports
+#: do; the rest of the window stays grey), then lines on the window's edges, where a
 #: test one off (`0 < x`, `x <= width`, `0 < y`, `y <= height`, `-1 <= y`) paints too much or
 #: too little: x = 0 and y = 0 exactly (painted), a line that ends at x = width and one that
 #: ends at y = height (their last point skipped), and y = -0.5 (skipped, although int(-0.5)
@@ -96,8 +97,8 @@ GREY_CASE = 2
 #: points lie on pixel edges on purpose: it is a probe, never a case.)
 ACCUMULATION_PROBE = {"control_points": np.array([[699.0, 0.5], [-1301.0, 0.5]]), "shape": (2, 700)}
 GREEN = (0.0, 1.0, 0.0)
-#: The colour of the window painted before the loop runs: a pixel painted green must be
-#: (0, 1, 0) there too, so setting only the green channel (window[y, x, 1] = 1) shows.
+#: The colour of the window painted before the loop runs: a loop must leave the pixels it
+#: does not paint as they are, and a pixel's red and blue as they are or at 0.
 GREY = (0.25, 0.25, 0.25)
 #: How near a whole x or y, relative to the control points' size, a curve point counts as
 #: within rounding of a pixel edge: a thousand times the few units in the last place that any
@@ -263,7 +264,10 @@ def _painted(image: np.ndarray) -> tuple[np.ndarray, tuple[int, int, tuple] | No
     rows, columns = np.nonzero(painted)
     pixels = np.column_stack([columns, rows]).astype(np.int64)
     colours = image[rows, columns].astype(float)
-    wrong = ~(colours == GREEN).all(axis=1)
+    # Green either way the lesson allows: the whole pixel (0, 1, 0), or the green channel
+    # alone, as every report writes it (window[y, x, 1] = 1), red and blue left as they were.
+    green_channel = (colours == (GREY[0], 1.0, GREY[2])).all(axis=1)
+    wrong = ~((colours == GREEN).all(axis=1) | green_channel)
     wrong_colour = None
     if wrong.any():
         k = int(np.argmax(wrong))
@@ -327,14 +331,6 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
             same_pixels(expected, _pixels_of(given))
         )
 
-    def green_channel_match(expected: Any, given: Any) -> bool:
-        wrong = getattr(given, "wrong_colour", None)
-        return (
-            wrong is not None
-            and (wrong[2][0], wrong[2][2]) == (GREY[0], GREY[2])
-            and bool(same_pixels(expected, _pixels_of(given)))
-        )
-
     def copy_match(expected: Any, given: Any) -> bool:
         returned = getattr(given, "returned_pixels", None)
         return (
@@ -353,17 +349,6 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
         # The colours first: with the right pixels in the wrong colour, every mistake that only
         # compares pixels and agrees with the reference on this case (off-window points
         # wrapped, when there are none) would match too.
-        Mistake(
-            _("only the green channel"),
-            _(
-                "you set only the green channel, window[y, x, 1] = 1, as some reports do: this "
-                "window was painted grey before your loop ran, so your pixels kept their red and "
-                "blue. Paint the whole pixel green, window[y, x] = (0, 1, 0), as the GAMES101 "
-                "handout does."
-            ),
-            bezier_reference,
-            matches=green_channel_match,
-        ),
         Mistake(
             _("the wrong colour"),
             _(

@@ -10,13 +10,14 @@ gone from the Chinese one, which must hold Chinese. The report's frame ("case 1 
 
 import re
 from pathlib import Path
+from unittest import mock
 
 import numpy as np
 import pytest
 from babel.messages.pofile import read_po
 
 import course
-from course.check import base, sandbox
+from course.check import base, pictures, sandbox
 from course.check.pictures import curve_picture
 from course.lessons.l01_de_casteljau import check as de_casteljau
 from course.lessons.l02_bernstein import check as bernstein
@@ -159,8 +160,8 @@ CHECKS = [
     (de_casteljau.bezier, _copy_painter),
     (bernstein.comb, _float_comb),
     (bernstein.naive_bezier, _reversed_point),
-    (supersampling.bilinear_lookup, _whole_centres),
-    (supersampling.image_supersampling, _divided_by_rate),
+    (supersampling.bilinear_sample, _whole_centres),
+    (supersampling.supersample, _divided_by_rate),
     (antialiasing.bilinear_splat, _one_pixel),
     (antialiasing.arc_length_weights, _counting),
     (poisson.poisson_boundary, _flipped_ring),
@@ -217,3 +218,55 @@ def test_a_single_point_s_picture_marks_where_it_should_be():
     assert plain.startswith(b"\x89PNG") and marked != plain
     with pytest.raises(ValueError, match="expected_point must be finite"):
         curve_picture(control, curve, mine, expected_point=[[np.nan, 0.0]])
+
+
+def tick_labels(axes, axis):
+    """The ticks of ``axes``' x or y axis, as {position: label}."""
+    ticks = getattr(axes, f"get_{axis}ticks")()
+    labels = [label.get_text() for label in getattr(axes, f"get_{axis}ticklabels")()]
+    return dict(zip(ticks.tolist(), labels, strict=True))
+
+
+def test_a_pixel_picture_numbers_pixels_as_the_lessons_figures_do():
+    # The lessons' figures draw pixel (x, y) as the square from (x, y) to (x + 1, y + 1), with
+    # whole ticks on pixel corners: a triangle's vertex at (0, 0) shows at the ticks (0, 0).
+    triangle = [(0, 0), (6, 0), (0, 4)]
+    figure = pictures._pixel_figure([[0, 0], [1, 0]], [[0, 0]], 16, 18, "", triangle)
+    axes = figure.axes[0]
+    for axis in ("x", "y"):
+        assert all(float(label) == tick for tick, label in tick_labels(axes, axis).items())
+    assert 0.0 in tick_labels(axes, "x") and 0.0 in tick_labels(axes, "y")
+    (outline,) = axes.lines
+    assert tuple(outline.get_xydata()[0]) == (0.0, 0.0)
+    left, right, bottom, top = axes.images[0].get_extent()
+    assert (axes.get_xlim(), axes.get_ylim()) == ((left, right), (bottom, top))
+    assert (right - left, bottom - top) == axes.images[0].get_array().shape[::-1]
+
+
+def test_a_pixel_picture_frames_a_small_case_whole_and_a_large_one_at_its_first_difference():
+    # The issue's picture: a 16 x 16 window around a triangle in one corner, mostly empty.
+    corners = [(1, 1), (9, 2), (5, 8)]
+    pixels = [[x, y] for y in range(2, 8) for x in range(3, 8)]
+    axes = pictures._pixel_figure(pixels, pixels[1:], 16, 18, "", corners).axes[0]
+    assert axes.get_xlim() == (0.0, 10.0) and axes.get_ylim() == (9.0, 0.0)
+    line = [[x, 3] for x in range(40)]
+    axes = pictures._pixel_figure(line, line[:30] + line[31:], 16, 18, "", None).axes[0]
+    low, high = axes.get_xlim()
+    assert high - low == 16 and low <= 30 < high  # the missing pixel (30, 3), in a 16 window
+
+
+def test_an_image_pictures_difference_panel_puts_its_ticks_on_pixel_corners():
+    picture = np.zeros((4, 6))
+    figure = mock_figure_of(pictures.image_picture, picture, picture)
+    difference = next(a for a in figure.axes if a.get_title() == "yours minus expected")
+    assert tuple(difference.images[0].get_extent()) == (0, 6, 4, 0)
+    assert list(difference.get_xticks()) == [0, 2, 4, 6]
+    assert list(difference.get_yticks()) == [0, 1, 2, 3, 4]
+
+
+def mock_figure_of(function, *arguments):
+    """The figure ``function`` draws, caught where it is turned into a PNG."""
+    caught = []
+    with mock.patch.object(pictures, "figure_png", lambda figure: caught.append(figure) or b""):
+        function(*arguments)
+    return caught[0]

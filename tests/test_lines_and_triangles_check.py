@@ -227,9 +227,9 @@ def test_draw_triangle_filled_names_each_known_mistake_with_a_pixel_picture():
         )
     )
     assert corners.mistake == "pixel corners for centres" and corners.picture is not None
+    assert "far corner (x + 1, y + 1)" in str(corners)
     opened = check.draw_triangle_filled(precomputed(triangle, check._TRIANGLE_CASES, rule="open"))
-    # Case 1 fails first, and there open and mirrored rules both leave out one left-edge centre.
-    assert opened.mistake == "a centre on a left edge left out"
+    assert opened.mistake == "every edge open" and "case 5 is wrong" in str(opened)
 
 
 def fill_by_rule(p0, p1, p2, left=True, right=False, top=True, bottom=False, snap=None):
@@ -277,8 +277,9 @@ def test_the_reference_rule_written_independently_passes():
     [
         ({"bottom": True}, "the bottom row filled"),
         ({"top": False}, "the top row left out"),
-        ({"left": False, "right": True}, "a centre on a left edge left out"),
-        ({"left": False, "top": False}, "a centre on a left edge left out"),
+        ({"left": False, "right": True}, "the rule mirrored"),
+        ({"left": False, "top": False}, "every edge open"),
+        ({"left": False}, "a centre on a left edge left out"),
         ({"snap": round}, "the vertices rounded"),
         ({"snap": int}, "the vertices made whole"),
     ],
@@ -300,6 +301,93 @@ def test_a_mirrored_rule_is_told_from_an_open_one_where_a_case_can_tell_them_apa
     assert mistakes.same_or_nothing(opened, np.array(fill_by_rule(**case, left=False, top=False)))
     same = {"p0": (1, 1), "p1": (9, 2), "p2": (4, 8)}
     assert mistakes.unless_same(mistakes.mirrored_rule, mistakes.open_rule, **same) is None
+
+
+@pytest.mark.parametrize("number", range(1, len(check._TRIANGLE_CASES) + 1))
+def test_left_edges_open_is_the_lessons_rule_with_the_left_edges_left_out(number):
+    case = dict(zip(("p0", "p1", "p2"), check._TRIANGLE_CASES[number - 1], strict=True))
+    assert sorted(map(tuple, mistakes.left_edges_open(**case).tolist())) == sorted(
+        fill_by_rule(**case, left=False)
+    )
+
+
+def test_the_first_case_an_edge_rule_fails_tells_each_rule_from_the_others():
+    # The three rules that leave out a centre on a left edge differ on the right and top edges;
+    # the first case with a centre on an edge has centres on all three kinds.
+    rules = {
+        "the rule mirrored": {"left": False, "right": True},
+        "every edge open": {"left": False, "top": False},
+        "a centre on a left edge left out": {"left": False},
+        "every edge closed": {"right": True, "bottom": True},
+        "the top row left out": {"top": False},
+    }
+    for mistake, options in rules.items():
+        result = check.draw_triangle_filled(
+            lambda p0, p1, p2, o=options: fill_by_rule(p0, p1, p2, **o)
+        )
+        assert result.mistake == mistake and "case 5 is wrong" in str(result), str(result)
+
+
+def corner_sampling(p0, p1, p2, corner=(0, 0), rule="top-left"):
+    """A student's fill that tests a pixel's corner (x + corner), not its centre, by edge
+    functions: each edge keeps a point on it by ``rule`` ("top-left", "closed", "open", or
+    "mirrored": right and top edges in)."""
+    (ax, ay), (bx, by), (cx, cy) = p0, p1, p2
+    area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    if area == 0:
+        return []
+    if area < 0:
+        (bx, by), (cx, cy) = (cx, cy), (bx, by)
+    edges = [((ax, ay), (bx, by)), ((bx, by), (cx, cy)), ((cx, cy), (ax, ay))]
+    pixels = []
+    for row in range(math.floor(min(ay, by, cy)) - 1, math.ceil(max(ay, by, cy)) + 1):
+        for column in range(math.floor(min(ax, bx, cx)) - 1, math.ceil(max(ax, bx, cx)) + 1):
+            px, py = column + corner[0], row + corner[1]
+            inside = True
+            for (x0, y0), (x1, y1) in edges:
+                value = (x1 - x0) * (py - y0) - (y1 - y0) * (px - x0)
+                keep = {
+                    "top-left": y1 < y0 or (y1 == y0 and x1 > x0),
+                    "closed": True,
+                    "open": False,
+                    "mirrored": y1 > y0 or (y1 == y0 and x1 > x0),
+                }[rule]
+                inside &= value > 0 or (value == 0 and keep)
+            if inside:
+                pixels.append((column, row))
+    return pixels
+
+
+def scanline_through_corners(p0, p1, p2):
+    """The lab's scanline fill with the rows' y at each row's top, y = row, not row + 0.5."""
+    top, middle, bottom = sorted([p0, p1, p2], key=lambda p: p[1])
+    pixels = []
+    for row in range(math.ceil(top[1]), math.ceil(bottom[1])):
+        y = row
+        x_long = top[0] + (y - top[1]) * (bottom[0] - top[0]) / (bottom[1] - top[1])
+        a, b = (top, middle) if y < middle[1] else (middle, bottom)
+        x_short = a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+        left, right = min(x_long, x_short), max(x_long, x_short)
+        pixels += [(x, row) for x in range(math.ceil(left), math.ceil(right))]
+    return pixels
+
+
+@pytest.mark.parametrize("rule", ["top-left", "closed", "open", "mirrored"])
+@pytest.mark.parametrize(
+    ("corner", "said"), [((0, 0), "corner (x, y)"), ((1, 1), "far corner (x + 1, y + 1)")]
+)
+def test_a_pixel_corner_tested_for_its_centre_is_named_under_any_edge_rule(rule, corner, said):
+    result = check.draw_triangle_filled(
+        lambda p0, p1, p2: corner_sampling(p0, p1, p2, corner=corner, rule=rule)
+    )
+    assert result.mistake == "pixel corners for centres", str(result)
+    assert f"you tested the pixel's {said}, not its centre" in str(result)
+
+
+def test_a_scanline_through_the_rows_tops_is_named_pixel_corners():
+    result = check.draw_triangle_filled(scanline_through_corners)
+    assert result.mistake == "pixel corners for centres" and "corner (x, y)" in str(result)
+    assert "moved half a pixel right and down" in str(result)
 
 
 def test_the_bottom_row_mistake_adds_the_flat_bottom_row_over_half_open_spans():
@@ -373,12 +461,48 @@ def separate_steps(p0, p1):
 
 
 def test_any_4_connected_staircase_is_named_not_only_the_librarys():
-    # Its corners turn otherwise than course.raster.line_4connected's on case 1.
+    # Its corners turn otherwise than course.raster.line_4connected's on case 1, so it is not
+    # the report's loop, and the report's cause is not said.
     assert separate_steps((2, 3), (9, 5)) != line_4connected((2, 3), (9, 5)).tolist()
     result = check.draw_line(separate_steps)
-    assert result.mistake == "the report's staircase"
+    assert result.mistake == "a 4-connected staircase"
     assert "2 extra, first at (x, y) = (4, 3)" in str(result)
     assert "left an extra pixel in the corner: a 4-connected staircase" in str(result)
+    assert "report" not in str(result)
+
+
+def fine_t_loop(p0, p1, samples=1000, rounding=round):
+    """The issue's float t loop: t in small steps from 0 to 1, a pixel kept when it is new."""
+    (x0, y0), (x1, y1) = p0, p1
+    pixels = []
+    for k in range(samples + 1):
+        t = k / samples
+        pixel = (rounding(x0 + t * (x1 - x0)), rounding(y0 + t * (y1 - y0)))
+        if not pixels or pixels[-1] != pixel:
+            pixels.append(pixel)
+    return pixels
+
+
+@pytest.mark.parametrize(
+    "loop",
+    [
+        fine_t_loop,
+        lambda p0, p1: fine_t_loop(p0, p1, samples=100),
+        lambda p0, p1: fine_t_loop(p0, p1, samples=37),
+        lambda p0, p1: fine_t_loop(p0, p1, rounding=lambda v: math.floor(v + 0.5)),
+    ],
+)
+def test_a_float_t_loop_with_its_repeats_dropped_is_named_for_what_it_does(loop):
+    result = check.draw_line(loop)
+    assert result.mistake == "every pixel the line crosses", str(result)
+    assert "a float t stepped finely" in str(result) and "report" not in str(result)
+    assert "2 extra, first at (x, y) = (4, 3)" in str(result)
+
+
+def test_the_reports_loop_is_named_with_the_reports_test():
+    result = check.draw_line(the_reports_loop)
+    assert result.mistake == "the report's staircase"
+    assert "`if (err2 > -dy) ... else ...`" in str(result)
 
 
 @pytest.fixture
@@ -412,13 +536,6 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
 
 
 # --- graded: cases drawn for each submission ------------------------------------------------
-
-#: Case 1 fails the mirrored and the open rules first, and there both leave out one left-edge
-#: centre: the fixed cases name them so, and so must the drawn ones.
-NAMED_AS_THE_LEFT_EDGE = {
-    "the rule mirrored": "a centre on a left edge left out",
-    "every edge open": "a centre on a left edge left out",
-}
 
 
 def octant_of(case):
@@ -456,17 +573,16 @@ def test_graded_triangle_cases_are_drawn_in_the_fixed_cases_families():
         corners = [np.array([c["p0"], c["p1"], c["p2"]], dtype=float) for c in cases]
         wound = [np.sign(twice_area(c)) for c in cases]
         assert wound[:10] + wound[11:] == [1, -1, 1, -1, 1, 1, 1, 1, 0, 0, -1, 1]
-        assert all((c == np.round(c)).all() for c in corners[:6] + corners[8:10])
-        for number in (6, 11):  # vertices on pixel centres
+        assert all((c == np.round(c)).all() for c in corners[:4] + corners[5:7] + corners[8:10])
+        for number in (4, 11):  # vertices on pixel centres
             assert (corners[number] % 1 == 0.5).all()
+        for number in (7, 12):  # float vertices: no centre within the library's snap of an edge
+            assert check._centres_clear_of_edges(corners[number])
         assert (corners[10][:, 1].max() - corners[10][:, 1].min()) < 0.5
         # The same pixels, each case, as in the fixed case: none, a few, or many.
         assert [len(triangle(**c)) == 0 for c in cases] == [len(triangle(**c)) == 0 for c in fixed]
 
 
-@pytest.mark.parametrize(
-    ("name", "named_otherwise"),
-    [("draw_line", {}), ("draw_triangle_filled", NAMED_AS_THE_LEFT_EDGE)],
-)
-def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name, named_otherwise):
-    graded_draws.check_graded(name, named_otherwise=named_otherwise)
+@pytest.mark.parametrize("name", ["draw_line", "draw_triangle_filled"])
+def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name):
+    graded_draws.check_graded(name)

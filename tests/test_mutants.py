@@ -71,7 +71,7 @@ SURVIVORS: list[tuple[str, str, str]] = [
         "which the checker accepts either way",
     ),
     (
-        "image_supersampling",
+        "supersample",
         "line 11: / rate ** 2  ->  / (-rate) ** 2",
         "equivalent: (-rate) ** 2 == rate ** 2",
     ),

@@ -2,6 +2,7 @@
 
 import linecache
 
+import numpy as np
 import pytest
 
 from course.check import budget, sandbox
@@ -64,3 +65,16 @@ def test_a_loop_that_computes_forever_is_stopped():
     with pytest.raises(sandbox.CaseStopped) as stopped:
         sandbox.run_bounded(computes_forever, seconds=0.05)
     assert stopped.value.kind == "time"
+
+
+@pytest.mark.parametrize(
+    ("before", "after", "said"),
+    [
+        ([1.0, 1.0], [1.0, 1.0000001], "element [1] was 1.0, is now 1.0000001"),
+        ([0.0, 0.5], [0.0, 2.0], "element [1] was 0.5, is now 2"),
+        ([12345678], [12345679], "element [0] was 12345678, is now 12345679"),
+    ],
+)
+def test_a_changed_element_is_shown_with_the_digits_that_tell_its_values_apart(before, after, said):
+    names, old, new = ("image",), (np.array(before),), (np.array(after),)
+    assert sandbox.changed_argument(names, old, new) == f"image: {said}"

@@ -48,12 +48,12 @@ def test_the_supersampling_checker_passes_a_loop_and_names_the_reports_version()
                         result[row, column] += bilinear_sample(image, x, y) / rate**2
         return result
 
-    assert check.image_supersampling(student)
-    assert check.bilinear_lookup(bilinear_sample)
-    result = check.image_supersampling(reports_version)
+    assert check.supersample(student)
+    assert check.bilinear_sample(bilinear_sample)
+    result = check.supersample(reports_version)
     assert not result and "case 1 is wrong" in result.message
     assert result.mistake == "the report's two shifts"
-    result = check.image_supersampling(lambda image, out_shape, rate: image[: out_shape[0]])
+    result = check.supersample(lambda image, out_shape, rate: image[: out_shape[0]])
     assert not result and "case 1 is wrong" in result.message
 
 
@@ -117,9 +117,9 @@ def test_the_test_loops_agree_with_the_librarys_shifted_versions():
 
 
 def test_each_half_of_the_reports_shift_is_named_with_a_difference_picture():
-    corners = check.image_supersampling(corner_samples)
+    corners = check.supersample(corner_samples)
     assert corners.mistake == "samples at the sub-pixel corners" and corners.picture is not None
-    centres = check.image_supersampling(integer_centres)
+    centres = check.supersample(integer_centres)
     assert centres.mistake == "pixel centres at whole numbers"
     assert "first wrong value: [0, 1]" in str(centres)
 
@@ -131,14 +131,14 @@ def test_a_call_to_the_librarys_supersampling_or_lookup_is_told_to_write_it():
         lambda image, out_shape, rate: supersample_shifted(image, out_shape, rate),
         lambda image, out_shape, rate: bilinear(image, 0.5, 0.5) + 0 * image[: out_shape[0]],
     ):
-        result = check.image_supersampling(student)
+        result = check.supersample(student)
         assert not result
         assert result.message.startswith("your function calls course.sampling.")
         assert "the library's own answer: this exercise writes it" in result.message
 
 
 def test_pixel_centres_at_whole_numbers_are_named_not_called_the_nearest_pixel():
-    result = check.bilinear_lookup(
+    result = check.bilinear_sample(
         lambda image, x, y: bilinear_sample(image, x, y, pixel_centre=0.0)
     )
     assert not result and result.mistake == "pixel centres at whole numbers"
@@ -148,13 +148,13 @@ def test_pixel_centres_at_whole_numbers_are_named_not_called_the_nearest_pixel()
 def test_x_and_y_swapped_differs_from_the_answer_and_is_named():
     image = check._lookup_cases()[0]["image"]
     assert not np.isclose(bilinear(image, 0.8, 1.3), bilinear(image, 1.3, 0.8))
-    result = check.bilinear_lookup(lambda image, x, y: bilinear_sample(image, y, x))
+    result = check.bilinear_sample(lambda image, x, y: bilinear_sample(image, y, x))
     assert not result and result.mistake == "x and y swapped"
 
 
 def test_the_reports_name_the_exercises_as_the_lesson_does():
-    assert str(check.bilinear_lookup(lambda image, x, y: 0.0)).startswith("FAIL bilinear_sample:")
-    assert str(check.image_supersampling(lambda image, out_shape, rate: image)).startswith(
+    assert str(check.bilinear_sample(lambda image, x, y: 0.0)).startswith("FAIL bilinear_sample:")
+    assert str(check.supersample(lambda image, out_shape, rate: image)).startswith(
         "FAIL supersample:"
     )
 
@@ -181,9 +181,9 @@ def _blend(swap: bool = False, flip: bool = False):
 
 def test_flipped_weights_and_swapped_axes_are_told_apart():
     # At (1.3, 0.8) both give 0.575: the first case is one where they differ.
-    assert check.bilinear_lookup(_blend())
-    assert check.bilinear_lookup(_blend(swap=True)).mistake == "x and y swapped"
-    assert check.bilinear_lookup(_blend(flip=True)).mistake == "the weights flipped"
+    assert check.bilinear_sample(_blend())
+    assert check.bilinear_sample(_blend(swap=True)).mistake == "x and y swapped"
+    assert check.bilinear_sample(_blend(flip=True)).mistake == "the weights flipped"
 
 
 def _index_clamped(whole):
@@ -206,8 +206,8 @@ def _index_clamped(whole):
 
 
 def test_int_for_floor_is_named_and_the_same_lookup_with_floor_passes():
-    assert check.bilinear_lookup(_index_clamped(math.floor))
-    result = check.bilinear_lookup(_index_clamped(int))
+    assert check.bilinear_sample(_index_clamped(math.floor))
+    result = check.bilinear_sample(_index_clamped(int))
     assert result.mistake == "int() where floor belongs"
     assert "x=-0.4" in str(result)
 
@@ -227,10 +227,10 @@ def test_offsets_left_unscaled_are_named_and_not_blamed_on_a_correct_lookup():
                         result[row, column] += bilinear_sample(image, x, y) / rate**2
         return result
 
-    result = check.image_supersampling(unscaled)
+    result = check.supersample(unscaled)
     assert result.mistake == "the sub-pixel offsets not scaled"
     assert "x = (c + (i + 0.5) / rate) W / w" in str(result)
-    assert check.image_supersampling(reports_version).mistake == "the report's two shifts"
+    assert check.supersample(reports_version).mistake == "the report's two shifts"
 
 
 def test_swapped_scales_are_named_not_taken_for_a_whole_scale():
@@ -246,7 +246,7 @@ def test_swapped_scales_are_named_not_taken_for_a_whole_scale():
                         result[row, column] += bilinear_sample(image, x, y) / rate**2
         return result
 
-    assert check.image_supersampling(swapped).mistake == "the two scales swapped"
+    assert check.supersample(swapped).mistake == "the two scales swapped"
 
 
 # --- graded: cases drawn for each submission ------------------------------------------------
@@ -254,7 +254,7 @@ def test_swapped_scales_are_named_not_taken_for_a_whole_scale():
 
 def test_graded_supersampling_cases_are_drawn_in_the_fixed_cases_families():
     fixed = check._cases()
-    for cases in graded_draws.check_drawn_cases("image_supersampling"):
+    for cases in graded_draws.check_drawn_cases("supersample"):
         for case, like in zip(cases, fixed, strict=True):
             assert case["image"].shape == like["image"].shape
             assert (case["out_shape"], case["rate"]) == (like["out_shape"], like["rate"])
@@ -266,7 +266,7 @@ def test_graded_supersampling_cases_are_drawn_in_the_fixed_cases_families():
 
 
 def test_graded_lookup_cases_are_drawn_in_the_fixed_cases_families():
-    for cases in graded_draws.check_drawn_cases("bilinear_lookup"):
+    for cases in graded_draws.check_drawn_cases("bilinear_sample"):
         gray, colour = cases[0]["image"], cases[-1]["image"]
         assert gray.shape == (3, 4) and colour.shape == (2, 3, 3)
         assert all(c["image"] is gray for c in cases[:10])
@@ -278,6 +278,42 @@ def test_graded_lookup_cases_are_drawn_in_the_fixed_cases_families():
         assert -0.5 < x[5] < 0.5 and y[6] < 0.5
 
 
-@pytest.mark.parametrize("name", ["image_supersampling", "bilinear_lookup"])
+@pytest.mark.parametrize("name", ["supersample", "bilinear_sample"])
 def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name):
     graded_draws.check_graded(name)
+
+
+def loop_supersample(image, out_shape, rate, scale=lambda size, out: size / out):
+    """The lab's loop over the test lookup; ``scale`` makes the input size per output pixel."""
+    (height, width), (in_height, in_width) = out_shape, image.shape[:2]
+    sx, sy = scale(in_width, width), scale(in_height, height)
+    result = np.zeros((height, width, *image.shape[2:]))
+    for row in range(height):
+        for column in range(width):
+            for j in range(rate):
+                for i in range(rate):
+                    x, y = (column + (i + 0.5) / rate) * sx, (row + (j + 0.5) / rate) * sy
+                    result[row, column] += bilinear_sample(image, x, y) / rate**2
+    return result
+
+
+def test_the_scale_made_whole_is_named_with_no_sizes_of_another_case():
+    # The issue's student: W // w and H // h. Case 1 (12 -> 5 wide, 6 -> 4 high) fails first,
+    # so the words must not speak of 25 // 3, another case's sizes.
+    whole = check.supersample(
+        lambda image, out_shape, rate: loop_supersample(image, out_shape, rate, lambda a, b: a // b)
+    )
+    assert whole.mistake == "the scale made whole" and "case 1 is wrong" in str(whole)
+    assert "25 // 3" not in str(whole) and "8.33" not in str(whole)
+    assert "W // w for W / w, H // h for H / h" in str(whole)
+
+
+def test_an_input_changed_by_one_part_in_ten_million_is_shown_changed():
+    # The issue's report said "element [0, 1] was 1, is now 1": six digits hid the change.
+    def scales_its_input(image, out_shape, rate):
+        image *= 1.0000001
+        return loop_supersample(image, out_shape, rate)
+
+    result = check.supersample(scales_its_input)
+    assert not result
+    assert "changed its input image: element [0, 1] was 1.0, is now 1.0000001" in str(result)

@@ -12,6 +12,15 @@ lesson's chapter, declared with :func:`exercise`::
     def draw_line(student):
         return run_cases("draw_line", student, cases, line, compare, ...)
 
+An exercise has one name: the function the student writes, its checker (``check.<name>``),
+the name its reports open with (``FAIL <name>: ...``, the first argument of ``run_cases``) and
+its hint key (``check.hint("<name>")``) are the same word, and nbgrader's grade ids are
+``<name>`` and ``<name>_test``. The declaration therefore takes every name from the checker's.
+``function=`` and ``reported_as=`` are kept for one release, for the chapters that still give
+an exercise a second name (``tests/test_exercise_names.py`` lists them); a new exercise uses
+neither. A handout's own name for the exercise (``"DrawLine"``) is one of ``handout_names``,
+which ``check.hint()`` answers to as well.
+
 Everything else is derived from the declaration: the hint table that ``check.hint(name)``
 reads (:func:`~course.check.hints.register_hints`), the messages for a call to a refused
 library answer (:func:`refused_messages`, which :func:`~course.check.base.run_cases` uses when
@@ -58,10 +67,11 @@ DEFAULT_REFUSAL = N_(
 class Exercise:
     """An exercise as its checker declares it.
 
-    ``name`` is the checker's (``check.<name>``); ``function`` the function the student
-    writes, which ``check.hint()`` is asked with; ``reported_as`` the name its reports open
-    with (``FAIL <reported_as>: ...``); ``handout_names`` are the handout's names for it, which
-    ``check.hint()`` accepts too. ``function`` and ``reported_as`` default to ``name``.
+    ``name`` is the checker's (``check.<name>``), and the exercise's one name: ``function``
+    (the function the student writes, which ``check.hint()`` is asked with) and
+    ``reported_as`` (the name its reports open with, ``FAIL <reported_as>: ...``) are ``name``
+    unless a chapter not yet renamed declares otherwise (:attr:`names`). ``handout_names`` are
+    the handout's names for it, which ``check.hint()`` accepts too.
     ``refuses`` lists the library's own answers: a student's code that calls one is told to
     write it, with :data:`DEFAULT_REFUSAL`; or it is a function that maps them to their
     messages, made in the language of the moment (:func:`refused_messages`).
@@ -86,6 +96,15 @@ class Exercise:
         """The module the checker is in: its chapter's ``check``."""
         return self.checker.__module__
 
+    @property
+    def names(self) -> tuple[str, ...]:
+        """The exercise's names, each once: the checker's, the function's, the report's.
+
+        One, as every exercise should have; more where a chapter still declares
+        ``function=`` or ``reported_as=`` otherwise.
+        """
+        return tuple(dict.fromkeys((self.name, self.function, self.reported_as)))
+
 
 _DECLARED: dict[str, Exercise] = {}
 
@@ -103,7 +122,10 @@ def exercise(
     """Declare the decorated checker an exercise: its hints and the library answers it refuses.
 
     ``hints`` and ``refuses`` are required, so a declaration that leaves one out fails at
-    import, naming it; the others default as :class:`Exercise` says.
+    import, naming it; the others default as :class:`Exercise` says. The exercise's name is
+    the checker's: the student's function, the report and the hint key share it.
+    ``function`` and ``reported_as`` give a second name, as a chapter not yet renamed does;
+    kept for one release, a new exercise leaves them out.
 
     Examples
     --------
@@ -148,6 +170,7 @@ def exercise(
                     module=checker.__module__, name=name, steps=", ".join(blank)
                 )
             )
+        # One name: the report's is the function's, the function's the checker's.
         declaration = Exercise(
             name=name,
             function=function or name,

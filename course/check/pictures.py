@@ -123,14 +123,24 @@ def pixel_picture(
 ) -> bytes:
     """Pixels around the first difference, as a PNG: both in gray, missing and extra in colour.
 
-    ``expected`` and ``given`` are (K, 2) integer (x, y) pixels. The view is
-    ``window`` x ``window`` pixels centred on the first missing pixel in
-    reading order (else the first extra one), each ``zoom`` x ``zoom``
-    screen pixels, so nothing is resampled. The axes count pixels (pixel
-    (x, y) is the square from (x, y) to (x + 1, y + 1)); ``outline``, if
-    given, is a polygon in those coordinates drawn over the pixels (a
-    triangle's edges).
+    ``expected`` and ``given`` are (K, 2) integer (x, y) pixels; ``outline``, if given, is a
+    polygon drawn over them (a triangle's edges). The view frames them all, and the outline,
+    with a pixel to spare, when that fits in ``window`` pixels each way; along an axis where
+    it does not, it is ``window`` pixels centred on the first missing pixel in reading order
+    (else the first extra one), kept inside what there is to see. Each pixel is ``zoom`` x
+    ``zoom`` screen pixels, so nothing is resampled.
+
+    The axes number pixels as the lessons' figures do: the ticks are coordinates, on pixel
+    corners, so pixel (x, y) is the square from tick x to tick x + 1 (its centre at
+    (x + 0.5, y + 0.5)), and an outline's vertex at (0, 0) is drawn at the ticks (0, 0).
     """
+    return figure_png(_pixel_figure(expected, given, window, zoom, title, outline))
+
+
+def _pixel_figure(
+    expected: Any, given: Any, window: int, zoom: int, title: str, outline: Any
+) -> Figure:
+    """:func:`pixel_picture`'s figure, before it is drawn."""
     window = as_int(window, "window", minimum=1, maximum=256)
     zoom = as_int(zoom, "zoom", minimum=1, maximum=64)
     want = _pixel_keys(expected, "expected")
@@ -144,35 +154,39 @@ def pixel_picture(
     )
     differing = np.union1d(missing, extra)
     first = next((group[0] for group in (missing, differing, want, have) if len(group)), None)
-    centre = (0, 0) if first is None else _pixel_at(first)
-    left, top = centre[0] - window // 2, centre[1] - window // 2
-    codes = np.zeros((window, window), dtype=int)
+    left, top, width, height = _frame(np.union1d(want, have), outline, first, window)
+    codes = np.zeros((height, width), dtype=int)
     for keys, code in ((both, 1), (missing, 2), (extra, 3)):
         xs, ys = keys % _WIDE - _OFFSET - left, keys // _WIDE - _OFFSET - top
-        inside = (xs >= 0) & (xs < window) & (ys >= 0) & (ys < window)
+        inside = (xs >= 0) & (xs < width) & (ys >= 0) & (ys < height)
         codes[ys[inside], xs[inside]] = code
-    side = window * zoom / 100  # inches at 100 dpi: one image pixel is zoom screen pixels
+    # Inches at 100 dpi: one image pixel is zoom screen pixels.
+    side_w, side_h = width * zoom / 100, height * zoom / 100
     margin, legend_width, title_height = 0.3, 1.5, 0.35
-    width, height = side + 2 * margin + legend_width, side + 2 * margin + title_height
-    figure = Figure(figsize=(width, height), dpi=100)
-    axes = figure.add_axes((margin / width, margin / height, side / width, side / height))
+    figure_w = side_w + 2 * margin + legend_width
+    figure_h = max(side_h, 0.9) + 2 * margin + title_height  # room for the legend's three rows
+    figure = Figure(figsize=(figure_w, figure_h), dpi=100)
+    axes = figure.add_axes(
+        (margin / figure_w, margin / figure_h, side_w / figure_w, side_h / figure_h)
+    )
     colours = ListedColormap(["white", _BOTH, MISSING, EXTRA])
-    extent = (left, left + window, top + window, top)
+    extent = (left, left + width, top + height, top)
     axes.imshow(codes, cmap=colours, vmin=0, vmax=3, interpolation="nearest", extent=extent)
-    edges = np.arange(window + 1)
-    grid = [[(left + e, top), (left + e, top + window)] for e in edges]
-    grid += [[(left, top + e), (left + window, top + e)] for e in edges]
+    grid = [[(left + e, top), (left + e, top + height)] for e in range(width + 1)]
+    grid += [[(left, top + e), (left + width, top + e)] for e in range(height + 1)]
     axes.add_collection(LineCollection(grid, colors="0.85", linewidths=0.5))
     if outline is not None:
         closed = np.vstack([outline, outline[:1]])
         axes.plot(*closed.T, "-", color="black", linewidth=1.2)
-        axes.set_xlim(left, left + window)
-        axes.set_ylim(top + window, top)
-    every = max(1, window // 8)
-    axes.set_xticks([left + e + 0.5 for e in range(0, window, every)])
-    axes.set_xticklabels([str(left + e) for e in range(0, window, every)], fontsize=6)
-    axes.set_yticks([top + e + 0.5 for e in range(0, window, every)])
-    axes.set_yticklabels([str(top + e) for e in range(0, window, every)], fontsize=6)
+    axes.set_xlim(left, left + width)
+    axes.set_ylim(top + height, top)
+    every = max(1, max(width, height) // 8)
+    xs = [left + e for e in range(width + 1) if (left + e) % every == 0]
+    ys = [top + e for e in range(height + 1) if (top + e) % every == 0]
+    axes.set_xticks(xs)
+    axes.set_xticklabels([str(x) for x in xs], fontsize=6)
+    axes.set_yticks(ys)
+    axes.set_yticklabels([str(y) for y in ys], fontsize=6)
     axes.tick_params(length=2, pad=1)
     counts = (len(both), len(missing), len(extra))
     labels = (
@@ -186,24 +200,74 @@ def pixel_picture(
             for colour, label in zip((_BOTH, MISSING, EXTRA), labels, strict=True)
         ],
         loc="center left",
-        bbox_to_anchor=((side + 2 * margin) / width, 0.5),
+        bbox_to_anchor=((side_w + 2 * margin) / figure_w, 0.5),
         fontsize=8,
         frameon=False,
     )
     around = _("pixels ({left}..{right}, {top}..{bottom})").format(
-        left=left, right=left + window - 1, top=top, bottom=top + window - 1
+        left=left, right=left + width - 1, top=top, bottom=top + height - 1
     )
     axes.set_title(_translated(title) or around, fontsize=8)
-    return figure_png(figure)
+    return figure
+
+
+#: The fewest pixels a framed view shows each way: a one-pixel answer still has a neighbourhood.
+_SMALLEST_FRAME = 6
+
+
+def _frame(
+    keys: np.ndarray, outline: np.ndarray | None, first: Any, window: int
+) -> tuple[int, int, int, int]:
+    """(left, top, width, height) of the pixels :func:`pixel_picture` shows.
+
+    Along each axis: the pixels' and the outline's extent with one pixel to spare, widened to
+    :data:`_SMALLEST_FRAME` (or ``window``, if smaller) about its middle; when that is more
+    than ``window``, ``window`` pixels centred on ``first``, moved inside that extent.
+
+    Examples
+    --------
+    >>> triangle = np.array([[1.0, 1.0], [9.0, 2.0], [4.0, 8.0]])
+    >>> keys = _pixel_keys([[1, 1], [8, 2], [4, 7]], "pixels")
+    >>> _frame(keys, triangle, keys[0], 16)
+    (0, 0, 10, 9)
+    >>> far = _pixel_keys([[0, 0], [40, 0]], "pixels")
+    >>> _frame(far, None, far[-1], 16)
+    (26, -2, 16, 6)
+    """
+    if len(keys):
+        xs, ys = keys % _WIDE - _OFFSET, keys // _WIDE - _OFFSET
+        low = [int(xs.min()), int(ys.min())]
+        high = [int(xs.max()) + 1, int(ys.max()) + 1]  # the far corners: one past the last pixel
+    else:
+        low, high = [0, 0], [1, 1]
+    if outline is not None and len(outline):
+        low = [min(low[k], int(np.floor(outline[:, k].min()))) for k in (0, 1)]
+        high = [max(high[k], int(np.ceil(outline[:, k].max()))) for k in (0, 1)]
+    centre = (0, 0) if first is None else _pixel_at(first)
+    frame = []
+    for axis in (0, 1):
+        start, stop = low[axis] - 1, high[axis] + 1
+        size = stop - start
+        smallest = min(_SMALLEST_FRAME, window)
+        if size < smallest:
+            start -= (smallest - size) // 2
+            size = smallest
+        elif size > window:
+            start = min(max(centre[axis] - window // 2, start), stop - window)
+            size = window
+        frame.append((start, size))
+    (left, width), (top, height) = frame
+    return left, top, width, height
 
 
 def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     """Expected and given images and their difference, each pixel a square at a whole zoom.
 
-    The difference (given minus expected, the mean over colour channels) is
-    drawn red where the answer is too bright and blue where it is too dark,
-    with a colour bar in image units, so the place and the size of the error
-    show at a glance.
+    The difference (given minus expected, the mean over colour channels) is drawn red where
+    the answer is too bright and blue where it is too dark, with a colour bar in image units,
+    so the place and the size of the error show at a glance. Its axes number pixels as the
+    lessons' figures do: ticks on pixel corners, pixel (x, y) the square from tick x to
+    tick x + 1.
     """
     want = np.asarray(expected, dtype=float)
     have = np.asarray(given, dtype=float)
@@ -248,14 +312,17 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
         if picture.ndim == 3:
             style = {}
             picture = np.clip(picture, 0, 1)
-        shown = axes.imshow(picture, interpolation="nearest", **style)
+        # Image coordinates, as the lessons' figures have them: pixel (x, y) is the square
+        # from (x, y) to (x + 1, y + 1).
+        extent = (0, width, height, 0)
+        shown = axes.imshow(picture, interpolation="nearest", extent=extent, **style)
         axes.set_xticks([])
         axes.set_yticks([])
         axes.set_title(name, fontsize=8)
-    # Pixel numbers on the difference: x below it, y on its left, a few of each.
+    # Coordinates on the difference, x below it, y on its left, a few of each, on pixel corners.
     step_x, step_y = max(1, -(-width // 4)), max(1, -(-height // 4))
-    axes.set_xticks(range(0, width, step_x))
-    axes.set_yticks(range(0, height, step_y))
+    axes.set_xticks(range(0, width + 1, step_x))
+    axes.set_yticks(range(0, height + 1, step_y))
     axes.tick_params(labelsize=6, length=2, pad=1)
     bar_left = margin + 3 * slot + 2 * gap + 8
     colour_bar = figure.add_axes((bar_left / columns, bottom / rows, bar / columns, side_h / rows))

@@ -93,8 +93,9 @@ def _first_change(old: Any, new: Any) -> str | None:
             return None
         index = tuple(int(i) for i in np.argwhere(differ)[0])
         where = "[" + ", ".join(map(str, index)) + "]"
+        before, after = _told_apart(old[index], new[index])
         return _("element {where} was {old}, is now {new}").format(
-            where=where, old=f"{old[index]:.6g}", new=f"{new[index]:.6g}"
+            where=where, old=before, new=after
         )
     if isinstance(old, (list, tuple)):
         if not isinstance(new, type(old)) or len(new) != len(old):
@@ -111,6 +112,34 @@ def _first_change(old: Any, new: Any) -> str | None:
     if same:
         return None
     return _("it was {old}, is now {new}").format(old=_short(old), new=_short(new))
+
+
+def _told_apart(old: Any, new: Any) -> tuple[str, str]:
+    """Two differing array elements in words, with as many digits as it takes to tell them apart.
+
+    Six significant digits, unless both look the same at six: then each is written in full
+    (the shortest text that reads back as that number), so a change of one part in ten million
+    is not shown as "was 1, is now 1".
+
+    Examples
+    --------
+    >>> _told_apart(np.float64(0.5), np.float64(2.0))
+    ('0.5', '2')
+    >>> _told_apart(np.float64(1.0), np.float64(1.0000001))
+    ('1.0', '1.0000001')
+    >>> _told_apart(np.int64(12345678), np.int64(12345679))
+    ('12345678', '12345679')
+    """
+    old, new = np.asarray(old).item(), np.asarray(new).item()
+    if isinstance(old, (bool, int)) and isinstance(new, (bool, int)):
+        return str(old), str(new)
+    try:
+        short = f"{old:.6g}", f"{new:.6g}"
+    except (TypeError, ValueError):  # an object array's elements: their own text
+        return _short(old), _short(new)
+    if short[0] != short[1]:
+        return short
+    return repr(old), repr(new)
 
 
 def _short(value: Any) -> str:

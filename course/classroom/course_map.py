@@ -44,6 +44,7 @@ EXERCISE_GUIDE = N_("""### How an exercise works
 
 1. An exercise cell defines a function whose body is
    `raise NotImplementedError("your code here")`, and ends with a check: `check.name(name)`.
+   The function, its check and its hint, `check.hint("name")`, share that one name.
 2. Replace that line with your code and run the cell (Shift+Enter).
 3. The check prints **PASS**, or **FAIL** with the first case that went wrong: its inputs,
    what was expected, what your code gave and, when your answer is a known mistake, which

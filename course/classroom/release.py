@@ -92,7 +92,7 @@ class Exercise:
 
     #: The function the student writes.
     function: str
-    #: The checker's call that ends the cell, e.g. ``check.bilinear_lookup(bilinear_sample)``.
+    #: The checker's call that ends the cell, e.g. ``check.bilinear_sample(bilinear_sample)``.
     check: str
     #: The earlier exercises this one calls, checked with their grader answers.
     uses: tuple[str, ...]

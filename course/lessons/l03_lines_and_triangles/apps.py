@@ -55,22 +55,30 @@ TRIANGLE_GRID = 16
 
 
 def octant(dx: int, dy: int) -> int:
-    """The octant (0 to 7) of a direction, counted clockwise from +x in image space (y down).
+    """The octant (1 to 8) of a direction, counted clockwise from +x in image space (y down).
 
-    Octant 0 is x-major going right and (slightly) down; each next octant
-    turns 45 degrees clockwise on screen. A line of zero length is in octant 0.
+    Octant 1 is the lesson's first octant: going right with 0 <= dy <= dx, x the major axis.
+    Each next octant turns 45 degrees clockwise on screen. A diagonal belongs to the octant
+    whose major axis is x, as Bresenham's loop takes x as the major axis when |dx| = |dy|;
+    a line of zero length is in octant 1.
 
     Examples
     --------
     >>> [octant(5, 2), octant(2, 5), octant(-2, 5), octant(-5, 2)]
-    [0, 1, 2, 3]
+    [1, 2, 3, 4]
     >>> [octant(-5, -2), octant(-2, -5), octant(2, -5), octant(5, -2)]
-    [4, 5, 6, 7]
+    [5, 6, 7, 8]
+    >>> [octant(3, 3), octant(-3, 3), octant(-3, -3), octant(3, -3), octant(0, 0)]
+    [1, 4, 5, 8, 1]
     """
     dx, dy = as_int(dx, "dx"), as_int(dy, "dy")
-    angle = np.degrees(np.arctan2(dy, dx)) % 360
-    # Half-open 45-degree sectors: a diagonal starts the next octant.
-    return int(angle // 45) % 8
+    if abs(dx) >= abs(dy):  # x is the major axis: octants 1, 4, 5 and 8
+        if dx >= 0:
+            return 1 if dy >= 0 else 8
+        return 4 if dy >= 0 else 5
+    if dy > 0:  # y is the major axis, going down: 2 and 3
+        return 2 if dx >= 0 else 3
+    return 7 if dx >= 0 else 6
 
 
 class LineApp(SliderApp):

@@ -5,13 +5,15 @@ The student's functions return pixels, as :mod:`course.raster` does:
 order; ``draw_triangle_filled(p0, p1, p2)`` the pixels whose centres lie
 inside, each once, in any order (the lab fills them by scanline; any method
 that takes the same pixels passes). A failure shows the missing and extra
-pixels as a picture and names the handouts' mistakes: the report's
-4-connected staircase, a line drawn backwards or short of an end, and for
-triangles the closed and open edge rules, the bottom row filled, vertices
-rounded or made whole, the rule mirrored, and pixel corners taken for
-centres (:mod:`.mistakes` reproduces them). Pictures count pixels on their
-axes and draw the triangle's edges. An answer that calls the library's own
-line or fill is told to write it.
+pixels as a picture and names the handouts' mistakes: a 4-connected
+staircase (the report's loop, or every pixel a finely stepped float t
+crosses), a line drawn backwards or short of an end, and for triangles every
+edge closed or open, the rule mirrored, the left edges left out, the top row
+left out or the bottom row filled, vertices rounded or made whole, and a
+pixel corner tested for its centre (:mod:`.mistakes` reproduces them).
+Pictures frame the case, number pixels as the lesson's figures do (ticks
+on pixel corners) and draw the triangle's edges. An answer that calls the
+library's own line or fill is told to write it.
 
 Hints come in steps: a failure says where to look, the next failures say
 more; ``check.hint("draw_line")`` says more at once and
@@ -79,13 +81,15 @@ _LINE_CASES = [
 ]
 
 _TRIANGLE_CASES = [
-    ((1, 1), (9, 2), (4, 8)),
-    ((1, 1), (4, 8), (9, 2)),  # the other winding
+    ((1, 1), (9, 2), (5, 8)),  # no centre on an edge
+    ((1, 1), (5, 8), (9, 2)),  # the other winding
     ((0, 0), (8, 0), (4, 6)),  # flat top
     ((4, 0), (0, 6), (8, 6)),  # flat bottom
+    # Centres on a left, a top and a right edge (a vertex): the first case that fails an edge
+    # rule tells each rule from the others.
+    ((0.5, 0.5), (7.5, 0.5), (0.5, 5.5)),
     ((0, 0), (8, 8), (0, 8)),  # an edge through pixel centres
     ((0, 0), (8, 0), (8, 8)),  # its partner
-    ((0.5, 0.5), (7.5, 0.5), (0.5, 5.5)),  # edges through centres, vertices on them
     ((1.25, 0.75), (10.6, 3.2), (3.9, 9.35)),  # float vertices
     ((1, 1), (5, 3), (9, 5)),  # zero area: no pixels
     ((2, 2), (2, 2), (7, 4)),  # two equal vertices: no pixels
@@ -156,11 +160,11 @@ def _drawn_line_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
 def _drawn_triangle_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
     """Graded cases of ``_TRIANGLE_CASES``' families, in their order, drawn from ``rng``.
 
-    With integer vertices: a triangle and the same in the other winding, a flat top, a flat
-    bottom, a right isosceles triangle whose long edge runs through pixel centres and its
-    partner; with vertices on pixel centres: a flat top and a flat bottom on rows of centres;
-    float vertices (twice); a triangle of zero area and one with two equal vertices; one
-    thinner than a row. Vertices lie in [0, 13]; each case tells the named mistakes apart as
+    With integer vertices: a triangle and the same in the other winding, a flat top and a flat
+    bottom; with vertices on pixel centres, a flat top on a row of centres; with integer
+    vertices again, a right isosceles triangle whose long edge runs through pixel centres and
+    its partner; float vertices; a triangle of zero area and one with two equal vertices; one
+    thinner than a row; a flat bottom on a row of centres; float vertices again. Vertices lie in [0, 13]; each case tells the named mistakes apart as
     its fixed case does (:func:`~course.lessons.graded_cases.drawn_like`).
     """
 
@@ -202,10 +206,13 @@ def _drawn_triangle_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
         return (a, b, c) if twice_area > 0 else (a, c, b)
 
     def floats() -> tuple[Any, Any, Any]:
-        """Float vertices of a triangle of 10 pixels or more, as the fixed ones."""
+        """Float vertices of a triangle of 10 pixels or more, as the fixed ones, no pixel
+        centre within :data:`_CLEARANCE` of an edge."""
         while True:
-            (ax, ay), (bx, by), (cx, cy) = rng.uniform(0, 11, (3, 2)).round(2).tolist()
-            if abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) >= 20:
+            corners = rng.uniform(0, 11, (3, 2)).round(2)
+            (ax, ay), (bx, by), (cx, cy) = corners.tolist()
+            area_enough = abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) >= 20
+            if area_enough and _centres_clear_of_edges(corners):
                 return wound(((ax, ay), (bx, by), (cx, cy)))
 
     def collinear() -> tuple[Any, Any, Any]:
@@ -227,9 +234,9 @@ def _drawn_triangle_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
         two_windings,
         one(lambda: flat(top=True)),
         one(lambda: flat(top=False)),
+        one(lambda: flat(top=True, on_centres=True)),
         one(lambda: right_isosceles(partner=False)),
         one(lambda: right_isosceles(partner=True)),
-        one(lambda: flat(top=True, on_centres=True)),
         one(floats),
         one(collinear),
         one(two_equal),
@@ -244,6 +251,38 @@ def _drawn_triangle_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
         like = fixed[len(cases) : len(cases) + count]
         cases += drawn_like(like, family, triangle, same_pixel_set, FILL_MISTAKES, _as_pixel_array)
     return cases
+
+
+#: How far a drawn float triangle keeps every pixel centre from its edges, in pixels. The
+#: library snaps vertices to 1/256 of a pixel, as GPUs do; a student's fill computes with
+#: the floats as given. A centre nearer an edge than the snap moves it would be inside for one
+#: and outside for the other: a right answer failed by rounding.
+_CLEARANCE = 0.01
+
+
+def _centres_clear_of_edges(corners: np.ndarray) -> bool:
+    """Whether every pixel centre is at least :data:`_CLEARANCE` from each edge of the triangle.
+
+    Examples
+    --------
+    >>> _centres_clear_of_edges(np.array([[3.37, 6.96], [3.73, 2.91], [8.91, 7.81]]))
+    False
+    >>> _centres_clear_of_edges(np.array([[1.25, 0.75], [10.6, 3.2], [3.9, 9.35]]))
+    True
+    """
+    low, high = np.floor(corners.min(axis=0)), np.ceil(corners.max(axis=0))
+    xs, ys = np.meshgrid(np.arange(low[0], high[0]) + 0.5, np.arange(low[1], high[1]) + 0.5)
+    centres = np.column_stack([xs.ravel(), ys.ravel()])
+    for start, end in zip(corners, np.roll(corners, -1, axis=0), strict=True):
+        along = end - start
+        length = float(np.dot(along, along))
+        if length == 0:
+            continue
+        t = np.clip((centres - start) @ along / length, 0.0, 1.0)
+        nearest = start + t[:, None] * along
+        if (np.hypot(*(centres - nearest).T) < _CLEARANCE).any():
+            return False
+    return True
 
 
 def _picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:

@@ -1,13 +1,14 @@
 """The known mistakes lesson 03's checkers name, each reproduced on the checker's cases.
 
-:data:`LINE_MISTAKES` are the wrong lines :func:`.check.draw_line` names: the
-lab report's 4-connected staircase, a line drawn backwards or short of an
-end, coordinates truncated, the lesson's first-octant pseudocode used as is.
-:data:`FILL_MISTAKES` are the wrong fills :func:`.check.draw_triangle_filled`
-names: the closed and open edge rules, the top row left out or the bottom
-row filled, vertices rounded or made whole, the rule mirrored, and pixel
-corners taken for centres. Beside them, the comparisons that tell a mistake
-from its neighbours, and :func:`same_pixel_set`, the fill checker's own.
+:data:`LINE_MISTAKES` are the wrong lines :func:`.check.draw_line` names: a 4-connected
+staircase, told by its cause where the pixels show it (the lab report's loop, or a float t
+stepped finely with the repeated pixels dropped), a line drawn backwards or short of an end,
+coordinates truncated, the lesson's first-octant pseudocode used as is.
+:data:`FILL_MISTAKES` are the wrong fills :func:`.check.draw_triangle_filled` names: every
+edge closed, the top row left out or the bottom row filled, vertices rounded or made whole,
+the rule mirrored, every edge open, the left edges left out, and a pixel corner tested in
+place of its centre (either corner, under any edge rule). Beside them, the comparisons that
+tell a mistake from its neighbours, and :func:`same_pixel_set`, the fill checker's own.
 
 Only the checkers call these, with their own cases and the student's answer
 as :mod:`.check` has read it, so this module checks none (``UNCHECKED = True``;
@@ -17,6 +18,7 @@ the fuzz test skips it).
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -32,14 +34,19 @@ __all__ = [
     "LINE_MISTAKES",
     "bottom_row_filled",
     "corners_inside",
+    "crosses_the_line_only",
+    "far_corners_inside",
+    "fine_t_steps",
     "first_octant_only",
     "is_staircase",
+    "left_edges_open",
     "mirrored_rule",
     "open_rule",
     "ordered_same",
     "report_staircase",
     "same_or_nothing",
     "same_pixel_set",
+    "separate_steps",
     "top_row_left_out",
     "truncated_steps",
     "unless_same",
@@ -86,6 +93,81 @@ def report_staircase(p0: Any, p1: Any) -> Any:
     return line_4connected(p0, p1)
 
 
+def fine_t_steps(p0: Any, p1: Any, steps_per_pixel: int = 64) -> list[tuple[int, int]]:
+    """A float t stepped finely from 0 to 1, each point rounded, a pixel kept when it is new.
+
+    The samples visit every pixel the ideal line passes through, in order, and where the line
+    leaves a pixel through a side, the next pixel shares that side: a 4-connected staircase.
+    """
+    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
+    count = steps_per_pixel * max(abs(x1 - x0), abs(y1 - y0), 1)
+    pixels: list[tuple[int, int]] = []
+    for k in range(count + 1):
+        t = k / count
+        pixel = (round(x0 + t * (x1 - x0)), round(y0 + t * (y1 - y0)))
+        if not pixels or pixels[-1] != pixel:
+            pixels.append(pixel)
+    return pixels
+
+
+def separate_steps(p0: Any, p1: Any) -> list[tuple[int, int]]:
+    """Bresenham's two tests, with a pixel painted after each step: x, then y.
+
+    Where both tests call for a step, the diagonal step becomes two and the pixel between them,
+    in the corner, is painted too.
+    """
+    (x, y), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
+    dx, dy = abs(x1 - x), abs(y1 - y)
+    sx, sy = (1 if x1 >= x else -1), (1 if y1 >= y else -1)
+    error, pixels = dx - dy, [(x, y)]
+    while (x, y) != (x1, y1):
+        doubled = 2 * error
+        if doubled > -dy:
+            error, x = error - dy, x + sx
+            pixels.append((x, y))
+        if doubled < dx:
+            error, y = error + dx, y + sy
+            pixels.append((x, y))
+    return pixels
+
+
+def crosses_the_line_only(answer: Any, given: Any) -> bool:
+    """Whether ``given`` is a path of more pixels than a line has, each touched by the ideal line.
+
+    ``answer`` is :func:`fine_t_steps`' line, whose first and last pixels are p0 and p1. The
+    path must run from p0 to p1, each pixel a neighbour of the one before (by a side or a
+    corner), and the segment between the two end centres must touch every pixel's square
+    (edges included): what a line sampled more finely than its pixels gives, whatever the
+    step and however its ties were rounded.
+    """
+    want = np.asarray(answer, dtype=np.int64).reshape(-1, 2)
+    have = np.asarray(given, dtype=float)
+    if have.ndim != 2 or have.shape[1:] != (2,) or len(want) == 0:
+        return False
+    (x0, y0), (x1, y1) = want[0], want[-1]
+    if len(have) <= max(abs(x1 - x0), abs(y1 - y0)) + 1:
+        return False  # as many pixels as a line has: not a staircase
+    if tuple(have[0]) != (x0, y0) or tuple(have[-1]) != (x1, y1):
+        return False
+    steps = np.abs(np.diff(have, axis=0))
+    if not ((steps.max(axis=1) == 1) & (steps.sum(axis=1) <= 2)).all():
+        return False
+    # Doubled, every coordinate below is a whole number: the test is exact.
+    xs, ys = 2 * have[:, 0], 2 * have[:, 1]
+    in_box = (
+        (xs + 1 >= 2 * min(x0, x1))
+        & (xs - 1 <= 2 * max(x0, x1))
+        & (ys + 1 >= 2 * min(y0, y1))
+        & (ys - 1 <= 2 * max(y0, y1))
+    )
+    dx, dy = 2 * (x1 - x0), 2 * (y1 - y0)
+    sides = np.stack(
+        [dx * (ys + oy - 2 * y0) - dy * (xs + ox - 2 * x0) for ox in (-1, 1) for oy in (-1, 1)]
+    )
+    straddles = (sides.min(axis=0) <= 0) & (sides.max(axis=0) >= 0)
+    return bool((in_box & straddles).all())
+
+
 def is_staircase(staircase: Any, given: Any) -> bool:
     """Whether ``given`` runs from the staircase's first pixel to its last in axis steps only.
 
@@ -105,14 +187,38 @@ LINE_MISTAKES = (
     Mistake(
         N_("the report's staircase"),
         N_(
-            "every step of your line moves in x or in y, never both, so each diagonal step "
-            "became two and left an extra pixel in the corner: a 4-connected staircase (the "
-            "lab report's one test, `if (err2 > -dy) ... else ...`, whose else replaces the "
-            "second test, or x and y stepped and painted one after the other). A line steps "
-            "diagonally whenever both errors call for it, so it has max(|dx|, |dy|) + 1 "
-            "pixels, not |dx| + |dy| + 1."
+            "every step of your line moves in x or in y, never both: your pixels are the lab "
+            "report's loop, whose one test `if (err2 > -dy) ... else ...` steps y only when it "
+            "does not step x. Each diagonal step became two, with an extra pixel in the corner: "
+            "a 4-connected staircase. Test both errors, each with its own if, so that a step "
+            "moves diagonally when both call for it: a line has max(|dx|, |dy|) + 1 pixels, "
+            "not |dx| + |dy| + 1."
         ),
         report_staircase,
+        matches=ordered_same,
+    ),
+    Mistake(
+        N_("every pixel the line crosses"),
+        N_(
+            "your pixels are every pixel the ideal line passes through, in order, as a float t "
+            "stepped finely from 0 to 1 gives when each repeated pixel is dropped: where the "
+            "line passes from one row to the next within a column, both pixels are kept, so "
+            "your line is a 4-connected staircase of |dx| + |dy| + 1 pixels. A line takes one "
+            "pixel per step along its longer axis: n = max(|dx|, |dy|) steps, t = i / n, the "
+            "other coordinate rounded; or Bresenham's error term."
+        ),
+        fine_t_steps,
+        matches=crosses_the_line_only,
+    ),
+    Mistake(
+        N_("a 4-connected staircase"),
+        N_(
+            "every step of your line moves in x or in y, never both, so each diagonal step "
+            "became two and left an extra pixel in the corner: a 4-connected staircase of "
+            "|dx| + |dy| + 1 pixels. Decide both steps first, then paint once, so that a step "
+            "moves diagonally when both call for it: a line has max(|dx|, |dy|) + 1 pixels."
+        ),
+        separate_steps,
         matches=is_staircase,
     ),
     Mistake(
@@ -168,10 +274,23 @@ def same_pixel_set(expected: np.ndarray, given: np.ndarray) -> bool:
     return given.shape == expected.shape and np.array_equal(ordered(given), ordered(expected))
 
 
-def corners_inside(p0: Any, p1: Any, p2: Any) -> np.ndarray:
-    """The pixels whose top-left corner (x, y), not centre, is inside: a half-pixel shift."""
-    shifted = [np.subtract(p, 0.5) for p in (p0, p1, p2)]
-    return triangle(*shifted)
+def corners_inside(p0: Any, p1: Any, p2: Any, rule: str = "top-left") -> np.ndarray:
+    """The pixels whose corner (x, y), not centre, is inside, under ``rule`` (a rule of
+    :func:`course.raster.triangle`, or ``"mirrored"``, :func:`mirrored_rule`'s).
+
+    Corner (x, y) of the triangle is centre (x + 0.5, y + 0.5) of the triangle moved half a
+    pixel right and down: the fill of that triangle.
+    """
+    return _fill(rule, *(np.add(np.asarray(p, dtype=float), 0.5) for p in (p0, p1, p2)))
+
+
+def far_corners_inside(p0: Any, p1: Any, p2: Any, rule: str = "top-left") -> np.ndarray:
+    """The pixels whose far corner (x + 1, y + 1), not centre, is inside, under ``rule``."""
+    return _fill(rule, *(np.subtract(np.asarray(p, dtype=float), 0.5) for p in (p0, p1, p2)))
+
+
+def _fill(rule: str, p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    return mirrored_rule(p0, p1, p2) if rule == "mirrored" else triangle(p0, p1, p2, rule=rule)
 
 
 def bottom_row_filled(p0: Any, p1: Any, p2: Any) -> np.ndarray:
@@ -217,12 +336,33 @@ def mirrored_rule(p0: Any, p1: Any, p2: Any) -> np.ndarray:
     return pixels
 
 
+def left_edges_open(p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    """The lesson's rule with left edges left out too: x_left < x < x_right, top edges in.
+
+    A centre is in when both the lesson's rule and its mirror take it: each takes the top
+    edges and leaves out the bottom ones, and between them they leave out the left and the
+    right edges.
+    """
+    rule = np.asarray(triangle(p0, p1, p2), dtype=np.int64).reshape(-1, 2)
+    mirrored = mirrored_rule(p0, p1, p2)
+    keep = (rule[:, None, :] == mirrored[None, :, :]).all(axis=2).any(axis=1)
+    return rule[keep]
+
+
 def unless_same(
-    rule: Callable[..., Any], other: Callable[..., Any], p0: Any, p1: Any, p2: Any
+    rule: Callable[..., Any],
+    other: Callable[..., Any] | tuple[Callable[..., Any], ...],
+    p0: Any,
+    p1: Any,
+    p2: Any,
 ) -> np.ndarray | None:
-    """``rule``'s pixels when this case tells them from ``other``'s; None when it cannot."""
+    """``rule``'s pixels when this case tells them from ``other``'s (each of them, if a tuple);
+    None when it cannot."""
     pixels = rule(p0, p1, p2)
-    return None if same_pixels(pixels, other(p0, p1, p2)) else pixels
+    others = other if isinstance(other, tuple) else (other,)
+    if any(same_pixels(pixels, neighbour(p0, p1, p2)) for neighbour in others):
+        return None
+    return pixels
 
 
 def same_or_nothing(answer: Any, given: Any) -> bool:
@@ -286,7 +426,7 @@ FILL_MISTAKES = (
             "mirrored, x_left < x <= x_right. Two triangles still share the edge fairly, but "
             "every other triangle of the mesh uses the lesson's rule: [x_left, x_right)."
         ),
-        lambda p0, p1, p2: unless_same(mirrored_rule, open_rule, p0, p1, p2),
+        lambda p0, p1, p2: unless_same(mirrored_rule, (open_rule, left_edges_open), p0, p1, p2),
         matches=same_or_nothing,
     ),
     Mistake(
@@ -296,7 +436,7 @@ FILL_MISTAKES = (
             "edge would both skip it: a crack. Include the left and the top ones: "
             "[x_left, x_right), rows over [y_top, y_bottom)."
         ),
-        lambda p0, p1, p2: unless_same(open_rule, mirrored_rule, p0, p1, p2),
+        lambda p0, p1, p2: unless_same(open_rule, (mirrored_rule, left_edges_open), p0, p1, p2),
         matches=same_or_nothing,
     ),
     Mistake(
@@ -306,14 +446,31 @@ FILL_MISTAKES = (
             "edge is included and the right one left out, x_left <= x < x_right, so that two "
             "triangles sharing an edge paint each of its centres once."
         ),
-        open_rule,
+        left_edges_open,
     ),
-    Mistake(
-        N_("pixel corners for centres"),
-        N_(
-            "you tested the pixel's corner (x, y), not its centre (x + 0.5, y + 0.5): the "
-            "whole triangle is off by half a pixel, up and left."
-        ),
-        corners_inside,
+    *(
+        Mistake(
+            N_("pixel corners for centres"),
+            N_(
+                "you tested the pixel's corner (x, y), not its centre (x + 0.5, y + 0.5): your "
+                "pixels are those of the triangle moved half a pixel right and down. Test the "
+                "centre: the row of centres at y = row + 0.5, and a span from "
+                "ceil(x_left - 0.5)."
+            ),
+            partial(corners_inside, rule=rule),
+        )
+        for rule in ("top-left", "closed", "open", "mirrored")
+    ),
+    *(
+        Mistake(
+            N_("pixel corners for centres"),
+            N_(
+                "you tested the pixel's far corner (x + 1, y + 1), not its centre "
+                "(x + 0.5, y + 0.5): your pixels are those of the triangle moved half a pixel "
+                "left and up. Test the centre: the row of centres at y = row + 0.5."
+            ),
+            partial(far_corners_inside, rule=rule),
+        )
+        for rule in ("top-left", "closed", "open", "mirrored")
     ),
 )

@@ -28,12 +28,11 @@ from course.lessons.graded_cases import drawn_in_order
 from course.sampling import resample
 from course.sampling.resample import (
     bilinear,
-    supersample,
     supersample_shifted,
     supersample_without_offset,
 )
 
-__all__ = ["bilinear_lookup", "hint", "image_supersampling"]
+__all__ = ["bilinear_sample", "hint", "supersample"]
 
 _LIBRARY_FUNCTIONS = (
     resample.bilinear,
@@ -141,11 +140,10 @@ SUPERSAMPLE_HINTS = Hints(
 @exercise(
     hints=SUPERSAMPLE_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    function="supersample",
     handout_names=("supersampling",),
     draw=_drawn_cases,
 )
-def image_supersampling(student: Callable[..., Any]) -> CheckResult:
+def supersample(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image, out_shape, rate)`` against
     :func:`course.sampling.resample.supersample`.
 
@@ -158,15 +156,17 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> image_supersampling(lambda image, out_shape, rate: image).passed
+    >>> supersample(lambda image, out_shape, rate: image).passed
     False
     """
     mistakes = [
         Mistake(
             _("the scale made whole"),
             _(
-                "you divided the sizes with //: 25 // 3 is 8, not 8.33, so the samples do not "
-                "cover the input. The scale W / w is a float."
+                "you divided the sizes with //, which drops the scale's fraction: W // w for "
+                "W / w, H // h for H / h. Your samples then stop short of the input's right or "
+                "bottom edge, wherever w does not divide W or h does not divide H. The scale is "
+                "a float: W / w and H / h."
             ),
             lambda image, out_shape, rate: _variant(image, out_shape, rate, whole_scale=True),
         ),
@@ -243,7 +243,7 @@ def image_supersampling(student: Callable[..., Any]) -> CheckResult:
         "supersample",
         student,
         _cases(),
-        supersample,
+        resample.supersample,
         close(atol=1e-9),
         _as_image,
         mistakes=mistakes,
@@ -420,12 +420,11 @@ def _graded_bilinear_sample(image: Any, x: float, y: float) -> Any:
 @exercise(
     hints=BILINEAR_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    function="bilinear_sample",
     handout_names=("bilinear",),
     grader_reference=_graded_bilinear_sample,
     draw=_drawn_lookup_cases,
 )
-def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
+def bilinear_sample(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(image, x, y)``: the image at one point, blended from four centres.
 
     Pixel (r, c) is centred at (c + 0.5, r + 0.5); a point beyond the outer
@@ -434,7 +433,7 @@ def bilinear_lookup(student: Callable[..., Any]) -> CheckResult:
 
     Examples
     --------
-    >>> bilinear_lookup(lambda image, x, y: image[int(y), int(x)]).mistake
+    >>> bilinear_sample(lambda image, x, y: image[int(y), int(x)]).mistake
     'no blending: the nearest pixel'
     """
     return run_cases(

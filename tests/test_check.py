@@ -270,3 +270,22 @@ def mock_figure_of(function, *arguments):
     with mock.patch.object(pictures, "figure_png", lambda figure: caught.append(figure) or b""):
         function(*arguments)
     return caught[0]
+
+
+def test_a_colour_answers_difference_shows_swapped_channels_and_a_gray_answer_is_gray():
+    from course.check.pictures import shown_difference
+
+    rng = np.random.default_rng(7)
+    want = rng.random((4, 5, 3))
+    swapped = want[..., ::-1]
+    _, difference = shown_difference(want, swapped)
+    # The mean over channels of a swap is (b - r + 0 + r - b) / 3 = 0: the old map was blank.
+    assert np.allclose((swapped - want).mean(axis=2), 0)
+    largest = np.abs(swapped - want).max(axis=2)
+    assert np.allclose(np.abs(difference), largest) and largest.max() > 0.1
+    gray = want.mean(axis=2)
+    shown, difference = shown_difference(want, gray)
+    assert shown.shape == want.shape and np.allclose(shown[..., 0], gray)
+    assert np.allclose(np.abs(difference), np.abs(gray[..., None] - want).max(axis=2))
+    shown, difference = shown_difference(want, np.zeros((2, 2)))
+    assert np.isnan(shown).all() and np.isnan(difference).all() and shown.shape == (4, 5)

@@ -34,6 +34,7 @@ __all__ = [
     "figure_png",
     "image_picture",
     "pixel_picture",
+    "shown_difference",
     "side_by_side",
 ]
 
@@ -263,7 +264,8 @@ def _frame(
 def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     """Expected and given images and their difference, each pixel a square at a whole zoom.
 
-    The difference (given minus expected, the mean over colour channels) is drawn red where
+    The difference (given minus expected; in colour, each pixel's largest over its channels,
+    with its sign, so that swapped channels show) is drawn red where
     the answer is too bright and blue where it is too dark, with a colour bar in image units,
     so the place and the size of the error show at a glance. Its axes number pixels as the
     lessons' figures do: ticks on pixel corners, pixel (x, y) the square from tick x to
@@ -277,8 +279,7 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
                 want_shape=want.shape
             )
         )
-    if have.shape != want.shape:
-        have = np.zeros_like(want)  # the report names the shapes; draw what can be drawn
+    have, difference = shown_difference(want, have)
     height, width = want.shape[:2]
     zoom = max(1, min(24, 192 // max(height, width, 1)))
     side_w, side_h = width * zoom, height * zoom
@@ -289,9 +290,6 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     rows = top + side_h + margin + 14
     bottom = margin + 14  # room for the difference panel's pixel numbers
     figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
-    difference = have - want
-    if difference.ndim == 3:
-        difference = difference.mean(axis=2)
     limit = max(float(np.abs(np.nan_to_num(difference)).max(initial=0.0)), 1e-12)
     # Values past 1 (a gradient magnitude) get a gray scale that reaches them, named in the title.
     top = max(1.0, float(np.max(np.nan_to_num(want), initial=0.0)))
@@ -326,11 +324,36 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     axes.tick_params(labelsize=6, length=2, pad=1)
     bar_left = margin + 3 * slot + 2 * gap + 8
     colour_bar = figure.add_axes((bar_left / columns, bottom / rows, bar / columns, side_h / rows))
-    figure.colorbar(shown, cax=colour_bar)
+    figure.colorbar(shown, cax=colour_bar, format="%.2g")  # no offset text over the title
     colour_bar.tick_params(labelsize=7)
     if title:
         figure.suptitle(_translated(title), fontsize=9, y=1 - 6 / rows, va="top")
     return figure_png(figure)
+
+
+def shown_difference(want: np.ndarray, have: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The answer as :func:`image_picture` shows it, and its difference from ``want``.
+
+    A gray answer to a colour image is shown gray; an answer of another shape is blank (NaN).
+    In colour the difference of a pixel is its largest over the channels, with its sign, so
+    that an answer with its channels swapped shows, where their mean would cancel.
+
+    Examples
+    --------
+    >>> want = np.zeros((1, 1, 3)); want[0, 0] = (0.2, 0.5, 0.8)
+    >>> shown_difference(want, want[..., ::-1])[1]
+    array([[0.6]])
+    """
+    if have.shape == want.shape[:2] and want.ndim == 3:
+        have = np.repeat(have[..., None], want.shape[2], axis=2)
+    elif have.shape != want.shape:
+        blank = np.full(want.shape[:2], np.nan)
+        return blank, blank
+    difference = have - want
+    if difference.ndim == 3:
+        largest = np.argmax(np.abs(np.nan_to_num(difference)), axis=2)[..., None]
+        difference = np.take_along_axis(difference, largest, axis=2)[..., 0]
+    return have, difference
 
 
 def _as_pairs(points: Any, name: str) -> np.ndarray:

@@ -42,15 +42,17 @@ README_MARKERS = (
 #: How an exercise works, above the lesson table in the course map notebook ``00_index.ipynb``.
 EXERCISE_GUIDE = N_("""### How an exercise works
 
-1. An exercise cell defines a function whose body is
-   `raise NotImplementedError("your code here")`, and ends with a check: `check.name(name)`.
-   The function, its check and its hint, `check.hint("name")`, share that one name.
-2. Replace that line with your code and run the cell (Shift+Enter).
+1. An exercise is two cells: an answer cell that defines a function whose body is
+   `raise NotImplementedError("your code here")`, and under it a locked check cell,
+   `check.name(name)` (then `.graded()`, for nbgrader, which grades that same cell). The
+   function, its check and its hint, `check.hint("name")`, share that one name.
+2. Replace that line with your code, run the cell (Shift+Enter), then the check cell.
 3. The check prints **PASS**, or **FAIL** with the first case that went wrong: its inputs,
    what was expected, what your code gave and, when your answer is a known mistake, which
-   one. Edit, run again, until it passes.
+   one. Edit, run both again, until it passes.
 
-Work in the student edition, `student/`, which `make lab` opens: your edits are never
+Work in the student edition, `student/`, which `make lab` opens (the Chinese edition:
+`student/zh-CN/`, opened by `make lab COURSE_LANG=zh-CN`): your edits are never
 overwritten. When a lesson changes, `make lab` brings the new one beside your copy as
 `NN_topic.new.ipynb`. The teacher's edition, `notebooks/` (`make teach`), has the answers.
 

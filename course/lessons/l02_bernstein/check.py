@@ -346,10 +346,10 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
     history: list[np.ndarray] = []
     with_comb = names_comb(function)
     another_way = _(
-        "your naive_bezier never calls your comb: it computes the curve another way, as "
-        "lesson 01's de Casteljau does by repeated interpolation. The exercise is the Bernstein "
-        "sum, each control point P[i] weighted by comb(n, i) t^i (1 - t)^(n - i), with the comb "
-        "you wrote in exercise 1."
+        "your naive_bezier never calls your comb: it computes the curve another way (by "
+        "repeated interpolation, as lesson 01's de Casteljau, or by a sum without the "
+        "binomial coefficients). The exercise is the Bernstein sum, each control point P[i] "
+        "weighted by comb(n, i) t^i (1 - t)^(n - i), with the comb you wrote in exercise 1."
     )
 
     def curve(control_points: np.ndarray, t: float) -> np.ndarray:

@@ -107,9 +107,12 @@ def parse_kernel(text: str) -> np.ndarray:
         )
     rows = [_kernel_row(row) for row in re.split(r"[;\n]+", text) if row.strip()]
     if len(rows) != 3 or any(len(row) != 3 for row in rows):
-        lengths = ", ".join(str(len(row)) for row in rows) or "nothing"
+        lengths = ", ".join(str(len(row)) for row in rows)
         raise ValueError(
-            _("kernel: expected 3 rows of 3 numbers; got rows of {lengths}").format(lengths=lengths)
+            _(
+                "kernel: expected 3 rows of 3 numbers, the rows separated by ';'; got {count} "
+                "rows, of {lengths} numbers"
+            ).format(count=len(rows), lengths=lengths or "0")
         )
     for token in (token for row in rows for token in row):
         if not (_DECIMAL.fullmatch(token) or _FRACTION.fullmatch(token)):

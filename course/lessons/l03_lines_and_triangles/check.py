@@ -164,8 +164,9 @@ def _drawn_triangle_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
     bottom; with vertices on pixel centres, a flat top on a row of centres; with integer
     vertices again, a right isosceles triangle whose long edge runs through pixel centres and
     its partner; float vertices; a triangle of zero area and one with two equal vertices; one
-    thinner than a row; a flat bottom on a row of centres; float vertices again. Vertices lie in [0, 13]; each case tells the named mistakes apart as
-    its fixed case does (:func:`~course.lessons.graded_cases.drawn_like`).
+    thinner than a row; a flat bottom on a row of centres; float vertices again. Vertices lie
+    in [0, 13]; each case tells the named mistakes apart as its fixed case does
+    (:func:`~course.lessons.graded_cases.drawn_like`).
     """
 
     def whole(low: int = 0, high: int = 12) -> int:

@@ -140,7 +140,7 @@ def stand_in(name: str, mistake: Mistake, keys: list[str]) -> Callable[..., Any]
                 window[y, x] = (0, 1, 0)
 
         return paint
-    if name == "bilinear_splat":
+    if name == "splat":
 
         def splat(x: float, y: float) -> tuple[Any, Any]:
             table = np.asarray(answering(x, y))

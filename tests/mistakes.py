@@ -89,7 +89,7 @@ def mistaken(module: str, checker: str, name: str, parameters: list[str]) -> Cal
     def answer(*args: Any, **kwargs: Any) -> Any:
         return unwatched(mistake.answer, **dict(zip(keys, args, strict=False)), **kwargs)
 
-    if checker == "bilinear_splat":  # a splat answers (pixels, weights); the mistake, its table
+    if checker == "splat":  # a splat answers (pixels, weights); the mistake, its table
 
         def splat(*args: Any, **kwargs: Any) -> tuple[Any, Any]:
             table = np.asarray(answer(*args, **kwargs))

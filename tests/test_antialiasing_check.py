@@ -1,4 +1,4 @@
-"""Lesson 05's bilinear_splat checker: a correct splat passes, the handouts' mistakes fail."""
+"""Lesson 05's splat checker: a correct splat passes, the handouts' mistakes fail."""
 
 import math
 
@@ -39,13 +39,13 @@ def weights_swapped(x, y):
 
 
 def test_a_correct_splat_passes_in_any_order_and_with_zero_weights():
-    assert check.bilinear_splat(correct)
+    assert check.splat(correct)
 
     def reordered(x, y):
         pixels, weights = correct(x, y)
         return [*pixels[::-1], (99, 99)], [*weights[::-1], 0.0]
 
-    assert check.bilinear_splat(reordered)
+    assert check.splat(reordered)
 
 
 @pytest.mark.parametrize(
@@ -53,7 +53,7 @@ def test_a_correct_splat_passes_in_any_order_and_with_zero_weights():
     [(corners_at_integers, "case 1"), (weights_swapped, "case 1"), (truncating, "case 5")],
 )
 def test_typical_mistakes_fail_naming_the_case(student, case):
-    result = check.bilinear_splat(student)
+    result = check.splat(student)
     assert not result
     assert f"{case} is wrong" in result.message
     assert "inputs: x=" in result.message
@@ -63,7 +63,7 @@ def test_a_crashing_splat_is_reported_not_raised():
     def broken(x, y):
         raise ZeroDivisionError("oops")
 
-    result = check.bilinear_splat(broken)
+    result = check.splat(broken)
     assert not result and "raised ZeroDivisionError" in result.message
 
 
@@ -101,7 +101,7 @@ def swapped_xy(x, y):
     ],
 )
 def test_the_handouts_splat_mistakes_are_named_and_pictured(student, mistake):
-    result = check.bilinear_splat(student)
+    result = check.splat(student)
     assert not result
     assert result.mistake == mistake
     assert result.picture is not None and result.picture.startswith(b"\x89PNG")
@@ -115,13 +115,13 @@ def test_one_pixel_for_the_whole_point_has_one_name_rounded_or_floored():
         return [(math.floor(x), math.floor(y))], [1.0]
 
     for splat in (nearest_only, falls_in):
-        result = check.bilinear_splat(splat)
+        result = check.splat(splat)
         assert not result and result.mistake == "the whole point to one pixel"
     assert "nearest pixel only" not in {m.name for m in mistakes.SPLAT_MISTAKES}
 
 
 def test_the_first_wrong_pixel_is_named_with_both_weights():
-    result = check.bilinear_splat(corners_at_integers)
+    result = check.splat(corners_at_integers)
     # Case 1, (2.5, 1.5), is pixel (2, 1)'s centre: weight 1 there; corners give (2, 1) 0.25.
     assert "first wrong pixel: (2, 1) should get 1, yours gets 0.25" in result.message
 
@@ -190,7 +190,7 @@ def test_a_truncated_pixel_is_not_told_it_rounds_where_both_light_the_same_pixel
     def under_the_point(x, y):
         return [(math.floor(x), math.floor(y))], [1]
 
-    result = check.bilinear_splat(under_the_point)
+    result = check.splat(under_the_point)
     # Case 2, (3.0, 2.0): floor and round both give pixel (3, 2).
     assert not result and "case 2 is wrong" in result.message
     assert "are the same pixel" in result.message
@@ -227,7 +227,7 @@ def test_the_normalised_splat_names_the_vs2022_report_not_a_file():
         near = [math.sqrt(2) - math.hypot(x - (a + 0.5), y - (b + 0.5)) for a, b in pixels]
         return pixels, [d / sum(near) for d in near]
 
-    result = check.bilinear_splat(normalised)
+    result = check.splat(normalised)
     assert result.mistake == "the normalised splat"
     assert "the VS2022 report's splat" in result.message
     assert "seed 003" not in result.message
@@ -245,11 +245,11 @@ def test_the_normalised_splat_names_the_vs2022_report_not_a_file():
     ],
 )
 def test_a_dict_or_a_generator_is_told_to_return_two_lists(wrap, said):
-    result = check.bilinear_splat(lambda x, y: wrap(*correct(x, y)))
+    result = check.splat(lambda x, y: wrap(*correct(x, y)))
     assert not result
     assert f"return two lists: pixels, weights; {said}" in result.message
     assert "could not convert" not in result.message and "float() argument" not in result.message
-    assert check.bilinear_splat(lambda x, y: tuple(np.asarray(v) for v in correct(x, y)))
+    assert check.splat(lambda x, y: tuple(np.asarray(v) for v in correct(x, y)))
 
 
 # --- graded: cases drawn for each submission ------------------------------------------------
@@ -268,7 +268,7 @@ NAMED_AS_ONE_PIXEL = {"the pixel under the point (truncated)": "the whole point 
 
 
 def test_graded_splat_cases_are_drawn_in_the_fixed_cases_families():
-    for cases in graded_draws.check_drawn_cases("bilinear_splat"):
+    for cases in graded_draws.check_drawn_cases("splat"):
         x, y = np.array([(c["x"], c["y"]) for c in cases]).T
         assert ((x * 8) % 1 == 0).all() and ((y * 8) % 1 == 0).all()
         assert (x[0] % 1, y[0] % 1, x[1] % 1, y[1] % 1) == (0.5, 0.5, 0, 0)
@@ -285,7 +285,7 @@ def test_graded_weight_cases_are_drawn_in_the_fixed_cases_families():
 @pytest.mark.parametrize(
     ("name", "written", "named_otherwise"),
     [
-        ("bilinear_splat", WRITTEN_SPLAT, NAMED_AS_ONE_PIXEL),
+        ("splat", WRITTEN_SPLAT, NAMED_AS_ONE_PIXEL),
         ("arc_length_weights", {}, {}),
     ],
 )
@@ -321,7 +321,7 @@ def tick_at(axis_ticks, labels, position):
 
 def test_the_difference_panel_numbers_each_pixel_as_the_report_does(monkeypatch):
     drawn = pictures_drawn(monkeypatch)
-    result = check.bilinear_splat(corners_at_integers)
+    result = check.splat(corners_at_integers)
     # Case 1, (2.5, 1.5): pixel (2, 1) should get 1 and gets 0.25, the one pixel 0.75 short.
     assert "first wrong pixel: (2, 1) should get 1, yours gets 0.25" in result.message
     (difference,) = [a for a in drawn[-1].axes if a.get_title() == "yours minus expected"]
@@ -345,12 +345,12 @@ def test_weights_returned_before_pixels_are_named_as_such():
         weights = [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy]
         return weights, pixels
 
-    result = check.bilinear_splat(weights_first)
+    result = check.splat(weights_first)
     assert not result and "case 1" in result.message
     assert "you returned the weights first" in result.message
     assert "must match" not in result.message and "8 weights" not in result.message
     # One pixel and its weight, the wrong way round, is told the same.
-    result = check.bilinear_splat(lambda x, y: ([1.0], [(round(x), round(y))]))
+    result = check.splat(lambda x, y: ([1.0], [(round(x), round(y))]))
     assert "you returned the weights first" in result.message
 
 

@@ -1230,9 +1230,9 @@ def accident_table() -> Iterator[None]:
 def attack_cell(attack: str, checker: str) -> tuple[str, str]:
     declaration = declared(checker)
     body, _ = ATTACKS[attack]
-    parameters = ", ".join(PARAMETERS[declaration.function])
-    cell = f"def {declaration.function}({parameters}):\n{textwrap.indent(body, '    ')}\n"
-    return declaration.function, cell
+    parameters = ", ".join(PARAMETERS[declaration.name])
+    cell = f"def {declaration.name}({parameters}):\n{textwrap.indent(body, '    ')}\n"
+    return declaration.name, cell
 
 
 @pytest.mark.parametrize(("attack", "checker"), PAIRS, ids=[f"{a}-{c}" for a, c in PAIRS])

@@ -389,7 +389,7 @@ def test_hints_come_in_steps_and_the_recipe_only_on_request(monkeypatch):
         "tripling", Hints("look at x", "three of them", "return 3 * x"), "triple"
     )
     first = run_cases("tripling", lambda x: x, CASES, lambda x: 3 * x, close(), hint=steps)
-    assert str(first).splitlines()[-2:] == ["Hint: look at x", '(More: check.hint("triple").)']
+    assert str(first).splitlines()[-2:] == ["Hint: look at x", '(More: check.hint("tripling").)']
     second = run_cases("tripling", lambda x: x, CASES, lambda x: 3 * x, close(), hint=steps)
     assert "Hint: look at x three of them" in str(second)
     assert "return 3 * x" not in str(first) + str(second)
@@ -465,7 +465,7 @@ def test_hints_and_a_pass_in_chinese_and_english_after(monkeypatch):
     finally:
         course.use_language("en")
     # Chinese steps join without a space after the full stop.
-    assert text.startswith("DitheringOrdered 的提示：看看输出的大小")
+    assert text.startswith("dithering_ordered 的提示：看看输出的大小")
     assert "以及比较本身。每个输入像素变成一个 3 x 3 单元" in text
     assert passed == "通过 double：全部 3 个用例通过"
     assert "用例 1 不对" in wrong and "  预期形状 ()，你的形状 (1,)" in wrong

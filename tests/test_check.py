@@ -162,10 +162,10 @@ CHECKS = [
     (bernstein.naive_bezier, _reversed_point),
     (supersampling.bilinear_sample, _whole_centres),
     (supersampling.supersample, _divided_by_rate),
-    (antialiasing.bilinear_splat, _one_pixel),
+    (antialiasing.splat, _one_pixel),
     (antialiasing.arc_length_weights, _counting),
-    (poisson.poisson_boundary, _flipped_ring),
-    (poisson.jacobi_sweep, _sweep_then_test),
+    (poisson.boundary_ring, _flipped_ring),
+    (poisson.jacobi_solve, _sweep_then_test),
 ]
 
 

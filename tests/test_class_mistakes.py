@@ -132,7 +132,6 @@ def test_each_checkers_named_mistakes_are_listed_once_in_its_order():
             # comb's "the exponential recursion" is its call budget's, not run_cases's.
             extra = ["the exponential recursion"] if exercise.name == "comb" else []
             assert listed == list(dict.fromkeys(recorded + extra)), exercise.name
-    assert checker_mistakes("DitheringOrdered") == checker_mistakes("dithering_ordered")
     # The recording is undone: the checkers run their cases again.
     from course.check.base import run_cases
     from course.check.references import call_budget

@@ -58,7 +58,7 @@ def nine_ifs(gray, transposed=False, at_least=False):
 def test_ordered_dithering_passes_and_its_slips_are_named():
     # Four cases: the levels on M / 9, a 2 x 3 image, noise and the small face.
     passed = check.dithering_ordered(nine_ifs)
-    assert str(passed) == "PASS DitheringOrdered: all 4 cases pass"
+    assert str(passed) == "PASS dithering_ordered: all 4 cases pass"
     assert passed.picture is not None and passed.picture.startswith(b"\x89PNG")
     transposed = check.dithering_ordered(lambda gray: nine_ifs(gray, transposed=True))
     assert transposed.mistake == "the matrix transposed" and transposed.picture is not None
@@ -130,7 +130,7 @@ def test_both_checkers_report_in_chinese(in_chinese):
     assert result.picture is not None  # its titles in Chinese, every glyph in the font
     assert not [w for w in caught if "missing from font" in str(w.message)]
     ordered = str(result)
-    assert ordered.startswith("未通过 DitheringOrdered：用例 1 不对\n  输入：gray=")
+    assert ordered.startswith("未通过 dithering_ordered：用例 1 不对\n  输入：gray=")
     assert "你的输出含有这些值：0, 255；本课的输出是 0（暗）或 1（亮）" in ordered
     assert "这是一个已知错误，用 0 和 255 代替了 0 和 1：" in ordered
     assert "提示：看看输出的大小" in ordered and "Hint" not in ordered

@@ -56,9 +56,9 @@ def test_every_solution_cell_calls_a_checker_its_chapter_declares(number):
             f"lesson {number}: the notebook's check.{checker} is not declared in "
             f"{chapter_of(number)}.check: decorate it with @exercise(hints=..., refuses=...)"
         )
-        assert names[checker].function == function, (
-            f"lesson {number}: check.{checker} checks {function} in the notebook, but its "
-            f"declaration says function={names[checker].function!r}"
+        assert function == checker, (
+            f"lesson {number}: check.{checker} checks {function} in the notebook: an exercise "
+            "has one name, the student's function is named as its checker"
         )
 
 
@@ -114,9 +114,8 @@ def test_each_checker_is_public_and_names_the_handouts_mistakes(declaration):
 
 @pytest.mark.parametrize("declaration", ALL, ids=lambda d: d.name)
 def test_each_name_of_an_exercise_finds_its_hints(declaration):
-    for name in {declaration.name, declaration.function, declaration.reported_as}:
-        assert declared(name) is declaration
-    for name in (declaration.function, declaration.reported_as, *declaration.handout_names):
+    assert declared(declaration.name) is declaration
+    for name in (declaration.name, *declaration.handout_names):
         assert str(hint(name)).startswith("Hint for "), name
 
 

@@ -288,7 +288,7 @@ def in_chinese(monkeypatch):
 
 def test_blur_and_edge_report_in_chinese(in_chinese):
     blurred = str(check.blur(lambda image: image))
-    assert blurred.startswith("未通过 Blur：用例 1 不对\n  输入：image=")
+    assert blurred.startswith("未通过 blur：用例 1 不对\n  输入：image=")
     assert "第一个错误的像素是 (x, y) = (0, 0)，在边界上，但图像内部也有像素不对" in blurred
     border = str(check.blur(lambda image: box_blur(image, "zero")))
     assert "(0, 0)，在边界上：9 个邻居中有 4 个在图像内，而图像内部的每个像素都是对的" in border

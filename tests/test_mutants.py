@@ -9,7 +9,7 @@ answer on every input the exercise allows), or "acceptable" (a tie between two
 pixels equally near the line, which the checker accepts by design). A mutant
 that is neither is a checker to fix, with a case that fails it, not an entry
 here: the edge slips of ``bezier`` (``0 < x``, ``x <= width``, ``0 < y``,
-``y <= height``, ``-1 <= y``) and the ``<=`` of ``jacobi_sweep`` were listed
+``y <= height``, ``-1 <= y``) and the ``<=`` of ``jacobi_solve`` were listed
 until the checkers got the cases that fail them.
 
 A listed survivor that no longer survives, or a survivor that is not listed,
@@ -100,7 +100,7 @@ SURVIVORS: list[tuple[str, str, str]] = [
 
 #: (exercise, the slip): mutants the checker does not stop, so the harness's timeout does. None
 #: since the checkers run each case under a time and memory budget (course/check/sandbox.py):
-#: on main before it, 42 slips of draw_line and 18 of jacobi_sweep hung.
+#: on main before it, 42 slips of draw_line and 18 of jacobi_solve hung.
 HANGS: list[tuple[str, str]] = []
 
 

@@ -25,7 +25,7 @@ def lab_style_boundary(background, foreground, offset):
 
 
 def test_the_checker_passes_the_lab_loops():
-    result = check.poisson_boundary(lab_style_boundary)
+    result = check.boundary_ring(lab_style_boundary)
     assert result and result.cases_run == 4
 
 
@@ -51,7 +51,7 @@ def filled_inside(background, foreground, offset):
     [(flipped_sign, "case 1 is wrong"), (swapped_offset, "case 2"), (filled_inside, "case 1")],
 )
 def test_the_checker_names_the_case_a_typical_mistake_fails(wrong, case):
-    result = check.poisson_boundary(wrong)
+    result = check.boundary_ring(wrong)
     assert not result
     assert case in result.message
 
@@ -89,8 +89,8 @@ def sweep_first(g, tolerance):
             return g, sweeps
 
 
-def test_jacobi_sweep_passes_the_slices_and_a_loop_over_a_copy():
-    assert check.jacobi_sweep(jacobi)
+def test_jacobi_solve_passes_the_slices_and_a_loop_over_a_copy():
+    assert check.jacobi_solve(jacobi)
 
     def loop_over_a_copy(g, tolerance):
         g = np.array(g, dtype=float)
@@ -104,14 +104,14 @@ def test_jacobi_sweep_passes_the_slices_and_a_loop_over_a_copy():
                 for x in range(1, width - 1):
                     g[y, x] = (old[y - 1, x] + old[y + 1, x] + old[y, x - 1] + old[y, x + 1]) / 4
 
-    assert check.jacobi_sweep(loop_over_a_copy)
+    assert check.jacobi_solve(loop_over_a_copy)
 
 
 @pytest.mark.parametrize(
     ("student", "mistake"), [(in_place, "in place: Gauss-Seidel"), (sweep_first, "one sweep late")]
 )
-def test_jacobi_sweep_recognises_the_labs_loop_and_a_late_stop(student, mistake):
-    result = check.jacobi_sweep(student)
+def test_jacobi_solve_recognises_the_labs_loop_and_a_late_stop(student, mistake):
+    result = check.jacobi_solve(student)
     assert not result
     assert result.mistake == mistake
     # The late stop sweeps an all-zero g once: g is still right, only the count is not.
@@ -121,7 +121,7 @@ def test_jacobi_sweep_recognises_the_labs_loop_and_a_late_stop(student, mistake)
     assert result.picture is not None
 
 
-def test_jacobi_sweep_reports_a_ring_that_moves_and_a_missing_count():
+def test_jacobi_solve_reports_a_ring_that_moves_and_a_missing_count():
     def ring_swept_too(g, tolerance):
         g = np.array(g, dtype=float)
         for sweeps in itertools.count():
@@ -131,9 +131,9 @@ def test_jacobi_sweep_reports_a_ring_that_moves_and_a_missing_count():
             rolled = sum(np.roll(g, shift, axis) for shift in (1, -1) for axis in (0, 1))
             g = rolled / 4  # wraps around and moves the fixed ring
 
-    result = check.jacobi_sweep(ring_swept_too)
+    result = check.jacobi_solve(ring_swept_too)
     assert not result and result.mistake is None
-    result = check.jacobi_sweep(lambda g, tolerance: jacobi(g, tolerance)[0])
+    result = check.jacobi_solve(lambda g, tolerance: jacobi(g, tolerance)[0])
     assert not result and "return two things" in result.message
 
 
@@ -151,7 +151,7 @@ def test_jacobi_sweep_reports_a_ring_that_moves_and_a_missing_count():
     ],
 )
 def test_boundary_mistakes_are_named_with_a_picture(student, mistake):
-    result = check.poisson_boundary(student)
+    result = check.boundary_ring(student)
     assert not result
     assert result.mistake == mistake
     assert result.picture is not None
@@ -167,7 +167,7 @@ def test_the_lab_loops_are_the_librarys_ring():
 
 
 def test_a_call_to_the_librarys_ring_is_told_to_write_it():
-    result = check.poisson_boundary(
+    result = check.boundary_ring(
         lambda background, foreground, offset: -correction_boundary(background, foreground, offset)
     )
     assert not result and result.mistake is None
@@ -188,7 +188,7 @@ def until_the_change_is_small(g, tolerance):
 
 
 def test_a_stop_on_the_change_between_sweeps_is_named_as_stopping_early():
-    result = check.jacobi_sweep(until_the_change_is_small)
+    result = check.jacobi_solve(until_the_change_is_small)
     assert result.mistake == "a stop on the change between sweeps"
     assert "sweeps: expected 16, given 14" in result.message
     assert "up to four times the tolerance" in result.message
@@ -196,10 +196,10 @@ def test_a_stop_on_the_change_between_sweeps_is_named_as_stopping_early():
 
 def test_the_reports_name_the_exercises_as_the_lesson_does():
     zero = np.zeros((3, 3))
-    assert str(check.poisson_boundary(lambda background, foreground, offset: zero)).startswith(
-        "FAIL boundary_exercise:"
+    assert str(check.boundary_ring(lambda background, foreground, offset: zero)).startswith(
+        "FAIL boundary_ring:"
     )
-    assert str(check.jacobi_sweep(lambda g, tolerance: (g, 0))).startswith("FAIL jacobi_exercise:")
+    assert str(check.jacobi_solve(lambda g, tolerance: (g, 0))).startswith("FAIL jacobi_solve:")
 
 
 def test_a_residual_equal_to_the_tolerance_still_gets_a_sweep():
@@ -217,7 +217,7 @@ def test_a_residual_equal_to_the_tolerance_still_gets_a_sweep():
             g[1:-1, 1:-1] = n / 4
             sweeps += 1
 
-    result = check.jacobi_sweep(stops_at_or_below)
+    result = check.jacobi_solve(stops_at_or_below)
     assert not result and "case 5 is wrong" in result.message
 
 
@@ -263,26 +263,26 @@ def first_channel(size):
     ],
 )
 def test_a_residual_measured_otherwise_is_named(size, mistake, counts, said):
-    result = check.jacobi_sweep(stopping_on(size))
+    result = check.jacobi_solve(stopping_on(size))
     assert not result and result.mistake == mistake
     assert counts in result.message and said in result.message
 
 
 def test_the_first_channel_alone_passes_every_case_but_the_rgb_one_whose_red_settles_first():
-    result = check.jacobi_sweep(stopping_on(first_channel))
+    result = check.jacobi_solve(stopping_on(first_channel))
     assert "case 6 is wrong" in result.message
-    assert check.jacobi_sweep(stopping_on(np.max))
+    assert check.jacobi_solve(stopping_on(np.max))
 
 
 def test_the_mean_and_the_change_between_sweeps_are_told_apart():
-    mean = check.jacobi_sweep(stopping_on(np.mean))
-    change = check.jacobi_sweep(until_the_change_is_small)
+    mean = check.jacobi_solve(stopping_on(np.mean))
+    change = check.jacobi_solve(until_the_change_is_small)
     assert mean.mistake != change.mistake
     assert "a stop on the change between sweeps" not in mean.message
 
 
 def test_a_stop_at_or_below_the_tolerance_is_named():
-    result = check.jacobi_sweep(stopping_on(lambda size: np.nextafter(size.max(), -np.inf)))
+    result = check.jacobi_solve(stopping_on(lambda size: np.nextafter(size.max(), -np.inf)))
     assert result.mistake == "a stop at a residual equal to the tolerance"
     assert "case 5 is wrong" in result.message
 
@@ -292,7 +292,7 @@ def test_a_count_from_one_says_g_is_right_and_only_the_count_differs():
         g, sweeps = jacobi(g, tolerance)
         return g, sweeps + 1
 
-    result = check.jacobi_sweep(counted_from_one)
+    result = check.jacobi_solve(counted_from_one)
     assert not result
     assert "g is right; only the number of sweeps differs (expected 16, given 17)" in (
         result.message
@@ -317,7 +317,7 @@ WRITTEN_SWEEP = {1: lambda: a_thousand_sweeps}
 
 def test_graded_boundary_cases_are_drawn_in_the_fixed_cases_families():
     fixed = check._cases()
-    for cases in graded_draws.check_drawn_cases("poisson_boundary"):
+    for cases in graded_draws.check_drawn_cases("boundary_ring"):
         for case, like in zip(cases, fixed, strict=True):
             assert case["background"].shape == like["background"].shape
             assert case["foreground"].shape == like["foreground"].shape
@@ -333,7 +333,7 @@ def test_graded_boundary_cases_are_drawn_in_the_fixed_cases_families():
 
 def test_graded_sweep_cases_are_drawn_in_the_fixed_cases_families():
     fixed = check._sweep_cases()
-    for cases in graded_draws.check_drawn_cases("jacobi_sweep"):
+    for cases in graded_draws.check_drawn_cases("jacobi_solve"):
         assert [c["g"].shape for c in cases] == [c["g"].shape for c in fixed]
         assert not any(cases[number]["g"][1:-1, 1:-1].any() for number in (0, 1, 2, 5))
         assert [c["tolerance"] for c in cases[:4]] == [1e-4, 1e-6, 1e-4, 1e-6]
@@ -345,7 +345,7 @@ def test_graded_sweep_cases_are_drawn_in_the_fixed_cases_families():
 
 
 @pytest.mark.parametrize(
-    ("name", "written"), [("poisson_boundary", {}), ("jacobi_sweep", WRITTEN_SWEEP)]
+    ("name", "written"), [("boundary_ring", {}), ("jacobi_solve", WRITTEN_SWEEP)]
 )
 def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name, written):
     graded_draws.check_graded(name, written)
@@ -378,14 +378,14 @@ def each_channel_on_its_own(count):
 
 @pytest.mark.parametrize("count", [max, sum, lambda counts: counts[-1]])
 def test_each_channel_stopped_on_its_own_is_named(count):
-    result = check.jacobi_sweep(each_channel_on_its_own(count))
+    result = check.jacobi_solve(each_channel_on_its_own(count))
     assert not result and result.mistake == "each channel stopped on its own"
     assert "case 3 is wrong" in result.message
     assert "sweeps the three channels together" in result.message
 
 
 def test_a_right_count_with_a_wrong_g_says_the_count_is_right():
-    result = check.jacobi_sweep(each_channel_on_its_own(max))
+    result = check.jacobi_solve(each_channel_on_its_own(max))
     assert "the number of sweeps is right (52); g is not" in result.message
     assert "sweeps: expected 52, given 52" not in result.message
     assert "largest difference in g at [row, column, channel] [2, 4, 1]" in result.message
@@ -396,7 +396,7 @@ def test_the_count_returned_first_is_named_and_g_is_not_printed():
         g, sweeps = jacobi(g, tolerance)
         return sweeps, g
 
-    result = check.jacobi_sweep(count_first)
+    result = check.jacobi_solve(count_first)
     assert not result and result.mistake == "the number of sweeps first"
     assert "given:    (16, an array of shape (4, 5)): expected g, then the number of sweeps" in (
         result.message
@@ -413,7 +413,7 @@ def drawn(student, monkeypatch):
     figures = []
     drawing = sweep_picture.figure_png
     monkeypatch.setattr(sweep_picture, "figure_png", lambda f: figures.append(f) or drawing(f))
-    result = check.jacobi_sweep(student)
+    result = check.jacobi_solve(student)
     assert result.picture is not None and len(figures) == 1
     return result, figures[0]
 

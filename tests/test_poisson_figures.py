@@ -198,7 +198,7 @@ def _jacobi(g, tolerance, in_place=False):
 
 def test_the_tiny_clone_draws_the_student_s_functions_only_when_they_do_what_the_checks_ask():
     ok = str(figures.tiny_clone_figure(_boundary, _jacobi, zoom=10))
-    assert ok.startswith("your boundary_exercise and jacobi_exercise: 28 sweeps")
+    assert ok.startswith("your boundary_ring and jacobi_solve: 28 sweeps")
     gauss_seidel = partial(_jacobi, in_place=True)
     ring = poisson.correction_boundary(
         figures.TINY_BACKGROUND, figures.TINY_FOREGROUND, figures.TINY_OFFSET

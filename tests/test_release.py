@@ -85,9 +85,9 @@ def worked(edition: dict, student: str) -> dict:
         answers[exercise.function] = "\n".join(lines[: exercise.check_line - 1])
     if student == "bob":
         mistake = named_mistakes(CHECKS, "blur")[0][0]
-        answers["blur_exercise"] = (
+        answers["blur"] = (
             "from mistakes import mistaken\n\n"
-            f"blur_exercise = mistaken({CHECKS!r}, 'blur', {mistake.name!r}, ['image'])"
+            f"blur = mistaken({CHECKS!r}, 'blur', {mistake.name!r}, ['image'])"
         )
     notebook = json.loads(json.dumps(edition))
     for cell in notebook["cells"]:

@@ -15,11 +15,10 @@ lesson's chapter, declared with :func:`exercise`::
 An exercise has one name: the function the student writes, its checker (``check.<name>``),
 the name its reports open with (``FAIL <name>: ...``, the first argument of ``run_cases``) and
 its hint key (``check.hint("<name>")``) are the same word, and nbgrader's grade ids are
-``<name>`` and ``<name>_test``. The declaration therefore takes every name from the checker's.
-``function=`` and ``reported_as=`` are kept for one release, for the chapters that still give
-an exercise a second name (``tests/test_exercise_names.py`` lists them); a new exercise uses
-neither. A handout's own name for the exercise (``"DrawLine"``) is one of ``handout_names``,
-which ``check.hint()`` answers to as well.
+``<name>`` and ``<name>_test``. The declaration therefore takes every name from the checker's
+(``tests/test_exercise_names.py`` holds every exercise to it). A handout's own name for the
+exercise (``"DrawLine"``) is one of ``handout_names``, which ``check.hint()`` answers to as
+well.
 
 Everything else is derived from the declaration: the hint table that ``check.hint(name)``
 reads (:func:`~course.check.hints.register_hints`), the messages for a call to a refused
@@ -67,11 +66,10 @@ DEFAULT_REFUSAL = N_(
 class Exercise:
     """An exercise as its checker declares it.
 
-    ``name`` is the checker's (``check.<name>``), and the exercise's one name: ``function``
-    (the function the student writes, which ``check.hint()`` is asked with) and
-    ``reported_as`` (the name its reports open with, ``FAIL <reported_as>: ...``) are ``name``
-    unless a chapter not yet renamed declares otherwise (:attr:`names`). ``handout_names`` are
-    the handout's names for it, which ``check.hint()`` accepts too.
+    ``name`` is the checker's (``check.<name>``), and the exercise's one name: the function the
+    student writes, the name its reports open with (``FAIL <name>: ...``) and the hint key
+    (``check.hint("<name>")``). ``handout_names`` are the handout's names for it, which
+    ``check.hint()`` accepts too.
     ``refuses`` lists the library's own answers: a student's code that calls one is told to
     write it, with :data:`DEFAULT_REFUSAL`; or it is a function that maps them to their
     messages, made in the language of the moment (:func:`refused_messages`).
@@ -82,8 +80,6 @@ class Exercise:
     """
 
     name: str
-    function: str
-    reported_as: str
     checker: Callable[..., Any]
     hints: Hints
     refuses: tuple[Any, ...] | Callable[[], Mapping[Any, str]]
@@ -96,15 +92,6 @@ class Exercise:
         """The module the checker is in: its chapter's ``check``."""
         return self.checker.__module__
 
-    @property
-    def names(self) -> tuple[str, ...]:
-        """The exercise's names, each once: the checker's, the function's, the report's.
-
-        One, as every exercise should have; more where a chapter still declares
-        ``function=`` or ``reported_as=`` otherwise.
-        """
-        return tuple(dict.fromkeys((self.name, self.function, self.reported_as)))
-
 
 _DECLARED: dict[str, Exercise] = {}
 
@@ -114,8 +101,6 @@ def exercise(
     hints: Hints,
     refuses: Sequence[Any] | Callable[[], Mapping[Any, str]],
     handout_names: Sequence[str] = (),
-    function: str | None = None,
-    reported_as: str | None = None,
     grader_reference: Callable[..., Any] | None = None,
     draw: Callable[[Any], Sequence[Mapping[str, Any]]] | None = None,
 ) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
@@ -124,8 +109,6 @@ def exercise(
     ``hints`` and ``refuses`` are required, so a declaration that leaves one out fails at
     import, naming it; the others default as :class:`Exercise` says. The exercise's name is
     the checker's: the student's function, the report and the hint key share it.
-    ``function`` and ``reported_as`` give a second name, as a chapter not yet renamed does;
-    kept for one release, a new exercise leaves them out.
 
     Examples
     --------
@@ -170,11 +153,9 @@ def exercise(
                     module=checker.__module__, name=name, steps=", ".join(blank)
                 )
             )
-        # One name: the report's is the function's, the function's the checker's.
+        # One name: the function's, the report's and the hint key are the checker's.
         declaration = Exercise(
             name=name,
-            function=function or name,
-            reported_as=reported_as or function or name,
             checker=checker,
             hints=hints,
             refuses=refuses if callable(refuses) else tuple(refuses),
@@ -182,15 +163,8 @@ def exercise(
             grader_reference=grader_reference,
             draw=draw,
         )
-        for key in {declaration.name, declaration.function, declaration.reported_as}:
-            _DECLARED[key] = declaration
-        register_hints(
-            declaration.reported_as,
-            hints,
-            declaration.function,
-            *declaration.handout_names,
-            declaration.name,
-        )
+        _DECLARED[name] = declaration
+        register_hints(name, hints, *declaration.handout_names)
         checker.exercise = declaration  # type: ignore[attr-defined]
         return checker
 
@@ -198,7 +172,7 @@ def exercise(
 
 
 def declared(name: str) -> Exercise:
-    """The exercise declared under ``name`` (its checker's, its function's or its report's).
+    """The exercise declared under ``name``, its one name (the checker's).
 
     A LookupError naming the declared ones if none.
     """

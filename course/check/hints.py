@@ -50,7 +50,6 @@ class Hint:
 
 
 _HINTS: dict[str, tuple[str, Hints]] = {}
-_ASK_BY: dict[str, str] = {}  # exercise -> the name a student asks check.hint() with
 
 
 def register_hints(exercise: str, hints: Hints, *names: str) -> Hints:
@@ -61,7 +60,6 @@ def register_hints(exercise: str, hints: Hints, *names: str) -> Hints:
         )
     for name in (exercise, *names):
         _HINTS[name.lower()] = (exercise, hints)
-    _ASK_BY[exercise] = names[0] if names else exercise
     return hints
 
 
@@ -116,7 +114,7 @@ def failure_hint(exercise: str, hints: Hints, failures: int) -> str:
                 failures_type=type(failures).__name__
             )
         )
-    name = _ASK_BY.get(str(exercise), str(exercise))
+    name = str(exercise)
     if failures <= 1:
         return _('Hint: {where}\n(More: check.hint("{name}").)').format(
             where=_(hints.where), name=name

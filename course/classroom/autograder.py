@@ -143,7 +143,7 @@ def grade_exercise(
     names = [grade_id for grade_id, _source in answers]
     if function not in names:
         return CheckResult(
-            declaration.reported_as,
+            declaration.name,
             False,
             0,
             _("the notebook has no answer cell for {function}").format(function=function),

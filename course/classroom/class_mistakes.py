@@ -80,7 +80,7 @@ class ExerciseOutcomes:
 def checker_mistakes(checker: str) -> list[str]:
     """The English names of the mistakes the exercise's checker names, each once, in order.
 
-    ``checker`` is the checker's name, its function's or its report's. The checker runs
+    ``checker`` is the exercise's one name, its checker's. The checker runs
     once with ``run_cases`` and ``call_budget`` recording their ``mistakes`` and ``too_many``.
 
     Examples
@@ -279,10 +279,10 @@ def _assignment_outcomes(
         # Each student's report of this exercise; None: submitted, but the test did not run.
         reports: dict[str, dict[str, Any] | None] = {}
         for student, notebooks in sorted(submitted.items()):
-            cells = [c for nb in notebooks for f, c in _test_cells(nb) if f == exercise.function]
+            cells = [c for nb in notebooks for f, c in _test_cells(nb) if f == exercise.name]
             reports[student] = next(filter(None, map(_check_of, cells)), None)
         outcomes = _counted(reports, checker_mistakes(exercise.name), len(students))
-        found.append(ExerciseOutcomes(assignment, exercise.function, exercise.name, outcomes))
+        found.append(ExerciseOutcomes(assignment, exercise.name, exercise.name, outcomes))
     return found
 
 

@@ -59,8 +59,8 @@ from course.lessons.l05_antialiasing.splat_tables import splat_table, table_of
 
 __all__ = [
     "arc_length_weights",
-    "bilinear_splat",
     "hint",
+    "splat",
 ]
 
 _LIBRARY_FUNCTIONS = (
@@ -272,10 +272,9 @@ SPLAT_HINTS = Hints(
 @exercise(
     hints=SPLAT_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    function="splat",
     draw=_drawn_splat_cases,
 )
-def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
+def splat(student: Callable[[float, float], Any]) -> CheckResult:
     """Check ``student(x, y) -> (pixels, weights)`` against the bilinear splat about centres.
 
     The correct splat lights the four pixels whose centres (c + 0.5,
@@ -286,7 +285,7 @@ def bilinear_splat(student: Callable[[float, float], Any]) -> CheckResult:
 
     Examples
     --------
-    >>> bilinear_splat(lambda x, y: ([(int(x), int(y))], [1.0])).mistake
+    >>> splat(lambda x, y: ([(int(x), int(y))], [1.0])).mistake
     'the whole point to one pixel'
     """
     return run_cases(

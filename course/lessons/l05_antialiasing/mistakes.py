@@ -1,6 +1,6 @@
 """The known mistakes lesson 05's checkers name, each reproduced on the checker's cases.
 
-:func:`splat_mistakes` are the wrong splats :func:`.check.bilinear_splat`
+:func:`splat_mistakes` are the wrong splats :func:`.check.splat`
 names, each answer a splat table (:mod:`.splat_tables`): the whole point
 given to one pixel (the handouts' plain loop, the GAMES101 report's left
 addColor) or to the pixel under it, pixels taken at their corners (its
@@ -95,7 +95,7 @@ def truncated(x: float, y: float) -> np.ndarray:
 
 
 def splat_mistakes() -> tuple[Mistake, ...]:
-    """The wrong splats :func:`.check.bilinear_splat` names, in the current language."""
+    """The wrong splats :func:`.check.splat` names, in the current language."""
     return (
         Mistake(
             _("the whole point to one pixel"),

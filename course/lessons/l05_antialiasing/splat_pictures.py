@@ -6,7 +6,7 @@ around the point, on axes in the lesson's coordinates: pixel (c, r) is the squar
 "(2, 1)", is the square the axes number (2, 1), and the point sits where it lies among the
 pixel centres. :func:`pass_picture` shows a passing splat beside the expected one.
 
-Only :func:`.check.bilinear_splat` calls these, with splat tables it made
+Only :func:`.check.splat` calls these, with splat tables it made
 (:mod:`.splat_tables`), so this module checks none (``UNCHECKED = True``; the fuzz test
 skips it).
 """

@@ -1,5 +1,8 @@
 """Lesson 06 exercises: the lab's ``DitheringOrdered`` and ``DitheringErrorDiffuse``.
 
+The student writes them as ``dithering_ordered`` and ``dithering_error_diffuse``, the names
+of their checkers and reports; ``check.hint()`` answers to the lab's names too.
+
 A failure shows the expected and given outputs and their difference, names
 the first wrong pixel (for error diffusion, with the value and the error
 carried into it), and recognises the slips the lab's reports make or invite:
@@ -127,7 +130,7 @@ def _ordered_cases() -> list[dict[str, Any]]:
 
 
 def _drawn_ordered_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
-    """Graded cases of ``DitheringOrdered``, in the fixed cases' order, drawn from ``rng``.
+    """Graded cases of ``dithering_ordered``, in the fixed cases' order, drawn from ``rng``.
 
     The ten levels 0, 1/9, ..., 1, exactly on M / 9 (where > and >= differ), shuffled into a
     2 x 5 image; 2 x 3 and 4 x 7 images of uniform noise; a face (:func:`_drawn_face`).
@@ -197,7 +200,7 @@ ORDERED_HINTS = Hints(
 @exercise(
     hints=ORDERED_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    reported_as="DitheringOrdered",
+    handout_names=("DitheringOrdered",),
     draw=_drawn_ordered_cases,
 )
 def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
@@ -240,7 +243,7 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
         _eight_bit(ordered),
     ]
     return run_cases(
-        "DitheringOrdered",
+        "dithering_ordered",
         student,
         _ordered_cases(),
         reference=ordered,
@@ -269,7 +272,7 @@ def _diffusion_cases() -> list[dict[str, Any]]:
 
 
 def _drawn_diffusion_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
-    """Graded cases of ``DitheringErrorDiffuse``, in the fixed cases' order, drawn from ``rng``.
+    """Graded cases of ``dithering_error_diffuse``, in the fixed cases' order, drawn from ``rng``.
 
     First a 4 x 16 ramp from a dark level in [0, 0.15] to a light one in [0.85, 1], either
     way round; then flat 0.5, the threshold itself, 4 x 6; a row of 10 noisy pixels; a column
@@ -348,7 +351,7 @@ DIFFUSION_HINTS = Hints(
 @exercise(
     hints=DIFFUSION_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    reported_as="DitheringErrorDiffuse",
+    handout_names=("DitheringErrorDiffuse",),
     draw=_drawn_diffusion_cases,
 )
 def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
@@ -413,7 +416,7 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
         _eight_bit(_loop_reference),
     ]
     return run_cases(
-        "DitheringErrorDiffuse",
+        "dithering_error_diffuse",
         student,
         _diffusion_cases(),
         reference=_loop_reference,

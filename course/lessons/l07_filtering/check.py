@@ -1,5 +1,9 @@
 """Lesson 07 exercises: the lab's ``Blur`` and ``Edge``.
 
+The student writes them as ``blur`` and ``edge``, the names of their checkers and reports;
+``check.hint()`` answers to the lab's names too. The notebook reaches the library's filters
+as ``filters.blur`` and ``filters.sobel``, so a student's ``blur`` shadows none of them.
+
 A failure names the first wrong pixel as (x, y) with its window (how many of
 its nine neighbours lie inside the image), draws a map of where the output
 differs, and recognises the usual border slips: zero padding (dividing by 9
@@ -46,7 +50,7 @@ def _cases() -> list[dict[str, Any]]:
 
 
 def _drawn_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
-    """Graded cases of ``Blur`` and ``Edge``, in the fixed cases' order and sizes, drawn
+    """Graded cases of ``blur`` and ``edge``, in the fixed cases' order and sizes, drawn
     from ``rng``.
 
     Uniform noise 4 x 4; an 8 x 10 image of one dark level in [0.1, 0.3] holding a bright
@@ -373,8 +377,7 @@ BLUR_HINTS = Hints(
 @exercise(
     hints=BLUR_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    function="blur_exercise",
-    reported_as="Blur",
+    handout_names=("Blur",),
     draw=_drawn_cases,
 )
 def blur(student: Callable[..., Any]) -> CheckResult:
@@ -391,7 +394,7 @@ def blur(student: Callable[..., Any]) -> CheckResult:
     False
     """
     return run_cases(
-        "Blur",
+        "blur",
         student,
         _cases(),
         reference_blur,
@@ -434,8 +437,7 @@ EDGE_HINTS = Hints(
 @exercise(
     hints=EDGE_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    function="edge_exercise",
-    reported_as="Edge",
+    handout_names=("Edge",),
     draw=_drawn_cases,
 )
 def edge(student: Callable[..., Any]) -> CheckResult:
@@ -453,7 +455,7 @@ def edge(student: Callable[..., Any]) -> CheckResult:
     False
     """
     return run_cases(
-        "Edge",
+        "edge",
         student,
         _cases(),
         _sobel_replicated,

@@ -2,9 +2,9 @@
 
 The lab's skeleton solves for ``g = result - foreground``, starting from an
 array of zeros whose outer ring the student fills with ``background -
-foreground`` (:func:`poisson_boundary`); Jacobi sweeps then make ``g``
+foreground`` (:func:`boundary_ring`); Jacobi sweeps then make ``g``
 harmonic inside, each pixel the mean of its four neighbours, until the
-residual is small (:func:`jacobi_sweep`; an RGB ``g``'s channels are swept
+residual is small (:func:`jacobi_solve`; an RGB ``g``'s channels are swept
 together, and its residual is the largest over every channel). Failures draw
 the difference (a wrong sweep: both loops' stops on Jacobi's residual, and
 the difference, :mod:`.sweep_picture`) and recognise the sign flipped, x and
@@ -17,9 +17,13 @@ function that writes into its inputs (``g = background[...]; g -= foreground``
 changes the background) fails, however right its values. A pass shows the
 student's ``g`` beside the expected one.
 
+Each exercise has one name, that of what the student's function does: ``boundary_ring`` fills
+the ring, ``jacobi_solve`` sweeps until the residual is small (not ``jacobi_sweeps``, the
+library's generator of single sweeps).
+
 Hints come in steps: a failure says where to look, the next failures say
-more; ``check.hint("jacobi_exercise")`` says more at once and
-``check.hint("jacobi_exercise", recipe=True)`` gives the recipe.
+more; ``check.hint("jacobi_solve")`` says more at once and
+``check.hint("jacobi_solve", recipe=True)`` gives the recipe.
 """
 
 from __future__ import annotations
@@ -47,7 +51,7 @@ from course.lessons.l08_poisson.mistakes import (
 from course.lessons.l08_poisson.sweep_picture import sweep_picture
 from course.poisson import solvers as poisson_solvers
 
-__all__ = ["hint", "jacobi_sweep", "poisson_boundary"]
+__all__ = ["boundary_ring", "hint", "jacobi_solve"]
 
 _LIBRARY_FUNCTIONS = (
     poisson.correction_boundary,
@@ -83,7 +87,7 @@ def _cases() -> list[dict[str, Any]]:
 
 
 def _drawn_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
-    """Graded cases of ``boundary_exercise``, in the fixed cases' order and sizes, drawn from
+    """Graded cases of ``boundary_ring``, in the fixed cases' order and sizes, drawn from
     ``rng``: images of multiples of 1/16 (every difference exact).
 
     Gray 3 x 3 in 5 x 5, one pixel in; gray 3 x 5 in 6 x 9 at an offset (x, y) with x != y
@@ -140,10 +144,9 @@ BOUNDARY_HINTS = Hints(
 @exercise(
     hints=BOUNDARY_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    function="boundary_exercise",
     draw=_drawn_cases,
 )
-def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
+def boundary_ring(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(background, foreground, offset)`` against the lab's boundary setup.
 
     It must return ``g``, of the foreground's shape: ``background - foreground``
@@ -153,12 +156,12 @@ def poisson_boundary(student: Callable[..., Any]) -> CheckResult:
     Examples
     --------
     >>> zeros = lambda background, foreground, offset: foreground * 0
-    >>> print(poisson_boundary(zeros))  # doctest: +ELLIPSIS
-    FAIL boundary_exercise: case 1 is wrong
+    >>> print(boundary_ring(zeros))  # doctest: +ELLIPSIS
+    FAIL boundary_ring: case 1 is wrong
     ...
     """
     return run_cases(
-        "boundary_exercise",
+        "boundary_ring",
         student,
         _cases(),
         poisson.correction_boundary,
@@ -210,7 +213,7 @@ def _sweep_cases() -> list[dict[str, Any]]:
 
 
 def _drawn_sweep_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
-    """Graded cases of ``jacobi_exercise``, in the fixed cases' order and sizes, drawn from
+    """Graded cases of ``jacobi_solve``, in the fixed cases' order and sizes, drawn from
     ``rng``: rings of multiples of 1/16 around zeros (every sum exact).
 
     A 4 x 5 ring at tolerance 1e-4, on which the residual's max, its mean, the change between
@@ -356,10 +359,9 @@ SWEEP_HINTS = Hints(
 @exercise(
     hints=SWEEP_HINTS,
     refuses=_LIBRARY_FUNCTIONS,
-    function="jacobi_exercise",
     draw=_drawn_sweep_cases,
 )
-def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
+def jacobi_solve(student: Callable[..., Any]) -> CheckResult:
     """Check ``student(g, tolerance) -> (g, sweeps)``: Jacobi sweeps until the residual is small.
 
     The outer ring of ``g`` (gray ``(H, W)`` or RGB ``(H, W, 3)``) is fixed;
@@ -373,11 +375,11 @@ def jacobi_sweep(student: Callable[..., Any]) -> CheckResult:
     Examples
     --------
     >>> from course.lessons.l08_poisson.mistakes import gauss_seidel_until
-    >>> jacobi_sweep(gauss_seidel_until).mistake
+    >>> jacobi_solve(gauss_seidel_until).mistake
     'in place: Gauss-Seidel'
     """
     return run_cases(
-        "jacobi_exercise",
+        "jacobi_solve",
         student,
         _sweep_cases(),
         jacobi_until,

@@ -273,7 +273,7 @@ def _tiny_correction(boundary: Any, jacobi: Any) -> tuple[np.ndarray, int, str]:
         given = np.asarray(given, dtype=float)
         same = given.shape == expected.shape and np.allclose(given, expected, atol=1e-5)
         if same and int(count) == sweeps:
-            return given, sweeps, _("your boundary_exercise and jacobi_exercise")
+            return given, sweeps, _("your boundary_ring and jacobi_solve")
     except Exception:  # the student's code is not written yet, or fails: show the library's
         pass
     return expected, sweeps, _("the library's (yours do not pass their checks yet)")

@@ -1,8 +1,8 @@
 """The known mistakes lesson 08's checkers name, each reproduced on the checker's cases.
 
-:func:`boundary_mistakes` are the wrong rings :func:`.check.poisson_boundary` names: the
+:func:`boundary_mistakes` are the wrong rings :func:`.check.boundary_ring` names: the
 sign flipped, the background alone, x and y swapped. :func:`sweep_mistakes` are the
-wrong loops :func:`.check.jacobi_sweep` names: the sweep done in place (the lab's loop:
+wrong loops :func:`.check.jacobi_solve` names: the sweep done in place (the lab's loop:
 Gauss-Seidel), the lab's fixed count of sweeps, a stop one sweep late, a stop on the
 change between sweeps, on the residual's mean, at a residual equal to the tolerance, on
 a quarter of the residual or on its first channel alone, each channel of an RGB ``g``

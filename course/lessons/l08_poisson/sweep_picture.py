@@ -7,7 +7,7 @@ same. So the left panel is the count: Jacobi's residual before each sweep, on a 
 the tolerance across it, and a line at each loop's stop, the student's residual marked at
 theirs. The right panel is the difference, the student's ``g`` minus Jacobi's, in its
 own scale (for RGB, the channel where it is largest), each pixel a square at a whole
-zoom. :func:`.check.jacobi_sweep` draws it; the checker's own cases and the student's
+zoom. :func:`.check.jacobi_solve` draws it; the checker's own cases and the student's
 answer as it has read it come in, so this module checks none (``UNCHECKED = True``).
 """
 

@@ -519,14 +519,12 @@ def painted_into_a_copy(control_points, window):
     return window
 
 
-#: The drawing loop's mistakes a function answering with their pixels cannot make: the green
-#: channel alone, a colour, a copy, and t accumulated (recognised by what the loop paints on a
-#: probe curve too).
+#: The drawing loop's mistakes a function answering with their pixels cannot make: a colour,
+#: a copy, and t accumulated (recognised by what the loop paints on a probe curve too).
 WRITTEN_BEZIER = {
-    0: lambda: green_channel_only,
-    1: lambda: painted_in_8_bit_green,
-    2: lambda: painted_into_a_copy,
-    3: lambda: float_loop,
+    0: lambda: painted_in_8_bit_green,
+    1: lambda: painted_into_a_copy,
+    2: lambda: float_loop,
 }
 
 

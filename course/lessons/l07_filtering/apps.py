@@ -88,10 +88,11 @@ def parse_kernel(text: str) -> np.ndarray:
     --------
     >>> parse_kernel("1/16 2/16 1/16; 2/16 4/16 2/16; 1/16 2/16 1/16").sum()
     np.float64(1.0)
-    >>> parse_kernel("1 2; 3 4")
-    Traceback (most recent call last):
-    ...
-    ValueError: kernel: expected 3 rows of 3 numbers; got rows of 2, 2
+    >>> try:
+    ...     parse_kernel("1 2; 3 4")
+    ... except ValueError as error:
+    ...     print(str(error).split("; got ")[1])
+    2 rows, of 2, 2 numbers
     """
     if not isinstance(text, str):
         raise TypeError(

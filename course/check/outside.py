@@ -50,6 +50,8 @@ import numpy as np
 from course.check._outside_child import (
     ARRAY,
     CHANGE,
+    EVENT,
+    ITERATOR,
     LIST,
     LOAD,
     MEMORY_EXIT,
@@ -61,7 +63,7 @@ from course.check._outside_child import (
 )
 from course.check.references import CallBudget, call_limits, known_mistake
 from course.check.sandbox import MEMORY_BUDGET, TIME_BUDGET, CaseStopped
-from course.i18n import _
+from course.i18n import N_, _
 
 __all__ = ["PRELUDE", "Outside", "outside_function"]
 
@@ -350,14 +352,7 @@ class Outside:
             raise CaseStopped(reason, "time")
         if "unreadable" in answer:
             kind, count = [*list(answer["unreadable"]), 0, 0][:2]
-            if kind == NESTED:
-                why = _("lists nested more than {count} deep")
-            elif kind == ARRAY:
-                why = _("an array of {count:,} numbers")
-            elif kind == LIST:
-                why = _("a list of {count:,} items")
-            else:
-                why = _("an iterator of more than {count:,} items")
+            why = _(_UNREADABLE.get(kind, _UNREADABLE[ITERATOR]))
             unreadable = _("your answer cannot be read: {reason}")
             raise CaseStopped(unreadable.format(reason=why.format(count=int(count))), "answer")
         if "missing" in answer:
@@ -409,22 +404,28 @@ def _rebuilt(error: Mapping[str, Any]) -> Exception:
     return rebuilt
 
 
+#: Why an answer could not cross, by the child's code for it (:class:`Unreadable`'s kinds).
+_UNREADABLE = {
+    NESTED: N_("lists nested more than {count} deep"),
+    ARRAY: N_("an array of {count:,} numbers"),
+    LIST: N_("a list of {count:,} items"),
+    ITERATOR: N_("an iterator of more than {count:,} items"),
+}
+#: What the confined child refused, by its code; any other code is a refused audit event.
+_REFUSALS = {
+    READ: N_("the grading process reads no file outside Python's and numpy's own: {subject}"),
+    CHANGE: N_("the grading process writes only in its own working folder: {subject}"),
+    UP: N_("the grading process opens no path that climbs with '..': {subject}"),
+    LOAD: N_("the grading process does not load {subject}: numpy and Python's own modules only"),
+    EVENT: N_(
+        "the grading process does not allow {subject} (no processes, signals, sockets or ctypes)"
+    ),
+}
+
+
 def _refusal(kind: str, subject: str) -> str:
     """What the grader's confined child refused to do, in the student's language."""
-    if kind == READ:
-        text = _("the grading process reads no file outside Python's and numpy's own: {subject}")
-    elif kind == CHANGE:
-        text = _("the grading process writes only in its own working folder: {subject}")
-    elif kind == UP:
-        text = _("the grading process opens no path that climbs with '..': {subject}")
-    elif kind == LOAD:
-        text = _("the grading process does not load {subject}: numpy and Python's own modules only")
-    else:
-        text = _(
-            "the grading process does not allow {subject} "
-            "(no processes, signals, sockets or ctypes)"
-        )
-    return text.format(subject=subject)
+    return _(_REFUSALS.get(kind, _REFUSALS[EVENT])).format(subject=subject)
 
 
 def outside_function(

@@ -45,6 +45,17 @@ def test_wavefront_in_bands_gives_the_same_values(gray, kernel, band):
     assert np.array_equal(banded, values)
 
 
+@given(float_grays, st.sampled_from(sorted(dither.KERNELS)), st.integers(1, 6))
+def test_wavefront_in_chunks_of_any_length_gives_the_same_values(gray, kernel, chunk):
+    # A chunk's columns hold cells no pixel owns, beside the image: zeroed before
+    # their step, they push nothing back (one ulp off, or one pixel, would fail).
+    from course.halftone.diffusion import _error_diffusion_wavefront
+
+    values = dither.error_diffusion_values(gray, kernel, method="loop")
+    chunked = _error_diffusion_wavefront(gray, dither.diffusion_offsets(kernel), chunk=chunk)[1]
+    assert np.array_equal(chunked, values)
+
+
 @given(float_grays, st.sampled_from(sorted(dither.KERNELS)))
 def test_serpentine_rows_form_equals_the_serpentine_loop(gray, kernel):
     expected = loop(gray, kernel, serpentine=True)

@@ -14,6 +14,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+from numpy.lib.stride_tricks import sliding_window_view
 
 from course._validate import as_choice, as_gray, describe
 from course.halftone._diffusion import FORMS, default_method, diffuse, kernel_offsets
@@ -40,6 +41,9 @@ KERNELS: dict[str, tuple[tuple[tuple[int, ...], ...], int]] = {
 }
 
 ERROR_DIFFUSION_METHODS = ("wavefront", "rows", "loop")
+
+# Wavefront steps whose views are made together (see _wavefront_band); 32 measured best.
+_CHUNK = 32
 
 
 def diffusion_offsets(kernel: str = "floyd-steinberg") -> list[tuple[int, int, float]]:
@@ -254,7 +258,10 @@ def _wavefront_skew(offsets: list[tuple[int, int, float]]) -> int:
 
 
 def _error_diffusion_wavefront(
-    gray: np.ndarray, offsets: list[tuple[int, int, float]], band: int | None = None
+    gray: np.ndarray,
+    offsets: list[tuple[int, int, float]],
+    band: int | None = None,
+    chunk: int = _CHUNK,
 ) -> tuple[np.ndarray, np.ndarray]:
     """All pixels of one wavefront x + s y = t at once, t = 0, 1, 2, ...
 
@@ -278,7 +285,7 @@ def _error_diffusion_wavefront(
     for first in range(0, height, band):
         count = min(band, height - first)
         rows = below + [row(y) for y in range(first + depth, first + count + depth)]
-        below = _wavefront_band(rows, count, offsets, values[first : first + count])
+        below = _wavefront_band(rows, count, offsets, values[first : first + count], chunk)
     return (values > 0.5).astype(float), values
 
 
@@ -287,47 +294,99 @@ def _wavefront_band(
     count: int,
     offsets: list[tuple[int, int, float]],
     values: np.ndarray,
+    chunk: int = _CHUNK,
 ) -> list[np.ndarray]:
     """Run the first ``count`` of ``rows`` into ``values``; return the rest as received.
 
     ``pending[t, y]`` holds pixel (x = t - s y, y): its value plus the errors
     received so far, so each wavefront is one row of ``pending``, and a push
-    by (dx, dy) lands in row ``t + dx + s dy``, column ``y + dy``. Pushes that
-    leave the image land in cells no pixel owns, and are never read.
+    by (dx, dy) lands in row ``t + dx + s dy``, column ``y + dy``.
+
+    A step costs a few numpy calls whatever its length, so the time goes to
+    the calls and to making their views. The steps therefore run in chunks of
+    ``chunk``: a chunk's views are made once, over the columns of all its
+    wavefronts, and a step takes its own from iterators. A chunk's columns
+    include cells no pixel owns (x < 0 or x >= width). Those far from the
+    image only ever receive nothing; those next to it receive the pushes
+    that leave the image, and are zeroed before their step, so that the
+    errors they push back are exactly 0.
     """
     width = len(rows[0])
     depth = len(rows) - count
     skew = _wavefront_skew(offsets)
     steps = width + skew * (count - 1)
     reach = max(max(dx + skew * dy for dx, dy, _ in offsets), skew * depth)
-    pending = np.zeros((steps + reach, count + depth))
+    pending = np.zeros((steps + reach + chunk, count + depth))
     for y, initial in enumerate(rows):
         pending[skew * y : skew * y + width, y] = initial
 
-    # One block addition per kernel row, deepest first. A block spans the
-    # row's contiguous dx range, so its targets are consecutive rows of
-    # pending; ``targets[t : t + size, top:bottom]`` are those of wavefront t.
+    # One block addition per kernel row, deepest first: a block spans the row's
+    # contiguous dx range, whose targets are consecutive rows of pending.
     weights, blocks = [], []
     for dy in sorted({dy for _dx, dy, _weight in offsets}, reverse=True):
         row = {dx: weight for dx, other_dy, weight in offsets if other_dy == dy}
         first, last = min(row), max(row)
         start = len(weights)
         weights.extend(row.get(dx, 0.0) for dx in range(first, last + 1))
-        targets = pending[first + skew * dy :, dy:]
-        blocks.append((targets, last - first + 1, slice(start, len(weights))))
+        blocks.append((first + skew * dy, dy, last - first + 1, slice(start, len(weights))))
     weight_column = np.array(weights)[:, None]
-    # Scratch space reused by every step: allocation costs as much as the arithmetic.
-    error_buffer, pushed_buffer = np.empty(count), np.empty((len(weights), count))
-    wavefronts = [
-        (max(0, (t - width) // skew + 1), min(count, t // skew + 1)) for t in range(steps)
-    ]
+    # The cells beside the image that a push can leave the image into, and come back from.
+    beside = [*range(-max(dx for dx, _dy, _w in offsets), 0)]
+    beside += range(width, width - min(dx for dx, _dy, _w in offsets))
 
-    for t, (top, bottom) in enumerate(wavefronts):
-        value = pending[t, top:bottom]
-        error = np.subtract(value, value > 0.5, out=error_buffer[: bottom - top])
-        pushed = np.multiply(weight_column, error, out=pushed_buffer[:, : bottom - top])
-        for targets, size, share in blocks:
-            targets[t : t + size, top:bottom] += pushed[share]
+    error_buffer, pushed_buffer = np.empty(count), np.empty((len(weights), count))
+    above_buffer = np.empty(count, dtype=bool)
+    add, greater, multiply, subtract = np.add, np.greater, np.multiply, np.subtract
+    for begin in range(0, steps, chunk):
+        end = min(steps, begin + chunk)
+        top = max(0, (begin - width) // skew + 1)
+        bottom = min(count, (end - 1) // skew + 1)
+        size = bottom - top
+        error, above = error_buffer[:size], above_buffer[:size]
+        pushed = pushed_buffer[:, :size]
+        # A block of one kernel row's dx is one row of pending: plain rows add faster.
+        shares = [pushed[share.start] if span == 1 else pushed[share] for *_, span, share in blocks]
+        targets = [
+            pending[begin + row : end + row, top + dy : bottom + dy]
+            if span == 1
+            else sliding_window_view(
+                pending[begin + row : end + row + span - 1, top + dy : bottom + dy],
+                span,
+                axis=0,
+                writeable=True,
+            ).transpose(0, 2, 1)
+            for row, dy, span, _share in blocks
+        ]
+        zeroed: list[list[int]] = [[] for _ in range(end - begin)]
+        for x in beside:
+            for t in range(begin + (x - begin) % skew, end, skew):
+                if top <= (y := (t - x) // skew) < bottom:
+                    zeroed[t - begin].append(y - top)
+        # Unrolled for one, two and three kernel rows: a loop over the blocks
+        # would cost a quarter of the step.
+        if len(blocks) == 2:
+            (first, second), (first_share, second_share) = targets, shares
+            for value, cells, first_target, second_target in zip(
+                pending[begin:end, top:bottom], zeroed, first, second, strict=True
+            ):
+                for cell in cells:
+                    value[cell] = 0.0
+                greater(value, 0.5, above)
+                subtract(value, above, error)
+                multiply(weight_column, error, pushed)
+                add(first_target, first_share, first_target)
+                add(second_target, second_share, second_target)
+        else:
+            for value, cells, *step_targets in zip(
+                pending[begin:end, top:bottom], zeroed, *targets, strict=True
+            ):
+                for cell in cells:
+                    value[cell] = 0.0
+                greater(value, 0.5, above)
+                subtract(value, above, error)
+                multiply(weight_column, error, pushed)
+                for target, share in zip(step_targets, shares, strict=True):
+                    add(target, share, target)
 
     # A pixel's pending value is final once its wavefront has run.
     for y in range(count):

@@ -197,20 +197,22 @@ def as_image(image: Any, name: str = "image", copy: bool = True) -> np.ndarray:
                 name=name, limit=limits.MAX_PIXELS, shape=array.shape
             )
         )
-    require_finite(array, name)
-    if array.min() < 0 or array.max() > 1:
+    low, high = array.min(), array.max()
+    # NaN and inf fail this one test too: then say which of them it was.
+    if not (low >= 0 and high <= 1):
+        require_finite(array, name)
         raise ValueError(
             _(
                 "{name} values must lie in [0, 1]; got values from {low:g} to {high:g} (divide "
                 "uint8 images by 255)"
-            ).format(name=name, low=array.min(), high=array.max())
+            ).format(name=name, low=low, high=high)
         )
     return array
 
 
-def as_gray(image: Any, name: str = "gray") -> np.ndarray:
-    """A gray float image ``(H, W)`` with values in [0, 1]."""
-    array = as_image(image, name)
+def as_gray(image: Any, name: str = "gray", copy: bool = True) -> np.ndarray:
+    """A gray float image ``(H, W)`` in [0, 1]; ``copy=False`` as in :func:`as_image`."""
+    array = as_image(image, name, copy)
     if array.ndim != 2:
         raise ValueError(
             _(

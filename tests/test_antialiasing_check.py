@@ -406,7 +406,7 @@ def normalised(x, y):
 
 def on_the_canvas_only(x, y):
     pixels, weights = correct(x, y)
-    kept = [(p, w) for p, w in zip(pixels, weights) if p[0] >= 0 and p[1] >= 0]
+    kept = [(p, w) for p, w in zip(pixels, weights, strict=True) if p[0] >= 0 and p[1] >= 0]
     return [p for p, _ in kept], [w for _, w in kept]
 
 

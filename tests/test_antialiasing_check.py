@@ -361,3 +361,77 @@ def test_the_weights_picture_numbers_samples_with_whole_numbers(monkeypatch):
     low, high = axes.get_xlim()
     shown = [tick for tick in axes.get_xticks() if low <= tick <= high]
     assert shown and all(float(tick).is_integer() for tick in shown), shown
+
+
+# --- issue 34, the readers' own findings: the report's addColor taken at its word -----------
+
+
+def right_addcolor_read_literally(x, y):
+    # The GAMES101 report's right addColor, with its first version's dx = point.x - p1.x.
+    center_x, center_y = round(x), round(y)
+    p1 = (center_x - 1, center_y - 1)
+    dx, dy = x - p1[0], y - p1[1]
+    pixels = [p1, (center_x, center_y - 1), (center_x - 1, center_y), (center_x, center_y)]
+    return pixels, [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy]
+
+
+def right_addcolor_with_std_round(x, y):
+    # The same with C++'s std::round (halves away from 0): at a pixel centre, the corners' splat.
+    center_x, center_y = math.floor(x + 0.5), math.floor(y + 0.5)
+    p1 = (center_x - 1, center_y - 1)
+    dx, dy = x - p1[0], y - p1[1]
+    pixels = [p1, (center_x, center_y - 1), (center_x - 1, center_y), (center_x, center_y)]
+    return pixels, [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy]
+
+
+def right_addcolor_from_the_centre(x, y):
+    # The report's right addColor with dx from p1's centre: Exercise 1's splat.
+    center_x, center_y = round(x), round(y)
+    p1 = (center_x - 1, center_y - 1)
+    dx, dy = x - (p1[0] + 0.5), y - (p1[1] + 0.5)
+    pixels = [p1, (center_x, center_y - 1), (center_x - 1, center_y), (center_x, center_y)]
+    return pixels, [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy]
+
+
+def times_255(x, y):
+    # The report's img.at<cv::Vec3b>(p1) += color * weight, with color (0, 255, 0).
+    pixels, weights = correct(x, y)
+    return pixels, [255 * weight for weight in weights]
+
+
+def normalised(x, y):
+    pixels, weights = correct(x, y)
+    return pixels, [weight / sum(weights) for weight in weights]
+
+
+def on_the_canvas_only(x, y):
+    pixels, weights = correct(x, y)
+    kept = [(p, w) for p, w in zip(pixels, weights, strict=True) if p[0] >= 0 and p[1] >= 0]
+    return [p for p, _ in kept], [w for _, w in kept]
+
+
+def on_the_canvas_normalised(x, y):
+    pixels, weights = on_the_canvas_only(x, y)
+    return pixels, [weight / sum(weights) for weight in weights]
+
+
+@pytest.mark.parametrize(
+    ("student", "mistake", "said"),
+    [
+        (right_addcolor_read_literally, "the right addColor read literally", "dx = point.x - (p1"),
+        (right_addcolor_with_std_round, "pixels at their corners", "report's right addColor"),
+        (times_255, "weights times 255", "255 times too large"),
+        (on_the_canvas_only, "pixels off the canvas left out", "Return all four pixels"),
+        (on_the_canvas_normalised, "pixels off the canvas left out", "normalised the rest"),
+    ],
+)
+def test_the_reports_addcolor_taken_at_its_word_is_named(student, mistake, said):
+    result = check.splat(student)
+    assert result.mistake == mistake
+    assert said in str(result)
+
+
+@pytest.mark.parametrize("student", [correct, right_addcolor_from_the_centre, normalised])
+def test_right_splats_written_other_ways_pass(student):
+    # Bilinear weights add up to 1: normalising them changes nothing.
+    assert check.splat(student)

@@ -236,3 +236,69 @@ def test_the_pass_pictures_show_each_dot_at_a_whole_zoom_large_enough_to_see():
     # The ordered face is 225 x 192, three times larger: each dot at least one screen pixel.
     width, height = png_size(ordered.picture)
     assert width >= 2 * 3 * face.shape[1] and height >= 3 * face.shape[0]
+
+
+# --- issue 34, the readers' own findings: inverted dots and centred thresholds ---------------
+
+
+def ordered_as_written(gray, rule):
+    """The lab's nine comparisons per pixel with the student's own rule for a lit sub-pixel."""
+    height, width = gray.shape
+    output = np.zeros((3 * height, 3 * width))
+    for y in range(height):
+        for x in range(width):
+            for i in range(3):
+                for j in range(3):
+                    output[3 * y + i, 3 * x + j] = rule(gray[y, x], M[i][j])
+    return output
+
+
+@pytest.mark.parametrize(
+    "rule",
+    [
+        lambda value, m: 1.0 if value < m / 9 else 0.0,  # the comparison reversed
+        lambda value, m: 0.0 if value > m / 9 else 1.0,  # the 1 and the 0 swapped
+    ],
+    ids=["less", "branches swapped"],
+)
+def test_ordered_dots_lit_where_the_pixel_is_dark_are_named_inverted(rule):
+    result = check.dithering_ordered(lambda gray: ordered_as_written(gray, rule))
+    assert result.mistake == "the dots inverted"
+    assert "your dots are the negative" in str(result)
+    assert check.dithering_ordered(
+        lambda gray: ordered_as_written(gray, lambda value, m: 1.0 if value > m / 9 else 0.0)
+    )
+
+
+def test_the_lessons_centred_thresholds_are_named_since_the_exercise_asks_for_m_over_9():
+    # The lesson shows (M + 0.5) / 9 removes the bias; Exercise 1 asks for M / 9 exactly.
+    result = check.dithering_ordered(
+        lambda gray: ordered_as_written(gray, lambda value, m: float(value > (m + 0.5) / 9))
+    )
+    assert result.mistake == "centred thresholds"
+    assert "compare with M[i][j] / 9" in str(result)
+
+
+@pytest.mark.parametrize("reversed_rule", ["<", "<=", "1 - output"])
+def test_error_diffusion_lit_where_the_pixel_is_dark_is_named_inverted(reversed_rule):
+    def diffused(gray):
+        height, width = gray.shape
+        buffer, output = gray.copy(), np.zeros_like(gray)
+        for y in range(height):
+            for x in range(width):
+                value = buffer[y, x]
+                if reversed_rule == "<":
+                    output[y, x] = 1.0 if value < 0.5 else 0.0
+                elif reversed_rule == "<=":
+                    output[y, x] = 0.0 if value > 0.5 else 1.0
+                else:
+                    output[y, x] = 1.0 if value > 0.5 else 0.0
+                error = value - output[y, x]
+                for dx, dy, weight in ((1, 0, 7), (-1, 1, 3), (0, 1, 5), (1, 1, 1)):
+                    if 0 <= x + dx < width and y + dy < height:
+                        buffer[y + dy, x + dx] += error * weight / 16
+        return 1.0 - output if reversed_rule == "1 - output" else output
+
+    result = check.dithering_error_diffuse(diffused)
+    assert result.mistake == "the dots inverted"
+    assert "Light it (1) where buffer[y, x] > 0.5" in str(result)

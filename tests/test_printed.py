@@ -283,7 +283,8 @@ CASES = [
     pytest.param(
         l06.print_equal_to_loop,
         ("rows", True),
-        "     rows: equal to the loop bit for bit: True",
+        'method="rows" (a loop along each row, its pushes to the rows below added a whole row '
+        "at once): equal to the loop bit for bit: True",
         id="06-equal",
     ),
     pytest.param(

@@ -4,8 +4,10 @@
 names, each answer a splat table (:mod:`.splat_tables`): the whole point
 given to one pixel (the handouts' plain loop, the GAMES101 report's left
 addColor) or to the pixel under it, pixels taken at their corners (its
-middle addColor), each pixel given its own rectangle, x and y swapped, the
-VS2022 report's normalised splat, and int() for floor.
+middle addColor), its right addColor with the first version's dx (a weight
+below 0), the weights times 255 (its colour), the pixels off the canvas left
+out (or their share normalised away), each pixel given its own rectangle, x
+and y swapped, the VS2022 report's normalised splat, and int() for floor.
 :func:`weight_mistakes` are the wrong weights :func:`.check.arc_length_weights`
 names: counting, a whole chord on one side only, whole chords on both sides.
 Each is built in the current language; :data:`SPLAT_MISTAKES` and
@@ -40,9 +42,12 @@ __all__ = [
     "SPLAT_MISTAKES",
     "WEIGHT_MISTAKES",
     "chords",
+    "in_255",
     "nearest_floor",
+    "on_the_canvas",
     "one_pixel_where_they_differ",
     "own_rectangles",
+    "right_addcolor_as_written",
     "splat_mistakes",
     "swapped",
     "truncated",
@@ -94,6 +99,39 @@ def truncated(x: float, y: float) -> np.ndarray:
     return splat_table(pixels, [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy])
 
 
+def right_addcolor_as_written(x: float, y: float) -> np.ndarray:
+    """The GAMES101 report's right addColor with its first version's dx, in Python.
+
+    Its pixels are round(point) - 1 and round(point) (Python's round: half to even), but dx =
+    point.x - p1.x is measured from p1's corner, not its centre, so it runs from 0.5 to 1.5 and
+    a neighbour's weight falls below 0.
+    """
+    left, top = round(x) - 1, round(y) - 1
+    dx, dy = x - left, y - top
+    pixels = [(left, top), (left + 1, top), (left, top + 1), (left + 1, top + 1)]
+    return splat_table(pixels, [(1 - dx) * (1 - dy), dx * (1 - dy), (1 - dx) * dy, dx * dy])
+
+
+def in_255(x: float, y: float) -> np.ndarray:
+    """The bilinear splat with each weight multiplied by 255, the report's colour (0, 255, 0)."""
+    table = splat_table(*bilinear_centres([[x, y]]))
+    return splat_table(table[:, :2], 255 * table[:, 2])
+
+
+def on_the_canvas(renormalised: bool) -> Callable[[float, float], np.ndarray]:
+    """The bilinear splat without its pixels left of or above the canvas, their weight lost or
+    (``renormalised``) shared among the rest: the right splat where all four are on it."""
+
+    def answer(x: float, y: float) -> np.ndarray:
+        table = splat_table(*bilinear_centres([[x, y]]))
+        kept = table[(table[:, 0] >= 0) & (table[:, 1] >= 0)]
+        total = kept[:, 2].sum()
+        weights = kept[:, 2] / total if renormalised and total > 0 else kept[:, 2]
+        return splat_table(kept[:, :2], weights)
+
+    return answer
+
+
 def splat_mistakes() -> tuple[Mistake, ...]:
     """The wrong splats :func:`.check.splat` names, in the current language."""
     return (
@@ -112,7 +150,7 @@ def splat_mistakes() -> tuple[Mistake, ...]:
             _("the pixel under the point (truncated)"),
             _(
                 "your splat gives the whole point to the pixel under it, (floor(x), floor(y)) as "
-                "int() or cv::Point truncates it, weight 1: no anti-aliasing. Share the point "
+                "int() truncates it, weight 1: no anti-aliasing. Share the point "
                 "among the four pixels whose centres surround it, with dx and dy measured from a "
                 "pixel centre."
             ),
@@ -134,11 +172,51 @@ def splat_mistakes() -> tuple[Mistake, ...]:
             _("pixels at their corners"),
             _(
                 "your four pixels are those around the point's integer corner: the GAMES101 "
-                "report's middle addColor (cv::Point truncates), which treats pixel (c, r) as if "
-                "it sat at (c, r). Its centre is (c + 0.5, r + 0.5): the curve moves half a "
-                "pixel right and down."
+                "report's middle addColor, whose cv::Point p1(point.x, point.y) drops the "
+                "fractions (C++ converts a float argument to int by truncating), and so treats "
+                "pixel (c, r) as if it sat at (c, r). Its centre is (c + 0.5, r + 0.5): the "
+                "curve moves half a pixel right and down. (The report's right addColor, p1 = "
+                "round(point) - 1, gives these weights too at a pixel's centre if its dx is "
+                "point.x - p1.x: measure dx from p1's centre, point.x - (p1.x + 0.5).)"
             ),
             table_of(bilinear_corners),
+        ),
+        Mistake(
+            _("the right addColor read literally"),
+            _(
+                "your four pixels are the GAMES101 report's right addColor's, round(point) - 1 "
+                "and round(point), but your dx = point.x - p1.x is measured from p1's corner: it "
+                "runs from 0.5 to 1.5, and a neighbour gets a weight below 0. Measure it from "
+                "p1's centre: dx = point.x - (p1.x + 0.5), and dy likewise."
+            ),
+            right_addcolor_as_written,
+        ),
+        Mistake(
+            _("weights times 255"),
+            _(
+                "your weights are 255 times too large: the GAMES101 report multiplies its colour "
+                "(0, 255, 0) by each weight, but the splat returns the weights themselves, "
+                "areas between 0 and 1 that add up to 1."
+            ),
+            in_255,
+        ),
+        Mistake(
+            _("pixels off the canvas left out"),
+            _(
+                "you left out the pixels left of or above the canvas, such as (0, -1): the "
+                "exercise keeps them, with their weights (whoever draws drops them later). "
+                "Return all four pixels."
+            ),
+            on_the_canvas(renormalised=False),
+        ),
+        Mistake(
+            _("pixels off the canvas left out"),
+            _(
+                "you left out the pixels left of or above the canvas, such as (0, -1), and "
+                "normalised the rest to add up to 1: the exercise keeps them, with their "
+                "weights. Return all four pixels; the four bilinear weights add up to 1 already."
+            ),
+            on_the_canvas(renormalised=True),
         ),
         Mistake(
             _("each pixel its own rectangle"),

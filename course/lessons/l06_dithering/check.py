@@ -6,10 +6,12 @@ of their checkers and reports; ``check.hint()`` answers to the lab's names too.
 A failure shows the expected and given outputs and their difference, names
 the first wrong pixel (for error diffusion, with the value and the error
 carried into it), and recognises the slips the lab's reports make or invite:
-the matrix read transposed, ``>=`` for ``>``, one comparison per pixel
-without the 3 x 3 enlargement; a left edge that wraps around, a serpentine
-scan, errors that are never read, the error's sign flipped, the kernel
-mirrored, and the input dithered in place (the report copies its const input).
+the matrix read transposed, ``>=`` for ``>``, the dots inverted (the
+comparison reversed), the lesson's centred thresholds (M + 0.5) / 9 for the
+lab's M / 9, one comparison per pixel without the 3 x 3 enlargement; a left
+edge that wraps around, a serpentine scan, the dots inverted, the error's
+sign flipped, the kernel mirrored, errors that are never read, and the input
+dithered in place (the report copies its const input).
 Both checkers end on a small face; a pass shows the student's dithered face
 beside the expected one.
 
@@ -160,6 +162,16 @@ def _one_per_pixel(gray: Any) -> np.ndarray:
     return (values > levels).astype(float)
 
 
+def _inverted(
+    explanation: str, reference: Callable[..., Any], *reversed_comparisons: Callable[..., Any]
+) -> tuple[Mistake, ...]:
+    """The dots inverted: the right output negated (the 1 and the 0 swapped), and each of
+    ``reversed_comparisons`` (``<`` or ``<=`` for ``>``, which differ on a tie)."""
+    name = N_("the dots inverted")
+    negated = Mistake(name, explanation, lambda gray: 1.0 - np.asarray(reference(gray), float))
+    return (negated, *(Mistake(name, explanation, answer) for answer in reversed_comparisons))
+
+
 def _in_255(reference: Callable[..., Any]) -> Callable[..., np.ndarray]:
     """The right dithering written as 8-bit levels, 0 and 255: the slip's answer."""
     return lambda gray: 255 * np.asarray(reference(gray), dtype=float)
@@ -232,6 +244,24 @@ def dithering_ordered(student: Callable[..., Any]) -> CheckResult:
             ),
             _ordered_with(ORDERED_MATRIX, np.greater_equal),
         ),
+        *_inverted(
+            N_(
+                "your dots are the negative: you lit a sub-pixel where the value is not above "
+                "its threshold (the comparison reversed, or the 1 and the 0 swapped), so dark "
+                "pixels come out lit. Light it (1) where gray[y, x] > M[i][j] / 9, else 0."
+            ),
+            ordered,
+            _ordered_with(ORDERED_MATRIX, np.less),
+        ),
+        Mistake(
+            N_("centred thresholds"),
+            N_(
+                "you compared with (M[i][j] + 0.5) / 9, the centred thresholds the lesson shows "
+                "remove the bias; the lab's rule, and this exercise, compare with M[i][j] / 9 "
+                "exactly."
+            ),
+            _ordered_with(ORDERED_MATRIX + 0.5, np.greater),
+        ),
         Mistake(
             N_("one comparison per pixel"),
             N_(
@@ -297,14 +327,20 @@ _KERNEL = ((1, 0, 7), (-1, 1, 3), (0, 1, 5), (1, 1, 1))
 _MIRRORED = ((1, 0, 7), (1, 1, 3), (0, 1, 5), (-1, 1, 1))
 
 
-def _diffused(gray: Any, kernel: tuple = _KERNEL, sign: float = 1.0) -> np.ndarray:
-    """The lab's loop with a given kernel, or with the error's sign flipped: the slips' answers."""
+def _diffused(
+    gray: Any,
+    kernel: tuple = _KERNEL,
+    sign: float = 1.0,
+    lit: Callable[[float], bool] = lambda value: value > 0.5,
+) -> np.ndarray:
+    """The lab's loop with a given kernel, the error's sign flipped or another rule for a lit
+    dot: the slips' answers."""
     buffer = np.array(gray, dtype=float)
     height, width = buffer.shape
     output = np.zeros_like(buffer)
     for y in range(height):
         for x in range(width):
-            output[y, x] = 1.0 if buffer[y, x] > 0.5 else 0.0
+            output[y, x] = 1.0 if lit(buffer[y, x]) else 0.0
             error = sign * (buffer[y, x] - output[y, x])
             for dx, dy, weight in kernel:
                 if 0 <= x + dx < width and y + dy < height:
@@ -396,6 +432,17 @@ def dithering_error_diffuse(student: Callable[..., Any]) -> CheckResult:
                 "what it got."
             ),
             lambda gray: _diffused(gray, sign=-1.0),
+        ),
+        *_inverted(
+            N_(
+                "your dots are the negative: you lit a pixel where its value is not above 0.5 "
+                "(the comparison reversed, or the 1 and the 0 swapped), so dark pixels come out "
+                "lit. Light it (1) where buffer[y, x] > 0.5; the error is then what it wanted "
+                "minus what it got."
+            ),
+            _loop_reference,
+            lambda gray: _diffused(gray, lit=lambda value: value < 0.5),
+            lambda gray: _diffused(gray, lit=lambda value: value <= 0.5),
         ),
         Mistake(
             N_("the kernel mirrored"),

@@ -75,15 +75,30 @@ def print_pixel_count(pixels: int) -> None:
     print(_("{pixels:,} pixels").format(pixels=pixels))  # an image: never one pixel
 
 
+#: What each of :data:`course.halftone.dither.ERROR_DIFFUSION_METHODS` does, for the printout.
+_DIFFUSION_FORMS = {
+    "wavefront": N_("all pixels of one number t = x + 2 y at once"),
+    "rows": N_("a loop along each row, its pushes to the rows below added a whole row at once"),
+    "loop": N_("the lab's loop, pixel by pixel, run a second time"),
+}
+
+
 def print_equal_to_loop(method: str, same: bool) -> None:
-    """Print whether error diffusion by ``method`` equals the loop's bit for bit.
+    """Print whether error diffusion by ``method`` equals the loop's bit for bit, and what the
+    method does.
 
     Examples
     --------
     >>> print_equal_to_loop("rows", True)
-         rows: equal to the loop bit for bit: True
+    method="rows" (a loop along each row, its pushes to the rows below added a whole row at
+    once): equal to the loop bit for bit: True
     """
-    print(_("{method:>9}: equal to the loop bit for bit: {same}").format(method=method, same=same))
+    form = _(_DIFFUSION_FORMS[method]) if method in _DIFFUSION_FORMS else ""
+    print(
+        _('method="{method}" ({form}): equal to the loop bit for bit: {same}').format(
+            method=method, form=form, same=same
+        )
+    )
 
 
 def print_wavefront_against_pillow(wavefront: float, pillow: float) -> None:

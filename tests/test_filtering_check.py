@@ -320,3 +320,84 @@ def test_graded_cases_are_drawn_in_the_fixed_cases_families(name):
 @pytest.mark.parametrize("name", ["blur", "edge"])
 def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name):
     graded_draws.check_graded(name)
+
+
+# --- the readers' students (issue 34): the border read another way, and 8-bit sums ---------
+
+
+def padded_blur(image, mode):
+    """The 3 x 3 mean of a window of the image padded by np.pad(mode=...), divided by 9."""
+    padded = np.pad(image, [(1, 1), (1, 1)] + [(0, 0)] * (image.ndim - 2), mode=mode)
+    output = np.zeros_like(image)
+    for y in range(image.shape[0]):
+        for x in range(image.shape[1]):
+            output[y, x] = padded[y : y + 3, x : x + 3].mean(axis=(0, 1))
+    return output
+
+
+def rolled_blur(image):
+    """The nine shifted copies of np.roll, summed and divided by 9: the image wraps around."""
+    total = sum(np.roll(image, (dy, dx), axis=(0, 1)) for dy in (-1, 0, 1) for dx in (-1, 0, 1))
+    return total / 9
+
+
+def uint8_blur(image, overflow=True):
+    """The report's rule on the image as 8-bit grey levels, as the lab's C++ holds it; the sum
+    kept in uint8 (0 + a uint8 is a uint8 in NumPy 2) wraps past 255."""
+    pixels = (image * 255).astype(np.uint8)
+    height, width = pixels.shape[:2]
+    output = np.zeros(image.shape)
+    with np.errstate(over="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for y in range(height):
+            for x in range(width):
+                window = pixels[max(y - 1, 0) : y + 2, max(x - 1, 0) : x + 2]
+                if not overflow:
+                    output[y, x] = window.mean(axis=(0, 1)) / 255
+                    continue
+                total, count = 0, 0
+                for row in window:
+                    for value in row:
+                        total += value
+                        count += 1
+                output[y, x] = total / count / 255
+    return output
+
+
+@pytest.mark.parametrize(
+    ("student", "mistake", "words"),
+    [
+        (lambda image: padded_blur(image, "reflect"), "numpy's 'reflect' padding", "d c b | a b"),
+        (lambda image: padded_blur(image, "wrap"), "the image wrapped around", "np.roll"),
+        (rolled_blur, "the image wrapped around", "the opposite side of the image"),
+        (uint8_blur, "8-bit sums that overflow", "200 + 100 gives 44"),
+        (lambda image: uint8_blur(image, overflow=False), "the image cut to 8 bits", "1/255"),
+    ],
+    ids=["reflect", "pad wrap", "np.roll", "uint8 sums", "uint8 mean"],
+)
+def test_a_blur_that_reads_past_the_edge_or_sums_in_8_bits_is_named(student, mistake, words):
+    result = check.blur(student)
+    assert not result and result.mistake == mistake
+    assert f"This is a known mistake, {mistake}: " in result.message
+    assert words in result.message
+
+
+def test_a_float32_blur_is_not_taken_for_an_8_bit_one():
+    # Off by float32's rounding, below a grey level but not on the 8-bit grid.
+    result = check.blur(lambda image: box_blur(image.astype(np.float32)))
+    assert not result and result.mistake is None
+    assert check.blur(lambda image: box_blur(image))
+
+
+def edge_frame_copied(image):
+    """Sobel on the inside only, the output started as a copy of the input."""
+    output = np.array(image, dtype=float)
+    output[1:-1, 1:-1] = sobel_magnitude(image)[1:-1, 1:-1]
+    return output
+
+
+def test_an_edge_that_copies_its_frame_from_the_input_is_named_not_zero_padding():
+    result = check.edge(edge_frame_copied)
+    assert not result and result.mistake == "the frame copied"
+    assert "leave the input's values there" in result.message
+    assert "as 0" not in result.message

@@ -89,3 +89,21 @@ def test_the_clone_app_follows_a_drag_with_the_library_s_paste_and_clone():
     app.controls["offset"].value = "35, 0"
     assert "x must lie from 0 to 28" in app.status.value and tuple(app.offset) == (0, 20)
     assert app.view.image.format == "jpeg" and bytes(app.view.image.value)[:2] == b"\xff\xd8"
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("abc", "'abc' is not x, y: there is no number in it (type one point as x, y"),
+        ("420", "'420' is not x, y: a point is two numbers; got 1 (type one point as x, y"),
+        ("", "expected one point such as '10, 20'; got ''"),
+    ],
+)
+def test_the_offset_box_says_what_is_wrong_with_the_one_point_typed(text, said):
+    app = CloneApp(np.tile(np.linspace(0.2, 0.8, 40), (30, 1)), np.full((10, 12), 0.9), (4, 6))
+    app.refresh()
+    app.controls["offset"].value = text
+    assert said in app.status.value
+    assert app.status.value.startswith("Kept the last offset: ")
+    assert "point 1" not in app.status.value and "separate points" not in app.status.value
+    assert tuple(app.offset) == (4, 6)

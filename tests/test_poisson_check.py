@@ -132,7 +132,8 @@ def test_jacobi_solve_reports_a_ring_that_moves_and_a_missing_count():
             g = rolled / 4  # wraps around and moves the fixed ring
 
     result = check.jacobi_solve(ring_swept_too)
-    assert not result and result.mistake is None
+    assert not result and result.mistake == "the ring changed"
+    assert "Sweep the inside only, g[1:-1, 1:-1]" in result.message
     result = check.jacobi_solve(lambda g, tolerance: jacobi(g, tolerance)[0])
     assert not result and "return two things" in result.message
 
@@ -442,3 +443,83 @@ def test_the_picture_of_a_fixed_count_says_it_is_off_the_axis(monkeypatch):
     assert figure._suptitle.get_text() == "Jacobi stops after 16 sweeps, yours after 1000"
     said = [text.get_text() for text in figure.axes[0].texts]
     assert "your loop: 1000 sweeps,\noff this axis" in said
+
+
+# --- the readers' students (issue 34): the ring in the wrong place, and a ring that moves ----
+
+
+def offset_ignored(background, foreground, offset):
+    height, width = foreground.shape[:2]
+    g = background[:height, :width] - foreground  # the background's corner, whatever the offset
+    g[1:-1, 1:-1] = 0
+    return g
+
+
+def ring_outside(background, foreground, offset):
+    """The ring read from the background's pixels just outside the foreground."""
+    height, width = foreground.shape[:2]
+    x, y = offset
+    g = np.zeros_like(foreground)
+    g[0] = background[y - 1, x : x + width] - foreground[0]
+    g[-1] = background[y + height, x : x + width] - foreground[-1]
+    g[:, 0] = background[y : y + height, x - 1] - foreground[:, 0]
+    g[:, -1] = background[y : y + height, x + width] - foreground[:, -1]
+    return g
+
+
+def ring_outside_rows_last(background, foreground, offset):
+    """The same ring, its corners taken from the rows (written after the columns)."""
+    height, width = foreground.shape[:2]
+    x, y = offset
+    g = np.zeros_like(foreground)
+    g[:, 0] = background[y : y + height, x - 1] - foreground[:, 0]
+    g[:, -1] = background[y : y + height, x + width] - foreground[:, -1]
+    g[0] = background[y - 1, x : x + width] - foreground[0]
+    g[-1] = background[y + height, x : x + width] - foreground[-1]
+    return g
+
+
+def ring_inside(background, foreground, offset):
+    """b - f on the ring one pixel in; the outer ring left at 0."""
+    height, width = foreground.shape[:2]
+    x, y = offset
+    difference = background[y : y + height, x : x + width] - foreground
+    g = np.zeros_like(foreground)
+    g[1:-1, 1:-1] = difference[1:-1, 1:-1]
+    g[2:-2, 2:-2] = 0
+    return g
+
+
+@pytest.mark.parametrize(
+    ("student", "mistake", "words"),
+    [
+        (offset_ignored, "the offset ignored", "background[0 : height, 0 : width]"),
+        (ring_outside, "the ring one pixel out", "one pixel outside the foreground"),
+        (ring_outside_rows_last, "the ring one pixel out", "the row under the foreground's top"),
+        (ring_inside, "the ring one pixel in", "left the outer ring at 0"),
+    ],
+    ids=["offset ignored", "out, corners from the columns", "out, from the rows", "in"],
+)
+def test_a_ring_in_the_wrong_place_is_named(student, mistake, words):
+    result = check.boundary_ring(student)
+    assert not result and result.mistake == mistake
+    assert f"This is a known mistake, {mistake}: " in result.message and words in result.message
+
+
+def ring_swept_with_the_edge_repeated(g, tolerance):
+    """Every pixel swept, the ring too, past the array's edge its nearest pixel."""
+    g = np.array(g, dtype=float)
+    for sweeps in itertools.count():
+        padded = np.pad(g, [(1, 1), (1, 1)] + [(0, 0)] * (g.ndim - 2), mode="edge")
+        neighbours = padded[:-2, 1:-1] + padded[2:, 1:-1] + padded[1:-1, :-2] + padded[1:-1, 2:]
+        if np.abs(neighbours - 4 * g)[1:-1, 1:-1].max() < tolerance:
+            return g, sweeps
+        g = neighbours / 4
+
+
+def test_a_sweep_that_moves_the_ring_is_named_and_the_right_sweep_still_passes():
+    result = check.jacobi_solve(ring_swept_with_the_edge_repeated)
+    assert not result and result.mistake == "the ring changed"
+    assert "those are the boundary values b - f, fixed" in result.message
+    assert check.jacobi_solve(jacobi)
+    assert check.boundary_ring(lab_style_boundary)

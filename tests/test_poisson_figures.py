@@ -207,3 +207,14 @@ def test_the_tiny_clone_draws_the_student_s_functions_only_when_they_do_what_the
     for boundary, jacobi in ((_boundary, gauss_seidel), (None, None), (_boundary, None)):
         shown = str(figures.tiny_clone_figure(boundary, jacobi, zoom=10))
         assert shown.startswith("the library's (yours do not pass their checks yet): 28 sweeps")
+
+
+def test_the_tiny_clone_states_the_tolerance_its_count_of_sweeps_stops_below():
+    shown = str(figures.tiny_clone_figure(zoom=10))
+    ring = poisson.correction_boundary(
+        figures.TINY_BACKGROUND, figures.TINY_FOREGROUND, figures.TINY_OFFSET
+    )
+    assert figures.TINY_TOLERANCE == 1e-6
+    sweeps = _jacobi(ring, figures.TINY_TOLERANCE)[1]
+    assert f": {sweeps} sweeps to a residual below 1e-6;" in shown
+    assert sweeps == 28 and _jacobi(ring, 1e-4)[1] != sweeps  # the tolerance decides the count

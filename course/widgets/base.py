@@ -92,14 +92,16 @@ def _why_not_a_point(piece: str) -> str:
         return _("numbers must be decimal (0x10 and 0b1 are not read)")
     if re.search(r"[0-9],[0-9]", piece) and len(numbers) > 2:
         return _("a decimal comma is not read: write 90.5, not 90,5")
-    if len(numbers) > 2:
+    if len(numbers) > 2 or (len(numbers) == 1 and "," not in piece):
         return _("a point is two numbers; got {count}").format(count=len(numbers))
+    if not numbers:
+        return _("there is no number in it")
     if "," not in piece:
         return _("the x and the y need a comma between them")
     return _("expected two decimal numbers such as 90.5, -3 or 1e2")
 
 
-def parse_points(text: str) -> np.ndarray:
+def parse_points(text: str, single: bool = False) -> np.ndarray:
     """Read ``"x, y; x, y; ..."`` into an (N, 2) array; ValueError on anything else.
 
     Each point is two decimal numbers separated by a comma, optionally in
@@ -108,6 +110,7 @@ def parse_points(text: str) -> np.ndarray:
     (``90,5``), hexadecimal or binary literals (``0x10``), a point without
     its comma (``3 4``), digits other than 0-9 (``١٢``, ``１２``). Text longer than
     ``course.limits.MAX_TYPED_TEXT`` characters is refused before it is read.
+    ``single`` is for a box that holds one point: its messages speak of that point alone.
 
     Examples
     --------
@@ -120,6 +123,11 @@ def parse_points(text: str) -> np.ndarray:
     ...
     ValueError: points: point 1, '90,5 610,5', is not x, y: a decimal comma is not read: \
 write 90.5, not 90,5 (write each point as x, y and separate points with ';' or a new line)
+    >>> parse_points("abc", single=True)
+    Traceback (most recent call last):
+    ...
+    ValueError: 'abc' is not x, y: there is no number in it (type one point as x, y, such as \
+10, 20)
     """
     if not isinstance(text, str):
         raise TypeError(
@@ -136,16 +144,24 @@ write 90.5, not 90,5 (write each point as x, y and separate points with ';' or a
     pieces = [piece.strip() for piece in re.split(r"[;\n]", text)]
     pieces = [piece for piece in pieces if piece]
     if not pieces:
-        raise ValueError(
-            _("points: expected text such as '10, 10; 690, 10'; got {text}").format(text=repr(text))
+        empty = (
+            _("expected one point such as '10, 20'; got {text}")
+            if single
+            else _("points: expected text such as '10, 10; 690, 10'; got {text}")
         )
+        raise ValueError(empty.format(text=repr(text)))
     numbers = []
     for index, piece in enumerate(pieces, start=1):
         match = _POINT.fullmatch(piece)
         if match is None:
             shown = piece if len(piece) <= 40 else piece[:37] + "..."
+            wrong = (
+                _("{shown} is not x, y: {why} (type one point as x, y, such as 10, 20)")
+                if single
+                else _("points: point {index}, {shown}, is not x, y: {why} ({form})")
+            )
             raise ValueError(
-                _("points: point {index}, {shown}, is not x, y: {why} ({form})").format(
+                wrong.format(
                     index=index, shown=repr(shown), why=_why_not_a_point(piece), form=_(_FORM)
                 )
             )
@@ -350,7 +366,7 @@ class SliderApp(PointerMixin):
         status line says why.
         """
         try:
-            points = parse_points(self.value(control))
+            points = parse_points(self.value(control), single=count == 1)
             if len(points) != count:
                 expected = (
                     _("expected {count} points; got {given}")

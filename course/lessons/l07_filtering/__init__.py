@@ -2,6 +2,8 @@
 
 - :mod:`.lesson`: lesson 07, filtering: its registry entry, pictures, landmarks and printed lines;
 - :mod:`.check`: lesson 07 exercises: the lab's ``Blur`` and ``Edge``;
+- :mod:`.mistakes`: the known mistakes lesson 07's checkers name, each reproduced on the checker's
+  cases;
 - :mod:`.apps`: lesson 07's apps: any 3 x 3 kernel on the photograph, and repeated blurs at the
   border;
 - :mod:`.figures`: lesson 07's still pictures: blur and edges on the photograph, one output pixel's

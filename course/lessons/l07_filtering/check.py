@@ -6,11 +6,13 @@ as ``filters.blur`` and ``filters.sobel``, so a student's ``blur`` shadows none 
 
 A failure names the first wrong pixel as (x, y) with its window (how many of
 its nine neighbours lie inside the image), draws a map of where the output
-differs, and recognises the usual border slips: zero padding (dividing by 9
-everywhere), the frame skipped or copied, the nearest pixel repeated where
-the report averages only the pixels inside, a window sliced from ``y - 1``
-at y = 0 (Python reads ``image[-1:2]`` as empty), and a blur that reads its
-own updated values; for Sobel also a clipped magnitude and Gx alone. The
+differs, and recognises the usual slips (:mod:`.mistakes` reproduces each):
+zero padding (dividing by 9 everywhere), the frame skipped or copied, the
+nearest pixel repeated, numpy's mirror or the image wrapped around where the
+report averages only the pixels inside, a window sliced from ``y - 1`` at
+y = 0 (Python reads ``image[-1:2]`` as empty), sums taken in 8 bits, and a
+blur that reads its own updated values; for Sobel also a clipped magnitude,
+Gx alone and the frame left as the input. The
 border is blamed only when every pixel inside the image is right; otherwise
 the report names the first wrong pixel inside. A blur that writes into its
 input fails, however right its values. A pass shows the student's output beside the
@@ -29,13 +31,13 @@ from typing import Any
 import numpy as np
 
 from course import filters
-from course.check.base import CheckResult, Hints, Mistake, close, hint, run_cases
+from course.check.base import CheckResult, Hints, close, hint, run_cases
 from course.check.exercises import exercise
 from course.check.pictures import image_picture, side_by_side
-from course.check.views import quiet
-from course.filters import BOX, SOBEL_X, convolve, sobel
 from course.filters import blur as reference_blur
+from course.filters import sobel
 from course.i18n import N_, _
+from course.lessons.l07_filtering.mistakes import BLUR_MISTAKES, EDGE_MISTAKES
 
 __all__ = ["blur", "edge", "hint"]
 
@@ -189,171 +191,6 @@ def _explain_nan(case: dict[str, Any], given: Any) -> str:
         border=int(border.sum()),
         off_border=off_border,
     )
-
-
-def _frame_from(image: np.ndarray, inner: np.ndarray, fill: np.ndarray | None) -> np.ndarray:
-    """``inner`` inside the one-pixel frame, ``fill`` (or 0) on it: a loop from 1 to size - 2."""
-    output = np.zeros_like(image) if fill is None else fill.copy()
-    output[1:-1, 1:-1] = inner[1:-1, 1:-1]
-    return output
-
-
-def _correlate(image: Any, kernel: np.ndarray, border: str) -> np.ndarray:
-    # The lab's dot product of kernel and window: a convolution with the flipped kernel.
-    return convolve(image, kernel[::-1, ::-1], border)
-
-
-def _sliced_from_minus_one(image: Any) -> np.ndarray:
-    """Each pixel the mean of image[y - 1 : y + 2, x - 1 : x + 2]: empty at y = 0 or x = 0."""
-    array = np.asarray(image, dtype=float)
-    output = np.zeros_like(array)
-    with quiet():  # not catch_warnings: it would make a student's warnings show again
-        for y in range(array.shape[0]):
-            for x in range(array.shape[1]):
-                output[y, x] = array[y - 1 : y + 2, x - 1 : x + 2].mean(axis=(0, 1))
-    return output
-
-
-def _same_or_both_nan(expected: Any, given: Any) -> bool:
-    want, have = _as_float(expected), _as_float(given)
-    return want.shape == have.shape and bool(
-        np.allclose(have, want, atol=1e-9, rtol=1e-9, equal_nan=True)
-    )
-
-
-def _running_blur(image: Any) -> np.ndarray:
-    """The box blur written into the array its windows are read from, row by row."""
-    output = np.array(image, dtype=float)
-    height, width = output.shape[:2]
-    for y in range(height):
-        for x in range(width):
-            window = output[max(y - 1, 0) : y + 2, max(x - 1, 0) : x + 2]
-            output[y, x] = window.mean(axis=(0, 1))
-    return output
-
-
-BLUR_MISTAKES = (
-    Mistake(
-        N_("a window sliced from y - 1 at y = 0"),
-        N_(
-            "at y = 0 (or x = 0) your window image[y - 1 : y + 2] starts at -1, which Python "
-            "reads as the last row, so the slice is empty and its mean is NaN. Start the slice "
-            "at max(y - 1, 0)."
-        ),
-        _sliced_from_minus_one,
-        matches=_same_or_both_nan,
-    ),
-    Mistake(
-        N_("zero padding"),
-        N_(
-            "you divide by 9 everywhere, as if the pixels outside the image were black: the frame "
-            "darkens. The report averages only the neighbours inside the image (6 on an edge, 4 at "
-            "a corner)."
-        ),
-        lambda image: convolve(image, BOX, "zero"),
-    ),
-    Mistake(
-        N_("the frame skipped"),
-        N_(
-            "your loops run from 1 to size - 2 and leave the frame at 0. Blur every pixel, "
-            "averaging the neighbours that exist."
-        ),
-        lambda image: _frame_from(image, reference_blur(image), None),
-    ),
-    Mistake(
-        N_("the frame copied"),
-        N_(
-            "your loops skip the one-pixel frame and copy it from the input. Blur every pixel, "
-            "averaging the neighbours that exist."
-        ),
-        lambda image: _frame_from(image, reference_blur(image), np.asarray(image, dtype=float)),
-    ),
-    Mistake(
-        N_("the edge pixel repeated"),
-        N_(
-            "outside the image you read the nearest pixel inside (replicate), so the edge row "
-            "counts twice. The report's rule averages only the pixels inside."
-        ),
-        lambda image: convolve(image, BOX, "replicate"),
-    ),
-    Mistake(
-        N_("a blur that reads its own updated values"),
-        N_(
-            "your loop writes each blurred pixel into the array it reads its windows from, so "
-            "every later window averages pixels that are already blurred (the picture smears "
-            "down and to the right). Read every window from the input as it was, and write "
-            "into a separate output array."
-        ),
-        _running_blur,
-    ),
-)
-
-EDGE_MISTAKES = (
-    Mistake(
-        N_("zero padding"),
-        N_(
-            "you read the pixels outside the image as 0: the frame lights up as a false edge. "
-            "Read the nearest pixel inside (clamp the index)."
-        ),
-        lambda image: sobel(image, border="zero"),
-    ),
-    Mistake(
-        N_("numpy's 'reflect' padding"),
-        N_(
-            "you padded like np.pad(mode='reflect'), which mirrors about the edge pixel "
-            "(d c b | a b c d): on the left and right edges Gx comes out 0, on the top and bottom "
-            "Gy. Repeat the edge pixel instead: np.pad's mode='edge' (scipy calls that rule "
-            "'reflect'; the two libraries use the name for different rules)."
-        ),
-        lambda image: sobel(image, border="reflect"),
-    ),
-    Mistake(
-        N_("clipped to 1"),
-        N_(
-            "your magnitude stops at 1, as writing it into an 8-bit image would: Sobel's runs up "
-            "to sqrt(20), about 4.47 (Gx = 4 with Gy = 2). Return sqrt(Gx^2 + Gy^2) as it is."
-        ),
-        lambda image: np.clip(sobel(image, border="replicate"), 0.0, 1.0),
-    ),
-    Mistake(
-        N_("Gx alone"),
-        N_(
-            "your output is |Gx|: horizontal changes only. Add Gy, the same sum with the "
-            "transposed kernel, and take sqrt(Gx^2 + Gy^2)."
-        ),
-        lambda image: np.abs(_correlate(image, SOBEL_X, "replicate")),
-    ),
-    Mistake(
-        N_("the sum of squares, no root"),
-        N_(
-            "you returned Gx^2 + Gy^2, the sum of squares the lab report names: the "
-            "magnitude is its square root, sqrt(Gx^2 + Gy^2)."
-        ),
-        lambda image: (
-            _correlate(image, SOBEL_X, "replicate") ** 2
-            + _correlate(image, SOBEL_X.T, "replicate") ** 2
-        ),
-    ),
-    Mistake(
-        N_("|Gx| + |Gy|"),
-        N_(
-            "you added |Gx| and |Gy|, a cheaper estimate that comes out up to 1.41 times too "
-            "large on a diagonal edge; the magnitude is sqrt(Gx^2 + Gy^2)."
-        ),
-        lambda image: (
-            np.abs(_correlate(image, SOBEL_X, "replicate"))
-            + np.abs(_correlate(image, SOBEL_X.T, "replicate"))
-        ),
-    ),
-    Mistake(
-        N_("the frame skipped"),
-        N_(
-            "your loops run from 1 to size - 2 and leave the frame at 0. Compute every pixel, "
-            "reading outside pixels from the nearest one inside."
-        ),
-        lambda image: _frame_from(image, sobel(image, border="replicate"), None),
-    ),
-)
 
 
 BLUR_HINTS = Hints(

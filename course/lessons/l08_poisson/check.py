@@ -8,11 +8,12 @@ residual is small (:func:`jacobi_solve`; an RGB ``g``'s channels are swept
 together, and its residual is the largest over every channel). Failures draw
 the difference (a wrong sweep: both loops' stops on Jacobi's residual, and
 the difference, :mod:`.sweep_picture`) and recognise the sign flipped, x and
-y swapped, the sweep done in place (the lab's loop: Gauss-Seidel), a stop one
+y swapped, the offset ignored, the ring read one pixel out or filled one pixel
+in, the sweep done in place (the lab's loop: Gauss-Seidel), a stop one
 sweep late, the lab's fixed count of sweeps, a stop on the change between
 sweeps, on a quarter of the residual, on its mean or on its first channel
-alone, each channel stopped on its own, and the count returned before ``g``
-(:mod:`.mistakes` reproduces each). A
+alone, each channel stopped on its own, the count returned before ``g``, and a
+sweep that moves the ring (:mod:`.mistakes` reproduces each). A
 function that writes into its inputs (``g = background[...]; g -= foreground``
 changes the background) fails, however right its values. A pass shows the
 student's ``g`` beside the expected one.

@@ -255,6 +255,8 @@ TINY_FOREGROUND = np.array(
     ]
 )
 TINY_OFFSET = (1, 1)
+#: The residual the tiny clone's sweeps stop below; its caption states it with the count.
+TINY_TOLERANCE = 1e-6
 
 
 def _tiny_correction(boundary: Any, jacobi: Any) -> tuple[np.ndarray, int, str]:
@@ -264,12 +266,12 @@ def _tiny_correction(boundary: Any, jacobi: Any) -> tuple[np.ndarray, int, str]:
     Jacobi sweeps: a Gauss-Seidel sweep reaches the same g sooner, and fails Exercise 2.
     """
     ring = poisson.correction_boundary(TINY_BACKGROUND, TINY_FOREGROUND, TINY_OFFSET)
-    expected, sweeps = _jacobi_reference(ring, 1e-6)
+    expected, sweeps = _jacobi_reference(ring, TINY_TOLERANCE)
     try:
         given_ring = np.asarray(
             boundary(TINY_BACKGROUND.copy(), TINY_FOREGROUND.copy(), TINY_OFFSET), dtype=float
         )
-        given, count = jacobi(given_ring, 1e-6)
+        given, count = jacobi(given_ring, TINY_TOLERANCE)
         given = np.asarray(given, dtype=float)
         same = given.shape == expected.shape and np.allclose(given, expected, atol=1e-5)
         if same and int(count) == sweeps:
@@ -301,8 +303,9 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
     Examples
     --------
     >>> tiny_clone_figure()  # doctest: +NORMALIZE_WHITESPACE
-    the library's (yours do not pass their checks yet): 28 sweeps; the dark window stays
-    0.4 darker than the pixel below it (0.100 against 0.500); the clone's ring equals the sky's
+    the library's (yours do not pass their checks yet): 28 sweeps to a residual below 1e-6;
+    the dark window stays 0.4 darker than the pixel below it (0.100 against 0.500); the
+    clone's ring equals the sky's
     """
     zoom = as_int(zoom, "zoom", minimum=8, maximum=limits.MAX_ZOOM)
     g, sweeps, who = _tiny_correction(boundary, jacobi)
@@ -384,17 +387,20 @@ def tiny_clone_figure(boundary: Any = None, jacobi: Any = None, zoom: int = 50) 
     below = clone[2, 2]
     caption = (
         _(
-            "{who}: {sweeps} sweeps; the dark window stays {gap:.1f} darker than the pixel below "
-            "it ({dark:.3f} against {below:.3f}); the clone's ring equals the sky's"
+            "{who}: {sweeps} sweeps to a residual below {tolerance}; the dark window stays "
+            "{gap:.1f} darker than the pixel below it ({dark:.3f} against {below:.3f}); the "
+            "clone's ring equals the sky's"
         )
         if np.allclose(clone[0], sky[0])
         else _(
-            "{who}: {sweeps} sweeps; the dark window stays {gap:.1f} darker than the pixel below "
-            "it ({dark:.3f} against {below:.3f}); the clone's ring differs from the sky's"
+            "{who}: {sweeps} sweeps to a residual below {tolerance}; the dark window stays "
+            "{gap:.1f} darker than the pixel below it ({dark:.3f} against {below:.3f}); the "
+            "clone's ring differs from the sky's"
         )
     ).format(
         who=who,
         sweeps=sweeps,
+        tolerance=f"{TINY_TOLERANCE:.0e}".replace("e-0", "e-"),  # 1e-6
         gap=TINY_FOREGROUND[2, 2] - TINY_FOREGROUND[1, 2],
         dark=dark,
         below=below,

@@ -1,12 +1,15 @@
 """The known mistakes lesson 08's checkers name, each reproduced on the checker's cases.
 
 :func:`boundary_mistakes` are the wrong rings :func:`.check.boundary_ring` names: the
-sign flipped, the background alone, x and y swapped. :func:`sweep_mistakes` are the
+sign flipped, the background alone, x and y swapped, the offset ignored (the foreground
+read at the background's corner), the ring read one pixel outside the foreground, and the
+ring one pixel in. :func:`sweep_mistakes` are the
 wrong loops :func:`.check.jacobi_solve` names: the sweep done in place (the lab's loop:
 Gauss-Seidel), the lab's fixed count of sweeps, a stop one sweep late, a stop on the
 change between sweeps, on the residual's mean, at a residual equal to the tolerance, on
 a quarter of the residual or on its first channel alone, each channel of an RGB ``g``
-swept until its own residual is small, and the pair returned as ``(sweeps, g)``. Beside
+swept until its own residual is small, the pair returned as ``(sweeps, g)``, and a sweep
+that moves the fixed ring. Beside
 them, :func:`jacobi_until`, the sweep checker's own answer, which the "one sweep late"
 mistake runs a sweep longer, and :func:`same_sweeps`, its comparison. Both lists are
 built in the current language, at each check.
@@ -45,6 +48,11 @@ __all__ = [
     "gauss_seidel_until",
     "jacobi_residuals",
     "jacobi_until",
+    "ring_moved",
+    "ring_one_in",
+    "ring_one_out",
+    "ring_swept",
+    "same_but_corners",
     "same_count_first",
     "same_each_channel",
     "same_sweeps",
@@ -58,6 +66,45 @@ __all__ = [
 def swapped_offset(background: Any, foreground: Any, offset: Any) -> np.ndarray:
     """The lab's ring with the background read at ``(offset[1], offset[0])``."""
     return poisson.correction_boundary(background, foreground, (offset[1], offset[0]))
+
+
+def ring_one_out(background: Any, foreground: Any, offset: Any) -> np.ndarray:
+    """g's ring read from the background one pixel outside the foreground (the row above
+    it, the row below, the columns beside; a corner from its column), minus the
+    foreground's ring; 0 inside. Past the background's edge, its nearest pixel."""
+    back, fore = np.asarray(background, dtype=float), np.asarray(foreground, dtype=float)
+    x, y = offset
+    height, width = fore.shape[:2]
+    padded = np.pad(back, [(1, 1), (1, 1)] + [(0, 0)] * (back.ndim - 2), mode="edge")
+    around = padded[y : y + height + 2, x : x + width + 2]  # background[y - 1 : y + height + 1]
+    g = np.zeros_like(fore)
+    g[0], g[-1] = around[0, 1:-1] - fore[0], around[-1, 1:-1] - fore[-1]
+    g[:, 0], g[:, -1] = around[1:-1, 0] - fore[:, 0], around[1:-1, -1] - fore[:, -1]
+    return g
+
+
+def same_but_corners(expected: Any, given: Any) -> bool:
+    """``given`` is ``expected`` to 1e-12 but at the four corners, which a ring read from
+    outside takes from the row or the column, as the student's order of writing has it."""
+    want, have = np.asarray(expected, dtype=float), np.asarray(given, dtype=float)
+    if want.shape != have.shape or want.ndim < 2 or min(want.shape[:2]) < 2:
+        return False
+    near = np.isclose(want, have, atol=1e-12, rtol=0.0)
+    near[[0, 0, -1, -1], [0, -1, 0, -1]] = True
+    return bool(near.all())
+
+
+def ring_one_in(background: Any, foreground: Any, offset: Any) -> np.ndarray:
+    """background - foreground on the ring one pixel inside the outer ring, 0 elsewhere (the
+    outer ring too)."""
+    back, fore = np.asarray(background, dtype=float), np.asarray(foreground, dtype=float)
+    x, y = offset
+    height, width = fore.shape[:2]
+    difference = back[y : y + height, x : x + width] - fore
+    g = np.zeros_like(fore)
+    g[1:-1, 1:-1] = difference[1:-1, 1:-1]
+    g[2:-2, 2:-2] = 0
+    return g
 
 
 def boundary_mistakes() -> tuple[Mistake, ...]:
@@ -90,6 +137,37 @@ def boundary_mistakes() -> tuple[Mistake, ...]:
                 "first, and background[y, x] is row y."
             ),
             swapped_offset,
+        ),
+        Mistake(
+            _("the offset ignored"),
+            _(
+                "you read the background at its top-left corner, background[0 : height, "
+                "0 : width], whatever the offset: offset = (x, y) puts the foreground's top-left "
+                "pixel at background[y, x], so read background[y : y + height, x : x + width]."
+            ),
+            lambda background, foreground, offset: poisson.correction_boundary(
+                background, foreground, (0, 0)
+            ),
+        ),
+        Mistake(
+            _("the ring one pixel out"),
+            _(
+                "your ring reads the background one pixel outside the foreground (the row above "
+                "it, the row below, the columns beside). The ring is the foreground's own "
+                "outermost pixels: g[0] is background[y, x : x + width] - foreground[0], the "
+                "row under the foreground's top row."
+            ),
+            ring_one_out,
+            matches=same_but_corners,
+        ),
+        Mistake(
+            _("the ring one pixel in"),
+            _(
+                "you filled the pixels one inside the outer ring and left the outer ring at 0. "
+                "The ring is the foreground's own outermost pixels, g[0], g[-1], g[:, 0] and "
+                "g[:, -1]; everything inside it is 0."
+            ),
+            ring_one_in,
         ),
     )
 
@@ -263,6 +341,43 @@ def fixed_count(expected: Any, given: Any) -> bool:
         return False
 
 
+class _RingMoved(tuple):
+    """``(g, sweeps)`` of a sweep that moved the ring; ``before``: the g it was given."""
+
+    before: np.ndarray
+
+
+def ring_swept(g: Any, tolerance: float) -> tuple[np.ndarray, int]:
+    """Sweeps of every pixel, the ring too, each the mean of its four neighbours (the edge
+    repeated past the array), until the residual inside is below ``tolerance``."""
+    u = np.array(g, dtype=float)
+    count = 0
+    while count < 10_000:  # the ring drifts to one level, and the residual with it to 0
+        padded = np.pad(u, [(1, 1), (1, 1)] + [(0, 0)] * (u.ndim - 2), mode="edge")
+        neighbours = padded[:-2, 1:-1] + padded[2:, 1:-1] + padded[1:-1, :-2] + padded[1:-1, 2:]
+        if u.size == 0 or np.abs(neighbours - 4 * u)[1:-1, 1:-1].max() < tolerance:
+            break
+        u, count = neighbours / 4, count + 1
+    answer = _RingMoved((u, count))
+    answer.before = np.asarray(g, dtype=float)
+    return answer
+
+
+def ring_moved(theirs: Any, given: Any) -> bool:
+    """``given``'s g has the input's shape and a ring that is not the input's."""
+    try:
+        g, _sweeps = given
+        g = np.asarray(g, dtype=float)
+    except (TypeError, ValueError):
+        return False
+    before = getattr(theirs, "before", None)
+    if before is None or g.shape != before.shape or min(g.shape[:2]) < 2:
+        return False
+    ring = np.ones(g.shape[:2], dtype=bool)
+    ring[1:-1, 1:-1] = False
+    return not np.allclose(g[ring], before[ring], atol=1e-12, rtol=0.0)
+
+
 def sweep_mistakes() -> tuple[Mistake, ...]:
     """The known mistakes, in the current language."""
     return (
@@ -367,6 +482,17 @@ def sweep_mistakes() -> tuple[Mistake, ...]:
             ),
             count_first,
             matches=same_count_first,
+        ),
+        Mistake(
+            _("the ring changed"),
+            _(
+                "your sweep moves the outer ring too (g[0], g[-1], g[:, 0] and g[:, -1]): those "
+                "are the boundary values b - f, fixed, and once they move the clone no longer "
+                "meets the background at its edge. Sweep the inside only, g[1:-1, 1:-1], from "
+                "the four shifted slices."
+            ),
+            ring_swept,
+            matches=ring_moved,
         ),
     )
 

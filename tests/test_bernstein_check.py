@@ -213,6 +213,62 @@ def test_int32_binomials_are_named_at_degree_40():
     assert str(result).startswith("FAIL naive_bezier: case 56 is wrong")
 
 
+def comb_in_int32_products(m, n):
+    """comb by the product formula, in np.int32 as a student copying the C++ `int` writes it."""
+    if n > m:
+        return 0
+    value = np.int32(1)
+    with np.errstate(over="ignore"):
+        for i in range(n):
+            value = value * np.int32(m - i) // np.int32(i + 1)
+    return value
+
+
+def naive_with_int32_products(points, t):
+    comb = comb_in_int32_products
+    n = len(points) - 1
+    return sum(comb(n, i) * t**i * (1 - t) ** (n - i) * points[i] for i in range(n + 1))
+
+
+def test_binomials_that_overflow_in_int32_products_are_named_at_degree_40():
+    # Before: no name at all (its weights are not the int32 Pascal row's), and a picture of
+    # 41 labels on top of each other.
+    result = check.naive_bezier(naive_with_int32_products)
+    assert not result and result.mistake == "binomials that overflow"
+    assert str(result).startswith("FAIL naive_bezier: case 56 is wrong")
+    assert "Keep np.int32 and np.int64 out of your comb" in result.message
+    assert check.naive_bezier(naive_solution)
+
+
+def test_a_picture_of_many_control_points_labels_only_some():
+    from course.check import pictures
+
+    labels = []
+    real = pictures.Figure
+
+    class Counting(real):
+        def add_subplot(self, *args, **kwargs):
+            axes = super().add_subplot(*args, **kwargs)
+            annotate = axes.annotate
+            axes.annotate = lambda text, *a, **k: (labels.append(text), annotate(text, *a, **k))[1]
+            return axes
+
+    pictures.Figure = Counting
+    try:
+        pictures.curve_picture(
+            np.random.default_rng(0).uniform(0, 700, (41, 2)), [[0, 0]], [[0, 0]]
+        )
+    finally:
+        pictures.Figure = real
+    assert [label for label in labels if label.startswith("P")] == [
+        "P0",
+        "P10",
+        "P20",
+        "P30",
+        "P40",
+    ]
+
+
 def product_formula(m, n):
     if n > m:
         return 0
@@ -352,10 +408,15 @@ def accumulating_naive_bezier():
 
 
 #: The mistakes a function answering as the mistake does cannot make: a float that rounds
-#: to the right integer, a product (recognised in the code), an accumulator (across calls),
+#: to the right integer, a product (recognised in the code), binomials that overflow (recognised
+#: by the weights the student's sum gives), an accumulator (across calls),
 #: right points without comb (recognised in the code).
 WRITTEN_COMB = {2: lambda: float_row, 6: lambda: rounded_float_product}
-WRITTEN_NAIVE = {5: accumulating_naive_bezier, 6: lambda: de_casteljau_loop}
+WRITTEN_NAIVE = {
+    5: lambda: naive_with_int32_products,
+    6: accumulating_naive_bezier,
+    7: lambda: de_casteljau_loop,
+}
 
 
 def test_graded_comb_cases_are_drawn_in_the_fixed_cases_families():

@@ -41,7 +41,10 @@ OURS += (  # lesson 05's splats as tables, and its checkers' mistakes
     "course/lessons/l05_antialiasing/splat_tables.py",
     "course/lessons/l05_antialiasing/mistakes.py",
 )
-OURS += ("course/lessons/l01_de_casteljau/drawing_loop.py",)  # the drawing loop's mistakes
+OURS += (  # the drawing loop's mistakes
+    "course/lessons/l01_de_casteljau/drawing_loop.py",
+    "course/lessons/l01_de_casteljau/mistakes.py",
+)
 CJK = re.compile(r"[\u4e00-\u9fff]")
 
 

@@ -519,12 +519,13 @@ def painted_into_a_copy(control_points, window):
     return window
 
 
-#: The drawing loop's mistakes a function answering with their pixels cannot make: a colour,
-#: a copy, and t accumulated (recognised by what the loop paints on a probe curve too).
+#: The drawing loop's mistakes a function answering with their pixels cannot make: green
+#: added, a colour, a copy, and t accumulated (recognised by what the loop paints on a probe curve too).
 WRITTEN_BEZIER = {
-    0: lambda: painted_in_8_bit_green,
-    1: lambda: painted_into_a_copy,
-    2: lambda: float_loop,
+    0: lambda: green_added,
+    1: lambda: painted_in_8_bit_green,
+    2: lambda: painted_into_a_copy,
+    3: lambda: float_loop,
 }
 
 
@@ -567,3 +568,97 @@ def test_graded_bezier_cases_are_drawn_in_the_fixed_cases_families():
 )
 def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name, written):
     graded_draws.check_graded(name, written)
+
+
+# --- the readers' students (issue 34): each mistake as a student writes it, named ----------
+
+
+def float32_loop_in_numpy(control_points, window):
+    """The handouts' `for (float t = 0; t <= 1; t += 0.001f)`, written with np.float32: t
+    reaches the student's step as float32, so 1 - t is rounded to float32 too."""
+    height, width = window.shape[:2]
+    t = np.float32(0)
+    while t <= 1:
+        x, y = recursive_solution(control_points, t)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x)] = (0, 1, 0)
+        t += np.float32(0.001)
+
+
+def float32_loop_all_in_float32(control_points, window):
+    """The same with the points as Python floats: np.float32 times a float stays float32."""
+    height, width = window.shape[:2]
+    points = [tuple(map(float, point)) for point in control_points]
+
+    def point_at(points, t):
+        if len(points) == 1:
+            return points[0]
+        return point_at(
+            [
+                ((1 - t) * a + t * c, (1 - t) * b + t * d)
+                for (a, b), (c, d) in itertools.pairwise(points)
+            ],
+            t,
+        )
+
+    t = np.float32(0)
+    while t <= 1:
+        x, y = point_at(points, t)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x)] = (0, 1, 0)
+        t += np.float32(0.001)
+
+
+@pytest.mark.parametrize("student", [float32_loop_in_numpy, float32_loop_all_in_float32])
+def test_the_float32_loop_written_with_np_float32_is_named(student):
+    # Before: "7 pixels missing, ... 6 extra" and the generic hint: its 1 - t (or the whole
+    # point) in float32 moved a point a few millionths of a pixel across an edge.
+    result = check.bezier(student)
+    assert not result and result.mistake == "the float32 loop of the GAMES101 report"
+    assert "np.float32 in Python" in result.message
+    assert check.bezier(bezier_solution)
+
+
+def rounded_by_hand(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = recursive_solution(control_points, k / 1000)
+        column, row = int(x + 0.5), int(y + 0.5)
+        if 0 <= column < width and 0 <= row < height:
+            window[row, column] = (0, 1, 0)
+
+
+def test_rounding_by_hand_with_int_x_plus_half_is_named_as_rounding():
+    # int(x + 0.5) is not the pixel that holds the point, and it takes 392.5 to 393 where
+    # round() takes it to 392: the rounding mistake missed it.
+    result = check.bezier(rounded_by_hand)
+    assert not result and result.mistake == "rounding half up, int(x + 0.5)"
+    assert "int(x + 0.5) rounds half up" in result.message
+    assert "(int(x), int(y))" in result.message
+    assert check.bezier(rounded).mistake == "rounding to the nearest pixel"
+
+
+def green_added(control_points, window):
+    height, width = window.shape[:2]
+    for k in range(1001):
+        x, y = recursive_solution(control_points, k / 1000)
+        if 0 <= x < width and 0 <= y < height:
+            window[int(y), int(x), 1] += 1
+
+
+def test_adding_to_the_green_channel_is_named_not_the_8_bit_colour():
+    result = check.bezier(green_added)
+    assert not result and result.mistake == "green added, not set"
+    assert "instead of setting it" in result.message
+    assert "8-bit" not in result.message
+    assert check.bezier(green_channel_only)
+
+
+def test_a_next_level_failure_draws_the_expected_level_beside_the_students():
+    def unknown(points, t):
+        return np.asarray(next_level_solution(points, t)) + 1.0
+
+    result = check.next_level(unknown)
+    assert not result and result.mistake is None
+    assert result.picture is not None and result.picture.startswith(b"\x89PNG")
+    assert check.next_level(lambda points, t: np.array(points)[1:]).picture is not None

@@ -67,6 +67,7 @@ def curve_picture(
     mark_start: bool = True,
     given_label: str = N_("your points"),
     expected_point: Any = None,
+    expected_label: str = N_("expected point"),
 ) -> bytes:
     """The control polygon, the expected curve and the student's points, as a PNG.
 
@@ -74,7 +75,8 @@ def curve_picture(
     t = 0 to t = 1; the first of each is ringed and labelled t = 0, so a
     curve run backwards shows at a glance. Image space: y points down.
     ``expected_point``, if given, is the (1, 2) point the student's single point
-    should be, drawn as a cross: a wrong point can lie on the curve itself.
+    should be, drawn as a cross: a wrong point can lie on the curve itself; it may be several
+    points (a level of de Casteljau's construction), labelled ``expected_label``.
     """
     control = as_points(control, "control", bound=limits.MAX_COORDINATE)
     if len(control) > 100:  # each control point is labelled: a picture has room for 100
@@ -93,12 +95,22 @@ def curve_picture(
     figure = Figure(figsize=(width_inches, width_inches), dpi=100)
     axes = figure.add_subplot()
     axes.plot(*control.T, "o--", color="0.6", linewidth=1, markersize=5, label=_("control polygon"))
-    for index, point in enumerate(control):
-        axes.annotate(f"P{index}", point, xytext=(5, 5), textcoords="offset points", fontsize=8)
+    # Past a dozen points their labels overlap: label the ends and every tenth between.
+    labelled = range(len(control)) if len(control) <= _ALL_LABELLED else _sparse(len(control))
+    for index in labelled:
+        axes.annotate(
+            f"P{index}", control[index], xytext=(5, 5), textcoords="offset points", fontsize=8
+        )
     axes.plot(*expected.T, "-", color=EXPECTED, linewidth=2, label=_("expected curve"))
     axes.plot(*given.T, "o", color=GIVEN, markersize=3.5, label=_translated(str(given_label)))
     if expected_point is not None:
-        axes.plot(*expected_point.T, "X", color=EXPECTED, markersize=8, label=_("expected point"))
+        axes.plot(
+            *expected_point.T,
+            "X",
+            color=EXPECTED,
+            markersize=8,
+            label=_translated(str(expected_label)),
+        )
     for points, colour in ((expected, EXPECTED), (given, GIVEN)) if mark_start else ():
         if len(points) and np.isfinite(points[0]).all():
             axes.plot(*points[0], "o", markersize=11, fillstyle="none", color=colour)
@@ -112,6 +124,21 @@ def curve_picture(
     axes.set_title(_translated(title), fontsize=9)
     figure.tight_layout()
     return figure_png(figure)
+
+
+#: The most control points a curve picture labels each of.
+_ALL_LABELLED = 12
+
+
+def _sparse(count: int) -> list[int]:
+    """The control points labelled when there are many: P0, every tenth, and the last.
+
+    Examples
+    --------
+    >>> _sparse(41)
+    [0, 10, 20, 30, 40]
+    """
+    return sorted({*range(0, count - 5, 10), count - 1})
 
 
 def pixel_picture(

@@ -9,6 +9,8 @@
 - :mod:`.figures`: lesson 01's still pictures: the construction by hand, and each handout pitfall;
 - :mod:`.drawing_loop`: lesson 01's drawing loop, ``bezier(control_points, window)``: what its
   checker runs;
+- :mod:`.mistakes`: lesson 01's drawing loop: the handouts' mistakes its checker names, and how it
+  tells them;
 - :mod:`.pixel_views`: the pieces lesson 01's pixel figures are built from, and the yellow check's
   overview.
 

@@ -53,7 +53,6 @@ from course.images import SEED_000_CUBIC
 from course.lessons.l01_de_casteljau.drawing_loop import (
     Painting,
     bezier_cases,
-    bezier_mistakes,
     bezier_pass_picture,
     bezier_picture,
     bezier_reference,
@@ -62,6 +61,7 @@ from course.lessons.l01_de_casteljau.drawing_loop import (
     show_painting,
 )
 from course.lessons.l01_de_casteljau.drawn import draw_bezier_cases, draw_curve_cases
+from course.lessons.l01_de_casteljau.mistakes import bezier_mistakes
 
 __all__ = [
     "LIBRARY_CURVES",
@@ -357,6 +357,24 @@ def _level_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes
     )
 
 
+def _level_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes | None:
+    """A failure's picture: the control polygon and its curve, the next level expected (crosses)
+    and the student's (dots)."""
+    control = np.asarray(case["control_points"], dtype=float)
+    theirs = np.asarray(given, dtype=float)
+    theirs = theirs.reshape(-1, 2) if theirs.size % 2 == 0 else np.full((1, 2), np.nan)
+    return curve_picture(
+        control,
+        _curve(control, np.linspace(0.0, 1.0, 41)),
+        theirs,
+        _("your next_level, t = {t}").format(t=f"{case['t']:g}"),
+        mark_start=False,
+        given_label=_("your level"),
+        expected_point=np.asarray(expected, dtype=float).reshape(-1, 2),
+        expected_label=_("expected level"),
+    )
+
+
 NEXT_LEVEL_HINTS = Hints(
     where=N_(
         "look at the edges of the control polygon: how many there are, and where on "
@@ -408,6 +426,7 @@ def next_level(function: Callable[..., Any]) -> CheckResult:
         compare=close(atol=1e-9, rtol=1e-9),
         convert=_as_level,
         mistakes=_level_mistakes(),
+        picture=_level_picture,
         pass_picture=_level_pass_picture,
     )
 

@@ -6,9 +6,10 @@ the pixels painted with :func:`bezier_reference`, one pixel per t = 0, 0.001,
 ..., 1. This module holds those cases and that reference; :class:`Painting`,
 the student's window read back (:func:`same_painting`,
 :func:`painting_difference`, :func:`show_painting` compare and show it); the
-handouts' drawing-loop mistakes the report names (:func:`bezier_mistakes`);
-the failure and pass pictures; and :func:`rounding_sensitive_pixels`, which
-keeps every case's answer independent of the last bit of a float.
+failure and pass pictures; and :func:`rounding_sensitive_pixels`, which
+keeps every case's answer independent of the last bit of a float. The
+handouts' drawing-loop mistakes the report names are in
+:mod:`course.lessons.l01_de_casteljau.mistakes`.
 
 The checker calls these with its own cases; the student's answer is read by
 :class:`Painting`, which checks it. So this module checks no input of its own
@@ -17,28 +18,23 @@ The checker calls these with its own cases; the student's answer is read by
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 from course.check.base import (
     AnswerError,
-    Mistake,
     pixel_difference,
     pixel_rows,
     same_pixels,
 )
 from course.check.pictures import pixel_picture, side_by_side
-from course.check.sandbox import run_bounded
 from course.curves.bezier import de_casteljau
-from course.curves.flattening import uniform_parameters
 from course.i18n import _
 from course.images import SEED_000_CUBIC
 from course.raster import nearest_pixels
 
 __all__ = [
-    "ACCUMULATION_PROBE",
     "BEZIER_SHAPES",
     "EDGE_TOLERANCE",
     "GREEN",
@@ -47,18 +43,17 @@ __all__ = [
     "STEP",
     "Painting",
     "bezier_cases",
-    "bezier_mistakes",
     "bezier_pass_picture",
     "bezier_picture",
     "bezier_reference",
     "curve_pixels",
     "loop_parameters",
+    "painted_pixels",
     "painting_difference",
     "rounding_sensitive_pixels",
     "same_painting",
     "show_painting",
     "window_for",
-    "wrapped_pixels",
 ]
 
 UNCHECKED = True  # see the module docstring
@@ -92,10 +87,6 @@ BEZIER_SHAPES = (
 )
 #: The case painted grey before the student's loop runs: the third, the 24 x 24 window.
 GREY_CASE = 2
-#: A curve that tells t accumulated in float steps from range(1000): it runs right to left
-#: two pixels per step, so t a few ulps above k / 1000 lands one pixel to the left. (Its
-#: points lie on pixel edges on purpose: it is a probe, never a case.)
-ACCUMULATION_PROBE = {"control_points": np.array([[699.0, 0.5], [-1301.0, 0.5]]), "shape": (2, 700)}
 GREEN = (0.0, 1.0, 0.0)
 #: The colour of the window painted before the loop runs: a loop must leave the pixels it
 #: does not paint as they are, and a pixel's red and blue as they are or at 0.
@@ -214,27 +205,6 @@ def bezier_reference(control_points: np.ndarray, window: np.ndarray) -> np.ndarr
     return curve_pixels(control_points, window.shape, loop_parameters())
 
 
-def wrapped_pixels(rounding: str) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
-    """The pixels of a loop that tests only ``x < width and y < height``, as a function of
-    ``(control_points, window)``; ``rounding`` is :func:`course.raster.nearest_pixels`'.
-
-    A negative index counts from the end of the row or column, so a pixel
-    left of or above the window lands on its other side; ``int`` truncates
-    toward zero, so a point in (-1, 0) lands in column or row 0 instead.
-    """
-
-    def pixels(control_points: np.ndarray, window: np.ndarray) -> np.ndarray:
-        height, width = window.shape[:2]
-        curve = de_casteljau(control_points, loop_parameters())
-        kept = curve[(curve[:, 0] < width) & (curve[:, 1] < height)]
-        found = nearest_pixels(kept, rounding=rounding)
-        # Python raises past -length, so such a loop stops there: not this mistake.
-        inside = (found[:, 0] >= -width) & (found[:, 1] >= -height)
-        return found[inside] % (width, height)
-
-    return pixels
-
-
 class Painting:
     """The pixels a student painted (neither black nor :data:`GREY`), and the first in the
     wrong colour.
@@ -301,179 +271,14 @@ def show_painting(answer: Any) -> str:
     return _("{count} pixels painted").format(count=count)
 
 
-def _pixels_of(answer: Any) -> Any:
+def painted_pixels(answer: Any) -> Any:
+    """The pixels of an answer: a :class:`Painting`'s, or the answer itself (a mistake's)."""
     return answer.pixels if isinstance(answer, Painting) else answer
-
-
-def _accumulates(student: Callable[..., Any]) -> bool:
-    """Whether ``student`` paints the probe curve as t accumulated in float steps would."""
-    probe = ACCUMULATION_PROBE
-    window = np.zeros((*probe["shape"], 3))
-    run_bounded(lambda: student(probe["control_points"].copy(), window))
-    steps = uniform_parameters(STEP, accumulate="float64")
-    expected = curve_pixels(probe["control_points"], window.shape, steps)
-    return bool(same_pixels(expected, _painted(window)[0]))
-
-
-def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
-    """The handouts' drawing-loop mistakes; ``student`` is probed for t accumulated in steps."""
-    accumulated = uniform_parameters(STEP, accumulate="float64")
-    float32_loop = uniform_parameters(STEP, accumulate="float32")
-
-    def pixels_match(mistaken: Any, given: Any) -> bool:
-        return same_pixels(mistaken, _pixels_of(given))
-
-    def accumulated_match(mistaken: Any, given: Any) -> bool:
-        return pixels_match(mistaken, given) and student is not None and _accumulates(student)
-
-    def colour_match(expected: Any, given: Any) -> bool:
-        return getattr(given, "wrong_colour", None) is not None and bool(
-            same_pixels(expected, _pixels_of(given))
-        )
-
-    def copy_match(expected: Any, given: Any) -> bool:
-        returned = getattr(given, "returned_pixels", None)
-        return (
-            len(_pixels_of(given)) == 0
-            and returned is not None
-            and bool(same_pixels(expected, returned))
-        )
-
-    wraps = _(
-        "a pixel with x < 0 or y < 0 appeared on the other side of the window (or, through "
-        "int(), which rounds toward zero, in column or row 0): Python counts a negative index "
-        "from the end. Test 0 <= x < width and 0 <= y < height before you paint, and skip "
-        "every point off the window."
-    )
-    return [
-        # The colours first: with the right pixels in the wrong colour, every mistake that only
-        # compares pixels and agrees with the reference on this case (off-window points
-        # wrapped, when there are none) would match too.
-        Mistake(
-            _("the wrong colour"),
-            _(
-                "you painted the right pixels in another colour: the window holds floats from 0 "
-                "to 1 in the order red, green, blue, so green is (0, 1, 0); (0, 255, 0) is "
-                "OpenCV's 8-bit scale, and (1, 0, 0) is red."
-            ),
-            bezier_reference,
-            matches=colour_match,
-        ),
-        Mistake(
-            _("a painted copy"),
-            _(
-                "your function painted a copy of the window and returned it: the window it was "
-                "given stays black. Paint into window itself (window[y, x] = ...), the one "
-                "argument this exercise lets you change; there is nothing to return."
-            ),
-            bezier_reference,
-            matches=copy_match,
-        ),
-        Mistake(
-            _("t accumulated in float steps"),
-            _(
-                "your t is a sum of 0.001 steps (t = 0.0; while t <= 1: ...; t += 0.001), as the "
-                "handouts' loop `for (t = 0; t <= 1; t += 0.001)` does: each addition rounds, the "
-                "sum ends a hair above 1 after a thousand steps, so t = 1 is never painted, and on "
-                "the way t drifts a few units in the last place. Count whole steps instead: "
-                "for k in range(1001): t = k / 1000."
-            ),
-            lambda control_points, window: curve_pixels(control_points, window.shape, accumulated),
-            matches=accumulated_match,
-        ),
-        Mistake(
-            _("the loop stops before t = 1"),
-            _(
-                "your loop never reaches t = 1, so the curve's last pixel stays dark: range(1000) "
-                "and np.arange(0, 1, 0.001) stop at 0.999. Count whole steps up to and including "
-                "1000: for k in range(1001): t = k / 1000."
-            ),
-            lambda control_points, window: curve_pixels(
-                control_points, window.shape, loop_parameters()[:-1]
-            ),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("the float32 loop of the GAMES101 report"),
-            _(
-                "your t drifts: the handout's `float t` keeps about 7 digits, and a thousand "
-                "additions of 0.001 move the points enough to change pixels in the middle of the "
-                "curve. Compute each t from a whole count, in Python's float."
-            ),
-            lambda control_points, window: curve_pixels(control_points, window.shape, float32_loop),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("rounding to the nearest pixel"),
-            _(
-                "you rounded x and y, as OpenCV's cv::Point does in the GAMES101 report: that "
-                "paints the pixel whose corner is nearest, half a pixel off. As the lesson says, "
-                "the pixel whose square holds the point (x, y) is (int(x), int(y)) for x, y >= 0: "
-                "the whole parts, not the rounded values."
-            ),
-            lambda control_points, window: curve_pixels(
-                control_points, window.shape, loop_parameters(), "round"
-            ),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("the GAMES101 report's loop: float32 t and cv::Point rounding"),
-            _(
-                "your loop is the GAMES101 report's: a `float t` advanced by 0.001 a thousand "
-                "times, which drifts, and each point rounded to the nearest pixel as cv::Point "
-                "does, half a pixel off. Compute each t from a whole count (t = k / 1000, in "
-                "Python's float) and paint (int(x), int(y)), the pixel whose square holds the "
-                "point."
-            ),
-            lambda control_points, window: curve_pixels(
-                control_points, window.shape, float32_loop, "round"
-            ),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("x and y swapped"),
-            _("you wrote window[x, y]: an image is indexed by row first, window[y, x]."),
-            lambda control_points, window: curve_pixels(
-                control_points, window.shape[1::-1], loop_parameters()
-            )[:, ::-1],
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("int() before the window test"),
-            _(
-                "a point just left of or above the window, with x or y between -1 and 0, was "
-                "painted in column or row 0: int() rounds toward zero, so int(-0.5) is 0 and "
-                "passes a test of the pixel. Test the point itself, 0 <= x < width and "
-                "0 <= y < height, before you take int(), or take math.floor."
-            ),
-            lambda control_points, window: curve_pixels(
-                control_points, window.shape, loop_parameters(), "trunc"
-            ),
-            matches=pixels_match,
-        ),
-        Mistake(
-            _("a negative index wraps around"), wraps, wrapped_pixels("trunc"), matches=pixels_match
-        ),
-        Mistake(
-            _("a negative index wraps around"), wraps, wrapped_pixels("floor"), matches=pixels_match
-        ),
-        Mistake(
-            _("a step of 0.01"),
-            _(
-                "your step is ten times too coarse: 101 points leave gaps on a curve about 1400 "
-                "pixels long. Use 0.001, as the handout does."
-            ),
-            lambda control_points, window: curve_pixels(
-                control_points, window.shape, np.arange(101) / 100
-            ),
-            matches=pixels_match,
-        ),
-    ]
 
 
 def bezier_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
     """A failure's picture: the pixels around the first difference."""
-    return pixel_picture(expected, _pixels_of(given), title=_("around the first difference"))
+    return pixel_picture(expected, painted_pixels(given), title=_("around the first difference"))
 
 
 def bezier_pass_picture(results: list[tuple[dict[str, Any], Any, Any]]) -> bytes:

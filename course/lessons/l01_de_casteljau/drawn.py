@@ -22,8 +22,8 @@ from course.lessons.l01_de_casteljau.drawing_loop import (
     loop_parameters,
     rounding_sensitive_pixels,
     window_for,
-    wrapped_pixels,
 )
+from course.lessons.l01_de_casteljau.mistakes import half_up_pixels, wrapped_pixels
 
 __all__ = ["draw_bezier_cases", "draw_curve_cases"]
 
@@ -79,7 +79,8 @@ def draw_bezier_cases(rng: Any) -> list[dict[str, Any]]:
 
     In the same order: a cubic across a 700 x 700 window with a long last leg, on which the
     drawing loop's mistakes each paint pixels of their own (the loop stopped before t = 1,
-    float32 t, rounding, both, x and y swapped, a step of 0.01); a cubic that leaves a window
+    float32 t, rounding, rounding half up (a coordinate exactly half-way, as at a control point
+    x.5), both, x and y swapped, a step of 0.01); a cubic that leaves a window
     of about 60 x 80 on the left and the right, on which int() before the window test and
     the two wrapped negative indices each paint pixels of their own; a quadratic inside a
     24 x 24 window painted grey; then lines of drawn lengths on the 700 x 700 window's edges,
@@ -92,7 +93,7 @@ def draw_bezier_cases(rng: Any) -> list[dict[str, Any]]:
     --------
     >>> cases = draw_bezier_cases(np.random.default_rng(1))
     >>> [case["window"].shape[:2] for case in cases][:3], len(cases)
-    ([(700, 700), (63, 81), (24, 24)], 8)
+    ([(700, 700), (59, 77), (24, 24)], 8)
     >>> cases[3]["control_points"][:, 0].tolist(), cases[7]["control_points"][:, 1].tolist()
     ([0.0, 0.0], [-0.5, -0.5])
     """
@@ -115,6 +116,7 @@ def draw_bezier_cases(rng: Any) -> list[dict[str, Any]]:
             lambda points, shape: curve_pixels(points, shape, float32_loop),
             lambda points, shape: curve_pixels(points, shape, every_t[:-1]),
             lambda points, shape: curve_pixels(points, shape, every_t, "round"),
+            lambda points, shape: half_up_pixels(points, np.zeros(shape)),
             lambda points, shape: curve_pixels(points, shape, float32_loop, "round"),
             lambda points, shape: curve_pixels(points, shape[1::-1], every_t)[:, ::-1],
             lambda points, shape: curve_pixels(points, shape, np.arange(101) / 100),

@@ -34,6 +34,7 @@ from course.check.base import (
 )
 from course.check.exercises import exercise
 from course.check.hints import Hints, failure_hint
+from course.check.sandbox import run_bounded
 from course.curves.bezier import bernstein_basis, bezier_bernstein, binomial, pascal_row
 from course.curves.bezier_handouts import (
     comb_recursive_calls,
@@ -301,6 +302,36 @@ def _int32_weights(control_points: np.ndarray, t: float) -> np.ndarray:
     return weights @ control_points
 
 
+#: The degree at which the weights are probed for overflow: the high-degree case's.
+_PROBED_DEGREE = 40
+
+
+def _overflowed(student: Callable[..., Any]) -> bool:
+    """Whether ``student`` is the Bernstein sum of degree 40 with wrong whole-number binomials,
+    as a comb in fixed-width integers gives once C(40, i), or a product that makes it, wraps.
+
+    The curve is linear in its points, so the weight of P[i] is the x of the curve whose
+    points are all (0, 0) but P[i] = (1, 0); divided by t^i (1 - t)^(40 - i) it is the
+    student's C(40, i), the same at t = 1/2 and t = 1/4 when the sum is the Bernstein form.
+    """
+    n = _PROBED_DEGREE
+    i = np.arange(n + 1)
+    binomials = []
+    for t in (0.5, 0.25):
+        found = []
+        for row in range(n + 1):
+            unit = np.zeros((n + 1, 2))
+            unit[row, 0] = 1.0
+            point = run_bounded(lambda unit=unit, t=t: student(unit, t))
+            found.append(float(np.asarray(point, dtype=float).reshape(-1)[0]))
+        binomials.append(np.array(found) / (t**i * (1 - t) ** (n - i)))
+    half, quarter = binomials
+    exact = np.array([float(binomial(n, k)) for k in range(n + 1)])
+    whole = np.isclose(half, np.round(half), rtol=1e-9, atol=1e-6)
+    same = np.isclose(half, quarter, rtol=1e-6, atol=1e-6)
+    return bool(whole.all() and same.all() and not np.isclose(half, exact, rtol=1e-9).all())
+
+
 def _high_degree_cases() -> list[dict[str, Any]]:
     """A curve of 41 control points: C(40, 20) > 2^31, so 32-bit binomials wrap around."""
     rng = np.random.default_rng(41)
@@ -396,6 +427,18 @@ def naive_bezier(function: Callable[..., Any]) -> CheckResult:
                 "int. Use your comb, which gives Python's exact ints."
             ),
             _int32_weights,
+        ),
+        Mistake(
+            _("binomials that overflow"),
+            _(
+                "your binomials overflowed: your sum is right up to degree 11, but at degree 40 "
+                "some of your comb(40, i) are wrong. C(40, 20) = 137,846,528,820 needs 38 bits, "
+                "and the products that make it (40!, or 40 * 39 * ... before a division) need "
+                "more; numpy's int32 and int64 wrap around silently. Keep np.int32 and np.int64 "
+                "out of your comb: Python's int is exact at any size."
+            ),
+            lambda control_points, t: None if len(control_points) <= 12 else True,
+            matches=lambda high_degree, given: high_degree is True and _overflowed(function),
         ),
         Mistake(
             _("an accumulator not reset"),

@@ -586,3 +586,114 @@ def test_graded_triangle_cases_are_drawn_in_the_fixed_cases_families():
 @pytest.mark.parametrize("name", ["draw_line", "draw_triangle_filled"])
 def test_graded_cases_tell_every_mistake_the_reference_passes_a_stub_fails(name):
     graded_draws.check_graded(name)
+
+
+# --- the readers' students: the lesson's loop extended to every octant, with one slip ------
+
+
+def lessons_loop(p0, p1, swap_steep=True, swap_back=True, step_back=2, ties=">"):
+    """The lesson's pseudocode as a student extends it to all eight octants, with a slip if
+    asked: no swap of x and y for a steep line, the swap not undone when plotting, or D going
+    back by ``step_back`` dx when y steps. ``ties`` is the test that steps y."""
+    (x0, y0), (x1, y1) = p0, p1
+    steep = swap_steep and abs(y1 - y0) > abs(x1 - x0)
+    if steep:
+        x0, y0, x1, y1 = y0, x0, y1, x1
+    dx, dy = abs(x1 - x0), abs(y1 - y0)
+    sx, sy = (1 if x1 >= x0 else -1), (1 if y1 >= y0 else -1)
+    D, y, pixels = 2 * dy - dx, y0, []
+    for x in range(x0, x1 + sx, sx):
+        pixels.append((y, x) if steep and swap_back else (x, y))
+        if (D > 0) if ties == ">" else (D >= 0):
+            y += sy
+            D -= step_back * dx
+        D += 2 * dy
+    return pixels
+
+
+@pytest.mark.parametrize("ties", [">", ">="])
+def test_the_lessons_loop_extended_to_every_octant_passes(ties):
+    assert check.draw_line(lambda p0, p1: lessons_loop(p0, p1, ties=ties))
+
+
+@pytest.mark.parametrize(
+    ("slip", "mistake", "said"),
+    [
+        ({"swap_steep": False}, "no swap for a steep line", "a steep line takes one pixel per"),
+        ({"swap_back": False}, "the steep swap not undone", "Swap each pixel back when you plot"),
+        ({"step_back": 1}, "D stepped back by dx, not 2 dx", "D = D - 2 dx"),
+    ],
+)
+@pytest.mark.parametrize("ties", [">", ">="])
+def test_each_slip_in_the_lessons_loop_is_named_for_what_the_student_did(slip, mistake, said, ties):
+    result = check.draw_line(lambda p0, p1: lessons_loop(p0, p1, ties=ties, **slip))
+    assert not result and result.mistake == mistake, str(result)
+    assert said in str(result)
+    # A loop without the swap was told it handled only the first octant: it handles four.
+    assert "the first octant" not in str(result)
+
+
+def test_pixels_returned_as_y_x_are_named():
+    result = check.draw_line(lambda p0, p1: [(y, x) for x, y in lessons_loop(p0, p1)])
+    assert not result and result.mistake == "pixels as (y, x)", str(result)
+    assert "case 1 is wrong" in str(result) and "a pixel is (x, y), x first" in str(result)
+
+
+def test_a_single_pixel_left_empty_is_not_told_its_last_pixel_is_missing():
+    def nothing_for_a_point(p0, p1):
+        if p0 == p1:
+            return []  # "a line of length zero has no pixels"
+        return bresenham_ties_toward_the_end(p0, p1)
+
+    result = check.draw_line(nothing_for_a_point)
+    assert not result and result.mistake == "a single pixel left empty", str(result)
+    assert "case 11 is wrong" in str(result) and "Return [p0]" in str(result)
+    assert "stops one pixel before p1" not in str(result)
+    # A loop that always stops short is still told so, at case 1.
+    short = check.draw_line(lambda p0, p1: bresenham_ties_toward_the_end(p0, p1)[:-1])
+    assert short.mistake == "the last pixel missing" and "case 1 is wrong" in str(short)
+
+
+def the_reports_fill(p0, p1, p2):
+    """The report's scanline fill: the three edges' slopes first, then the rows of each half;
+    a half of zero height has no rows, but its slope was divided already."""
+    top, middle, bottom = sorted([p0, p1, p2], key=lambda p: p[1])
+    slope_short_top = (middle[0] - top[0]) / (middle[1] - top[1])
+    slope_short_bottom = (bottom[0] - middle[0]) / (bottom[1] - middle[1])
+    slope_long = (bottom[0] - top[0]) / (bottom[1] - top[1])
+    pixels = []
+    for row in range(math.ceil(top[1] - 0.5), math.ceil(bottom[1] - 0.5)):
+        y = row + 0.5
+        x_long = top[0] + (y - top[1]) * slope_long
+        if y < middle[1]:
+            x_short = top[0] + (y - top[1]) * slope_short_top
+        else:
+            x_short = middle[0] + (y - middle[1]) * slope_short_bottom
+        left, right = min(x_long, x_short), max(x_long, x_short)
+        pixels += [(x, row) for x in range(math.ceil(left - 0.5), math.ceil(right - 0.5))]
+    return pixels
+
+
+def test_the_reports_slopes_before_the_flat_edge_test_are_named_as_its_mistake():
+    result = check.draw_triangle_filled(the_reports_fill)
+    assert not result and "case 3 raised ZeroDivisionError" in str(result)
+    assert result.mistake == "the slopes divided before the flat-edge test", str(result)
+    assert "the slopes are divided by the height before testing for a flat edge" in str(result)
+
+    def tested_first(p0, p1, p2):
+        heights = [p[1] for p in (p0, p1, p2)]
+        if len(set(heights)) < 3:
+            return fill_by_rule(p0, p1, p2)  # the flat halves, skipped before any slope
+        return the_reports_fill(p0, p1, p2)
+
+    assert check.draw_triangle_filled(tested_first)
+
+
+def test_a_division_by_zero_elsewhere_is_not_blamed_on_the_slopes():
+    def divides_by_the_area(p0, p1, p2):
+        (ax, ay), (bx, by), (cx, cy) = p0, p1, p2
+        1 / ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+        return fill_by_rule(p0, p1, p2)
+
+    result = check.draw_triangle_filled(divides_by_the_area)
+    assert "case 9 raised ZeroDivisionError" in str(result) and result.mistake is None

@@ -2,6 +2,7 @@
 
 import pytest
 from chinese import CHINESE, check_chinese_figure, drawn
+from drawn_figures import figures_drawn
 
 from course.lessons.l03_lines_and_triangles import figures
 
@@ -32,3 +33,16 @@ def test_the_figures_show_english_until_the_language_is_set_and_after_it_is_rese
     assert figures.line_figure().caption == english
     assert not any(CHINESE.search(text) for text in english_texts[0])
     assert any(CHINESE.search(text) for text in chinese_texts[0])
+
+
+def test_the_colour_figure_marks_the_centre_its_caption_gives_the_weights_of(monkeypatch):
+    # A reader could not find "the centre (14.5, 7.5)" of the caption on the picture.
+    with figures_drawn(monkeypatch) as drawn_figures:
+        still = figures.colour_figure()
+    assert "at the centre (14.5, 7.5)" in still.caption
+    (axes,) = drawn_figures[0].axes
+    assert "(14.5, 7.5)" in [text.get_text() for text in axes.texts]
+    marks = [
+        tuple(artist.get_xydata()[0]) for artist in axes.lines if len(artist.get_xydata()) == 1
+    ]
+    assert (14.5, 7.5) in marks

@@ -317,3 +317,137 @@ def test_an_input_changed_by_one_part_in_ten_million_is_shown_changed():
     result = check.supersample(scales_its_input)
     assert not result
     assert "changed its input image: element [0, 1] was 1.0, is now 1.0000001" in str(result)
+
+
+# --- the readers' students ------------------------------------------------------------------
+
+
+def lookup(image, x, y, base=math.floor, clamp="centres"):
+    """A student's lookup: ``base`` takes the top-left centre of x - 1/2; ``clamp`` is where the
+    point is kept: "centres" (x - 1/2 in [0, W - 1], the lesson's), "point" (x in [0, W - 1],
+    then the shift), "image" (x in [0, W]) or "none"."""
+    height, width = image.shape[:2]
+    if clamp == "point":
+        x, y = min(max(x, 0), width - 1), min(max(y, 0), height - 1)
+    if clamp == "image":
+        x, y = min(max(x, 0), width), min(max(y, 0), height)
+    u, v = x - 0.5, y - 0.5
+    if clamp == "centres":
+        u, v = min(max(u, 0), width - 1), min(max(v, 0), height - 1)
+    left, top = base(u), base(v)
+    if clamp != "none":
+        left, top = min(max(left, 0), width - 2), min(max(top, 0), height - 2)
+    fx, fy = u - left, v - top
+    upper = image[top, left] * (1 - fx) + image[top, left + 1] * fx
+    lower = image[top + 1, left] * (1 - fx) + image[top + 1, left + 1] * fx
+    return upper * (1 - fy) + lower * fy
+
+
+def test_the_students_lookup_with_floor_and_the_lessons_clamp_passes():
+    assert check.bilinear_sample(lookup)
+
+
+@pytest.mark.parametrize(
+    ("options", "case", "mistake", "said"),
+    [
+        ({"base": round}, 1, "round() where floor belongs", "c = math.floor(x - 0.5)"),
+        ({"clamp": "point"}, 5, "clamped before the half-pixel shift", "Clamp after the shift"),
+        ({"clamp": "image"}, 5, "no clamp at the right or bottom edge", "x <= W, is not enough"),
+    ],
+)
+def test_a_lookups_base_and_clamp_slips_are_named_with_a_picture(options, case, mistake, said):
+    result = check.bilinear_sample(lambda image, x, y: lookup(image, x, y, **options))
+    assert not result and result.mistake == mistake, str(result)
+    assert f"case {case} is wrong" in str(result) and said in str(result)
+    assert result.picture.startswith(b"\x89PNG")
+
+
+def test_a_lookup_with_no_clamp_that_reads_past_the_image_is_named():
+    result = check.bilinear_sample(lambda image, x, y: lookup(image, x, y, clamp="none"))
+    assert "case 5 raised IndexError" in str(result) and "at line" in str(result)
+    assert result.mistake == "a read past the image", str(result)
+    assert "Clamp x - 0.5 to [0, W - 1]" in str(result)
+
+
+def test_an_index_error_the_missing_clamp_cannot_cause_is_not_named_as_it():
+    def reads_a_row_too_far(image, x, y):
+        image[len(image)]  # on every case, the point inside or not
+        return lookup(image, x, y)
+
+    result = check.bilinear_sample(reads_a_row_too_far)
+    assert "case 1 raised IndexError" in str(result) and result.mistake is None
+
+
+def test_a_wrong_lookup_draws_the_point_its_four_centres_and_both_values(monkeypatch):
+    drawn = []
+    monkeypatch.setattr(check, "figure_png", lambda figure: drawn.append(figure) or b"\x89PNG")
+    result = check.bilinear_sample(lambda image, x, y: lookup(image, x, y, clamp="point"))
+    assert result.picture == b"\x89PNG"
+    (figure,) = drawn
+    assert figure._suptitle.get_text() == "(3.2, 2.8): expected 0.7, yours 0.5"
+    (axes,) = figure.axes
+    marks = {line.get_label(): line.get_xydata().tolist() for line in axes.lines}
+    assert marks["the point (x, y)"] == [[3.2, 2.8]]
+    # The lesson's four centres at (3.2, 2.8): columns 2 and 3, rows 1 and 2 (y clamped to 2).
+    assert sorted(map(tuple, marks["the four centres blended"])) == [
+        (2.5, 1.5),
+        (2.5, 2.5),
+        (3.5, 1.5),
+        (3.5, 2.5),
+    ]
+
+
+def spaced_loop(offsets, dtype=float, finish=lambda result: result):
+    """A student's supersampling loop with the samples of each axis at ``offsets(rate)``, in
+    output pixels from the pixel's corner, into a result of ``dtype``, passed to ``finish``."""
+
+    def supersample_loop(image, out_shape, rate):
+        (height, width), (in_height, in_width) = out_shape, image.shape[:2]
+        result = np.zeros((height, width, *image.shape[2:]), dtype=dtype)
+        for row in range(height):
+            for column in range(width):
+                for dy in offsets(rate):
+                    for dx in offsets(rate):
+                        x = (column + dx) * in_width / width
+                        y = (row + dy) * in_height / height
+                        result[row, column] += bilinear_sample(image, x, y) / rate**2
+        return finish(result)
+
+    return supersample_loop
+
+
+def centres(rate):
+    return [(i + 0.5) / rate for i in range(rate)]
+
+
+@pytest.mark.parametrize(
+    ("offsets", "mistake"),
+    [
+        (lambda rate: [i / rate for i in range(rate)], "samples at the sub-pixel corners"),
+        (lambda rate: list(np.linspace(0, 1, rate)), "samples from edge to edge"),
+        (lambda rate: [i / (rate - 1) if rate > 1 else 0.5 for i in range(rate)], None),
+        (lambda rate: [(i + 1) / (rate + 1) for i in range(rate)], "samples 1 / (rate + 1) apart"),
+    ],
+)
+def test_samples_spaced_otherwise_than_the_sub_pixel_centres_are_named(offsets, mistake):
+    assert check.supersample(spaced_loop(centres))
+    result = check.supersample(spaced_loop(offsets))
+    # i / (rate - 1) is np.linspace(0, 1, rate) written out: the same mistake.
+    assert result.mistake == (mistake or "samples from edge to edge"), str(result)
+    assert "case 1 is wrong" in str(result)
+
+
+@pytest.mark.parametrize(
+    "student",
+    [
+        spaced_loop(centres, dtype=int),
+        spaced_loop(centres, dtype=np.uint8),
+        spaced_loop(centres, finish=lambda result: result.astype(np.uint8)),
+        spaced_loop(centres, finish=lambda result: np.round(result).astype(int)),
+    ],
+    ids=["int array", "uint8 array", "astype uint8", "rounded to int"],
+)
+def test_whole_numbers_returned_for_the_means_are_named(student):
+    result = check.supersample(student)
+    assert not result and result.mistake == "whole numbers for the means", str(result)
+    assert "Make the result a float array" in str(result)

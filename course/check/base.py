@@ -234,10 +234,10 @@ def run_cases(
     made plain (:func:`~course.check.answers.plain`): no method of the
     student's runs after it, so an answer that lies (an ``int`` whose
     ``__eq__`` is always True) or never ends (an endless iterator) fails
-    with a report, never a traceback. Stops at the first wrong answer, or
-    at the first exception the student's code raises (naming their line),
-    and reports that case: its inputs, both answers, ``difference(expected,
-    given)``, ``explain(case, expected, given)`` (``explain_nan(case, given)``
+    with a report, never a traceback. Stops at the first wrong answer, or at the first
+    exception the student's code raises (naming their line, and the mistake that raises it:
+    :meth:`Mistake.raised`), and reports that case: its inputs, both answers, ``difference(
+    expected, given)``, ``explain(case, expected, given)`` (``explain_nan(case, given)``
     for an answer that holds NaN or inf: where, and why), the mistake of
     ``mistakes`` whose answer the student's matches, ``picture(case,
     expected, given)`` and the next step of ``hint``. ``watch()``, if given,
@@ -347,7 +347,9 @@ def run_cases(
                 ]
                 if line is not None:
                     lines.append(_("  at {line}").format(line=line))
-                return report.fail(count, [*lines, inputs_line])
+                known = next((m for m in mistakes if m.raised(error, copies_of(case))), None)
+                lines += [inputs_line, *([known_mistake(known)] if known else [])]
+                return report.fail(count, lines, mistake=known.name if known else None)
             names = tuple(name for name in parameters if name not in writable)
             keep = [i for i, name in enumerate(parameters) if name not in writable]
             compared = (names, tuple(case[n] for n in names), tuple(arguments[i] for i in keep))

@@ -26,13 +26,39 @@ class Mistake:
     tells the student what their code must have done ("your curve runs
     backwards: you wrote t P[i] + (1 - t) P[i+1]"). ``matches(answer,
     given)`` decides whether the student's answer is the mistake's; by
-    default, the checker's own comparison.
+    default, the checker's own comparison. A mistake that makes the code raise rather
+    than answer (a division by a zero height) gives the exception's class as ``raises``:
+    its ``answer`` raises it on the cases where the student's code does, and a student's
+    exception of that class, on a case where the reproduction raises it too, is named.
     """
 
     name: str
     explanation: str
     answer: Callable[..., Any]
     matches: Callable[[Any, Any], bool] | None = None
+    raises: type[BaseException] | None = None
+
+    def raised(self, error: BaseException, case: dict[str, Any]) -> bool:
+        """Whether ``error``, raised by the student's code on ``case``, is this mistake's: of
+        the kind it raises, and raised by its reproduction on ``case`` too.
+
+        Examples
+        --------
+        >>> flat = Mistake("flat", "", lambda height: 1 / height, raises=ZeroDivisionError)
+        >>> flat.raised(ZeroDivisionError("division by zero"), {"height": 0})
+        True
+        >>> flat.raised(ZeroDivisionError("division by zero"), {"height": 2})
+        False
+        """
+        if self.raises is None or not isinstance(error, self.raises):
+            return False
+        try:
+            self.answer(**case)
+        except self.raises:
+            return True
+        except Exception:
+            return False
+        return False
 
 
 @dataclass(frozen=True)

@@ -9,8 +9,10 @@
 - :mod:`.curve_segments`: the lab's Task 7 as an app: a cubic drawn as Bresenham segments, against
   the curve itself;
 - :mod:`.grid`: the zoomed pixel grid lesson 03's apps draw on, in image space (y down);
-- :mod:`.mistakes`: the known mistakes lesson 03's checkers name, each reproduced on the checker's
-  cases.
+- :mod:`.line_mistakes`: the wrong lines lesson 03's draw_line checker names, each reproduced on
+  its cases;
+- :mod:`.mistakes`: the wrong fills lesson 03's draw_triangle_filled checker names, each
+  reproduced on the checker's cases.
 
 The notebook imports its checkers as ``from course.lessons.l03_lines_and_triangles import check``.
 """

@@ -7,10 +7,13 @@ inside, each once, in any order (the lab fills them by scanline; any method
 that takes the same pixels passes). A failure shows the missing and extra
 pixels as a picture and names the handouts' mistakes: a 4-connected
 staircase (the report's loop, or every pixel a finely stepped float t
-crosses), a line drawn backwards or short of an end, and for triangles every
-edge closed or open, the rule mirrored, the left edges left out, the top row
-left out or the bottom row filled, vertices rounded or made whole, and a
-pixel corner tested for its centre (:mod:`.mistakes` reproduces them).
+crosses), a line drawn backwards or short of an end, a single pixel left
+empty, the lesson's loop without the steep swap, with the swap not undone or
+with ``D -= dx``, pixels as (y, x) (:mod:`.line_mistakes` reproduces them);
+and for triangles every edge closed or open, the rule mirrored, the left
+edges left out, the top row left out or the bottom row filled, vertices
+rounded or made whole, a pixel corner tested for its centre, and the slopes
+divided before the test for a flat edge (:mod:`.mistakes` reproduces them).
 Pictures frame the case, number pixels as the lesson's figures do (ticks
 on pixel corners) and draw the triangle's edges. An answer that calls the
 library's own line or fill is told to write it.
@@ -42,11 +45,8 @@ from course.check.exercises import exercise
 from course.check.pictures import pixel_picture
 from course.i18n import N_, _
 from course.lessons.graded_cases import drawn_like
-from course.lessons.l03_lines_and_triangles.mistakes import (
-    FILL_MISTAKES,
-    LINE_MISTAKES,
-    same_pixel_set,
-)
+from course.lessons.l03_lines_and_triangles.line_mistakes import LINE_MISTAKES, is_bresenham_line
+from course.lessons.l03_lines_and_triangles.mistakes import FILL_MISTAKES, same_pixel_set
 from course.raster import line, triangle
 
 __all__ = ["draw_line", "draw_triangle_filled", "hint"]
@@ -153,7 +153,7 @@ def _drawn_line_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
     for family in families:
         count = 2 if len(cases) < 8 else 1
         like = fixed[len(cases) : len(cases) + count]
-        cases += drawn_like(like, family, line, _is_bresenham_line, LINE_MISTAKES, _as_line_pixels)
+        cases += drawn_like(like, family, line, is_bresenham_line, LINE_MISTAKES, _as_line_pixels)
     return cases
 
 
@@ -382,7 +382,7 @@ def draw_line(student: Callable[..., Any]) -> CheckResult:
         student,
         cases,
         line,
-        _is_bresenham_line,
+        is_bresenham_line,
         _as_line_pixels,
         mistakes=LINE_MISTAKES,
         difference=_line_difference,
@@ -460,21 +460,3 @@ def _as_line_pixels(given: Any) -> np.ndarray:
             ).format(type=type(given).__name__)
         )
     return pixel_rows(given)
-
-
-def _is_bresenham_line(expected: np.ndarray, given: np.ndarray) -> bool:
-    (x0, y0), (x1, y1) = expected[0], expected[-1]
-    if given.shape != expected.shape or not np.array_equal(given, np.round(given)):
-        return False
-    if tuple(given[0]) != (x0, y0) or tuple(given[-1]) != (x1, y1):
-        return False
-    if len(given) > 1 and not (np.abs(np.diff(given, axis=0)).max(axis=1) == 1).all():
-        return False
-    dx, dy = x1 - x0, y1 - y0
-    n = max(abs(dx), abs(dy))
-    if n == 0:
-        return True
-    x, y = given[:, 0] - x0, given[:, 1] - y0
-    # Offset from the ideal line along the shorter axis, times n.
-    offset = y * dx - x * dy if abs(dx) >= abs(dy) else x * dy - y * dx
-    return bool((2 * np.abs(offset) <= n).all())

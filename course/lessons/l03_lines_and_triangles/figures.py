@@ -375,6 +375,22 @@ def colour_figure(
     axes.plot(corners[:, 0], corners[:, 1], color="0.15", lw=1)
     probe = pixels[len(pixels) // 2]
     weights = colours[len(pixels) // 2]
+    # The centre the caption gives the weights of, marked where the student can find it.
+    centre = (probe[0] + 0.5, probe[1] + 0.5)
+    axes.plot(*centre, "o", color="white", mec="0.1", mew=1.2, ms=6)
+    axes.annotate(
+        f"({centre[0]:g}, {centre[1]:g})",
+        centre,
+        xytext=(7, 7),
+        textcoords="offset points",
+        fontsize=8,
+        bbox={
+            "boxstyle": "round,pad=0.2",
+            "facecolor": "white",
+            "edgecolor": "none",
+            "alpha": 0.85,
+        },
+    )
     caption = _(
         "{count} pixels; at the centre ({x:g}, {y:g}) the "
         "weights are ({w0:.3f}, {w1:.3f}, {w2:.3f})"

@@ -1,14 +1,13 @@
-"""The known mistakes lesson 03's checkers name, each reproduced on the checker's cases.
+"""The wrong fills lesson 03's :func:`.check.draw_triangle_filled` names, each reproduced on
+the checker's cases.
 
-:data:`LINE_MISTAKES` are the wrong lines :func:`.check.draw_line` names: a 4-connected
-staircase, told by its cause where the pixels show it (the lab report's loop, or a float t
-stepped finely with the repeated pixels dropped), a line drawn backwards or short of an end,
-coordinates truncated, the lesson's first-octant pseudocode used as is.
-:data:`FILL_MISTAKES` are the wrong fills :func:`.check.draw_triangle_filled` names: every
-edge closed, the top row left out or the bottom row filled, vertices rounded or made whole,
-the rule mirrored, every edge open, the left edges left out, and a pixel corner tested in
-place of its centre (either corner, under any edge rule). Beside them, the comparisons that
-tell a mistake from its neighbours, and :func:`same_pixel_set`, the fill checker's own.
+:data:`FILL_MISTAKES`: every edge closed, the top row left out or the bottom row filled,
+vertices rounded or made whole, the rule mirrored, every edge open, the left edges left out,
+a pixel corner tested in place of its centre (either corner, under any edge rule), and the
+lab report's slopes divided by an edge's height before the test for a flat edge (it raises
+ZeroDivisionError). Beside them, the comparisons that tell a mistake from its neighbours,
+and :func:`same_pixel_set`, the fill checker's own. The wrong lines are
+:mod:`.line_mistakes`'.
 
 Only the checkers call these, with their own cases and the student's answer
 as :mod:`.check` has read it, so this module checks none (``UNCHECKED = True``;
@@ -25,244 +24,24 @@ import numpy as np
 
 from course.check.base import Mistake, same_pixels
 from course.i18n import N_
-from course.raster import line, line_4connected, triangle
+from course.raster import triangle
 
 UNCHECKED = True  # see the module docstring
 
 __all__ = [
     "FILL_MISTAKES",
-    "LINE_MISTAKES",
     "bottom_row_filled",
     "corners_inside",
-    "crosses_the_line_only",
     "far_corners_inside",
-    "fine_t_steps",
-    "first_octant_only",
-    "is_staircase",
     "left_edges_open",
     "mirrored_rule",
     "open_rule",
-    "ordered_same",
-    "report_staircase",
     "same_or_nothing",
     "same_pixel_set",
-    "separate_steps",
+    "slopes_before_the_flat_test",
     "top_row_left_out",
-    "truncated_steps",
     "unless_same",
 ]
-
-
-# --- lines -----------------------------------------------------------------------------
-
-
-def ordered_same(expected: Any, given: Any) -> bool:
-    """Whether two lines hold the same pixels in the same order."""
-    expected = np.asarray(expected, dtype=float).reshape(-1, 2)
-    given = np.asarray(given, dtype=float).reshape(-1, 2)
-    return expected.shape == given.shape and bool(np.array_equal(expected, given))
-
-
-def first_octant_only(p0: Any, p1: Any) -> list[tuple[int, int]]:
-    """The lesson's first-octant pseudocode used as is: x from x0 up to x1, y stepping up."""
-    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
-    dx, dy = x1 - x0, y1 - y0
-    decision, y, pixels = 2 * dy - dx, y0, []
-    for x in range(x0, x1 + 1):
-        pixels.append((x, y))
-        if decision > 0:
-            y += 1
-            decision -= 2 * dx
-        decision += 2 * dy
-    return pixels
-
-
-def truncated_steps(p0: Any, p1: Any) -> list[tuple[int, int]]:
-    """A DDA that steps t evenly and truncates each point with int() instead of rounding."""
-    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
-    steps = max(abs(x1 - x0), abs(y1 - y0))
-    if steps == 0:
-        return [(x0, y0)]
-    return [
-        (int(x0 + i / steps * (x1 - x0)), int(y0 + i / steps * (y1 - y0))) for i in range(steps + 1)
-    ]
-
-
-def report_staircase(p0: Any, p1: Any) -> Any:
-    """The lab report's line from p0 to p1: a 4-connected staircase."""
-    return line_4connected(p0, p1)
-
-
-def fine_t_steps(p0: Any, p1: Any, steps_per_pixel: int = 64) -> list[tuple[int, int]]:
-    """A float t stepped finely from 0 to 1, each point rounded, a pixel kept when it is new.
-
-    The samples visit every pixel the ideal line passes through, in order, and where the line
-    leaves a pixel through a side, the next pixel shares that side: a 4-connected staircase.
-    """
-    (x0, y0), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
-    count = steps_per_pixel * max(abs(x1 - x0), abs(y1 - y0), 1)
-    pixels: list[tuple[int, int]] = []
-    for k in range(count + 1):
-        t = k / count
-        pixel = (round(x0 + t * (x1 - x0)), round(y0 + t * (y1 - y0)))
-        if not pixels or pixels[-1] != pixel:
-            pixels.append(pixel)
-    return pixels
-
-
-def separate_steps(p0: Any, p1: Any) -> list[tuple[int, int]]:
-    """Bresenham's two tests, with a pixel painted after each step: x, then y.
-
-    Where both tests call for a step, the diagonal step becomes two and the pixel between them,
-    in the corner, is painted too.
-    """
-    (x, y), (x1, y1) = (int(v) for v in p0), (int(v) for v in p1)
-    dx, dy = abs(x1 - x), abs(y1 - y)
-    sx, sy = (1 if x1 >= x else -1), (1 if y1 >= y else -1)
-    error, pixels = dx - dy, [(x, y)]
-    while (x, y) != (x1, y1):
-        doubled = 2 * error
-        if doubled > -dy:
-            error, x = error - dy, x + sx
-            pixels.append((x, y))
-        if doubled < dx:
-            error, y = error + dx, y + sy
-            pixels.append((x, y))
-    return pixels
-
-
-def crosses_the_line_only(answer: Any, given: Any) -> bool:
-    """Whether ``given`` is a path of more pixels than a line has, each touched by the ideal line.
-
-    ``answer`` is :func:`fine_t_steps`' line, whose first and last pixels are p0 and p1. The
-    path must run from p0 to p1, each pixel a neighbour of the one before (by a side or a
-    corner), and the segment between the two end centres must touch every pixel's square
-    (edges included): what a line sampled more finely than its pixels gives, whatever the
-    step and however its ties were rounded.
-    """
-    want = np.asarray(answer, dtype=np.int64).reshape(-1, 2)
-    have = np.asarray(given, dtype=float)
-    if have.ndim != 2 or have.shape[1:] != (2,) or len(want) == 0:
-        return False
-    (x0, y0), (x1, y1) = want[0], want[-1]
-    if len(have) <= max(abs(x1 - x0), abs(y1 - y0)) + 1:
-        return False  # as many pixels as a line has: not a staircase
-    if tuple(have[0]) != (x0, y0) or tuple(have[-1]) != (x1, y1):
-        return False
-    steps = np.abs(np.diff(have, axis=0))
-    if not ((steps.max(axis=1) == 1) & (steps.sum(axis=1) <= 2)).all():
-        return False
-    # Doubled, every coordinate below is a whole number: the test is exact.
-    xs, ys = 2 * have[:, 0], 2 * have[:, 1]
-    in_box = (
-        (xs + 1 >= 2 * min(x0, x1))
-        & (xs - 1 <= 2 * max(x0, x1))
-        & (ys + 1 >= 2 * min(y0, y1))
-        & (ys - 1 <= 2 * max(y0, y1))
-    )
-    dx, dy = 2 * (x1 - x0), 2 * (y1 - y0)
-    sides = np.stack(
-        [dx * (ys + oy - 2 * y0) - dy * (xs + ox - 2 * x0) for ox in (-1, 1) for oy in (-1, 1)]
-    )
-    straddles = (sides.min(axis=0) <= 0) & (sides.max(axis=0) >= 0)
-    return bool((in_box & straddles).all())
-
-
-def is_staircase(staircase: Any, given: Any) -> bool:
-    """Whether ``given`` runs from the staircase's first pixel to its last in axis steps only.
-
-    Any 4-connected path of |dx| + |dy| + 1 pixels is one, whichever way its corners turn.
-    """
-    want, have = np.asarray(staircase, dtype=float), np.asarray(given, dtype=float)
-    if have.ndim != 2 or have.shape != want.shape or len(have) < 2:
-        return False
-    if tuple(have[0]) != tuple(want[0]) or tuple(have[-1]) != tuple(want[-1]):
-        return False
-    steps = np.abs(np.diff(have, axis=0))
-    return bool((steps.sum(axis=1) == 1).all())
-
-
-#: The wrong lines :func:`.check.draw_line` names, in the order it tries them.
-LINE_MISTAKES = (
-    Mistake(
-        N_("the report's staircase"),
-        N_(
-            "every step of your line moves in x or in y, never both: your pixels are the lab "
-            "report's loop, whose one test `if (err2 > -dy) ... else ...` steps y only when it "
-            "does not step x. Each diagonal step became two, with an extra pixel in the corner: "
-            "a 4-connected staircase. Test both errors, each with its own if, so that a step "
-            "moves diagonally when both call for it: a line has max(|dx|, |dy|) + 1 pixels, "
-            "not |dx| + |dy| + 1."
-        ),
-        report_staircase,
-        matches=ordered_same,
-    ),
-    Mistake(
-        N_("every pixel the line crosses"),
-        N_(
-            "your pixels are every pixel the ideal line passes through, in order, as a float t "
-            "stepped finely from 0 to 1 gives when each repeated pixel is dropped: where the "
-            "line passes from one row to the next within a column, both pixels are kept, so "
-            "your line is a 4-connected staircase of |dx| + |dy| + 1 pixels. A line takes one "
-            "pixel per step along its longer axis: n = max(|dx|, |dy|) steps, t = i / n, the "
-            "other coordinate rounded; or Bresenham's error term."
-        ),
-        fine_t_steps,
-        matches=crosses_the_line_only,
-    ),
-    Mistake(
-        N_("a 4-connected staircase"),
-        N_(
-            "every step of your line moves in x or in y, never both, so each diagonal step "
-            "became two and left an extra pixel in the corner: a 4-connected staircase of "
-            "|dx| + |dy| + 1 pixels. Decide both steps first, then paint once, so that a step "
-            "moves diagonally when both call for it: a line has max(|dx|, |dy|) + 1 pixels."
-        ),
-        separate_steps,
-        matches=is_staircase,
-    ),
-    Mistake(
-        N_("drawn backwards"),
-        N_("your pixels run from p1 to p0: the lab's DrawLine starts at p0."),
-        lambda p0, p1: line(p0, p1)[::-1],
-        matches=ordered_same,
-    ),
-    Mistake(
-        N_("the last pixel missing"),
-        N_("your loop stops one pixel before p1: a line includes both end pixels."),
-        lambda p0, p1: line(p0, p1)[:-1],
-        matches=ordered_same,
-    ),
-    Mistake(
-        N_("the first pixel missing"),
-        N_("your line starts one pixel after p0: paint p0 before the first step."),
-        lambda p0, p1: line(p0, p1)[1:],
-        matches=ordered_same,
-    ),
-    Mistake(
-        N_("truncated, not rounded"),
-        N_(
-            "you stepped along the line and cut each coordinate with int(), which drops the "
-            "fraction: that takes the pixel on one side of the line, not the nearest one. "
-            "Round to the nearest pixel, or let an error term decide, as Bresenham does."
-        ),
-        truncated_steps,
-        matches=ordered_same,
-    ),
-    Mistake(
-        N_("the first octant only"),
-        N_(
-            "your line works only in the first octant (x1 >= x0 and 0 <= y1 - y0 <= x1 - x0): "
-            "the lesson's pseudocode, used as is. The other seven octants run the same loop: "
-            "a steep line swaps the roles of x and y, and a line going left or up steps by -1."
-        ),
-        first_octant_only,
-        matches=ordered_same,
-    ),
-)
-
-
-# --- fills -----------------------------------------------------------------------------
 
 
 def same_pixel_set(expected: np.ndarray, given: np.ndarray) -> bool:
@@ -372,6 +151,18 @@ def same_or_nothing(answer: Any, given: Any) -> bool:
     )
 
 
+def slopes_before_the_flat_test(p0: Any, p1: Any, p2: Any) -> np.ndarray:
+    """The lab report's fill: each edge's slope, dx / dy, divided before the test for a flat
+    edge. A flat top or bottom (two corners at one y) raises ZeroDivisionError; any other
+    triangle is filled right."""
+    top, middle, bottom = sorted(
+        ((float(x), float(y)) for x, y in (p0, p1, p2)), key=lambda p: p[1]
+    )
+    for (xa, ya), (xb, yb) in ((top, middle), (middle, bottom), (top, bottom)):
+        (xb - xa) / (yb - ya)  # the slope the report computes first: no test before it
+    return triangle(p0, p1, p2)
+
+
 #: The wrong fills :func:`.check.draw_triangle_filled` names, in the order it tries them.
 FILL_MISTAKES = (
     Mistake(
@@ -472,5 +263,16 @@ FILL_MISTAKES = (
             partial(far_corners_inside, rule=rule),
         )
         for rule in ("top-left", "closed", "open", "mirrored")
+    ),
+    Mistake(
+        N_("the slopes divided before the flat-edge test"),
+        N_(
+            "the slopes are divided by the height before testing for a flat edge: a flat top "
+            "or a flat bottom has an edge of height 0 (two corners at the same y), and dx / dy "
+            "on it divides by zero, as the lab report warns. Test first: a half of zero height "
+            "holds no row, so skip it before computing its slopes."
+        ),
+        slopes_before_the_flat_test,
+        raises=ZeroDivisionError,
     ),
 )

@@ -4,8 +4,10 @@ The student's ``supersample(image, out_shape, rate)`` returns the shrunk
 image: for each output pixel, the mean of rate x rate bilinear samples at
 the sub-pixel centres, with pixel centres at +0.5 (:mod:`course.sampling.resample`).
 The student's ``bilinear_sample(image, x, y)`` is checked on its own first,
-its clamp at every edge included. An answer that calls the library's own
-lookup or supersampling is told to write it.
+its clamp at every edge included; a failure draws the point, the four
+centres it blends and both values. :mod:`.mistakes` reproduces the mistakes
+each checker names. An answer that calls the library's own lookup or
+supersampling is told to write it.
 
 Hints come in steps: a failure says where to look, the next failures say
 more; ``check.hint("bilinear_sample")`` says more at once and
@@ -18,19 +20,18 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
+from matplotlib.figure import Figure
 
-from course.check.base import CheckResult, Mistake, close, hint, run_cases
+from course.check.base import CheckResult, close, hint, run_cases
 from course.check.exercises import exercise
 from course.check.hints import Hints
-from course.check.pictures import image_picture, side_by_side
+from course.check.pictures import EXPECTED, GIVEN, figure_png, image_picture, side_by_side
 from course.i18n import N_, _
 from course.lessons.graded_cases import drawn_in_order
+from course.lessons.l04_supersampling.mistakes import lookup_mistakes, supersample_mistakes
 from course.sampling import resample
-from course.sampling.resample import (
-    bilinear,
-    supersample_shifted,
-    supersample_without_offset,
-)
+from course.sampling.resample import bilinear
+from course.widgets.picture import pixel_axes
 
 __all__ = ["bilinear_sample", "hint", "supersample"]
 
@@ -44,36 +45,6 @@ _LIBRARY_FUNCTIONS = (
 
 def _as_image(value: Any) -> np.ndarray:
     return np.asarray(value, dtype=float)
-
-
-def _variant(
-    image: Any,
-    out_shape: Any,
-    rate: int,
-    whole_scale: bool = False,
-    divide: str = "square",
-    unscaled_offsets: bool = False,
-    swapped_scales: bool = False,
-) -> np.ndarray:
-    """Supersampling with one of the slips: a whole-number scale, / rate for / rate^2, the
-    sub-pixel offsets left in output pixels while the pixel's corner is in input pixels, or
-    x scaled by H / h and y by W / w."""
-    image = np.asarray(image, dtype=float)
-    (height, width), (in_height, in_width) = out_shape, image.shape[:2]
-    sx = in_width // width if whole_scale else in_width / width
-    sy = in_height // height if whole_scale else in_height / height
-    if swapped_scales:
-        sx, sy = in_height / height, in_width / width
-    offsets = (np.arange(rate) + 0.5) / rate
-    offset_x, offset_y = (offsets, offsets) if unscaled_offsets else (offsets * sx, offsets * sy)
-    xs = np.arange(width)[:, None] * sx + offset_x[None, :]  # (w, rate)
-    ys = np.arange(height)[:, None] * sy + offset_y[None, :]  # (h, rate)
-    grid_y = ys[:, None, :, None] + 0 * xs[None, :, None, :]
-    grid_x = xs[None, :, None, :] + 0 * ys[:, None, :, None]
-    samples = bilinear(image, grid_x.reshape(-1), grid_y.reshape(-1))
-    samples = samples.reshape(height, width, rate * rate, *image.shape[2:])
-    total = samples.sum(axis=2)
-    return total / (rate if divide == "rate" else rate * rate)
 
 
 def _cases() -> list[dict[str, Any]]:
@@ -159,76 +130,6 @@ def supersample(student: Callable[..., Any]) -> CheckResult:
     >>> supersample(lambda image, out_shape, rate: image).passed
     False
     """
-    mistakes = [
-        Mistake(
-            _("the scale made whole"),
-            _(
-                "you divided the sizes with //, which drops the scale's fraction: W // w for "
-                "W / w, H // h for H / h. Your samples then stop short of the input's right or "
-                "bottom edge, wherever w does not divide W or h does not divide H. The scale is "
-                "a float: W / w and H / h."
-            ),
-            lambda image, out_shape, rate: _variant(image, out_shape, rate, whole_scale=True),
-        ),
-        Mistake(
-            _("divided by the rate, not its square"),
-            _(
-                "your pixels are rate times too bright: there are rate x rate samples per output "
-                "pixel, so their mean divides by rate squared."
-            ),
-            lambda image, out_shape, rate: _variant(image, out_shape, rate, divide="rate"),
-        ),
-        Mistake(
-            _("the two scales swapped"),
-            _(
-                "you scaled x by H / h and y by W / w: x runs along the width, so x = (c + (i + "
-                "0.5) / rate) W / w and y = (r + (j + 0.5) / rate) H / h; out_shape is (h, w), "
-                "rows first."
-            ),
-            lambda image, out_shape, rate: _variant(image, out_shape, rate, swapped_scales=True),
-        ),
-        Mistake(
-            _("the sub-pixel offsets not scaled"),
-            _(
-                "your samples crowd into the first input pixels of each output pixel's square: "
-                "you scaled the output pixel's corner by W / w but not the offset "
-                "(i + 0.5) / rate, which is in output pixels too. Scale the whole position: "
-                "x = (c + (i + 0.5) / rate) W / w."
-            ),
-            lambda image, out_shape, rate: _variant(image, out_shape, rate, unscaled_offsets=True),
-        ),
-        Mistake(
-            _("the report's two shifts"),
-            _(
-                "your samples start at each sub-pixel's corner, i / rate, and your lookup takes "
-                "pixel centres at whole numbers (ix = int(fx)), as the lab report does: the "
-                "picture moves by (1/s - 1/rate) / 2 output pixels. Sample at (i + 0.5) / rate, "
-                "and read pixel k as centred at k + 0.5."
-            ),
-            supersample_without_offset,
-        ),
-        Mistake(
-            _("samples at the sub-pixel corners"),
-            _(
-                "your samples sit at (c + i / rate), each sub-pixel's corner, so the picture moves "
-                "half a sample spacing up and left. Sample at (c + (i + 0.5) / rate)."
-            ),
-            lambda image, out_shape, rate: supersample_shifted(
-                image, out_shape, rate, sample_offset=0.0
-            ),
-        ),
-        Mistake(
-            _("pixel centres at whole numbers"),
-            _(
-                "your bilinear lookup takes pixel k to sit at x = k (ix = int(fx), weight fx - "
-                "ix): its centre is at k + 0.5, so subtract 0.5 before splitting x into ix and "
-                "the weight."
-            ),
-            lambda image, out_shape, rate: supersample_shifted(
-                image, out_shape, rate, pixel_centre=0.0
-            ),
-        ),
-    ]
 
     def picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
         return image_picture(
@@ -246,7 +147,7 @@ def supersample(student: Callable[..., Any]) -> CheckResult:
         resample.supersample,
         close(atol=1e-9),
         _as_image,
-        mistakes=mistakes,
+        mistakes=supersample_mistakes(),
         picture=picture,
         pass_picture=pass_picture,
     )
@@ -272,67 +173,6 @@ def _lookup_cases() -> list[dict[str, Any]]:
     cases = [{"image": gray, "x": x, "y": y} for x, y in points]
     cases += [{"image": colour, "x": x, "y": y} for x, y in ((1.9, 1.2), (0.2, 1.9))]
     return cases
-
-
-def _lookup_mistakes() -> list[Mistake]:
-    """The mistakes ``bilinear_sample``'s checker names, in the current language."""
-    return [
-        Mistake(
-            _("no blending: the nearest pixel"),
-            _(
-                "you returned the pixel the point falls in; blend the four nearest centres, each "
-                "weighted by how near the point is to it along x and along y."
-            ),
-            lambda image, x, y: image[
-                int(np.clip(np.floor(y), 0, image.shape[0] - 1)),
-                int(np.clip(np.floor(x), 0, image.shape[1] - 1)),
-            ],
-        ),
-        Mistake(
-            _("no clamp at the right or bottom edge"),
-            _(
-                "beyond the last pixel centres your blend reaches past the image (or "
-                "extrapolates): a point right of the last centre, or below it, takes the edge "
-                "value."
-            ),
-            _unclamped,
-        ),
-        Mistake(
-            _("pixel centres at whole numbers"),
-            _(
-                "you read pixel k as sitting at x = k, as the lab report's ix = int(fx) does: its "
-                "centre is at k + 0.5. Subtract 0.5 from x and y before taking the whole and the "
-                "fractional parts."
-            ),
-            lambda image, x, y: bilinear(image, x + 0.5, y + 0.5),
-        ),
-        Mistake(
-            _("int() where floor belongs"),
-            _(
-                "left of the first centres or above them, your blend reaches outside the four "
-                "centres around the point: int() rounds toward zero, so for x - 0.5 = -0.9 it "
-                "gives c = 0, not -1, and u = x - 1/2 - c comes out -0.9. Take "
-                "math.floor(x - 0.5), or clamp x - 0.5 to [0, W - 1] first, as for the right and "
-                "bottom edges."
-            ),
-            _truncated,
-        ),
-        Mistake(
-            _("the weights flipped"),
-            _(
-                "you weighted each centre by its distance from the point, not by its nearness: "
-                "the farther centre gets the larger share. With u = x - 1/2 - c the point's "
-                "distance past the left centre, that centre gets 1 - u and the one right of it "
-                "u; the same along y with v."
-            ),
-            _flipped,
-        ),
-        Mistake(
-            _("x and y swapped"),
-            _("you read image[x, y]: an image is indexed by row first, image[y, x]."),
-            lambda image, x, y: bilinear(image, y, x),
-        ),
-    ]
 
 
 def _drawn_lookup_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
@@ -380,9 +220,7 @@ def _drawn_lookup_cases(rng: np.random.Generator) -> list[dict[str, Any]]:
         family(gray if like["image"].ndim == 2 else colour, point)
         for like, point in zip(fixed, points, strict=True)
     ]
-    return drawn_in_order(
-        fixed, families, bilinear, close(atol=1e-9), _lookup_mistakes(), _as_image
-    )
+    return drawn_in_order(fixed, families, bilinear, close(atol=1e-9), lookup_mistakes(), _as_image)
 
 
 BILINEAR_HINTS = Hints(
@@ -443,50 +281,70 @@ def bilinear_sample(student: Callable[..., Any]) -> CheckResult:
         bilinear,
         close(atol=1e-9),
         _as_image,
-        mistakes=_lookup_mistakes(),
+        mistakes=lookup_mistakes(),
+        picture=_lookup_picture,
     )
 
 
-def _flipped(image: Any, x: float, y: float) -> np.ndarray:
-    """The blend with each centre weighted by its distance: 1 - fx where fx belongs."""
-    image = np.asarray(image, dtype=float)
+def _value_text(value: Any) -> str:
+    """A lookup's value: one number to four significant digits, or three to three."""
+    values = np.asarray(value, dtype=float).ravel()
+    digits = 4 if values.size == 1 else 3
+    shown = ", ".join(f"{v:.{digits}g}" for v in values[:3])
+    return shown if values.size <= 3 else f"{shown}, ..."
+
+
+def _lookup_picture(case: dict[str, Any], expected: Any, given: Any) -> bytes:
+    """The image around a wrong lookup: its pixels (gray ones with their values), the four
+    centres the lesson blends for the point (clamped at the edges) joined to it, the point, and
+    the expected and the given value in the title. A pixel's margin around the image shows a
+    point past its edge."""
+    image = np.clip(np.asarray(case["image"], dtype=float), 0, 1)
+    x, y = float(case["x"]), float(case["y"])
     height, width = image.shape[:2]
-    u = float(np.clip(x - 0.5, 0, width - 1))
-    v = float(np.clip(y - 0.5, 0, height - 1))
-    left, top = min(int(u), max(width - 2, 0)), min(int(v), max(height - 2, 0))
-    right, bottom = min(left + 1, width - 1), min(top + 1, height - 1)
-    fx, fy = u - left, v - top
-    upper = image[top, left] * fx + image[top, right] * (1 - fx)
-    lower = image[bottom, left] * fx + image[bottom, right] * (1 - fx)
-    return upper * fy + lower * (1 - fy)
+    zoom, margin, top, left, bottom = 64, 1, 58, 26, 20
+    side_w, side_h = (width + 2 * margin) * zoom, (height + 2 * margin) * zoom
+    columns, rows = max(side_w + 2 * left, 470), side_h + top + bottom
+    figure = Figure(figsize=(columns / 100, rows / 100), dpi=100)
+    axes = pixel_axes(figure, (columns - side_w) // 2, bottom, side_w, side_h)
+    cmap = "gray" if image.ndim == 2 else None
+    axes.imshow(
+        image, extent=(0, width, height, 0), interpolation="nearest", cmap=cmap, vmin=0, vmax=1
+    )
+    axes.set_xlim(-margin, width + margin)
+    axes.set_ylim(height + margin, -margin)
+    axes.set_xticks(range(width + 1))
+    axes.set_yticks(range(height + 1))
+    axes.tick_params(labelsize=7, length=2, pad=1)
+    axes.plot([0, width, width, 0, 0], [0, 0, height, height, 0], color="0.5", lw=0.8)
+    if image.ndim == 2:  # the values, so that the blend can be checked by hand
+        for (row, column), value in np.ndenumerate(image):
+            axes.annotate(
+                f"{value:.3g}",
+                (column + 0.5, row + 0.15),
+                ha="center",
+                va="top",
+                fontsize=8,
+                color="white" if value < 0.5 else "black",
+            )
 
+    def pair(position: float, size: int) -> tuple[int, int]:
+        first = min(int(np.floor(min(max(position - 0.5, 0.0), size - 1))), max(size - 2, 0))
+        return first, min(first + 1, size - 1)
 
-def _truncated(image: Any, x: float, y: float) -> np.ndarray:
-    """The blend with int() for floor, clamping the centres' indices but not u and v.
-
-    For u in (-1, 0), int(u) is 0: the weight u - 0 is negative and the blend extrapolates.
-    """
-    image = np.asarray(image, dtype=float)
-    height, width = image.shape[:2]
-    u, v = x - 0.5, y - 0.5
-    left, top = int(u), int(v)
-    fx, fy = u - left, v - top
-
-    def at(row: int, column: int) -> np.ndarray:
-        return image[min(max(row, 0), height - 1), min(max(column, 0), width - 1)]
-
-    upper = at(top, left) * (1 - fx) + at(top, left + 1) * fx
-    lower = at(top + 1, left) * (1 - fx) + at(top + 1, left + 1) * fx
-    return upper * (1 - fy) + lower * fy
-
-
-def _unclamped(image: Any, x: float, y: float) -> np.ndarray:
-    """A blend clamped at the left and top only: past the last centres it extrapolates."""
-    image = np.asarray(image, dtype=float)
-    height, width = image.shape[:2]
-    u, v = max(x - 0.5, 0.0), max(y - 0.5, 0.0)
-    left, top = min(int(u), width - 2), min(int(v), height - 2)
-    fx, fy = u - left, v - top
-    upper = image[top, left] * (1 - fx) + image[top, left + 1] * fx
-    lower = image[top + 1, left] * (1 - fx) + image[top + 1, left + 1] * fx
-    return upper * (1 - fy) + lower * fy
+    near = [(column, row) for column in pair(x, width) for row in pair(y, height)]
+    for column, row in near:
+        axes.plot([x, column + 0.5], [y, row + 0.5], color=EXPECTED, lw=1)
+    centres = np.array([(column + 0.5, row + 0.5) for column, row in near])
+    axes.plot(*centres.T, "o", color=EXPECTED, ms=6, label=_("the four centres blended"))
+    axes.plot([x], [y], "X", color=GIVEN, ms=10, label=_("the point (x, y)"))
+    figure.legend(loc="upper center", ncols=2, fontsize=8, frameon=False, bbox_to_anchor=(0.5, 1))
+    figure.suptitle(
+        _("({x:g}, {y:g}): expected {expected}, yours {given}").format(
+            x=x, y=y, expected=_value_text(expected), given=_value_text(given)
+        ),
+        fontsize=9,
+        y=1 - 24 / rows,
+        va="top",
+    )
+    return figure_png(figure)

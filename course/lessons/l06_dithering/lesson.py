@@ -23,7 +23,7 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.halftone import dither
-from course.i18n import N_, _
+from course.i18n import N_, _, yes_no
 from course.lessons.l06_dithering import figures
 from course.lessons.l06_dithering.apps import GrayLevelApp, VoidAndClusterApp
 from course.lessons.printed import padded
@@ -81,9 +81,13 @@ def print_equal_to_loop(method: str, same: bool) -> None:
     Examples
     --------
     >>> print_equal_to_loop("rows", True)
-         rows: equal to the loop bit for bit: True
+         rows: equal to the loop bit for bit: yes
     """
-    print(_("{method:>9}: equal to the loop bit for bit: {same}").format(method=method, same=same))
+    print(
+        _("{method:>9}: equal to the loop bit for bit: {same}").format(
+            method=method, same=yes_no(same)
+        )
+    )
 
 
 def print_wavefront_against_pillow(wavefront: float, pillow: float) -> None:

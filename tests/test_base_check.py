@@ -296,6 +296,13 @@ def test_none_and_stubs_are_told_apart():
         "FAIL double: not written yet: your function raised NotImplementedError: your code here"
     )
 
+    def says_nothing(x):
+        raise NotImplementedError
+
+    assert str(bounded(says_nothing)).splitlines()[0] == (
+        "FAIL double: not written yet: your function raised NotImplementedError"
+    )
+
 
 def test_odd_answers_get_a_clear_report_never_a_library_traceback():
     complex_answer = bounded(lambda x: 2 * x + 1j)

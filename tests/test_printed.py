@@ -92,7 +92,7 @@ CASES = [
     pytest.param(
         l01.print_iterative_against,
         (True, True),
-        "iterative == recursive: True\niterative == last level: True",
+        "iterative == recursive: yes\niterative == last level: yes",
         id="01-iterative",
     ),
     pytest.param(
@@ -114,7 +114,7 @@ CASES = [
     pytest.param(
         l02.print_basis_properties,
         (3, 2e-16, 0.0, True),
-        "degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: True",
+        "degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: yes",
         id="02-basis",
     ),
     pytest.param(
@@ -284,7 +284,7 @@ CASES = [
         l06.print_equal_to_loop,
         ("rows", True),
         'method="rows" (a loop along each row, its pushes to the rows below added a whole row '
-        "at once): equal to the loop bit for bit: True",
+        "at once): equal to the loop bit for bit: yes",
         id="06-equal",
     ),
     pytest.param(
@@ -294,25 +294,25 @@ CASES = [
         id="06-timing",
     ),
     pytest.param(
-        l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: True", id="07-loop"
+        l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: yes", id="07-loop"
     ),
     pytest.param(
         l07.print_uniform_filter,
         ("constant", "zero", True),
-        "uniform_filter constant against 'zero': equal below 1e-12: True",
+        "uniform_filter constant against 'zero': equal below 1e-12: yes",
         id="07-uniform-filter",
     ),
     pytest.param(
         l07.print_report_rule_against_scipy,
         (True, 0.088),
-        "the report's rule against scipy's default: inside below 1e-12: True, "
+        "the report's rule against scipy's default: inside below 1e-12: yes, "
         "on the frame up to 0.088",
         id="07-report-rule",
     ),
     pytest.param(
         l07.print_sobel_against_scipy,
         (True,),
-        "sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: True",
+        "sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: yes",
         id="07-sobel",
     ),
     pytest.param(
@@ -337,7 +337,7 @@ CASES = [
     pytest.param(
         l08.print_residual_below,
         ("capacitance", True),
-        " capacitance: residual below 1e-10: True",
+        " capacitance: residual below 1e-10: yes",
         id="08-residual",
     ),
     pytest.param(
@@ -419,6 +419,21 @@ def test_a_lesson_line_is_the_notebooks_in_english_and_chinese_in_chinese(
     # The numbers stay, perhaps in another order; only the words change.
     number = r"\d+(?:\.\d+)?"
     assert sorted(re.findall(number, chinese)) == sorted(re.findall(number, english))
+
+
+@pytest.mark.parametrize(
+    ("function", "arguments", "english"),
+    [case for case in CASES if any(isinstance(value, bool) for value in case.values[1])],
+)
+def test_a_printed_truth_value_is_yes_or_no_in_the_lessons_language(
+    function, arguments, english, capsys
+):
+    assert not re.search(r"\b(True|False)\b", english) and re.search(r"\b(yes|no)\b", english)
+    with language("zh-CN"):
+        function(*arguments)
+    chinese = capsys.readouterr().out
+    assert not re.search(r"True|False|\byes\b|\bno\b", chinese), chinese
+    assert re.search("[是否]", chinese), chinese
 
 
 def test_the_step_table_heading_lines_up_in_chinese(capsys):

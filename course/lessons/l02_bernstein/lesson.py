@@ -19,7 +19,7 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.curves.bezier import bernstein_basis
-from course.i18n import N_, _
+from course.i18n import N_, _, yes_no
 from course.images import EXAMPLE_POINTS
 from course.lessons.l02_bernstein import figures
 from course.lessons.l02_bernstein.apps import BernsteinBasisApp
@@ -38,11 +38,14 @@ def print_basis_properties(degree: int, total: float, mirror: float, ends: bool)
     Examples
     --------
     >>> print_basis_properties(3, 2e-16, 0.0, True)
-    degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: True
+    degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: yes
     """
     print(
         _("degree {degree:>2}: |sum - 1| {total}, |mirror| {mirror}, ends exact: {ends}").format(
-            degree=degree, total=rounding_level(total), mirror=rounding_level(mirror), ends=ends
+            degree=degree,
+            total=rounding_level(total),
+            mirror=rounding_level(mirror),
+            ends=yes_no(ends),
         )
     )
 

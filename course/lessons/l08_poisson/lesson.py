@@ -20,7 +20,7 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_, _
+from course.i18n import N_, _, yes_no
 from course.lessons.l08_poisson import figures
 from course.lessons.l08_poisson.apps import MARGIN, CloneApp, PoissonIterationApp, half_size
 from course.lessons.l08_poisson.convergence import convergence_figure
@@ -46,9 +46,11 @@ def print_residual_below(method: str, below: bool) -> None:
     Examples
     --------
     >>> print_residual_below("dst", True)
-             dst: residual below 1e-10: True
+             dst: residual below 1e-10: yes
     """
-    print(_("{method:>12}: residual below 1e-10: {below}").format(method=method, below=below))
+    print(
+        _("{method:>12}: residual below 1e-10: {below}").format(method=method, below=yes_no(below))
+    )
 
 
 def print_lab_clone_time(per_pixel: float, pixels: int = 30302, sweeps: int = 8000) -> None:

@@ -217,8 +217,8 @@ def prose(text: str) -> str:
 # --- punctuation ----------------------------------------------------------------------------
 
 _CLAUSE_END = "，；：。！？、\n"
-# A tuple or a call of code or math, with no Chinese inside: (2, 1), int(x), P[i].
-_CODE_BRACKETS = re.compile(f"\\([^()（）{CJK}]*\\)|\\[[^\\[\\]{CJK}]*\\]")
+# A tuple, a call, an index or an interval, with no Chinese inside: (2, 1), int(x), (0, 1].
+_CODE_BRACKETS = re.compile(f"[\\[(][^()\\[\\]（）{CJK}]*[\\])]")
 _ASCII_MARK = re.compile(r"[,;:](?=\s|$)")
 
 
@@ -233,10 +233,14 @@ def ascii_punctuation(text: str) -> list[str]:
     [') 得 0.25, 像素 (2,']
     >>> ascii_punctuation("对 x, y >= 0：`a, b` 与 $x: y$；{name}：通过 (t, 1 - t)")
     []
+    >>> ascii_punctuation("t 在 [(k - 1)/9, k/9] 内时，n 在 (0, 0.5] 之内")
+    []
     >>> ascii_punctuation("规则 (左上) 与 {count}, 次")
     ['{count}, 次', '规则 (左上) 与']
     """
-    masked = _mask(_mask(text, _SPANS, "x"), _CODE_BRACKETS, "x")
+    masked, before = _mask(text, _SPANS, "x"), ""
+    while masked != before:  # nested brackets, innermost first: [(k - 1)/9, k/9]
+        masked, before = _mask(masked, _CODE_BRACKETS, "x"), masked
     fields = _mask(masked, _FIELD, "x") != masked
     field_mask = _FIELD.sub(lambda found: "\0" * len(found.group(0)), masked)
     found = []
@@ -247,7 +251,7 @@ def ascii_punctuation(text: str) -> list[str]:
         with_field = [("\0" in side) for side in (before, after)] if fields else [False, False]
         if all(s or f for s, f in zip(sides, with_field, strict=True)) and any(sides):
             found.append(text[max(0, mark.start() - 8) : mark.end() + 8].strip())
-    for parentheses in re.finditer(r"\(([^()]*)\)", field_mask):
+    for parentheses in re.finditer(r"\(([^()\[\]]*)\)", field_mask):
         if _CJK.search(parentheses.group(1)):
             start, end = parentheses.span()
             found.append(text[max(0, start - 3) : end + 3].strip())

@@ -30,7 +30,7 @@ from course.lessons.l06_dithering import lesson as l06
 from course.lessons.l07_filtering import lesson as l07
 from course.lessons.l07_filtering.apps import RepeatedBlurApp
 from course.lessons.l08_poisson import lesson as l08
-from course.lessons.printed import display_width
+from course.lessons.printed import degree_numeral, display_width
 from course.raster import wu_line
 
 CHINESE = re.compile("[\u4e00-\u9fff]")
@@ -416,8 +416,10 @@ def test_a_lesson_line_is_the_notebooks_in_english_and_chinese_in_chinese(
     chinese = capsys.readouterr().out
     assert current_language() == "en"
     assert CHINESE.search(chinese), chinese
-    # The numbers stay, perhaps in another order; only the words change.
+    # The numbers stay, perhaps in another order; only the words change. A degree is written
+    # in words in Chinese (三次曲线): it is read back as its number.
     number = r"\d+(?:\.\d+)?"
+    chinese = re.sub(r"([一二三四五六七八九十百]+)次曲线", _degree_number, chinese)
     assert sorted(re.findall(number, chinese)) == sorted(re.findall(number, english))
 
 
@@ -434,6 +436,24 @@ def test_a_printed_truth_value_is_yes_or_no_in_the_lessons_language(
     chinese = capsys.readouterr().out
     assert not re.search(r"True|False|\byes\b|\bno\b", chinese), chinese
     assert re.search("[是否]", chinese), chinese
+
+
+def _degree_number(found: re.Match) -> str:
+    with language("zh-CN"):
+        numbers = {degree_numeral(n): n for n in range(1000)}
+    return f"{numbers[found.group(1)]} 次曲线"
+
+
+def test_a_degree_is_written_in_words_in_chinese_not_as_a_count(capsys):
+    # Issue 36: «3 次，t = 0.50» reads as "3 times"; a textbook writes 三次曲线.
+    with language("zh-CN"):
+        words = [degree_numeral(n) for n in (1, 3, 9, 10, 11, 20, 26, 99, 200, 1029)]
+        l02.print_basis_properties(3, 2e-16, 0.0, True)
+        l01.print_recursion_error(recursion_error())
+    assert words == ["一", "三", "九", "十", "十一", "二十", "二十六", "九十九", "二百", "1029 "]
+    assert [degree_numeral(n) for n in (3, 1029)] == [3, 1029]
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].startswith(" 三次曲线：") and "1999 次曲线" in lines[1], lines
 
 
 def test_the_step_table_heading_lines_up_in_chinese(capsys):

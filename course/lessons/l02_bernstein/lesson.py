@@ -23,6 +23,7 @@ from course.i18n import N_, _, yes_no
 from course.images import EXAMPLE_POINTS
 from course.lessons.l02_bernstein import figures
 from course.lessons.l02_bernstein.apps import BernsteinBasisApp
+from course.lessons.printed import degree_numeral
 from course.widgets.base import SliderApp
 from course.widgets.picture import rounding_level
 
@@ -42,7 +43,7 @@ def print_basis_properties(degree: int, total: float, mirror: float, ends: bool)
     """
     print(
         _("degree {degree:>2}: |sum - 1| {total}, |mirror| {mirror}, ends exact: {ends}").format(
-            degree=degree,
+            degree=degree_numeral(degree),
             total=rounding_level(total),
             mirror=rounding_level(mirror),
             ends=yes_no(ends),
@@ -106,7 +107,7 @@ def print_calls_per_curve(degree: int, points: int, calls: int) -> None:
     """
     print(
         _("naive_bezier at degree {degree}, {points} points: {calls:,} calls of comb").format(
-            degree=degree, points=points, calls=calls
+            degree=degree_numeral(degree), points=points, calls=calls
         )
     )
 
@@ -136,7 +137,7 @@ def print_horner_gap(degree: int, gap: float) -> None:
     """
     print(
         _("degree {degree:>2}: Horner against the handout's sum: {gap} px").format(
-            degree=degree, gap=rounding_level(gap, 1e-10)
+            degree=degree_numeral(degree), gap=rounding_level(gap, 1e-10)
         )
     )
 
@@ -183,7 +184,7 @@ def print_de_casteljau_error(degree: int, worst: float) -> None:
     """
     print(
         _("degree {degree}: de Casteljau's worst error {worst} of the polygon's size").format(
-            degree=degree, worst=rounding_level(worst)
+            degree=degree_numeral(degree), worst=rounding_level(worst)
         )
     )
 
@@ -198,7 +199,7 @@ def print_middle_peak(degree: int, peak: float) -> None:
     """
     print(
         _("degree {degree:>2}: the middle bump's peak B(n/2, n)(1/2) = {peak:.3f}").format(
-            degree=degree, peak=peak
+            degree=degree_numeral(degree), peak=peak
         )
     )
 

@@ -20,6 +20,7 @@ import pytest
 
 from course import filters
 from course.curves.bezier import de_casteljau_recursive
+from course.halftone.dither import ERROR_DIFFUSION_METHODS
 from course.i18n import current_language, language
 from course.lessons.l01_de_casteljau import lesson as l01
 from course.lessons.l02_bernstein import lesson as l02
@@ -418,6 +419,19 @@ def test_a_lesson_line_is_the_notebooks_in_english_and_chinese_in_chinese(
     # The numbers stay, perhaps in another order; only the words change.
     number = r"\d+(?:\.\d+)?"
     assert sorted(re.findall(number, chinese)) == sorted(re.findall(number, english))
+
+
+def test_the_error_diffusion_forms_and_their_answer_are_said_in_chinese(capsys):
+    with language("zh-CN"):
+        for method in ERROR_DIFFUSION_METHODS:
+            l06.print_equal_to_loop(method, True)
+        l06.print_equal_to_loop("rows", False)
+    lines = capsys.readouterr().out.splitlines()
+    assert not re.search("[A-Za-z]", "".join(lines)), lines
+    assert [line.strip()[:3] for line in lines] == ["波前法", "逐行法", "逐像素", "逐行法"]
+    assert [line[-1] for line in lines] == ["是", "是", "是", "否"]
+    # The names are right-aligned: what follows them starts in one column.
+    assert len({display_width(line.split("与逐像素循环")[0]) for line in lines}) == 1, lines
 
 
 def test_the_step_table_heading_lines_up_in_chinese(capsys):

@@ -26,7 +26,7 @@ from course.halftone import dither
 from course.i18n import N_, _
 from course.lessons.l06_dithering import figures
 from course.lessons.l06_dithering.apps import GrayLevelApp, VoidAndClusterApp
-from course.lessons.printed import padded
+from course.lessons.printed import display_width, padded
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
@@ -75,15 +75,31 @@ def print_pixel_count(pixels: int) -> None:
     print(_("{pixels:,} pixels").format(pixels=pixels))  # an image: never one pixel
 
 
+#: Error diffusion's forms (:data:`course.halftone.dither.ERROR_DIFFUSION_METHODS`) by the
+#: names a student reads; the library's names are identifiers.
+ERROR_DIFFUSION_LABELS = {"wavefront": N_("wavefront"), "rows": N_("rows"), "loop": N_("loop")}
+#: A printed answer, yes or no: Python's words in English.
+_ANSWERS = {True: N_("True"), False: N_("False")}
+
+
 def print_equal_to_loop(method: str, same: bool) -> None:
     """Print whether error diffusion by ``method`` equals the loop's bit for bit.
+
+    ``method`` is a key of :data:`ERROR_DIFFUSION_LABELS`; its name and the answer are
+    shown in the current language, the names right-aligned to the longest.
 
     Examples
     --------
     >>> print_equal_to_loop("rows", True)
          rows: equal to the loop bit for bit: True
     """
-    print(_("{method:>9}: equal to the loop bit for bit: {same}").format(method=method, same=same))
+    width = max(display_width(_(label)) for label in ERROR_DIFFUSION_LABELS.values())
+    print(
+        _("{method}: equal to the loop bit for bit: {same}").format(
+            method=padded(_(ERROR_DIFFUSION_LABELS[method]), width, ">"),
+            same=_(_ANSWERS[bool(same)]),
+        )
+    )
 
 
 def print_wavefront_against_pillow(wavefront: float, pillow: float) -> None:

@@ -229,7 +229,7 @@ def _show_splat(table: np.ndarray) -> str:
     if len(table) == 0:
         return _("no pixel lit")
     each = _("pixel ({x}, {y}) gets {weight}")
-    return ", ".join(each.format(x=int(x), y=int(y), weight=f"{w:.4g}") for x, y, w in table)
+    return _(", ").join(each.format(x=int(x), y=int(y), weight=f"{w:.4g}") for x, y, w in table)
 
 
 def _splat_explain(case: dict[str, Any], expected: np.ndarray, given: np.ndarray) -> str:

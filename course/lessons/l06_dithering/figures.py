@@ -215,7 +215,9 @@ def clumps_and_holes(patterns: Mapping[str, np.ndarray], level: float) -> Table:
         neighbours = ndimage.convolve(lit.astype(int), np.ones((3, 3), int), mode="constant")
         touching = int(np.count_nonzero(lit & (neighbours > 1)))
         hole = ndimage.distance_transform_edt(~lit).max() if lit.any() else float("inf")
-        lines.append(f"{pad(_(name), 15)}{lit.mean():6.3f}{touching:22d}{hole:20.2f}")
+        # No dot at all: the hole is the whole plane, "inf" in English.
+        shown = f"{hole:20.2f}" if np.isfinite(hole) else pad(_("inf"), 20, ">")
+        lines.append(f"{pad(_(name), 15)}{lit.mean():6.3f}{touching:22d}{shown}")
     return Table("\n".join(lines))
 
 

@@ -282,7 +282,7 @@ def test_none_and_stubs_are_told_apart():
         ...
 
     assert str(bounded(forgot)).splitlines()[0] == (
-        "FAIL double: case 1 returned None: did you forget `return`?"
+        "FAIL double: case 1 returned None: did you forget the return statement?"
     )
     assert str(bounded(stub)).splitlines() == [
         "FAIL double: not written yet: your function returns nothing",

@@ -502,7 +502,7 @@ def test_a_float_t_loop_with_its_repeats_dropped_is_named_for_what_it_does(loop)
 def test_the_reports_loop_is_named_with_the_reports_test():
     result = check.draw_line(the_reports_loop)
     assert result.mistake == "the report's staircase"
-    assert "`if (err2 > -dy) ... else ...`" in str(result)
+    assert "if (err2 > -dy) ... else ..." in str(result)
 
 
 @pytest.fixture

@@ -293,25 +293,25 @@ CASES = [
         id="06-timing",
     ),
     pytest.param(
-        l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: True", id="07-loop"
+        l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: yes", id="07-loop"
     ),
     pytest.param(
         l07.print_uniform_filter,
         ("constant", "zero", True),
-        "uniform_filter constant against 'zero': equal below 1e-12: True",
+        "uniform_filter constant against 'zero': equal below 1e-12: yes",
         id="07-uniform-filter",
     ),
     pytest.param(
         l07.print_report_rule_against_scipy,
         (True, 0.088),
-        "the report's rule against scipy's default: inside below 1e-12: True, "
+        "the report's rule against scipy's default: inside below 1e-12: yes, "
         "on the frame up to 0.088",
         id="07-report-rule",
     ),
     pytest.param(
         l07.print_sobel_against_scipy,
         (True,),
-        "sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: True",
+        "sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: yes",
         id="07-sobel",
     ),
     pytest.param(
@@ -336,7 +336,7 @@ CASES = [
     pytest.param(
         l08.print_residual_below,
         ("capacitance", True),
-        " capacitance: residual below 1e-10: True",
+        " capacitance: residual below 1e-10: yes",
         id="08-residual",
     ),
     pytest.param(

@@ -38,6 +38,17 @@ def padded(text: str, width: int, align: str = "<") -> str:
     return text + space if align == "<" else space + text
 
 
+def yes_no(flag: bool) -> str:
+    """A printed boolean as a student reads it, in the current language: yes or no.
+
+    Examples
+    --------
+    >>> yes_no(True), yes_no(False)
+    ('yes', 'no')
+    """
+    return _("yes") if flag else _("no")
+
+
 def title_on_one_line(title: str) -> str:
     """An app's panel title of several lines as one printed line, joined as the language does.
 

@@ -25,7 +25,7 @@ from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.i18n import N_, _
 from course.lessons.l07_filtering import figures
 from course.lessons.l07_filtering.apps import KERNELS, KernelApp, RepeatedBlurApp, blurred
-from course.lessons.printed import display_width, title_on_one_line
+from course.lessons.printed import display_width, title_on_one_line, yes_no
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
@@ -62,9 +62,9 @@ def print_loop_equals_fast(name: str, equal: bool) -> None:
     Examples
     --------
     >>> print_loop_equals_fast("blur", True)
-    blur: loop == fast: True
+    blur: loop == fast: yes
     """
-    print(_("{name}: loop == fast: {equal}").format(name=name, equal=equal))
+    print(_("{name}: loop == fast: {equal}").format(name=name, equal=yes_no(equal)))
 
 
 def print_uniform_filter(mode: str, border: str, same: bool) -> None:
@@ -73,11 +73,11 @@ def print_uniform_filter(mode: str, border: str, same: bool) -> None:
     Examples
     --------
     >>> print_uniform_filter("mirror", "reflect", True)
-    uniform_filter   mirror against 'reflect': equal below 1e-12: True
+    uniform_filter   mirror against 'reflect': equal below 1e-12: yes
     """
     print(
         _("uniform_filter {mode:>8} against '{border}': equal below 1e-12: {same}").format(
-            mode=mode, border=border, same=same
+            mode=mode, border=border, same=yes_no(same)
         )
     )
 
@@ -88,13 +88,13 @@ def print_report_rule_against_scipy(inside: bool, frame: float) -> None:
     Examples
     --------
     >>> print_report_rule_against_scipy(True, 0.0881)
-    the report's rule against scipy's default: inside below 1e-12: True, on the frame up to 0.088
+    the report's rule against scipy's default: inside below 1e-12: yes, on the frame up to 0.088
     """
     print(
         _(
             "the report's rule against scipy's default: inside below 1e-12: {inside}, "
             "on the frame up to {frame:.3f}"
-        ).format(inside=inside, frame=frame)
+        ).format(inside=yes_no(inside), frame=frame)
     )
 
 
@@ -104,11 +104,11 @@ def print_sobel_against_scipy(same: bool) -> None:
     Examples
     --------
     >>> print_sobel_against_scipy(True)
-    sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: True
+    sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: yes
     """
     print(
         _("sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: {same}").format(
-            same=same
+            same=yes_no(same)
         )
     )
 

@@ -109,3 +109,14 @@ def test_the_convergence_figures_labels_are_chinese_and_clear_of_the_sor_curve(m
     ]
     # The SOR curve stops at its last sweep; the label sits past it, under the other two.
     assert grey_level.xy[0] > lab_sweeps()["sor"]["sweeps"][-1]
+
+
+def test_the_kernel_apps_presets_are_named_in_chinese_and_keep_their_values(capsys):
+    from course.lessons.l07_filtering.apps import KernelApp
+
+    with language("zh-CN"):
+        app = KernelApp()
+        l07.print_kernel_presets()
+    labels = dict(app.controls["preset"].options)
+    assert labels["盒式"] == "box" and labels["高斯"] == "Gaussian" and labels["自定义"] == "typed"
+    assert capsys.readouterr().out.startswith("盒式          高斯")

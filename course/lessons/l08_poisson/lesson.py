@@ -24,7 +24,7 @@ from course.i18n import N_, _
 from course.lessons.l08_poisson import figures
 from course.lessons.l08_poisson.apps import MARGIN, CloneApp, PoissonIterationApp, half_size
 from course.lessons.l08_poisson.convergence import convergence_figure
-from course.lessons.printed import yes_no
+from course.lessons.printed import padded, yes_no
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
@@ -53,8 +53,8 @@ def print_residual_below(method: str, below: bool) -> None:
     >>> print_residual_below("dst", True)
              dst: residual below 1e-10: yes
     """
-    name = _(SOLVER_NAMES[method]) if method in SOLVER_NAMES else method
-    print(_("{method:>12}: residual below 1e-10: {below}").format(method=name, below=yes_no(below)))
+    name = padded(_(SOLVER_NAMES[method]) if method in SOLVER_NAMES else method, 12, ">")
+    print(_("{method}: residual below 1e-10: {below}").format(method=name, below=yes_no(below)))
 
 
 def print_lab_clone_time(per_pixel: float, pixels: int = 30302, sweeps: int = 8000) -> None:

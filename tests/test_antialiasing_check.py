@@ -325,7 +325,7 @@ def test_the_difference_panel_numbers_each_pixel_as_the_report_does(monkeypatch)
     result = check.splat(corners_at_integers)
     # Case 1, (2.5, 1.5): pixel (2, 1) should get 1 and gets 0.25, the one pixel 0.75 short.
     assert "first wrong pixel: (2, 1) should get 1, yours gets 0.25" in result.message
-    (difference,) = [a for a in drawn[-1].axes if a.get_title() == "yours minus expected"]
+    (difference,) = [a for a in drawn[-1].axes if a.get_title() == "your result minus expected"]
     (image,) = difference.get_images()
     values = image.get_array()
     row, column = np.unravel_index(np.argmin(values), values.shape)

@@ -261,7 +261,7 @@ def test_a_pixel_picture_frames_a_small_case_whole_and_a_large_one_at_its_first_
 def test_an_image_pictures_difference_panel_puts_its_ticks_on_pixel_corners():
     picture = np.zeros((4, 6))
     figure = mock_figure_of(pictures.image_picture, picture, picture)
-    difference = next(a for a in figure.axes if a.get_title() == "yours minus expected")
+    difference = next(a for a in figure.axes if a.get_title() == "your result minus expected")
     assert tuple(difference.images[0].get_extent()) == (0, 6, 4, 0)
     assert list(difference.get_xticks()) == [0, 2, 4, 6]
     assert list(difference.get_yticks()) == [0, 1, 2, 3, 4]

@@ -502,7 +502,7 @@ def test_a_float_t_loop_with_its_repeats_dropped_is_named_for_what_it_does(loop)
 def test_the_reports_loop_is_named_with_the_reports_test():
     result = check.draw_line(the_reports_loop)
     assert result.mistake == "the report's staircase"
-    assert "`if (err2 > -dy) ... else ...`" in str(result)
+    assert "if (err2 > -dy) ... else ..." in str(result)
 
 
 @pytest.fixture
@@ -518,7 +518,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
         precomputed(lambda p0, p1: line(p0, p1)[::-1].tolist(), check._LINE_CASES)
     )
     assert str(backwards).startswith("未通过 draw_line：用例 1 不对\n  输入：p0=(2, 3), p1=(9, 5)")
-    assert "这是一个已知错误，画反了方向：你的像素是从 p1 画到 p0 的" in str(backwards)
+    assert "这是一个已知的错误「画反了方向」。你的像素是从 p1 画到 p0 的" in str(backwards)
     assert backwards.mistake == "drawn backwards"  # the name stays an identifier
     staircase = str(check.draw_line(separate_steps))
     assert "多了 2 个，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase
@@ -532,7 +532,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
         "未通过 draw_line：还没有写：你的函数抛出了 NotImplementedError"
     )
     refused = str(check.draw_line(lambda p0, p1: line(p0, p1).tolist()))
-    assert "你的函数调用了 course.raster.line，这是课程库自己的答案" in refused
+    assert "你的函数调用了课程库自己的答案 course.raster.line" in refused
 
 
 # --- graded: cases drawn for each submission ------------------------------------------------

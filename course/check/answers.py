@@ -54,9 +54,9 @@ def show_value(value: Any) -> str:
     Examples
     --------
     >>> show_value(np.float64(0.5)), show_value(np.zeros((30, 30), dtype=np.int64))
-    ('0.5', 'an array of shape (30, 30), dtype int64, values 0 to 0')
+    ('0.5', 'an array of shape (30, 30), dtype int64, all 0')
     >>> show_value(np.full((8, 8, 3), 0.25))
-    'an array of shape (8, 8, 3), dtype float64, values 0.25 to 0.25'
+    'an array of shape (8, 8, 3), dtype float64, all 0.25'
     >>> show_value(np.zeros((2, 21)))
     '[[0., 0., 0., ..., 0., 0., 0.], [0., 0., 0., ..., 0., 0., 0.]] (shape (2, 21))'
     """
@@ -77,8 +77,13 @@ def show_value(value: Any) -> str:
 def _summary(value: np.ndarray) -> str:
     """An array by its shape, dtype and range (the range only when it is real and finite)."""
     if value.size and value.dtype.kind in "biuf" and np.isfinite(value).all():
+        low, high = value.min(), value.max()
+        if low == high:
+            return _("an array of shape {shape}, dtype {dtype}, all {value:.6g}").format(
+                shape=value.shape, dtype=value.dtype, value=low
+            )
         return _("an array of shape {shape}, dtype {dtype}, values {low:.6g} to {high:.6g}").format(
-            shape=value.shape, dtype=value.dtype, low=value.min(), high=value.max()
+            shape=value.shape, dtype=value.dtype, low=low, high=high
         )
     return _("an array of shape {shape}, dtype {dtype}").format(
         shape=value.shape, dtype=value.dtype

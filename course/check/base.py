@@ -383,9 +383,9 @@ def run_cases(
                 return report.fail(
                     count,
                     [
-                        _("case {count} returned None: did you forget `return`?").format(
-                            count=count
-                        ),
+                        _(
+                            "case {count} returned None: did you forget the return statement?"
+                        ).format(count=count),
                         inputs_line,
                     ],
                 )

@@ -365,7 +365,7 @@ def _weights_picture(
     axes = figure.add_subplot()
     index = np.arange(len(want))
     axes.plot(index, want, "o-", color=EXPECTED, label=_("expected"), markersize=5)
-    axes.plot(index, have, "x--", color=GIVEN, label=_("yours"), markersize=6)
+    axes.plot(index, have, "x--", color=GIVEN, label=_("your result"), markersize=6)
     # Samples are counted: ticks on whole numbers only, never "sample 0.25".
     axes.xaxis.set_major_locator(MaxNLocator(integer=True))
     axes.set_xlabel(_("sample"), fontsize=8)

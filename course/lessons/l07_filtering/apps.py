@@ -48,6 +48,16 @@ KERNELS = {
     "Sobel y": "-1 -2 -1; 0 0 0; 1 2 1",
     "identity": "0 0 0; 0 1 0; 0 0 0",
 }
+#: The presets' names as the dropdown shows them, and "typed" for a kernel of the student's own.
+PRESET_NAMES = {
+    "box": N_("box"),
+    "Gaussian": N_("Gaussian"),
+    "sharpen": N_("sharpen"),
+    "Sobel x": N_("Sobel x"),
+    "Sobel y": N_("Sobel y"),
+    "identity": N_("identity"),
+    "typed": N_("typed"),
+}
 
 
 # A kernel entry: a decimal number or a fraction of two whole numbers, in the digits 0-9.
@@ -342,7 +352,9 @@ class KernelApp(SliderApp):
         )
         controls = {
             "preset": widgets.Dropdown(
-                options=[*KERNELS, "typed"], value=kernel, description=_("preset")
+                options=[(_(PRESET_NAMES[name]), name) for name in (*KERNELS, "typed")],
+                value=kernel,
+                description=_("preset"),
             ),
             "kernel": widgets.Textarea(
                 value=KERNELS[kernel], description=_("kernel"), continuous_update=False

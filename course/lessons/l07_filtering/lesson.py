@@ -24,8 +24,14 @@ from course.classroom.pictures import (
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.i18n import N_, _, yes_no
 from course.lessons.l07_filtering import figures
-from course.lessons.l07_filtering.apps import KERNELS, KernelApp, RepeatedBlurApp, blurred
-from course.lessons.printed import display_width, title_on_one_line
+from course.lessons.l07_filtering.apps import (
+    KERNELS,
+    PRESET_NAMES,
+    KernelApp,
+    RepeatedBlurApp,
+    blurred,
+)
+from course.lessons.printed import display_width, padded, title_on_one_line
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
@@ -46,12 +52,17 @@ def print_kernel_presets() -> None:
     for name, kernel in KERNELS.items():
         rows = [row.split() for row in kernel.split(";")]
         width = max(len(weight) for row in rows for weight in row)
-        columns.append([name, *(" ".join(weight.rjust(width) for weight in row) for row in rows)])
-    widths = [max(len(line) for line in column) for column in columns]
+        columns.append(
+            [
+                _(PRESET_NAMES[name]),
+                *(" ".join(weight.rjust(width) for weight in row) for row in rows),
+            ]
+        )
+    widths = [max(display_width(line) for line in column) for column in columns]
     for lines in zip(*columns, strict=True):
         print(
             "   ".join(
-                line.ljust(width) for line, width in zip(lines, widths, strict=True)
+                padded(line, width) for line, width in zip(lines, widths, strict=True)
             ).rstrip()
         )
 

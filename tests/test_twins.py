@@ -321,6 +321,19 @@ def test_the_handout_keys_anchor_may_be_the_translated_headings_and_formulas_may
     assert translation_problems("c", english, chinese.replace("0.00094", "0.0009")) != []
 
 
+def test_a_fenced_blocks_comments_are_translated_and_its_code_kept():
+    # Lesson 03's pseudocode said "# the line is nearer the next row" in the Chinese twin.
+    from course.classroom.twins import translation_problems
+
+    english = (
+        "Then:\n\n```\nif D > 0:            # the line is nearer the next row\n    y = y + 1\n```"
+    )
+    chinese = "于是：\n\n```\nif D > 0:    # 直线离下一行更近\n    y = y + 1\n```"
+    assert translation_problems("c", english, chinese) == []
+    assert translation_problems("c", english, chinese.replace("y + 1", "y + 2")) != []
+    assert translation_problems("c", english, chinese.replace("D > 0", "D >= 0")) != []
+
+
 def chinese_share(markdown: str) -> float:
     """Chinese characters as a share of all letters, outside code, formulas and link targets."""
     prose = re.sub(r"```.*?```|`[^`]*`|\$\$.*?\$\$|\$[^$]*\$|<[^>]+>", " ", markdown, flags=re.S)

@@ -66,15 +66,27 @@ _PLACEHOLDER = re.compile(
 )
 
 
+# A comment in a fenced block, with the spaces before it: words a translation may change.
+_FENCED_COMMENT = re.compile(r"[ \t]*#[^\n]*")
+
+
 def kept_spans(text: str) -> list[str]:
     """The LaTeX, code spans, link targets and HTML tags of a markdown text, in order.
+
+    A fenced block is kept without its comments (from ``#`` to the end of the line), which
+    are words: the twin says them in Chinese, its code stays the English's.
 
     Examples
     --------
     >>> kept_spans("The point $B(t)$ of `de_casteljau`, see [here](01_x.ipynb).")
     ['$B(t)$', '`de_casteljau`', '](01_x.ipynb)']
+    >>> kept_spans("```\\nif D > 0:  # the next row\\n    y += 1\\n```")
+    ['```\\nif D > 0: #\\n    y += 1\\n```']
     """
-    return _KEPT.findall(text)
+    return [
+        _FENCED_COMMENT.sub(" #", span) if span.startswith("```") else span
+        for span in _KEPT.findall(text)
+    ]
 
 
 def placeholders(text: str) -> list[str]:

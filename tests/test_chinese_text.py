@@ -49,7 +49,10 @@ def test_latin_words_find_english_and_identifiers_on_a_label():
     ]
     assert text.latin_words("规则 'top-left'") == ["top-left"]
     assert text.latin_words("按 arc_length 加权") == ["arc_length"]
-    assert text.latin_words("Agg（matplotlib）") == ["Agg", "matplotlib"]
+    # An author's or a program's name of NAMES stays Latin; one with a Chinese term does not.
+    assert text.latin_words("Agg（matplotlib）与 Bresenham 算法") == []
+    assert text.latin_words("Wu 直线与 Jacobi 迭代") == ["Wu", "Jacobi"]
+    assert text.latin_words("3 × 3 的窗口") == []
 
 
 def test_loose_text_allows_code_but_not_a_bare_value_or_a_name():

@@ -11,19 +11,20 @@ their terms, and this module their words and their punctuation (issue 36):
     differential (``dx``) or a component (``Gx``);
   - an equation's or a call's name: a word right before ``=`` or ``(`` (``dx = 0.5``);
   - a unit: :data:`UNITS`; a name of :data:`ACRONYMS` (the handouts' courses and the
-    software the course runs on);
+    software the course runs on); a proper name of :data:`NAMES` (an algorithm's author,
+    as Chinese graphics texts write them: Bresenham 算法, Sobel 算子);
   - inside LaTeX, a code span, a format field, a URL, a path or a file name;
   - a gloss: Latin inside full-width parentheses right after a Chinese character,
     «泼溅（splat）»;
   - code, in a printed line or a catalog message (``loose``), where no code span can mark
     it: a word with ``_``, ``.``, ``::``, ``'``-quoted, with digits, in CamelCase, followed
-    by ``[``, a Python exception's name, or a name of :func:`code_names` (the functions and
+    by ``[``, a Python exception's name or keyword (``for``, ``return``), or a name of :func:`code_names` (the functions and
     classes the course and its lessons define, Python's built-ins; in a catalog message
     the parameters' names too). Never in a figure or a widget, whose texts are labels,
     and never a bare ``True``, ``False`` or ``None``: a printed value is a word.
 
-  People's and places' names stay Latin only in a reference, which is prose; the scanned
-  texts hold none, so a name there is a word to translate (or to gloss once).
+  Other names (Jacobi, Wu, Bernstein) have a Chinese term in the glossary: glossed once,
+  then translated.
 * :func:`ascii_punctuation`: an ASCII ``,`` ``;`` ``:`` with a space after it, between two
   clauses that both hold Chinese (or a format field, with Chinese on one side), or ASCII
   parentheses around Chinese; code spans, LaTeX, fields and code-like tuples are excepted.
@@ -37,6 +38,7 @@ from __future__ import annotations
 import ast
 import builtins
 import json
+import keyword
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -46,6 +48,7 @@ UNCHECKED = True  # see the module docstring
 __all__ = [
     "ACRONYMS",
     "CATALOG",
+    "NAMES",
     "NOTEBOOKS",
     "UNITS",
     "Shown",
@@ -65,11 +68,42 @@ CATALOG = _ROOT / "course" / "locale" / "zh_CN" / "LC_MESSAGES" / "course.po"
 UNITS = frozenset({"px", "ms"})
 #: Names that stay as they are: the handouts' courses and the software the course runs on.
 ACRONYMS = frozenset({"RGB", "GAMES101", "VS2022", "OpenCV", "numpy", "Python", "Jupyter"})
+#: Proper names a Chinese graphics text writes in Latin letters, as the handouts do: the
+#: authors an algorithm is named after (Bresenham 算法, Sobel 算子, de Casteljau 算法) and the
+#: software and formats the course names. Not the names the glossary gives in Chinese
+#: (Jacobi, Gauss-Seidel, Wu, Bernstein), which are glossed once and then translated.
+NAMES = (
+    "de Casteljau",
+    "Bézier",
+    "Bresenham",
+    "Sobel",
+    "Floyd-Steinberg",
+    "Floyd–Steinberg",
+    "Jarvis-Judice-Ninke",
+    "Stucki",
+    "Atkinson",
+    "Bayer",
+    "Agg",
+    "matplotlib",
+    "scipy",
+    "SciPy",
+    "Pillow",
+    "nbgrader",
+    "nbformat",
+    "JupyterLab",
+    "JupyterHub",
+    "JSON",
+)
 
 CJK = "\u3400-\u4dbf\u4e00-\u9fff\uf900-\ufaff"
 _CJK = re.compile(f"[{CJK}]")
 # A Latin word: letters (with accents), then letters and digits, joined by - or '.
-_WORD = re.compile(r"[A-Za-zÀ-ɏ][A-Za-zÀ-ɏ0-9_]*(?:[-'’][A-Za-zÀ-ɏ][A-Za-zÀ-ɏ0-9_]*)*")
+# (Latin-1's × and ÷ are signs, not letters.)
+_LETTER = "A-Za-zÀ-ÖØ-öø-ɏ"
+_WORD = re.compile(f"[{_LETTER}][{_LETTER}0-9_]*(?:[-'’][{_LETTER}][{_LETTER}0-9_]*)*")
+_NAME = re.compile("|".join(rf"(?<![{_LETTER}]){re.escape(name)}(?![{_LETTER}])" for name in NAMES))
+# Python's keywords, in code written without code spans (not its values True, False, None).
+_KEYWORDS = frozenset(keyword.kwlist) - {"True", "False", "None"}
 _FIELD = re.compile(r"(?<!\{)\{[A-Za-z_0-9.\[\]]*(?:![rsa])?(?::[^{}]*)?\}(?!\})|%\(\w+\)[sdfr]")
 # Spans whose Latin is never a word: LaTeX, code spans and fences, HTML tags, link targets,
 # URLs, paths and file names.
@@ -79,7 +113,7 @@ _SPANS = re.compile(
     re.DOTALL,
 )
 # Numbers, with an exponent or as a size 3x3: their letters are not words.
-_NUMBER = re.compile(r"(?<![A-Za-zÀ-ɏ0-9_.])\d+(?:\.\d+)?(?:[eE][-+−]?\d+|x\d+)?")
+_NUMBER = re.compile(r"(?<![A-Za-zÀ-ÖØ-öø-ɏ0-9_.])\d+(?:\.\d+)?(?:[eE][-+−]?\d+|x\d+)?")
 # A gloss: Latin in full-width parentheses right after a Chinese character.
 _GLOSS = re.compile(f"(?<=[{CJK}])（[^（）{CJK}]+）")
 # Code in plain text: 'quoted', dotted.names, cv::Point, names with _ or digits.
@@ -113,6 +147,8 @@ def latin_words(
     []
     >>> latin_words("泼溅（splat）的 `count` 与 $B_{i,n}(t)$，{name} 在 x1 处")
     []
+    >>> latin_words("Bresenham 算法画 3 × 3 的网格，de Casteljau 算法与 Jacobi 迭代")
+    ['Jacobi']
     >>> latin_words("规则 'top-left'，按 count 加权：True")
     ['top-left', 'count', 'True']
     >>> latin_words("规则 'top-left'，用 int() 与 np.floor 和 arc_length", loose=True)
@@ -126,6 +162,7 @@ def latin_words(
     text = _mask(text, _SPANS)
     text = _mask(text, _FIELD)
     text = _mask(text, _GLOSS)
+    text = _mask(text, _NAME)
     if loose:
         text = _mask(text, _QUOTED)
         text = _mask(text, re.compile(r"[\w]+(?:(?:\.|::)\w+)+"))
@@ -153,6 +190,7 @@ def _looks_like_code(name: str, text: str, word: re.Match) -> bool:
         or re.search(r"\d", name) is not None
         or re.search(r"[a-z][A-Z]", name) is not None
         or name in _EXCEPTIONS
+        or name in _KEYWORDS
     )
 
 

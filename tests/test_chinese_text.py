@@ -95,8 +95,8 @@ def test_no_latin_words_in_the_catalog(messages):
 
 def test_chinese_messages_use_chinese_punctuation(messages):
     found = [
-        f"{text.lesson or '--'} {text.where[:70]}: «{context}»"
-        for text in messages
-        for context in text.ascii_punctuation(text.text)
+        f"{shown.lesson or '--'} {shown.where[:70]}: «{context}»"
+        for shown in messages
+        for context in text.ascii_punctuation(shown.text)
     ]
     assert found == [], listed(found)

@@ -53,6 +53,9 @@ def test_latin_words_find_english_and_identifiers_on_a_label():
     assert text.latin_words("Agg（matplotlib）与 Bresenham 算法") == []
     assert text.latin_words("Wu 直线与 Jacobi 迭代") == ["Wu", "Jacobi"]
     assert text.latin_words("3 × 3 的窗口") == []
+    # A gloss follows a Chinese term, or a numbered term's number; not any number.
+    assert text.latin_words("任务 1（Task 1）、泼溅（splat）") == []
+    assert text.latin_words("步长 0.5（step）") == ["step"]
 
 
 def test_loose_text_allows_code_but_not_a_bare_value_or_a_name():
@@ -62,6 +65,10 @@ def test_loose_text_allows_code_but_not_a_bare_value_or_a_name():
     assert text.latin_words(loose, loose=False) != []
     assert text.latin_words("wavefront：逐位相同：True", loose=True) == ["wavefront", "True"]
     assert text.latin_words("用 Jacobi 迭代", loose=True, names=names) == ["Jacobi"]
+    # A keyword argument's value typed against its name is code; the same value shown is not.
+    assert text.latin_words("请传入 force=True", loose=True) == []
+    assert text.latin_words("应为 True 或 False", loose=True) == ["True", "False"]
+    assert text.latin_words("请传入 force=True") == ["True"]
 
 
 def test_backticks_printed_as_they_are_are_found():

@@ -15,10 +15,12 @@ their terms, and this module their words and their punctuation (issue 36):
     as Chinese graphics texts write them: Bresenham 算法, Sobel 算子);
   - inside LaTeX, a code span, a format field, a URL, a path or a file name;
   - a gloss: Latin inside full-width parentheses right after a Chinese character,
-    «泼溅（splat）»;
+    «泼溅（splat）», or after a numbered Chinese term's number, «任务 1（Task 1）»;
   - code, in a printed line or a catalog message (``loose``), where no code span can mark
     it: a word with ``_``, ``.``, ``::``, ``'``-quoted, with digits, in CamelCase, followed
-    by ``[``, a Python exception's name or keyword (``for``, ``return``), or a name of :func:`code_names` (the functions and
+    by ``[``, a keyword argument's value written against its ``name=`` (``force=True``:
+    the call as it is typed, not a value shown), a Python exception's name or keyword
+    (``for``, ``return``), or a name of :func:`code_names` (the functions and
     classes the course and its lessons define, Python's built-ins; in a catalog message
     the parameters' names too). Never in a figure or a widget, whose texts are labels,
     and never a bare ``True``, ``False`` or ``None``: a printed value is a word.
@@ -93,6 +95,9 @@ NAMES = (
     "JupyterLab",
     "JupyterHub",
     "JSON",
+    "CSV",
+    "Markdown",
+    "Voila",
 )
 
 CJK = "\u3400-\u4dbf\u4e00-\u9fff\uf900-\ufaff"
@@ -115,7 +120,8 @@ _SPANS = re.compile(
 # Numbers, with an exponent or as a size 3x3: their letters are not words.
 _NUMBER = re.compile(r"(?<![A-Za-zÀ-ÖØ-öø-ɏ0-9_.])\d+(?:\.\d+)?(?:[eE][-+−]?\d+|x\d+)?")
 # A gloss: Latin in full-width parentheses right after a Chinese character.
-_GLOSS = re.compile(f"(?<=[{CJK}])（[^（）{CJK}]+）")
+# A numbered term's gloss follows its number: 任务 1（Task 1）.
+_GLOSS = re.compile(f"(?<=[{CJK}])(?: ?[0-9]+)?（[^（）{CJK}]+）")
 # Code in plain text: 'quoted', dotted.names, cv::Point, names with _ or digits.
 _QUOTED = re.compile(r"'[^'\s]+'|\"[^\"\s]+\"")
 # A math symbol: a letter and its digits (P0, x1), a differential (dx), a component (Gx).
@@ -147,6 +153,8 @@ def latin_words(
     []
     >>> latin_words("泼溅（splat）的 `count` 与 $B_{i,n}(t)$，{name} 在 x1 处")
     []
+    >>> latin_words("任务 1（Task 1）与任务 2，步长 0.5（step）")
+    ['step']
     >>> latin_words("Bresenham 算法画 3 × 3 的网格，de Casteljau 算法与 Jacobi 迭代")
     ['Jacobi']
     >>> latin_words("规则 'top-left'，按 count 加权：True")
@@ -155,6 +163,8 @@ def latin_words(
     []
     >>> latin_words("wavefront：与循环版逐位相同：True", loose=True)
     ['wavefront', 'True']
+    >>> latin_words("请传入 force=True；应为 True", loose=True)
+    ['True']
     >>> latin_words("讲义里的 `float t` 会漂移", loose=True, markup=False)
     ['`float t`']
     """
@@ -187,6 +197,7 @@ def _looks_like_code(name: str, text: str, word: re.Match) -> bool:
         "_" in name
         or text[word.end() : word.end() + 1] == "["
         or before.endswith("_")
+        or re.search(r"\w=$", before) is not None  # a keyword argument: force=True
         or re.search(r"\d", name) is not None
         or re.search(r"[a-z][A-Z]", name) is not None
         or name in _EXCEPTIONS

@@ -306,11 +306,11 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
     polyline = flatten(control, 0.25, max_step=1.0)
     drawings = [
         (
-            "step 0.001 (the handouts)",
+            _("step 0.001 (the handouts)"),
             nearest_pixels(de_casteljau(control, uniform_parameters(0.001, "float32"))),
         ),
         (
-            "step 0.0001",
+            _("step 0.0001"),
             nearest_pixels(de_casteljau(control, uniform_parameters(0.0001, "float32"))),
         ),
         ("flatten(max_step=1)", nearest_pixels(polyline)),

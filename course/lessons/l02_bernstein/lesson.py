@@ -157,6 +157,10 @@ def print_comb_timing(m: int, calls: int, seconds: float) -> None:
     )
 
 
+#: Python's message for an int too large for a float (``float(10**400)``).
+INT_TOO_LARGE = N_("int too large to convert to float")
+
+
 def print_binomial_as_float(m: int, value: float | OverflowError) -> None:
     """Print C(m, m // 2) as a float, or the ``OverflowError`` converting it raised.
 
@@ -166,9 +170,15 @@ def print_binomial_as_float(m: int, value: float | OverflowError) -> None:
     C(1029, 514) as a float: 1.430e+308
     >>> print_binomial_as_float(1030, OverflowError("int too large to convert to float"))
     C(1030, 515) as a float: int too large to convert to float
+    >>> from course.i18n import language
+    >>> with language("zh-CN"):
+    ...     print_binomial_as_float(1030, OverflowError("int too large to convert to float"))
+    C(1030, 515) 转成浮点数：整数太大，无法转成浮点数（OverflowError）
     """
     if isinstance(value, OverflowError):
-        line = _("C({m}, {k}) as a float: {error}").format(m=m, k=m // 2, error=value)
+        # Python's own message is English: the known one is shown in the current language.
+        error = _(INT_TOO_LARGE) if str(value) == INT_TOO_LARGE else value
+        line = _("C({m}, {k}) as a float: {error}").format(m=m, k=m // 2, error=error)
     else:
         line = _("C({m}, {k}) as a float: {value:.3e}").format(m=m, k=m // 2, value=value)
     print(line)

@@ -1,4 +1,4 @@
-""""Going further" lists the library's source; outside English, without its English prose.
+"""The library's source as "Going further" lists it: outside English, without its English prose.
 
 The docstrings and comments of the library are English: a Chinese listing leaves them out
 (``course.classroom.source.without_comments``) and keeps the code itself, token for token.

@@ -30,6 +30,8 @@ from course.widgets.base import SliderApp
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
 __all__ = [
+    "BORDER_LABELS",
+    "BORDER_NAMES",
     "KERNELS",
     "KernelApp",
     "RepeatedBlurApp",
@@ -39,6 +41,21 @@ __all__ = [
     "right_column_mean",
 ]
 
+#: The border rules of :mod:`course.filters` as a figure or a widget names them: in English
+#: the value a student passes (``border="replicate"``), in Chinese the rule's Chinese name.
+BORDER_NAMES = {
+    "handout": N_("handout"),
+    "zero": N_("zero"),
+    "replicate": N_("replicate"),
+    "reflect": N_("reflect"),
+}
+#: The same in a title, where English quotes the value as code: ``'replicate'``.
+BORDER_LABELS = {
+    "handout": N_("'handout'"),
+    "zero": N_("'zero'"),
+    "replicate": N_("'replicate'"),
+    "reflect": N_("'reflect'"),
+}
 #: The presets of :class:`KernelApp`, as the student would type them.
 KERNELS = {
     "box": "1/9 1/9 1/9; 1/9 1/9 1/9; 1/9 1/9 1/9",
@@ -259,7 +276,7 @@ class RepeatedBlurApp(SliderApp):
             self.wholes[border] = top.imshow(
                 self.image, **{**style, "interpolation": "antialiased"}
             )
-            self.titles[border] = top.set_title(border, fontsize=9)
+            self.titles[border] = top.set_title(_(BORDER_NAMES[border]), fontsize=9)
             bottom = bare_axes(self.figure.add_subplot(grid[1, column]))
             self.crops[border] = bottom.imshow(self._corner_of(self.image), **style)
         self.update()
@@ -299,7 +316,7 @@ class RepeatedBlurApp(SliderApp):
                 frame = _("dark frame: {depth} px deep").format(depth=depth)
             self.titles[border].set_text(
                 _("{border}, {repeats} blurs\n{edge}").format(
-                    border=repr(border), repeats=repeats, edge=edge
+                    border=_(BORDER_LABELS[border]), repeats=repeats, edge=edge
                 )
                 + "\n"
                 + frame
@@ -360,7 +377,9 @@ class KernelApp(SliderApp):
                 value=KERNELS[kernel], description=_("kernel"), continuous_update=False
             ),
             "border": widgets.Dropdown(
-                options=filters.BORDERS, value=border, description=_("border")
+                options=[(_(BORDER_NAMES[name]), name) for name in filters.BORDERS],
+                value=border,
+                description=_("border"),
             ),
         }
         height, width = self.image.shape
@@ -480,4 +499,6 @@ class KernelApp(SliderApp):
             else _("gray 0 to 1, clipped")
         )
         self.titles["filtered"].set_text(_("filtered ({scale})").format(scale=scale))
-        self.titles["corner"].set_text(_("the orange window, {border}").format(border=repr(border)))
+        self.titles["corner"].set_text(
+            _("the orange window, {border}").format(border=_(BORDER_LABELS[border]))
+        )

@@ -86,9 +86,10 @@ def print_uniform_filter(mode: str, border: str, same: bool) -> None:
     >>> print_uniform_filter("mirror", "reflect", True)
     uniform_filter   mirror against 'reflect': equal below 1e-12: yes
     """
+    # {pad} right-aligns the mode, so that a translation can quote it as code: mode='mirror'.
     print(
-        _("uniform_filter {mode:>8} against '{border}': equal below 1e-12: {same}").format(
-            mode=mode, border=border, same=yes_no(same)
+        _("uniform_filter {pad}{mode} against '{border}': equal below 1e-12: {same}").format(
+            pad=" " * max(0, 8 - len(mode)), mode=mode, border=border, same=yes_no(same)
         )
     )
 

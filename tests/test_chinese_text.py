@@ -53,6 +53,8 @@ def test_latin_words_find_english_and_identifiers_on_a_label():
     assert text.latin_words("Agg（matplotlib）与 Bresenham 算法") == []
     assert text.latin_words("Wu 直线与 Jacobi 迭代") == ["Wu", "Jacobi"]
     assert text.latin_words("3 × 3 的窗口") == []
+    # A triangle by its vertices is a symbol, as P0 is; a repeated letter is not a vertex name.
+    assert text.latin_words("只属于 ABC，公共边 AC，AAB") == ["AAB"]
     # A gloss follows a Chinese term, or a numbered term's number; not any number.
     assert text.latin_words("任务 1（Task 1）、泼溅（splat）") == []
     assert text.latin_words("步长 0.5（step）") == ["step"]

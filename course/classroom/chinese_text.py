@@ -8,7 +8,8 @@ their terms, and this module their words and their punctuation (issue 36):
   as one of these, and nowhere else:
 
   - a math symbol: one letter, with digits after it (``t``, ``x``, ``P0``, ``B(t)``), a
-    differential (``dx``) or a component (``Gx``);
+    differential (``dx``), a component (``Gx``), or a polygon or an edge named by its
+    vertices (``ABC``, ``AC``: capitals A to H, none repeated);
   - an equation's or a call's name: a word right before ``=`` or ``(`` (``dx = 0.5``);
   - a unit: :data:`UNITS`; a name of :data:`ACRONYMS` (the handouts' courses and the
     software the course runs on); a proper name of :data:`NAMES` (an algorithm's author,
@@ -98,6 +99,7 @@ NAMES = (
     "CSV",
     "Markdown",
     "Voila",
+    "Pineda",
 )
 
 CJK = "\u3400-\u4dbf\u4e00-\u9fff\uf900-\ufaff"
@@ -125,7 +127,8 @@ _GLOSS = re.compile(f"(?<=[{CJK}])(?: ?[0-9]+)?（[^（）{CJK}]+）")
 # Code in plain text: 'quoted', dotted.names, cv::Point, names with _ or digits.
 _QUOTED = re.compile(r"'[^'\s]+'|\"[^\"\s]+\"")
 # A math symbol: a letter and its digits (P0, x1), a differential (dx), a component (Gx).
-_SYMBOL = re.compile(r"[A-Za-z]\d*|d[xyt]|[A-Z][xy]")
+# A polygon or an edge by its vertices' names (ABC, ACD, AC): capitals A to H, each once.
+_SYMBOL = re.compile(r"[A-Za-z]\d*|d[xyt]|[A-Z][xy]|(?!([A-H])[A-H]*\1)[A-H]{2,4}")
 _EXCEPTIONS = frozenset(
     name
     for name, value in vars(builtins).items()

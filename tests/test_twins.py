@@ -355,3 +355,14 @@ def test_a_chinese_lesson_reads_in_chinese_at_least_90_percent(twin_path):
         "".join(cell["source"]) for cell in notebook["cells"] if cell["cell_type"] == "markdown"
     )
     assert chinese_share(markdown) >= 0.9, twin_path.stem
+
+
+def test_a_translation_may_mark_more_as_code_or_math_but_loses_nothing():
+    from course.classroom.twins import translation_problems
+
+    english = "Move P0 with `addColor` to $t = 1$; see [the handout](handout.md)."
+    chinese = "用 `addColor` 把 $P_0$ 移到 $t = 1$，顶点 $A$ 同理；见[讲义](handout.md)。"
+    assert translation_problems("c", english, chinese) == []
+    assert translation_problems("c", english, chinese.replace("`addColor`", "addColor")) != []
+    assert translation_problems("c", english, chinese + "[另见](other.md)") != []
+

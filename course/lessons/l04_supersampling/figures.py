@@ -216,7 +216,10 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
         )
     axes.plot([x], [y], "X", color=VERMILLION, ms=10)
     value = float(bilinear(image, x, y))
-    terms = " + ".join(f"{w:.2f} x {image[r, c]:g}" for (c, r), w in weights.items())
+    terms = " + ".join(
+        _("{weight:.2f} x {value:g}").format(weight=w, value=image[r, c])
+        for (c, r), w in weights.items()
+    )
     owners = _(", ").join(f"({c}, {r})" for c, r in weights)
     caption = _("({x:g}, {y:g}) reads {value:.4f}: {terms}, the weights of pixels {owners}").format(
         x=x, y=y, value=value, terms=terms, owners=owners

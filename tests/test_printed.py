@@ -325,7 +325,7 @@ CASES = [
     pytest.param(
         l07.print_largest_magnitude,
         (np.hypot(4, 2),),  # the window [[0 0 0] [0 0 1] [1 1 1]]: gx 3 + 1 = 4, gy 2
-        "largest 4.4721 = sqrt(20) 4.4721, on",
+        "largest 4.4721 (sqrt(20) = 4.4721), on this window:",
         id="07-largest",
     ),
     pytest.param(

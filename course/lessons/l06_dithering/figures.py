@@ -145,7 +145,7 @@ def mask_figure(size: int = 64, seed: int = 0) -> Still:
     --------
     >>> mask_figure(32)  # doctest: +NORMALIZE_WHITESPACE
     share of the power below 0.125 cycles per pixel: mask 1.67e-05, white noise 0.042
-    (2.5e+03 times less)
+    (about 2500 times less)
     """
     mask = blue_noise_mask(size, np.random.default_rng(seed))
     white = np.random.default_rng(seed + 1).random((size, size))
@@ -175,10 +175,11 @@ def mask_figure(size: int = 64, seed: int = 0) -> Still:
     chart.set_ylim(top=chart.get_ylim()[1] * 1.3)  # room for the legend above the lines
     chart.legend(fontsize=7, loc="upper left")
     blue_low, white_low = low_frequency_fraction(mask), low_frequency_fraction(white)
+    # the ratio to two significant digits, written out: 3900, not 3.9e+03
     caption = _(
         "share of the power below 0.125 cycles per pixel: mask {mask:.2e}, white noise "
-        "{white:.3f} ({ratio:.1e} times less)"
-    ).format(mask=blue_low, white=white_low, ratio=white_low / blue_low)
+        "{white:.3f} (about {ratio:g} times less)"
+    ).format(mask=blue_low, white=white_low, ratio=float(f"{white_low / blue_low:.2g}"))
     return Still.of(figure, caption)
 
 

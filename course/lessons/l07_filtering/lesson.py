@@ -146,10 +146,10 @@ def print_largest_magnitude(largest: float) -> None:
     Examples
     --------
     >>> print_largest_magnitude(20**0.5)
-    largest 4.4721 = sqrt(20) 4.4721, on
+    largest 4.4721 (sqrt(20) = 4.4721), on this window:
     """
     print(
-        _("largest {largest:.4f} = sqrt(20) {root:.4f}, on").format(
+        _("largest {largest:.4f} (sqrt(20) = {root:.4f}), on this window:").format(
             largest=largest, root=np.sqrt(20)
         )
     )

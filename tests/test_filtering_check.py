@@ -289,9 +289,14 @@ def in_chinese(monkeypatch):
 def test_blur_and_edge_report_in_chinese(in_chinese):
     blurred = str(check.blur(lambda image: image))
     assert blurred.startswith("未通过 blur：第 1 个用例未通过\n  输入：image=")
-    assert "个像素不同；第一个错误的像素是 (x, y) = (0, 0)，在边界上。但图像内部也有像素不对" in blurred
+    assert (
+        "个像素不同；第一个错误的像素是 (x, y) = (0, 0)，在边界上。但图像内部也有像素不对"
+        in blurred
+    )
     border = str(check.blur(lambda image: box_blur(image, "zero")))
-    assert "(0, 0)，在边界上（9 个相邻像素中有 4 个在图像内），而图像内部的每个像素都是对的" in border
+    assert (
+        "(0, 0)，在边界上（9 个相邻像素中有 4 个在图像内），而图像内部的每个像素都是对的" in border
+    )
     edge = str(check.edge(lambda image: sobel_magnitude(image, "zero")))
     assert "这是一种典型错误（零填充）。" in edge and "Hint" not in edge
     nan = str(check.blur(nan_padded))

@@ -517,7 +517,9 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
     backwards = check.draw_line(
         precomputed(lambda p0, p1: line(p0, p1)[::-1].tolist(), check._LINE_CASES)
     )
-    assert str(backwards).startswith("未通过 draw_line：第 1 个用例未通过\n  输入：p0=(2, 3), p1=(9, 5)")
+    assert str(backwards).startswith(
+        "未通过 draw_line：第 1 个用例未通过\n  输入：p0=(2, 3), p1=(9, 5)"
+    )
     assert "这是一种典型错误（画反了方向）。你的像素是从 p1 画到 p0 的" in str(backwards)
     assert backwards.mistake == "drawn backwards"  # the name stays an identifier
     staircase = str(check.draw_line(separate_steps))

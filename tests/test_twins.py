@@ -365,4 +365,3 @@ def test_a_translation_may_mark_more_as_code_or_math_but_loses_nothing():
     assert translation_problems("c", english, chinese) == []
     assert translation_problems("c", english, chinese.replace("`addColor`", "addColor")) != []
     assert translation_problems("c", english, chinese + "[另见](other.md)") != []
-

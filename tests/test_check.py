@@ -191,7 +191,7 @@ def test_a_report_in_chinese_keeps_no_english_sentence_of_its_checker(checker, a
 def test_the_sandbox_speaks_chinese_too():
     course.use_language("zh-CN")
     problem = sandbox.arity_problem(lambda p: p, ("control_points", "t"))
-    assert problem == "应有 2 个参数，(control_points, t)；你的函数接受 1 个，(p)"
+    assert problem == "应有 2 个参数（control_points, t）；你的函数接受 1 个（p）"
     course.use_language("en")
     assert sandbox.arity_problem(lambda p: p, ("control_points", "t")) == (
         "expected 2 parameters, (control_points, t); your function takes 1, (p)"

@@ -39,7 +39,6 @@ __all__ = [
 
 #: Most numbers of a wrong answer the report reads in full; past it, only sizes are compared.
 _LARGEST_ANSWER = 2**20
-
 #: Most numbers of an image of three or more axes shown in full (a 2 x 4 colour image).
 _LARGEST_SHOWN_IMAGE = 24
 
@@ -78,13 +77,12 @@ def _summary(value: np.ndarray) -> str:
     """An array by its shape, dtype and range (the range only when it is real and finite)."""
     if value.size and value.dtype.kind in "biuf" and np.isfinite(value).all():
         low, high = value.min(), value.max()
-        if low == high:
-            return _("an array of shape {shape}, dtype {dtype}, all {value:.6g}").format(
-                shape=value.shape, dtype=value.dtype, value=low
-            )
-        return _("an array of shape {shape}, dtype {dtype}, values {low:.6g} to {high:.6g}").format(
-            shape=value.shape, dtype=value.dtype, low=low, high=high
+        message = (
+            _("an array of shape {shape}, dtype {dtype}, all {low:.6g}")
+            if low == high
+            else _("an array of shape {shape}, dtype {dtype}, values {low:.6g} to {high:.6g}")
         )
+        return message.format(shape=value.shape, dtype=value.dtype, low=low, high=high)
     return _("an array of shape {shape}, dtype {dtype}").format(
         shape=value.shape, dtype=value.dtype
     )
@@ -300,9 +298,7 @@ def type_name(value: Any) -> str:
     >>> type_name(2.5), type_name(plain(iter([1])))
     ('float', 'list_iterator')
     """
-    if isinstance(value, (_Unread, Opaque)):
-        return value.kind
-    return type(value).__name__
+    return value.kind if isinstance(value, (_Unread, Opaque)) else type(value).__name__
 
 
 #: How deep :func:`plain` looks into lists and tuples.

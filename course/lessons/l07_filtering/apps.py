@@ -26,12 +26,11 @@ from matplotlib.patches import Rectangle
 from course import filters, images, limits
 from course._validate import as_choice, as_float_array, as_image, as_int, as_option, describe
 from course.i18n import N_, _
+from course.lessons.l07_filtering.border_names import BORDER_LABELS, BORDER_NAMES
 from course.widgets.base import SliderApp
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
 __all__ = [
-    "BORDER_LABELS",
-    "BORDER_NAMES",
     "KERNELS",
     "KernelApp",
     "RepeatedBlurApp",
@@ -41,21 +40,6 @@ __all__ = [
     "right_column_mean",
 ]
 
-#: The border rules of :mod:`course.filters` as a figure or a widget names them: in English
-#: the value a student passes (``border="replicate"``), in Chinese the rule's Chinese name.
-BORDER_NAMES = {
-    "handout": N_("handout"),
-    "zero": N_("zero"),
-    "replicate": N_("replicate"),
-    "reflect": N_("reflect"),
-}
-#: The same in a title, where English quotes the value as code: ``'replicate'``.
-BORDER_LABELS = {
-    "handout": N_("'handout'"),
-    "zero": N_("'zero'"),
-    "replicate": N_("'replicate'"),
-    "reflect": N_("'reflect'"),
-}
 #: The presets of :class:`KernelApp`, as the student would type them.
 KERNELS = {
     "box": "1/9 1/9 1/9; 1/9 1/9 1/9; 1/9 1/9 1/9",

@@ -19,11 +19,10 @@ from course import filters, images
 from course._validate import as_int
 from course.i18n import _
 from course.lessons.l07_filtering.apps import (
-    BORDER_LABELS,
-    BORDER_NAMES,
     blurred,
     right_column_mean,
 )
+from course.lessons.l07_filtering.border_names import BORDER_LABELS, BORDER_NAMES
 from course.widgets.picture import Still, pixel_figure
 
 __all__ = [

@@ -61,6 +61,7 @@ __all__ = [
     "message_language",
     "ngettext",
     "use_language",
+    "yes_no",
 ]
 
 UNCHECKED = True  # see the module docstring
@@ -265,6 +266,28 @@ def N_(message: str) -> str:
     'RMS error'
     """
     return message
+
+
+#: What :func:`yes_no` shows, marked for the catalog (是 / 否 in Chinese).
+YES = N_("yes")
+NO = N_("no")
+
+
+def yes_no(value: object) -> str:
+    """A truth value as a student reads it: "yes" or "no" in the current language.
+
+    For a printed line that tells whether something holds ("equal to the loop bit for bit:
+    yes"), where Python's ``True`` / ``False`` would be English in a Chinese lesson.
+
+    Examples
+    --------
+    >>> yes_no(True), yes_no(1 > 2)
+    ('yes', 'no')
+    >>> with message_language("zh-CN"):
+    ...     yes_no(True), yes_no(False)
+    ('是', '否')
+    """
+    return _(YES) if value else _(NO)
 
 
 def cjk_font_path() -> Path:

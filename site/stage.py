@@ -148,7 +148,7 @@ def student_cells(cells: list[dict], language: str = DEFAULT_LANGUAGE) -> list[d
         elif cell["cell_type"] == "code" and without_source_import(cell) is None:
             continue
         elif cell["cell_type"] == "code" and SOLUTION_TAG in tags:
-            cell = dict(cell, source=exercise_stub(text(cell["source"])), outputs=[])
+            cell = dict(cell, source=exercise_stub(text(cell["source"]), language), outputs=[])
             cell["execution_count"] = None
             cell["metadata"] = dict(
                 cell["metadata"], tags=[EXERCISE_TAG if t == SOLUTION_TAG else t for t in tags]

@@ -7,6 +7,7 @@ from matplotlib.figure import Figure
 from course.antialias import render
 from course.antialias.coverage import reference
 from course.antialias.curve_quality import intensity_along
+from course.i18n import language
 from course.images import SEED_000_CUBIC
 from course.lessons.l05_antialiasing.apps import StepApp, ZoomApp, label_of
 from course.lessons.l05_antialiasing.zoom_panel import CurveWalk, ZoomPanel, zoom_figure
@@ -134,6 +135,23 @@ def test_step_app_shows_gaps_saturation_and_the_fix():
     np.testing.assert_array_equal(
         app.image, render(CURVE, SHAPE, "nearest_truncate", step=0.001, weighting="arc_length")
     )
+
+
+def test_the_step_apps_weighting_toggle_is_labelled_and_says_its_options_in_chinese():
+    app = StepApp(CURVE, SHAPE)
+    toggle = app.controls["weighting"]
+    assert toggle.description == "weighting"
+    assert list(toggle.options) == [("count", "count"), ("arc length", "arc_length")]
+    with language("zh-CN"):
+        chinese = StepApp(CURVE, SHAPE)
+        chinese.controls["weighting"].value = "arc_length"
+        chinese.refresh()
+        title = chinese.profile_title.get_text()
+    toggle = chinese.controls["weighting"]
+    # The names the lesson's prose gives them, and the values the library takes.
+    assert toggle.description == "加权方式"
+    assert list(toggle.options) == [("按计数", "count"), ("按弧长", "arc_length")]
+    assert "按弧长" in title and "arc" not in title
 
 
 def test_zoom_figure_has_one_panel_per_image(images):

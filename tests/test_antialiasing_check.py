@@ -6,6 +6,7 @@ import graded_draws
 import numpy as np
 import pytest
 
+from course.i18n import language
 from course.lessons.l05_antialiasing import check, mistakes
 from course.lessons.l05_antialiasing.splat_tables import splat_table
 
@@ -324,7 +325,7 @@ def test_the_difference_panel_numbers_each_pixel_as_the_report_does(monkeypatch)
     result = check.splat(corners_at_integers)
     # Case 1, (2.5, 1.5): pixel (2, 1) should get 1 and gets 0.25, the one pixel 0.75 short.
     assert "first wrong pixel: (2, 1) should get 1, yours gets 0.25" in result.message
-    (difference,) = [a for a in drawn[-1].axes if a.get_title() == "yours minus expected"]
+    (difference,) = [a for a in drawn[-1].axes if a.get_title() == "your result minus expected"]
     (image,) = difference.get_images()
     values = image.get_array()
     row, column = np.unravel_index(np.argmin(values), values.shape)
@@ -435,3 +436,11 @@ def test_the_reports_addcolor_taken_at_its_word_is_named(student, mistake, said)
 def test_right_splats_written_other_ways_pass(student):
     # Bilinear weights add up to 1: normalising them changes nothing.
     assert check.splat(student)
+
+
+def test_a_splat_in_words_joins_its_pixels_as_the_language_does():
+    table = np.array([[2, 1, 0.75], [3, 1, 0.25]])
+    assert check._show_splat(table) == "pixel (2, 1) gets 0.75, pixel (3, 1) gets 0.25"
+    with language("zh-CN"):
+        chinese = check._show_splat(table)
+    assert chinese == "像素 (2, 1) 得 0.75、像素 (3, 1) 得 0.25"

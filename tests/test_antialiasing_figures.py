@@ -6,8 +6,10 @@ from drawn_figures import figures_drawn
 from matplotlib.patches import Rectangle
 
 from course.antialias import arc_length_step
+from course.i18n import language
 from course.images import SEED_000_CUBIC
 from course.lessons.l05_antialiasing import figures, measurements
+from course.lessons.printed import display_width
 
 
 @pytest.mark.parametrize("figure", [figures.pixel_area_figure, figures.splat_figure])
@@ -36,3 +38,18 @@ def test_the_rmse_on_its_log_axis_is_dots_not_bars(monkeypatch):
     assert [patch for patch in error_axes.patches if isinstance(patch, Rectangle)] == []
     dots = [line for line in error_axes.lines if line.get_marker() not in (None, "None", "")]
     assert sorted(len(line.get_xdata()) for line in dots) == [2, 7, 7]
+
+
+def test_the_tables_say_their_columns_in_chinese_and_keep_them_lined_up():
+    with language("zh-CN"):
+        table = measurements.variants_table().splitlines()
+        study = measurements.step_study(steps=(0.001,)).splitlines()
+    assert "RMSE" not in "\n".join(table) and "CV" not in "\n".join(table + study)
+    assert "均方根误差" in table[2] and "变异系数" in study[0]
+    # Every row of numbers ends where the headings above it end.
+    ends = {display_width(line) for line in table[1:]}
+    assert len(ends) == 1, table
+    assert display_width(study[0]) == display_width(study[1]), study
+    # The rows name the plain loops and the weightings by the lesson's terms.
+    assert table[3].startswith("朴素循环") and "所在的像素" in table[3]
+    assert "按计数" in study[1] and "按弧长" in study[1]

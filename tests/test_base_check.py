@@ -282,7 +282,7 @@ def test_none_and_stubs_are_told_apart():
         ...
 
     assert str(bounded(forgot)).splitlines()[0] == (
-        "FAIL double: case 1 returned None: did you forget `return`?"
+        "FAIL double: case 1 returned None: did you forget the return statement?"
     )
     assert str(bounded(stub)).splitlines() == [
         "FAIL double: not written yet: your function returns nothing",
@@ -294,6 +294,13 @@ def test_none_and_stubs_are_told_apart():
 
     assert str(bounded(raises)).splitlines()[0] == (
         "FAIL double: not written yet: your function raised NotImplementedError: your code here"
+    )
+
+    def says_nothing(x):
+        raise NotImplementedError
+
+    assert str(bounded(says_nothing)).splitlines()[0] == (
+        "FAIL double: not written yet: your function raised NotImplementedError"
     )
 
 
@@ -466,9 +473,9 @@ def test_hints_and_a_pass_in_chinese_and_english_after(monkeypatch):
         course.use_language("en")
     # Chinese steps join without a space after the full stop.
     assert text.startswith("dithering_ordered 的提示：看看输出的大小")
-    assert "以及比较本身。每个输入像素变成一个 3 x 3 单元" in text
+    assert "以及比较本身。每个输入像素变成一个 3 × 3 的单元" in text
     assert passed == "通过 double：全部 3 个用例通过"
-    assert "用例 1 不对" in wrong and "  预期形状 ()，你的形状 (1,)" in wrong
+    assert "第 1 个用例未通过" in wrong and "  期望的形状是 ()，你的结果是 (1,)" in wrong
     assert str(run(lambda x: 2 * x)) == "PASS double: all 3 cases pass"
 
 

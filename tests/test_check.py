@@ -191,7 +191,7 @@ def test_a_report_in_chinese_keeps_no_english_sentence_of_its_checker(checker, a
 def test_the_sandbox_speaks_chinese_too():
     course.use_language("zh-CN")
     problem = sandbox.arity_problem(lambda p: p, ("control_points", "t"))
-    assert problem == "应有 2 个参数，(control_points, t)；你的函数接受 1 个，(p)"
+    assert problem == "应有 2 个参数（control_points, t）；你的函数接受 1 个（p）"
     course.use_language("en")
     assert sandbox.arity_problem(lambda p: p, ("control_points", "t")) == (
         "expected 2 parameters, (control_points, t); your function takes 1, (p)"
@@ -261,7 +261,7 @@ def test_a_pixel_picture_frames_a_small_case_whole_and_a_large_one_at_its_first_
 def test_an_image_pictures_difference_panel_puts_its_ticks_on_pixel_corners():
     picture = np.zeros((4, 6))
     figure = mock_figure_of(pictures.image_picture, picture, picture)
-    difference = next(a for a in figure.axes if a.get_title() == "yours minus expected")
+    difference = next(a for a in figure.axes if a.get_title() == "your result minus expected")
     assert tuple(difference.images[0].get_extent()) == (0, 6, 4, 0)
     assert list(difference.get_xticks()) == [0, 2, 4, 6]
     assert list(difference.get_yticks()) == [0, 1, 2, 3, 4]

@@ -142,8 +142,10 @@ def test_the_course_map_in_chinese_shows_chinese_lessons_handouts_and_guide():
     assert all(len(CHINESE.findall(row)) > 20 for row in rows)
     assert outcome == "通过求解泊松方程，把一幅图像无缝地贴进另一幅"
     assert key.startswith("| 课程里的称呼 |") and "| GAMES101 作业报告 |" in key
-    # The handouts' own titles stay as the student holds them, in both languages.
-    assert "| HW4:绘制贝塞尔曲线 + 线性插值反走样 |" in key and "| Lab01 Report |" in key
+    # The handouts' own titles stay as the student holds them: a Chinese one as it is, an
+    # English one glossing its Chinese translation (issue 36).
+    assert "| HW4:绘制贝塞尔曲线 + 线性插值反走样 |" in key
+    assert "| 实验 01 报告（Lab01 Report） |" in key
     assert title.startswith("作业 4 的题目：GAMES101 作业报告在“题目”下引用")
 
 

@@ -520,7 +520,8 @@ def painted_into_a_copy(control_points, window):
 
 
 #: The drawing loop's mistakes a function answering with their pixels cannot make: green
-#: added, a colour, a copy, and t accumulated (recognised by what the loop paints on a probe curve too).
+#: added, a colour, a copy, and t accumulated (recognised by what the loop paints on a probe
+#: curve too).
 WRITTEN_BEZIER = {
     0: lambda: green_added,
     1: lambda: painted_in_8_bit_green,

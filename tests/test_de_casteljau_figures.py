@@ -6,6 +6,7 @@ import numpy as np
 from drawn_figures import figures_drawn
 
 from course.curves.handout_loops import HANDOUT_LOOPS, yellow_check
+from course.i18n import language
 from course.images import SEED_000_CUBIC
 from course.lessons.l01_de_casteljau import figures, pixel_views
 
@@ -39,6 +40,18 @@ def test_the_yellow_check_caption_counts_the_pixels_each_curve_paints_alone():
         )
         assert f"{np.count_nonzero(red & ~green)} pixels only red" in caption
         assert f"{np.count_nonzero(green & ~red)} only green" in caption
+
+
+def test_the_captions_name_the_handouts_by_their_chinese_roles_in_chinese():
+    # Issue 36: the loops' role names and the "; " joiner were English in the Chinese captions.
+    with language("zh-CN"):
+        end = figures.end_of_curve_figure(SEED_000_CUBIC).caption
+        report = figures.yellow_check_figure(SEED_000_CUBIC, "002").caption
+        assert HANDOUT_LOOPS["003"].label == "VS2022 作业报告"
+    assert "GAMES101 作业报告" in end and "VS2022 作业报告" in end
+    assert "; " not in end and "report" not in end, end
+    assert report.startswith("任意阶作业报告"), report
+    assert HANDOUT_LOOPS["003"].label == "the VS2022 report"
 
 
 def test_the_yellow_check_overview_shows_both_yellow_and_not_yellow_stretches(monkeypatch):

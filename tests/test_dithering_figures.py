@@ -43,6 +43,15 @@ def test_the_table_names_the_lab_methods_in_chinese_and_keeps_its_columns():
     assert columns(header) == len(english_header) == columns(row) - 1
 
 
+def test_a_patch_without_dots_has_an_endless_hole_said_in_the_tables_language():
+    empty = np.zeros((4, 4))
+    (english,) = figures.clumps_and_holes({"threshold": empty}, 0.1).splitlines()[1:]
+    with language("zh-CN"):
+        (chinese,) = figures.clumps_and_holes({"threshold": empty}, 0.1).splitlines()[1:]
+    assert english.endswith(" inf") and len(english) == 15 + 6 + 22 + 20
+    assert chinese.endswith(" 无穷大") and not re.search("[A-Za-z]", chinese)
+
+
 def test_the_slip_s_difference_title_counts_the_whole_image_not_the_window(monkeypatch):
     flat = np.full((40, 40), 0.3)
     changed = dither.error_diffusion(flat) != dither.error_diffusion_wraparound(flat)

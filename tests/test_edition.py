@@ -26,7 +26,14 @@ from course.classroom.edition import (
 from course.classroom.edition_folder import MANIFEST, write_student_edition
 from course.classroom.notebooks import notebooks
 from course.classroom.release import EXERCISE_POINTS, exercises, student_notebook
-from course.classroom.stubs import BEGIN_SOLUTION, END_SOLUTION, STUB_LINE, exercise_stub
+from course.classroom.stubs import (
+    BEGIN_SOLUTION,
+    END_SOLUTION,
+    STUB_LINE,
+    exercise_stub,
+    stub_line,
+)
+from course.classroom.twins import code_skeleton
 
 SOLUTION = '''import math
 
@@ -561,14 +568,51 @@ def test_the_chinese_student_edition_is_the_english_one_with_the_chinese_text():
                 source, first_code = source[len(LANGUAGE_LINES) :], False
             if ours["metadata"].get("nbgrader", {}).get("locked"):  # a check: its comments differ
                 source, theirs = uncommented(source), {"source": uncommented(theirs["source"])}
-            assert source == "".join(theirs["source"]), (chinese_book.path.name, ours["id"])
+            # The same code but the stubs' message, the docstrings and the comments.
+            source = code_skeleton(source.replace(stub_line("zh-CN"), STUB_LINE))
+            assert source == code_skeleton("".join(theirs["source"])), (
+                chinese_book.path.name,
+                ours["id"],
+            )
             assert ours["outputs"] == [] and ours["execution_count"] is None
-        stubs = sum(STUB_LINE in "".join(cell["source"]) for cell in chinese["cells"])
-        assert stubs == sum(STUB_LINE in "".join(cell["source"]) for cell in english["cells"])
+        chinese_text = json.dumps(chinese, ensure_ascii=False)
+        assert "your code here" not in chinese_text, chinese_book.path.name
+        stubs = chinese_text.count(stub_line("zh-CN"))
+        assert stubs == json.dumps(english).count(STUB_LINE)
         text = "".join(
             "".join(cell["source"]) for cell in chinese["cells"] if cell["cell_type"] == "markdown"
         )
         assert sum("\u4e00" <= letter <= "\u9fff" for letter in text) > 100, chinese_book.path.name
+
+
+def test_the_chinese_student_editions_stubs_and_the_checkers_report_of_them_are_chinese(
+    tmp_path,
+):
+    from course.classroom.notebooks import NOTEBOOKS, language_folder
+    from course.i18n import message_language
+    from course.lessons.l01_de_casteljau import check
+
+    lessons = tmp_path / "lessons"
+    lessons.mkdir()
+    name = "01_de_casteljau.ipynb"
+    (lessons / name).write_bytes((language_folder(NOTEBOOKS, "zh-CN") / name).read_bytes())
+    write_student_edition(tmp_path / "student", lessons)
+    text = (tmp_path / "student" / name).read_text(encoding="utf-8")
+    assert "your code here" not in text
+    answers = [
+        "".join(cell["source"])
+        for cell in json.loads(text)["cells"]
+        if "exercise" in cell["metadata"].get("tags", [])
+    ]
+    assert answers and all('raise NotImplementedError("在这里写你的代码")' in a for a in answers)
+    namespace = {}
+    exec(answers[0], namespace)  # next_level, as the student edition hands it out
+    with message_language("zh-CN"):
+        report = str(check.next_level(namespace["next_level"]))
+    said = "还没有写，你的函数抛出了 NotImplementedError，提示「在这里写你的代码」"
+    assert report.startswith(f"未通过 next_level：{said}\n"), report
+    english = str(check.next_level(namespace["next_level"]))  # English is the source's own
+    assert "not written yet: your function raised NotImplementedError: 在这里写你的代码" in english
 
 
 def test_the_chinese_published_source_shows_stubs_and_no_solution(tmp_path):
@@ -587,7 +631,7 @@ def test_the_chinese_published_source_shows_stubs_and_no_solution(tmp_path):
             if "solution" in before.get("metadata", {}).get("tags", []):
                 exercises += 1
                 answers |= site_solution_triples(site_text(before["source"]))
-                assert STUB_LINE in after["source"] and after["outputs"] == []
+                assert stub_line("zh-CN") in after["source"] and after["outputs"] == []
         assert not answers & shown_triples(page), name
     assert exercises > 0
     alt = json.loads((tmp_path / "site" / "alt.json").read_text(encoding="utf-8"))

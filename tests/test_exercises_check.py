@@ -290,9 +290,10 @@ def test_the_add_an_exercise_recipe_is_picked_up_everywhere(toy_chapter):
     assert mutation.mutants(found[0])
 
     po_path = toy_chapter.parent / "zh-CN" / "09_toy.po"  # the Chinese twin
-    assert twins.update_catalog(toy_chapter, po_path) == (1, 0)
+    assert twins.update_catalog(toy_chapter, po_path) == (2, 0)  # the markdown, the docstring
     twin, report = twins.build_twin(toy_chapter, twins.read_catalog(po_path))
-    assert report.untranslated == [notebook["cells"][0]["id"]]
+    ids = [cell["id"] for cell in notebook["cells"]]
+    assert report.untranslated == [ids[0], f"{ids[2]}:docstring"]
     assert twins.english_code(twin)[1] == "".join(notebook["cells"][2]["source"])
 
 

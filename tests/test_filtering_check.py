@@ -288,15 +288,20 @@ def in_chinese(monkeypatch):
 
 def test_blur_and_edge_report_in_chinese(in_chinese):
     blurred = str(check.blur(lambda image: image))
-    assert blurred.startswith("未通过 blur：用例 1 不对\n  输入：image=")
-    assert "第一个错误的像素是 (x, y) = (0, 0)，在边界上，但图像内部也有像素不对" in blurred
+    assert blurred.startswith("未通过 blur：第 1 个用例未通过\n  输入：image=")
+    assert (
+        "个像素不同；第一个错误的像素是 (x, y) = (0, 0)，在边界上。但图像内部也有像素不对"
+        in blurred
+    )
     border = str(check.blur(lambda image: box_blur(image, "zero")))
-    assert "(0, 0)，在边界上：9 个邻居中有 4 个在图像内，而图像内部的每个像素都是对的" in border
+    assert (
+        "(0, 0)，在边界上（9 个相邻像素中有 4 个在图像内），而图像内部的每个像素都是对的" in border
+    )
     edge = str(check.edge(lambda image: sobel_magnitude(image, "zero")))
-    assert "这是一个已知错误，零填充：" in edge and "Hint" not in edge
+    assert "这是一种典型错误（零填充）。" in edge and "Hint" not in edge
     nan = str(check.blur(nan_padded))
-    assert "用例 1：你的答案在 [0, 0] 处是 nan：每个值都必须是有限数" in nan
-    assert "输出像素 (x, y) = (0, 0) 是 NaN；它在边界上，9 个邻居中只有 4 个在图像内" in nan
+    assert "第 1 个用例：你的答案在 [0, 0] 处是 nan，而每个值都必须是有限数" in nan
+    assert "输出像素 (x, y) = (0, 0) 是 NaN。它在边界上，9 个相邻像素中只有 4 个在图像内" in nan
     colours = str(check.blur(lambda image: nan_padded(image, np.nanmean, pad_colours=True)))
     assert "输出像素 (x, y) = (0, 0) 的通道 0（红） 是 NaN，而且每个像素的红通道都是 NaN" in colours
 

@@ -7,6 +7,8 @@ import pytest
 from matplotlib.colors import to_rgb
 
 from course.curves.bezier_handouts import bresenham_curve, segments_report
+from course.i18n import language
+from course.lessons.l03_lines_and_triangles import figures as line_figures
 from course.lessons.l03_lines_and_triangles.apps import (
     OWNER_COLORS,
     CurveSegmentsApp,
@@ -15,6 +17,7 @@ from course.lessons.l03_lines_and_triangles.apps import (
 )
 from course.raster import line, line_4connected, triangle, triangle_coverage
 from course.raster.canvas import blank, paint
+from course.raster.triangles import EDGE_RULES
 from course.widgets.base import parse_points
 
 
@@ -215,3 +218,32 @@ def test_the_coverage_panel_has_a_key_for_black_grey_and_white():
     for patch, coverage in zip(key.get_patches(), (1.0, 0.5, 0.0), strict=True):
         shown = app.coverage.colormap(coverage)
         np.testing.assert_allclose(patch.get_facecolor(), shown)
+
+
+# --- issue 36: the rules and Wu's line said in the student's language ---------------
+
+
+def test_the_rule_toggle_names_the_rules_in_the_students_language_and_keeps_the_values():
+    with language("zh-CN"):
+        app = TriangleApp(rule="closed")
+        app.refresh()
+        toggle = app.controls["rule"]
+        assert toggle.options == (
+            ("左上规则", "top-left"),
+            ("闭合规则", "closed"),
+            ("开放规则", "open"),
+        )
+        assert app.value("rule") == "closed"
+        assert app.left.get_title().startswith("闭合规则：")
+    english = TriangleApp()
+    english.refresh()
+    assert english.controls["rule"].options == tuple((rule, rule) for rule in EDGE_RULES)
+    assert english.left.get_title().startswith("rule top-left: ")
+
+
+def test_wus_line_is_named_in_chinese_in_the_line_app():
+    with language("zh-CN"):
+        app = LineApp()
+        app.refresh()
+        assert app.panels["wu"].axes.get_title().startswith("吴小林直线：")
+    assert line_figures.rule_name("open") == "open"

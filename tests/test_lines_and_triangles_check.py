@@ -502,7 +502,7 @@ def test_a_float_t_loop_with_its_repeats_dropped_is_named_for_what_it_does(loop)
 def test_the_reports_loop_is_named_with_the_reports_test():
     result = check.draw_line(the_reports_loop)
     assert result.mistake == "the report's staircase"
-    assert "`if (err2 > -dy) ... else ...`" in str(result)
+    assert "if (err2 > -dy) ... else ..." in str(result)
 
 
 @pytest.fixture
@@ -517,11 +517,15 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
     backwards = check.draw_line(
         precomputed(lambda p0, p1: line(p0, p1)[::-1].tolist(), check._LINE_CASES)
     )
-    assert str(backwards).startswith("未通过 draw_line：用例 1 不对\n  输入：p0=(2, 3), p1=(9, 5)")
-    assert "这是一个已知错误，画反了方向：你的像素是从 p1 画到 p0 的" in str(backwards)
+    assert str(backwards).startswith(
+        "未通过 draw_line：第 1 个用例未通过\n  输入：p0=(2, 3), p1=(9, 5)"
+    )
+    assert "这是一种典型错误（画反了方向）。你的像素是从 p1 画到 p0 的" in str(backwards)
     assert backwards.mistake == "drawn backwards"  # the name stays an identifier
     staircase = str(check.draw_line(separate_steps))
     assert "多了 2 个，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase
+    report = str(check.draw_line(the_reports_loop))
+    assert "你画出的像素和实验报告里的循环完全一样。那个循环只有一个判断" in report
     one = str(check.draw_triangle_filled(lambda p0, p1, p2: [p0]))
     assert "缺了 " in one and "提示：看看你的循环填了哪些行" in one and "Hint" not in one
 
@@ -529,10 +533,10 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
         raise NotImplementedError
 
     assert str(check.draw_line(stub)).startswith(
-        "未通过 draw_line：还没有写：你的函数抛出了 NotImplementedError"
+        "未通过 draw_line：还没有写，你的函数抛出了 NotImplementedError"
     )
     refused = str(check.draw_line(lambda p0, p1: line(p0, p1).tolist()))
-    assert "你的函数调用了 course.raster.line，这是课程库自己的答案" in refused
+    assert "你的函数调用了课程库自己的答案 course.raster.line" in refused
 
 
 # --- graded: cases drawn for each submission ------------------------------------------------

@@ -29,7 +29,9 @@ def test_the_figures_show_english_until_the_language_is_set_and_after_it_is_rese
     assert english == (
         "(0, 0) to (7, 3): 8 pixels, one per column; the farthest centre is 0.429 px off in y"
     )
-    assert chinese == "(0, 0) 到 (7, 3)：8 个像素，每列一个；最远的像素中心在 y 方向偏离 0.429 像素"
+    assert (
+        chinese == "从 (0, 0) 到 (7, 3)：8 个像素，每列一个；最远的像素中心在 y 方向偏离 0.429 像素"
+    )
     assert figures.line_figure().caption == english
     assert not any(CHINESE.search(text) for text in english_texts[0])
     assert any(CHINESE.search(text) for text in chinese_texts[0])

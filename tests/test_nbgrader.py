@@ -43,7 +43,7 @@ from course.classroom.nbgrader import (
 )
 from course.classroom.notebooks import NOTEBOOKS, language_folder, notebooks
 from course.classroom.release import student_notebook
-from course.classroom.stubs import STUB_LINE, exercise_stub
+from course.classroom.stubs import STUB_LINE, exercise_stub, stub_line
 
 REPOSITORY = Path(__file__).resolve().parent.parent
 FULL = os.environ.get("COURSE_NBGRADER") == "full"
@@ -68,6 +68,14 @@ def chinese_course(tmp_path_factory):
     folder = tmp_path_factory.mktemp("nbgrader-zh-CN")
     write_nbgrader_course(folder, language_folder(NOTEBOOKS, "zh-CN"))
     return folder
+
+
+def test_the_chinese_course_releases_the_chinese_students_stub(course, chinese_course):
+    """nbgrader generate_assignment writes the config's stub: the student edition's, in Chinese."""
+    chinese = (chinese_course / "nbgrader_config.py").read_text(encoding="utf-8")
+    assert f'code_stub = {{"python": {stub_line("zh-CN")!r}}}' in chinese
+    english = (course / "nbgrader_config.py").read_text(encoding="utf-8")
+    assert f'code_stub = {{"python": {STUB_LINE!r}}}' in english
 
 
 def nbgrader_api(course: Path) -> NbGraderAPI:

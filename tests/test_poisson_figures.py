@@ -142,7 +142,7 @@ def test_a_printed_line_follows_the_language():
     with language("zh-CN"):
         chinese = convergence.strip_and_square()
     assert chinese == (
-        "3 x 3 正方形：0.7071；3 x 30 长条：0.8510；3 x 300 长条：0.8535；3 x 无穷：0.8536"
+        "3 × 3 正方形：0.7071；3 × 30 长条：0.8510；3 × 300 长条：0.8535；3 × ∞：0.8536"
     )
 
 

@@ -30,7 +30,7 @@ from course.lessons.l06_dithering import lesson as l06
 from course.lessons.l07_filtering import lesson as l07
 from course.lessons.l07_filtering.apps import RepeatedBlurApp
 from course.lessons.l08_poisson import lesson as l08
-from course.lessons.printed import display_width
+from course.lessons.printed import degree_numeral, display_width
 from course.raster import wu_line
 
 CHINESE = re.compile("[\u4e00-\u9fff]")
@@ -92,7 +92,7 @@ CASES = [
     pytest.param(
         l01.print_iterative_against,
         (True, True),
-        "iterative == recursive: True\niterative == last level: True",
+        "iterative == recursive: yes\niterative == last level: yes",
         id="01-iterative",
     ),
     pytest.param(
@@ -114,7 +114,7 @@ CASES = [
     pytest.param(
         l02.print_basis_properties,
         (3, 2e-16, 0.0, True),
-        "degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: True",
+        "degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: yes",
         id="02-basis",
     ),
     pytest.param(
@@ -284,7 +284,7 @@ CASES = [
         l06.print_equal_to_loop,
         ("rows", True),
         'method="rows" (a loop along each row, its pushes to the rows below added a whole row '
-        "at once): equal to the loop bit for bit: True",
+        "at once): equal to the loop bit for bit: yes",
         id="06-equal",
     ),
     pytest.param(
@@ -294,25 +294,25 @@ CASES = [
         id="06-timing",
     ),
     pytest.param(
-        l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: True", id="07-loop"
+        l07.print_loop_equals_fast, ("blur", True), "blur: loop == fast: yes", id="07-loop"
     ),
     pytest.param(
         l07.print_uniform_filter,
         ("constant", "zero", True),
-        "uniform_filter constant against 'zero': equal below 1e-12: True",
+        "uniform_filter constant against 'zero': equal below 1e-12: yes",
         id="07-uniform-filter",
     ),
     pytest.param(
         l07.print_report_rule_against_scipy,
         (True, 0.088),
-        "the report's rule against scipy's default: inside below 1e-12: True, "
+        "the report's rule against scipy's default: inside below 1e-12: yes, "
         "on the frame up to 0.088",
         id="07-report-rule",
     ),
     pytest.param(
         l07.print_sobel_against_scipy,
         (True,),
-        "sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: True",
+        "sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: yes",
         id="07-sobel",
     ),
     pytest.param(
@@ -325,7 +325,7 @@ CASES = [
     pytest.param(
         l07.print_largest_magnitude,
         (np.hypot(4, 2),),  # the window [[0 0 0] [0 0 1] [1 1 1]]: gx 3 + 1 = 4, gy 2
-        "largest 4.4721 = sqrt(20) 4.4721, on",
+        "largest 4.4721 (sqrt(20) = 4.4721), on this window:",
         id="07-largest",
     ),
     pytest.param(
@@ -337,7 +337,7 @@ CASES = [
     pytest.param(
         l08.print_residual_below,
         ("capacitance", True),
-        " capacitance: residual below 1e-10: True",
+        " capacitance: residual below 1e-10: yes",
         id="08-residual",
     ),
     pytest.param(
@@ -416,9 +416,44 @@ def test_a_lesson_line_is_the_notebooks_in_english_and_chinese_in_chinese(
     chinese = capsys.readouterr().out
     assert current_language() == "en"
     assert CHINESE.search(chinese), chinese
-    # The numbers stay, perhaps in another order; only the words change.
+    # The numbers stay, perhaps in another order; only the words change. A degree is written
+    # in words in Chinese (三次曲线): it is read back as its number.
     number = r"\d+(?:\.\d+)?"
+    chinese = re.sub(r"([一二三四五六七八九十百]+)次曲线", _degree_number, chinese)
     assert sorted(re.findall(number, chinese)) == sorted(re.findall(number, english))
+
+
+@pytest.mark.parametrize(
+    ("function", "arguments", "english"),
+    [case for case in CASES if any(isinstance(value, bool) for value in case.values[1])],
+)
+def test_a_printed_truth_value_is_yes_or_no_in_the_lessons_language(
+    function, arguments, english, capsys
+):
+    assert not re.search(r"\b(True|False)\b", english) and re.search(r"\b(yes|no)\b", english)
+    with language("zh-CN"):
+        function(*arguments)
+    chinese = capsys.readouterr().out
+    assert not re.search(r"True|False|\byes\b|\bno\b", chinese), chinese
+    assert re.search("[是否]", chinese), chinese
+
+
+def _degree_number(found: re.Match) -> str:
+    with language("zh-CN"):
+        numbers = {degree_numeral(n): n for n in range(1000)}
+    return f"{numbers[found.group(1)]} 次曲线"
+
+
+def test_a_degree_is_written_in_words_in_chinese_not_as_a_count(capsys):
+    # Issue 36: «3 次，t = 0.50» reads as "3 times"; a textbook writes 三次曲线.
+    with language("zh-CN"):
+        words = [degree_numeral(n) for n in (1, 3, 9, 10, 11, 20, 26, 99, 200, 1029)]
+        l02.print_basis_properties(3, 2e-16, 0.0, True)
+        l01.print_recursion_error(recursion_error())
+    assert words == ["一", "三", "九", "十", "十一", "二十", "二十六", "九十九", "二百", "1029 "]
+    assert [degree_numeral(n) for n in (3, 1029)] == [3, 1029]
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].startswith(" 三次曲线：") and "次数为 1999 的曲线" in lines[1], lines
 
 
 def test_the_step_table_heading_lines_up_in_chinese(capsys):

@@ -27,6 +27,14 @@ def test_an_error_in_a_notebook_cell_is_placed_on_the_cells_own_line(filename):
     assert sandbox.student_line(error) == "line 6 of your cell, in f: return a / 0"
 
 
+def test_the_line_is_joined_to_its_place_as_the_language_joins_them():
+    from course.i18n import message_language
+
+    error = _raised_from("/tmp/ipykernel_4242/2718281828.py", "def f(a):\n    return a / 0\n")
+    with message_language("zh-CN"):
+        assert sandbox.student_line(error) == "你的单元格第 2 行，在 f 中：return a / 0"
+
+
 def test_an_error_in_a_file_keeps_the_files_line():
     error = _raised_from("/tmp/their_module.py", "def f(a):\n    return a / 0\n")
     assert sandbox.student_line(error) == "line 2 of f: return a / 0"

@@ -28,6 +28,7 @@ from urllib.parse import urldefrag, urlparse
 import pytest
 from playwright.sync_api import Browser, Page
 
+from course.classroom.stubs import stub_line
 from tests_browser.conftest import REPOSITORY, free_port
 
 SITE = Path(os.environ.get("SITE", REPOSITORY / "build" / "site")).resolve()
@@ -226,8 +227,10 @@ def test_no_page_of_the_published_site_shows_a_solution():
             leaking.append(path.relative_to(SITE).as_posix())
     print(f"\npages of {SITE.name}/ (both languages) containing a solution line: {len(leaking)}")
     assert leaking == []
-    for pages in (LESSON_PAGES, CHINESE_LESSON_PAGES):
-        assert any("your code here" in " ".join(page_lines(page)) for page in pages)
+    # Every exercise shows its stub instead, in the page's language.
+    for pages, language in ((LESSON_PAGES, "en"), (CHINESE_LESSON_PAGES, "zh-CN")):
+        says = stub_line(language).split('"')[1]  # "your code here", «在这里写你的代码»
+        assert any(says in " ".join(page_lines(page)) for page in pages), says
 
 
 def test_formulas_render_offline_from_the_sites_own_mathjax(offline_page: Page, site: str):

@@ -39,7 +39,6 @@ __all__ = [
 
 #: Most numbers of a wrong answer the report reads in full; past it, only sizes are compared.
 _LARGEST_ANSWER = 2**20
-
 #: Most numbers of an image of three or more axes shown in full (a 2 x 4 colour image).
 _LARGEST_SHOWN_IMAGE = 24
 
@@ -54,9 +53,9 @@ def show_value(value: Any) -> str:
     Examples
     --------
     >>> show_value(np.float64(0.5)), show_value(np.zeros((30, 30), dtype=np.int64))
-    ('0.5', 'an array of shape (30, 30), dtype int64, values 0 to 0')
+    ('0.5', 'an array of shape (30, 30), dtype int64, all 0')
     >>> show_value(np.full((8, 8, 3), 0.25))
-    'an array of shape (8, 8, 3), dtype float64, values 0.25 to 0.25'
+    'an array of shape (8, 8, 3), dtype float64, all 0.25'
     >>> show_value(np.zeros((2, 21)))
     '[[0., 0., 0., ..., 0., 0., 0.], [0., 0., 0., ..., 0., 0., 0.]] (shape (2, 21))'
     """
@@ -77,9 +76,13 @@ def show_value(value: Any) -> str:
 def _summary(value: np.ndarray) -> str:
     """An array by its shape, dtype and range (the range only when it is real and finite)."""
     if value.size and value.dtype.kind in "biuf" and np.isfinite(value).all():
-        return _("an array of shape {shape}, dtype {dtype}, values {low:.6g} to {high:.6g}").format(
-            shape=value.shape, dtype=value.dtype, low=value.min(), high=value.max()
+        low, high = value.min(), value.max()
+        message = (
+            _("an array of shape {shape}, dtype {dtype}, all {low:.6g}")
+            if low == high
+            else _("an array of shape {shape}, dtype {dtype}, values {low:.6g} to {high:.6g}")
         )
+        return message.format(shape=value.shape, dtype=value.dtype, low=low, high=high)
     return _("an array of shape {shape}, dtype {dtype}").format(
         shape=value.shape, dtype=value.dtype
     )
@@ -295,9 +298,7 @@ def type_name(value: Any) -> str:
     >>> type_name(2.5), type_name(plain(iter([1])))
     ('float', 'list_iterator')
     """
-    if isinstance(value, (_Unread, Opaque)):
-        return value.kind
-    return type(value).__name__
+    return value.kind if isinstance(value, (_Unread, Opaque)) else type(value).__name__
 
 
 #: How deep :func:`plain` looks into lists and tuples.

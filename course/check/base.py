@@ -324,15 +324,15 @@ def run_cases(
                 ]
                 return report.fail(count, lines, mistake=stopped.mistake)
             except NotImplementedError as error:
+                # A stub's message ("your code here", in the edition's language) is quoted.
+                said = _told(lambda error=error: str(error), "", seconds)
+                not_written = (
+                    _("not written yet: your function raised NotImplementedError: {error}")
+                    if said
+                    else _("not written yet: your function raised NotImplementedError")
+                )
                 return report.fail(
-                    count,
-                    [
-                        _(
-                            "not written yet: your function raised NotImplementedError: {error}"
-                        ).format(error=_told(lambda error=error: str(error), "", seconds)),
-                        report.start(),
-                    ],
-                    hinted=False,
+                    count, [not_written.format(error=said), report.start()], hinted=False
                 )
             except KeyboardInterrupt:  # the student stopped the kernel: stop the check
                 raise
@@ -383,9 +383,9 @@ def run_cases(
                 return report.fail(
                     count,
                     [
-                        _("case {count} returned None: did you forget `return`?").format(
-                            count=count
-                        ),
+                        _(
+                            "case {count} returned None: did you forget the return statement?"
+                        ).format(count=count),
                         inputs_line,
                     ],
                 )

@@ -321,14 +321,18 @@ def image_picture(expected: Any, given: Any, title: str = "") -> bytes:
     # Values past 1 (a gradient magnitude) get a gray scale that reaches them, named in the title.
     top = max(1.0, float(np.max(np.nan_to_num(want), initial=0.0)))
     if top == 1.0:
-        expected_title, given_title = _("expected"), _("yours")
+        expected_title, given_title = _("expected"), _("your result")
     else:
         expected_title = _("expected, 0 to {top:.3g}").format(top=top)
-        given_title = _("yours, 0 to {top:.3g}").format(top=top)
+        given_title = _("your result, 0 to {top:.3g}").format(top=top)
     panels = (
         (want, expected_title, {"cmap": "gray", "vmin": 0, "vmax": top}),
         (have, given_title, {"cmap": "gray", "vmin": 0, "vmax": top}),
-        (difference, _("yours minus expected"), {"cmap": "RdBu_r", "vmin": -limit, "vmax": limit}),
+        (
+            difference,
+            _("your result minus expected"),
+            {"cmap": "RdBu_r", "vmin": -limit, "vmax": limit},
+        ),
     )
     shown = None
     for index, (picture, name, style) in enumerate(panels):
@@ -420,7 +424,7 @@ def _pixel_at(key: Any) -> tuple[int, int]:
 def side_by_side(
     left: Any,
     right: Any,
-    titles: tuple[str, str] = (N_("expected"), N_("yours")),
+    titles: tuple[str, str] = (N_("expected"), N_("your result")),
     shrink: str = "mean",
 ) -> bytes:
     """Two images in [0, 1] side by side, each at most 160 screen pixels across, as a PNG.

@@ -240,7 +240,7 @@ def student_line(error: BaseException) -> str | None:
         )
     else:
         where = _("line {line} of {function}").format(line=frame.lineno, function=frame.name)
-    return f"{where}: {text}" if text else where
+    return _("{where}: {code}").format(where=where, code=text) if text else where
 
 
 def is_notebook_cell(filename: str) -> bool:

@@ -9,7 +9,9 @@ them into a course:
   :mod:`~course.classroom.registry` (their registry entries and chapters),
   :mod:`~course.classroom.course_map` (the course map's table),
   :mod:`~course.classroom.lesson_shape` (teaching.md's budgets, measured),
-  :mod:`~course.classroom.twins` (the Chinese lessons, from their catalogs);
+  :mod:`~course.classroom.twins` (the Chinese lessons, from their catalogs),
+  :mod:`~course.classroom.chinese_review` (what a Chinese student sees, against the
+  glossary and the allow-list of Latin words);
 - the editions: :mod:`~course.classroom.edition` (what they share),
   :mod:`~course.classroom.stubs` (an answer's stub), :mod:`~course.classroom.release` (the
   student edition, which is nbgrader's release), :mod:`~course.classroom.edition_folder`

@@ -152,7 +152,7 @@ HANDOUTS = (
     ),
     Handout(
         N_("the lab report (the lab's Tasks 1-7)"),
-        "Lab01 Report",
+        N_("Lab01 Report"),
         "03, 04, 06, 07, 08",
         N_(
             "Task 1 dithering, Task 2 Blur and Edge, Task 3 inpainting (Poisson), Task 4 "

@@ -18,14 +18,16 @@ student's function and ends with the checker call, for example::
 
 The student edition keeps every line of that cell but its check and the bodies of
 its top-level functions: each ``def`` line (with its decorators) and docstring
-stay, and the body becomes ``raise NotImplementedError("your code here")``.
-The check moves to a locked cell under it, which shows the checker's report: on
-the stub it reads ``FAIL ...: case 1 raised NotImplementedError: your code
-here`` until the student writes the function, and the notebook still runs from
-top to bottom. A partial scaffold marks what to remove instead, with the lines
-``### BEGIN SOLUTION`` and ``### END SOLUTION`` (nbgrader's markers): only the
-lines between them go, replaced by the stub at the marker's indentation, and
-the rest of the cell stays for the student to build on
+stay, and the body becomes ``raise NotImplementedError("your code here")``, its
+message in the lesson's language (``"在这里写你的代码"`` in a Chinese twin:
+:func:`course.classroom.stubs.stub_line`). The check moves to a locked cell under it,
+which shows the checker's report: on the stub it reads ``FAIL ...: not written yet: your
+function raised NotImplementedError: your code here`` (in Chinese «还没有写，你的函数抛出了
+NotImplementedError，提示「在这里写你的代码」») until the student writes the function, and
+the notebook still runs from top to bottom. A partial scaffold marks what to remove
+instead, with the lines ``### BEGIN SOLUTION`` and ``### END SOLUTION`` (nbgrader's
+markers): only the lines between them go, replaced by the stub at the marker's indentation,
+and the rest of the cell stays for the student to build on
 (:mod:`course.classroom.stubs`). The cell's tag becomes ``exercise``; every
 output and execution count is cleared, as ThinkDSP's student notebooks do.
 

@@ -29,16 +29,16 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from course.classroom.edition import notebook_text, read_notebook
+from course.classroom.edition import notebook_language, notebook_text, read_notebook
 from course.classroom.folders import check_output_folder, require_inside
-from course.classroom.notebooks import NOTEBOOKS, notebooks
+from course.classroom.notebooks import DEFAULT_LANGUAGE, NOTEBOOKS, notebooks
 from course.classroom.release import (
     EXERCISE_POINTS,
     Exercise,
     exercises,
     nbgrader_notebook,
 )
-from course.classroom.stubs import STUB_LINE
+from course.classroom.stubs import stub_line
 from course.i18n import _
 
 __all__ = [
@@ -96,12 +96,10 @@ def write_nbgrader_course(
     check_output_folder(out, force)
     out = Path(out)
     files: dict[str, str] = {}
-    if not (out / "nbgrader_config.py").exists():
-        files["nbgrader_config.py"] = CONFIG.format(
-            stub=STUB_LINE, collect=UPLOAD_NAME, secret=secrets.token_hex(16)
-        )
+    language = DEFAULT_LANGUAGE
     for book in notebooks(folder):
         notebook = read_notebook(book.path)
+        language = notebook_language(notebook)
         try:
             found = exercises(notebook)
             if not found:
@@ -112,6 +110,11 @@ def write_nbgrader_course(
             raise ValueError(_("{path}: {error}").format(path=book.path, error=error)) from None
         lesson = book.path.stem
         files[f"source/{lesson}/{lesson}.ipynb"] = notebook_text(converted)
+    if not (out / "nbgrader_config.py").exists():
+        # The release's stubs are the student edition's, in the lessons' language.
+        files["nbgrader_config.py"] = CONFIG.format(
+            stub=stub_line(language), collect=UPLOAD_NAME, secret=secrets.token_hex(16)
+        )
     require_inside(out, [out / name for name in files])  # source/ may be a link
     out.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=".nbgrader-", dir=out))

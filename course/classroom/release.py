@@ -17,10 +17,10 @@ with its check, ``check.<name>(<function>)``. Graded, it becomes two cells:
 
 :func:`nbgrader_notebook` is the lesson so, with its answers: nbgrader's source, which
 ``make nbgrader`` writes. :func:`student_notebook` is the same with each answer replaced by
-:data:`~course.classroom.stubs.STUB_LINE`, checksummed and locked as ``nbgrader
-generate_assignment`` does (``tests/test_nbgrader.py`` compares the two): the student edition
-*is* nbgrader's release, so the notebook a student works in, from ``make lab``, the hub or a
-link, is the one nbgrader grades.
+the stub in the lesson's language (:func:`~course.classroom.stubs.stub_line`), checksummed
+and locked as ``nbgrader generate_assignment`` does (``tests/test_nbgrader.py`` compares the
+two): the student edition *is* nbgrader's release, so the notebook a student works in, from
+``make lab``, the hub or a link, is the one nbgrader grades.
 
 Both replace a cell that reveals a solution another way (printed source, a solved variant:
 :func:`~course.classroom.edition.reveals`) by a note in the lesson's language, drop the
@@ -52,9 +52,9 @@ from course.classroom.notebooks import DEFAULT_LANGUAGE
 from course.classroom.stubs import (
     BEGIN_SOLUTION,
     END_SOLUTION,
-    STUB_LINE,
     parse_solution,
     solution_bodies,
+    stub_line,
 )
 from course.i18n import N_, _
 
@@ -280,13 +280,13 @@ def nbgrader_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
     return source
 
 
-def _cleared(source: str) -> str:
-    """``source`` with each marked answer replaced by the stub, as nbgrader's ClearSolutions."""
+def _cleared(source: str, stub: str) -> str:
+    """``source`` with each marked answer replaced by ``stub``, as nbgrader's ClearSolutions."""
     lines, inside = [], False
     for line in source.split("\n"):
         if BEGIN_SOLUTION in line:
             inside = True
-            lines.append(re.match(r"\s*", line).group(0) + STUB_LINE)  # type: ignore[union-attr]
+            lines.append(re.match(r"\s*", line).group(0) + stub)  # type: ignore[union-attr]
         elif END_SOLUTION in line:
             inside = False
         elif not inside:
@@ -324,10 +324,10 @@ def nbgrader_checksum(cell: dict[str, Any]) -> str:
 def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
     """A lesson's student edition: nbgrader's release of :func:`nbgrader_notebook`.
 
-    Each answer is replaced by its stub; the answer and check cells carry nbgrader's
-    metadata and checksums, and are locked as ``nbgrader generate_assignment`` locks them
-    (an answer cell cannot be deleted, a check cell neither deleted nor edited). The input
-    is left alone.
+    Each answer is replaced by its stub, in the lesson's language; the answer and check cells
+    carry nbgrader's metadata and checksums, and are locked as ``nbgrader
+    generate_assignment`` locks them (an answer cell cannot be deleted, a check cell neither
+    deleted nor edited). The input is left alone.
     """
     check_notebook(notebook)
     try:
@@ -336,11 +336,12 @@ def student_notebook(notebook: dict[str, Any]) -> dict[str, Any]:
         raise ValueError(
             _("{error} (a cell tagged {tag})").format(error=error, tag=repr(SOLUTION_TAG))
         ) from None
+    stub = stub_line(notebook_language(notebook))
     for cell in release["cells"]:
         grading = cell.get("metadata", {}).get("nbgrader")
         if grading is None:
             continue
-        cell["source"] = _cleared(cell_source(cell))
+        cell["source"] = _cleared(cell_source(cell), stub)
         grading["cell_type"] = cell["cell_type"]
         grading["checksum"] = nbgrader_checksum(cell)
         cell["metadata"]["deletable"] = False

@@ -6,7 +6,10 @@ module named ``_<function>_<method>``: ``course.raster.line(method="loop")``
 runs ``course.raster.lines._line_loop``. :func:`source_of` finds that form by the
 convention, so a notebook reads the library without importing a private
 name, and adds the private helpers it calls, so the reader sees all of it.
-Standard library only.
+In a language other than English (:func:`course.i18n.current_language`) the
+listing leaves out the docstrings and the comments, which are English: the
+code itself is shown unchanged (:func:`without_comments`, by ``ast`` and
+``tokenize``). Standard library only.
 
 Classroom tooling for the course's authors and its browser tests: its
 inputs come from the lesson registry, never from a student, so this module
@@ -15,15 +18,19 @@ checks none (``UNCHECKED = True``; the fuzz test skips it).
 
 from __future__ import annotations
 
+import ast
 import inspect
+import io
 import sys
+import textwrap
+import tokenize
 import types
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from course.i18n import _
+from course.i18n import _, current_language
 
-__all__ = ["form_of", "source_of"]
+__all__ = ["form_of", "source_of", "without_comments"]
 
 UNCHECKED = True  # see the module docstring
 
@@ -65,7 +72,8 @@ def source_of(function: Callable[..., Any], method: str | None = None) -> str:
     Helpers are the functions and classes of the ``course`` package that the
     code names and that are private (an underscore in their name or their
     module's), followed through every helper in turn, each shown once, in
-    the order first met. Input checks are left out.
+    the order first met. Input checks are left out. In a language other than
+    English, the docstrings and comments are left out too (:func:`without_comments`).
 
     Examples
     --------
@@ -74,7 +82,78 @@ def source_of(function: Callable[..., Any], method: str | None = None) -> str:
     def _line_loop(
     """
     start = function if method is None else form_of(function, method)
-    return "\n\n\n".join(inspect.getsource(part).rstrip() for part in _parts(start))
+    english = current_language() == "en"
+    return "\n\n\n".join(
+        (source if english else without_comments(source)).rstrip()
+        for source in (inspect.getsource(part) for part in _parts(start))
+    )
+
+
+def without_comments(source: str) -> str:
+    r"""``source`` without its docstrings and comments, its code unchanged.
+
+    The docstrings are found by ``ast`` (a module's, a class's or a function's first
+    statement, a string), the comments by ``tokenize``: a line holding only a docstring
+    or a comment goes, with the blank lines right after a docstring; a comment after code
+    is cut off with the spaces before it. A body that held only a docstring keeps ``...``.
+
+    Examples
+    --------
+    >>> code = "def f(x):\n    '''Twice x.\n\n    More.\n    '''\n\n    # double\n"
+    >>> print(without_comments(code + "    return 2 * x  # '#' in a comment\n"))
+    def f(x):
+        return 2 * x
+    <BLANKLINE>
+    >>> print(without_comments("class A:\n    'Only a docstring.'\n"))
+    class A:
+        ...
+    <BLANKLINE>
+    >>> without_comments("s = '# not a comment'  # a comment\n")
+    "s = '# not a comment'\n"
+    """
+    text = textwrap.dedent(source)
+    lines = text.splitlines(keepends=True)
+    dropped: set[int] = set()  # 0-based line numbers
+    cut: dict[int, int] = {}  # line -> column where a comment after code starts
+    emptied: dict[int, str] = {}  # a docstring's first line -> "..." at its indent
+    for node in ast.walk(ast.parse(text)):
+        if not isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)):
+            continue
+        first = node.body[0] if node.body else None
+        if not (
+            isinstance(first, ast.Expr)
+            and isinstance(first.value, ast.Constant)
+            and isinstance(first.value.value, str)
+        ):
+            continue
+        start, end = first.lineno - 1, first.end_lineno - 1
+        if lines[start][: first.col_offset].strip() or lines[end][first.end_col_offset :].strip():
+            continue  # shares its line with code: `def f(): "doc"`
+        span = set(range(start, end + 1))
+        after = end + 1
+        while after < len(lines) and not lines[after].strip():
+            span.add(after)
+            after += 1
+        dropped |= span
+        if len(node.body) == 1:
+            emptied[start] = " " * first.col_offset + "...\n"
+    for token in tokenize.generate_tokens(io.StringIO(text).readline):
+        if token.type != tokenize.COMMENT:
+            continue
+        row, column = token.start[0] - 1, token.start[1]
+        if lines[row][:column].strip():
+            cut[row] = column
+        else:
+            dropped.add(row)
+    kept = []
+    for number, line in enumerate(lines):
+        if number in emptied:
+            kept.append(emptied[number])
+        elif number in cut:
+            kept.append(line[: cut[number]].rstrip() + "\n")
+        elif number not in dropped:
+            kept.append(line)
+    return "".join(kept)
 
 
 def _parts(function: Any) -> list[Any]:

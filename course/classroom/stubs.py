@@ -15,7 +15,9 @@ call, for example::
 
 Its answers are the bodies of its top-level functions (:func:`solution_bodies`):
 each ``def`` line (with its decorators) and docstring stay, and the body
-becomes ``raise NotImplementedError("your code here")`` (:data:`STUB_LINE`).
+becomes ``raise NotImplementedError("your code here")`` (:data:`STUB_LINE`), its
+message in the lesson's language (:func:`stub_line`: the Chinese edition's stubs say
+``"在这里写你的代码"``, from the library's catalog).
 A partial scaffold marks what to remove instead, with the lines ``### BEGIN
 SOLUTION`` and ``### END SOLUTION`` (nbgrader's markers): only the lines
 between them go, replaced by the stub at the marker's indentation, and the
@@ -26,24 +28,52 @@ from __future__ import annotations
 
 import ast
 
-from course.i18n import _
+from course.i18n import LANGUAGES, N_, _, gettext_catalog
 
 __all__ = [
     "BEGIN_SOLUTION",
     "END_SOLUTION",
     "STUB_LINE",
+    "STUB_MESSAGE",
     "exercise_stub",
     "parse_solution",
     "solution_bodies",
+    "stub_line",
 ]
 
+#: What a stub says, in English; the lesson's language's in :func:`stub_line`.
+STUB_MESSAGE = N_("your code here")
+#: The English edition's stub.
 STUB_LINE = 'raise NotImplementedError("your code here")'
 BEGIN_SOLUTION = "### BEGIN SOLUTION"
 END_SOLUTION = "### END SOLUTION"
 
 
-def exercise_stub(source: str) -> str:
-    """The cell ``source`` with its solution replaced by a stub.
+def stub_line(language: str = "en") -> str:
+    """The stub of a lesson in ``language`` (``"en"`` or ``"zh-CN"``): its message translated.
+
+    Examples
+    --------
+    >>> stub_line() == STUB_LINE
+    True
+    >>> stub_line("zh-CN")
+    'raise NotImplementedError("在这里写你的代码")'
+    """
+    if not isinstance(language, str) or language not in LANGUAGES:
+        raise ValueError(
+            _("language: expected one of {choices}; got {language:.60}").format(
+                choices=", ".join(LANGUAGES), language=repr(language)
+            )
+        )
+    locale = LANGUAGES[language]
+    message = STUB_MESSAGE if locale is None else gettext_catalog(locale).gettext(STUB_MESSAGE)
+    # The message goes between double quotes: a translation holds neither one nor a backslash.
+    return f'raise NotImplementedError("{message}")'
+
+
+def exercise_stub(source: str, language: str = "en") -> str:
+    """The cell ``source`` with its solution replaced by a stub in ``language``
+    (:func:`stub_line`).
 
     With ``### BEGIN SOLUTION`` / ``### END SOLUTION`` markers, the lines
     between each pair (and the markers) become one stub line at the begin
@@ -70,12 +100,13 @@ def exercise_stub(source: str) -> str:
                 source_type=type(source).__name__
             )
         )
+    stub = stub_line(language)
     if BEGIN_SOLUTION in source or END_SOLUTION in source:
-        return _scaffold_stub(source)
+        return _scaffold_stub(source, stub)
     lines = source.splitlines()
     # Replace from the bottom up, so earlier line numbers stay valid.
     for start, end, indent in reversed(solution_bodies(source)):
-        lines[start:end] = [indent + STUB_LINE]
+        lines[start:end] = [indent + stub]
     return "\n".join(lines)
 
 
@@ -161,7 +192,7 @@ def solution_bodies(source: str) -> list[tuple[int, int, str]]:
     return bodies
 
 
-def _scaffold_stub(source: str) -> str:
+def _scaffold_stub(source: str, stub: str = STUB_LINE) -> str:
     """Replace each marked region, markers included, by the stub at the marker's indentation.
 
     Examples
@@ -186,7 +217,7 @@ def _scaffold_stub(source: str) -> str:
                     _("source: line {number} opens a solution inside another").format(number=number)
                 )
             inside = True
-            kept.append(line[: len(line) - len(line.lstrip())] + STUB_LINE)
+            kept.append(line[: len(line) - len(line.lstrip())] + stub)
         elif marker == END_SOLUTION:
             if not inside:
                 raise ValueError(

@@ -26,7 +26,7 @@ from course.curves._bernstein import bernstein_loop, require_bernstein_degree
 from course.curves._bezier_fast import de_casteljau_chunked
 from course.curves._handouts import de_casteljau_swapped
 from course.curves._uniform import uniform_steps
-from course.i18n import _
+from course.i18n import N_, _
 from course.raster import ROUNDING
 from course.raster._lines import pixels_of, require_image_space
 from course.raster._paint import on_canvas
@@ -51,7 +51,8 @@ class HandoutLoop:
     mode of its pixel write (``"round"`` for ``window.at<cv::Vec3b>(point)``,
     which converts through ``cv::Point``; ``"trunc"`` for ``(point.y,
     point.x)``); ``reversed`` whether its step is ``t P[i] + (1 - t) P[i+1]``.
-    The points themselves are computed here in double precision.
+    The points themselves are computed here in double precision. ``name`` is the English
+    a catalog translates (its report's role); :attr:`label` shows it.
     """
 
     name: str
@@ -60,30 +61,43 @@ class HandoutLoop:
     rounding: str
     reversed: bool = False
 
+    @property
+    def label(self) -> str:
+        """The loop's name in the current language, as figures and captions show it.
+
+        Examples
+        --------
+        >>> from course.i18n import language
+        >>> with language("zh-CN"):
+        ...     HANDOUT_LOOPS["003"].label
+        'VS2022 作业报告'
+        """
+        return _(self.name)
+
 
 #: The seeds' drawing loops, as written, each named for its report's role.
 HANDOUT_LOOPS = {
     "000": HandoutLoop(
-        "the GAMES101 report",
+        N_("the GAMES101 report"),
         "for (float t = 0; t <= 1; t += 0.001f) window.at<cv::Vec3b>(point) = ...",
         "float32",
         "round",
     ),
     "002": HandoutLoop(
-        "the any-degree report",
+        N_("the any-degree report"),
         "float dt = 0.001; for (t = 0; t <= 1; t += dt) window.at<cv::Vec3b>(point.y, point.x)",
         "float32",
         "trunc",
         reversed=True,
     ),
     "003": HandoutLoop(
-        "the VS2022 report",
+        N_("the VS2022 report"),
         "for (double t = 0.0; t <= 1.0; t += 0.001) window.at<cv::Vec3b>(point.y, point.x)",
         "float64",
         "trunc",
     ),
     "004": HandoutLoop(
-        "the lab 6 report",
+        N_("the lab 6 report"),
         "for (float t = 0; t <= 1; t += 0.001) window.at<cv::Vec3b>(point.y, point.x)",
         "float32",
         "trunc",

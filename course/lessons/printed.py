@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import unicodedata
 
-from course.i18n import _
+from course.i18n import _, current_language
 
 UNCHECKED = True  # see the module docstring
 
@@ -53,3 +53,36 @@ def title_on_one_line(title: str) -> str:
     for detail in details:
         heading = _("{heading}: {details}").format(heading=heading, details=detail)
     return heading
+
+
+_CHINESE_DIGITS = "零一二三四五六七八九"
+
+
+def degree_numeral(degree: int) -> int | str:
+    """A curve's degree as the current language writes it in «{degree}次曲线», «degree {degree}».
+
+    Chinese names a degree in words, 三次曲线, as a textbook does: «3 次» reads as "3 times".
+    Degrees 0 to 99 and whole hundreds below 1000 are written in words; any other degree is its
+    digits and a space («1029 次曲线»). In English the degree stays the number itself, so
+    English lines do not change.
+
+    Examples
+    --------
+    >>> from course.i18n import language
+    >>> degree_numeral(3)
+    3
+    >>> with language("zh-CN"):
+    ...     [degree_numeral(n) for n in (3, 10, 20, 26, 400, 1029)]
+    ['三', '十', '二十', '二十六', '四百', '1029 ']
+    """
+    if current_language() == "en" or degree < 0:
+        return degree
+    tens, ones = divmod(degree, 10)
+    if degree < 10:
+        return _CHINESE_DIGITS[degree]
+    if degree < 100:
+        head = "" if tens == 1 else _CHINESE_DIGITS[tens]
+        return head + "十" + (_CHINESE_DIGITS[ones] if ones else "")
+    if degree < 1000 and degree % 100 == 0:
+        return _CHINESE_DIGITS[degree // 100] + "百"
+    return f"{degree} "

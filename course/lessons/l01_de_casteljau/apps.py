@@ -20,6 +20,7 @@ from course._validate import as_app_points, as_int, as_unit
 from course.curves.bezier import de_casteljau, de_casteljau_levels
 from course.i18n import _
 from course.images import EXAMPLE_POINTS
+from course.lessons.printed import degree_numeral
 from course.widgets.base import Handle, SliderApp, format_points, parse_points
 from course.widgets.text_cache import FixedText
 
@@ -186,7 +187,7 @@ class DeCasteljauApp(SliderApp):
             self.status.value = _(
                 "Kept the first {high} of the {count} points typed: "
                 "the app draws at most {high} (degree {degree})."
-            ).format(high=MAX_POINTS, count=len(points), degree=MAX_POINTS - 1)
+            ).format(high=MAX_POINTS, count=len(points), degree=degree_numeral(MAX_POINTS - 1))
             points = points[:MAX_POINTS]
         if cut or len(points) != count or self._count_changed:
             self._write_points(points)
@@ -216,7 +217,9 @@ class DeCasteljauApp(SliderApp):
         self.point_marker.set_data([point[0]], [point[1]])
         traced = de_casteljau(points, np.linspace(0.0, t, _CURVE_SAMPLES))
         self.traced.set_data(traced[:, 0], traced[:, 1])
-        start = _("degree {degree}, t = {t:.2f}: B(t) = ").format(degree=len(points) - 1, t=t)
+        start = _("degree {degree}, t = {t:.2f}: B(t) = ").format(
+            degree=degree_numeral(len(points) - 1), t=t
+        )
         numbers = _numbers(point)
         self.title.set_text(start + numbers)
         if self.title_numbers.get_visible():

@@ -104,7 +104,10 @@ def three_points_figure(points: Any, t: float) -> Still:
     figure.tight_layout()
     point = levels[-1][0]
     value = ", ".join(_fraction(float(v)) for v in point)
-    return Still.of(figure, f"de Casteljau on three points at t = {t:g}: B(t) = ({value})")
+    caption = _("de Casteljau on three points at t = {t:g}: B(t) = ({value})").format(
+        t=t, value=value
+    )
+    return Still.of(figure, caption)
 
 
 def points_held_figure(counts: Sequence[int] = (4, 10, 20, 50, 100, 200)) -> Still:
@@ -235,7 +238,7 @@ def end_of_curve_figure(
                 window,
                 extent,
                 _("{loop}\nlast t {last_t:.7g}, {rounding}").format(
-                    loop=loop.name, last_t=last_t, rounding=rounding
+                    loop=loop.label, last_t=last_t, rounding=rounding
                 ),
             )
         )
@@ -244,7 +247,7 @@ def end_of_curve_figure(
             if lit
             else _("{loop} does not (last t {last_t:.7g})")
         )
-        verdicts.append(verdict.format(loop=loop.name, last_t=last_t))
+        verdicts.append(verdict.format(loop=loop.label, last_t=last_t))
     legend = [
         (GREEN, _("painted")),
         ("white", _("not painted")),
@@ -279,7 +282,7 @@ def end_of_curve_figure(
     ]
     replace_legend(figure, handles, [label for _colour, label in legend])
     caption = _("B(1) = ({x:g}, {y:g}) in pixel {pixel}; {verdicts}").format(
-        x=end[0], y=end[1], pixel=home, verdicts="; ".join(verdicts)
+        x=end[0], y=end[1], pixel=home, verdicts=_("; ").join(verdicts)
     )
     return Still.of(figure, caption)
 
@@ -303,11 +306,11 @@ def gaps_figure(points: Any, near_t: float = 0.012, size: int = 16) -> Still:
     polyline = flatten(control, 0.25, max_step=1.0)
     drawings = [
         (
-            "step 0.001 (the handouts)",
+            _("step 0.001 (the handouts)"),
             nearest_pixels(de_casteljau(control, uniform_parameters(0.001, "float32"))),
         ),
         (
-            "step 0.0001",
+            _("step 0.0001"),
             nearest_pixels(de_casteljau(control, uniform_parameters(0.0001, "float32"))),
         ),
         ("flatten(max_step=1)", nearest_pixels(polyline)),
@@ -416,7 +419,7 @@ def yellow_check_figure(points: Any, seed: str, size: int = 12) -> Still:
         "{loop} against naive_bezier: {yellow:.1%} yellow, "
         "{red} pixels only red, {green} only green"
     ).format(
-        loop=HANDOUT_LOOPS[seed].name,
+        loop=HANDOUT_LOOPS[seed].label,
         yellow=check.fraction,
         red=len(check.red_only),
         green=len(check.green_only),

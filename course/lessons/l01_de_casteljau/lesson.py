@@ -14,7 +14,7 @@ from course.classroom.pictures import CRIMSON, app_picture, landmark_at, still_p
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
 from course.curves.bezier import de_casteljau
 from course.curves.handout_loops import HandoutLoop
-from course.i18n import N_, _
+from course.i18n import N_, _, yes_no
 from course.images import EXAMPLE_POINTS, SEED_000_CUBIC
 from course.lessons.l01_de_casteljau import figures
 from course.lessons.l01_de_casteljau.apps import DeCasteljauApp
@@ -75,11 +75,11 @@ def print_iterative_against(recursive: bool, last_level: bool) -> None:
     Examples
     --------
     >>> print_iterative_against(True, False)
-    iterative == recursive: True
-    iterative == last level: False
+    iterative == recursive: yes
+    iterative == last level: no
     """
-    print(_("iterative == recursive: {equal}").format(equal=recursive))
-    print(_("iterative == last level: {equal}").format(equal=last_level))
+    print(_("iterative == recursive: {equal}").format(equal=yes_no(recursive)))
+    print(_("iterative == last level: {equal}").format(equal=yes_no(last_level)))
 
 
 def print_recursion_error(error: RecursionError) -> None:

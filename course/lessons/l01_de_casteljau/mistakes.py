@@ -93,7 +93,7 @@ class SpreadPixels:
 def float32_loop_pixels(
     control_points: np.ndarray, shape: tuple[int, ...], rounding: str
 ) -> SpreadPixels:
-    """The pixels of the handouts' ``float t`` loop, ``t += 0.001`` in float32, on a window of
+    """The pixels of the handouts' `float t` loop, ``t += 0.001`` in float32, on a window of
     ``shape``, each point rounded by ``rounding`` (:func:`course.raster.nearest_pixels`'),
     up to :data:`FLOAT32_SPREAD`: however precisely the points are computed from that t.
 
@@ -262,7 +262,7 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
             _("t accumulated in float steps"),
             _(
                 "your t is a sum of 0.001 steps (t = 0.0; while t <= 1: ...; t += 0.001), as the "
-                "handouts' loop `for (t = 0; t <= 1; t += 0.001)` does: each addition rounds, the "
+                "handouts' loop for (t = 0; t <= 1; t += 0.001) does: each addition rounds, the "
                 "sum ends a hair above 1 after a thousand steps, so t = 1 is never painted, and on "
                 "the way t drifts a few units in the last place. Count whole steps instead: "
                 "for k in range(1001): t = k / 1000."
@@ -285,7 +285,7 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
         Mistake(
             _("the float32 loop of the GAMES101 report"),
             _(
-                "your t drifts: the handout's `float t` (np.float32 in Python) keeps about 7 "
+                "your t drifts: the handout's float t (np.float32 in Python) keeps about 7 "
                 "digits, and a thousand additions of 0.001 move the points enough to change "
                 "pixels in the middle of the curve. Compute each t from a whole count, in "
                 "Python's float: t = k / 1000."
@@ -322,7 +322,7 @@ def bezier_mistakes(student: Callable[..., Any] | None = None) -> list[Mistake]:
         Mistake(
             _("the GAMES101 report's loop: float32 t and cv::Point rounding"),
             _(
-                "your loop is the GAMES101 report's: a `float t` advanced by 0.001 a thousand "
+                "your loop is the GAMES101 report's: a float t advanced by 0.001 a thousand "
                 "times, which drifts, and each point rounded to the nearest pixel as cv::Point "
                 "does, half a pixel off. Compute each t from a whole count (t = k / 1000, in "
                 "Python's float) and paint (int(x), int(y)), the pixel whose square holds the "

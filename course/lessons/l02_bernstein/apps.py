@@ -57,7 +57,7 @@ class BernsteinBasisApp(SliderApp):
         (self.sum_line,) = self.axes.plot([], [], "k--", linewidth=1, label=_("sum of the weights"))
         self.t_line = self.axes.axvline(t, color="crimson", linewidth=1)
         (self.markers,) = self.axes.plot(
-            [], [], "o", color="crimson", markersize=4, label="the weights at t"
+            [], [], "o", color="crimson", markersize=4, label=_("the weights at t")
         )
         self.axes.legend(
             handles=[self.sum_line, self.markers],

@@ -19,6 +19,7 @@ from course.curves.bezier import binomial, de_casteljau, derivative
 from course.curves.bezier_accuracy import accuracy_by_degree
 from course.curves.bezier_handouts import comb_recursive_calls
 from course.i18n import N_, _
+from course.lessons.printed import degree_numeral
 from course.widgets.picture import Still, rounding_level
 
 __all__ = [
@@ -86,9 +87,12 @@ def tangents_figure(points: Any) -> Still:
     def vector(value: np.ndarray) -> str:
         return "(" + ", ".join(f"{v:g}" for v in value) + ")"
 
-    caption = (
-        f"B'(0) = {vector(start)} = {degree} (P1 - P0); "
-        f"B'(1) = {vector(end)} = {degree} (P{degree} - P{degree - 1})"
+    # Formulas only: the joiner is the language's (Chinese ；).
+    caption = _("; ").join(
+        (
+            f"B'(0) = {vector(start)} = {degree} (P1 - P0)",
+            f"B'(1) = {vector(end)} = {degree} (P{degree} - P{degree - 1})",
+        )
     )
     return Still.of(figure, caption)
 
@@ -161,7 +165,9 @@ def hodograph_figure(points: Any, ts: Sequence[float] = (0.0, 0.25, 0.5, 0.75, 1
         label=_("nearest the origin: slowest"),
     )
     right.set_title(
-        _("the hodograph: a Bézier curve of degree {degree}").format(degree=len(hodograph) - 1),
+        _("the hodograph: a Bézier curve of degree {degree}").format(
+            degree=degree_numeral(len(hodograph) - 1)
+        ),
         fontsize=9,
     )
     for axes in (left, right):
@@ -327,16 +333,16 @@ def accuracy_figure(degrees: Sequence[int] = tuple(range(1, 61)), samples: int =
     if (power > 1e-6).any():
         parts.append(
             _("power basis above 1e-6 from degree {degree}").format(
-                degree=int(errors["degree"][np.argmax(power > 1e-6)])
+                degree=degree_numeral(int(errors["degree"][np.argmax(power > 1e-6)]))
             )
         )
     if (power > 1).any():
         parts.append(
             _("above 1 from degree {degree}").format(
-                degree=int(errors["degree"][np.argmax(power > 1)])
+                degree=degree_numeral(int(errors["degree"][np.argmax(power > 1)]))
             )
         )
-    return Still.of(figure, "; ".join(parts))
+    return Still.of(figure, _("; ").join(parts))
 
 
 def _as_list(values: Any, name: str) -> list[Any]:

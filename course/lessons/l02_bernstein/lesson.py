@@ -19,10 +19,11 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.curves.bezier import bernstein_basis
-from course.i18n import N_, _
+from course.i18n import N_, _, yes_no
 from course.images import EXAMPLE_POINTS
 from course.lessons.l02_bernstein import figures
 from course.lessons.l02_bernstein.apps import BernsteinBasisApp
+from course.lessons.printed import degree_numeral
 from course.widgets.base import SliderApp
 from course.widgets.picture import rounding_level
 
@@ -38,11 +39,14 @@ def print_basis_properties(degree: int, total: float, mirror: float, ends: bool)
     Examples
     --------
     >>> print_basis_properties(3, 2e-16, 0.0, True)
-    degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: True
+    degree  3: |sum - 1| below 1e-12, |mirror| below 1e-12, ends exact: yes
     """
     print(
         _("degree {degree:>2}: |sum - 1| {total}, |mirror| {mirror}, ends exact: {ends}").format(
-            degree=degree, total=rounding_level(total), mirror=rounding_level(mirror), ends=ends
+            degree=degree_numeral(degree),
+            total=rounding_level(total),
+            mirror=rounding_level(mirror),
+            ends=yes_no(ends),
         )
     )
 
@@ -103,7 +107,7 @@ def print_calls_per_curve(degree: int, points: int, calls: int) -> None:
     """
     print(
         _("naive_bezier at degree {degree}, {points} points: {calls:,} calls of comb").format(
-            degree=degree, points=points, calls=calls
+            degree=degree_numeral(degree), points=points, calls=calls
         )
     )
 
@@ -133,7 +137,7 @@ def print_horner_gap(degree: int, gap: float) -> None:
     """
     print(
         _("degree {degree:>2}: Horner against the handout's sum: {gap} px").format(
-            degree=degree, gap=rounding_level(gap, 1e-10)
+            degree=degree_numeral(degree), gap=rounding_level(gap, 1e-10)
         )
     )
 
@@ -153,6 +157,10 @@ def print_comb_timing(m: int, calls: int, seconds: float) -> None:
     )
 
 
+#: Python's message for an int too large for a float (``float(10**400)``).
+INT_TOO_LARGE = N_("int too large to convert to float")
+
+
 def print_binomial_as_float(m: int, value: float | OverflowError) -> None:
     """Print C(m, m // 2) as a float, or the ``OverflowError`` converting it raised.
 
@@ -162,9 +170,15 @@ def print_binomial_as_float(m: int, value: float | OverflowError) -> None:
     C(1029, 514) as a float: 1.430e+308
     >>> print_binomial_as_float(1030, OverflowError("int too large to convert to float"))
     C(1030, 515) as a float: int too large to convert to float
+    >>> from course.i18n import language
+    >>> with language("zh-CN"):
+    ...     print_binomial_as_float(1030, OverflowError("int too large to convert to float"))
+    C(1030, 515) 转成浮点数：整数太大，无法转成浮点数（OverflowError）
     """
     if isinstance(value, OverflowError):
-        line = _("C({m}, {k}) as a float: {error}").format(m=m, k=m // 2, error=value)
+        # Python's own message is English: the known one is shown in the current language.
+        error = _(INT_TOO_LARGE) if str(value) == INT_TOO_LARGE else value
+        line = _("C({m}, {k}) as a float: {error}").format(m=m, k=m // 2, error=error)
     else:
         line = _("C({m}, {k}) as a float: {value:.3e}").format(m=m, k=m // 2, value=value)
     print(line)
@@ -180,7 +194,7 @@ def print_de_casteljau_error(degree: int, worst: float) -> None:
     """
     print(
         _("degree {degree}: de Casteljau's worst error {worst} of the polygon's size").format(
-            degree=degree, worst=rounding_level(worst)
+            degree=degree_numeral(degree), worst=rounding_level(worst)
         )
     )
 
@@ -195,7 +209,7 @@ def print_middle_peak(degree: int, peak: float) -> None:
     """
     print(
         _("degree {degree:>2}: the middle bump's peak B(n/2, n)(1/2) = {peak:.3f}").format(
-            degree=degree, peak=peak
+            degree=degree_numeral(degree), peak=peak
         )
     )
 

@@ -24,6 +24,7 @@ from course import limits
 from course._validate import as_app_points, as_choice, as_int, as_point, as_shape
 from course.i18n import _
 from course.lessons.l03_lines_and_triangles.curve_segments import CurveSegmentsApp
+from course.lessons.l03_lines_and_triangles.figures import rule_name
 from course.lessons.l03_lines_and_triangles.grid import pixel_grid
 from course.raster import (
     distance_from_line,
@@ -240,7 +241,7 @@ class TriangleApp(SliderApp):
                 value=format_points(self.corners), description="x, y", continuous_update=False
             ),
             "rule": widgets.ToggleButtons(
-                options=EDGE_RULES,
+                options=[(rule_name(name), name) for name in EDGE_RULES],
                 value=rule,
                 description=_("rule"),
                 style={"button_width": "70px"},
@@ -353,7 +354,11 @@ class TriangleApp(SliderApp):
                 "rule {rule}: {first} + {second} pixels\n"
                 "{doubled} painted twice, {cracks} missed on the shared edge"
             ).format(
-                rule=rule, first=len(first), second=len(second), doubled=doubled, cracks=cracks
+                rule=rule_name(rule),
+                first=len(first),
+                second=len(second),
+                doubled=doubled,
+                cracks=cracks,
             ),
             fontsize=9,
         )

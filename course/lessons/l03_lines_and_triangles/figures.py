@@ -16,7 +16,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from scipy.spatial import Delaunay
 
-from course._validate import as_int, as_point, as_shape
+from course._validate import as_choice, as_int, as_point, as_shape
 from course.i18n import N_, _
 from course.raster import hit_counts, line, line_4connected, triangle
 from course.raster.canvas import blank, paint
@@ -24,10 +24,12 @@ from course.raster.triangles import interpolate
 from course.widgets.picture import Still, pixel_figure
 
 __all__ = [
+    "RULE_NAMES",
     "colour_figure",
     "edge_rules_figure",
     "line_figure",
     "mesh_figure",
+    "rule_name",
     "scanline_figure",
     "staircase_figure",
 ]
@@ -35,6 +37,20 @@ __all__ = [
 BLUE, VERMILLION, ORANGE, SKY, GREEN = "#0072B2", "#D55E00", "#E69F00", "#56B4E9", "#009E73"
 #: The colour figure's vertex labels: which colour each vertex carries.
 _VERTEX_COLOURS = (N_("p0: red"), N_("p1: green"), N_("p2: blue"))
+#: The edge rules (:data:`course.raster.triangles.EDGE_RULES`) as a student reads them: the
+#: apps' toggle, the titles and the captions; the values stay the code's.
+RULE_NAMES = {"top-left": N_("top-left"), "closed": N_("closed"), "open": N_("open")}
+
+
+def rule_name(rule: str) -> str:
+    """An edge rule's name in the current language.
+
+    Examples
+    --------
+    >>> rule_name("top-left")
+    'top-left'
+    """
+    return _(RULE_NAMES[as_choice(rule, "rule", tuple(RULE_NAMES))])
 
 
 def _rgb(colour: str) -> tuple[float, float, float]:
@@ -232,7 +248,7 @@ def edge_rules_figure(size: int = 6) -> Still:
         owner[first[:, 1], first[:, 0]] += 1
         owner[second[:, 1], second[:, 0]] += 2
         twice_painted.append(np.argwhere(owner == 3)[:, ::-1] + 0.5)
-        title = _("rule {rule}").format(rule=repr(rule))
+        title = _("rule '{rule}'").format(rule=rule_name(rule))
         windows.append((colours[owner], (0, size, size, 0), title))
         notes.append((rule, int((counts == 2).sum()), int((counts == 0).sum())))
     figure, axes_list = pixel_figure(
@@ -255,12 +271,13 @@ def edge_rules_figure(size: int = 6) -> Still:
         axes.plot(on_edge, on_edge, "o", color="0.15", ms=4, fillstyle="none")
     parts = []
     for rule, twice, never in notes:
+        name = rule_name(rule)
         if twice:
-            parts.append(_("{rule} paints {count} twice").format(rule=rule, count=twice))
+            parts.append(_("{rule} paints {count} twice").format(rule=name, count=twice))
         elif never:
-            parts.append(_("{rule} misses {count}").format(rule=rule, count=never))
+            parts.append(_("{rule} misses {count}").format(rule=name, count=never))
         else:
-            parts.append(_("{rule} paints each once").format(rule=rule))
+            parts.append(_("{rule} paints each once").format(rule=name))
     caption = _("centres on the shared edge: {parts}").format(parts=_("; ").join(parts))
     return Still.of(figure, caption)
 
@@ -292,7 +309,7 @@ def mesh_figure(size: int = 64, points: int = 60, seed: int = 4) -> Still:
         counts[rule] = (int((hits == 2).sum()), int((hits == 0).sum()))
         twice, never = counts[rule]
         title = _("{rule}: {twice} doubled, {never} cracks").format(
-            rule=rule, twice=twice, never=never
+            rule=rule_name(rule), twice=twice, never=never
         )
         windows.append((image, (0, size, size, 0), title))
         doubles.append(np.argwhere(hits == 2)[:, ::-1] + 0.5)

@@ -269,7 +269,7 @@ LINE_MISTAKES = (
         N_("the report's staircase"),
         N_(
             "every step of your line moves in x or in y, never both: your pixels are the lab "
-            "report's loop, whose one test `if (err2 > -dy) ... else ...` steps y only when it "
+            "report's loop, whose one test if (err2 > -dy) ... else ... steps y only when it "
             "does not step x. Each diagonal step became two, with an extra pixel in the corner: "
             "a 4-connected staircase. Test both errors, each with its own if, so that a step "
             "moves diagonally when both call for it: a line has max(|dx|, |dy|) + 1 pixels, "

@@ -69,7 +69,14 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
         lw=1.5,
         label=_("cos(2π {alias:g} x): the same samples").format(alias=alias),
     )
-    signal.plot(samples_x, samples, "o", color="0.1", ms=6, label=f"{rate:g} sample per unit")
+    signal.plot(
+        samples_x,
+        samples,
+        "o",
+        color="0.1",
+        ms=6,
+        label=_("{rate:g} sample per unit").format(rate=rate),
+    )
     signal.set_xlabel(_("x (samples)"), fontsize=8)
     signal.legend(fontsize=7, loc="upper right", ncols=3)
     signal.set_ylim(-1.25, 1.6)
@@ -77,7 +84,11 @@ def folding_figure(frequency: float = 0.8, rate: float = 1.0, length: int = 10) 
     spectrum.axvspan(0, nyquist, color="0.93")
     spectrum.axvline(nyquist, color="0.3", lw=1, ls=":")
     spectrum.annotate(
-        "Nyquist: rate / 2", (nyquist, 1.05), xytext=(4, 0), textcoords="offset points", fontsize=8
+        _("Nyquist: rate / 2"),
+        (nyquist, 1.05),
+        xytext=(4, 0),
+        textcoords="offset points",
+        fontsize=8,
     )
     spectrum.vlines(frequency, 0, 1, color=BLUE, lw=3, label=_("the signal"))
     spectrum.vlines(alias, 0, 1, color=VERMILLION, lw=3, label=_("where the samples put it"))
@@ -205,8 +216,11 @@ def bilinear_figure(x: float = 1.3, y: float = 0.9) -> Still:
         )
     axes.plot([x], [y], "X", color=VERMILLION, ms=10)
     value = float(bilinear(image, x, y))
-    terms = " + ".join(f"{w:.2f} x {image[r, c]:g}" for (c, r), w in weights.items())
-    owners = ", ".join(f"({c}, {r})" for c, r in weights)
+    terms = " + ".join(
+        _("{weight:.2f} x {value:g}").format(weight=w, value=image[r, c])
+        for (c, r), w in weights.items()
+    )
+    owners = _(", ").join(f"({c}, {r})" for c, r in weights)
     caption = _("({x:g}, {y:g}) reads {value:.4f}: {terms}, the weights of pixels {owners}").format(
         x=x, y=y, value=value, terms=terms, owners=owners
     )
@@ -286,9 +300,9 @@ def error_by_rate_figure(rates: Sequence[int] = tuple(range(1, 13)), floor_rate:
         "RMS at rates {rates}: centred {centred}; the report's {report}; "
         "centred at rate {floor_rate}: {floor:.4f}"
     ).format(
-        rates=", ".join(map(str, shown)),
-        centred=", ".join(f"{v:.4f}" for v in errors["centred"][:3]),
-        report=", ".join(f"{v:.4f}" for v in errors["the report's"][:3]),
+        rates=_(", ").join(map(str, shown)),
+        centred=_(", ").join(f"{v:.4f}" for v in errors["centred"][:3]),
+        report=_(", ").join(f"{v:.4f}" for v in errors["the report's"][:3]),
         floor_rate=floor_rate,
         floor=rmse(supersample(plate, (LAB_OUT, LAB_OUT), floor_rate), exact),
     )
@@ -359,7 +373,16 @@ def photograph_figure(rates: Sequence[int] = (1, 2, 3, 12), reference_rate: int 
     for rate in rates:
         image = supersample(photo, (64, 64), rate)
         error = rmse(image, reference)
-        windows.append((image, (0, 64, 64, 0), f"rate {rate}: RMS {error:.4f}"))
-        parts.append(f"rate {rate} {error:.4f}")
+        windows.append(
+            (
+                image,
+                (0, 64, 64, 0),
+                _("rate {rate}: RMS {error:.4f}").format(rate=rate, error=error),
+            )
+        )
+        parts.append(_("rate {rate} {error:.4f}").format(rate=rate, error=error))
     figure, _axes = pixel_figure(windows, zoom=3)
-    return Still.of(figure, f"RMS against rate {reference_rate}: " + ", ".join(parts))
+    caption = _("RMS against rate {reference_rate}: {parts}").format(
+        reference_rate=reference_rate, parts=_(", ").join(parts)
+    )
+    return Still.of(figure, caption)

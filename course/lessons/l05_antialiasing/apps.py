@@ -33,6 +33,7 @@ from course.antialias.curve_quality import (
 )
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
+from course.lessons.l05_antialiasing.measurements import WEIGHTING_LABELS
 from course.lessons.l05_antialiasing.zoom_panel import CurveWalk, ZoomPanel
 from course.metrics import rmse
 from course.widgets.base import Handle, SliderApp, format_points
@@ -47,9 +48,8 @@ __all__ = [
 ]
 
 
-# Shown through _ where they are used: the zoom app's slots, and the weightings of
-# course.antialias.WEIGHTINGS as the splat app's title names them.
-_SHOWN_NAMES = (N_("left"), N_("middle"), N_("right"), N_("count"), N_("arc length"))
+# Shown through _ where they are used: the zoom app's slots.
+_SHOWN_NAMES = (N_("left"), N_("middle"), N_("right"))
 
 #: The three variants the lesson's zoom app starts with: seed 000's three splats.
 ZOOM_PICKS = ("bilinear_zero_offset", "bilinear_corners", "bilinear_centres")
@@ -313,7 +313,11 @@ class StepApp(SliderApp):
                 value="bilinear_centres",
                 description=_("splat"),
             ),
-            "weighting": widgets.ToggleButtons(options=WEIGHTINGS, value="count"),
+            "weighting": widgets.ToggleButtons(
+                options=[(_(WEIGHTING_LABELS[name]), name) for name in WEIGHTINGS],
+                value="count",
+                description=_("weighting"),
+            ),
             "position": widgets.FloatSlider(
                 value=0.02, min=0.0, max=1.0, step=0.005, description=_("along curve")
             ),
@@ -363,7 +367,7 @@ class StepApp(SliderApp):
         self.profile_title.set_text(
             _("{method}, {weighting}: CV {cv:.1f}%, mean {mean:.2f}").format(
                 method=label_of(method),
-                weighting=_(weighting.replace("_", " ")),
+                weighting=_(WEIGHTING_LABELS[weighting]),
                 cv=100 * cv,
                 mean=self.density.mean(),
             )

@@ -229,7 +229,7 @@ def _show_splat(table: np.ndarray) -> str:
     if len(table) == 0:
         return _("no pixel lit")
     each = _("pixel ({x}, {y}) gets {weight}")
-    return ", ".join(each.format(x=int(x), y=int(y), weight=f"{w:.4g}") for x, y, w in table)
+    return _(", ").join(each.format(x=int(x), y=int(y), weight=f"{w:.4g}") for x, y, w in table)
 
 
 def _splat_explain(case: dict[str, Any], expected: np.ndarray, given: np.ndarray) -> str:
@@ -365,7 +365,7 @@ def _weights_picture(
     axes = figure.add_subplot()
     index = np.arange(len(want))
     axes.plot(index, want, "o-", color=EXPECTED, label=_("expected"), markersize=5)
-    axes.plot(index, have, "x--", color=GIVEN, label=_("yours"), markersize=6)
+    axes.plot(index, have, "x--", color=GIVEN, label=_("your result"), markersize=6)
     # Samples are counted: ticks on whole numbers only, never "sample 0.25".
     axes.xaxis.set_major_locator(MaxNLocator(integer=True))
     axes.set_xlabel(_("sample"), fontsize=8)

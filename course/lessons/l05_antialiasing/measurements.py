@@ -34,6 +34,7 @@ from course.antialias.curve_quality import (
 )
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
+from course.lessons.printed import display_width
 from course.limits import require_step_samples
 from course.metrics import rmse
 from course.widgets.base import pad
@@ -41,6 +42,7 @@ from course.widgets.picture import Still
 
 __all__ = [
     "ROLES",
+    "WEIGHTING_LABELS",
     "Table",
     "claims",
     "seed_000_renderings",
@@ -78,8 +80,9 @@ ROLES = {
     "stroke_area": (N_("the stroke's area (library)"), N_("each pixel's covered area, once")),
     AGG: (N_("Agg (matplotlib)"), N_("its outline's area, scanline by scanline")),
 }
-#: The two ways a sample's ink is weighted, by the name :func:`course.antialias.render` takes.
-_WEIGHTINGS = {"count": N_("count"), "arc_length": N_("arc length")}
+#: The two ways a sample's ink is weighted, by the name :func:`course.antialias.render` takes,
+#: as the step app's toggle, its title and :func:`step_study` show them (``_`` of the value).
+WEIGHTING_LABELS = {"count": N_("count"), "arc_length": N_("arc length")}
 
 
 @functools.cache
@@ -127,11 +130,17 @@ def variants_table() -> Table:
     splats counted at step 0.001, weighted by length at step 0.000173
     """
     names, counted, by_length, others = _variant_rows()
-    none = pad("—", 7, ">")
+    # The number columns are 7 wide, or as wide as their heading in the current language.
+    e, c = (max(7, display_width(_(heading))) for heading in ("RMSE", "CV"))
+    none_e, none_c = pad("—", e, ">"), pad("—", c, ">")
     variant, what_it_does = pad(_("variant"), 34), pad(_("what it does"), 40)
-    counted_, by_length_ = pad(_("counted"), 15, ">"), pad(_("by length"), 15, ">")
-    area_ = pad(_("area, once"), 15, ">")
-    rmse_, cv = pad(_("RMSE"), 7, ">"), pad(_("CV"), 7, ">")
+    counted_, by_length_ = pad(_("counted"), e + c + 1, ">"), pad(_("by length"), e + c + 1, ">")
+    area_ = pad(_("area, once"), e + c + 1, ">")
+    rmse_, cv = pad(_("RMSE"), e, ">"), pad(_("CV"), c, ">")
+
+    def numbers(row: dict) -> str:
+        return f"{row['rmse']:{e}.4f} {100 * row['cv']:{c - 1}.1f}%"
+
     lines = [
         _("splats counted at step {counted:g}, weighted by length at step {by_length:.3g}").format(
             counted=DEFAULT_STEP, by_length=arc_length_step(SEED_000_CUBIC)
@@ -142,14 +151,12 @@ def variants_table() -> Table:
     for name, count, length in zip(names, counted, by_length, strict=True):
         who, what = (_(text) for text in ROLES[name])
         lines.append(
-            f"{pad(who, 34)} {pad(what, 40)} {count['rmse']:7.4f} {100 * count['cv']:6.1f}% "
-            f"{length['rmse']:7.4f} {100 * length['cv']:6.1f}% {none} {none}"
+            f"{pad(who, 34)} {pad(what, 40)} {numbers(count)} {numbers(length)} {none_e} {none_c}"
         )
     for row in others:
         who, what = (_(text) for text in ROLES[row["name"]])
         lines.append(
-            f"{pad(who, 34)} {pad(what, 40)} {none} {none} {none} {none} "
-            f"{row['rmse']:7.4f} {100 * row['cv']:6.1f}%"
+            f"{pad(who, 34)} {pad(what, 40)} {none_e} {none_c} {none_e} {none_c} {numbers(row)}"
         )
     return Table("\n".join(lines))
 
@@ -312,9 +319,11 @@ def step_study(
         require_step_samples(step, "steps")
     step_ = pad(_("step"), 10)
     weighting_, end = _("weighting"), pad(_("end"), 5, ">")
-    mean, cv = pad(_("mean"), 6, ">"), pad(_("CV"), 6, ">")
+    # The CV column is 6 wide, or as wide as its heading in the current language.
+    c = max(6, display_width(_("CV")))
+    mean, cv = pad(_("mean"), 6, ">"), pad(_("CV"), c, ">")
     lines = [
-        f"{step_} {pad(weighting_, 11)} {end} {mean} {cv}   {pad(weighting_, 12)} {end} {mean} {cv}"
+        f"{step_} {pad(weighting_, 12)} {end} {mean} {cv}   {pad(weighting_, 12)} {end} {mean} {cv}"
     ]
     for step in steps:
         parts = [f"{step:<10g}"]
@@ -324,8 +333,8 @@ def step_study(
             # The curve leaves (10, 10) level and fast: columns 12..59, rows 5..19 hold it.
             emptiest = image[5:20, 12:60].sum(axis=0).min()
             parts.append(
-                f"{pad(_(_WEIGHTINGS[weighting]), 12)} {emptiest:5.2f} {ink.mean():6.2f} "
-                f"{100 * ink.std() / ink.mean():5.1f}%"
+                f"{pad(_(WEIGHTING_LABELS[weighting]), 12)} {emptiest:5.2f} {ink.mean():6.2f} "
+                f"{100 * ink.std() / ink.mean():{c - 1}.1f}%"
             )
         lines.append(" ".join(parts[:2]) + "   " + parts[2])
     return Table("\n".join(lines))

@@ -94,8 +94,12 @@ def failure_picture(case: dict[str, Any], expected: np.ndarray, given: np.ndarra
     extent = (left, left + width, top + height, top)
     panels = (
         (want, _("expected"), {"cmap": "gray", "vmin": 0.0, "vmax": 1.0}),
-        (have, _("yours"), {"cmap": "gray", "vmin": 0.0, "vmax": 1.0}),
-        (difference, _("yours minus expected"), {"cmap": "RdBu_r", "vmin": -limit, "vmax": limit}),
+        (have, _("your result"), {"cmap": "gray", "vmin": 0.0, "vmax": 1.0}),
+        (
+            difference,
+            _("your result minus expected"),
+            {"cmap": "RdBu_r", "vmin": -limit, "vmax": limit},
+        ),
     )
     step = 1 if max(width, height) <= 8 else 2
     edges = [[(c, top), (c, top + height)] for c in range(left, left + width + 1)]

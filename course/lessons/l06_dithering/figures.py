@@ -145,7 +145,7 @@ def mask_figure(size: int = 64, seed: int = 0) -> Still:
     --------
     >>> mask_figure(32)  # doctest: +NORMALIZE_WHITESPACE
     share of the power below 0.125 cycles per pixel: mask 1.67e-05, white noise 0.042
-    (2.5e+03 times less)
+    (about 2500 times less)
     """
     mask = blue_noise_mask(size, np.random.default_rng(seed))
     white = np.random.default_rng(seed + 1).random((size, size))
@@ -175,10 +175,11 @@ def mask_figure(size: int = 64, seed: int = 0) -> Still:
     chart.set_ylim(top=chart.get_ylim()[1] * 1.3)  # room for the legend above the lines
     chart.legend(fontsize=7, loc="upper left")
     blue_low, white_low = low_frequency_fraction(mask), low_frequency_fraction(white)
+    # the ratio to two significant digits, written out: 3900, not 3.9e+03
     caption = _(
         "share of the power below 0.125 cycles per pixel: mask {mask:.2e}, white noise "
-        "{white:.3f} ({ratio:.1e} times less)"
-    ).format(mask=blue_low, white=white_low, ratio=white_low / blue_low)
+        "{white:.3f} (about {ratio:g} times less)"
+    ).format(mask=blue_low, white=white_low, ratio=float(f"{white_low / blue_low:.2g}"))
     return Still.of(figure, caption)
 
 
@@ -215,7 +216,9 @@ def clumps_and_holes(patterns: Mapping[str, np.ndarray], level: float) -> Table:
         neighbours = ndimage.convolve(lit.astype(int), np.ones((3, 3), int), mode="constant")
         touching = int(np.count_nonzero(lit & (neighbours > 1)))
         hole = ndimage.distance_transform_edt(~lit).max() if lit.any() else float("inf")
-        lines.append(f"{pad(_(name), 15)}{lit.mean():6.3f}{touching:22d}{hole:20.2f}")
+        # No dot at all: the hole is the whole plane, "inf" in English.
+        shown = f"{hole:20.2f}" if np.isfinite(hole) else pad(_("inf"), 20, ">")
+        lines.append(f"{pad(_(name), 15)}{lit.mean():6.3f}{touching:22d}{shown}")
     return Table("\n".join(lines))
 
 

@@ -23,7 +23,7 @@ from course.classroom.pictures import (
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
 from course.halftone import dither
-from course.i18n import N_, _
+from course.i18n import N_, _, yes_no
 from course.lessons.l06_dithering import figures
 from course.lessons.l06_dithering.apps import GrayLevelApp, VoidAndClusterApp
 from course.lessons.printed import padded
@@ -91,12 +91,12 @@ def print_equal_to_loop(method: str, same: bool) -> None:
     --------
     >>> print_equal_to_loop("rows", True)
     method="rows" (a loop along each row, its pushes to the rows below added a whole row at
-    once): equal to the loop bit for bit: True
+    once): equal to the loop bit for bit: yes
     """
     form = _(_DIFFUSION_FORMS[method]) if method in _DIFFUSION_FORMS else ""
     print(
         _('method="{method}" ({form}): equal to the loop bit for bit: {same}').format(
-            method=method, form=form, same=same
+            method=method, form=form, same=yes_no(same)
         )
     )
 

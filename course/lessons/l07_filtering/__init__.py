@@ -6,6 +6,7 @@
   cases;
 - :mod:`.apps`: lesson 07's apps: any 3 x 3 kernel on the photograph, and repeated blurs at the
   border;
+- :mod:`.border_names`: the border rules by the names a student reads, in the lesson's language;
 - :mod:`.figures`: lesson 07's still pictures: blur and edges on the photograph, one output pixel's
   window, the border after many blurs, and the false edges zero padding draws.
 

@@ -26,6 +26,7 @@ from matplotlib.patches import Rectangle
 from course import filters, images, limits
 from course._validate import as_choice, as_float_array, as_image, as_int, as_option, describe
 from course.i18n import N_, _
+from course.lessons.l07_filtering.border_names import BORDER_LABELS, BORDER_NAMES
 from course.widgets.base import SliderApp
 from course.widgets.picture import GRAY_PIXELS, PixelPanel, bare_axes, pixel_axes
 
@@ -47,6 +48,16 @@ KERNELS = {
     "Sobel x": "-1 0 1; -2 0 2; -1 0 1",
     "Sobel y": "-1 -2 -1; 0 0 0; 1 2 1",
     "identity": "0 0 0; 0 1 0; 0 0 0",
+}
+#: The presets' names as the dropdown shows them, and "typed" for a kernel of the student's own.
+PRESET_NAMES = {
+    "box": N_("box"),
+    "Gaussian": N_("Gaussian"),
+    "sharpen": N_("sharpen"),
+    "Sobel x": N_("Sobel x"),
+    "Sobel y": N_("Sobel y"),
+    "identity": N_("identity"),
+    "typed": N_("typed"),
 }
 
 
@@ -249,7 +260,7 @@ class RepeatedBlurApp(SliderApp):
             self.wholes[border] = top.imshow(
                 self.image, **{**style, "interpolation": "antialiased"}
             )
-            self.titles[border] = top.set_title(border, fontsize=9)
+            self.titles[border] = top.set_title(_(BORDER_NAMES[border]), fontsize=9)
             bottom = bare_axes(self.figure.add_subplot(grid[1, column]))
             self.crops[border] = bottom.imshow(self._corner_of(self.image), **style)
         self.update()
@@ -289,7 +300,7 @@ class RepeatedBlurApp(SliderApp):
                 frame = _("dark frame: {depth} px deep").format(depth=depth)
             self.titles[border].set_text(
                 _("{border}, {repeats} blurs\n{edge}").format(
-                    border=repr(border), repeats=repeats, edge=edge
+                    border=_(BORDER_LABELS[border]), repeats=repeats, edge=edge
                 )
                 + "\n"
                 + frame
@@ -342,13 +353,17 @@ class KernelApp(SliderApp):
         )
         controls = {
             "preset": widgets.Dropdown(
-                options=[*KERNELS, "typed"], value=kernel, description=_("preset")
+                options=[(_(PRESET_NAMES[name]), name) for name in (*KERNELS, "typed")],
+                value=kernel,
+                description=_("preset"),
             ),
             "kernel": widgets.Textarea(
                 value=KERNELS[kernel], description=_("kernel"), continuous_update=False
             ),
             "border": widgets.Dropdown(
-                options=filters.BORDERS, value=border, description=_("border")
+                options=[(_(BORDER_NAMES[name]), name) for name in filters.BORDERS],
+                value=border,
+                description=_("border"),
             ),
         }
         height, width = self.image.shape
@@ -468,4 +483,6 @@ class KernelApp(SliderApp):
             else _("gray 0 to 1, clipped")
         )
         self.titles["filtered"].set_text(_("filtered ({scale})").format(scale=scale))
-        self.titles["corner"].set_text(_("the orange window, {border}").format(border=repr(border)))
+        self.titles["corner"].set_text(
+            _("the orange window, {border}").format(border=_(BORDER_LABELS[border]))
+        )

@@ -18,7 +18,11 @@ from matplotlib.patches import Rectangle
 from course import filters, images
 from course._validate import as_int
 from course.i18n import _
-from course.lessons.l07_filtering.apps import blurred, right_column_mean
+from course.lessons.l07_filtering.apps import (
+    blurred,
+    right_column_mean,
+)
+from course.lessons.l07_filtering.border_names import BORDER_LABELS, BORDER_NAMES
 from course.widgets.picture import Still, pixel_figure
 
 __all__ = [
@@ -170,7 +174,15 @@ def border_figure(passes: int = 20, depth: int = 16) -> Still:
     for border, result in results.items():
         ratio = result[:, -depth:].mean(axis=0) / before
         dashes, marker, colour = styles[border]
-        axes.plot(columns, ratio, ls=dashes, marker=marker, ms=4, color=colour, label=f"{border!r}")
+        axes.plot(
+            columns,
+            ratio,
+            ls=dashes,
+            marker=marker,
+            ms=4,
+            color=colour,
+            label=_(BORDER_LABELS[border]),
+        )
     axes.axhline(1.0, color="0.6", lw=0.6)
     depth_of_frame = frame_depth(results["zero"], results["replicate"])
     axes.set_title(
@@ -189,7 +201,8 @@ def border_figure(passes: int = 20, depth: int = 16) -> Still:
     axes.legend(fontsize=8, title=_("border rule"), title_fontsize=8, loc="lower left")
     figure.tight_layout()
     ratios = _(", ").join(
-        f"{ratio:.2f} ({border})" for border, ratio in ratios_at_edge(results, image).items()
+        _("{ratio:.2f} ({border})").format(ratio=ratio, border=_(BORDER_NAMES[border]))
+        for border, ratio in ratios_at_edge(results, image).items()
     )
     caption = _(
         "after {passes} blurs the face's right column is at {ratios} times its first brightness"

@@ -22,10 +22,16 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_, _
+from course.i18n import N_, _, yes_no
 from course.lessons.l07_filtering import figures
-from course.lessons.l07_filtering.apps import KERNELS, KernelApp, RepeatedBlurApp, blurred
-from course.lessons.printed import display_width, title_on_one_line
+from course.lessons.l07_filtering.apps import (
+    KERNELS,
+    PRESET_NAMES,
+    KernelApp,
+    RepeatedBlurApp,
+    blurred,
+)
+from course.lessons.printed import display_width, padded, title_on_one_line
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
@@ -46,12 +52,17 @@ def print_kernel_presets() -> None:
     for name, kernel in KERNELS.items():
         rows = [row.split() for row in kernel.split(";")]
         width = max(len(weight) for row in rows for weight in row)
-        columns.append([name, *(" ".join(weight.rjust(width) for weight in row) for row in rows)])
-    widths = [max(len(line) for line in column) for column in columns]
+        columns.append(
+            [
+                _(PRESET_NAMES[name]),
+                *(" ".join(weight.rjust(width) for weight in row) for row in rows),
+            ]
+        )
+    widths = [max(display_width(line) for line in column) for column in columns]
     for lines in zip(*columns, strict=True):
         print(
             "   ".join(
-                line.ljust(width) for line, width in zip(lines, widths, strict=True)
+                padded(line, width) for line, width in zip(lines, widths, strict=True)
             ).rstrip()
         )
 
@@ -62,9 +73,9 @@ def print_loop_equals_fast(name: str, equal: bool) -> None:
     Examples
     --------
     >>> print_loop_equals_fast("blur", True)
-    blur: loop == fast: True
+    blur: loop == fast: yes
     """
-    print(_("{name}: loop == fast: {equal}").format(name=name, equal=equal))
+    print(_("{name}: loop == fast: {equal}").format(name=name, equal=yes_no(equal)))
 
 
 def print_uniform_filter(mode: str, border: str, same: bool) -> None:
@@ -73,11 +84,12 @@ def print_uniform_filter(mode: str, border: str, same: bool) -> None:
     Examples
     --------
     >>> print_uniform_filter("mirror", "reflect", True)
-    uniform_filter   mirror against 'reflect': equal below 1e-12: True
+    uniform_filter   mirror against 'reflect': equal below 1e-12: yes
     """
+    # {pad} right-aligns the mode, so that a translation can quote it as code: mode='mirror'.
     print(
-        _("uniform_filter {mode:>8} against '{border}': equal below 1e-12: {same}").format(
-            mode=mode, border=border, same=same
+        _("uniform_filter {pad}{mode} against '{border}': equal below 1e-12: {same}").format(
+            pad=" " * max(0, 8 - len(mode)), mode=mode, border=border, same=yes_no(same)
         )
     )
 
@@ -88,13 +100,13 @@ def print_report_rule_against_scipy(inside: bool, frame: float) -> None:
     Examples
     --------
     >>> print_report_rule_against_scipy(True, 0.0881)
-    the report's rule against scipy's default: inside below 1e-12: True, on the frame up to 0.088
+    the report's rule against scipy's default: inside below 1e-12: yes, on the frame up to 0.088
     """
     print(
         _(
             "the report's rule against scipy's default: inside below 1e-12: {inside}, "
             "on the frame up to {frame:.3f}"
-        ).format(inside=inside, frame=frame)
+        ).format(inside=yes_no(inside), frame=frame)
     )
 
 
@@ -104,11 +116,11 @@ def print_sobel_against_scipy(same: bool) -> None:
     Examples
     --------
     >>> print_sobel_against_scipy(True)
-    sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: True
+    sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: yes
     """
     print(
         _("sobel against hypot(ndimage.sobel): equal below 1e-12 everywhere: {same}").format(
-            same=same
+            same=yes_no(same)
         )
     )
 
@@ -134,10 +146,10 @@ def print_largest_magnitude(largest: float) -> None:
     Examples
     --------
     >>> print_largest_magnitude(20**0.5)
-    largest 4.4721 = sqrt(20) 4.4721, on
+    largest 4.4721 (sqrt(20) = 4.4721), on this window:
     """
     print(
-        _("largest {largest:.4f} = sqrt(20) {root:.4f}, on").format(
+        _("largest {largest:.4f} (sqrt(20) = {root:.4f}), on this window:").format(
             largest=largest, root=np.sqrt(20)
         )
     )

@@ -26,7 +26,7 @@ from course._validate import (
     describe,
     require_finite,
 )
-from course.i18n import _
+from course.i18n import N_, _
 from course.poisson.problem import build_clone_problem
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import rounding_level
@@ -41,6 +41,10 @@ __all__ = [
 # Sweeps the slider stops at, roughly three per decade up to the lab's 8000.
 SWEEP_STOPS = (0, 1, 3, 10, 30, 100, 300, 1000, 3000, 8000)
 MARGIN = 12  # background pixels shown around the region
+
+
+#: The iterative methods' names, as the dropdown and the caption show them.
+METHOD_NAMES = {"jacobi": N_("Jacobi"), "gauss_seidel": N_("Gauss-Seidel"), "sor": N_("SOR")}
 
 
 class PoissonIterationApp(SliderApp):
@@ -77,7 +81,7 @@ class PoissonIterationApp(SliderApp):
         self._runs: dict[str, tuple[Any, int]] = {}
         controls = {
             "method": widgets.Dropdown(
-                options=[("Jacobi", "jacobi"), ("Gauss-Seidel", "gauss_seidel"), ("SOR", "sor")],
+                options=[(_(name), method) for method, name in METHOD_NAMES.items()],
                 value="jacobi",
                 description=_("method"),
             ),
@@ -149,13 +153,12 @@ class PoissonIterationApp(SliderApp):
         self.picture.set_data(self.composite(solution))
         self.error_image.set_data(self.error_map(solution))
         residual = self.problem.residual(solution)
-        names = {"jacobi": "Jacobi", "gauss_seidel": "Gauss-Seidel", "sor": "SOR"}
         self.caption.set_text(
             _(
                 "{method}, {sweeps} sweeps: residual {residual}, "
                 "error up to {error:.1f} grey levels (from {initial:.1f})"
             ).format(
-                method=names[method],
+                method=_(METHOD_NAMES[method]),
                 sweeps=sweeps,
                 residual=rounding_level(residual, spec=".2g"),
                 error=self._error(solution),

@@ -134,7 +134,7 @@ def correction_figure() -> Still:
         1,
     )
     edge = ~problem.region
-    means = ", ".join(f"{value:.2f}" for value in g[problem.region].mean(axis=0))
+    means = _(", ").join(f"{value:.2f}" for value in g[problem.region].mean(axis=0))
     caption = _(
         "g's mean over the region (R, G, B): {means}; from {low:.2f} to {high:.2f} on the ring"
     ).format(means=means, low=ring[edge].min(), high=ring[edge].max())
@@ -158,7 +158,7 @@ def colour_figure() -> Still:
     exact = poisson.solve(problem)
     shift = (exact - plane)[problem.region].mean(axis=0)
     outside = ((exact < 0) | (exact > 1))[problem.region].mean()
-    shifts = ", ".join(f"{value:+.2f}" for value in shift)
+    shifts = _(", ").join(f"{value:+.2f}" for value in shift)
     figure, _panels = pixel_figure(
         [
             (naive[window], extent, _("pasted")),

@@ -20,10 +20,11 @@ from course.classroom.pictures import (
     still_picture,
 )
 from course.classroom.registry import DragMove, Landmark, Lesson, Picture, SliderMove
-from course.i18n import N_, _
+from course.i18n import N_, _, yes_no
 from course.lessons.l08_poisson import figures
 from course.lessons.l08_poisson.apps import MARGIN, CloneApp, PoissonIterationApp, half_size
 from course.lessons.l08_poisson.convergence import convergence_figure
+from course.lessons.printed import padded
 from course.widgets.base import SliderApp
 
 UNCHECKED = True  # see the module docstring
@@ -40,15 +41,20 @@ def print_sor_omega(omega: float) -> None:
     print(_("SOR's omega on this region: {omega:.2f}").format(omega=omega))
 
 
+#: The exact solvers' names, as :func:`course.poisson.solve` takes them, in the student's language.
+SOLVER_NAMES = {"dst": N_("dst"), "direct": N_("direct"), "capacitance": N_("capacitance")}
+
+
 def print_residual_below(method: str, below: bool) -> None:
     """Print whether the solver ``method``'s residual is below 1e-10.
 
     Examples
     --------
     >>> print_residual_below("dst", True)
-             dst: residual below 1e-10: True
+             dst: residual below 1e-10: yes
     """
-    print(_("{method:>12}: residual below 1e-10: {below}").format(method=method, below=below))
+    name = padded(_(SOLVER_NAMES[method]) if method in SOLVER_NAMES else method, 12, ">")
+    print(_("{method}: residual below 1e-10: {below}").format(method=name, below=yes_no(below)))
 
 
 def print_lab_clone_time(per_pixel: float, pixels: int = 30302, sweeps: int = 8000) -> None:

@@ -1,5 +1,6 @@
 """What the tests of the Chinese figures share: every figure a ``Still`` is made of,
-recorded and drawn in Chinese with a missing glyph as an error.
+recorded and drawn in Chinese with a missing glyph as an error; and the scans' report of the
+Latin words they find (:func:`latin_report`, :func:`listed`).
 
 A figure module's test draws a few of its cheapest figures under
 ``course.use_language("zh-CN")`` (and English again after, whatever happens): every
@@ -18,6 +19,7 @@ from contextlib import contextmanager
 import pytest
 from matplotlib.text import Text
 
+from course.classroom.chinese_text import Shown
 from course.i18n import language
 from course.widgets.picture import Still
 
@@ -58,3 +60,17 @@ def check_chinese_figure(
     # without a bold face is logged too ("findfont: Failed to find font weight bold").
     logged = [r.getMessage() for r in caplog.records]
     assert [m for m in logged if "does not have a glyph" in m or "findfont" in m] == []
+
+
+def listed(found: list[str]) -> str:
+    return f"{len(found)} found:\n" + "\n".join(found)
+
+
+def latin_report(texts: list[Shown], names: frozenset[str] = frozenset()) -> list[str]:
+    found = []
+    for shown in texts:
+        words = shown.latin(names)
+        if words:
+            excerpt = shown.text.strip().replace("\n", " ")[:90]
+            found.append(f"{shown.lesson} {shown.where}: {sorted(set(words))} in «{excerpt}»")
+    return sorted(set(found))

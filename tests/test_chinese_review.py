@@ -11,26 +11,13 @@ from __future__ import annotations
 
 import ipywidgets as widgets
 import pytest
+from chinese import latin_report, listed
 
 from course.classroom import chinese_review as review
 from course.classroom import chinese_text as text
 
 LESSONS = review.lesson_numbers()
 TWINS = sorted(path.name[:2] for path in (text.NOTEBOOKS / "zh-CN").glob("[0-9][0-9]_*.ipynb"))
-
-
-def listed(found: list[str]) -> str:
-    return f"{len(found)} found:\n" + "\n".join(found)
-
-
-def latin_report(texts: list[text.Shown], names: frozenset[str] = frozenset()) -> list[str]:
-    found = []
-    for shown in texts:
-        words = shown.latin(names)
-        if words:
-            excerpt = shown.text.strip().replace("\n", " ")[:90]
-            found.append(f"{shown.lesson} {shown.where}: {sorted(set(words))} in «{excerpt}»")
-    return sorted(set(found))
 
 
 def test_output_text_is_what_jupyterlab_shows():

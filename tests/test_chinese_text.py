@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from babel.messages.pofile import read_po
+from chinese import latin_report, listed
 from matplotlib.text import Annotation
 
 from course.check.answers import show_value
@@ -29,20 +30,6 @@ from course.lessons.l08_poisson import convergence
 from course.lessons.l08_poisson import lesson as l08
 from course.lessons.l08_poisson.apps import PoissonIterationApp
 from course.lessons.l08_poisson.convergence import convergence_figure, lab_sweeps
-
-
-def listed(found: list[str]) -> str:
-    return f"{len(found)} found:\n" + "\n".join(found)
-
-
-def latin_report(texts: list[text.Shown], names: frozenset[str] = frozenset()) -> list[str]:
-    found = []
-    for shown in texts:
-        words = shown.latin(names)
-        if words:
-            excerpt = shown.text.strip().replace("\n", " ")[:90]
-            found.append(f"{shown.lesson} {shown.where}: {sorted(set(words))} in «{excerpt}»")
-    return sorted(set(found))
 
 
 @pytest.fixture(scope="module")

@@ -180,23 +180,9 @@ class CommandRecorder(RendererBase):
         raise NotDrawable("TeX")
 
     def draw_path(self, gc: Any, path: Any, transform: Any, rgbFace: Any = None) -> None:
-        style = self._style(gc, rgbFace)
-        if style is None:
-            return
-        # As Agg does: in picture pixels (y down), NaNs dropped, snapped to the pixel
-        # grid where Agg snaps, long unfilled lines simplified.
-        cleaned = path.cleaned(
-            transform=transform + self._down,
-            remove_nans=True,
-            snap=gc.get_snap(),
-            stroke_width=style["width"] if style["stroke"] else 0.0,
-            simplify=path.should_simplify and rgbFace is None,
-            curves=True,
-        )
-        vertices, codes = cleaned.vertices[:-1], cleaned.codes[:-1]  # without the STOP
-        if len(codes) == 0:
-            return
-        self.commands.append({"path": self._add(vertices, codes), **style})
+        paint = self.path_paint(gc, transform, rgbFace)
+        if paint is not None:
+            self.add_path(paint, path)
 
     def draw_markers(
         self,
@@ -207,9 +193,51 @@ class CommandRecorder(RendererBase):
         trans: Any,
         rgbFace: Any = None,
     ) -> None:
+        paint = self.marker_paint(gc, marker_path, marker_trans, trans, rgbFace)
+        if paint is not None:
+            self.add_markers(paint, path)
+
+    # --- a call's paint, kept by a replay for the next steps ----------------
+    #
+    # A call's command depends on its path and on what ``gc``, the transforms and the
+    # face say. A moving line (``LineReplay``) is drawn with the same ``gc`` and transform
+    # at every step of a drag: they are read once into a *paint*, and each step only
+    # makes the command from the line's new vertices (``add_path``, ``add_markers``).
+
+    def path_paint(self, gc: Any, transform: Any, rgbFace: Any = None) -> tuple | None:
+        """What :meth:`draw_path` reads from all but the path; None if it draws nothing."""
         style = self._style(gc, rgbFace)
         if style is None:
+            return None
+        to_picture = (transform + self._down).frozen()  # picture pixels, y down
+        stroke_width = style["width"] if style["stroke"] else 0.0
+        return style, to_picture, gc.get_snap(), stroke_width, rgbFace is None
+
+    def add_path(self, paint: tuple, path: Any) -> None:
+        """Record ``path`` drawn with ``paint`` (:meth:`path_paint`)."""
+        style, to_picture, snap, stroke_width, unfilled = paint
+        # As Agg does: in picture pixels (y down), NaNs dropped, snapped to the pixel
+        # grid where Agg snaps, long unfilled lines simplified.
+        cleaned = path.cleaned(
+            transform=to_picture,
+            remove_nans=True,
+            snap=snap,
+            stroke_width=stroke_width,
+            simplify=path.should_simplify and unfilled,
+            curves=True,
+        )
+        vertices, codes = cleaned.vertices[:-1], cleaned.codes[:-1]  # without the STOP
+        if len(codes) == 0:
             return
+        self.commands.append({"path": self._add(vertices, codes), **style})
+
+    def marker_paint(
+        self, gc: Any, marker_path: Any, marker_trans: Any, trans: Any, rgbFace: Any = None
+    ) -> tuple | None:
+        """What :meth:`draw_markers` reads from all but the places; None if it draws nothing."""
+        style = self._style(gc, rgbFace)
+        if style is None:
+            return None
         # As Agg places a marker: its centre on a whole pixel, its shape snapped to the
         # pixel grid where Agg snaps it, else moved to the centre of that pixel.
         local = marker_trans + Affine2D().scale(1.0, -1.0)
@@ -221,13 +249,18 @@ class CommandRecorder(RendererBase):
             curves=True,
         )
         shape = marker.vertices[:-1] + (0.0 if snap else 0.5)
-        places = (trans + self._down).transform(path.vertices)
+        return style, shape, marker.codes[:-1], (trans + self._down).frozen()
+
+    def add_markers(self, paint: tuple, path: Any) -> None:
+        """Record the markers of ``paint`` (:meth:`marker_paint`) at ``path``'s vertices."""
+        style, shape, codes, to_picture = paint
+        places = to_picture.transform(path.vertices)
         places = np.floor(places[np.isfinite(places).all(axis=1)] + 0.5)
         if len(places) == 0 or len(shape) == 0:
             return
         self.commands.append(
             {
-                "marker": self._add(shape, marker.codes[:-1]),
+                "marker": self._add(shape, codes),
                 "at": self._add(places, np.full(len(places), MatplotlibPath.MOVETO)),
                 **style,
             }

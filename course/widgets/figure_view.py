@@ -19,10 +19,12 @@ import json
 from typing import Any
 
 import numpy as np
+from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
+from matplotlib.text import Text
 from PIL import Image as PILImage
 
 from course.i18n import _
@@ -30,6 +32,7 @@ from course.widgets.browser_drawing import CommandRecorder, NotDrawable
 from course.widgets.line_replay import LineReplay, empty_line
 from course.widgets.picture import Picture, png_bytes
 from course.widgets.text_cache import GlyphCache
+from course.widgets.text_replay import TextReplay
 
 __all__ = ["PATCH_GAP", "FigureView"]
 
@@ -74,7 +77,7 @@ class FigureView:
         self._backdrop_sent = False
         self._recorder: CommandRecorder | None = None
         self._drawn: list[bytes] | None = None  # the drawing's buffers the browser shows
-        self._command_replays: dict[Line2D, LineReplay | None] = {}
+        self._command_replays: dict[Artist, LineReplay | TextReplay | None] = {}
         #: True while the browser waits for the picture of its pointer message: the next
         #: patch tells it the picture is drawn (``"drawn": true``), and clears this.
         self.awaited = False
@@ -218,6 +221,8 @@ class FigureView:
                     continue
                 if isinstance(artist, Line2D):  # matplotlib's calls, replayed at later steps
                     replays[artist] = LineReplay.record(artist, recorder)
+                elif isinstance(artist, Text):  # its commands, moved with it at later steps
+                    replays[artist] = TextReplay.record(artist, recorder)
                 else:
                     artist.draw(recorder)
         except NotDrawable:

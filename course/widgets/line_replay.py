@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.path import Path as MatplotlibPath
 
@@ -118,6 +119,9 @@ class LineReplay:
             if call[0] == "path" and path is not data:
                 return None
             calls.append(call)
+        if hasattr(renderer, "path_paint"):  # browser_drawing.CommandRecorder
+            painted = (_painted(renderer, call) for call in calls)
+            calls = [call for call in painted if call[1] is not None]  # None: draws nothing
         return cls(line, calls, style) if calls else None
 
     def draw(self, renderer: Any) -> bool:
@@ -125,21 +129,70 @@ class LineReplay:
         line = self.line
         if _line_style(line) != self.style:
             return False
-        if line._invalidx or line._invalidy:  # as Line2D.draw: the path from the new data
-            line.recache()
-        path = line._path
-        if len(path.vertices) == 0 or line._subslice:
+        # A CommandRecorder's paints need only the vertices; Agg's calls, the line's path.
+        path = _fresh_path(line) if self.calls[0][0].endswith("paint") else None
+        if path is None:
+            if line._invalidx or line._invalidy:  # as Line2D.draw: the path from the new data
+                line.recache()
+            if line._subslice:
+                return False
+            path = line._path
+        if len(path.vertices) == 0:
             return False
         for call in self.calls:
-            if call[0] == "path":
+            kind = call[0]
+            if kind == "path":
                 _, gc, _, transform, face = call
                 renderer.draw_path(gc, path, transform, face)
-            else:
+            elif kind == "markers":
                 _, gc, marker_path, marker_trans, _, trans, face = call
                 points = MatplotlibPath._fast_from_codes_and_verts(path.vertices, None, path)
                 renderer.draw_markers(gc, marker_path, marker_trans, points, trans, face)
+            elif kind == "path paint":
+                renderer.add_path(call[1], path)
+            else:  # "markers paint"
+                renderer.add_markers(call[1], path)
         line.stale = False
         return True
+
+
+def _fresh_path(line: Line2D) -> MatplotlibPath | None:
+    """The path ``Line2D.recache`` would build of ``line``'s new data, where that is all it does.
+
+    That is, for data that are 1-D float64 arrays or lists of floats, of the
+    same length and at most 1000 points (no subslicing to the view):
+    ``recache`` converts units (none for floats) and stacks them. The line
+    is left as ``set_data`` left it: its next full draw recaches it itself.
+    None when ``recache`` must run.
+    """
+    if not (line._invalidx or line._invalidy):
+        return None  # recached already
+    x, y = _floats(line._xorig), _floats(line._yorig)
+    if x is None or y is None or not len(x) == len(y) <= 1000:
+        return None
+    return MatplotlibPath(np.column_stack((x, y)))
+
+
+def _floats(data: Any) -> np.ndarray | None:
+    """``data`` as ``recache`` reads it, if a 1-D float64 array or a short list of floats."""
+    if type(data) is np.ndarray:
+        return data if data.dtype == np.float64 and data.ndim == 1 else None
+    if type(data) is list and len(data) <= 8 and all(isinstance(v, float) for v in data):
+        return np.array(data)
+    return None
+
+
+def _painted(recorder: Any, call: tuple) -> tuple:
+    """A recorded call as the paint a ``CommandRecorder`` reads from its ``gc`` and transforms.
+
+    The browser's commands of a call depend on the line's data only through
+    its vertices: what the rest says is read once, not at every step.
+    """
+    if call[0] == "path":
+        _, gc, _, transform, face = call
+        return ("path paint", recorder.path_paint(gc, transform, face))
+    _, gc, marker_path, marker_trans, _, trans, face = call
+    return ("markers paint", recorder.marker_paint(gc, marker_path, marker_trans, trans, face))
 
 
 def empty_line(artist: Any) -> bool:

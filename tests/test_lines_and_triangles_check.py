@@ -520,7 +520,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
     assert str(backwards).startswith(
         "未通过 draw_line：第 1 个用例未通过\n  输入：p0=(2, 3), p1=(9, 5)"
     )
-    assert "这是一种典型错误（画反了方向）。你的像素是从 p1 画到 p0 的" in str(backwards)
+    assert "典型错误：画反了方向。你的像素是从 p1 画到 p0 的" in str(backwards)
     assert backwards.mistake == "drawn backwards"  # the name stays an identifier
     staircase = str(check.draw_line(separate_steps))
     assert "多了 2 个，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase

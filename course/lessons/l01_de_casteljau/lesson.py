@@ -18,7 +18,7 @@ from course.i18n import N_, _, yes_no
 from course.images import EXAMPLE_POINTS, SEED_000_CUBIC
 from course.lessons.l01_de_casteljau import figures
 from course.lessons.l01_de_casteljau.apps import DeCasteljauApp
-from course.lessons.printed import padded
+from course.lessons.printed import degree_numeral, padded
 from course.widgets.base import SliderApp, parse_points
 from course.widgets.picture import Still
 
@@ -107,7 +107,7 @@ def print_recursion_error(error: RecursionError) -> None:
     degree, calls, limit = (int(number) for number in found.groups())
     print(
         _("de_casteljau_recursive: a degree-{degree} curve needs {calls} nested calls.").format(
-            degree=degree, calls=calls
+            degree=degree_numeral(degree), calls=calls
         )
     )
     print(

@@ -6,6 +6,7 @@ import graded_draws
 import numpy as np
 import pytest
 
+from course.i18n import language
 from course.lessons.l08_poisson import check, mistakes
 from course.poisson import correction_boundary
 
@@ -390,6 +391,13 @@ def test_a_right_count_with_a_wrong_g_says_the_count_is_right():
     assert "the number of sweeps is right (52); g is not" in result.message
     assert "sweeps: expected 52, given 52" not in result.message
     assert "largest difference in g at [row, column, channel] [2, 4, 1]" in result.message
+
+
+def test_the_place_of_the_largest_difference_reads_as_rows_and_columns_in_chinese():
+    with language("zh-CN"):
+        result = check.jacobi_solve(each_channel_on_its_own(max))
+    assert "g 中差别最大的位置是第 2 行第 4 列的通道 1，期望 " in result.message
+    assert "[行" not in result.message and "[2, 4, 1]" not in result.message
 
 
 def test_the_count_returned_first_is_named_and_g_is_not_printed():

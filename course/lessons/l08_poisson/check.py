@@ -313,9 +313,17 @@ def _sweep_difference(expected: Any, given: Any) -> str:
                 "{expected}, given {given}"
             )
         )
+        # "[2, 4]" in English; the catalog may spell the place out ("第 2 行第 4 列").
+        where = (
+            _("[{row}, {column}]").format(row=int(worst[0]), column=int(worst[1]))
+            if g.ndim == 2
+            else _("[{row}, {column}, {channel}]").format(
+                row=int(worst[0]), column=int(worst[1]), channel=int(worst[2])
+            )
+        )
         parts.append(
             place.format(
-                where=list(map(int, worst)),
+                where=where,
                 expected=f"{want_g[worst]:.6g}",
                 given=f"{g[worst]:.6g}",
             )

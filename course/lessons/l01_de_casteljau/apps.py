@@ -17,7 +17,8 @@ from matplotlib.lines import Line2D
 from matplotlib.transforms import IdentityTransform
 
 from course._validate import as_app_points, as_int, as_unit
-from course.curves.bezier import de_casteljau, de_casteljau_levels
+from course.curves._bezier_fast import de_casteljau_chunked
+from course.curves.bezier import de_casteljau_levels
 from course.i18n import _
 from course.images import EXAMPLE_POINTS
 from course.lessons.printed import degree_numeral
@@ -215,7 +216,8 @@ class DeCasteljauApp(SliderApp):
                 line.set_data([], [])
         point = levels[-1][0]
         self.point_marker.set_data([point[0]], [point[1]])
-        traced = de_casteljau(points, np.linspace(0.0, t, _CURVE_SAMPLES))
+        # The points were validated as they were read: the unchecked kernel, at every step.
+        traced = de_casteljau_chunked(points, np.linspace(0.0, t, _CURVE_SAMPLES))
         self.traced.set_data(traced[:, 0], traced[:, 1])
         start = _("degree {degree}, t = {t:.2f}: B(t) = ").format(
             degree=degree_numeral(len(points) - 1), t=t
@@ -232,7 +234,7 @@ class DeCasteljauApp(SliderApp):
         """New control points: the whole curve, the labels, and the view if they left it."""
         self.points = np.array(points, dtype=float)
         self._drawn_points = self.points.copy()
-        curve = de_casteljau(points, np.linspace(0.0, 1.0, _CURVE_SAMPLES))
+        curve = de_casteljau_chunked(points, np.linspace(0.0, 1.0, _CURVE_SAMPLES))
         self.full_curve.set_data(curve[:, 0], curve[:, 1])
         for index, label in enumerate(self.labels):
             label.set_visible(index < len(points))

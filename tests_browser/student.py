@@ -122,6 +122,23 @@ def wait_for_new_picture(image: Locator, old_src: str, settle: float = 0.8) -> N
     raise AssertionError("the picture kept changing for 60 s after the key presses")
 
 
+def wait_for_picture_like(image: Locator, expected: np.ndarray, patience: float = 30) -> np.ndarray:
+    """The picture once it is ``expected``'s, or once it stayed the same for ``patience`` s."""
+    shown, src = read_picture(image), image.get_attribute("src")
+    since = time.monotonic()
+    while differing_share(shown, expected) > DIFFERING_SHARE:
+        if time.monotonic() - since > patience:
+            break
+        time.sleep(0.2)
+        now = image.get_attribute("src")
+        if now != src:
+            image.page.wait_for_function(
+                "image => image.complete && image.naturalWidth > 0", arg=image.element_handle()
+            )
+            shown, src, since = read_picture(image), now, time.monotonic()
+    return shown
+
+
 _SCROLLER = """() => {
     // The element that scrolls the notebook: the tallest one that overflows and may scroll.
     let best = document.scrollingElement;
@@ -281,6 +298,11 @@ def move_sliders_like_a_student(page: Page, spec: SliderMove, folder: Path, stem
     )
     for step, keys in enumerate(spec.moves, start=1):
         move = press_on_slider(app, control, keys, value)
+        # A busy machine may draw the last key's picture after a pause longer than the
+        # settling time: the picture the library draws, or, once it stops coming, the
+        # last one (which the checks below then judge).
+        expected = library_picture(spec, move.value, landmarks=False)
+        move.after = wait_for_picture_like(app.locator("img.widget-image").first, expected)
         value = move.value
         which = f"-app{spec.app}" if spec.app else ""
         name = f"{stem}{which}-move{step}-{key_names(keys)}-{spec.control}={move.value:g}"

@@ -474,8 +474,8 @@ def test_hints_and_a_pass_in_chinese_and_english_after(monkeypatch):
     # Chinese steps join without a space after the full stop.
     assert text.startswith("dithering_ordered 的提示：看看输出的大小")
     assert "以及比较本身。每个输入像素变成一个 3 × 3 的单元" in text
-    assert passed == "通过 double：全部 3 个用例通过"
-    assert "第 1 个用例未通过" in wrong and "  期望的形状是 ()，你的结果是 (1,)" in wrong
+    assert passed == "double 通过：3 个用例全部正确"
+    assert "第 1 个用例结果错误" in wrong and "  期望的形状是 ()，你的结果是 (1,)" in wrong
     assert str(run(lambda x: 2 * x)) == "PASS double: all 3 cases pass"
 
 

@@ -133,7 +133,7 @@ def test_the_course_map_in_chinese_shows_chinese_lessons_handouts_and_guide():
         outcome = lessons()["08"].outcomes[0]
         title = HANDOUTS[0].title
     assert shown.startswith("### 练习怎么做")
-    assert "| 课 | 学完你能够 | 它解答的讲义任务 | 时长 |" in shown
+    assert "| 课 | 学完你能够 | 对应的讲义任务 | 时长 |" in shown
     assert "[第 01 课 · " in shown and "60 分钟" in shown
     assert "用反复的线性插值，手算贝塞尔曲线上的一个点" in shown
     # Each lesson's row: its title, what it teaches and its handout task, in Chinese.

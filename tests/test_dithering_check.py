@@ -130,7 +130,7 @@ def test_both_checkers_report_in_chinese(in_chinese):
     assert result.picture is not None  # its titles in Chinese, every glyph in the font
     assert not [w for w in caught if "missing from font" in str(w.message)]
     ordered = str(result)
-    assert ordered.startswith("未通过 dithering_ordered：第 1 个用例未通过\n  输入：gray=")
+    assert ordered.startswith("dithering_ordered 未通过：第 1 个用例结果错误\n  输入：gray=")
     assert "你的输出含有这些值：0, 255。本课的输入是 [0, 1] 内的灰度，" in ordered
     assert "输出只能是 0（暗）或 1（亮）" in ordered
     assert "典型错误：用 0 和 255 代替了 0 和 1。" in ordered

@@ -288,7 +288,7 @@ def in_chinese(monkeypatch):
 
 def test_blur_and_edge_report_in_chinese(in_chinese):
     blurred = str(check.blur(lambda image: image))
-    assert blurred.startswith("未通过 blur：第 1 个用例未通过\n  输入：image=")
+    assert blurred.startswith("blur 未通过：第 1 个用例结果错误\n  输入：image=")
     assert (
         "个像素不同；第一个错误的像素是 (x, y) = (0, 0)，在边界上。但图像内部也有像素不对"
         in blurred

@@ -518,12 +518,12 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
         precomputed(lambda p0, p1: line(p0, p1)[::-1].tolist(), check._LINE_CASES)
     )
     assert str(backwards).startswith(
-        "未通过 draw_line：第 1 个用例未通过\n  输入：p0=(2, 3), p1=(9, 5)"
+        "draw_line 未通过：第 1 个用例结果错误\n  输入：p0=(2, 3), p1=(9, 5)"
     )
     assert "典型错误：画反了方向。你的像素是从 p1 画到 p0 的" in str(backwards)
     assert backwards.mistake == "drawn backwards"  # the name stays an identifier
     staircase = str(check.draw_line(separate_steps))
-    assert "多了 2 个，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase
+    assert "多了 2 个像素，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase
     report = str(check.draw_line(the_reports_loop))
     assert "你画出的像素和实验报告里的循环完全一样。那个循环只有一个判断" in report
     one = str(check.draw_triangle_filled(lambda p0, p1, p2: [p0]))
@@ -533,7 +533,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
         raise NotImplementedError
 
     assert str(check.draw_line(stub)).startswith(
-        "未通过 draw_line：还没有写，你的函数抛出了 NotImplementedError"
+        "draw_line 未通过：还没有写，你的函数抛出了 NotImplementedError"
     )
     refused = str(check.draw_line(lambda p0, p1: line(p0, p1).tolist()))
     assert "你的函数调用了课程库自己的答案 course.raster.line" in refused

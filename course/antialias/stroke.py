@@ -131,26 +131,34 @@ def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, n
     offset = half * s.normal[:, None, :] * sign[None, :, None]
     a = s.start[:, None, :] + offset + begin[..., None] * s.unit[:, None, :]
     b = s.start[:, None, :] + offset + finish[..., None] * s.unit[:, None, :]
-    starts = [a[~consumed[:, 0], 0], b[~consumed[:, 1], 1]]  # side 1 runs backwards
-    ends = [b[~consumed[:, 0], 0], a[~consumed[:, 1], 1]]
     rounded = ~gentle & ~cusp
-    for side in (0, 1):
-        link_starts, link_ends = _links(
-            s, joins, side, a, b, consumed[:, side], rounded, half, doubtful
-        )
-        starts += link_starts
-        ends += link_ends
+    links = [
+        _links(s, joins, side, a, b, consumed[:, side], rounded, half, doubtful) for side in (0, 1)
+    ]
     open_end = np.flatnonzero(s.next < 0)
     open_start = np.flatnonzero(s.prev < 0)
+    # Every arc of the outline in one batch of chords: the outer sides of
+    # round joins (side 0, side 1), then open ends, open starts and dots.
     arcs = [
+        links[0][2],
+        links[1][2],
         (s.end[open_end], s.normal[open_end], np.full(len(open_end), -np.pi)),
         (s.start[open_start], -s.normal[open_start], np.full(len(open_start), -np.pi)),
         (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi)),
     ]
-    for arc_centre, arc_normal, arc_sweep in arcs:
-        chord_starts, chord_ends = _arc(arc_centre, arc_normal, arc_sweep, half)
-        starts.append(chord_starts)
-        ends.append(chord_ends)
+    centre, normal, sweep = (np.concatenate(part) for part in zip(*arcs, strict=True))
+    chord_starts, chord_ends, count = _arc(centre, normal, sweep, half)
+    groups = np.cumsum([0, len(arcs[0][2]), len(arcs[1][2])])
+    cut = np.concatenate([[0], np.cumsum(count)])[groups]
+    chords = [slice(cut[0], cut[1]), slice(cut[1], cut[2]), slice(cut[2], None)]
+    # The edges in the order they were always drawn: the signed areas add up alike.
+    starts = [a[~consumed[:, 0], 0], b[~consumed[:, 1], 1]]  # side 1 runs backwards
+    ends = [b[~consumed[:, 0], 0], a[~consumed[:, 1], 1]]
+    for side in (0, 1):
+        starts += [*links[side][0], chord_starts[chords[side]]]
+        ends += [*links[side][1], chord_ends[chords[side]]]
+    starts.append(chord_starts[chords[2]])
+    ends.append(chord_ends[chords[2]])
     return np.concatenate(starts), np.concatenate(ends), doubtful
 
 
@@ -164,24 +172,27 @@ def _links(
     rounded: np.ndarray,
     half: float,
     doubtful: np.ndarray,
-) -> tuple[list[np.ndarray], list[np.ndarray]]:
+) -> tuple[list[np.ndarray], list[np.ndarray], tuple[np.ndarray, ...]]:
     """What joins each offset edge on ``side`` to the next one that is drawn.
 
     Usually nothing (a mitre or a cut: the edges meet), an arc around the
     vertex (the outer side of a round join) or two edges through the vertex.
     Anything else is a join the cutting left inconsistent: a straight
     connector keeps the outline closed and its segments are marked doubtful.
+    Returns the straight edges' starts and ends, and the arcs (centre, normal,
+    sweep) for :func:`_arc`, drawn with all the others at once.
     """
     drawn = np.flatnonzero(~consumed)
     following = _walk(s.next, consumed, drawn)
     linked = following >= 0
     p, q = drawn[linked], following[linked]
-    there, here = b[p, side], a[q, side]  # p's edge ends, q's begins
+    there, here = b[:, side][p], a[:, side][q]  # p's edge ends, q's begins
     join = joins.join_of_end[p]
     single = s.next[p] == q
     arc = single & rounded[join] & (joins.inner[join] != side)
     via = single & joins.through[join] & (joins.inner[join] == side)
-    scale = 1e-9 * np.maximum(1.0, np.abs(there).max(axis=1))
+    # max(|x|, |y|) by columns: numpy's reduction over an axis of two is slow.
+    scale = 1e-9 * np.maximum(1.0, np.maximum(np.abs(there[:, 0]), np.abs(there[:, 1])))
     apart = ~arc & ~via & (np.hypot(*(there - here).T) > scale)
     doubtful[p[apart]] = doubtful[q[apart]] = True
     vertex = s.end[p]
@@ -193,8 +204,7 @@ def _links(
     centre = vertex[arc]
     if side == 1:  # side 1 runs backwards: from q's edge to p's
         first, second = second, first
-    chord_starts, chord_ends = _arc(centre, normal, sweep, half)
-    return [*first, chord_starts], [*second, chord_ends]
+    return first, second, (centre, normal, sweep)
 
 
 def _cut(
@@ -317,13 +327,21 @@ def _walk(step: np.ndarray, consumed: np.ndarray, index: np.ndarray) -> np.ndarr
 
 def _arc(
     centre: np.ndarray, normal: np.ndarray, sweep: np.ndarray, half: float
-) -> tuple[np.ndarray, np.ndarray]:
-    """Chords of the arcs from ``centre + half * normal`` turning by ``sweep`` radians."""
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Chords of the arcs from ``centre + half * normal`` turning by ``sweep`` radians.
+
+    Returns the chords' starts and ends, arc after arc, and each arc's number
+    of chords. Each arc's points are computed once: a chord ends exactly
+    where the next begins (``k * step`` is the same float either way).
+    """
     count = np.maximum(np.ceil(np.abs(sweep) / ARC_STEP), 1).astype(np.int64)
-    arc = np.repeat(np.arange(len(count)), count)
-    step = np.arange(len(arc)) - np.repeat(np.cumsum(count) - count, count)
-    angles = np.stack([step, step + 1]) * (sweep / count)[arc]
+    arc = np.repeat(np.arange(len(count)), count + 1)
+    step = np.arange(len(arc)) - np.repeat(np.cumsum(count + 1) - (count + 1), count + 1)
+    angles = step * (sweep / count)[arc]
     cos, sin = np.cos(angles), np.sin(angles)
     nx, ny = normal[arc, 0], normal[arc, 1]
-    points = centre[arc] + half * np.stack([cos * nx - sin * ny, sin * nx + cos * ny], axis=-1)
-    return points[0], points[1]
+    points = np.empty((len(arc), 2))
+    points[:, 0] = centre[arc, 0] + half * (cos * nx - sin * ny)
+    points[:, 1] = centre[arc, 1] + half * (sin * nx + cos * ny)
+    last = step == count[arc]
+    return points[~last], points[step > 0], count

@@ -21,7 +21,8 @@ of the pixel inside that union. This module computes it in three steps:
    within w of each other without being neighbours along it (a loop, two
    subpaths, a hairpin), and corners the cutting of step 1 cannot settle (a
    cusp, whose offset edges never cross), are found and the pixels near them
-   are integrated directly (:mod:`course.antialias._overlaps`).
+   are integrated directly (:mod:`course.antialias._overlaps` finds them,
+   :mod:`course.antialias._integrate` integrates them).
 
 Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
 caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
@@ -36,7 +37,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from course.antialias._fill import accumulate
-from course.antialias._overlaps import crowded_dots, distance_to, integrate, overlapping
+from course.antialias._integrate import integrate
+from course.antialias._overlaps import crowded_dots, distance_to, overlapping
 from course.antialias._segments import Segments
 from course.antialias._segments import segments as as_segments
 

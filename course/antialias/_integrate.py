@@ -36,8 +36,8 @@ def integrate(
     """
     reach = half + HALF_DIAGONAL
     line, gaps = _soup(
-        np.concatenate([s.start[doubtful], s.dots[dots]]),
-        np.concatenate([s.end[doubtful], s.dots[dots]]),
+        np.concatenate([s.start.compress(doubtful, 0), s.dots.compress(dots, 0)]),
+        np.concatenate([s.end.compress(doubtful, 0), s.dots.compress(dots, 0)]),
     )
     near = pixels_near(line, image.shape, reach, gaps=gaps)
     if len(near.flat) == 0:  # all off the canvas
@@ -47,14 +47,16 @@ def integrate(
     ends = np.concatenate([s.end, s.dots])
     nearby = _nearby(flagged, starts, ends, image.shape, reach)
     if len(flagged) * len(nearby) <= _BRUTE_PAIRS:
-        pixel, segment = _pairs(flagged, starts[nearby], ends[nearby], image.shape[1], reach)
-        start, end = starts[nearby][segment], ends[nearby][segment]
+        starts, ends = starts.take(nearby, 0), ends.take(nearby, 0)
+        pixel, segment = _pairs(flagged, starts, ends, image.shape[1], reach)
+        start, end = starts.take(segment, 0), ends.take(segment, 0)
     else:  # many pixels and segments: each segment's own neighbourhood
         line, gaps = _soup(starts[nearby], ends[nearby])
         near = pixels_near(line, image.shape, reach, gaps=gaps)
         pick = np.flatnonzero(np.isin(near.flat, flagged, assume_unique=False))
         pixel, split = near.flat[pick], near.polyline
-        start, end = split[near.segment[pick]], split[near.segment[pick] + 1]
+        start = split.take(near.segment[pick], 0)
+        end = split.take(near.segment[pick] + 1, 0)
     y, x = np.divmod(pixel, image.shape[1])
     coverage = row_coverage(x, y, start, end, pixel, half, ROWS)
     # np.put indexes the flattened image in place, whatever its strides.

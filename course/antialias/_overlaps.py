@@ -55,10 +55,12 @@ def overlapping(segments: Segments, half: float) -> np.ndarray:
     # Segments whose middles lie farther apart than their half lengths and
     # the reach cannot be that close: a cheap test before the exact one.
     middle = 0.5 * (s.start + s.end)
-    apart = np.hypot(*(middle[first] - middle[second]).T)
+    apart = middle.take(first, 0) - middle.take(second, 0)
+    apart = np.hypot(apart[:, 0], apart[:, 1])
     keep = apart - 0.5 * (s.length[first] + s.length[second]) <= 2 * half * (1 + 1e-9)
     first, second = first[keep], second[keep]
-    close = _segment_gap(s.start[first], s.end[first], s.start[second], s.end[second])
+    start, end = s.start.take(first, 0), s.end.take(first, 0)
+    close = _segment_gap(start, end, s.start.take(second, 0), s.end.take(second, 0))
     keep = close <= 2 * half * (1 + 1e-9)
     doubtful[first[keep]] = doubtful[second[keep]] = True
     return doubtful
@@ -78,7 +80,7 @@ def crowded_dots(segments: Segments, half: float) -> np.ndarray:
         # pair measured, cheaper than the tree's per-point lists.
         dot = np.repeat(np.arange(len(s.dots)), len(s.length))
         segment = np.tile(np.arange(len(s.length)), len(s.dots))
-        gap = distance_to(s.dots[dot], s.start[segment], s.end[segment])
+        gap = distance_to(s.dots.take(dot, 0), s.start.take(segment, 0), s.end.take(segment, 0))
         crowded[dot[gap <= 2 * half * (1 + 1e-9)]] = True
     elif len(s.length):
         # Pieces of the segments no longer than 2: their middles lie within
@@ -90,7 +92,7 @@ def crowded_dots(segments: Segments, half: float) -> np.ndarray:
         counts = np.fromiter(map(len, near), dtype=np.int64, count=len(near))
         dot = np.fromiter(itertools.chain.from_iterable(near), dtype=np.int64, count=counts.sum())
         segment = np.repeat(owner, counts)
-        gap = distance_to(s.dots[dot], s.start[segment], s.end[segment])
+        gap = distance_to(s.dots.take(dot, 0), s.start.take(segment, 0), s.end.take(segment, 0))
         crowded[dot[gap <= 2 * half * (1 + 1e-9)]] = True
     return crowded
 
@@ -101,7 +103,8 @@ def _pieces(start: np.ndarray, end: np.ndarray, piece: float) -> tuple[np.ndarra
     owner = np.repeat(np.arange(len(pieces)), pieces)
     step = np.arange(len(owner)) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     fraction = ((step + 0.5) / pieces[owner])[:, None]
-    return owner, start[owner] + fraction * (end[owner] - start[owner])
+    first = start.take(owner, 0)
+    return owner, first + fraction * (end.take(owner, 0) - first)
 
 
 def _candidate_pairs(s: Segments, reach: float) -> tuple[np.ndarray, np.ndarray]:
@@ -126,8 +129,9 @@ def _turning_between(s: Segments, first: np.ndarray, second: np.ndarray) -> np.n
     turn = np.zeros(count)
     joined = np.flatnonzero(s.next >= 0)
     later = s.next[joined]
-    cross = s.unit[joined, 0] * s.unit[later, 1] - s.unit[joined, 1] * s.unit[later, 0]
-    dot = np.einsum("ij,ij->i", s.unit[joined], s.unit[later])
+    ux, uy = s.unit[:, 0], s.unit[:, 1]
+    cross = ux[joined] * uy[later] - uy[joined] * ux[later]
+    dot = ux[joined] * ux[later] + uy[joined] * uy[later]
     turn[later] = np.abs(np.arctan2(cross, dot))  # the turn into each segment
     # Cumulative turning along each subpath, from its first segment in storage order.
     head = np.r_[True, s.subpath[1:] != s.subpath[:-1]]

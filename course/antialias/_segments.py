@@ -43,19 +43,22 @@ def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
     """
     line, gaps = polyline, gaps
     for _ in range(3):  # removing a point can, rarely, leave another short segment
-        length = np.hypot(*np.diff(line, axis=0).T)
+        step = np.diff(line, axis=0)
+        length = np.hypot(step[:, 0], step[:, 1])
         short = ~gaps & (length <= SHORT)
         if not short.any():
             break
         keep = np.concatenate([[True], ~short])
         kept = np.flatnonzero(keep)
         gaps = gaps[kept[1:] - 1]
-        line = line[keep]
+        line = line.compress(keep, 0)
     drawn = np.flatnonzero(~gaps)
-    start, end = line[drawn], line[drawn + 1]
-    length = np.hypot(*(end - start).T)
-    unit = (end - start) / length[:, None]
-    normal = np.stack([-unit[:, 1], unit[:, 0]], axis=1)
+    start, end = line.take(drawn, 0), line.take(drawn + 1, 0)
+    direction = end - start
+    length = np.hypot(direction[:, 0], direction[:, 1])
+    unit = direction / length[:, None]
+    normal = np.empty_like(unit)
+    normal[:, 0], normal[:, 1] = -unit[:, 1], unit[:, 0]
     count = len(drawn)
     joined = np.diff(drawn) == 1
     following = np.full(count, -1)
@@ -65,10 +68,10 @@ def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
     subpath = np.cumsum(previous < 0) - 1
     # A subpath that ends where it starts is closed: its two ends are joined.
     first, last = np.flatnonzero(previous < 0), np.flatnonzero(following < 0)
-    closed = (last > first) & (np.hypot(*(start[first] - end[last]).T) <= SHORT)
+    apart = start.take(first, 0) - end.take(last, 0)
+    closed = (last > first) & (np.hypot(apart[:, 0], apart[:, 1]) <= SHORT)
     following[last[closed]], previous[first[closed]] = first[closed], last[closed]
-    vertex = np.arange(len(line))
     touched = np.zeros(len(line), dtype=bool)
     touched[drawn] = touched[drawn + 1] = True
-    dots = line[vertex[~touched]]
+    dots = line.compress(~touched, 0)
     return Segments(start, end, length, unit, normal, following, previous, subpath, dots)

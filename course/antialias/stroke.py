@@ -151,16 +151,20 @@ def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, n
     # round joins, then open ends, open starts and dots.
     arcs = [
         arc,
-        (s.end[open_end], s.normal[open_end], np.full(len(open_end), -np.pi)),
-        (s.start[open_start], -s.normal[open_start], np.full(len(open_start), -np.pi)),
+        (s.end.take(open_end, 0), s.normal.take(open_end, 0), np.full(len(open_end), -np.pi)),
+        (
+            s.start.take(open_start, 0),
+            -s.normal.take(open_start, 0),
+            np.full(len(open_start), -np.pi),
+        ),
         (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi)),
     ]
     centre, normal, sweep = (np.concatenate(part) for part in zip(*arcs, strict=True))
     chord_starts, chord_ends = _arc(centre, normal, sweep, half)
     drawn = ~consumed
     side_0, side_1 = drawn[0::2], drawn[1::2]
-    starts = [a[0::2][side_0], b[1::2][side_1], link_starts, chord_starts]  # side 1 runs back
-    ends = [b[0::2][side_0], a[1::2][side_1], link_ends, chord_ends]
+    starts = [a[0::2].compress(side_0, 0), b[1::2].compress(side_1, 0), link_starts, chord_starts]
+    ends = [b[0::2].compress(side_0, 0), a[1::2].compress(side_1, 0), link_ends, chord_ends]
     return np.concatenate(starts), np.concatenate(ends), doubtful
 
 
@@ -188,7 +192,7 @@ def _links(
     p, q = drawn[linked], following[linked]  # flat: 2 * segment + side
     side = p & 1
     p_segment, q_segment = p >> 1, q >> 1
-    there, here = b[p], a[q]  # p's edge ends, q's begins
+    there, here = b.take(p, 0), a.take(q, 0)  # p's edge ends, q's begins
     join = joins.join_of_end[p_segment]
     single = s.next[p_segment] == q_segment
     on_inner = joins.inner[join] == side
@@ -198,17 +202,23 @@ def _links(
     scale = 1e-9 * np.maximum(1.0, np.maximum(np.abs(there[:, 0]), np.abs(there[:, 1])))
     apart = ~arc & ~via & (np.hypot(*(there - here).T) > scale)
     doubtful[p_segment[apart]] = doubtful[q_segment[apart]] = True
-    vertex = s.end[p_segment]
-    first = np.concatenate([there[via], vertex[via], there[apart]])
-    second = np.concatenate([vertex[via], here[via], here[apart]])
+    vertex = s.end.take(p_segment, 0)
+    first = np.concatenate(
+        [there.compress(via, 0), vertex.compress(via, 0), there.compress(apart, 0)]
+    )
+    second = np.concatenate(
+        [vertex.compress(via, 0), here.compress(via, 0), here.compress(apart, 0)]
+    )
     # Side 1 runs backwards: its edges go from q's edge to p's.
     back = (np.concatenate([side[via], side[via], side[apart]]) == 1)[:, None]
     starts, ends = np.where(back, second, first), np.where(back, first, second)
     # The outer side of a round join: an arc from the end of p's edge to q's.
     side, p_segment, q_segment = side[arc], p_segment[arc], q_segment[arc]
-    normal = np.where((side == 0)[:, None], s.normal[p_segment], -s.normal[q_segment])
+    normal = np.where(
+        (side == 0)[:, None], s.normal.take(p_segment, 0), -s.normal.take(q_segment, 0)
+    )
     sweep = joins.turn[join[arc]] * (1.0 - 2.0 * side)
-    return starts, ends, (vertex[arc], normal, sweep)
+    return starts, ends, (vertex.compress(arc, 0), normal, sweep)
 
 
 def _cut(
@@ -263,9 +273,9 @@ def _cut(
         ok = (keys >= 0) & (np.bincount(which, ~convex, len(keys)) == 0)
         ok &= total < np.pi - 1e-6
         reach = ((1.0 - 2.0 * key_side) * half)[:, None]
-        up, uq = s.unit[p_segment], s.unit[q_segment]
-        op = s.start[p_segment] + reach * s.normal[p_segment]
-        oq = s.start[q_segment] + reach * s.normal[q_segment]
+        up, uq = s.unit.take(p_segment, 0), s.unit.take(q_segment, 0)
+        op = s.start.take(p_segment, 0) + reach * s.normal.take(p_segment, 0)
+        oq = s.start.take(q_segment, 0) + reach * s.normal.take(q_segment, 0)
         denominator = up[:, 0] * uq[:, 1] - up[:, 1] * uq[:, 0]
         ok &= np.abs(denominator) > 1e-12
         safe = np.where(ok, denominator, 1.0)
@@ -274,7 +284,9 @@ def _cut(
         along_q = (gap[:, 0] * up[:, 1] - gap[:, 1] * up[:, 0]) / safe
         crossing = op + along_p[:, None] * up
         # The crossing must lie outside every consumed segment's stadium.
-        clear = distance_to(crossing[which], s.start[segment], s.end[segment])
+        clear = distance_to(
+            crossing.take(which, 0), s.start.take(segment, 0), s.end.take(segment, 0)
+        )
         ok &= np.bincount(which, clear < half * (1 - 1e-9), len(keys)) == 0
         good = np.flatnonzero(ok)
         finish[p[good]] = along_p[good]
@@ -360,9 +372,9 @@ def _arc(
     step = np.arange(len(arc)) - np.repeat(np.cumsum(count + 1) - (count + 1), count + 1)
     angles = step * (sweep / count)[arc]
     cos, sin = np.cos(angles), np.sin(angles)
-    nx, ny = normal[arc, 0], normal[arc, 1]
+    nx, ny = normal[:, 0].take(arc), normal[:, 1].take(arc)
     points = np.empty((len(arc), 2))
     points[:, 0] = centre[arc, 0] + half * (cos * nx - sin * ny)
     points[:, 1] = centre[arc, 1] + half * (sin * nx + cos * ny)
     last = step == count[arc]
-    return points[~last], points[step > 0]
+    return points.compress(~last, 0), points.compress(step > 0, 0)

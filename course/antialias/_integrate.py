@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from course.antialias._segments import Segments
-from course.antialias.near_pixels import HALF_DIAGONAL, first_of_runs, pixels_near
+from course.antialias.near_pixels import HALF_DIAGONAL, first_of_runs, pixels_near, pixels_within
 
 __all__ = ["ROWS", "integrate", "row_coverage"]
 
@@ -39,10 +39,9 @@ def integrate(
         np.concatenate([s.start.compress(doubtful, 0), s.dots.compress(dots, 0)]),
         np.concatenate([s.end.compress(doubtful, 0), s.dots.compress(dots, 0)]),
     )
-    near = pixels_near(line, image.shape, reach, gaps=gaps)
-    if len(near.flat) == 0:  # all off the canvas
+    flagged = pixels_within(line, image.shape, reach, gaps=gaps)
+    if len(flagged) == 0:  # all off the canvas
         return
-    flagged = np.unique(near.flat)
     starts = np.concatenate([s.start, s.dots])
     ends = np.concatenate([s.end, s.dots])
     nearby = _nearby(flagged, starts, ends, image.shape, reach)

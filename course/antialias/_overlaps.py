@@ -46,18 +46,17 @@ def overlapping(segments: Segments, half: float) -> np.ndarray:
                 "that runs over itself this often is better drawn in pieces"
             ).format(first_count=len(first), most=limits.MAX_OVERLAP_PAIRS)
         )
-    # Neighbours meet at a join the outline draws.
-    neighbours = (s.next[first] == second) | (s.next[second] == first)
-    first, second = first[~neighbours], second[~neighbours]
-    # Along one subpath, a path turning less than TURNING_LIMIT cannot come back.
-    keep = _turning_between(s, first, second) >= TURNING_LIMIT
-    first, second = first[keep], second[keep]
     # Segments whose middles lie farther apart than their half lengths and
-    # the reach cannot be that close: a cheap test before the exact one.
+    # the reach cannot be that close: a cheap test first, which leaves few.
     middle = 0.5 * (s.start + s.end)
     apart = middle.take(first, 0) - middle.take(second, 0)
     apart = np.hypot(apart[:, 0], apart[:, 1])
     keep = apart - 0.5 * (s.length[first] + s.length[second]) <= 2 * half * (1 + 1e-9)
+    # Neighbours meet at a join the outline draws.
+    keep &= (s.next[first] != second) & (s.next[second] != first)
+    first, second = first[keep], second[keep]
+    # Along one subpath, a path turning less than TURNING_LIMIT cannot come back.
+    keep = _turning_between(s, first, second) >= TURNING_LIMIT
     first, second = first[keep], second[keep]
     start, end = s.start.take(first, 0), s.end.take(first, 0)
     close = _segment_gap(start, end, s.start.take(second, 0), s.end.take(second, 0))
@@ -125,25 +124,18 @@ def _candidate_pairs(s: Segments, reach: float) -> tuple[np.ndarray, np.ndarray]
 
 def _turning_between(s: Segments, first: np.ndarray, second: np.ndarray) -> np.ndarray:
     """Total |turn| of the path between two segments of one subpath (inf otherwise)."""
-    count = len(s.length)
-    turn = np.zeros(count)
-    joined = np.flatnonzero(s.next >= 0)
-    later = s.next[joined]
-    ux, uy = s.unit[:, 0], s.unit[:, 1]
-    cross = ux[joined] * uy[later] - uy[joined] * ux[later]
-    dot = ux[joined] * ux[later] + uy[joined] * uy[later]
-    turn[later] = np.abs(np.arctan2(cross, dot))  # the turn into each segment
+    turn = np.abs(s.turn)  # the turn into each segment (0 at a subpath's start)
     # Cumulative turning along each subpath, from its first segment in storage order.
-    head = np.r_[True, s.subpath[1:] != s.subpath[:-1]]
+    head = np.concatenate([[True], s.subpath[1:] != s.subpath[:-1]])
     total = np.cumsum(np.where(head, 0.0, turn))
-    base = total[np.flatnonzero(head)][s.subpath]
-    along = total - base
+    heads = np.flatnonzero(head)
+    along = total - total[heads][s.subpath]
     low, high = np.minimum(first, second), np.maximum(first, second)
     between = along[high] - along[low]
     # A closed subpath can also be walked the other way round.
-    closing = s.prev[np.flatnonzero(head)][s.subpath]  # last segment, joined to the first
+    closing = s.prev[heads][s.subpath]  # last segment, joined to the first
     closed = closing >= 0
-    first_turn = turn[np.flatnonzero(head)][s.subpath]  # the closing join's turn
+    first_turn = turn[heads][s.subpath]  # the closing join's turn
     whole = np.where(closed, along[np.maximum(closing, 0)] + first_turn, np.inf)
     between = np.where(closed[low], np.minimum(between, whole[low] - between), between)
     return np.where(s.subpath[first] == s.subpath[second], between, np.inf)

@@ -32,6 +32,10 @@ class Segments:
     prev: np.ndarray
     subpath: np.ndarray
     dots: np.ndarray  # isolated points: subpaths of zero length
+    # The join into each segment from ``prev`` (0, 1 and 0 where there is none):
+    cross: np.ndarray  # prev's unit x this one's: > 0 turning towards side 0
+    dot: np.ndarray  # prev's unit . this one's
+    turn: np.ndarray  # the signed angle turned, arctan2(cross, dot)
 
 
 def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
@@ -74,4 +78,13 @@ def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
     touched = np.zeros(len(line), dtype=bool)
     touched[drawn] = touched[drawn + 1] = True
     dots = line.compress(~touched, 0)
-    return Segments(start, end, length, unit, normal, following, previous, subpath, dots)
+    # The joins, computed once for the outline and the search for overlaps.
+    before = np.where(previous >= 0, previous, np.arange(count))
+    ux, uy = unit[:, 0], unit[:, 1]
+    bx, by = ux.take(before), uy.take(before)
+    cross = np.where(previous >= 0, bx * uy - by * ux, 0.0)
+    dot = np.where(previous >= 0, bx * ux + by * uy, 1.0)
+    turn = np.arctan2(cross, dot)
+    return Segments(
+        start, end, length, unit, normal, following, previous, subpath, dots, cross, dot, turn
+    )

@@ -111,10 +111,7 @@ def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, n
     count = len(s.length)
     first = np.flatnonzero(s.next >= 0)  # joins: segment `first` into segment `second`
     second = s.next[first]
-    ux, uy = s.unit[:, 0], s.unit[:, 1]
-    cross = ux[first] * uy[second] - uy[first] * ux[second]
-    dot = ux[first] * ux[second] + uy[first] * uy[second]
-    turn = np.arctan2(cross, dot)
+    cross, dot, turn = s.cross.take(second), s.dot.take(second), s.turn.take(second)
     inner = (cross <= 0).astype(np.int64)  # the side the path turns towards
     cusp = 1.0 + dot <= 1e-12
     trim = half * np.abs(cross) / np.where(cusp, 1.0, 1.0 + dot)

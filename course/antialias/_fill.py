@@ -44,34 +44,46 @@ def accumulate(
     """
     height, width = shape
     x0, y0, x1, y1 = _clip(starts, ends, height, width)
-    # Every edge now spans at most one pixel boundary each way: at most three pieces.
+    # Every edge now spans at most one pixel boundary each way: at most three
+    # pieces. Most edges (the chords of the arcs) cross none: one piece each,
+    # and only the others are cut, at t1 and t2.
     sx, sy = x1 - x0, y1 - y0
     column, row = np.floor(np.minimum(x0, x1)), np.floor(np.minimum(y0, y1))
+    across_x = np.maximum(x0, x1) > column + 1
+    across_y = np.maximum(y0, y1) > row + 1
+    cut = np.flatnonzero(across_x | across_y)
+    x0c, y0c, sxc, syc = x0[cut], y0[cut], sx[cut], sy[cut]
     # A nearly flat piece divides by a tiny step: inf, then 1 by the where.
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        tx = np.where(np.maximum(x0, x1) > column + 1, (column + 1 - x0) / sx, 1.0)
-        ty = np.where(np.maximum(y0, y1) > row + 1, (row + 1 - y0) / sy, 1.0)
-    # The pieces' ends (4, E): the start, the two crossings in order, the end.
-    t1, t2 = np.minimum(tx, ty), np.maximum(tx, ty)
-    xs, ys = np.empty((4, len(x0))), np.empty((4, len(x0)))
-    xs[0], xs[1], xs[2], xs[3] = x0, x0 + t1 * sx, x0 + t2 * sx, x0 + sx
-    ys[0], ys[1], ys[2], ys[3] = y0, y0 + t1 * sy, y0 + t2 * sy, y0 + sy
-    rise = ys[1:] - ys[:-1]  # a piece of no height (a t repeated) adds 0
-    middle_x = 0.5 * (xs[1:] + xs[:-1])
+        tx = np.where(across_x[cut], (column[cut] + 1 - x0c) / sxc, 1.0)
+        ty = np.where(across_y[cut], (row[cut] + 1 - y0c) / syc, 1.0)
+    t1 = np.ones(len(x0))
+    t1[cut] = np.minimum(tx, ty)
+    t2 = np.maximum(tx, ty)
+    # The pieces: every edge's first (to t1, the whole edge if uncut), then
+    # the cut edges' second (t1 to t2) and third (t2 to the end).
+    xa, ya = x0 + t1 * sx, y0 + t1 * sy
+    xb, yb = x0c + t2 * sxc, y0c + t2 * syc
+    start_x = np.concatenate([x0, xa[cut], xb])
+    start_y = np.concatenate([y0, ya[cut], yb])
+    end_x = np.concatenate([xa, xb, x0c + sxc])
+    end_y = np.concatenate([ya, yb, y0c + syc])
+    rise = end_y - start_y  # a piece of no height (a t repeated) adds 0
+    middle_x = 0.5 * (start_x + end_x)
     cell_x = np.floor(middle_x)
     area = rise * (cell_x + 1 - middle_x)  # between the piece and the pixel's right side
-    cell_y = np.minimum(np.maximum(np.floor(0.5 * (ys[1:] + ys[:-1])), 0), height - 1)
+    cell_y = np.minimum(np.maximum(np.floor(0.5 * (start_y + end_y)), 0), height - 1)
     # The area goes to the piece's pixel, the rest of its rise to the next one.
     # Left of the canvas both fold into column 0, where the running sums
     # start (only the rise counts there); right of it into column W, dropped.
     base = cell_y * (width + 1)
     cells = np.concatenate(
         [
-            (base + np.minimum(np.maximum(cell_x, 0), width)).ravel(),
-            (base + np.minimum(np.maximum(cell_x + 1, 0), width)).ravel(),
+            base + np.minimum(np.maximum(cell_x, 0), width),
+            base + np.minimum(np.maximum(cell_x + 1, 0), width),
         ]
     ).astype(np.int64)
-    value = np.concatenate([area.ravel(), (rise - area).ravel()])
+    value = np.concatenate([area, rise - area])
     return _running_sums(cells, value, (height, width), clip)
 
 

@@ -56,10 +56,12 @@ def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
         kept = np.flatnonzero(keep)
         gaps = gaps[kept[1:] - 1]
         line = line.compress(keep, 0)
+    else:  # the last removal left the steps stale
+        step = np.diff(line, axis=0)
+        length = np.hypot(step[:, 0], step[:, 1])
     drawn = np.flatnonzero(~gaps)
     start, end = line.take(drawn, 0), line.take(drawn + 1, 0)
-    direction = end - start
-    length = np.hypot(direction[:, 0], direction[:, 1])
+    direction, length = step.take(drawn, 0), length[drawn]  # end - start, exactly
     unit = direction / length[:, None]
     normal = np.empty_like(unit)
     normal[:, 0], normal[:, 1] = -unit[:, 1], unit[:, 0]

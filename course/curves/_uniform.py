@@ -97,12 +97,15 @@ def uniform_points(control: np.ndarray, count: np.ndarray) -> np.ndarray:
             ]
         )
     s = 1.0 - t
-    weights = {
-        0: [np.ones_like(t)],
-        1: [s, t],
-        2: [s * s, 2 * s * t, t * t],
-        3: [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t],
-    }[degree]
+    # Only the degree's own Bernstein weights (a dict of all four built them all).
+    if degree == 0:
+        weights = [np.ones_like(t)]
+    elif degree == 1:
+        weights = [s, t]
+    elif degree == 2:
+        weights = [s * s, 2 * s * t, t * t]
+    else:
+        weights = [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t]
     # control[:, i].take(curve, 0): a row gather, far cheaper than control[curve, i].
     points = sum(w * control[:, i].take(curve, 0) for i, w in enumerate(weights))
     # t = 0 and t = 1 give the end points themselves, so joins stay exact.

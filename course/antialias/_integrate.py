@@ -12,7 +12,9 @@ Unchecked kernels, like the rest of the stroke: the caller validates.
 from __future__ import annotations
 
 import numpy as np
+from scipy.spatial import cKDTree
 
+from course.antialias._overlaps import pieces
 from course.antialias._segments import Segments
 from course.antialias.near_pixels import HALF_DIAGONAL, first_of_runs, pixels_near, pixels_within
 
@@ -23,6 +25,8 @@ ROWS = 16
 # Up to this many (pixel, segment) candidates, the pairs are measured directly;
 # beyond, the segments' own neighbourhoods are searched (pixels_near).
 _BRUTE_PAIRS = 1 << 16
+# Largest summed-area table of the flagged pixels, in cells per pixel and segment.
+_TABLE_CELLS = 64
 
 
 def integrate(
@@ -75,6 +79,14 @@ def _nearby(
     rows, columns = np.divmod(flagged, shape[1])
     top, left = rows.min(), columns.min()
     height, width = rows.max() - top + 1, columns.max() - left + 1
+    if height * width > _TABLE_CELLS * (len(flagged) + len(starts)):
+        # Flagged pixels far apart on a large canvas: a k-d tree of their
+        # centres instead. A piece (no longer than 2) of a segment within
+        # reach of a centre has its middle within reach + 1 of it.
+        centres = np.stack([columns + 0.5, rows + 0.5], axis=1)
+        owner, middle = pieces(starts, ends, 2.0)
+        distance, _ = cKDTree(centres).query(middle, distance_upper_bound=reach + 1.0 + 1e-9)
+        return np.unique(owner[np.isfinite(distance)])
     table = np.zeros((height + 1, width + 1), dtype=np.int32)
     table[rows - top + 1, columns - left + 1] = 1
     table = table.cumsum(axis=0).cumsum(axis=1)

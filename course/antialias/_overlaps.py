@@ -21,7 +21,7 @@ from course import limits
 from course.antialias._segments import Segments
 from course.i18n import _
 
-__all__ = ["TURNING_LIMIT", "crowded_dots", "distance_to", "overlapping"]
+__all__ = ["TURNING_LIMIT", "crowded_dots", "distance_to", "overlapping", "pieces"]
 
 #: A path that turns less than this between two segments cannot bring them
 #: within w of each other except through the joins between them, which the
@@ -84,7 +84,7 @@ def crowded_dots(segments: Segments, half: float) -> np.ndarray:
     elif len(s.length):
         # Pieces of the segments no longer than 2: their middles lie within
         # 2 half + 1 of a point the segment passes within 2 half of.
-        owner, middle = _pieces(s.start, s.end, 2.0)
+        owner, middle = pieces(s.start, s.end, 2.0)
         # Every point near a piece, not only the nearest: a segment can have
         # one point close by and another just within 2 half farther along.
         near = cKDTree(s.dots).query_ball_point(middle, 2 * half + 1.0 + 1e-9, return_sorted=False)
@@ -96,7 +96,7 @@ def crowded_dots(segments: Segments, half: float) -> np.ndarray:
     return crowded
 
 
-def _pieces(start: np.ndarray, end: np.ndarray, piece: float) -> tuple[np.ndarray, np.ndarray]:
+def pieces(start: np.ndarray, end: np.ndarray, piece: float) -> tuple[np.ndarray, np.ndarray]:
     """Segments cut into pieces no longer than ``piece``: each piece's owner and middle."""
     pieces = np.maximum(np.ceil(np.hypot(*(end - start).T) / piece), 1).astype(np.int64)
     owner = np.repeat(np.arange(len(pieces)), pieces)
@@ -115,7 +115,7 @@ def _candidate_pairs(s: Segments, reach: float) -> tuple[np.ndarray, np.ndarray]
     a fraction of a millisecond). Pairs may repeat.
     """
     piece = max(reach, 2.0)
-    owner, middle = _pieces(s.start, s.end, piece)
+    owner, middle = pieces(s.start, s.end, piece)
     # An unbalanced tree of loose nodes builds faster and finds the same pairs.
     tree = cKDTree(middle, balanced_tree=False, compact_nodes=False)
     pairs = tree.query_pairs(reach + piece, output_type="ndarray")

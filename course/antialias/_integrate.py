@@ -188,8 +188,9 @@ def row_coverage(
     bounds = []
     for slope, first, second in (along, across):
         shift = (line_y - sy[:, None]) * slope[:, None] + sx[:, None]
-        ends = shift + first[:, None], shift + second[:, None]
-        bounds.append((np.minimum(*ends), np.maximum(*ends)))
+        # Rounding is monotonic: min(shift + a, shift + b) is shift + min(a, b).
+        low, high = np.minimum(first, second), np.maximum(first, second)
+        bounds.append((shift + low[:, None], shift + high[:, None]))
     rect_lo = np.maximum(bounds[0][0], bounds[1][0])
     rect_hi = np.minimum(bounds[0][1], bounds[1][1])
     has = (rect_hi >= rect_lo) & (length > 0)[:, None]

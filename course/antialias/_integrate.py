@@ -54,17 +54,18 @@ def integrate(
         pixel, segment = _pairs(flagged, starts, ends, image.shape[1], reach)
         start, end = starts.take(segment, 0), ends.take(segment, 0)
     else:  # many pixels and segments: each segment's own neighbourhood
-        line, gaps = _soup(starts[nearby], ends[nearby])
+        line, gaps = _soup(starts.take(nearby, 0), ends.take(nearby, 0))
         near = pixels_near(line, image.shape, reach, gaps=gaps)
-        pick = np.flatnonzero(np.isin(near.flat, flagged, assume_unique=False))
+        pick = np.flatnonzero(np.isin(near.flat, flagged))
         pixel, split = near.flat[pick], near.polyline
         start = split.take(near.segment[pick], 0)
         end = split.take(near.segment[pick] + 1, 0)
-    y, x = np.divmod(pixel, image.shape[1])
-    coverage = row_coverage(x, y, start, end, pixel, half, ROWS)
     # np.put indexes the flattened image in place, whatever its strides.
     np.put(image, flagged, 0.0)
-    np.put(image, pixel[first_of_runs(pixel)], coverage)
+    if len(pixel):  # none only if every flagged centre lies at reach, to the last bit
+        y, x = np.divmod(pixel, image.shape[1])
+        coverage = row_coverage(x, y, start, end, pixel, half, ROWS)
+        np.put(image, pixel[first_of_runs(pixel)], coverage)
 
 
 def _nearby(
@@ -176,7 +177,7 @@ def row_coverage(
     # two slabs; on the row Y = y - a_y each is an interval of X = x - a_x whose
     # ends move linearly with Y: ``first + slope Y`` to ``second + slope Y``.
     direction = end - start
-    length = np.hypot(*direction.T)
+    length = np.hypot(direction[:, 0], direction[:, 1])
     safe = np.where(length > 0, length, 1.0)
     ux, uy = direction[:, 0] / safe, direction[:, 1] / safe
     # A slab parallel to the rows is steep instead (1e-12): the rows it keeps

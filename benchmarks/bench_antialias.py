@@ -35,7 +35,9 @@ GOALS = {"splat": 3.0, "stroke": 10.0}
 TEXT = "Bézier curves"
 TEXT_SIZE = 40.0  # pixels to the em: capitals about 29 px tall
 TEXT_K = 64
-TEXT_GOALS = {"rmse": 0.25, "time": 3.0}
+# The text line's time goal is issue 35's (at most 5x Agg's); the 3x set when
+# stroke_area first drew whole paths is printed beside it.
+TEXT_GOALS = {"rmse": 0.25, "time": 5.0, "time_before": 3.0}
 
 
 def main() -> None:
@@ -109,10 +111,12 @@ def text() -> None:
             f"({ours * 1e3:.2f} ms vs {anchor * 1e3:.2f} ms)"
         )
     best, error, anchor, ours = min(rows, key=lambda row: row[1])
+    ratio = ours / anchor
     print(
         f"most accurate, {best}: RMSE {error / agg_error:.2f}x Agg's "
-        f"({goal_text(error / agg_error, TEXT_GOALS['rmse'])}); time "
-        f"{ours / anchor:.1f}x Agg's ({goal_text(ours / anchor, TEXT_GOALS['time'], 'x')})"
+        f"({goal_text(error / agg_error, TEXT_GOALS['rmse'])}); time {ratio:.1f}x Agg's "
+        f"(issue 35: {goal_text(ratio, TEXT_GOALS['time'], 'x')}; "
+        f"earlier: {goal_text(ratio, TEXT_GOALS['time_before'], 'x')})"
     )
 
 

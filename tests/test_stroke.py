@@ -17,7 +17,7 @@ from matplotlib.path import Path
 from course.antialias import _fill as fill
 from course.antialias import render, stroke_area, stroke_linear
 from course.antialias._fill import accumulate
-from course.antialias._overlaps import ROWS, row_coverage
+from course.antialias._integrate import ROWS, row_coverage
 from course.antialias.coverage import reference
 from course.curves.paths import text_curves
 

@@ -2,9 +2,10 @@
 
 One render (:mod:`~course.antialias.rendering`) over the splats (:mod:`~course.antialias.splats`),
 the exact stroke (:mod:`~course.antialias.stroke`, with its private kernels ``_segments``,
-``_overlaps`` and ``_fill``), straight bands (:mod:`~course.antialias.slab`), the exact
-reference (:mod:`~course.antialias.coverage`), matplotlib's Agg as the production anchor
-(:mod:`~course.antialias.agg`) and how good each result is (:mod:`~course.antialias.curve_quality`).
+``_overlaps``, ``_integrate`` and ``_fill``), straight bands (:mod:`~course.antialias.slab`),
+the exact reference (:mod:`~course.antialias.coverage`), matplotlib's Agg as the production
+anchor (:mod:`~course.antialias.agg`) and how good each result is
+(:mod:`~course.antialias.curve_quality`).
 
 The public names of :mod:`~course.antialias.rendering` are importable from here too.
 """

@@ -44,28 +44,47 @@ def accumulate(
     """
     height, width = shape
     x0, y0, x1, y1 = _clip(starts, ends, height, width)
-    # Every edge now spans at most one pixel boundary each way: at most three pieces.
+    # Every edge now spans at most one pixel boundary each way: at most three
+    # pieces. Most edges (the chords of the arcs) cross none: one piece each,
+    # and only the others are cut, at t1 and t2.
     sx, sy = x1 - x0, y1 - y0
     column, row = np.floor(np.minimum(x0, x1)), np.floor(np.minimum(y0, y1))
+    across_x = np.maximum(x0, x1) > column + 1
+    across_y = np.maximum(y0, y1) > row + 1
+    cut = np.flatnonzero(across_x | across_y)
+    x0c, y0c, sxc, syc = x0[cut], y0[cut], sx[cut], sy[cut]
     # A nearly flat piece divides by a tiny step: inf, then 1 by the where.
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        tx = np.where(np.maximum(x0, x1) > column + 1, (column + 1 - x0) / sx, 1.0)
-        ty = np.where(np.maximum(y0, y1) > row + 1, (row + 1 - y0) / sy, 1.0)
-    t = np.stack([np.zeros_like(tx), np.minimum(tx, ty), np.maximum(tx, ty), np.ones_like(tx)])
-    xs, ys = x0 + t * sx, y0 + t * sy
-    rise = ys[1:] - ys[:-1]
-    middle_x = 0.5 * (xs[1:] + xs[:-1])
+        tx = np.where(across_x[cut], (column[cut] + 1 - x0c) / sxc, 1.0)
+        ty = np.where(across_y[cut], (row[cut] + 1 - y0c) / syc, 1.0)
+    t1 = np.ones(len(x0))
+    t1[cut] = np.minimum(tx, ty)
+    t2 = np.maximum(tx, ty)
+    # The pieces: every edge's first (to t1, the whole edge if uncut), then
+    # the cut edges' second (t1 to t2) and third (t2 to the end).
+    xa, ya = x0 + t1 * sx, y0 + t1 * sy
+    xb, yb = x0c + t2 * sxc, y0c + t2 * syc
+    start_x = np.concatenate([x0, xa[cut], xb])
+    start_y = np.concatenate([y0, ya[cut], yb])
+    end_x = np.concatenate([xa, xb, x0c + sxc])
+    end_y = np.concatenate([ya, yb, y0c + syc])
+    rise = end_y - start_y  # a piece of no height (a t repeated) adds 0
+    middle_x = 0.5 * (start_x + end_x)
     cell_x = np.floor(middle_x)
-    cell_y = np.clip(np.floor(0.5 * (ys[1:] + ys[:-1])), 0, height - 1).astype(np.int64)
     area = rise * (cell_x + 1 - middle_x)  # between the piece and the pixel's right side
-    moving = rise != 0  # pieces of no height (a t repeated) add nothing
-    left = moving & (cell_x < 0)  # left of the canvas: only the rise, into column 0
-    inside = moving & (cell_x >= 0) & (cell_x < width)
-    column = np.clip(cell_x, 0, width).astype(np.int64)
-    rows = np.concatenate([cell_y[inside], cell_y[inside], cell_y[left]])
-    columns = np.concatenate([column[inside], column[inside] + 1, column[left]])
-    value = np.concatenate([area[inside], (rise - area)[inside], rise[left]])
-    return _running_sums(rows, columns, value, (height, width), clip)
+    cell_y = np.minimum(np.maximum(np.floor(0.5 * (start_y + end_y)), 0), height - 1)
+    # The area goes to the piece's pixel, the rest of its rise to the next one.
+    # Left of the canvas both fold into column 0, where the running sums
+    # start (only the rise counts there); right of it into column W, dropped.
+    base = cell_y * (width + 1)
+    cells = np.concatenate(
+        [
+            base + np.minimum(np.maximum(cell_x, 0), width),
+            base + np.minimum(np.maximum(cell_x + 1, 0), width),
+        ]
+    ).astype(np.int64)
+    value = np.concatenate([area, rise - area])
+    return _running_sums(cells, value, (height, width), clip)
 
 
 def _clip(starts: np.ndarray, ends: np.ndarray, height: int, width: int) -> tuple[np.ndarray, ...]:
@@ -86,18 +105,24 @@ def _clip(starts: np.ndarray, ends: np.ndarray, height: int, width: int) -> tupl
     )
     if outside:
         x0, y0, x1, y1 = _clip_to(x0, y0, x1, y1, height, width)
-    # Split edges longer than a pixel in x or y into equal parts.
-    parts = np.maximum(np.ceil(np.maximum(np.abs(x1 - x0), np.abs(y1 - y0))), 1).astype(np.int64)
-    if (parts > 1).any():
-        edge = np.repeat(np.arange(len(parts)), parts)
+    # Split edges longer than a pixel in x or y into equal parts (few are:
+    # the rest pass as they are, after them).
+    parts = np.ceil(np.maximum(np.abs(x1 - x0), np.abs(y1 - y0)))
+    long = np.flatnonzero(parts > 1)
+    if len(long):
+        short = parts <= 1
+        parts = parts[long].astype(np.int64)
+        edge = np.repeat(long, parts)
         step = np.arange(len(edge)) - np.repeat(np.cumsum(parts) - parts, parts)
+        count = np.repeat(parts, parts)
         dx, dy = (x1 - x0)[edge], (y1 - y0)[edge]
-        begin, end = step / parts[edge], (step + 1) / parts[edge]
-        last = step == parts[edge] - 1
+        begin, end = step / count, (step + 1) / count
+        last = step == count - 1
         # The last part ends exactly where the edge does, so the loops stay closed.
-        x1 = np.where(last, x1[edge], x0[edge] + end * dx)
-        y1 = np.where(last, y1[edge], y0[edge] + end * dy)
-        x0, y0 = x0[edge] + begin * dx, y0[edge] + begin * dy
+        x1 = np.concatenate([x1[short], np.where(last, x1[edge], x0[edge] + end * dx)])
+        y1 = np.concatenate([y1[short], np.where(last, y1[edge], y0[edge] + end * dy)])
+        x0 = np.concatenate([x0[short], x0[edge] + begin * dx])
+        y0 = np.concatenate([y0[short], y0[edge] + begin * dy])
     return x0, y0, x1, y1
 
 
@@ -132,23 +157,25 @@ def _clip_to(x0, y0, x1, y1, height, width):
 
 
 def _running_sums(
-    row: np.ndarray, column: np.ndarray, value: np.ndarray, shape: tuple[int, int], clip: bool
+    cell: np.ndarray, value: np.ndarray, shape: tuple[int, int], clip: bool
 ) -> np.ndarray:
-    """Row-wise running sums of the values added at (row, column), column <= width.
+    """Row-wise running sums of the values added at ``cell = row * (W + 1) + column``.
 
-    Only the blocks of ``_BLOCK`` columns that hold a value, or that a value
-    on their left leaves non-zero, are summed; the rest of the canvas is 0.
-    A canvas no larger than ``_DENSE`` cells per value is summed whole: the
-    bookkeeping of the blocks would cost more than it saves.
+    Column W, past the canvas, is dropped. Only the blocks of ``_BLOCK``
+    columns that hold a value, or that a value on their left leaves non-zero,
+    are summed; the rest of the canvas is 0. A canvas no larger than
+    ``_DENSE`` cells per value is summed whole: the bookkeeping of the blocks
+    would cost more than it saves.
     """
     height, width = shape
     stride = width + 1
     if len(value) == 0:  # nothing on the canvas (bincount would return ints)
         return np.zeros((height, width))
     if height * stride <= _DENSE * len(value):
-        cells = np.bincount(row * stride + column, value, height * stride)
+        cells = np.bincount(cell, value, height * stride)
         sums = np.cumsum(cells.reshape(height, stride), axis=1)
         return _clipped(np.ascontiguousarray(sums[:, :width]), clip)
+    row, column = np.divmod(cell, stride)
     blocks = (stride + _BLOCK - 1) >> _BLOCK_BITS
     block = row * blocks + (column >> _BLOCK_BITS)
     total = np.bincount(block, value, height * blocks).reshape(height, blocks)

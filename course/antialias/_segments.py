@@ -32,6 +32,10 @@ class Segments:
     prev: np.ndarray
     subpath: np.ndarray
     dots: np.ndarray  # isolated points: subpaths of zero length
+    # The join into each segment from ``prev`` (0, 1 and 0 where there is none):
+    cross: np.ndarray  # prev's unit x this one's: > 0 turning towards side 0
+    dot: np.ndarray  # prev's unit . this one's
+    turn: np.ndarray  # the signed angle turned, arctan2(cross, dot)
 
 
 def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
@@ -43,19 +47,24 @@ def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
     """
     line, gaps = polyline, gaps
     for _ in range(3):  # removing a point can, rarely, leave another short segment
-        length = np.hypot(*np.diff(line, axis=0).T)
+        step = np.diff(line, axis=0)
+        length = np.hypot(step[:, 0], step[:, 1])
         short = ~gaps & (length <= SHORT)
         if not short.any():
             break
         keep = np.concatenate([[True], ~short])
         kept = np.flatnonzero(keep)
         gaps = gaps[kept[1:] - 1]
-        line = line[keep]
+        line = line.compress(keep, 0)
+    else:  # the last removal left the steps stale
+        step = np.diff(line, axis=0)
+        length = np.hypot(step[:, 0], step[:, 1])
     drawn = np.flatnonzero(~gaps)
-    start, end = line[drawn], line[drawn + 1]
-    length = np.hypot(*(end - start).T)
-    unit = (end - start) / length[:, None]
-    normal = np.stack([-unit[:, 1], unit[:, 0]], axis=1)
+    start, end = line.take(drawn, 0), line.take(drawn + 1, 0)
+    direction, length = step.take(drawn, 0), length[drawn]  # end - start, exactly
+    unit = direction / length[:, None]
+    normal = np.empty_like(unit)
+    normal[:, 0], normal[:, 1] = -unit[:, 1], unit[:, 0]
     count = len(drawn)
     joined = np.diff(drawn) == 1
     following = np.full(count, -1)
@@ -65,10 +74,19 @@ def segments(polyline: np.ndarray, gaps: np.ndarray) -> Segments:
     subpath = np.cumsum(previous < 0) - 1
     # A subpath that ends where it starts is closed: its two ends are joined.
     first, last = np.flatnonzero(previous < 0), np.flatnonzero(following < 0)
-    closed = (last > first) & (np.hypot(*(start[first] - end[last]).T) <= SHORT)
+    apart = start.take(first, 0) - end.take(last, 0)
+    closed = (last > first) & (np.hypot(apart[:, 0], apart[:, 1]) <= SHORT)
     following[last[closed]], previous[first[closed]] = first[closed], last[closed]
-    vertex = np.arange(len(line))
     touched = np.zeros(len(line), dtype=bool)
     touched[drawn] = touched[drawn + 1] = True
-    dots = line[vertex[~touched]]
-    return Segments(start, end, length, unit, normal, following, previous, subpath, dots)
+    dots = line.compress(~touched, 0)
+    # The joins, computed once for the outline and the search for overlaps.
+    before = np.where(previous >= 0, previous, np.arange(count))
+    ux, uy = unit[:, 0], unit[:, 1]
+    bx, by = ux.take(before), uy.take(before)
+    cross = np.where(previous >= 0, bx * uy - by * ux, 0.0)
+    dot = np.where(previous >= 0, bx * ux + by * uy, 1.0)
+    turn = np.arctan2(cross, dot)
+    return Segments(
+        start, end, length, unit, normal, following, previous, subpath, dots, cross, dot, turn
+    )

@@ -23,6 +23,7 @@ __all__ = [
     "NearPixels",
     "first_of_runs",
     "pixels_near",
+    "pixels_within",
     "segment_distance",
     "subdivide",
 ]
@@ -50,10 +51,11 @@ def _split(
     polyline: np.ndarray, max_length: float, gaps: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """:func:`subdivide`, leaving gaps whole (nothing is drawn along them); new gaps."""
-    length = np.hypot(*np.diff(polyline, axis=0).T)
+    step = np.diff(polyline, axis=0)
+    length = np.hypot(step[:, 0], step[:, 1])
     pieces = np.where(gaps, 1, np.maximum(np.ceil(length / max_length), 1)).astype(np.int64)
     starts = np.repeat(polyline[:-1], pieces, axis=0)
-    steps = np.repeat(np.diff(polyline, axis=0) / pieces[:, None], pieces, axis=0)
+    steps = np.repeat(step / pieces[:, None], pieces, axis=0)
     # Position of each new vertex within its segment: 0, 1, ..., pieces - 1.
     index = np.arange(pieces.sum()) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     line = np.vstack([starts + index[:, None] * steps, polyline[-1:]])
@@ -137,48 +139,11 @@ def pixels_near(
     ([0, 0, 1, 1, 2], [0, 1, 1, 0, 1], [0.0, 0.5, 0.0, 0.5, 0.5])
     """
     height, width = shape
-    # A window of n x n pixels serves a segment up to n - 2 reach long (see
-    # below): split segments to just under that length, the fewest pixels
-    # looked at per unit of curve.
-    window = np.ceil(2 * reach + 1)
-    if gaps is None:
-        gaps = np.zeros(len(polyline) - 1, dtype=bool)
-    line, split_gaps = _split(polyline, window - 2 * reach - 1e-6, gaps)
-    drawn = np.flatnonzero(~split_gaps)
-    if len(drawn) == 0:
+    line, drawn, found = _candidates(polyline, reach, gaps)
+    if found is None:
         empty = np.zeros(0, dtype=np.int64)
         return NearPixels(empty, empty, empty, empty, *(np.zeros(0),) * 3, line)
-    start, end = line[drawn], line[drawn + 1]
-    middle = 0.5 * (start + end)
-    half_length = 0.5 * np.hypot(*(end - start).T).max()
-    # A centre c + 0.5 within reach of a segment is within reach + half its
-    # length of its middle m: c lies in [m - 0.5 - r, m - 0.5 + r], an interval
-    # holding floor(2 r) + 1 integers. One such window of columns and rows.
-    radius = reach + half_length
-    size = int(np.floor(2 * radius)) + 1
-    offsets = np.arange(size, dtype=float) + 0.5
-    low = np.ceil(middle - 0.5 - radius)
-    # Centres relative to each segment's start, on the (segments, rows,
-    # columns) grid by broadcasting; the projections onto the segment's unit
-    # direction give distance and side without a division per candidate.
-    direction = end - start
-    length = np.hypot(*direction.T)
-    # A zero-length segment is a point: any unit vector measures its distance.
-    unit = np.where(
-        (length > 0)[:, None], direction / np.where(length > 0, length, 1.0)[:, None], [1.0, 0.0]
-    )
-    dx = (low[:, 0] - start[:, 0])[:, None, None] + offsets[None, None, :]
-    dy = (low[:, 1] - start[:, 1])[:, None, None] + offsets[None, :, None]
-    ux, uy = unit[:, 0, None, None], unit[:, 1, None, None]
-    projection = dx * ux + dy * uy
-    across = dx * uy - dy * ux
-    beyond = projection - np.clip(projection, 0.0, length[:, None, None])
-    distance2 = beyond * beyond + across * across
-    index = np.flatnonzero(distance2 <= reach * reach)
-    segment, cell = np.divmod(index, size * size)
-    row, column = np.divmod(cell, size)
-    x = low[segment, 0].astype(np.int64) + column
-    y = low[segment, 1].astype(np.int64) + row
+    index, segment, x, y, projection, across, distance2, length = found
     left, top = origin
     on_canvas = (x >= left) & (x < left + width) & (y >= top) & (y < top + height)
     index, segment, x, y = index[on_canvas], segment[on_canvas], x[on_canvas], y[on_canvas]
@@ -203,6 +168,79 @@ def pixels_near(
         across=across[order],
         polyline=line,
     )
+
+
+def pixels_within(
+    polyline: np.ndarray, shape: tuple[int, int], reach: float, gaps: np.ndarray | None = None
+) -> np.ndarray:
+    """The flat indices ``y * W + x`` of the pixels of :func:`pixels_near`, each once, sorted.
+
+    Examples
+    --------
+    >>> pixels_within(np.array([[0.0, 0.5], [2.0, 0.5]]), (2, 3), reach=0.6).tolist()
+    [0, 1, 2]
+    """
+    height, width = shape
+    found = _candidates(polyline, reach, gaps)[2]
+    if found is None:
+        return np.zeros(0, dtype=np.int64)
+    x, y = found[2], found[3]
+    on_canvas = (x >= 0) & (x < width) & (y >= 0) & (y < height)
+    return np.unique((y * width + x)[on_canvas])
+
+
+def _candidates(
+    polyline: np.ndarray, reach: float, gaps: np.ndarray | None
+) -> tuple[np.ndarray, np.ndarray, tuple[np.ndarray, ...] | None]:
+    """Every (pixel, segment) with the centre within ``reach``, canvas or not.
+
+    Returns the split polyline, its drawn segments and, unless none is drawn,
+    the pairs: flat index on the (segments, rows, columns) grid, segment (of
+    the drawn ones), x, y, and on the grid the projection, the signed
+    distance across and the squared distance; and the drawn segments' lengths.
+    """
+    # A window of n x n pixels serves a segment up to n - 2 reach long (see
+    # below): split segments to just under that length, the fewest pixels
+    # looked at per unit of curve.
+    window = np.ceil(2 * reach + 1)
+    if gaps is None:
+        gaps = np.zeros(len(polyline) - 1, dtype=bool)
+    line, split_gaps = _split(polyline, window - 2 * reach - 1e-6, gaps)
+    drawn = np.flatnonzero(~split_gaps)
+    if len(drawn) == 0:
+        return line, drawn, None
+    start, end = line.take(drawn, 0), line.take(drawn + 1, 0)
+    middle = 0.5 * (start + end)
+    direction = end - start
+    length = np.hypot(direction[:, 0], direction[:, 1])
+    half_length = 0.5 * length.max()
+    # A centre c + 0.5 within reach of a segment is within reach + half its
+    # length of its middle m: c lies in [m - 0.5 - r, m - 0.5 + r], an interval
+    # holding floor(2 r) + 1 integers. One such window of columns and rows.
+    radius = reach + half_length
+    size = int(np.floor(2 * radius)) + 1
+    offsets = np.arange(size, dtype=float) + 0.5
+    low = np.ceil(middle - 0.5 - radius)
+    # Centres relative to each segment's start, on the (segments, rows,
+    # columns) grid by broadcasting; the projections onto the segment's unit
+    # direction give distance and side without a division per candidate.
+    # A zero-length segment is a point: any unit vector measures its distance.
+    unit = np.where(
+        (length > 0)[:, None], direction / np.where(length > 0, length, 1.0)[:, None], [1.0, 0.0]
+    )
+    dx = (low[:, 0] - start[:, 0])[:, None, None] + offsets[None, None, :]
+    dy = (low[:, 1] - start[:, 1])[:, None, None] + offsets[None, :, None]
+    ux, uy = unit[:, 0, None, None], unit[:, 1, None, None]
+    projection = dx * ux + dy * uy
+    across = dx * uy - dy * ux
+    beyond = projection - np.clip(projection, 0.0, length[:, None, None])
+    distance2 = beyond * beyond + across * across
+    index = np.flatnonzero(distance2 <= reach * reach)
+    segment, cell = np.divmod(index, size * size)
+    row, column = np.divmod(cell, size)
+    x = low[:, 0].take(segment).astype(np.int64) + column
+    y = low[:, 1].take(segment).astype(np.int64) + row
+    return line, drawn, (index, segment, x, y, projection, across, distance2, length)
 
 
 def first_of_runs(values: np.ndarray) -> np.ndarray:

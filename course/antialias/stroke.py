@@ -21,7 +21,8 @@ of the pixel inside that union. This module computes it in three steps:
    within w of each other without being neighbours along it (a loop, two
    subpaths, a hairpin), and corners the cutting of step 1 cannot settle (a
    cusp, whose offset edges never cross), are found and the pixels near them
-   are integrated directly (:mod:`course.antialias._overlaps`).
+   are integrated directly (:mod:`course.antialias._overlaps` finds them,
+   :mod:`course.antialias._integrate` integrates them).
 
 Unchecked kernels: like dhermes/bezier's ``hazmat``, this module trusts its
 caller and checks no input (``UNCHECKED = True``, which the fuzz test reads).
@@ -36,7 +37,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from course.antialias._fill import accumulate
-from course.antialias._overlaps import crowded_dots, distance_to, integrate, overlapping
+from course.antialias._integrate import integrate
+from course.antialias._overlaps import crowded_dots, distance_to, overlapping
 from course.antialias._segments import Segments
 from course.antialias._segments import segments as as_segments
 
@@ -100,101 +102,120 @@ def stroke_coverage(
 
 
 def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The outline's edges (start and end points) and the segments it cannot settle."""
+    """The outline's edges (start and end points) and the segments it cannot settle.
+
+    The offset edges are indexed flat, ``2 * segment + side``, so that both
+    sides are cut and linked in one pass.
+    """
     s = segments
     count = len(s.length)
     first = np.flatnonzero(s.next >= 0)  # joins: segment `first` into segment `second`
     second = s.next[first]
-    cross = s.unit[first, 0] * s.unit[second, 1] - s.unit[first, 1] * s.unit[second, 0]
-    dot = np.einsum("ij,ij->i", s.unit[first], s.unit[second])
-    turn = np.arctan2(cross, dot)
-    inner = np.where(cross > 0, 0, 1)  # the side the path turns towards
-    outer = 1 - inner
+    cross, dot, turn = s.cross.take(second), s.dot.take(second), s.turn.take(second)
+    inner = (cross <= 0).astype(np.int64)  # the side the path turns towards
     cusp = 1.0 + dot <= 1e-12
     trim = half * np.abs(cross) / np.where(cusp, 1.0, 1.0 + dot)
-    # Where each side's offset edge begins and ends, as distances along the segment.
-    begin = np.zeros((count, 2))
-    finish = np.repeat(s.length[:, None], 2, axis=1)
-    begin[second, inner] = trim
-    finish[first, inner] -= trim
-    gentle = np.abs(turn) <= MITER_TURN
-    begin[second[gentle], outer[gentle]] = -trim[gentle]
-    finish[first[gentle], outer[gentle]] += trim[gentle]
+    # Where each offset edge begins and ends, as distances along its segment.
+    begin = np.zeros(2 * count)
+    finish = np.repeat(s.length, 2)
+    begin[2 * second + inner] = trim
+    finish[2 * first + inner] -= trim
+    gentle = np.flatnonzero(np.abs(turn) <= MITER_TURN)
+    begin[2 * second[gentle] + 1 - inner[gentle]] = -trim[gentle]
+    finish[2 * first[gentle] + 1 - inner[gentle]] += trim[gentle]
     join_of_end = np.full(count, -1)
     join_of_end[first] = np.arange(len(first))
+    join_of_start = np.full(count, -1)
+    join_of_start[second] = np.arange(len(second))
     through = cusp.copy()  # joins whose inner side runs through the vertex
-    joins = _Joins(first, second, inner, turn, join_of_end, through)
+    joins = _Joins(first, second, inner, turn, join_of_end, join_of_start, _sided(s.next), through)
     _through(s, joins, np.flatnonzero(cusp), begin, finish)
     consumed, doubtful = _cut(s, half, begin, finish, joins)
     doubtful[first[through]] = doubtful[second[through]] = True
-    sign = np.array([1.0, -1.0])
-    offset = half * s.normal[:, None, :] * sign[None, :, None]
-    a = s.start[:, None, :] + offset + begin[..., None] * s.unit[:, None, :]
-    b = s.start[:, None, :] + offset + finish[..., None] * s.unit[:, None, :]
-    starts = [a[~consumed[:, 0], 0], b[~consumed[:, 1], 1]]  # side 1 runs backwards
-    ends = [b[~consumed[:, 0], 0], a[~consumed[:, 1], 1]]
-    rounded = ~gentle & ~cusp
-    for side in (0, 1):
-        link_starts, link_ends = _links(
-            s, joins, side, a, b, consumed[:, side], rounded, half, doubtful
-        )
-        starts += link_starts
-        ends += link_ends
+    # Side 0 is offset by +half normal, side 1 by -half normal.
+    offset = np.empty((count, 2, 2))
+    offset[:, 0] = half * s.normal
+    offset[:, 1] = -offset[:, 0]
+    along = s.unit[:, None, :]
+    a = (s.start[:, None, :] + offset + begin.reshape(count, 2, 1) * along).reshape(-1, 2)
+    b = (s.start[:, None, :] + offset + finish.reshape(count, 2, 1) * along).reshape(-1, 2)
+    rounded = np.abs(turn) > MITER_TURN
+    rounded &= ~cusp
+    link_starts, link_ends, arc = _links(s, joins, a, b, consumed, rounded, doubtful)
     open_end = np.flatnonzero(s.next < 0)
     open_start = np.flatnonzero(s.prev < 0)
+    # Every arc of the outline in one batch of chords: the outer sides of
+    # round joins, then open ends, open starts and dots.
     arcs = [
-        (s.end[open_end], s.normal[open_end], np.full(len(open_end), -np.pi)),
-        (s.start[open_start], -s.normal[open_start], np.full(len(open_start), -np.pi)),
+        arc,
+        (s.end.take(open_end, 0), s.normal.take(open_end, 0), np.full(len(open_end), -np.pi)),
+        (
+            s.start.take(open_start, 0),
+            -s.normal.take(open_start, 0),
+            np.full(len(open_start), -np.pi),
+        ),
         (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi)),
     ]
-    for arc_centre, arc_normal, arc_sweep in arcs:
-        chord_starts, chord_ends = _arc(arc_centre, arc_normal, arc_sweep, half)
-        starts.append(chord_starts)
-        ends.append(chord_ends)
+    centre, normal, sweep = (np.concatenate(part) for part in zip(*arcs, strict=True))
+    chord_starts, chord_ends = _arc(centre, normal, sweep, half)
+    drawn = ~consumed
+    side_0, side_1 = drawn[0::2], drawn[1::2]
+    starts = [a[0::2].compress(side_0, 0), b[1::2].compress(side_1, 0), link_starts, chord_starts]
+    ends = [b[0::2].compress(side_0, 0), a[1::2].compress(side_1, 0), link_ends, chord_ends]
     return np.concatenate(starts), np.concatenate(ends), doubtful
 
 
 def _links(
     s: Segments,
     joins: _Joins,
-    side: int,
     a: np.ndarray,
     b: np.ndarray,
     consumed: np.ndarray,
     rounded: np.ndarray,
-    half: float,
     doubtful: np.ndarray,
-) -> tuple[list[np.ndarray], list[np.ndarray]]:
-    """What joins each offset edge on ``side`` to the next one that is drawn.
+) -> tuple[np.ndarray, np.ndarray, tuple[np.ndarray, ...]]:
+    """What joins each offset edge to the next one that is drawn on its side.
 
     Usually nothing (a mitre or a cut: the edges meet), an arc around the
     vertex (the outer side of a round join) or two edges through the vertex.
     Anything else is a join the cutting left inconsistent: a straight
     connector keeps the outline closed and its segments are marked doubtful.
+    Returns the straight edges' starts and ends, and the arcs (centre, normal,
+    sweep) for :func:`_arc`, drawn with all the others at once.
     """
     drawn = np.flatnonzero(~consumed)
-    following = _walk(s.next, consumed, drawn)
+    following = _walk(joins.following, consumed, drawn)
     linked = following >= 0
-    p, q = drawn[linked], following[linked]
-    there, here = b[p, side], a[q, side]  # p's edge ends, q's begins
-    join = joins.join_of_end[p]
-    single = s.next[p] == q
-    arc = single & rounded[join] & (joins.inner[join] != side)
-    via = single & joins.through[join] & (joins.inner[join] == side)
-    scale = 1e-9 * np.maximum(1.0, np.abs(there).max(axis=1))
+    p, q = drawn[linked], following[linked]  # flat: 2 * segment + side
+    side = p & 1
+    p_segment, q_segment = p >> 1, q >> 1
+    there, here = b.take(p, 0), a.take(q, 0)  # p's edge ends, q's begins
+    join = joins.join_of_end[p_segment]
+    single = s.next[p_segment] == q_segment
+    on_inner = joins.inner[join] == side
+    arc = single & rounded[join] & ~on_inner
+    via = single & joins.through[join] & on_inner
+    # max(|x|, |y|) by columns: numpy's reduction over an axis of two is slow.
+    scale = 1e-9 * np.maximum(1.0, np.maximum(np.abs(there[:, 0]), np.abs(there[:, 1])))
     apart = ~arc & ~via & (np.hypot(*(there - here).T) > scale)
-    doubtful[p[apart]] = doubtful[q[apart]] = True
-    vertex = s.end[p]
-    first = [there[via], vertex[via], there[apart]]
-    second = [vertex[via], here[via], here[apart]]
+    doubtful[p_segment[apart]] = doubtful[q_segment[apart]] = True
+    vertex = s.end.take(p_segment, 0)
+    first = np.concatenate(
+        [there.compress(via, 0), vertex.compress(via, 0), there.compress(apart, 0)]
+    )
+    second = np.concatenate(
+        [vertex.compress(via, 0), here.compress(via, 0), here.compress(apart, 0)]
+    )
+    # Side 1 runs backwards: its edges go from q's edge to p's.
+    back = (np.concatenate([side[via], side[via], side[apart]]) == 1)[:, None]
+    starts, ends = np.where(back, second, first), np.where(back, first, second)
     # The outer side of a round join: an arc from the end of p's edge to q's.
-    normal = s.normal[p[arc]] if side == 0 else -s.normal[q[arc]]
-    sweep = joins.turn[join[arc]] * (1.0 if side == 0 else -1.0)
-    centre = vertex[arc]
-    if side == 1:  # side 1 runs backwards: from q's edge to p's
-        first, second = second, first
-    chord_starts, chord_ends = _arc(centre, normal, sweep, half)
-    return [*first, chord_starts], [*second, chord_ends]
+    side, p_segment, q_segment = side[arc], p_segment[arc], q_segment[arc]
+    normal = np.where(
+        (side == 0)[:, None], s.normal.take(p_segment, 0), -s.normal.take(q_segment, 0)
+    )
+    sweep = joins.turn[join[arc]] * (1.0 - 2.0 * side)
+    return starts, ends, (vertex.compress(arc, 0), normal, sweep)
 
 
 def _cut(
@@ -202,76 +223,86 @@ def _cut(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Drop the inner offset edges a sharp turn consumes; cut their neighbours instead.
 
-    ``begin`` and ``finish`` are updated in place. Returns which offset edges
-    are consumed (segments x sides) and which segments the cutting could not
-    settle (their joins then run through the vertex and ``through`` is set).
+    ``begin`` and ``finish`` (flat, ``2 * segment + side``) are updated in
+    place. Returns which offset edges are consumed (flat) and which segments
+    the cutting could not settle (their joins then run through the vertex
+    and ``through`` is set). Both sides are cut at once: a side's cuts never
+    read the other's.
     """
     count = len(s.length)
-    consumed = np.zeros((count, 2), dtype=bool)
+    consumed = np.zeros(2 * count, dtype=bool)
     unsettled = np.zeros(count, dtype=bool)
-    inner, turn, join_of_end = joins.inner, joins.turn, joins.join_of_end
-    join_of_start = np.full(count, -1)
-    join_of_start[joins.second] = np.arange(len(joins.second))
+    inner, turn = joins.inner, joins.turn
+    join_of_start, join_of_end = joins.join_of_start, joins.join_of_end
+    preceding = None
     for _ in range(_CUT_ROUNDS):
         short = (begin > finish + 1e-12) & ~consumed
         if not short.any():
             return consumed, unsettled
+        if preceding is None:
+            preceding = _sided(s.prev)
         consumed |= short
-        for side in (0, 1):
-            run = np.flatnonzero(consumed[:, side])
-            if len(run) == 0:
-                continue
-            before = _walk(s.prev, consumed[:, side], run)
-            after = _walk(s.next, consumed[:, side], run)
-            # Each run of consumed edges between `before` and `after`, once.
-            ends_run = (before >= 0) & (after >= 0)
-            key = np.where(ends_run, before, -1 - run)
-            keys, which = np.unique(key, return_inverse=True)
-            p = np.full(len(keys), -1)
-            q = np.full(len(keys), -1)
-            p[which], q[which] = before, after
-            # The path must turn towards `side` at every join of the run, by
-            # less than half a turn in all, and the offset lines must cross.
-            start_join, end_join = join_of_start[run], join_of_end[run]
-            convex = (
-                (start_join >= 0)
-                & (end_join >= 0)
-                & (inner[np.maximum(start_join, 0)] == side)
-                & (inner[np.maximum(end_join, 0)] == side)
-            )
-            total = np.bincount(which, np.abs(turn[np.maximum(start_join, 0)]), len(keys))
-            total += np.abs(turn[np.maximum(join_of_start[np.maximum(q, 0)], 0)])
-            ok = (keys >= 0) & (np.bincount(which, ~convex, len(keys)) == 0)
-            ok &= total < np.pi - 1e-6
-            sign = 1.0 - 2.0 * side
-            up, uq = s.unit[np.maximum(p, 0)], s.unit[np.maximum(q, 0)]
-            op = s.start[np.maximum(p, 0)] + sign * half * s.normal[np.maximum(p, 0)]
-            oq = s.start[np.maximum(q, 0)] + sign * half * s.normal[np.maximum(q, 0)]
-            denominator = up[:, 0] * uq[:, 1] - up[:, 1] * uq[:, 0]
-            ok &= np.abs(denominator) > 1e-12
-            safe = np.where(ok, denominator, 1.0)
-            gap = oq - op
-            along_p = (gap[:, 0] * uq[:, 1] - gap[:, 1] * uq[:, 0]) / safe
-            along_q = (gap[:, 0] * up[:, 1] - gap[:, 1] * up[:, 0]) / safe
-            crossing = op + along_p[:, None] * up
-            # The crossing must lie outside every consumed segment's stadium.
-            clear = distance_to(crossing[which], s.start[run], s.end[run]) >= half * (1 - 1e-9)
-            ok &= np.bincount(which, ~clear, len(keys)) == 0
-            good = np.flatnonzero(ok)
-            finish[p[good], side] = along_p[good]
-            begin[q[good], side] = along_q[good]
-            bad_runs = ~ok[which]
-            if bad_runs.any():
-                members = run[bad_runs]
-                ends_of = np.concatenate([join_of_start[members], join_of_end[members]])
-                ends_of = ends_of[ends_of >= 0]
-                _through(s, joins, ends_of[inner[ends_of] == side], begin, finish)
-                unsettled[members] = True
-                unsettled[np.maximum(p[~ok], 0)[p[~ok] >= 0]] = True
-                unsettled[np.maximum(q[~ok], 0)[q[~ok] >= 0]] = True
-                consumed[run[bad_runs], side] = False
+        run = np.flatnonzero(consumed)
+        segment, side = run >> 1, run & 1
+        before = _walk(preceding, consumed, run)
+        after = _walk(joins.following, consumed, run)
+        # Each run of consumed edges between `before` and `after`, once.
+        ends_run = (before >= 0) & (after >= 0)
+        key = np.where(ends_run, before, -1 - run)
+        keys, which = np.unique(key, return_inverse=True)
+        p = np.full(len(keys), -1)
+        q = np.full(len(keys), -1)
+        p[which], q[which] = before, after
+        key_side = np.zeros(len(keys), dtype=np.int64)
+        key_side[which] = side
+        # The path must turn towards `side` at every join of the run, by
+        # less than half a turn in all, and the offset lines must cross.
+        start_join, end_join = join_of_start[segment], join_of_end[segment]
+        convex = (
+            (start_join >= 0)
+            & (end_join >= 0)
+            & (inner[np.maximum(start_join, 0)] == side)
+            & (inner[np.maximum(end_join, 0)] == side)
+        )
+        p_segment, q_segment = np.maximum(p, 0) >> 1, np.maximum(q, 0) >> 1
+        total = np.bincount(which, np.abs(turn[np.maximum(start_join, 0)]), len(keys))
+        total += np.abs(turn[np.maximum(join_of_start[q_segment], 0)])
+        ok = (keys >= 0) & (np.bincount(which, ~convex, len(keys)) == 0)
+        ok &= total < np.pi - 1e-6
+        reach = ((1.0 - 2.0 * key_side) * half)[:, None]
+        up, uq = s.unit.take(p_segment, 0), s.unit.take(q_segment, 0)
+        op = s.start.take(p_segment, 0) + reach * s.normal.take(p_segment, 0)
+        oq = s.start.take(q_segment, 0) + reach * s.normal.take(q_segment, 0)
+        denominator = up[:, 0] * uq[:, 1] - up[:, 1] * uq[:, 0]
+        ok &= np.abs(denominator) > 1e-12
+        safe = np.where(ok, denominator, 1.0)
+        gap = oq - op
+        along_p = (gap[:, 0] * uq[:, 1] - gap[:, 1] * uq[:, 0]) / safe
+        along_q = (gap[:, 0] * up[:, 1] - gap[:, 1] * up[:, 0]) / safe
+        crossing = op + along_p[:, None] * up
+        # The crossing must lie outside every consumed segment's stadium.
+        clear = distance_to(
+            crossing.take(which, 0), s.start.take(segment, 0), s.end.take(segment, 0)
+        )
+        ok &= np.bincount(which, clear < half * (1 - 1e-9), len(keys)) == 0
+        good = np.flatnonzero(ok)
+        finish[p[good]] = along_p[good]
+        begin[q[good]] = along_q[good]
+        bad_runs = ~ok[which]
+        if bad_runs.any():
+            members, member_side = segment[bad_runs], side[bad_runs]
+            ends_of = np.concatenate([join_of_start[members], join_of_end[members]])
+            ends_side = np.concatenate([member_side, member_side])
+            inside = ends_of >= 0
+            ends_of, ends_side = ends_of[inside], ends_side[inside]
+            _through(s, joins, ends_of[inner[ends_of] == ends_side], begin, finish)
+            unsettled[members] = True
+            bad_p, bad_q = p[~ok], q[~ok]
+            unsettled[bad_p[bad_p >= 0] >> 1] = True
+            unsettled[bad_q[bad_q >= 0] >> 1] = True
+            consumed[run[bad_runs]] = False
     # Still inconsistent after the rounds: settle by sampling.
-    left = np.flatnonzero(((begin > finish + 1e-12) & ~consumed).any(axis=1))
+    left = np.flatnonzero(((begin > finish + 1e-12) & ~consumed).reshape(-1, 2).any(axis=1))
     ends_of = np.concatenate([join_of_start[left], join_of_end[left]])
     _through(s, joins, ends_of[ends_of >= 0], begin, finish)
     unsettled[left] = True
@@ -286,8 +317,18 @@ class _Joins:
     second: np.ndarray
     inner: np.ndarray
     turn: np.ndarray
-    join_of_end: np.ndarray
+    join_of_end: np.ndarray  # per segment, the join at its end (-1: none)
+    join_of_start: np.ndarray
+    following: np.ndarray  # per offset edge (flat), the same side of the next segment
     through: np.ndarray  # the inner side runs through the vertex (set as found)
+
+
+def _sided(step: np.ndarray) -> np.ndarray:
+    """``step`` (a neighbour per segment, -1: none) per offset edge, flat: the same side."""
+    sided = np.empty(2 * len(step), dtype=np.int64)
+    sided[0::2] = np.where(step >= 0, 2 * step, -1)
+    sided[1::2] = np.where(step >= 0, 2 * step + 1, -1)
+    return sided
 
 
 def _through(
@@ -300,8 +341,8 @@ def _through(
     joins.through[which] = True
     side = joins.inner[which]
     before, after = joins.first[which], joins.second[which]
-    finish[before, side] = s.length[before]
-    begin[after, side] = 0.0
+    finish[2 * before + side] = s.length[before]
+    begin[2 * after + side] = 0.0
 
 
 def _walk(step: np.ndarray, consumed: np.ndarray, index: np.ndarray) -> np.ndarray:
@@ -318,12 +359,19 @@ def _walk(step: np.ndarray, consumed: np.ndarray, index: np.ndarray) -> np.ndarr
 def _arc(
     centre: np.ndarray, normal: np.ndarray, sweep: np.ndarray, half: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Chords of the arcs from ``centre + half * normal`` turning by ``sweep`` radians."""
+    """Chords of the arcs from ``centre + half * normal`` turning by ``sweep`` radians.
+
+    Returns the chords' starts and ends, arc after arc. Each arc's points are
+    computed once: a chord ends exactly where the next begins.
+    """
     count = np.maximum(np.ceil(np.abs(sweep) / ARC_STEP), 1).astype(np.int64)
-    arc = np.repeat(np.arange(len(count)), count)
-    step = np.arange(len(arc)) - np.repeat(np.cumsum(count) - count, count)
-    angles = np.stack([step, step + 1]) * (sweep / count)[arc]
+    arc = np.repeat(np.arange(len(count)), count + 1)
+    step = np.arange(len(arc)) - np.repeat(np.cumsum(count + 1) - (count + 1), count + 1)
+    angles = step * (sweep / count)[arc]
     cos, sin = np.cos(angles), np.sin(angles)
-    nx, ny = normal[arc, 0], normal[arc, 1]
-    points = centre[arc] + half * np.stack([cos * nx - sin * ny, sin * nx + cos * ny], axis=-1)
-    return points[0], points[1]
+    nx, ny = normal[:, 0].take(arc), normal[:, 1].take(arc)
+    points = np.empty((len(arc), 2))
+    points[:, 0] = centre[arc, 0] + half * (cos * nx - sin * ny)
+    points[:, 1] = centre[arc, 1] + half * (sin * nx + cos * ny)
+    last = step == count[arc]
+    return points.compress(~last, 0), points.compress(step > 0, 0)

@@ -64,7 +64,7 @@ def uniform_polyline(curves: Any, tolerance: float) -> tuple[np.ndarray, np.ndar
     pieces: dict[int, tuple[np.ndarray, np.ndarray]] = {}
     for size in np.unique(curves.sizes).tolist():
         which = np.flatnonzero(curves.sizes == size)
-        control = curves.points[curves.starts[which][:, None] + np.arange(size)]
+        control = curves.points.take(curves.starts[which][:, None] + np.arange(size), 0)
         count = (
             np.zeros(len(which), dtype=np.int64)
             if size == 1
@@ -97,18 +97,22 @@ def uniform_points(control: np.ndarray, count: np.ndarray) -> np.ndarray:
             ]
         )
     s = 1.0 - t
-    weights = {
-        0: [np.ones_like(t)],
-        1: [s, t],
-        2: [s * s, 2 * s * t, t * t],
-        3: [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t],
-    }[degree]
-    points = sum(w * control[curve, i] for i, w in enumerate(weights))
+    # Only the degree's own Bernstein weights (a dict of all four built them all).
+    if degree == 0:
+        weights = [np.ones_like(t)]
+    elif degree == 1:
+        weights = [s, t]
+    elif degree == 2:
+        weights = [s * s, 2 * s * t, t * t]
+    else:
+        weights = [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t]
+    # control[:, i].take(curve, 0): a row gather, far cheaper than control[curve, i].
+    points = sum(w * control[:, i].take(curve, 0) for i, w in enumerate(weights))
     # t = 0 and t = 1 give the end points themselves, so joins stay exact.
     ends = step == count[curve]
     starts = step == 0
-    points[starts] = control[curve[starts], 0]
-    points[ends] = control[curve[ends], -1]
+    points[starts] = control[:, 0].take(curve[starts], 0)
+    points[ends] = control[:, -1].take(curve[ends], 0)
     return points
 
 
@@ -127,7 +131,8 @@ def assemble(
         local = np.arange(len(points)) - np.repeat(np.cumsum(count) - count, count)
         curve = np.repeat(which, count)
         keep = local >= joined[curve].astype(np.int64)
-        line[(offset[curve] + local - joined[curve])[keep]] = points[keep]
+        at = (offset[curve] + local - joined[curve])[keep]
+        line[:, 0][at], line[:, 1][at] = points[:, 0][keep], points[:, 1][keep]
     gaps = np.zeros(max(len(line) - 1, 0), dtype=bool)
     new_subpath = np.flatnonzero(~joined[1:]) + 1
     gaps[offset[new_subpath] - 1] = True

@@ -131,7 +131,8 @@ class Curves:
     def joined(self) -> np.ndarray:
         """True for each curve that starts where the one before it ends (False first)."""
         starts, ends = self.starts, self.ends
-        same = np.all(self.points[starts[1:]] == self.points[ends[:-1]], axis=1)
+        after, before = self.points.take(starts[1:], 0), self.points.take(ends[:-1], 0)
+        same = (after[:, 0] == before[:, 0]) & (after[:, 1] == before[:, 1])
         return np.concatenate([[False], same])
 
     def split(self) -> list[np.ndarray]:

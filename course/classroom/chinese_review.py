@@ -412,7 +412,10 @@ _MENTIONS = {
     "zh-CN": (
         re.compile(r"[把将]\s*\*([^*\n]+)\*\s*(?:调|设|切换|拖|改|换|选|移|增|减|拉)"),
         re.compile(r"(?:调整|调节|拖动|移动|切换|改变|增大|减小|拉动)\s*\*([^*\n]+)\*"),
-        re.compile(r"(?:切换成|切换到|换成|设为|选成|选择|选)\s*[“「«]([^”」»\n]+)[”」»]"),
+        re.compile(r"(?:切换成|切换到|换成|设为|选成|选择|选)\s*[“«]([^”»\n]+)[”»]"),
+        # The Chinese edition's convention: a control or an option is named in 「」, as
+        # Chinese software manuals name buttons and menus (Chinese fonts have no italics).
+        re.compile(r"「([^」\n]+)」"),
     ),
 }
 
@@ -426,6 +429,8 @@ def control_mentions(text: str, code: str) -> list[str]:
     ['segments', 'segments']
     >>> control_mentions("把 *控制点数* 调到 10，再把 *采样方式* 切换成“报告的采样”。", "zh-CN")
     ['控制点数', '采样方式', '报告的采样']
+    >>> control_mentions("把「规则」切换成「左上规则」，再看「线段数」的读数。", "zh-CN")
+    ['规则', '左上规则', '线段数']
     >>> control_mentions("the *gap* is two points", "en")
     []
     """

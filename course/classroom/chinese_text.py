@@ -63,10 +63,10 @@ __all__ = [
     "UNITS",
     "Shown",
     "ascii_punctuation",
-    "quotation_marks",
     "code_names",
     "latin_words",
     "prose",
+    "quotation_marks",
 ]
 
 _ROOT = Path(__file__).resolve().parents[2]
@@ -335,7 +335,7 @@ def quotation_marks(text: str) -> list[str]:
     --------
     >>> quotation_marks("你的函数抛出了 NotImplementedError，提示“在这里写你的代码”")
     []
-    >>> quotation_marks('把「规则」切换成「左上规则」；`raise NotImplementedError("在这里写你的代码")`')
+    >>> quotation_marks('把「规则」切换成「左上规则」；`raise NotImplementedError("写代码")`')
     []
     >>> quotation_marks("提示«在这里写你的代码»")
     ['«', '»']

@@ -101,6 +101,27 @@ def test_ascii_punctuation_between_chinese_clauses():
     assert text.ascii_punctuation("规则 (左上) 画一次") != []
 
 
+def test_quotation_marks_keep_the_editions_convention():
+    assert text.quotation_marks("提示“在这里写你的代码”；把「规则」切换成「左上规则」") == []
+    assert text.quotation_marks('`raise NotImplementedError("在这里写你的代码")`') == []
+    assert text.quotation_marks("提示«在这里写你的代码»") == ["«", "»"]
+    assert text.quotation_marks("『规则』") == ["『", "』"]
+    assert text.quotation_marks('提示"在这里写你的代码"') == ['"在这里写你的代码"']
+    assert text.quotation_marks("提示“在这里写你的代码") == ["“ without ”"]
+    assert text.quotation_marks("「规则」」") == ["」 without 「"]
+
+
+def test_chinese_texts_quote_with_the_editions_marks(messages):
+    shown = [*messages, *review.twin_markdown(), *review.twin_outputs()]
+    found = [
+        f"{text_.lesson or '--'} {text_.where[:70]}: {marks}"
+        for text_ in shown
+        for marks in [text.quotation_marks(text_.text)]
+        if marks
+    ]
+    assert found == [], listed(found)
+
+
 def test_no_latin_words_in_the_catalog(messages):
     library = [text for text in messages if text.where.startswith("course.po")]
     found = latin_report(library, text.code_names(parameters=True))

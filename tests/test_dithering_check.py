@@ -133,10 +133,10 @@ def test_both_checkers_report_in_chinese(in_chinese):
     assert ordered.startswith("dithering_ordered 未通过：第 1 个用例结果错误\n  输入：gray=")
     assert "你的输出含有这些值：0, 255。本课的输入是 [0, 1] 内的灰度，" in ordered
     assert "输出只能是 0（暗）或 1（亮）" in ordered
-    assert "典型错误：用 0 和 255 代替了 0 和 1。" in ordered
+    assert "常见错误：用 0 和 255 代替了 0 和 1。" in ordered
     assert "提示：看看输出的大小" in ordered and "Hint" not in ordered
     unread = check.dithering_error_diffuse(lambda gray: floyd_steinberg(gray, read_errors=False))
-    assert "典型错误：误差从未被读取。" in str(unread)
+    assert "常见错误：误差从未被读取。" in str(unread)
     assert unread.mistake == "the errors are never read"  # the name stays an identifier
 
 

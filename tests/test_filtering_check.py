@@ -298,7 +298,7 @@ def test_blur_and_edge_report_in_chinese(in_chinese):
         "(0, 0)，在边界上（9 个相邻像素中有 4 个在图像内），而图像内部的每个像素都是对的" in border
     )
     edge = str(check.edge(lambda image: sobel_magnitude(image, "zero")))
-    assert "典型错误：零填充。" in edge and "Hint" not in edge
+    assert "常见错误：零填充。" in edge and "Hint" not in edge
     nan = str(check.blur(nan_padded))
     assert "第 1 个用例：你的答案在 [0, 0] 处是 nan，而每个值都必须是有限数" in nan
     assert "输出像素 (x, y) = (0, 0) 是 NaN。它在边界上，9 个相邻像素中只有 4 个在图像内" in nan

@@ -191,7 +191,7 @@ def test_a_figure_speaks_the_language_and_english_is_unchanged():
     english = supersampling_figures.box_response_figure().caption
     with i18n.language("zh-CN"):
         chinese = supersampling_figures.box_response_figure().caption
-    assert chinese == "在奈奎斯特频率 0.5 处，盒式滤波保留 0.637；在每像素 1、2 和 3 个周期处为零"
+    assert chinese == "在奈奎斯特频率 0.5 处，盒式滤波保留 0.637；在 1、2 和 3 周期/像素处为零"
     assert supersampling_figures.box_response_figure().caption == english
     assert english == (
         "at the Nyquist frequency 0.5 the box keeps 0.637; zero at 1, 2 and 3 cycles per pixel"

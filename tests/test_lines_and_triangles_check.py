@@ -520,14 +520,15 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
     assert str(backwards).startswith(
         "draw_line 未通过：第 1 个用例结果错误\n  输入：p0=(2, 3), p1=(9, 5)"
     )
-    assert "典型错误：画反了方向。你的像素是从 p1 画到 p0 的" in str(backwards)
+    assert "常见错误：画反了方向。你的像素是从 p1 画到 p0 的" in str(backwards)
+    assert "  像素集合相同，只是顺序不同\n" in str(backwards)  # the order, not the set
     assert backwards.mistake == "drawn backwards"  # the name stays an identifier
     staircase = str(check.draw_line(separate_steps))
-    assert "多了 2 个像素，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase
+    assert "多出 2 个像素，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase
     report = str(check.draw_line(the_reports_loop))
     assert "你画出的像素和实验报告里的循环完全一样。那个循环只有一个判断" in report
     one = str(check.draw_triangle_filled(lambda p0, p1, p2: [p0]))
-    assert "缺了 " in one and "提示：看看你的循环填了哪些行" in one and "Hint" not in one
+    assert "缺少 " in one and "提示：看看你的循环填了哪些行" in one and "Hint" not in one
 
     def stub(p0, p1):
         raise NotImplementedError

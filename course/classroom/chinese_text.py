@@ -31,6 +31,13 @@ their terms, and this module their words and their punctuation (issue 36):
 * :func:`ascii_punctuation`: an ASCII ``,`` ``;`` ``:`` with a space after it, between two
   clauses that both hold Chinese (or a format field, with Chinese on one side), or ASCII
   parentheses around Chinese; code spans, LaTeX, fields and code-like tuples are excepted.
+* :func:`quotation_marks`: the edition's quotation marks, as mainland textbooks write them.
+  「」 name only a control or an option the student sees on screen (「规则」, 「按弧长」:
+  Chinese fonts have no italics), and :func:`~course.classroom.chinese_review.control_mentions`
+  checks each against the labels of the lesson's apps; “” quote everything else: a stub's text
+  (“在这里写你的代码”), a term being defined, a word or a heading quoted. So «», 『』 and ASCII
+  double quotes around Chinese never appear, and “” and 「」 come in pairs; code spans, LaTeX
+  and fields are excepted (a code span quotes as Python does: ``raise NotImplementedError("…")``).
 
 Classroom tooling over the course's own files, never given a student's input: it checks none
 (``UNCHECKED = True``; the fuzz test skips it).
@@ -59,6 +66,7 @@ __all__ = [
     "code_names",
     "latin_words",
     "prose",
+    "quotation_marks",
 ]
 
 _ROOT = Path(__file__).resolve().parents[2]
@@ -307,4 +315,44 @@ def ascii_punctuation(text: str) -> list[str]:
         if _CJK.search(parentheses.group(1)):
             start, end = parentheses.span()
             found.append(text[max(0, start - 3) : end + 3].strip())
+    return found
+
+
+# --- quotation marks ------------------------------------------------------------------------
+
+_FOREIGN_QUOTES = re.compile("[«»『』]")
+_ASCII_QUOTED = re.compile(f'"[^"\\n]*[{CJK}][^"\\n]*"')
+_PAIRS = (("“", "”"), ("「", "」"))
+
+
+def quotation_marks(text: str) -> list[str]:
+    """The quotation marks of ``text`` that break the edition's convention, each in context.
+
+    «», 『』 and ASCII double quotes around Chinese; an unpaired “” or 「」. Code spans,
+    LaTeX and fields are excepted (see the module docstring for the convention).
+
+    Examples
+    --------
+    >>> quotation_marks("你的函数抛出了 NotImplementedError，提示“在这里写你的代码”")
+    []
+    >>> quotation_marks('把「规则」切换成「左上规则」；`raise NotImplementedError("写代码")`')
+    []
+    >>> quotation_marks("提示«在这里写你的代码»")
+    ['«', '»']
+    >>> quotation_marks('提示"在这里写你的代码"，或『规则』')
+    ['『', '』', '"在这里写你的代码"']
+    >>> quotation_marks("提示“在这里写你的代码")
+    ['“ without ”']
+    """
+    masked = prose(text)
+    found = [hit.group(0) for hit in _FOREIGN_QUOTES.finditer(masked)]
+    found += [hit.group(0) for hit in _ASCII_QUOTED.finditer(masked)]
+    for left, right in _PAIRS:
+        depth = 0
+        for mark in re.findall(f"[{left}{right}]", masked):
+            depth += 1 if mark == left else -1
+            if depth not in (0, 1):
+                break
+        if depth:
+            found.append(f"{left} without {right}" if depth > 0 else f"{right} without {left}")
     return found

@@ -29,6 +29,7 @@ __all__ = [
     "course_map",
     "handout_key",
     "lesson_card",
+    "no_preview",
     "readme_lessons",
     "update_readme",
 ]
@@ -249,6 +250,17 @@ def lesson_card(title: str, link: str, outcomes: tuple[str, ...]) -> str:
     listed = "".join(f"\n* {outcome}" for outcome in outcomes)
     after = _("After it you can:")
     return f"### [{title}]({link})\n\n{after}{listed}"
+
+
+def no_preview(title: str) -> str:
+    """What the course map shows, in the current language, for a lesson with no preview.
+
+    Examples
+    --------
+    >>> print(no_preview("Lesson 09 · Ray tracing"))
+    **Lesson 09 · Ray tracing**: no preview registered in `course.lessons`.
+    """
+    return _("**{title}**: no preview registered in `course.lessons`.").format(title=title)
 
 
 def readme_lessons(folder: str | Path = NOTEBOOKS, link_prefix: str = "") -> str:

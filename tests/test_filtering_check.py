@@ -290,12 +290,13 @@ def test_blur_and_edge_report_in_chinese(in_chinese):
     blurred = str(check.blur(lambda image: image))
     assert blurred.startswith("blur 未通过：第 1 个用例结果错误\n  输入：image=")
     assert (
-        "个像素不同；第一个错误的像素是 (x, y) = (0, 0)，在边界上。但图像内部也有像素不对"
+        "个像素不同；第一个出错的像素是 (x, y) = (0, 0)，在边界上。但图像内部也有像素出错"
         in blurred
     )
     border = str(check.blur(lambda image: box_blur(image, "zero")))
     assert (
-        "(0, 0)，在边界上（9 个相邻像素中有 4 个在图像内），而图像内部的每个像素都是对的" in border
+        "(0, 0)，在边界上（3 × 3 邻域的 9 个像素中有 4 个在图像内），而图像内部的每个像素都是对的"
+        in border
     )
     edge = str(check.edge(lambda image: sobel_magnitude(image, "zero")))
     assert "常见错误：零填充。" in edge and "Hint" not in edge

@@ -232,7 +232,7 @@ def brightness_figure(
     --------
     >>> brightness_figure()  # doctest: +NORMALIZE_WHITESPACE
     ink per px of length, step 0.001: counted 0.50..1.09, by length 0.75..1.00;
-    step 0.0002: counted 1.24..2.00, by length 1.00..1.00
+    step 0.0002: counted 1.24..2.00, by length 1.00
     """
     steps = _as_steps(steps)
     figure = Figure(figsize=(9.0, 3.0), dpi=100)
@@ -261,12 +261,24 @@ def brightness_figure(
     for step in steps[-2:]:
         (c0, c1), (a0, a1) = ranges["count", step], ranges["arc_length", step]
         parts.append(
-            _("step {step:g}: counted {c0:.2f}..{c1:.2f}, by length {a0:.2f}..{a1:.2f}").format(
-                step=step, c0=c0, c1=c1, a0=a0, a1=a1
+            _("step {step:g}: counted {counted}, by length {weighted}").format(
+                step=step, counted=_spread(c0, c1), weighted=_spread(a0, a1)
             )
         )
     caption = _("ink per px of length, {parts}").format(parts=_("; ").join(parts))
     return Still.of(figure, caption)
+
+
+def _spread(low: float, high: float) -> str:
+    """``low..high`` to two decimals, or one value where both print alike.
+
+    >>> _spread(0.5, 1.094), _spread(0.999, 1.001)
+    ('0.50..1.09', '1.00')
+    """
+    low_text, high_text = f"{low:.2f}", f"{high:.2f}"
+    if low_text == high_text:
+        return low_text
+    return _("{low}..{high}").format(low=low_text, high=high_text)
 
 
 def _as_steps(steps: Any) -> tuple[float, ...]:

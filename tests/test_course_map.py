@@ -135,7 +135,7 @@ def test_the_course_map_in_chinese_shows_chinese_lessons_handouts_and_guide():
     assert shown.startswith("### 练习怎么做")
     assert "| 课 | 学完你能够 | 对应的讲义任务 | 时长 |" in shown
     assert "[第 01 课 · " in shown and "60 分钟" in shown
-    assert "用反复的线性插值，手算贝塞尔曲线上的一个点" in shown
+    assert "通过反复做线性插值，手算贝塞尔曲线上的一个点" in shown
     # Each lesson's row: its title, what it teaches and its handout task, in Chinese.
     rows = [line for line in shown.splitlines() if line.startswith("| [")]
     assert len(rows) == len(lessons())

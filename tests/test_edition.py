@@ -609,7 +609,7 @@ def test_the_chinese_student_editions_stubs_and_the_checkers_report_of_them_are_
     exec(answers[0], namespace)  # next_level, as the student edition hands it out
     with message_language("zh-CN"):
         report = str(check.next_level(namespace["next_level"]))
-    said = "还没有写，你的函数抛出了 NotImplementedError，提示“在这里写你的代码”"
+    said = "你还没有写这个函数（它抛出了 NotImplementedError：“在这里写你的代码”）"
     assert report.startswith(f"next_level 未通过：{said}\n"), report
     english = str(check.next_level(namespace["next_level"]))  # English is the source's own
     assert "not written yet: your function raised NotImplementedError: 在这里写你的代码" in english

@@ -534,7 +534,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
         raise NotImplementedError
 
     assert str(check.draw_line(stub)).startswith(
-        "draw_line 未通过：还没有写，你的函数抛出了 NotImplementedError"
+        "draw_line 未通过：你还没有写这个函数（它抛出了 NotImplementedError"
     )
     refused = str(check.draw_line(lambda p0, p1: line(p0, p1).tolist()))
     assert "你的函数调用了课程库自己的答案 course.raster.line" in refused

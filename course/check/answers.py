@@ -60,7 +60,7 @@ def show_value(value: Any) -> str:
     '[[0., 0., 0., ..., 0., 0., 0.], [0., 0., 0., ..., 0., 0., 0.]] (shape (2, 21))'
     """
     if isinstance(value, np.generic):
-        return repr(value.item())
+        return repr(_rounded(value.item()))
     if isinstance(value, np.ndarray):
         # A colour image's numbers fill screens: past a few pixels, its size and range say more.
         if value.size > 400 or (value.ndim >= 3 and value.size > _LARGEST_SHOWN_IMAGE):
@@ -69,8 +69,27 @@ def show_value(value: Any) -> str:
         if value.size > 40:  # numpy elided some numbers: the shape is what a student can't count
             text += " " + _("(shape {shape})").format(shape=value.shape)
         return text
-    text = repr(value)
+    text = repr(_rounded(value))
     return text if len(text) <= 300 else text[:297] + "..."
+
+
+def _rounded(value: Any, depth: int = 0) -> Any:
+    """``value`` with its floats to 12 significant digits, so that 0.1 + 0.475 shows as 0.575.
+
+    A float's last binary digit is noise to a student (0.5750000000000002); a check's
+    tolerance is far wider than 12 digits, so two answers it tells apart still show apart.
+    Plain tuples and lists are rounded inside (their first hundred items: the rest are cut
+    from the line anyway); anything else is left as it is.
+
+    >>> _rounded(0.1 + 0.475), _rounded((1, 0.1 + 0.2, [2.5, float("nan")]))
+    (0.575, (1, 0.3, [2.5, nan]))
+    """
+    if type(value) is float:
+        return float(f"{value:.12g}") if np.isfinite(value) else value
+    if type(value) in (tuple, list) and depth < 4:
+        items = [_rounded(item, depth + 1) for item in islice(value, 100)]
+        return type(value)(items + list(value[100:]))
+    return value
 
 
 def _summary(value: np.ndarray) -> str:

@@ -22,8 +22,8 @@ stay, and the body becomes ``raise NotImplementedError("your code here")``, its
 message in the lesson's language (``"在这里写你的代码"`` in a Chinese twin:
 :func:`course.classroom.stubs.stub_line`). The check moves to a locked cell under it,
 which shows the checker's report: on the stub it reads ``FAIL ...: not written yet: your
-function raised NotImplementedError: your code here`` (in Chinese «还没有写，你的函数抛出了
-NotImplementedError，提示「在这里写你的代码」») until the student writes the function, and
+function raised NotImplementedError: your code here`` (in Chinese «你还没有写这个函数（它抛出了
+NotImplementedError：「在这里写你的代码」）») until the student writes the function, and
 the notebook still runs from top to bottom. A partial scaffold marks what to remove
 instead, with the lines ``### BEGIN SOLUTION`` and ``### END SOLUTION`` (nbgrader's
 markers): only the lines between them go, replaced by the stub at the marker's indentation,

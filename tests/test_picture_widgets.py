@@ -295,7 +295,8 @@ const text = (part) =>
   new TextDecoder().decode(part instanceof DataView ? part : new Uint8Array(part));
 globalThis.Blob = class {
   constructor(parts, options) {
-    this.text = parts.map(text).join("");
+    // A composed picture (a BMP: its header, then its pixels) shows as its pixels' text.
+    this.text = (options.type === "image/bmp" ? parts.slice(1) : parts).map(text).join("");
     this.type = options.type;
   }
 };
@@ -314,14 +315,12 @@ const image = { addEventListener() {}, style: {} };
 globalThis.document = {
   createElement(tag) {
     if (tag === "img") return image;
-    const canvas = {
-      getContext: () => context,
-      toBlob: (done) => turns(1).then(() => done({ text: "canvas:" + painted.join(" ") })),
-    };
+    const canvas = { getContext: () => context, width: 5, height: 4 };
     const context = {
       canvas,
       drawImage: (bitmap, x, y) => painted.push(`${bitmap.text}@${x},${y}`),
       clearRect: () => {},
+      getImageData: () => ({ data: new TextEncoder().encode("canvas:" + painted.join(" ")) }),
     };
     return canvas;
   },
@@ -576,7 +575,8 @@ const context = new Proxy(
   {},
   {
     get(target, name) {
-      if (name === "canvas") return { toBlob: (done) => done({ text: "composed" }) };
+      if (name === "canvas") return { width: 5, height: 4 };
+      if (name === "getImageData") return () => ({ data: new Uint8Array(5 * 4 * 4) });
       return (...args) => calls.push(`${name}(${args.map((a) => (a.text ?? a)).join(",")})`);
     },
     set(target, name, value) {
@@ -670,3 +670,58 @@ def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
         "fillText(B(t),0,0)",
         "restore()",
     ]
+
+
+BITMAP_HARNESS = r"""
+// A drawing's composed canvas as picture.js shows it: the bytes of the file it makes.
+const pixels = new Uint8Array(3 * 2 * 4).map((_, i) => (i * 37) % 256);
+const bytes = (part) =>
+  part instanceof DataView
+    ? new Uint8Array(part.buffer, part.byteOffset, part.byteLength)
+    : new Uint8Array(part);
+globalThis.Blob = class {
+  constructor(parts, options) {
+    this.parts = parts.map(bytes);
+    this.type = options.type;
+  }
+};
+const shown = [];
+globalThis.URL = {
+  createObjectURL: (blob) => {
+    shown.push({ type: blob.type, bytes: blob.parts.flatMap((part) => Array.from(part)) });
+    return "url";
+  },
+  revokeObjectURL: () => {},
+};
+globalThis.createImageBitmap = async () => ({ width: 3, height: 2 });
+const context = {
+  canvas: { width: 3, height: 2 },
+  drawImage() {},
+  getImageData: () => ({ data: pixels }),
+};
+const image = { addEventListener() {}, style: {} };
+globalThis.document = {
+  createElement: (tag) => (tag === "img" ? image : { getContext: () => context }),
+};
+const handlers = {};
+const state = { value: new Uint8Array(), format: "png", width: 3, height: 2, handles: [] };
+const model = { get: (key) => state[key], on: (event, handler) => { handlers[event] = handler; } };
+const { default: widget } = await import(process.argv[2]);
+widget.render({ model, el: { appendChild() {} } });
+const empty = new DataView(new TextEncoder().encode("[]").buffer);
+const none = new DataView(new ArrayBuffer(0));
+handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [none, empty, none, none]);
+await new Promise((resolve) => setTimeout(resolve, 50));
+console.log(JSON.stringify({ shown: shown.slice(1), pixels: Array.from(pixels) }));
+"""
+
+
+@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
+def test_picture_js_shows_a_drawing_as_a_bitmap_file_of_the_canvas_s_own_pixels(tmp_path):
+    printed = picture_js_in_node(tmp_path, BITMAP_HARNESS)
+    ((file,),) = [printed["shown"]]
+    assert file["type"] == "image/bmp"
+    decoded_file = Image.open(io.BytesIO(bytes(file["bytes"])))
+    expected = np.array(printed["pixels"], dtype=np.uint8).reshape(2, 3, 4)
+    assert decoded_file.size == (3, 2)
+    np.testing.assert_array_equal(np.asarray(decoded_file.convert("RGBA")), expected)

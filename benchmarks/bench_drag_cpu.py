@@ -26,7 +26,9 @@ back to a point it passed (:data:`ANGLE_STEP`), with ``time.process_time``
 - **now**: the moving artists sent as drawing commands that the browser
   carries out over the background it was sent once
   (``FigureView.publish_drawing``, ``course.widgets.browser_drawing``):
-  matplotlib lays the artists out, nothing is drawn or encoded.
+  nothing is drawn or encoded; a moving line's paint is read once and each
+  step builds only its vertices (``LineReplay``), a point's label keeps its
+  commands and moves them with its point (``TextReplay``).
 
 Goal: **now** at most half of **today**. Prints each way's CPU time per step
 (the fastest batch and the median batch, in ms) and the ratios, and the bytes

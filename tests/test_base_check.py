@@ -480,7 +480,7 @@ def test_hints_and_a_pass_in_chinese_and_english_after(monkeypatch):
 
 
 def test_a_colour_image_is_shown_by_shape_dtype_and_range_not_in_full():
-    from course.check.answers import show_value
+    from course.check.shown import show_value
 
     image = np.linspace(0.0, 1.0, 8 * 10 * 3).reshape(8, 10, 3)
     assert show_value(image) == "an array of shape (8, 10, 3), dtype float64, values 0 to 1"

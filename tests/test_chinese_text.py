@@ -20,7 +20,7 @@ from babel.messages.pofile import read_po
 from chinese import latin_report, listed
 from matplotlib.text import Annotation
 
-from course.check.answers import show_value
+from course.check.shown import show_value
 from course.classroom import chinese_review as review
 from course.classroom import chinese_text as text
 from course.i18n import language

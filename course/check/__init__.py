@@ -14,7 +14,8 @@ By concept: :mod:`~course.check.base` (``run_cases``: a checker's loop over its 
 :mod:`~course.check.views` (the originals of what a student may patch: numpy, math, the
 builtins; their warnings as text), :mod:`~course.check.answers`,
 :mod:`~course.check.comparisons`, :mod:`~course.check.references` (reading and comparing an
-answer, the library's answers refused), :mod:`~course.check.hints`,
+answer, the library's answers refused), :mod:`~course.check.shown` (a value in a report's
+line), :mod:`~course.check.hints`,
 :mod:`~course.check.pictures`; and for grading, :mod:`~course.check.grading` (cases drawn
 per submission) and :mod:`~course.check.outside` (the student's function run in a child
 process, under the operating system's limits).

@@ -47,7 +47,6 @@ from course.check.answers import (
     only_data,
     pixel_rows,
     read_answer,
-    show_value,
 )
 from course.check.comparisons import close, first_difference, pixel_difference, same_pixels
 from course.check.exercises import what_run_cases_takes
@@ -64,6 +63,7 @@ from course.check.sandbox import (
     run_bounded,
     student_line,
 )
+from course.check.shown import show_value
 from course.check.views import CheckersView
 from course.i18n import _
 

@@ -112,7 +112,7 @@ def first_difference(expected: Any, given: Any, atol: float = 1e-9, rtol: float 
     return first + _window(expected, given, index)
 
 
-#: Most numbers an answer's report line shows in full (see ``answers.show_value``).
+#: Most numbers an answer's report line shows in full (see ``shown.show_value``).
 _SHOWN_IN_FULL = 24
 
 

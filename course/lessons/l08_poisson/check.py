@@ -35,11 +35,11 @@ from typing import Any
 import numpy as np
 
 from course import poisson
-from course.check.answers import show_value
 from course.check.base import CheckResult, close, hint, run_cases
 from course.check.exercises import exercise
 from course.check.hints import Hints
 from course.check.pictures import image_picture, side_by_side
+from course.check.shown import show_value
 from course.i18n import N_, _
 from course.lessons.graded_cases import drawn_in_order
 from course.lessons.l08_poisson.mistakes import (

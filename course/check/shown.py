@@ -2,7 +2,8 @@
 
 Small values are shown in full, floats to 12 significant digits (a float's last
 binary digit is noise to a student), large arrays by their shape, dtype and range.
-The checkers' reports (:mod:`course.check.base`) are this module's callers.
+The checkers' reports (:mod:`course.check.base`), the reading of an answer
+(:mod:`course.check.answers`) and the lessons' own report lines call it.
 """
 
 from __future__ import annotations

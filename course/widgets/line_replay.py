@@ -4,7 +4,10 @@ At every step of a drag, :class:`~course.widgets.figure_view.FigureView` draws
 the moving lines again; :class:`LineReplay` spares it most of what
 ``Line2D.draw`` spends in Python, for Agg and for the browser's drawing
 commands (:mod:`course.widgets.browser_drawing`) alike, and :func:`empty_line`
-tells it which lines have nothing to draw.
+tells it which lines have nothing to draw. Into the browser's recorder a
+replay keeps each call's *paint* (what the recorder reads from its graphics
+context and transforms), so that a step only turns the line's new data into
+vertices.
 
 ``FigureView`` is this module's only caller, with artists the apps made
 (``UNCHECKED = True``).

@@ -180,7 +180,7 @@ function render({ model, el }) {
     return canvas.getContext("2d");
   }
 
-  async function showComposed(mine) {
+  function showComposed(mine) {
     if (mine !== generation) return;
     display(URL.createObjectURL(bitmapFile(composed)));
   }
@@ -198,7 +198,7 @@ function render({ model, el }) {
       composed.clearRect(left, top, width, height);
       composed.drawImage(pieces[index], left, top);
     });
-    await showComposed(mine);
+    showComposed(mine);
   }
 
   async function draw(message, buffers, mine) {
@@ -214,7 +214,7 @@ function render({ model, el }) {
     composed.drawImage(backdrop, 0, 0);
     const commands = JSON.parse(new TextDecoder().decode(octets(parts[0])));
     drawCommands(composed, commands, floats(parts[1]), octets(parts[2]));
-    await showComposed(mine);
+    showComposed(mine);
   }
 
   // Where the pointer is, in the PNG's pixels (the page may scale the image).

@@ -85,6 +85,20 @@ def de_casteljau_chunked(control: np.ndarray, t: np.ndarray) -> np.ndarray:
     return curve
 
 
+def levels_at(control: np.ndarray, t: float) -> list[np.ndarray]:
+    """Every level of de Casteljau's algorithm at one ``t``: ``control`` (N, d), N levels.
+
+    Each level is one line of the textbook applied to the level before,
+    down to the single point B(t).
+    """
+    level = control
+    levels = [level]
+    while len(level) > 1:
+        level = level[:-1] * (1 - t) + level[1:] * t
+        levels.append(level)
+    return levels
+
+
 def bernstein_horner(control: np.ndarray, binomials: np.ndarray, t: np.ndarray) -> np.ndarray:
     """(M, d) points of the Bernstein form by Horner's rule in u = t / (1 - t).
 

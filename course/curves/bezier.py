@@ -41,7 +41,7 @@ from course.curves._bernstein import (
 from course.curves._bernstein import bernstein_basis as bernstein_basis_of
 from course.curves._bernstein import binomial as binomial_of
 from course.curves._bernstein import pascal_row as pascal_row_of
-from course.curves._bezier_fast import de_casteljau_chunked
+from course.curves._bezier_fast import de_casteljau_chunked, levels_at
 from course.curves.flattening import uniform_parameters
 from course.i18n import _
 
@@ -179,13 +179,7 @@ def de_casteljau_levels(points: Any, t: Any) -> list[np.ndarray]:
     [[1.0, 1.0], [3.0, 1.0]]
     [[2.0, 1.0]]
     """
-    level = as_points(points)
-    value = as_scalar_parameter(t)
-    levels = [level]
-    while len(level) > 1:
-        level = level[:-1] * (1 - value) + level[1:] * value
-        levels.append(level)
-    return levels
+    return levels_at(as_points(points), as_scalar_parameter(t))
 
 
 # --- the Bernstein form ------------------------------------------------------

@@ -66,6 +66,11 @@ class FigureView:
         self.canvas = FigureCanvasAgg(self.figure)
         self.image = Picture(width=columns, height=rows, format=format)
         self._background = None
+        # The background of the moving artists as the app left them, kept while a drag holds
+        # some of them still (hold): those are drawn over it, not the whole figure again.
+        self._still = None
+        self._holding = False
+        self._held: list[Artist] = []
         # The moving lines' Agg calls, replayed at a drag's steps (render_moving).
         self._replays: dict[Line2D, LineReplay | None] = {}
         # The RGBA pixels the browser holds: the last whole picture and the patches since.
@@ -158,16 +163,103 @@ class FigureView:
 
     def invalidate(self) -> None:
         """Forget the cached background; the next :meth:`render_moving` redraws it."""
-        self._background = None
+        self._still = None
+        self._held = []
+        self._start_over(None)
+
+    def hold(self, artists: list[Artist]) -> None:
+        """``artists``, moving until now and no longer animated, join the background for a while.
+
+        A drag holds the handles it does not move still. The background is
+        then the one kept before plus these artists, drawn over it, where
+        that draws what the whole figure would (none of them under anything
+        the figure draws after it); else the whole figure is drawn again.
+        :meth:`release` returns to the background kept.
+        """
+        self._holding = True
+        self._held.extend(artists)
+        self._start_over(None)
+
+    def release(self) -> None:
+        """The artists :meth:`hold` held move again: the background is the one kept before."""
+        self._holding = False
+        self._held = []
+        self._start_over(self._still)
+
+    def _start_over(self, background: Any) -> None:
+        self._background = background
         self._replays.clear()
         self._browser_draws = None
         self._backdrop_sent = False
         self._command_replays.clear()
 
     def _draw_background(self) -> None:
-        self.canvas.draw()  # skips animated artists
+        held = self._in_drawing_order(self._held)
+        if self._holding and self._still is not None and self._drawn_on_top(held):
+            self.canvas.restore_region(self._still)
+            for artist in held:
+                self.figure.draw_artist(artist)
+        else:
+            self.canvas.draw()  # skips animated artists
         self._background = self.canvas.copy_from_bbox(self.figure.bbox)
+        if not self._holding:
+            self._still = self._background
         self._backdrop_sent = False
+
+    def _in_drawing_order(self, artists: list[Artist]) -> list[Artist]:
+        """``artists`` in the order the figure draws them: each axes' by zorder, then its own."""
+        children = {}
+        for parent in {artist.axes or self.figure for artist in artists}:
+            children.update({child: i for i, child in enumerate(parent.get_children())})
+
+        def key(artist: Artist) -> tuple:
+            return (artist.axes is None, artist.zorder, children.get(artist, 0))
+
+        return sorted(artists, key=key)
+
+    def _drawn_on_top(self, held: list[Artist]) -> bool:
+        """True if drawing ``held``, in order, over the figure's other artists draws the figure.
+
+        The figure draws each axes' artists by zorder, then its own above the
+        axes: a held artist drawn last differs from the figure's drawing only
+        where it overlaps an artist, not held, that the figure draws after it.
+        Overlap is judged by window extents, two pixels wider for anti-aliasing.
+        """
+        renderer = self.canvas.get_renderer()
+        skipped = set(held)
+        for artist in held:
+            if not artist.get_visible():
+                continue
+            box = artist.get_window_extent(renderer).padded(2)
+            for later in self._drawn_after(artist, skipped):
+                try:
+                    other = later.get_window_extent(renderer)
+                except Exception:  # an artist without an extent: assume it overlaps
+                    return False
+                if box.overlaps(other):
+                    return False
+        return True
+
+    def _drawn_after(self, artist: Artist, skipped: set) -> list[Artist]:
+        """The artists not ``skipped`` and not animated the figure may draw after ``artist``."""
+        axes = artist.axes
+        later = []
+        if axes is not None:
+            later += [child for child in axes.get_children() if child.zorder >= artist.zorder]
+        level = axes.zorder if axes is not None else artist.zorder
+        later += [
+            child
+            for child in self.figure.get_children()
+            if child is not axes and child is not self.figure.patch and child.zorder >= level
+        ]
+        return [
+            child
+            for child in later
+            if child not in skipped
+            and child.get_visible()
+            and not child.get_animated()
+            and not (isinstance(child, Text) and not child.get_text())
+        ]
 
     def _encoded(self) -> bytes:
         """The canvas as it stands, encoded in the picture's format."""

@@ -106,12 +106,14 @@ class PointerMixin:
         """Handle ``name`` is held: the other handles' own artists join the background."""
         if not self.BLIT:
             return
+        held = []
         for other, artists in self.handle_artists.items():
             for artist in artists if other != name else ():
                 if artist in self.moving:
                     artist.set_animated(False)
                     self.moving.remove(artist)
-        self.view.invalidate()
+                    held.append(artist)
+        self.view.hold(held)
 
     def grab_ended(self, name: str) -> None:
         """Handle ``name`` is let go: every handle's artists move again."""
@@ -121,7 +123,7 @@ class PointerMixin:
             for artist in artists:
                 if artist not in self.moving:
                     self.animate(artist)
-        self.view.invalidate()
+        self.view.release()
 
     def double_click(self, name: str) -> bool:
         """A double click on handle ``name``; True if it changed something."""

@@ -17,8 +17,7 @@ from matplotlib.lines import Line2D
 from matplotlib.transforms import IdentityTransform
 
 from course._validate import as_app_points, as_int, as_unit
-from course.curves._bezier_fast import de_casteljau_chunked
-from course.curves.bezier import de_casteljau_levels
+from course.curves._bezier_fast import de_casteljau_chunked, levels_at
 from course.i18n import _
 from course.images import EXAMPLE_POINTS
 from course.lessons.printed import degree_numeral
@@ -29,6 +28,7 @@ __all__ = ["DeCasteljauApp"]
 
 MIN_POINTS, MAX_POINTS = 2, len(EXAMPLE_POINTS)
 _CURVE_SAMPLES = 201
+_WHOLE_CURVE_AT = np.linspace(0.0, 1.0, _CURVE_SAMPLES)
 # The handouts' 700 x 700 window: the view, unless typed points lie outside it.
 _WINDOW = (0.0, 700.0)
 _MARKERS = ("s", "^", "D", "v", "p", "h", "<", "*", ">", "P")
@@ -104,6 +104,7 @@ class DeCasteljauApp(SliderApp):
         self.points = np.array(start, dtype=float)
         self._drawn_points: np.ndarray | None = None
         self._legend_count = 0
+        self._title_position: tuple[float, float] = (0.5, 1.0)  # where a drag found it
 
         axes = self.figure.add_axes((0.08, 0.06, 0.9, 0.88))
         axes.tick_params(labelsize=8)
@@ -205,10 +206,17 @@ class DeCasteljauApp(SliderApp):
 
     def update(self) -> None:
         points = self._read_points()
-        if self._drawn_points is None or not np.array_equal(points, self._drawn_points):
-            self._set_points(points)
         t = float(self.value("t"))
-        levels = de_casteljau_levels(points, t)
+        # The points were validated as they were read: the unchecked kernels, at every step.
+        # A drag moves them at every step: the whole curve and the traced part in one call.
+        traced_at = np.linspace(0.0, t, _CURVE_SAMPLES)
+        if self._drawn_points is None or not np.array_equal(points, self._drawn_points):
+            both = de_casteljau_chunked(points, np.concatenate([_WHOLE_CURVE_AT, traced_at]))
+            self._set_points(points, both[:_CURVE_SAMPLES])
+            traced = both[_CURVE_SAMPLES:]
+        else:
+            traced = de_casteljau_chunked(points, traced_at)
+        levels = levels_at(points, t)
         for line, level in zip(self.level_lines, levels[:-1], strict=False):
             line.set_data(level[:, 0], level[:, 1])
         for line in self.level_lines[len(levels) - 1 :]:
@@ -216,8 +224,6 @@ class DeCasteljauApp(SliderApp):
                 line.set_data([], [])
         point = levels[-1][0]
         self.point_marker.set_data([point[0]], [point[1]])
-        # The points were validated as they were read: the unchecked kernel, at every step.
-        traced = de_casteljau_chunked(points, np.linspace(0.0, t, _CURVE_SAMPLES))
         self.traced.set_data(traced[:, 0], traced[:, 1])
         start = _("degree {degree}, t = {t:.2f}: B(t) = ").format(
             degree=degree_numeral(len(points) - 1), t=t
@@ -230,11 +236,10 @@ class DeCasteljauApp(SliderApp):
                 self.title_start.set_text(start)
                 self.view.invalidate()
 
-    def _set_points(self, points: np.ndarray) -> None:
-        """New control points: the whole curve, the labels, and the view if they left it."""
+    def _set_points(self, points: np.ndarray, curve: np.ndarray) -> None:
+        """New control points and their whole curve: the labels, and the view if they left it."""
         self.points = np.array(points, dtype=float)
         self._drawn_points = self.points.copy()
-        curve = de_casteljau_chunked(points, np.linspace(0.0, 1.0, _CURVE_SAMPLES))
         self.full_curve.set_data(curve[:, 0], curve[:, 1])
         for index, label in enumerate(self.labels):
             label.set_visible(index < len(points))
@@ -296,9 +301,14 @@ class DeCasteljauApp(SliderApp):
         after = self.title_start.get_window_extent(renderer).width
         self.title_numbers.set_position((box.x0 + after, box.y0))
         self.title.set_visible(False)
+        # A whole figure drawn during the drag places the hidden title as if it had no
+        # extent; the release draws it where it stood, over the background kept.
+        self._title_position = self.title.get_position()
+        self.view.hold([self.title_start])  # it was hidden: drawn into the background now
 
     def grab_ended(self, name: str) -> None:
         super().grab_ended(name)
+        self.title.set_position(self._title_position)
         self.title.set_visible(True)
         self.title_start.set_visible(False)
         self.title_numbers.set_visible(False)

@@ -91,6 +91,7 @@ NAMES = (
     "Floyd-Steinberg",
     "Floyd–Steinberg",
     "Jarvis-Judice-Ninke",
+    "Jarvis–Judice–Ninke",
     "Stucki",
     "Atkinson",
     "Bayer",

@@ -453,9 +453,9 @@ def test_a_degree_is_written_in_words_in_chinese_not_as_a_count(capsys):
     assert words == ["一", "三", "九", "十", "十一", "二十", "二十六", "九十九", "二百", "1029 "]
     assert [degree_numeral(n) for n in (3, 1029)] == [3, 1029]
     lines = capsys.readouterr().out.splitlines()
-    assert lines[0].startswith(" 三次曲线：") and "：一条 1999 次曲线需要 2000 层嵌套调用" in lines[1], (
-        lines
-    )
+    assert (
+        lines[0].startswith(" 三次曲线：") and "：一条 1999 次曲线需要 2000 层嵌套调用" in lines[1]
+    ), lines
 
 
 def test_the_step_table_heading_lines_up_in_chinese(capsys):

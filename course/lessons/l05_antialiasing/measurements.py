@@ -236,13 +236,15 @@ def claims() -> Table:
         (_("middle (Point)"), renderings["bilinear_corners"]),
         (_("right (rounded)"), renderings["bilinear_centres"]),
     )
+    # 19 columns hold the English names; a longer translation widens the column for all four.
+    width = max(19, *(display_width(name) + 3 for name, _image in shown))
     return Table(
         "\n".join(
             _(
                 "{name} pixels differing from it: {count:5d}  "
                 "RMSE {error:.4f}  position error {position:.3f} px"
             ).format(
-                name=pad(name, 19),
+                name=pad(name, width),
                 count=np.count_nonzero(image != plain),
                 error=rmse(image, exact),
                 position=position_error(image, SEED_000_CUBIC),

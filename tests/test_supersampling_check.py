@@ -437,17 +437,41 @@ def test_samples_spaced_otherwise_than_the_sub_pixel_centres_are_named(offsets, 
     assert "case 1 is wrong" in str(result)
 
 
+ZEROS = "every pixel you returned is 0: no mean reached your result"
+
+
 @pytest.mark.parametrize(
-    "student",
+    ("student", "explanation"),
     [
-        spaced_loop(centres, dtype=int),
-        spaced_loop(centres, dtype=np.uint8),
-        spaced_loop(centres, finish=lambda result: result.astype(np.uint8)),
-        spaced_loop(centres, finish=lambda result: np.round(result).astype(int)),
+        # Each sample's share, below 1, is cut to 0 as it is added into an integer result;
+        # cast at the end, every mean below 1 is: the cases' answers are all zeros.
+        (
+            spaced_loop(centres, dtype=int),
+            ZEROS,
+        ),
+        (
+            spaced_loop(centres, dtype=np.uint8),
+            ZEROS,
+        ),
+        (
+            spaced_loop(centres, finish=lambda result: result.astype(np.uint8)),
+            ZEROS,
+        ),
+        (
+            spaced_loop(centres, finish=lambda result: np.round(result).astype(int)),
+            "every value you returned is a whole number",
+        ),
+        # Nothing stored: the result as it was made.
+        (
+            lambda image, out_shape, rate: np.zeros((*out_shape, *image.shape[2:])),
+            ZEROS,
+        ),
     ],
-    ids=["int array", "uint8 array", "astype uint8", "rounded to int"],
+    ids=["int array", "uint8 array", "astype uint8", "rounded to int", "nothing stored"],
 )
-def test_whole_numbers_returned_for_the_means_are_named(student):
+def test_whole_numbers_and_lost_means_are_named(student, explanation):
     result = check.supersample(student)
-    assert not result and result.mistake == "whole numbers for the means", str(result)
-    assert "Make the result a float array" in str(result)
+    assert not result and result.mistake == "means cut to whole numbers, or never stored", str(
+        result
+    )
+    assert explanation in str(result) and "Make the result a float array" in str(result)

@@ -7,7 +7,8 @@ flipped, x and y swapped, and a read past the image (IndexError).
 :func:`supersample_mistakes` are the wrong loops :func:`.check.supersample` names: the
 scale made whole, a division by the rate, the scales swapped, the sub-pixel offsets not
 scaled, the report's shifts, samples spread edge to edge or 1 / (rate + 1) apart, and
-whole numbers returned for the means. Each list is built in the current language.
+whole numbers returned for the means (a result of zeros told apart: nothing stored looks the
+same). Each list is built in the current language.
 
 Only the checkers call these, with their own cases, so this module checks none
 (``UNCHECKED = True``; the fuzz test skips it).
@@ -93,6 +94,11 @@ def _whole(cut: Any) -> Any:
     return lambda image, out_shape, rate: cut(resample.supersample(image, out_shape, rate))
 
 
+def _zeros(image: np.ndarray, out_shape: tuple[int, int], rate: int) -> np.ndarray:
+    """The result as it was made, every mean lost: np.zeros of the answer's shape."""
+    return np.zeros((*out_shape, *image.shape[2:]))
+
+
 def supersample_mistakes() -> list[Mistake]:
     """The mistakes ``supersample``'s checker names, in the current language."""
     whole_numbers = _(
@@ -101,6 +107,15 @@ def supersample_mistakes() -> list[Mistake]:
         "or .astype(np.uint8) at the end), which turn each mean into 0 or 1. Make the result a "
         "float array, np.zeros((h, w)) or np.zeros((h, w, 3)), and return the means as they "
         "are."
+    )
+    # Means below 1 cut to integers are 0, as a result nothing was stored into is: the
+    # values cannot tell the two apart, so the explanation names both.
+    all_zero = _(
+        "every pixel you returned is 0: no mean reached your result. Either nothing was "
+        "stored into it, or it holds integers (np.zeros(..., dtype=int), np.zeros_like of an "
+        "integer image, or .astype(np.uint8) at the end), which cut every mean below 1, and "
+        "every sample's share added with +=, to 0. Make the result a float array, "
+        "np.zeros((h, w)) or np.zeros((h, w, 3)), and store each pixel's mean in it."
     )
     return [
         Mistake(
@@ -200,8 +215,10 @@ def supersample_mistakes() -> list[Mistake]:
                 image, out_shape, rate, spacing="inside"
             ),
         ),
-        Mistake(_("whole numbers for the means"), whole_numbers, _whole(np.trunc)),
-        Mistake(_("whole numbers for the means"), whole_numbers, _whole(np.round)),
+        # One mistake as the class sees it; all zeros first, for its own explanation.
+        Mistake(_("means cut to whole numbers, or never stored"), all_zero, _zeros),
+        Mistake(_("means cut to whole numbers, or never stored"), whole_numbers, _whole(np.trunc)),
+        Mistake(_("means cut to whole numbers, or never stored"), whole_numbers, _whole(np.round)),
     ]
 
 

@@ -470,7 +470,7 @@ def test_the_status_line_speaks_the_language_and_clears_after_a_refused_value():
         assert app.status.value == ""
         app._on_message(None, {"kind": "down"}, [])
         assert app.status.value == "忽略了一条指针消息：缺少 x, y"
-        with pytest.raises(ValueError, match="不读取小数逗号") as error:
+        with pytest.raises(ValueError, match="小数点不能写成逗号") as error:
             parse_points("90,5 610,5")
         assert "第 1 个点" in str(error.value)
     app.controls["t"].value = float("nan")

@@ -526,7 +526,7 @@ def test_line_and_triangle_report_in_chinese(in_chinese):
     staircase = str(check.draw_line(separate_steps))
     assert "多出 2 个像素，第一个在 (x, y) = (4, 3)" in staircase and "4 连通的阶梯" in staircase
     report = str(check.draw_line(the_reports_loop))
-    assert "你画出的像素和实验报告里的循环完全一样。那个循环只有一个判断" in report
+    assert "从不同时移动，画出的像素和实验报告里的循环完全一样。那个循环只有一个判断" in report
     one = str(check.draw_triangle_filled(lambda p0, p1, p2: [p0]))
     assert "缺少 " in one and "提示：看看你的循环填了哪些行" in one and "Hint" not in one
 

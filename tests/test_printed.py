@@ -30,7 +30,7 @@ from course.lessons.l06_dithering import lesson as l06
 from course.lessons.l07_filtering import lesson as l07
 from course.lessons.l07_filtering.apps import RepeatedBlurApp
 from course.lessons.l08_poisson import lesson as l08
-from course.lessons.printed import degree_numeral, display_width
+from course.lessons.printed import degree_column, degree_numeral, display_width
 from course.raster import wu_line
 
 CHINESE = re.compile("[\u4e00-\u9fff]")
@@ -444,6 +444,18 @@ def _degree_number(found: re.Match) -> str:
     return f"{numbers[found.group(1)]} 次曲线"
 
 
+def test_lesson_02s_degree_lines_line_up_by_display_width_in_chinese(capsys):
+    # The ninth reader: « 三次曲线» did not line up with «二十次曲线» (padded by characters).
+    with language("zh-CN"):
+        for n in (3, 9, 20):
+            l02.print_horner_gap(n, 1e-13)
+    heads = [line.split("次曲线")[0] for line in capsys.readouterr().out.splitlines()]
+    assert heads == ["  三", "  九", "二十"]
+    assert {display_width(head) for head in heads} == {4}
+    # English stays exactly as {degree:>2} pads a number.
+    assert all(f"{n:>2}" == f"{degree_column(n):>2}" for n in range(300))
+
+
 def test_a_degree_is_written_in_words_in_chinese_not_as_a_count(capsys):
     # Issue 36: «3 次，t = 0.50» reads as "3 times"; a textbook writes 三次曲线.
     with language("zh-CN"):
@@ -454,7 +466,7 @@ def test_a_degree_is_written_in_words_in_chinese_not_as_a_count(capsys):
     assert [degree_numeral(n) for n in (3, 1029)] == [3, 1029]
     lines = capsys.readouterr().out.splitlines()
     assert (
-        lines[0].startswith(" 三次曲线：") and "：一条 1999 次曲线需要 2000 层嵌套调用" in lines[1]
+        lines[0].startswith("  三次曲线：") and "：一条 1999 次曲线需要 2000 层嵌套调用" in lines[1]
     ), lines
 
 

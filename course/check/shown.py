@@ -32,6 +32,10 @@ def show_value(value: Any) -> str:
     'an array of shape (8, 8, 3), dtype float64, all 0.25'
     >>> show_value(np.zeros((2, 21)))
     '[[0., 0., 0., ..., 0., 0., 0.], [0., 0., 0., ..., 0., 0., 0.]] (shape (2, 21))'
+    >>> from course.i18n import message_language
+    >>> with message_language("zh-CN"):
+    ...     show_value(np.zeros((2, 21)))[-14:]
+    ']]（形状 (2, 21)）'
     """
     if isinstance(value, np.generic):
         return repr(_rounded(value.item()))
@@ -41,7 +45,9 @@ def show_value(value: Any) -> str:
             return _summary(value)
         text = " ".join(np.array2string(value, precision=6, separator=", ", threshold=40).split())
         if value.size > 40:  # numpy elided some numbers: the shape is what a student can't count
-            text += " " + _("(shape {shape})").format(shape=value.shape)
+            shape = _("(shape {shape})").format(shape=value.shape)
+            # A full-width parenthesis (Chinese) carries its own space; a half-width one needs one.
+            text += shape if shape.startswith("（") else " " + shape
         return text
     text = repr(_rounded(value))
     return text if len(text) <= 300 else text[:297] + "..."

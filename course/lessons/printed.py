@@ -86,3 +86,25 @@ def degree_numeral(degree: int) -> int | str:
     if degree < 1000 and degree % 100 == 0:
         return _CHINESE_DIGITS[degree // 100] + "百"
     return f"{degree} "
+
+
+def degree_column(degree: int, digits: int = 2) -> str:
+    """A curve's degree as :func:`degree_numeral` writes it, right-aligned by display width.
+
+    For lines printed one per degree that line up on «{degree:>2}»: English pads the number to
+    ``digits`` columns, exactly as ``{degree:>2}`` does; Chinese pads the numeral to twice as
+    many, since a wide character takes two columns (三, 二十), so «  三次曲线» lines up with
+    «二十次曲线». A longer numeral is left as it is.
+
+    Examples
+    --------
+    >>> from course.i18n import language
+    >>> degree_column(3), degree_column(20), degree_column(100)
+    (' 3', '20', '100')
+    >>> with language("zh-CN"):
+    ...     [degree_column(n) for n in (3, 20, 26)]
+    ['  三', '二十', '二十六']
+    """
+    numeral = str(degree_numeral(degree))
+    width = digits if current_language() == "en" else 2 * digits
+    return padded(numeral, width, ">")

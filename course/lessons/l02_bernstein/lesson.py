@@ -23,7 +23,7 @@ from course.i18n import N_, _, yes_no
 from course.images import EXAMPLE_POINTS
 from course.lessons.l02_bernstein import figures
 from course.lessons.l02_bernstein.apps import BernsteinBasisApp
-from course.lessons.printed import degree_numeral
+from course.lessons.printed import degree_column, degree_numeral
 from course.widgets.base import SliderApp
 from course.widgets.picture import rounding_level
 
@@ -43,7 +43,7 @@ def print_basis_properties(degree: int, total: float, mirror: float, ends: bool)
     """
     print(
         _("degree {degree:>2}: |sum - 1| {total}, |mirror| {mirror}, ends exact: {ends}").format(
-            degree=degree_numeral(degree),
+            degree=degree_column(degree),
             total=rounding_level(total),
             mirror=rounding_level(mirror),
             ends=yes_no(ends),
@@ -137,7 +137,7 @@ def print_horner_gap(degree: int, gap: float) -> None:
     """
     print(
         _("degree {degree:>2}: Horner against the handout's sum: {gap} px").format(
-            degree=degree_numeral(degree), gap=rounding_level(gap, 1e-10)
+            degree=degree_column(degree), gap=rounding_level(gap, 1e-10)
         )
     )
 
@@ -209,7 +209,7 @@ def print_middle_peak(degree: int, peak: float) -> None:
     """
     print(
         _("degree {degree:>2}: the middle bump's peak B(n/2, n)(1/2) = {peak:.3f}").format(
-            degree=degree_numeral(degree), peak=peak
+            degree=degree_column(degree), peak=peak
         )
     )
 

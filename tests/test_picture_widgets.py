@@ -553,7 +553,28 @@ def test_a_still_in_a_notebook_shows_its_picture_then_its_caption_as_text(monkey
     assert capsys.readouterr().out == "two by three, all black\n"  # what a student reads
 
 
-DRAWING_HARNESS = r"""
+def mounted_on_canvas(width: int, height: int) -> str:
+    """JavaScript mounting picture.js on the harness's ``image`` and canvas ``context`` stubs,
+    ``width`` x ``height``: the drawing harnesses' common start (``handlers`` receive messages)."""
+    return f"""
+globalThis.document = {{
+  createElement: (tag) => (tag === "img" ? image : {{ getContext: () => context }}),
+}};
+const handlers = {{}};
+const state = {{
+  value: new Uint8Array(), format: "png", width: {width}, height: {height}, handles: [],
+}};
+const model = {{
+  get: (key) => state[key],
+  on: (event, handler) => {{ handlers[event] = handler; }},
+}};
+const {{ default: widget }} = await import(process.argv[2]);
+widget.render({{ model, el: {{ appendChild() {{}} }} }});
+"""
+
+
+DRAWING_HARNESS = (
+    r"""
 const calls = [];
 const text = (part) =>
   new TextDecoder().decode(part instanceof DataView ? part : new Uint8Array(part));
@@ -585,14 +606,9 @@ const context = new Proxy(
     },
   },
 );
-globalThis.document = {
-  createElement: (tag) => (tag === "img" ? image : { getContext: () => context }),
-};
-const handlers = {};
-const state = { value: new Uint8Array(), format: "png", width: 5, height: 4, handles: [] };
-const model = { get: (key) => state[key], on: (event, handler) => { handlers[event] = handler; } };
-const { default: widget } = await import(process.argv[2]);
-widget.render({ model, el: { appendChild() {} } });
+"""
+    + mounted_on_canvas(5, 4)
+    + r"""
 // A DataView that starts at an odd byte, as a buffer cut from a message may.
 const view = (typed) => {
   const bytes = new Uint8Array(typed.buffer);
@@ -625,6 +641,7 @@ handlers["msg:custom"]({ kind: "drawing" }, [none, vertices, codes]);
 await turns(50);
 console.log(JSON.stringify({ first, after: calls, shown: image.src, warnings }));
 """
+)
 
 
 @pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
@@ -672,7 +689,8 @@ def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
     ]
 
 
-BITMAP_HARNESS = r"""
+BITMAP_HARNESS = (
+    r"""
 // A drawing's composed canvas as picture.js shows it: the bytes of the file it makes.
 const pixels = new Uint8Array(3 * 2 * 4).map((_, i) => (i * 37) % 256);
 const bytes = (part) =>
@@ -700,20 +718,16 @@ const context = {
   getImageData: () => ({ data: pixels }),
 };
 const image = { addEventListener() {}, style: {} };
-globalThis.document = {
-  createElement: (tag) => (tag === "img" ? image : { getContext: () => context }),
-};
-const handlers = {};
-const state = { value: new Uint8Array(), format: "png", width: 3, height: 2, handles: [] };
-const model = { get: (key) => state[key], on: (event, handler) => { handlers[event] = handler; } };
-const { default: widget } = await import(process.argv[2]);
-widget.render({ model, el: { appendChild() {} } });
+"""
+    + mounted_on_canvas(3, 2)
+    + r"""
 const empty = new DataView(new TextEncoder().encode("[]").buffer);
 const none = new DataView(new ArrayBuffer(0));
 handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [none, empty, none, none]);
 await new Promise((resolve) => setTimeout(resolve, 50));
 console.log(JSON.stringify({ shown: shown.slice(1), pixels: Array.from(pixels) }));
 """
+)
 
 
 @pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")

@@ -7,8 +7,8 @@ flipped, x and y swapped, and a read past the image (IndexError).
 :func:`supersample_mistakes` are the wrong loops :func:`.check.supersample` names: the
 scale made whole, a division by the rate, the scales swapped, the sub-pixel offsets not
 scaled, the report's shifts, samples spread edge to edge or 1 / (rate + 1) apart, and
-whole numbers returned for the means (a result of zeros told apart: nothing stored looks the
-same). Each list is built in the current language.
+the means cut to whole numbers or never stored (a result of zeros, which either leaves, has
+its own explanation). Each list is built in the current language.
 
 Only the checkers call these, with their own cases, so this module checks none
 (``UNCHECKED = True``; the fuzz test skips it).
@@ -108,6 +108,7 @@ def supersample_mistakes() -> list[Mistake]:
         "float array, np.zeros((h, w)) or np.zeros((h, w, 3)), and return the means as they "
         "are."
     )
+    whole_or_none = _("means cut to whole numbers, or never stored")
     # Means below 1 cut to integers are 0, as a result nothing was stored into is: the
     # values cannot tell the two apart, so the explanation names both.
     all_zero = _(
@@ -216,9 +217,9 @@ def supersample_mistakes() -> list[Mistake]:
             ),
         ),
         # One mistake as the class sees it; all zeros first, for its own explanation.
-        Mistake(_("means cut to whole numbers, or never stored"), all_zero, _zeros),
-        Mistake(_("means cut to whole numbers, or never stored"), whole_numbers, _whole(np.trunc)),
-        Mistake(_("means cut to whole numbers, or never stored"), whole_numbers, _whole(np.round)),
+        Mistake(whole_or_none, all_zero, _zeros),
+        Mistake(whole_or_none, whole_numbers, _whole(np.trunc)),
+        Mistake(whole_or_none, whole_numbers, _whole(np.round)),
     ]
 
 

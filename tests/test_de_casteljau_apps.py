@@ -193,9 +193,12 @@ def test_a_drag_redraws_only_b_of_t_s_numbers_and_the_release_brings_the_title_b
     assert abs(first.x0 - title.x0) < 0.5 and abs(first.y0 - title.y0) < 0.5
     assert abs(numbers.x0 - first.x1) < 0.5 and abs(numbers.x1 - title.x1) < 2
     assert not app.title.get_visible() and app.title_start.get_text().endswith("B(t) = ")
+    typed = app.value("points")
     for step in range(1, 4):
         app.pointer("move", *np.add(start, (7 * step, -5 * step)))
-        point = de_casteljau(parse_points(app.value("points")), 0.5)
+        moved = app.data_point(app.axes, *np.add(start, (7 * step, -5 * step)))
+        np.testing.assert_allclose(app.points[1], moved, atol=0.06)  # rounded to 0.1
+        point = de_casteljau(app.points, 0.5)
         assert app.title_numbers.get_text() == f"({point[0]:.1f}, {point[1]:.1f})"
         assert app.title.get_text() == app.title_start.get_text() + app.title_numbers.get_text()
     # The browser draws each step: B(t)'s numbers are one text of the step's drawing.
@@ -203,7 +206,9 @@ def test_a_drag_redraws_only_b_of_t_s_numbers_and_the_release_brings_the_title_b
     texts = [command.get("text") for command in json.loads(patches[-1]["buffers"][-3])]
     assert app.title_numbers.get_text() in texts and app.title.get_text() not in texts
     assert np.array_equal(picture(app), before)  # the whole picture waits for the release
+    assert app.value("points") == typed  # the controls get the points at the release
     app.pointer("up", *np.add(start, (21, -15)))
+    np.testing.assert_array_equal(parse_points(app.value("points")), app.points)
     assert app.title.get_visible() and not app.title_numbers.get_visible()
     # Released, the picture is the one a fresh app draws for the same points.
     fresh = DeCasteljauApp(points=parse_points(app.value("points")), t=0.5)
@@ -253,7 +258,7 @@ def test_every_step_of_a_drag_shows_what_a_full_redraw_draws():
     # Moves of whole and fractional pixels, far and near, and back past the start.
     for step, offset in enumerate([(0, 0), (13.4, -7.3), (-41, 22.5), (60, 5)]):
         app.pointer("move", *np.add(start, offset))
-        points = parse_points(app.value("points"))
+        points = app.points  # the controls get them at the release
         expected = drawn_in_full(points, 0.35, held=2)
         np.testing.assert_array_equal(composed(whole, messages), expected, err_msg=f"step {step}")
     assert all(content["kind"] == "patch" for content, _ in messages)

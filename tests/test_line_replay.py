@@ -39,8 +39,7 @@ def _recorded(line, recorder, replay=None):
         line.draw(recorder)
     else:
         assert replay.draw(recorder)
-    commands, buffers = recorder.finish()
-    return commands, buffers
+    return recorder.finish()
 
 
 coordinates = st.floats(-3, 14, allow_nan=False)

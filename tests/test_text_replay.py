@@ -23,13 +23,13 @@ def _axes():
 def _fresh(text, recorder):
     recorder.start()
     text.draw(recorder)
-    return recorder.commands
+    return recorder.recorded()
 
 
 def _replayed(replay, recorder):
     recorder.start()
     assert replay.draw(recorder)
-    return recorder.commands
+    return recorder.recorded()
 
 
 def _assert_same(replayed, fresh):
@@ -86,8 +86,38 @@ def test_texts_that_do_not_move_with_an_anchor_have_no_replay():
     clipped = axes.annotate("P0", (2, 2), xytext=(7, 7), textcoords="offset points")
     in_data = axes.annotate("P0", (2, 2), xytext=(5, 5), textcoords="data", annotation_clip=False)
     boxed = axes.text(1, 1, "boxed", bbox={"facecolor": "yellow"})
-    numbers = axes.figure.add_artist(FixedText(0.1, 0.1, "(1.0, 2.0)"))
-    for text in (clipped, in_data, boxed, numbers):
+    for text in (clipped, in_data, boxed):
         recorder.start()
         assert TextReplay.record(text, recorder) is None
         assert recorder.commands  # drawn all the same
+
+
+numbers = st.tuples(st.floats(-999, 999), st.floats(-999, 999)).map(
+    lambda point: f"({point[0]:.1f}, {point[1]:.1f})"
+)
+
+
+@settings(max_examples=40, deadline=None)
+@given(first=numbers, later=st.lists(numbers | st.sampled_from(["", "$x$", "a\nb"]), max_size=4))
+def test_numbers_whose_characters_change_are_drawn_where_a_new_draw_puts_them(first, later):
+    axes, recorder = _axes()
+    text = axes.figure.add_artist(FixedText(0.1, 0.1, first, fontsize=10))
+    recorder.start()
+    replay = TextReplay.record(text, recorder)
+    assert replay is not None
+    for string in later:
+        text.set_text(string)
+        recorder.start()
+        if not replay.draw(recorder):  # empty, several lines, mathtext: drawn by Text.draw
+            assert string in ("", "$x$", "a\nb")
+            continue
+        assert recorder.recorded() == _fresh(text, recorder)
+
+
+def test_numbers_drawn_anew_once_their_font_or_rotation_changes():
+    axes, recorder = _axes()
+    text = axes.figure.add_artist(FixedText(0.1, 0.1, "(1.0, 2.0)"))
+    for change in (lambda: text.set_fontsize(14), lambda: text.set_rotation(10)):
+        replay = TextReplay.record(text, recorder)
+        change()
+        assert replay.draw(recorder) is False

@@ -42,10 +42,12 @@ The apps are this module's only callers, through ``FigureView``
 
 from __future__ import annotations
 
+import json
 from typing import Any
 
 import numpy as np
 from matplotlib import rcParams
+from matplotlib._path import affine_transform, cleanup_path
 from matplotlib.backend_bases import GraphicsContextBase, RendererBase
 from matplotlib.font_manager import FontProperties, weight_dict
 from matplotlib.path import Path as MatplotlibPath
@@ -62,6 +64,19 @@ _GENERIC_FAMILIES = ("serif", "sans-serif", "cursive", "fantasy", "monospace")
 
 class NotDrawable(Exception):
     """Something the browser's canvas cannot draw as Agg does: draw with Agg instead."""
+
+
+#: The codes of the places markers are drawn at: all MOVETO.
+_MOVES = np.full(4096, MatplotlibPath.MOVETO, dtype=np.uint8)
+
+
+def _json_fields(fields: dict) -> str:
+    """``fields`` as the members of a JSON object, without its braces.
+
+    >>> _json_fields({"width": 1.5, "dash": None})
+    '"width":1.5,"dash":null'
+    """
+    return json.dumps(fields, separators=(",", ":"))[1:-1]
 
 
 def _rounded(values: Any, digits: int = 3) -> list[float]:
@@ -102,7 +117,9 @@ class CommandRecorder(RendererBase):
     ``agg`` is the figure's Agg renderer: text is measured by it, so that
     every text is placed where Agg would place it. Call :meth:`start`, draw
     the artists into the recorder (``artist.draw(recorder)``), then
-    :meth:`finish` for the commands and their two buffers.
+    :meth:`finish` for the drawing's three buffers. Each command is kept as
+    its JSON text: a path's style is encoded once, when its paint is read, so
+    that a step joins strings rather than encoding every number again.
 
     Examples
     --------
@@ -115,8 +132,9 @@ class CommandRecorder(RendererBase):
     >>> recorder = CommandRecorder(canvas.get_renderer())
     >>> recorder.start()
     >>> line.draw(recorder)
-    >>> commands, (vertices, codes) = recorder.finish()
-    >>> commands[0]["path"], commands[0]["stroke"], commands[0]["width"]
+    >>> commands, vertices, codes = recorder.finish()
+    >>> (command,) = json.loads(commands)
+    >>> command["path"], command["stroke"], command["width"]
     ([0, 2], [1.0, 0.0, 0.0, 1.0], 2.0)
     >>> np.frombuffer(vertices, "<f4").tolist(), list(codes)
     ([0.0, 100.0, 100.0, 50.0], [1, 2])
@@ -134,19 +152,28 @@ class CommandRecorder(RendererBase):
 
     def start(self) -> None:
         """Forget the commands recorded so far."""
-        self.commands: list[dict] = []
+        self.commands: list[str] = []  # each command's JSON text
+        #: Each text command as (its index in ``commands``, x, y, the rest of its JSON).
+        self.texts: list[tuple[int, float, float, str]] = []
         self._vertices: list[np.ndarray] = []
         self._codes: list[np.ndarray] = []
         self._count = 0
+        # Whether a long line is simplified (Path._update_values): read once for the drawing.
+        self._simplifies = rcParams["path.simplify"] and rcParams["path.simplify_threshold"] > 0
 
-    def finish(self) -> tuple[list[dict], tuple[bytes, bytes]]:
-        """The commands, and their vertices (float32, little-endian) and codes (uint8)."""
+    def finish(self) -> list[bytes]:
+        """The commands (a JSON list, UTF-8), their vertices (float32, little-endian), codes."""
         vertices = np.concatenate(self._vertices) if self._vertices else np.zeros((0, 2))
         codes = np.concatenate(self._codes) if self._codes else np.zeros(0)
-        return self.commands, (
+        return [
+            f"[{','.join(self.commands)}]".encode(),
             vertices.astype("<f4").tobytes(),
             codes.astype(np.uint8).tobytes(),
-        )
+        ]
+
+    def recorded(self) -> list[dict]:
+        """The commands recorded so far, decoded."""
+        return [json.loads(command) for command in self.commands]
 
     # --- what matplotlib asks of a renderer --------------------------------
 
@@ -195,7 +222,7 @@ class CommandRecorder(RendererBase):
     ) -> None:
         paint = self.marker_paint(gc, marker_path, marker_trans, trans, rgbFace)
         if paint is not None:
-            self.add_markers(paint, path)
+            self.add_markers(paint, path.vertices)
 
     # --- a call's paint, kept by a replay for the next steps ----------------
     #
@@ -211,25 +238,37 @@ class CommandRecorder(RendererBase):
             return None
         to_picture = (transform + self._down).frozen()  # picture pixels, y down
         stroke_width = style["width"] if style["stroke"] else 0.0
-        return style, to_picture, gc.get_snap(), stroke_width, rgbFace is None
+        return _json_fields(style), to_picture, gc.get_snap(), stroke_width, rgbFace is None
 
     def add_path(self, paint: tuple, path: Any) -> None:
         """Record ``path`` drawn with ``paint`` (:meth:`path_paint`)."""
         style, to_picture, snap, stroke_width, unfilled = paint
         # As Agg does: in picture pixels (y down), NaNs dropped, snapped to the pixel
         # grid where Agg snaps, long unfilled lines simplified.
-        cleaned = path.cleaned(
-            transform=to_picture,
-            remove_nans=True,
-            snap=snap,
-            stroke_width=stroke_width,
-            simplify=path.should_simplify and unfilled,
-            curves=True,
+        vertices, codes = cleanup_path(
+            path, to_picture, True, None, snap, stroke_width, path.should_simplify and unfilled,
+            True, None,
+        )  # fmt: skip
+        self._add_cleaned(style, vertices, codes)
+
+    def add_line(self, paint: tuple, vertices: np.ndarray) -> None:
+        """Record the line through ``vertices``, (N, 2), drawn with ``paint``: as :meth:`add_path`.
+
+        The path ``Line2D`` would make of them is simplified, as matplotlib
+        decides, from 128 vertices (``Path.should_simplify``).
+        """
+        style, to_picture, snap, stroke_width, unfilled = paint
+        path = MatplotlibPath._fast_from_codes_and_verts(vertices, None)
+        simplify = unfilled and len(vertices) >= 128 and self._simplifies
+        vertices, codes = cleanup_path(
+            path, to_picture, True, None, snap, stroke_width, simplify, True, None
         )
-        vertices, codes = cleaned.vertices[:-1], cleaned.codes[:-1]  # without the STOP
-        if len(codes) == 0:
-            return
-        self.commands.append({"path": self._add(vertices, codes), **style})
+        self._add_cleaned(style, vertices, codes)
+
+    def _add_cleaned(self, style: str, vertices: np.ndarray, codes: np.ndarray) -> None:
+        if len(codes) > 1:  # without the STOP that ends them
+            start, count = self._add(vertices[:-1], codes[:-1])
+            self.commands.append(f'{{"path":[{start},{count}],{style}}}')
 
     def marker_paint(
         self, gc: Any, marker_path: Any, marker_trans: Any, trans: Any, rgbFace: Any = None
@@ -249,22 +288,23 @@ class CommandRecorder(RendererBase):
             curves=True,
         )
         shape = marker.vertices[:-1] + (0.0 if snap else 0.5)
-        return style, shape, marker.codes[:-1], (trans + self._down).frozen()
+        to_picture = (trans + self._down).get_matrix()  # an affine transform's, frozen
+        return _json_fields(style), shape, marker.codes[:-1], to_picture
 
-    def add_markers(self, paint: tuple, path: Any) -> None:
-        """Record the markers of ``paint`` (:meth:`marker_paint`) at ``path``'s vertices."""
+    def add_markers(self, paint: tuple, points: np.ndarray) -> None:
+        """Record the markers of ``paint`` (:meth:`marker_paint`) at ``points``, (N, 2)."""
         style, shape, codes, to_picture = paint
-        places = to_picture.transform(path.vertices)
-        places = np.floor(places[np.isfinite(places).all(axis=1)] + 0.5)
+        places = affine_transform(points, to_picture)
+        if not np.isfinite(places).all():
+            places = places[np.isfinite(places).all(axis=1)]
+        places += 0.5
+        np.floor(places, out=places)
         if len(places) == 0 or len(shape) == 0:
             return
-        self.commands.append(
-            {
-                "marker": self._add(shape, codes),
-                "at": self._add(places, np.full(len(places), MatplotlibPath.MOVETO)),
-                **style,
-            }
-        )
+        many = len(places)
+        moves = _MOVES[:many] if many <= len(_MOVES) else np.full(many, MatplotlibPath.MOVETO)
+        (start, count), (at, _) = self._add(shape, codes), self._add(places, moves)
+        self.commands.append(f'{{"marker":[{start},{count}],"at":[{at},{many}],{style}}}')
 
     def draw_text(
         self,
@@ -280,27 +320,29 @@ class CommandRecorder(RendererBase):
         if ismath:
             raise NotDrawable("mathtext")
         self._check_gc(gc)
-        self.commands.append(
-            {
-                "text": s,
-                # Agg places glyphs to 1/64 pixel. y is down already: flipy() is True.
-                "x": round(float(x), 4),
-                "y": round(float(y), 4),
-                "angle": round(float(angle), 3),
-                "font": self._font(prop),
-                "color": _rounded(gc.get_rgb()),
-                "clip": self._clip(gc),
-            }
-        )
+        rest = {
+            "text": s,
+            "angle": round(float(angle), 3),
+            "font": self._font(prop),
+            "color": _rounded(gc.get_rgb()),
+            "clip": self._clip(gc),
+        }
+        # Agg places glyphs to 1/64 pixel. y is down already: flipy() is True.
+        self.add_text(round(float(x), 4), round(float(y), 4), _json_fields(rest))
+
+    def add_text(self, x: float, y: float, rest: str) -> None:
+        """Record a text command whose baseline starts at (x, y), the rest of it JSON fields."""
+        self.texts.append((len(self.commands), x, y, rest))
+        self.commands.append(f'{{"x":{x!r},"y":{y!r},{rest}}}')
 
     # --- the recording -----------------------------------------------------
 
-    def _add(self, vertices: np.ndarray, codes: np.ndarray) -> list[int]:
-        """Store vertices and their codes; their [start, count]."""
+    def _add(self, vertices: np.ndarray, codes: np.ndarray) -> tuple[int, int]:
+        """Store vertices and their codes; their (start, count)."""
         self._vertices.append(vertices)
         self._codes.append(codes)
         start, self._count = self._count, self._count + len(vertices)
-        return [start, len(vertices)]
+        return start, len(vertices)
 
     def _check_gc(self, gc: Any) -> None:
         if gc.get_hatch() is not None:

@@ -15,7 +15,6 @@ so this module checks no input (``UNCHECKED = True``; the fuzz test skips it).
 from __future__ import annotations
 
 import io
-import json
 from typing import Any
 
 import numpy as np
@@ -306,10 +305,10 @@ class FigureView:
         replays = self._command_replays
         try:
             for artist in artists:
-                if empty_line(artist):
-                    continue
                 replay = replays.get(artist)
                 if replay is not None and replay.draw(recorder):
+                    continue
+                if empty_line(artist):
                     continue
                 if isinstance(artist, Line2D):  # matplotlib's calls, replayed at later steps
                     replays[artist] = LineReplay.record(artist, recorder)
@@ -321,8 +320,7 @@ class FigureView:
             self._browser_draws = False
             return False
         self._browser_draws = True
-        commands, geometry = recorder.finish()
-        buffers = [json.dumps(commands, separators=(",", ":")).encode(), *geometry]
+        buffers = recorder.finish()
         # Sent only with a background in hand: _draw_background and invalidate clear it.
         if self._backdrop_sent and buffers == self._drawn:
             return True  # the browser shows it already

@@ -15,13 +15,14 @@ vertices.
 
 from __future__ import annotations
 
+from operator import attrgetter, is_
 from typing import Any
 
 import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.path import Path as MatplotlibPath
 
-__all__ = ["LineReplay", "empty_line"]
+__all__ = ["LinePaint", "LineReplay", "empty_line"]
 
 UNCHECKED = True  # see the module docstring
 
@@ -72,6 +73,20 @@ def _line_style(line: Line2D) -> tuple:
     )
 
 
+#: Everything a line's drawing reads besides its data, as the objects it holds. Its setters
+#: store a new object (a new float even for an equal width), so a style the line no longer
+#: holds shows as one object that is not the recorded one: one C call and a comparison by
+#: identity, where comparing values would convert colours at every step.
+_HELD_STYLE = attrgetter(
+    "_visible", "_color", "_linewidth", "_linestyle", "_dash_pattern",
+    "_unscaled_dash_pattern", "_marker", "_markersize", "_markerfacecolor",
+    "_markerfacecoloralt", "_markeredgecolor", "_markeredgewidth", "_alpha", "_antialiased",
+    "_clipon", "clipbox", "_clippath", "_transform", "_drawstyle", "_markevery", "_gapcolor",
+    "_sketch", "_path_effects", "_rasterized", "_agg_filter", "_solidcapstyle",
+    "_solidjoinstyle", "_dashcapstyle", "_dashjoinstyle",
+)  # fmt: skip
+
+
 class LineReplay:
     """A moving line drawn by replaying its Agg calls with new data.
 
@@ -96,8 +111,11 @@ class LineReplay:
         self.line, self.calls, self.style = line, calls, style
 
     @classmethod
-    def record(cls, line: Line2D, renderer: Any) -> LineReplay | None:
-        """Draw ``line`` into ``renderer``; return its replay, or None if it cannot have one."""
+    def record(cls, line: Line2D, renderer: Any) -> LineReplay | LinePaint | None:
+        """Draw ``line`` into ``renderer``; return its replay, or None if it cannot have one.
+
+        Into the browser's ``CommandRecorder`` the replay is a :class:`LinePaint`.
+        """
         plain = (
             line.get_drawstyle() == "default"
             and line.get_markevery() is None
@@ -111,6 +129,7 @@ class LineReplay:
             line.draw(renderer)
             return None
         style = _line_style(line)
+        held = _HELD_STYLE(line)
         recorder = _Recorder(renderer)
         line.draw(recorder)
         data = line._path  # built by the draw's recache
@@ -122,58 +141,86 @@ class LineReplay:
             if call[0] == "path" and path is not data:
                 return None
             calls.append(call)
+        if not calls:
+            return None
         if hasattr(renderer, "path_paint"):  # browser_drawing.CommandRecorder
-            painted = (_painted(renderer, call) for call in calls)
-            calls = [call for call in painted if call[1] is not None]  # None: draws nothing
-        return cls(line, calls, style) if calls else None
+            paints = [_painted(renderer, call) for call in calls]
+            paints = [paint for paint in paints if paint[1] is not None]  # None: draws nothing
+            return LinePaint(line, paints, held) if paints else None
+        return cls(line, calls, style)
 
     def draw(self, renderer: Any) -> bool:
         """Draw the line with its current data as its recorded draw would; False if it cannot."""
         line = self.line
         if _line_style(line) != self.style:
             return False
-        # A CommandRecorder's paints need only the vertices; Agg's calls, the line's path.
-        path = _fresh_path(line) if self.calls[0][0].endswith("paint") else None
-        if path is None:
-            if line._invalidx or line._invalidy:  # as Line2D.draw: the path from the new data
-                line.recache()
-            if line._subslice:
-                return False
-            path = line._path
+        if line._invalidx or line._invalidy:  # as Line2D.draw: the path from the new data
+            line.recache()
+        if line._subslice:
+            return False
+        path = line._path
         if len(path.vertices) == 0:
             return False
         for call in self.calls:
-            kind = call[0]
-            if kind == "path":
+            if call[0] == "path":
                 _, gc, _, transform, face = call
                 renderer.draw_path(gc, path, transform, face)
-            elif kind == "markers":
+            else:
                 _, gc, marker_path, marker_trans, _, trans, face = call
                 points = MatplotlibPath._fast_from_codes_and_verts(path.vertices, None, path)
                 renderer.draw_markers(gc, marker_path, marker_trans, points, trans, face)
-            elif kind == "path paint":
-                renderer.add_path(call[1], path)
-            else:  # "markers paint"
-                renderer.add_markers(call[1], path)
         line.stale = False
         return True
 
 
-def _fresh_path(line: Line2D) -> MatplotlibPath | None:
-    """The path ``Line2D.recache`` would build of ``line``'s new data, where that is all it does.
+class LinePaint:
+    """A moving line's browser commands: its paints read once, its new vertices at each step.
 
-    That is, for data that are 1-D float64 arrays or lists of floats, of the
-    same length and at most 1000 points (no subslicing to the view):
-    ``recache`` converts units (none for floats) and stacks them. The line
-    is left as ``set_data`` left it: its next full draw recaches it itself.
-    None when ``recache`` must run.
+    What ``CommandRecorder`` reads from a line's graphics contexts and
+    transforms (its *paints*) is read at the recording; :meth:`draw` checks
+    that the line still holds the style it was recorded with (the same
+    objects: :data:`_HELD_STYLE`) and adds the commands of its new data
+    (``CommandRecorder.add_line``, ``add_markers``). A lesson's drag moves
+    seven such lines at every step, so this is all a step spends on one.
     """
-    if not (line._invalidx or line._invalidy):
-        return None  # recached already
-    x, y = _floats(line._xorig), _floats(line._yorig)
-    if x is None or y is None or not len(x) == len(y) <= 1000:
-        return None
-    return MatplotlibPath(np.column_stack((x, y)))
+
+    def __init__(self, line: Line2D, paints: list[tuple], held: tuple) -> None:
+        self.line, self.paints, self.held = line, paints, held
+
+    def draw(self, recorder: Any) -> bool:
+        """Add the line's commands with its current data; False if it must be recorded anew."""
+        line = self.line
+        if not all(map(is_, _HELD_STYLE(line), self.held)):
+            return False
+        vertices = _data_vertices(line)
+        if vertices is None or len(vertices) == 0:
+            return False
+        for kind, paint in self.paints:
+            if kind == "path paint":
+                recorder.add_line(paint, vertices)
+            else:
+                recorder.add_markers(paint, vertices)
+        line.stale = False
+        return True
+
+
+def _data_vertices(line: Line2D) -> np.ndarray | None:
+    """The (N, 2) vertices ``Line2D.draw`` would draw of ``line``'s data; None if it cuts them.
+
+    Data that are 1-D float64 arrays or short lists of floats, of the same
+    length and at most 1000 points (no subslicing to the view), are all
+    ``recache`` would make of them, without the conversions; the line is
+    left as ``set_data`` left it, and its next full draw recaches it itself.
+    Other data are recached as ``Line2D.draw`` does.
+    """
+    if line._invalidx or line._invalidy:
+        x, y = _floats(line._xorig), _floats(line._yorig)
+        if x is not None and y is not None and len(x) == len(y) <= 1000:
+            vertices = np.empty((len(x), 2))
+            vertices[:, 0], vertices[:, 1] = x, y
+            return vertices
+        line.recache()
+    return None if line._subslice else line._path.vertices
 
 
 def _floats(data: Any) -> np.ndarray | None:
@@ -200,4 +247,4 @@ def _painted(recorder: Any, call: tuple) -> tuple:
 
 def empty_line(artist: Any) -> bool:
     """Whether ``artist`` is a line without data (an unused level of a construction)."""
-    return isinstance(artist, Line2D) and len(artist.get_xdata(orig=True)) == 0
+    return isinstance(artist, Line2D) and len(artist._xorig) == 0  # get_xdata(orig=True)

@@ -15,12 +15,16 @@ apps made (``UNCHECKED = True``).
 
 from __future__ import annotations
 
+import json
+from operator import attrgetter, is_
 from typing import Any
 
 import numpy as np
 from matplotlib.text import Annotation, Text
 
-__all__ = ["TextReplay"]
+from course.widgets.text_cache import FixedText
+
+__all__ = ["FixedTextReplay", "TextReplay"]
 
 UNCHECKED = True  # see the module docstring
 
@@ -43,35 +47,33 @@ def _anchor(text: Text, renderer: Any) -> np.ndarray | None:
     return text.get_transform().transform(text.get_unitless_position())
 
 
-def _layout(text: Text) -> tuple:
-    """All a text's commands depend on besides its anchor: a change means a new recording."""
-    annotation = (
-        (text.xyann, text.anncoords, text.arrow_patch is None)
-        if isinstance(text, Annotation)
-        else ()
-    )
-    return (
-        text.get_visible(),
-        text.get_text(),
-        hash(text.get_fontproperties()),
-        str(text.get_color()),
-        text.get_alpha(),
-        text.get_visible(),
-        text.get_rotation_mode(),
-        text.get_horizontalalignment(),
-        text.get_verticalalignment(),
-        text._multialignment,
-        text._linespacing,
-        text.get_usetex(),
-        text.get_wrap(),
-        text.get_bbox_patch() is None,
-        text.get_path_effects() == [],
-        text.get_clip_on(),
-        id(text.get_clip_box()),
-        text.get_clip_path() is None,
-        id(text.get_transform()) if not isinstance(text, Annotation) else 0,
-        *annotation,
-    )
+#: What a text's commands depend on besides its anchor and font, as the objects it holds:
+#: its setters store a new object for a new value (compared by identity, as a line's style).
+_HELD_LAYOUT = attrgetter(
+    "_visible", "_text", "_color", "_alpha", "_rotation", "_rotation_mode",
+    "_horizontalalignment", "_verticalalignment", "_multialignment", "_linespacing",
+    "_usetex", "_wrap", "_bbox_patch", "_path_effects", "_clipon", "clipbox", "_clippath",
+    "_antialiased",
+)  # fmt: skip
+
+
+def _layout(text: Text, with_string: bool = True) -> tuple[tuple, int]:
+    """All a text's commands depend on besides its anchor: a change means a new recording.
+
+    The objects it holds, and the hash of its font (whose setters change it in place).
+    """
+    held = _HELD_LAYOUT(text)
+    if not with_string:
+        held = held[:1] + held[2:]
+    if isinstance(text, Annotation):  # the offset from its point and how it is drawn
+        held += (text._x, text._y, text._textcoords, text.arrow_patch)
+    else:
+        held += (text._transform,)
+    return held, hash(text._fontproperties)
+
+
+def _unchanged(layout: tuple[tuple, int], recorded: tuple[tuple, int]) -> bool:
+    return layout[1] == recorded[1] and all(map(is_, layout[0], recorded[0]))
 
 
 class TextReplay:
@@ -88,11 +90,17 @@ class TextReplay:
     """
 
     def __init__(self, text: Text, layout: tuple, anchor: np.ndarray, commands: list) -> None:
+        # commands: each text command's (x, y, the rest of its JSON), as the recorder keeps it.
         self.text, self.layout, self.anchor, self.commands = text, layout, anchor, commands
 
     @classmethod
-    def record(cls, text: Text, recorder: Any) -> TextReplay | None:
-        """Draw ``text`` into ``recorder``; return its replay, or None if it cannot have one."""
+    def record(cls, text: Text, recorder: Any) -> TextReplay | FixedTextReplay | None:
+        """Draw ``text`` into ``recorder``; return its replay, or None if it cannot have one.
+
+        A :class:`~course.widgets.text_cache.FixedText`'s is a :class:`FixedTextReplay`.
+        """
+        if isinstance(text, FixedText):
+            return FixedTextReplay.record(text, recorder)
         anchor = _anchor(text, recorder)
         if anchor is None:
             text.draw(recorder)
@@ -100,27 +108,76 @@ class TextReplay:
         layout = _layout(text)
         start = len(recorder.commands)
         text.draw(recorder)
-        commands = recorder.commands[start:]
-        if any("text" not in command for command in commands):
-            return None
-        return cls(text, layout, anchor, [dict(command) for command in commands])
+        texts = [parts for index, *parts in recorder.texts if index >= start]
+        if len(texts) != len(recorder.commands) - start:
+            return None  # drew something besides text
+        return cls(text, layout, anchor, texts)
 
     def draw(self, recorder: Any) -> bool:
         """Add the text's commands where its anchor now is; False if it must be drawn anew."""
         text = self.text
-        if not (text.get_visible() or self.layout[0]):
+        if not (text.get_visible() or self.layout[0][0]):
             return True  # hidden then and now: nothing to draw, whatever else changed
-        if _layout(text) != self.layout:
+        if not _unchanged(_layout(text), self.layout):
             return False
         anchor = _anchor(text, recorder)
         if anchor is None:
             return False
         right, up = anchor - self.anchor
-        for command in self.commands:
-            moved = dict(command)
+        for x, y, rest in self.commands:
             # The commands' y runs down the picture.
-            moved["x"] = round(command["x"] + float(right), 4)
-            moved["y"] = round(command["y"] - float(up), 4)
-            recorder.commands.append(moved)
+            recorder.add_text(round(x + float(right), 4), round(y - float(up), 4), rest)
         text.stale = False
         return True
+
+
+class FixedTextReplay:
+    """The command of a :class:`~course.widgets.text_cache.FixedText` whose characters change.
+
+    B(t)'s numbers change at every step of a drag and stay where they stand:
+    the command differs from the recorded one by its string and by the
+    place ``FixedText`` finds for it (``FixedText._origin``, measured once
+    per ascent and descent). The rest of the command (font, colour, clip) is
+    kept as recorded, its JSON too, until anything but the string differs
+    from the recorded (:func:`_layout`); a string ``FixedText`` would not
+    place itself (several lines, mathtext) is drawn anew.
+    """
+
+    def __init__(self, text: FixedText, layout: tuple, tail: str) -> None:
+        self.text, self.layout, self.tail = text, layout, tail
+
+    @classmethod
+    def record(cls, text: FixedText, recorder: Any) -> FixedTextReplay | None:
+        """Draw ``text`` into ``recorder``; return its replay, or None if it cannot have one."""
+        start = len(recorder.commands)
+        text.draw(recorder)
+        texts = [parts for index, *parts in recorder.texts if index >= start]
+        string = text.get_text()
+        head = f'"text":{json.dumps(string)},'
+        if len(texts) != 1 or len(recorder.commands) != start + 1 or not _placed(string):
+            return None
+        rest = texts[0][2]
+        if not rest.startswith(head):
+            return None  # drawn by Text.draw, as FixedText draws what it does not place
+        return cls(text, _layout(text, with_string=False), rest[len(head) :])
+
+    def draw(self, recorder: Any) -> bool:
+        """Add the text's command for its current string; False if it must be drawn anew."""
+        text = self.text
+        string = text.get_text()
+        if not (_unchanged(_layout(text, with_string=False), self.layout) and _placed(string)):
+            return False
+        origin = text._origin(recorder, string)
+        if origin is None:
+            return False
+        x, y = origin
+        recorder.add_text(
+            round(float(x), 4), round(float(y), 4), f'"text":{json.dumps(string)},{self.tail}'
+        )
+        text.stale = False
+        return True
+
+
+def _placed(string: str) -> bool:
+    """Whether ``FixedText`` places ``string`` itself: one line, no mathtext, not empty."""
+    return bool(string) and "\n" not in string and "$" not in string

@@ -10,6 +10,8 @@ set with a slider; text, slider and picture stay in step.
 
 from __future__ import annotations
 
+import functools
+
 import ipywidgets as widgets
 import numpy as np
 from matplotlib.axes import Axes
@@ -29,6 +31,17 @@ __all__ = ["DeCasteljauApp"]
 MIN_POINTS, MAX_POINTS = 2, len(EXAMPLE_POINTS)
 _CURVE_SAMPLES = 201
 _WHOLE_CURVE_AT = np.linspace(0.0, 1.0, _CURVE_SAMPLES)
+
+
+@functools.lru_cache(maxsize=4)
+def _samples(t: float) -> tuple[np.ndarray, np.ndarray]:
+    """The traced part's parameters, and the whole curve's followed by them: a drag keeps t."""
+    traced_at = np.linspace(0.0, t, _CURVE_SAMPLES)
+    both_at = np.concatenate([_WHOLE_CURVE_AT, traced_at])
+    traced_at.flags.writeable = both_at.flags.writeable = False
+    return traced_at, both_at
+
+
 # The handouts' 700 x 700 window: the view, unless typed points lie outside it.
 _WINDOW = (0.0, 700.0)
 _MARKERS = ("s", "^", "D", "v", "p", "h", "<", "*", ">", "P")
@@ -97,6 +110,8 @@ class DeCasteljauApp(SliderApp):
                 value=format_points(start), description="x, y", continuous_update=False
             ),
         }
+        # The points a drag has moved so far: the controls get them once, at the release.
+        self._dragged: np.ndarray | None = None
         super().__init__(controls, shape=(size, size))
         self.view.image.clickable = True
         self._syncing = False
@@ -205,13 +220,14 @@ class DeCasteljauApp(SliderApp):
             self._syncing = False
 
     def update(self) -> None:
-        points = self._read_points()
+        dragged = self._dragged if self.grabbed is not None else None
+        points = self._read_points() if dragged is None else dragged
         t = float(self.value("t"))
         # The points were validated as they were read: the unchecked kernels, at every step.
         # A drag moves them at every step: the whole curve and the traced part in one call.
-        traced_at = np.linspace(0.0, t, _CURVE_SAMPLES)
+        traced_at, both_at = _samples(t)
         if self._drawn_points is None or not np.array_equal(points, self._drawn_points):
-            both = de_casteljau_chunked(points, np.concatenate([_WHOLE_CURVE_AT, traced_at]))
+            both = de_casteljau_chunked(points, both_at)
             self._set_points(points, both[:_CURVE_SAMPLES])
             traced = both[_CURVE_SAMPLES:]
         else:
@@ -320,7 +336,13 @@ class DeCasteljauApp(SliderApp):
         index = int(name[1:])
         points = self.points.copy()
         points[index] = self._inside_view(point)
-        self._write_points(points)
+        # The steps of a drag show the points; the release writes them (grab_ended
+        # comes first): formatting and parsing them again at every step bought nothing.
+        if self.grabbed is None:
+            self._dragged = None
+            self._write_points(points)
+        else:
+            self._dragged = points
 
     def click(self, axes: Axes, point: np.ndarray) -> bool:
         """A click on empty space adds a point there, at the end of the list."""

@@ -592,12 +592,18 @@ globalThis.createImageBitmap = (blob) =>
 const warnings = [];
 console.warn = (...parts) => warnings.push(parts.join(" "));
 const image = { addEventListener() {}, style: {} };
+const pixelsOf = (width, height) => new Uint8ClampedArray(4 * width * height);
 const context = new Proxy(
   {},
   {
     get(target, name) {
       if (name === "canvas") return { width: 5, height: 4 };
       if (name === "getImageData") return () => ({ data: new Uint8Array(5 * 4 * 4) });
+      if (name === "createImageData")
+        return (width, height) => ({ width, height, data: pixelsOf(width, height) });
+      if (name === "putImageData")
+        return ({ width, height, data }, x, y) =>
+          calls.push(`putImageData(${width}x${height}:${data},${x},${y})`);
       return (...args) => calls.push(`${name}(${args.map((a) => (a.text ?? a)).join(",")})`);
     },
     set(target, name, value) {
@@ -619,6 +625,7 @@ const view = (typed) => {
 const vertices = view(new Float32Array([1, 2, 3, 4, 0, -1, 1, 1, -1, 1, 2.5, 3.5]));
 const codes = view(new Uint8Array([1, 2, 1, 2, 79, 1]));
 const commands = [
+  { pixels: [3, 2, 1], at: [1, 2], zoom: 2 },
   { path: [0, 2], stroke: [1, 0, 0, 0.5], fill: null, width: 2, dash: [1, [3, 2]],
     cap: "butt", join: "round", clip: [0, 0, 5, 4] },
   { marker: [2, 3], at: [5, 1], stroke: null, fill: [0, 0, 1, 1], width: 0, dash: null,
@@ -628,16 +635,20 @@ const commands = [
 ];
 const backdrop = new DataView(new TextEncoder().encode("BACK").buffer);
 const listed = view(new TextEncoder().encode(JSON.stringify(commands)));
-handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [backdrop, listed, vertices, codes]);
+// Two RGB pixels from byte 3 (the buffer's first three bytes belong to another panel).
+const pixels = view(new Uint8Array([9, 9, 9, 10, 20, 30, 40, 50, 60]));
+const empty = new DataView(new ArrayBuffer(0));
+const first_message = [backdrop, pixels, listed, vertices, codes];
+handlers["msg:custom"]({ kind: "drawing", backdrop: true }, first_message);
 await turns(50);
 const first = calls.splice(0);
 // A drawing sent before a whole picture came back is dropped, and so are the next ones
 // until a drawing brings the new picture's background.
-handlers["msg:custom"]({ kind: "drawing" }, [listed, vertices, codes]);
+handlers["msg:custom"]({ kind: "drawing" }, [pixels, listed, vertices, codes]);
 state.value = new TextEncoder().encode("V1");
 handlers["change:value"]();
 const none = view(new TextEncoder().encode("[]"));
-handlers["msg:custom"]({ kind: "drawing" }, [none, vertices, codes]);
+handlers["msg:custom"]({ kind: "drawing" }, [empty, none, vertices, codes]);
 await turns(50);
 console.log(JSON.stringify({ first, after: calls, shown: image.src, warnings }));
 """
@@ -649,8 +660,11 @@ def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
     printed = picture_js_in_node(tmp_path, DRAWING_HARNESS)
     assert printed["warnings"] == [] and printed["after"] == []
     assert printed["shown"] == "V1"
+    two = "10,20,30,255," * 2 + "40,50,60,255," * 2
     assert printed["first"] == [
         "drawImage(BACK,0,0)",
+        # The pixels, each 2 x 2, written from (1, 2) as they are, unclipped.
+        f"putImageData(4x2:{(two * 2)[:-1]},1,2)",
         # The path: clipped, traced, stroked half-transparent with its dashes.
         "save()",
         "beginPath()",
@@ -723,7 +737,7 @@ const image = { addEventListener() {}, style: {} };
     + r"""
 const empty = new DataView(new TextEncoder().encode("[]").buffer);
 const none = new DataView(new ArrayBuffer(0));
-handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [none, empty, none, none]);
+handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [none, none, empty, none, none]);
 await new Promise((resolve) => setTimeout(resolve, 50));
 console.log(JSON.stringify({ shown: shown.slice(1), pixels: Array.from(pixels) }));
 """

@@ -33,7 +33,7 @@ from course import limits
 from course._validate import as_choice, as_int, as_shape, describe
 from course.i18n import N_, _
 from course.widgets.figure_view import FigureView
-from course.widgets.picture import Still
+from course.widgets.picture import Still, ZoomedPixels
 from course.widgets.pointer import Handle, PointerMixin
 
 # Handle is listed here too: an app's handles() returns them, and apps import both from here.
@@ -246,7 +246,7 @@ class SliderApp(PointerMixin):
         self._refused = False  # the status line says a value was refused
         self.moving: list[Any] = []
         # Pictures shown pixel for pixel, by axes: pasted, not drawn (BLIT apps).
-        self.pixel_images: dict[Axes, np.ndarray] = {}
+        self.pixel_images: dict[Axes, np.ndarray | ZoomedPixels] = {}
         for control in controls.values():
             control.observe(self._on_change, names="value")
         self.view.image.on_msg(self._on_message)

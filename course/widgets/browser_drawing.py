@@ -17,10 +17,14 @@ What a canvas cannot draw as matplotlib does (an image, mathtext, a hatch, a
 clip path that is not a rectangle, a sketch) raises :class:`NotDrawable`,
 and the app falls back to Agg and patches (``FigureView.render_moving``).
 
-A ``"drawing"`` message's last three buffers are its commands (a JSON list,
-UTF-8), their vertices (float32 pairs, little-endian) and their codes (uint8),
-the commands in picture pixels with y down:
+A ``"drawing"`` message's last four buffers are pixels (RGB, row by row), its
+commands (a JSON list, UTF-8), their vertices (float32 pairs, little-endian)
+and their codes (uint8), the commands in picture pixels with y down:
 
+- ``{"pixels": [start, width, height], "at": [left, top], "zoom": zoom}``:
+  ``width`` x ``height`` pixels from byte ``start`` of the pixels' buffer,
+  each drawn as ``zoom`` x ``zoom`` picture pixels from (left, top), over
+  whatever is there and whatever the clip (a pixel panel, written first);
 - ``{"path": [start, count], **style}``: a path whose vertices are ``count``
   (x, y) pairs of the message's float32 buffer from pair ``start``, and
   whose codes are the same entries of its uint8 buffer (matplotlib's
@@ -117,7 +121,7 @@ class CommandRecorder(RendererBase):
     ``agg`` is the figure's Agg renderer: text is measured by it, so that
     every text is placed where Agg would place it. Call :meth:`start`, draw
     the artists into the recorder (``artist.draw(recorder)``), then
-    :meth:`finish` for the drawing's three buffers. Each command is kept as
+    :meth:`finish` for the drawing's four buffers. Each command is kept as
     its JSON text: a path's style is encoded once, when its paint is read, so
     that a step joins strings rather than encoding every number again.
 
@@ -132,7 +136,7 @@ class CommandRecorder(RendererBase):
     >>> recorder = CommandRecorder(canvas.get_renderer())
     >>> recorder.start()
     >>> line.draw(recorder)
-    >>> commands, vertices, codes = recorder.finish()
+    >>> pixels, commands, vertices, codes = recorder.finish()
     >>> (command,) = json.loads(commands)
     >>> command["path"], command["stroke"], command["width"]
     ([0, 2], [1.0, 0.0, 0.0, 1.0], 2.0)
@@ -158,14 +162,19 @@ class CommandRecorder(RendererBase):
         self._vertices: list[np.ndarray] = []
         self._codes: list[np.ndarray] = []
         self._count = 0
+        self._pixels: list[bytes] = []
+        self._pixel_bytes = 0
+        #: While not None, each command's making as (method, arguments), to make it again.
+        self.log: list[tuple[str, tuple]] | None = None
         # Whether a long line is simplified (Path._update_values): read once for the drawing.
         self._simplifies = rcParams["path.simplify"] and rcParams["path.simplify_threshold"] > 0
 
     def finish(self) -> list[bytes]:
-        """The commands (a JSON list, UTF-8), their vertices (float32, little-endian), codes."""
+        """The pixels, the commands (a JSON list, UTF-8), their vertices and their codes."""
         vertices = np.concatenate(self._vertices) if self._vertices else np.zeros((0, 2))
         codes = np.concatenate(self._codes) if self._codes else np.zeros(0)
         return [
+            b"".join(self._pixels),
             f"[{','.join(self.commands)}]".encode(),
             vertices.astype("<f4").tobytes(),
             codes.astype(np.uint8).tobytes(),
@@ -266,6 +275,8 @@ class CommandRecorder(RendererBase):
         self._add_cleaned(style, vertices, codes)
 
     def _add_cleaned(self, style: str, vertices: np.ndarray, codes: np.ndarray) -> None:
+        if self.log is not None:
+            self.log.append(("_add_cleaned", (style, vertices, codes)))
         if len(codes) > 1:  # without the STOP that ends them
             start, count = self._add(vertices[:-1], codes[:-1])
             self.commands.append(f'{{"path":[{start},{count}],{style}}}')
@@ -299,6 +310,13 @@ class CommandRecorder(RendererBase):
             places = places[np.isfinite(places).all(axis=1)]
         places += 0.5
         np.floor(places, out=places)
+        self._add_markers_at(style, shape, codes, places)
+
+    def _add_markers_at(
+        self, style: str, shape: np.ndarray, codes: np.ndarray, places: np.ndarray
+    ) -> None:
+        if self.log is not None:
+            self.log.append(("_add_markers_at", (style, shape, codes, places)))
         if len(places) == 0 or len(shape) == 0:
             return
         many = len(places)
@@ -330,8 +348,23 @@ class CommandRecorder(RendererBase):
         # Agg places glyphs to 1/64 pixel. y is down already: flipy() is True.
         self.add_text(round(float(x), 4), round(float(y), 4), _json_fields(rest))
 
+    def add_pixels(self, left: int, top: int, pixels: np.ndarray, zoom: int) -> None:
+        """Record (h, w, 3) uint8 ``pixels``, each ``zoom`` x ``zoom``, from picture (left, top).
+
+        Written over whatever is there, as ``FigureView.paste`` writes them.
+        """
+        height, width = pixels.shape[:2]
+        start = self._pixel_bytes
+        self._pixels.append(pixels.tobytes())
+        self._pixel_bytes += len(self._pixels[-1])
+        self.commands.append(
+            f'{{"pixels":[{start},{width},{height}],"at":[{left},{top}],"zoom":{zoom}}}'
+        )
+
     def add_text(self, x: float, y: float, rest: str) -> None:
         """Record a text command whose baseline starts at (x, y), the rest of it JSON fields."""
+        if self.log is not None:
+            self.log.append(("add_text", (x, y, rest)))
         self.texts.append((len(self.commands), x, y, rest))
         self.commands.append(f'{{"x":{x!r},"y":{y!r},{rest}}}')
 

@@ -29,7 +29,8 @@ from PIL import Image as PILImage
 from course.i18n import _
 from course.widgets.browser_drawing import CommandRecorder, NotDrawable
 from course.widgets.line_replay import LineReplay, empty_line
-from course.widgets.picture import Picture, png_bytes
+from course.widgets.picture import Picture, ZoomedPixels, png_bytes
+from course.widgets.still_replay import StillReplay
 from course.widgets.text_cache import GlyphCache
 from course.widgets.text_replay import TextReplay
 
@@ -81,7 +82,7 @@ class FigureView:
         self._backdrop_sent = False
         self._recorder: CommandRecorder | None = None
         self._drawn: list[bytes] | None = None  # the drawing's buffers the browser shows
-        self._command_replays: dict[Artist, LineReplay | TextReplay | None] = {}
+        self._command_replays: dict[Artist, Any] = {}  # LinePaint, TextReplay, StillReplay
         #: True while the browser waits for the picture of its pointer message: the next
         #: patch tells it the picture is drawn (``"drawn": true``), and clears this.
         self.awaited = False
@@ -104,21 +105,28 @@ class FigureView:
         later calls restore it and draw just the moving artists. Call
         :meth:`invalidate` when something in the background changes.
         ``images`` maps axes to (h, w, 3) uint8 pictures the size of the axes
-        in pixels: written into the picture as they are, under the artists,
-        without matplotlib's resampling (for images shown pixel for pixel).
-        ``patches`` is for the steps of a drag, and then the empty bytes are
-        returned: the browser is sent the moving artists as drawing commands
-        (:meth:`publish_drawing`), or, where it cannot draw them (``images``,
-        or an artist only Agg draws), only the changed rectangles
-        (:meth:`publish_patches`). During such steps a moving line is drawn
-        by replaying the Agg calls of its last full draw with its new data
+        in pixels, or to :class:`~course.widgets.picture.ZoomedPixels` that
+        zoom to that size: written into the picture as they are, under the
+        artists, without matplotlib's resampling (for images shown pixel for
+        pixel). ``patches`` is for the steps of a drag, and then the empty
+        bytes are returned: the browser is sent the moving artists (and the
+        zoomed pixels) as drawing commands (:meth:`publish_drawing`), or,
+        where it cannot draw them (a whole-size image, an artist only Agg
+        draws), only the changed rectangles (:meth:`publish_patches`). During
+        such steps a moving line is drawn by replaying the Agg calls of its
+        last full draw with its new data
         (:class:`~course.widgets.line_replay.LineReplay`), as long as its
         style is the one it was drawn with; :meth:`invalidate`, which a new
         view calls for anyway, drops the recordings.
         """
-        if patches and not images and self.draw_in_browser and self._browser_draws is not False:
-            if self.publish_drawing(artists):
-                return b""
+        if (
+            patches
+            and self.draw_in_browser
+            and self._browser_draws is not False
+            and all(isinstance(image, ZoomedPixels) for image in (images or {}).values())
+            and self.publish_drawing(artists, images)
+        ):
+            return b""
         if self._background is None:
             self._draw_background()
         else:
@@ -128,7 +136,10 @@ class FigureView:
         renderer = self.canvas.get_renderer()
         GlyphCache.install(renderer)
         if not patches:
-            self._replays.clear()  # drawn in full: a line's style may have changed
+            # Drawn in full: a line's style may have changed, and any artist drawn by Agg
+            # is no longer stale, whatever changed in it.
+            self._replays.clear()
+            self._command_replays.clear()
         for artist in artists:
             if empty_line(artist):  # an unused level of a construction: nothing to draw
                 continue
@@ -143,10 +154,10 @@ class FigureView:
             return b""
         return self.publish()
 
-    def paste(self, axes: Axes, image: np.ndarray) -> None:
+    def paste(self, axes: Axes, image: np.ndarray | ZoomedPixels) -> None:
         """Write ``image``, (h, w, 3) uint8, into the canvas where ``axes`` is: h x w pixels."""
+        left, top = self._corner(axes)
         box = axes.get_window_extent()
-        left, top = round(box.x0), round(self.figure.bbox.height - box.y1)
         height, width = image.shape[:2]
         if (round(box.width), round(box.height)) != (width, height):
             raise ValueError(
@@ -156,9 +167,16 @@ class FigureView:
                     rows=round(box.height), columns=round(box.width), height=height, width=width
                 )
             )
+        if isinstance(image, ZoomedPixels):
+            image = image.zoomed()
         canvas = np.asarray(self.canvas.buffer_rgba())
         canvas[top : top + height, left : left + width, :3] = image
         canvas[top : top + height, left : left + width, 3] = 255
+
+    def _corner(self, axes: Axes) -> tuple[int, int]:
+        """The picture pixel (left, top) where :meth:`paste` writes an image of ``axes``."""
+        box = axes.get_window_extent()
+        return round(box.x0), round(self.figure.bbox.height - box.y1)
 
     def invalidate(self) -> None:
         """Forget the cached background; the next :meth:`render_moving` redraws it."""
@@ -280,11 +298,13 @@ class FigureView:
         self._backdrop_sent = False  # picture.js drops its backdrop with a new picture
         return encoded
 
-    def publish_drawing(self, artists: list) -> bool:
+    def publish_drawing(self, artists: list, images: dict | None = None) -> bool:
         """Send the browser ``artists`` as drawing commands, to draw over the still background.
 
-        One message ``{"kind": "drawing"}`` whose buffers are the commands
-        (a JSON list, UTF-8) and their vertices and codes
+        One message ``{"kind": "drawing"}`` whose buffers are the pixels of
+        ``images`` (:class:`~course.widgets.picture.ZoomedPixels`, written
+        first, where :meth:`paste` writes them), the commands (a JSON list,
+        UTF-8) and their vertices and codes
         (:mod:`course.widgets.browser_drawing`); the first after the
         background was drawn anew also carries it (``"backdrop": true``, its
         encoded picture as the first buffer). The commands travel as a
@@ -302,6 +322,8 @@ class FigureView:
             self._recorder = CommandRecorder(renderer)
         recorder = self._recorder
         recorder.start()
+        for axes, image in (images or {}).items():
+            recorder.add_pixels(*self._corner(axes), image.pixels, image.zoom)
         replays = self._command_replays
         try:
             for artist in artists:
@@ -314,8 +336,8 @@ class FigureView:
                     replays[artist] = LineReplay.record(artist, recorder)
                 elif isinstance(artist, Text):  # its commands, moved with it at later steps
                     replays[artist] = TextReplay.record(artist, recorder)
-                else:
-                    artist.draw(recorder)
+                else:  # its commands, made again while it does not change
+                    replays[artist] = StillReplay.record(artist, recorder)
         except NotDrawable:
             self._browser_draws = False
             return False

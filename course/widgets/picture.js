@@ -7,8 +7,8 @@
 // position is kept, and it is sent when the kernel says the picture is done.
 // The cursor shows what a press would do, from the grabbable places the
 // kernel lists in `handles`. During a drag the kernel sends what moves as drawing
-// commands ("drawing" messages: paths, markers and texts in picture pixels, as
-// matplotlib would draw them, see course/widgets/browser_drawing.py), drawn here
+// commands ("drawing" messages: pixel panels, paths, markers and texts in picture
+// pixels, as matplotlib would draw them, see course/widgets/browser_drawing.py), drawn here
 // over the still background it sends with the first of them; or, where the
 // browser cannot draw what moves, only the rectangles that changed ("patch"
 // messages, one PNG buffer each), painted in order over the picture. Either
@@ -109,9 +109,36 @@ function bitmapFile(context) {
   return new Blob([header, pixels], { type: "image/bmp" });
 }
 
+// A pixel panel's pixels (RGB, row by row, from byte `start`), each `zoom` x `zoom`
+// picture pixels from (left, top), written over whatever is there whatever the clip,
+// as FigureView.paste writes them into Agg's canvas.
+function putPixels(context, pixels, [start, width, height], [left, top], zoom) {
+  const zoomed = context.createImageData(width * zoom, height * zoom);
+  const out = zoomed.data;
+  const rowBytes = 4 * width * zoom;
+  for (let y = 0; y < height; y++) {
+    const row = y * zoom * rowBytes;
+    for (let x = 0; x < width; x++) {
+      const from = start + 3 * (y * width + x);
+      for (let to = row + 4 * x * zoom; to < row + 4 * (x + 1) * zoom; to += 4) {
+        out[to] = pixels[from];
+        out[to + 1] = pixels[from + 1];
+        out[to + 2] = pixels[from + 2];
+        out[to + 3] = 255;
+      }
+    }
+    for (let copy = 1; copy < zoom; copy++) out.copyWithin(row + copy * rowBytes, row, row + rowBytes);
+  }
+  context.putImageData(zoomed, left, top);
+}
+
 // The commands of course/widgets/browser_drawing.py, in their order.
-function drawCommands(context, commands, vertices, codes) {
+function drawCommands(context, commands, pixels, vertices, codes) {
   for (const command of commands) {
+    if (command.pixels) {
+      putPixels(context, pixels, command.pixels, command.at, command.zoom);
+      continue;
+    }
     context.save();
     clipTo(context, command.clip);
     if (command.path) {
@@ -212,8 +239,8 @@ function render({ model, el }) {
     if (!backdrop) return; // its background belonged to an older picture
     if (!composed) composed = canvasFor(backdrop);
     composed.drawImage(backdrop, 0, 0);
-    const commands = JSON.parse(new TextDecoder().decode(octets(parts[0])));
-    drawCommands(composed, commands, floats(parts[1]), octets(parts[2]));
+    const commands = JSON.parse(new TextDecoder().decode(octets(parts[1])));
+    drawCommands(composed, commands, octets(parts[0]), floats(parts[2]), octets(parts[3]));
     showComposed(mine);
   }
 

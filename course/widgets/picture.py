@@ -44,6 +44,7 @@ __all__ = [
     "Picture",
     "PixelPanel",
     "Still",
+    "ZoomedPixels",
     "bare_axes",
     "pixel_axes",
     "pixel_figure",
@@ -174,6 +175,31 @@ def pixel_axes(figure: Figure, left: int, bottom: int, width: int, height: int) 
     return figure.add_axes((left / columns, bottom / rows, width / columns, height / rows))
 
 
+class ZoomedPixels:
+    """An image's pixels, (h, w, 3) uint8, each shown as ``zoom`` x ``zoom`` picture pixels.
+
+    What a :class:`PixelPanel` leaves in its app's ``pixel_images``: Agg's
+    canvas gets it zoomed (:meth:`zoomed`), and during a drag the browser
+    gets the pixels as they are and zooms them itself, a step's pixels a
+    ``zoom``-squared of the zoomed image's.
+
+    >>> ZoomedPixels(np.zeros((2, 3, 3), dtype=np.uint8), 4).shape
+    (8, 12, 3)
+    """
+
+    def __init__(self, pixels: np.ndarray, zoom: int) -> None:
+        self.pixels, self.zoom = np.ascontiguousarray(pixels, dtype=np.uint8), zoom
+
+    @property
+    def shape(self) -> tuple[int, int, int]:
+        height, width = self.pixels.shape[:2]
+        return height * self.zoom, width * self.zoom, 3
+
+    def zoomed(self) -> np.ndarray:
+        """The (h * zoom, w * zoom, 3) pixels the picture shows."""
+        return np.repeat(np.repeat(self.pixels, self.zoom, axis=0), self.zoom, axis=1)
+
+
 class PixelPanel:
     """An image shown at a whole zoom, ``zoom`` x ``zoom`` screen pixels per image pixel.
 
@@ -211,8 +237,7 @@ class PixelPanel:
         else:
             scaled = (self.values - self.vmin) / (self.vmax - self.vmin)
             pixels = self.colormap(scaled, bytes=True)[..., :3]
-        zoomed = np.repeat(np.repeat(pixels, self.zoom, axis=0), self.zoom, axis=1)
-        self.app.pixel_images[self.axes] = zoomed
+        self.app.pixel_images[self.axes] = ZoomedPixels(pixels, self.zoom)
 
     def get_array(self) -> np.ndarray:
         return self.values

@@ -33,6 +33,7 @@ from course.antialias.coverage import curve_polyline
 from course.i18n import _
 from course.raster.canvas import crop
 from course.widgets.base import SliderApp
+from course.widgets.picture import ZoomedPixels
 
 __all__ = ["CurveWalk", "ZoomPanel", "zoom_figure"]
 
@@ -154,8 +155,7 @@ class ZoomPanel:
         else:
             zoom = round(self.axes.get_window_extent().width) // window.shape[1]
             gray = (np.clip(window, 0.0, 1.0) * 255).astype(np.uint8)  # as imshow maps gray
-            zoomed = np.repeat(np.repeat(gray, zoom, axis=0), zoom, axis=1)
-            self.app.pixel_images[self.axes] = np.repeat(zoomed[..., None], 3, axis=2)
+            self.app.pixel_images[self.axes] = ZoomedPixels(np.repeat(gray[..., None], 3, 2), zoom)
         columns = [[(x, y0), (x, y1)] for x in range(x0, x1 + 1)]
         rows = [[(x0, y), (x1, y)] for y in range(y0, y1 + 1)]
         self.grid.set_segments(columns + rows)

@@ -16,6 +16,7 @@ import math
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
+from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from matplotlib.font_manager import FontProperties
 from matplotlib.patches import Rectangle
@@ -190,6 +191,23 @@ def test_dashes_markers_fills_clips_and_turned_text_are_drawn_as_agg_draws_them(
         axes.text(2, 2, "tilted 42", rotation=30, fontsize=11, color="purple"),
         axes.text(5, 4.5, "B(t) = (1.0, 2.5)", ha="center", weight="bold"),
         view.figure.text(0.02, 0.02, "corner", transform=view.figure.transFigure, style="italic"),
+        # Collections: one style for all their paths, moved by one offset or by several.
+        axes.add_collection(
+            LineCollection(
+                [[(0, 0), (1, 1)], [(1, 0), (0, 1)]],
+                offsets=[(7.5, 3.5)],
+                offset_transform=axes.transData,
+                colors="crimson",
+                linewidths=1.5,
+            )
+        ),
+        axes.add_collection(
+            LineCollection(
+                [[(0.5, 0.2), (2, 0.2)], [(0.5, 0.6), (2, 0.6)]],
+                colors=["green", "black"],
+                linestyles=["-", ":"],
+            )
+        ),
     ]
     for artist in moving:
         artist.set_animated(True)

@@ -83,6 +83,18 @@ def _json_fields(fields: dict) -> str:
     return json.dumps(fields, separators=(",", ":"))[1:-1]
 
 
+def _gc_key(gc: GraphicsContextBase, rgbFace: Any) -> tuple:
+    """All a path's style is read from: the graphics context's state and the face colour."""
+    offset, dashes = gc._dashes
+    clip = gc._cliprect
+    return (
+        tuple(gc._rgb), gc._linewidth, offset, None if dashes is None else tuple(dashes),
+        gc._capstyle, gc._joinstyle, gc._alpha, gc._forced_alpha,
+        None if clip is None else tuple(clip.extents), gc._clippath, gc._hatch, gc._sketch,
+        None if rgbFace is None else tuple(rgbFace),
+    )  # fmt: skip
+
+
 def _rounded(values: Any, digits: int = 3) -> list[float]:
     return [round(float(value), digits) for value in values]
 
@@ -152,10 +164,13 @@ class CommandRecorder(RendererBase):
         self._fonts: dict[int, list] = {}
         #: From display pixels (y up) to picture pixels (y down).
         self._down = Affine2D().scale(1.0, -1.0).translate(0.0, self.height)
+        self._styles: dict[tuple, tuple[str, float] | None] = {}  # path_paint's, by _gc_key
         self.start()
 
     def start(self) -> None:
         """Forget the commands recorded so far."""
+        if len(self._styles) > 256:  # clip boxes of views gone by
+            self._styles.clear()
         self.commands: list[str] = []  # each command's JSON text
         #: Each text command as (its index in ``commands``, x, y, the rest of its JSON).
         self.texts: list[tuple[int, float, float, str]] = []
@@ -233,6 +248,31 @@ class CommandRecorder(RendererBase):
         if paint is not None:
             self.add_markers(paint, path.vertices)
 
+    def draw_path_collection(
+        self, gc: Any, master_transform: Any, paths: Any, all_transforms: Any, *given: Any,
+        hatchcolors: Any = None,
+    ) -> None:  # fmt: skip
+        # given: offsets, offset_trans, facecolors, edgecolors, linewidths, linestyles,
+        # antialiaseds, urls, offset_position, as RendererBase.draw_path_collection's.
+        hatchcolors = [] if hatchcolors is None else hatchcolors
+        one = (given[0], *given[2:8], hatchcolors)  # one value each, or none
+        if len(all_transforms) or max(len(values) for values in one) > 1:
+            super().draw_path_collection(
+                gc, master_transform, paths, all_transforms, *given, hatchcolors=hatchcolors
+            )
+            return
+        # Every path is drawn with the graphics context, face and offset the base class
+        # sets up for the first (a pixel grid's dozens of lines): one paint for them all.
+        for x, y, _, gc0, face in self._iter_collection(
+            gc, [None], *given, hatchcolors=hatchcolors
+        ):
+            transform = master_transform
+            if x != 0 or y != 0:
+                transform = master_transform.frozen().translate(x, y)
+            paint = self.path_paint(gc0, transform, face)
+            for path in paths if paint is not None else ():
+                self.add_path(paint, path)
+
     # --- a call's paint, kept by a replay for the next steps ----------------
     #
     # A call's command depends on its path and on what ``gc``, the transforms and the
@@ -242,12 +282,20 @@ class CommandRecorder(RendererBase):
 
     def path_paint(self, gc: Any, transform: Any, rgbFace: Any = None) -> tuple | None:
         """What :meth:`draw_path` reads from all but the path; None if it draws nothing."""
-        style = self._style(gc, rgbFace)
-        if style is None:
+        # A collection draws each of its paths with a graphics context set up alike (a
+        # pixel grid: dozens of lines a step): its style is read and encoded once.
+        key = _gc_key(gc, rgbFace)
+        if key not in self._styles:
+            style = self._style(gc, rgbFace)
+            self._styles[key] = style and (
+                _json_fields(style),
+                style["width"] if style["stroke"] else 0.0,
+            )
+        if self._styles[key] is None:
             return None
+        style, stroke_width = self._styles[key]
         to_picture = (transform + self._down).frozen()  # picture pixels, y down
-        stroke_width = style["width"] if style["stroke"] else 0.0
-        return _json_fields(style), to_picture, gc.get_snap(), stroke_width, rgbFace is None
+        return style, to_picture, gc.get_snap(), stroke_width, rgbFace is None
 
     def add_path(self, paint: tuple, path: Any) -> None:
         """Record ``path`` drawn with ``paint`` (:meth:`path_paint`)."""

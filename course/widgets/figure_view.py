@@ -156,8 +156,8 @@ class FigureView:
 
     def paste(self, axes: Axes, image: np.ndarray | ZoomedPixels) -> None:
         """Write ``image``, (h, w, 3) uint8, into the canvas where ``axes`` is: h x w pixels."""
-        left, top = self._corner(axes)
         box = axes.get_window_extent()
+        left, top = self._corner(box)
         height, width = image.shape[:2]
         if (round(box.width), round(box.height)) != (width, height):
             raise ValueError(
@@ -173,9 +173,8 @@ class FigureView:
         canvas[top : top + height, left : left + width, :3] = image
         canvas[top : top + height, left : left + width, 3] = 255
 
-    def _corner(self, axes: Axes) -> tuple[int, int]:
-        """The picture pixel (left, top) where :meth:`paste` writes an image of ``axes``."""
-        box = axes.get_window_extent()
+    def _corner(self, box: Any) -> tuple[int, int]:
+        """The picture pixel (left, top) of an axes' extent ``box``: where :meth:`paste` writes."""
         return round(box.x0), round(self.figure.bbox.height - box.y1)
 
     def invalidate(self) -> None:
@@ -323,7 +322,8 @@ class FigureView:
         recorder = self._recorder
         recorder.start()
         for axes, image in (images or {}).items():
-            recorder.add_pixels(*self._corner(axes), image.pixels, image.zoom)
+            corner = self._corner(axes.get_window_extent())
+            recorder.add_pixels(*corner, image.pixels, image.zoom)
         replays = self._command_replays
         try:
             for artist in artists:

@@ -54,25 +54,6 @@ class _Recorder:
         self._renderer.draw_markers(gc, marker_path, marker_trans, path, trans, rgbFace)
 
 
-def _line_style(line: Line2D) -> tuple:
-    """What a line's Agg calls depend on besides its data: a change means a new recording."""
-    return (
-        line.get_visible(),
-        str(line.get_color()),
-        line.get_linewidth(),
-        line.get_linestyle(),
-        str(line.get_marker()),
-        line.get_markersize(),
-        str(line.get_markerfacecolor()),
-        str(line.get_markeredgecolor()),
-        line.get_markeredgewidth(),
-        line.get_alpha(),
-        line.get_antialiased(),
-        line.get_clip_on(),
-        id(line.get_transform()),
-    )
-
-
 #: Everything a line's drawing reads besides its data, as the objects it holds. Its setters
 #: store a new object (a new float even for an equal width), so a style the line no longer
 #: holds shows as one object that is not the recorded one: one C call and a comparison by
@@ -85,6 +66,11 @@ _HELD_STYLE = attrgetter(
     "_sketch", "_path_effects", "_rasterized", "_agg_filter", "_solidcapstyle",
     "_solidjoinstyle", "_dashcapstyle", "_dashjoinstyle",
 )  # fmt: skip
+
+
+def _holds(line: Line2D, held: tuple) -> bool:
+    """Whether ``line`` still holds the style objects ``held`` (:data:`_HELD_STYLE`)."""
+    return all(map(is_, _HELD_STYLE(line), held))
 
 
 class LineReplay:
@@ -101,14 +87,15 @@ class LineReplay:
     only where that holds: affine transforms (the path goes to Agg as it
     is), the default draw style, no mark-every, gap colour, sketch, path
     effects, filter or rasterization; and :meth:`draw` refuses (returns
-    False) once the line's style differs from the recorded. A new view
+    False) once the line no longer holds the style it was recorded with
+    (:data:`_HELD_STYLE`). A new view
     (limits, axes moved) comes with
     :meth:`~course.widgets.figure_view.FigureView.invalidate`, as the
     cached background needs it too, and that drops every recording.
     """
 
-    def __init__(self, line: Line2D, calls: list[tuple], style: tuple) -> None:
-        self.line, self.calls, self.style = line, calls, style
+    def __init__(self, line: Line2D, calls: list[tuple], held: tuple) -> None:
+        self.line, self.calls, self.held = line, calls, held
 
     @classmethod
     def record(cls, line: Line2D, renderer: Any) -> LineReplay | LinePaint | None:
@@ -128,7 +115,6 @@ class LineReplay:
         if not plain:
             line.draw(renderer)
             return None
-        style = _line_style(line)
         held = _HELD_STYLE(line)
         recorder = _Recorder(renderer)
         line.draw(recorder)
@@ -147,12 +133,12 @@ class LineReplay:
             paints = [_painted(renderer, call) for call in calls]
             paints = [paint for paint in paints if paint[1] is not None]  # None: draws nothing
             return LinePaint(line, paints, held) if paints else None
-        return cls(line, calls, style)
+        return cls(line, calls, held)
 
     def draw(self, renderer: Any) -> bool:
         """Draw the line with its current data as its recorded draw would; False if it cannot."""
         line = self.line
-        if _line_style(line) != self.style:
+        if not _holds(line, self.held):
             return False
         if line._invalidx or line._invalidy:  # as Line2D.draw: the path from the new data
             line.recache()
@@ -190,7 +176,7 @@ class LinePaint:
     def draw(self, recorder: Any) -> bool:
         """Add the line's commands with its current data; False if it must be recorded anew."""
         line = self.line
-        if not all(map(is_, _HELD_STYLE(line), self.held)):
+        if not _holds(line, self.held):
             return False
         vertices = _data_vertices(line)
         if vertices is None or len(vertices) == 0:

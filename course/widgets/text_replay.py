@@ -108,7 +108,7 @@ class TextReplay:
         layout = _layout(text)
         start = len(recorder.commands)
         text.draw(recorder)
-        texts = [parts for index, *parts in recorder.texts if index >= start]
+        texts = _texts_since(recorder, start)
         if len(texts) != len(recorder.commands) - start:
             return None  # drew something besides text
         return cls(text, layout, anchor, texts)
@@ -151,7 +151,7 @@ class FixedTextReplay:
         """Draw ``text`` into ``recorder``; return its replay, or None if it cannot have one."""
         start = len(recorder.commands)
         text.draw(recorder)
-        texts = [parts for index, *parts in recorder.texts if index >= start]
+        texts = _texts_since(recorder, start)
         string = text.get_text()
         head = f'"text":{json.dumps(string)},'
         if len(texts) != 1 or len(recorder.commands) != start + 1 or not _placed(string):
@@ -176,6 +176,11 @@ class FixedTextReplay:
         )
         text.stale = False
         return True
+
+
+def _texts_since(recorder: Any, start: int) -> list[tuple[float, float, str]]:
+    """The (x, y, rest of the JSON) of the text commands recorded from command ``start`` on."""
+    return [parts for index, *parts in recorder.texts if index >= start]
 
 
 def _placed(string: str) -> bool:

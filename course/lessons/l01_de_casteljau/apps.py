@@ -110,8 +110,6 @@ class DeCasteljauApp(SliderApp):
                 value=format_points(start), description="x, y", continuous_update=False
             ),
         }
-        # The points a drag has moved so far: the controls get them once, at the release.
-        self._dragged: np.ndarray | None = None
         super().__init__(controls, shape=(size, size))
         self.view.image.clickable = True
         self._syncing = False
@@ -220,8 +218,8 @@ class DeCasteljauApp(SliderApp):
             self._syncing = False
 
     def update(self) -> None:
-        dragged = self._dragged if self.grabbed is not None else None
-        points = self._read_points() if dragged is None else dragged
+        # A drag's points are the app's own (drag): the controls get them at the release.
+        points = self._read_points() if self.grabbed is None else self.points
         t = float(self.value("t"))
         # The points were validated as they were read: the unchecked kernels, at every step.
         # A drag moves them at every step: the whole curve and the traced part in one call.
@@ -339,10 +337,9 @@ class DeCasteljauApp(SliderApp):
         # The steps of a drag show the points; the release writes them (grab_ended
         # comes first): formatting and parsing them again at every step bought nothing.
         if self.grabbed is None:
-            self._dragged = None
             self._write_points(points)
         else:
-            self._dragged = points
+            self.points = points
 
     def click(self, axes: Axes, point: np.ndarray) -> bool:
         """A click on empty space adds a point there, at the end of the list."""

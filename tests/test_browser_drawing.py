@@ -27,6 +27,7 @@ from PIL import Image
 from course.lessons.l01_de_casteljau.apps import DeCasteljauApp
 from course.lessons.l03_lines_and_triangles.apps import TriangleApp
 from course.lessons.l05_antialiasing.apps import ZoomApp
+from course.lessons.l08_poisson.apps import CloneApp
 from course.widgets.browser_drawing import CommandRecorder
 from course.widgets.figure_view import FigureView
 from course.widgets.picture import ZoomedPixels
@@ -150,20 +151,29 @@ def test_lesson_01_s_drag_drawn_from_its_commands_is_the_picture_agg_draws():
     assert decoded(app.view.image.value).shape == backdrop.shape
 
 
+def grabbed(app, index: int) -> tuple[Sent, tuple[float, float], np.ndarray]:
+    """The app's messages from now on, where its handle ``index`` was pressed, the backdrop.
+
+    The press sends the backdrop; Agg's drawing of each later step stays on the
+    canvas (a published whole picture would make the browser drop its backdrop).
+    """
+    app.refresh()
+    sent = Sent(app.view)
+    handle = app.handles()[index]
+    x, y = app.picture_point(handle.axes, handle.at)
+    app.pointer("down", x, y)
+    ((pressed, buffers),) = sent.messages
+    assert pressed["kind"] == "drawing" and pressed["backdrop"] is True
+    app.view.publish = lambda: b""
+    return sent, (x, y), decoded(buffers[0])
+
+
 @pytest.mark.parametrize("kind", [TriangleApp, ZoomApp])
 def test_pixel_panels_drawn_from_a_drag_s_message_are_the_picture_agg_draws(kind):
     # Lesson 03's triangles and lesson 05's zoom: their panels' pixels travel as they
     # are, a zoom-squared of what the picture shows, and the browser zooms them.
     app = kind()
-    app.refresh()
-    sent = Sent(app.view)
-    handle = app.handles()[1]
-    x, y = app.picture_point(handle.axes, handle.at)
-    app.pointer("down", x, y)
-    ((pressed, buffers),) = sent.messages
-    assert pressed["kind"] == "drawing" and pressed["backdrop"] is True
-    backdrop = decoded(buffers[0])
-    app.view.publish = lambda: b""
+    sent, (x, y), backdrop = grabbed(app, 1)
     for step in range(1, 4):
         app.view.awaited = True
         app.pointer("move", x + 9 * step, y - 6 * step)
@@ -178,6 +188,34 @@ def test_pixel_panels_drawn_from_a_drag_s_message_are_the_picture_agg_draws(kind
         assert len(buffers[0]) * min(command["zoom"] for command in panels) ** 2 <= sum(
             3 * image.shape[0] * image.shape[1] for image in app.pixel_images.values()
         )
+
+
+def test_lesson_08_s_drag_sends_only_the_windows_the_foreground_covers_over_the_still_lake():
+    # Both panels are the half-size lake but for the blocks the foreground covers: the
+    # backdrop holds the lake (a JPEG), each step only those two windows, exact.
+    app = CloneApp()
+    sent, (x, y), backdrop = grabbed(app, 0)
+    height, width = app.foreground.shape[:2]
+    for step in range(1, 4):
+        app.view.awaited = True
+        app.pointer("move", x + 9 * step, y - 6 * step)
+        content, buffers = sent.messages[-1]
+        assert content["kind"] == "drawing" and len(buffers) == 4
+        windows = [command for command in commands_of(buffers) if "pixels" in command]
+        assert len(windows) == 2 and {command["zoom"] for command in windows} == {1}
+        # Each window is the half-size blocks the foreground covers, not the panel.
+        for command in windows:
+            _, w, h = command["pixels"]
+            assert w <= width // 2 + 1 and h <= height // 2 + 1
+        drawn = played(content, buffers, backdrop, app.view.figure.dpi)
+        app.view.render_moving(app.moving, app.pixel_images)
+        expected = app.view.pixels()
+        for command in windows:
+            (_, w, h), (left, top) = command["pixels"], command["at"]
+            window = (slice(top, top + h), slice(left, left + w))
+            np.testing.assert_array_equal(drawn[window], expected[window])
+        difference = np.abs(drawn.astype(int) - expected.astype(int))
+        assert difference.max() <= 19  # the backdrop's JPEG (FigureView.JPEG_QUALITY)
 
 
 def test_dashes_markers_fills_clips_and_turned_text_are_drawn_as_agg_draws_them():

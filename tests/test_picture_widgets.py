@@ -23,6 +23,7 @@ from course.widgets.picture import (
     Picture,
     PixelPanel,
     Still,
+    ZoomedPixels,
     pixel_axes,
     pixel_figure,
     png_bytes,
@@ -87,6 +88,25 @@ def test_pasting_an_image_of_the_wrong_size_names_both_sizes():
     view.render_moving([])
     with pytest.raises(ValueError, match=r"image: expected the axes' 10 x 20 pixels; got 5 x 20"):
         view.paste(axes, np.zeros((5, 20, 3), dtype=np.uint8))
+    window = ZoomedPixels(np.zeros((2, 3, 3), dtype=np.uint8), 2, at=(15, 4))
+    with pytest.raises(
+        ValueError,
+        match=r"expected a window inside the axes' 10 x 20 pixels; got 4 x 6 from \(15, 4\)",
+    ):
+        view.paste(axes, window)
+
+
+def test_a_window_of_zoomed_pixels_goes_over_the_still_picture_from_its_corner():
+    view = FigureView(shape=(40, 60))
+    axes = pixel_axes(view.figure, 10, 5, 20, 10)
+    view.still_images[axes] = np.full((10, 20, 3), 50, dtype=np.uint8)
+    window = ZoomedPixels(np.array([[[200, 0, 0], [0, 200, 0]]], dtype=np.uint8), 3, at=(4, 2))
+    view.render_moving([], {axes: window})
+    panel = view.pixels()[25:35, 10:30, :3]  # 40 - 5 - 10 = 25 rows down
+    expected = np.full((10, 20, 3), 50, dtype=np.uint8)
+    expected[2:5, 4:7] = [200, 0, 0]
+    expected[2:5, 7:10] = [0, 200, 0]
+    np.testing.assert_array_equal(panel, expected)
 
 
 def test_blitting_redraws_only_the_moving_artists_over_the_still_rest():

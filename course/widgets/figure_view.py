@@ -83,6 +83,11 @@ class FigureView:
         self._recorder: CommandRecorder | None = None
         self._drawn: list[bytes] | None = None  # the drawing's buffers the browser shows
         self._command_replays: dict[Artist, Any] = {}  # LinePaint, TextReplay, StillReplay
+        #: Pictures that stay while images move over them, by axes, (h, w, 3) uint8 the axes'
+        #: size: written into the background (:meth:`paste`), so that a moving image may
+        #: be only the window of them that changes. Set before the first render, or
+        #: :meth:`invalidate` after a change.
+        self.still_images: dict[Axes, np.ndarray] = {}
         #: True while the browser waits for the picture of its pointer message: the next
         #: patch tells it the picture is drawn (``"drawn": true``), and clears this.
         self.awaited = False
@@ -155,20 +160,38 @@ class FigureView:
         return self.publish()
 
     def paste(self, axes: Axes, image: np.ndarray | ZoomedPixels) -> None:
-        """Write ``image``, (h, w, 3) uint8, into the canvas where ``axes`` is: h x w pixels."""
+        """Write ``image``, (h, w, 3) uint8, into the canvas where ``axes`` is: h x w pixels.
+
+        A :class:`~course.widgets.picture.ZoomedPixels` goes from its ``at``
+        within the axes, and may be a window smaller than them.
+        """
         box = axes.get_window_extent()
         left, top = self._corner(box)
+        rows, columns = round(box.height), round(box.width)
         height, width = image.shape[:2]
-        if (round(box.width), round(box.height)) != (width, height):
+        if isinstance(image, ZoomedPixels):
+            column, row = image.at
+            if not (0 <= column <= columns - width and 0 <= row <= rows - height):
+                raise ValueError(
+                    _(
+                        "image: expected a window inside the axes' {rows} x {columns} pixels; "
+                        "got {height} x {width} from ({column}, {row})"
+                    ).format(
+                        rows=rows,
+                        columns=columns,
+                        height=height,
+                        width=width,
+                        column=column,
+                        row=row,
+                    )
+                )
+            left, top, image = left + column, top + row, image.zoomed()
+        elif (columns, rows) != (width, height):
             raise ValueError(
                 _(
                     "image: expected the axes' {rows} x {columns} pixels; got {height} x {width}"
-                ).format(
-                    rows=round(box.height), columns=round(box.width), height=height, width=width
-                )
+                ).format(rows=rows, columns=columns, height=height, width=width)
             )
-        if isinstance(image, ZoomedPixels):
-            image = image.zoomed()
         canvas = np.asarray(self.canvas.buffer_rgba())
         canvas[top : top + height, left : left + width, :3] = image
         canvas[top : top + height, left : left + width, 3] = 255
@@ -217,6 +240,8 @@ class FigureView:
                 self.figure.draw_artist(artist)
         else:
             self.canvas.draw()  # skips animated artists
+            for axes, image in self.still_images.items():
+                self.paste(axes, image)
         self._background = self.canvas.copy_from_bbox(self.figure.bbox)
         if not self._holding:
             self._still = self._background
@@ -322,8 +347,9 @@ class FigureView:
         recorder = self._recorder
         recorder.start()
         for axes, image in (images or {}).items():
-            corner = self._corner(axes.get_window_extent())
-            recorder.add_pixels(*corner, image.pixels, image.zoom)
+            left, top = self._corner(axes.get_window_extent())
+            column, row = image.at
+            recorder.add_pixels(left + column, top + row, image.pixels, image.zoom)
         replays = self._command_replays
         try:
             for artist in artists:

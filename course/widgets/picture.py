@@ -181,14 +181,19 @@ class ZoomedPixels:
     What a :class:`PixelPanel` leaves in its app's ``pixel_images``: Agg's
     canvas gets it zoomed (:meth:`zoomed`), and during a drag the browser
     gets the pixels as they are and zooms them itself, a step's pixels a
-    ``zoom``-squared of the zoomed image's.
+    ``zoom``-squared of the zoomed image's. ``at`` is the picture pixel
+    (column, row) of its top-left corner from the axes' own: a window
+    into the axes, over the still picture there
+    (:attr:`~course.widgets.figure_view.FigureView.still_images`), when
+    only that window changes from step to step (lesson 08's clone).
 
     >>> ZoomedPixels(np.zeros((2, 3, 3), dtype=np.uint8), 4).shape
     (8, 12, 3)
     """
 
-    def __init__(self, pixels: np.ndarray, zoom: int) -> None:
+    def __init__(self, pixels: np.ndarray, zoom: int, at: tuple[int, int] = (0, 0)) -> None:
         self.pixels, self.zoom = np.ascontiguousarray(pixels, dtype=np.uint8), zoom
+        self.at = at
 
     @property
     def shape(self) -> tuple[int, int, int]:

@@ -29,7 +29,7 @@ from course._validate import (
 from course.i18n import N_, _
 from course.poisson.problem import build_clone_problem
 from course.widgets.base import Handle, SliderApp, format_points
-from course.widgets.picture import rounding_level
+from course.widgets.picture import ZoomedPixels, rounding_level
 
 __all__ = [
     "CloneApp",
@@ -197,6 +197,9 @@ class CloneApp(SliderApp):
                 )
             )
         self.half_background = half_size(self.background)
+        # The panels' half-size pictures are the background but for the window the
+        # foreground's blocks cover: only that window moves (FigureView.still_images).
+        self._windows: dict[str, tuple[np.ndarray, tuple[int, int]]] = {}
         self.offset = as_app_points([offset], "offset", 1, whole=True)[0].astype(int)
         controls = {
             "offset": widgets.Text(
@@ -217,7 +220,8 @@ class CloneApp(SliderApp):
             axes.set_xlim(0, 2 * width)
             axes.set_ylim(2 * height, 0)
             self.panels[name] = axes
-        self.shown: dict[str, np.ndarray] = {}
+        still = _pixels_uint8(self.half_background)
+        self.view.still_images.update(dict.fromkeys(self.panels.values(), still))
         self.titles = {name: axes.set_title("", fontsize=10) for name, axes in self.panels.items()}
         self.animate(*self.titles.values())
         for axes in self.panels.values():
@@ -241,25 +245,36 @@ class CloneApp(SliderApp):
             ("naive paste", self.foreground[1:-1, 1:-1]),
             ("seamless clone", solution[1:-1, 1:-1]),
         ):
-            self.shown[name] = self._pasted(x + 1, y + 1, region)
+            window, corner = self._pasted_window(x + 1, y + 1, region)
+            self._windows[name] = window, corner
             # As imshow shows an RGB image in [0, 1]: 255 times, truncated.
-            self.pixel_images[self.panels[name]] = as_pixels_uint8(self.shown[name])
+            self.pixel_images[self.panels[name]] = ZoomedPixels(_pixels_uint8(window), 1, corner)
         self.titles["naive paste"].set_text(_("naive paste at ({x}, {y})").format(x=x, y=y))
         self.titles["seamless clone"].set_text(_("seamless clone at ({x}, {y})").format(x=x, y=y))
 
-    def _pasted(self, x: int, y: int, patch: np.ndarray) -> np.ndarray:
-        """The half-size background with ``patch`` pasted at (x, y).
+    @property
+    def shown(self) -> dict[str, np.ndarray]:
+        """Each panel's half-size picture as it stands, by name: the background and the window."""
+        shown = {}
+        for name, (window, (left, top)) in self._windows.items():
+            shown[name] = self.half_background.copy()
+            shown[name][top : top + window.shape[0], left : left + window.shape[1]] = window
+        return shown
 
-        Only the 2 x 2 blocks the patch touches are averaged again.
+    def _pasted_window(
+        self, x: int, y: int, patch: np.ndarray
+    ) -> tuple[np.ndarray, tuple[int, int]]:
+        """The half-size blocks ``patch``, pasted at (x, y), touches, and their top-left block.
+
+        Only these blocks differ from the half-size background; they alone are
+        averaged again.
         """
         height, width = patch.shape[:2]
         left, top = x // 2 * 2, y // 2 * 2
         right, bottom = -(-(x + width) // 2) * 2, -(-(y + height) // 2) * 2
         window = self.background[top:bottom, left:right].copy()
         window[y - top : y - top + height, x - left : x - left + width] = patch
-        shown = self.half_background.copy()
-        shown[top // 2 : bottom // 2, left // 2 : right // 2] = half_size(window)
-        return shown
+        return _half_size(window), (left // 2, top // 2)
 
     def handles(self) -> list[Handle]:
         x, y = self.offset
@@ -283,7 +298,10 @@ def as_pixels_uint8(image: np.ndarray) -> np.ndarray:
     >>> as_pixels_uint8(np.array([[0.5, 1.0]])).tolist()
     [[[127, 127, 127], [255, 255, 255]]]
     """
-    image = _as_finite_image(image)
+    return _pixels_uint8(_as_finite_image(image))
+
+
+def _pixels_uint8(image: np.ndarray) -> np.ndarray:
     pixels = (np.clip(image, 0.0, 1.0) * 255).astype(np.uint8)
     return np.repeat(pixels[..., None], 3, axis=2) if pixels.ndim == 2 else pixels
 
@@ -304,9 +322,14 @@ def half_size(image: np.ndarray) -> np.ndarray:
                 image_shape=image.shape
             )
         )
+    return _half_size(image)
+
+
+def _half_size(image: np.ndarray) -> np.ndarray:
     height, width = (side // 2 * 2 for side in image.shape[:2])
-    blocks = image[:height, :width].reshape(height // 2, 2, width // 2, 2, *image.shape[2:])
-    return blocks.mean(axis=(1, 3))
+    # Four strided sums, not a mean over a reshape's axes 1 and 3: a tenth of the time.
+    top, bottom = image[0:height:2, :width], image[1:height:2, :width]
+    return (top[:, 0::2] + top[:, 1::2] + bottom[:, 0::2] + bottom[:, 1::2]) * 0.25
 
 
 def _as_finite_image(image: Any) -> np.ndarray:

@@ -3,9 +3,11 @@
 In JupyterLab, in Debian's Chromium (``make bench-browser``), for the apps of
 lessons 01, 03, 05 and 08: the time from a mouse move during a drag (and,
 separately, from a key press on a slider) to the moment the app's picture
-changes in the page, seen by a MutationObserver on the image's ``src``. Each
-step waits for its picture before the next, so a step's time is one round
-trip: the browser, the kernel's drawing, the transport back.
+changes in the page, seen by a MutationObserver on the image's ``src`` (a
+whole picture, not yet decoded) and ``data-drawn`` (a drag's step, drawn on
+the canvas laid over the image). Each step waits for its picture before the
+next, so a step's time is one round trip: the browser, the kernel's drawing,
+the transport back.
 
 The floor is an echo app measured in the same run: the same picture widget,
 the same size and format, whose kernel side answers each message with one of
@@ -53,6 +55,7 @@ from tests_browser.student import (  # noqa: E402
     DIFFERING_SHARE,
     differing_share,
     nth_app,
+    picture_state,
     read_picture,
     rgb,
     slider,
@@ -117,7 +120,7 @@ WATCH = """image => {
     image.addEventListener('pointermove', started, {capture: true});
     document.addEventListener('keydown', started, {capture: true});
     new MutationObserver(() => window.__steps.changes.push(performance.now()))
-        .observe(image, {attributes: true, attributeFilter: ['src']});
+        .observe(image, {attributes: true, attributeFilter: ['src', 'data-drawn']});
 }"""
 
 
@@ -224,7 +227,7 @@ def burst(page, index: int, library, handle: str, scale: np.ndarray) -> float:
     box = image.bounding_box()
     origin = np.array([box["x"], box["y"]])
     path = [inward(library, handle) * (k * 1.5, k * 1.0) for k in range(1, STEPS + 1)]
-    before = image.get_attribute("src")
+    before = picture_state(image)
     page.mouse.move(*(origin + start * scale))
     page.mouse.down()
     for offset in path:

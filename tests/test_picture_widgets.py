@@ -315,8 +315,7 @@ const text = (part) =>
   new TextDecoder().decode(part instanceof DataView ? part : new Uint8Array(part));
 globalThis.Blob = class {
   constructor(parts, options) {
-    // A composed picture (a BMP: its header, then its pixels) shows as its pixels' text.
-    this.text = (options.type === "image/bmp" ? parts.slice(1) : parts).map(text).join("");
+    this.text = parts.map(text).join("");
     this.type = options.type;
   }
 };
@@ -331,16 +330,17 @@ globalThis.createImageBitmap = (blob) =>
   turns(blob.text.startsWith("P") ? 5 : 0).then(() => ({ width: 5, height: 4, text: blob.text }));
 const warnings = [];
 console.warn = (...parts) => warnings.push(parts.join(" "));
-const image = { addEventListener() {}, style: {} };
+const image = { addEventListener() {}, style: {}, dataset: {}, decode: () => turns(2) };
+let overlay = null;  // the canvas laid over the image, drawn on
 globalThis.document = {
   createElement(tag) {
     if (tag === "img") return image;
-    const canvas = { getContext: () => context, width: 5, height: 4 };
+    const canvas = { getContext: () => context, width: 5, height: 4, style: {} };
+    overlay = canvas;
     const context = {
       canvas,
       drawImage: (bitmap, x, y) => painted.push(`${bitmap.text}@${x},${y}`),
       clearRect: () => {},
-      getImageData: () => ({ data: new TextEncoder().encode("canvas:" + painted.join(" ")) }),
     };
     return canvas;
   },
@@ -360,22 +360,24 @@ const bytes = (s) => new DataView(new TextEncoder().encode(s).buffer);
 const patch = (name, x, y) =>
   handlers["msg:custom"]({ kind: "patch", rectangles: [[x, y, 2, 1]] }, [bytes(name)]);
 const { default: widget } = await import(process.argv[2]);
-widget.render({ model, el: { appendChild() {} } });
-const seen = [image.src];
+widget.render({ model, el: { appendChild() {}, style: {} } });
+// What the page shows: the canvas while it is shown over the image, else the image.
+const shown = () => (overlay.style.display === "block" ? "canvas:" + painted.join(" ") : image.src);
+const seen = [shown()];
 patch("P1", 1, 1);
 patch("P2", 3, 2);
 await settle();
-seen.push(image.src);
+seen.push(shown());
 patch("P3", 0, 0);  // being decoded when the whole picture comes back: dropped
 await turns(1);
 state.value = new TextEncoder().encode("V1");
 handlers["change:value"]();
-seen.push(image.src);
+seen.push(shown());
 await settle();
-seen.push(image.src);
+seen.push(shown());
 patch("P4", 2, 2);  // a patch for the new picture starts from it
 await settle();
-seen.push(image.src);
+seen.push(shown());
 console.log(JSON.stringify({ seen, warnings }));
 """
 
@@ -403,7 +405,7 @@ def test_picture_js_paints_patches_in_order_and_a_new_picture_drops_the_stale_on
     assert printed["seen"] == [
         "V0",
         "canvas:V0@0,0 P1@1,1 P2@3,2",
-        "V1",
+        "canvas:V0@0,0 P1@1,1 P2@3,2",  # until the image has decoded V1: no flash of V0
         "V1",
         "canvas:V0@0,0 P1@1,1 P2@3,2 V1@0,0 P4@2,2",
     ]
@@ -418,6 +420,7 @@ const image = {
   naturalWidth: 5,
   naturalHeight: 4,
   style: {},
+  decode: async () => {},
 };
 globalThis.document = { createElement: () => image };
 globalThis.Blob = class {};
@@ -431,7 +434,7 @@ const model = {
   send: (message) => sent.push(`${message.kind}@${message.x}`),
 };
 const { default: widget } = await import(process.argv[2]);
-widget.render({ model, el: { appendChild() {} } });
+widget.render({ model, el: { appendChild() {}, style: {} } });
 const at = (x) => ({ button: 0, clientX: x, clientY: 1, pointerId: 1, preventDefault() {} });
 const steps = [];
 const step = (name, act) => { act(); steps.push(`${name}: ${sent.splice(0).join(" ")}`); };
@@ -577,8 +580,10 @@ def mounted_on_canvas(width: int, height: int) -> str:
     """JavaScript mounting picture.js on the harness's ``image`` and canvas ``context`` stubs,
     ``width`` x ``height``: the drawing harnesses' common start (``handlers`` receive messages)."""
     return f"""
+const made = [];  // the canvases picture.js makes
 globalThis.document = {{
-  createElement: (tag) => (tag === "img" ? image : {{ getContext: () => context }}),
+  createElement: (tag) =>
+    tag === "img" ? image : made[made.push({{ getContext: () => context, style: {{}} }}) - 1],
 }};
 const handlers = {{}};
 const state = {{
@@ -589,12 +594,12 @@ const model = {{
   on: (event, handler) => {{ handlers[event] = handler; }},
 }};
 const {{ default: widget }} = await import(process.argv[2]);
-widget.render({{ model, el: {{ appendChild() {{}} }} }});
+widget.render({{ model, el: {{ appendChild() {{}}, style: {{}} }} }});
 """
 
 
-DRAWING_HARNESS = (
-    r"""
+# picture.js mounted on a context that records every call and setting as text.
+RECORDING_CONTEXT = r"""
 const calls = [];
 const text = (part) =>
   new TextDecoder().decode(part instanceof DataView ? part : new Uint8Array(part));
@@ -611,14 +616,13 @@ globalThis.createImageBitmap = (blob) =>
   turns(3).then(() => ({ width: 5, height: 4, text: blob.text }));
 const warnings = [];
 console.warn = (...parts) => warnings.push(parts.join(" "));
-const image = { addEventListener() {}, style: {} };
+const image = { addEventListener() {}, style: {}, dataset: {}, decode: async () => {} };
 const pixelsOf = (width, height) => new Uint8ClampedArray(4 * width * height);
 const context = new Proxy(
   {},
   {
     get(target, name) {
       if (name === "canvas") return { width: 5, height: 4 };
-      if (name === "getImageData") return () => ({ data: new Uint8Array(5 * 4 * 4) });
       if (name === "createImageData")
         return (width, height) => ({ width, height, data: pixelsOf(width, height) });
       if (name === "putImageData")
@@ -632,8 +636,10 @@ const context = new Proxy(
     },
   },
 );
-"""
-    + mounted_on_canvas(5, 4)
+""" + mounted_on_canvas(5, 4)
+
+DRAWING_HARNESS = (
+    RECORDING_CONTEXT
     + r"""
 // A DataView that starts at an odd byte, as a buffer cut from a message may.
 const view = (typed) => {
@@ -723,53 +729,98 @@ def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
     ]
 
 
-BITMAP_HARNESS = (
-    r"""
-// A drawing's composed canvas as picture.js shows it: the bytes of the file it makes.
-const pixels = new Uint8Array(3 * 2 * 4).map((_, i) => (i * 37) % 256);
-const bytes = (part) =>
-  part instanceof DataView
-    ? new Uint8Array(part.buffer, part.byteOffset, part.byteLength)
-    : new Uint8Array(part);
-globalThis.Blob = class {
-  constructor(parts, options) {
-    this.parts = parts.map(bytes);
-    this.type = options.type;
-  }
-};
-const shown = [];
-globalThis.URL = {
-  createObjectURL: (blob) => {
-    shown.push({ type: blob.type, bytes: blob.parts.flatMap((part) => Array.from(part)) });
-    return "url";
-  },
-  revokeObjectURL: () => {},
-};
-globalThis.createImageBitmap = async () => ({ width: 3, height: 2 });
-const context = {
-  canvas: { width: 3, height: 2 },
-  drawImage() {},
-  getImageData: () => ({ data: pixels }),
-};
-const image = { addEventListener() {}, style: {} };
-"""
-    + mounted_on_canvas(3, 2)
+STAMP_HARNESS = (
+    RECORDING_CONTEXT
     + r"""
-const empty = new DataView(new TextEncoder().encode("[]").buffer);
-const none = new DataView(new ArrayBuffer(0));
-handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [none, none, empty, none, none]);
-await new Promise((resolve) => setTimeout(resolve, 50));
-console.log(JSON.stringify({ shown: shown.slice(1), pixels: Array.from(pixels) }));
+// Eight squares, 1 px wide, filled, at whole pixels from (10, 20): stamped.
+const square = [-1, -1, 1, -1, 1, 1, -1, 1, 0, 0];
+const places = Array.from({ length: 16 }, (_, i) => (i % 2 ? 20 : 10 + 3 * (i >> 1)));
+const vertices = new Float32Array([...square, ...places]);
+const codes = new Uint8Array([1, 2, 2, 2, 79, ...Array(8).fill(1)]);
+const commands = [
+  { marker: [0, 5], at: [5, 8], stroke: [0, 0, 0, 1], fill: [1, 0, 0, 1], width: 1, dash: null,
+    cap: "butt", join: "miter", clip: null },
+];
+const listed = new TextEncoder().encode(JSON.stringify(commands));
+const empty = new DataView(new ArrayBuffer(0));
+handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [
+  new TextEncoder().encode("BACK"), empty, listed, vertices.buffer, codes.buffer,
+]);
+await turns(50);
+console.log(JSON.stringify({ calls, made: made.map((canvas) => [canvas.width, canvas.height]) }));
 """
 )
 
 
 @pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
-def test_picture_js_shows_a_drawing_as_a_bitmap_file_of_the_canvas_s_own_pixels(tmp_path):
-    printed = picture_js_in_node(tmp_path, BITMAP_HARNESS)
-    ((file,),) = [printed["shown"]]
-    assert file["type"] == "image/bmp"
-    decoded_file = Image.open(io.BytesIO(bytes(file["bytes"])))
-    expected = np.array(printed["pixels"], dtype=np.uint8).reshape(2, 3, 4)
-    assert decoded_file.size == (3, 2)
-    np.testing.assert_array_equal(np.asarray(decoded_file.convert("RGBA")), expected)
+def test_picture_js_draws_many_markers_once_and_copies_them_to_their_whole_pixels(tmp_path):
+    printed = picture_js_in_node(tmp_path, STAMP_HARNESS)
+    calls = printed["calls"]
+    # The square reaches 1 px and its stroke 5 widths more (a miter), 2 more for
+    # antialiasing: its canvas is 16 x 16 from (-8, -8), the square traced in it once.
+    assert printed["made"][-1] == [16, 16]
+    assert calls.count("moveTo(7,7)") == 1 and calls.count("fill()") == 1
+    copies = [call for call in calls if call.startswith("drawImage([object Object]")]
+    assert copies == [f"drawImage([object Object],{10 + 3 * i - 8},12)" for i in range(8)]
+
+
+OVERLAY_HARNESS = (
+    r"""
+// A drawing is shown on the canvas laid over the image, where the image is; a new whole
+// picture hides it once the image shows that picture, not before.
+globalThis.Blob = class {};
+globalThis.URL = { createObjectURL: () => "url", revokeObjectURL: () => {} };
+globalThis.createImageBitmap = async () => ({ width: 3, height: 2 });
+const context = { canvas: { width: 3, height: 2 }, drawImage() {} };
+let decoded = () => {};  // resolves the image's newest decode
+const image = {
+  addEventListener() {},
+  style: {},
+  dataset: {},
+  offsetLeft: 7,
+  offsetTop: 9,
+  offsetWidth: 30,
+  offsetHeight: 20,
+  decode: () => new Promise((resolve) => { decoded = resolve; }),
+};
+"""
+    + mounted_on_canvas(3, 2)
+    + r"""
+const [overlay] = made;
+const before = overlay.style.display;
+const empty = new DataView(new TextEncoder().encode("[]").buffer);
+const none = new DataView(new ArrayBuffer(0));
+handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [none, none, empty, none, none]);
+await new Promise((resolve) => setTimeout(resolve, 50));
+const during = {
+  ...overlay.style, size: [overlay.width, overlay.height], drawn: image.dataset.drawn,
+};
+state.value = new TextEncoder().encode("V1");
+handlers["change:value"]();
+await new Promise((resolve) => setTimeout(resolve, 20));
+const decoding = overlay.style.display;
+decoded();
+await new Promise((resolve) => setTimeout(resolve, 20));
+console.log(JSON.stringify({ before, during, decoding, after: overlay.style.display }));
+"""
+)
+
+
+@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
+def test_picture_js_shows_a_drawing_on_a_canvas_over_the_image_until_a_new_picture_shows(
+    tmp_path,
+):
+    printed = picture_js_in_node(tmp_path, OVERLAY_HARNESS)
+    assert printed["before"] == "none"
+    assert printed["during"] == {
+        "position": "absolute",
+        "pointerEvents": "none",
+        "display": "block",
+        "left": "7px",
+        "top": "9px",
+        "width": "30px",
+        "height": "20px",
+        "size": [3, 2],
+        "drawn": "1",
+    }
+    assert printed["decoding"] == "block" and printed["after"] == "none"

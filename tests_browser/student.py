@@ -32,9 +32,14 @@ from course.classroom.sliders import (
 
 SLIDER_APP_MIME = "application/vnd.jupyter.widget-view+json"
 
+# A drag's steps are drawn on a canvas laid over the image (picture.js), shown until the
+# image shows a newer whole picture: the page shows that canvas while it is displayed.
 _READ_IMAGE = """async image => {
-    const response = await fetch(image.src);
-    const bytes = new Uint8Array(await response.arrayBuffer());
+    const drawn = image.parentElement.querySelector("canvas.course-picture-drawn");
+    const blob = drawn && drawn.style.display === "block"
+        ? await new Promise(resolve => drawn.toBlob(resolve, "image/png"))
+        : await (await fetch(image.src)).blob();
+    const bytes = new Uint8Array(await blob.arrayBuffer());
     let text = "";
     for (let i = 0; i < bytes.length; i += 0x8000) {
         text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
@@ -64,9 +69,19 @@ def rgb(png: bytes) -> np.ndarray:
     return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(int)
 
 
+#: What an image widget shows, as a string that changes when it does: its picture's URL
+#: and the count of drag steps drawn over it.
+PICTURE_STATE = "image => `${image.src}#${image.dataset.drawn ?? 0}`"
+
+
 def read_picture(image: Locator) -> np.ndarray:
-    """The PNG an image widget shows, fetched from its blob URL, as RGB."""
+    """The picture an image widget shows (its own, or the drag's canvas over it), as RGB."""
     return rgb(base64.b64decode(image.evaluate(_READ_IMAGE)))
+
+
+def picture_state(image: Locator) -> str:
+    """A string that changes when what ``image`` shows changes (:data:`PICTURE_STATE`)."""
+    return image.evaluate(PICTURE_STATE)
 
 
 def error_outputs(page: Page) -> list[str]:
@@ -100,21 +115,22 @@ def wait_for_pictures(page: Page, count: int, timeout: float = 60) -> None:
     )
 
 
-def wait_for_new_picture(image: Locator, old_src: str, settle: float = 0.8) -> None:
-    """Until the image's src changed and then stayed the same for ``settle`` seconds.
+def wait_for_new_picture(image: Locator, old_state: str, settle: float = 0.8) -> None:
+    """Until what the image shows changed from ``old_state`` and then stayed for ``settle`` s.
 
     Every key press sends a value; the kernel answers each with a picture, so
     the last picture is the one that stops changing.
     """
     image.page.wait_for_function(
-        "([image, old]) => image.src !== old && image.complete && image.naturalWidth > 0",
-        arg=[image.element_handle(), old_src],
+        f"([image, old]) => ({PICTURE_STATE})(image) !== old"
+        " && image.complete && image.naturalWidth > 0",
+        arg=[image.element_handle(), old_state],
     )
-    src, since = image.get_attribute("src"), time.monotonic()
+    src, since = picture_state(image), time.monotonic()
     deadline = since + 60
     while time.monotonic() < deadline:
         time.sleep(0.1)
-        now = image.get_attribute("src")
+        now = picture_state(image)
         if now != src:
             src, since = now, time.monotonic()
         elif time.monotonic() - since >= settle:
@@ -124,13 +140,13 @@ def wait_for_new_picture(image: Locator, old_src: str, settle: float = 0.8) -> N
 
 def wait_for_picture_like(image: Locator, expected: np.ndarray, patience: float = 30) -> np.ndarray:
     """The picture once it is ``expected``'s, or once it stayed the same for ``patience`` s."""
-    shown, src = read_picture(image), image.get_attribute("src")
+    shown, src = read_picture(image), picture_state(image)
     since = time.monotonic()
     while differing_share(shown, expected) > DIFFERING_SHARE:
         if time.monotonic() - since > patience:
             break
         time.sleep(0.2)
-        now = image.get_attribute("src")
+        now = picture_state(image)
         if now != src:
             image.page.wait_for_function(
                 "image => image.complete && image.naturalWidth > 0", arg=image.element_handle()
@@ -219,7 +235,7 @@ def press_on_slider(app: Locator, control, keys: tuple[str, ...], start) -> Move
     element = slider(app, control.description)
     handle = element.locator(".noUi-handle").first
     handle.scroll_into_view_if_needed()
-    before_src = image.get_attribute("src")
+    before_src = picture_state(image)
     before = read_picture(image)
     handle.focus()
     for key in keys:
@@ -353,7 +369,7 @@ def drag_like_a_student(
         return float(x), float(y)
 
     built.pointer("down", *start)
-    before_src = image.get_attribute("src")
+    before_src = picture_state(image)
     page.mouse.move(*on_page(start))
     page.mouse.down()
     for offset in spec.path:
@@ -361,7 +377,7 @@ def drag_like_a_student(
     # Held still before the release: the page shows the last step as the browser drew
     # it from the kernel's drawing commands (or patched, for pixel panels).
     wait_for_new_picture(image, before_src)
-    during, during_src = read_picture(image), image.get_attribute("src")
+    during, during_src = read_picture(image), picture_state(image)
     app.screenshot(path=folder / f"{stem}-dragging-{spec.handle}.png")
     page.mouse.up()
     wait_for_new_picture(image, during_src)

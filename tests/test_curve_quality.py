@@ -2,20 +2,27 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from course.antialias import RENDER_METHODS, SPLATS, render
+from course.antialias._reference import _beyond_reach
 from course.antialias.coverage import reference
 from course.antialias.curve_quality import (
     AGG,
     ARC_LENGTH,
+    REFERENCE,
     centroid_offsets,
     intensity_along,
     position_error,
     quality_table,
+    render_window,
     uniformity,
     variants,
 )
+from course.antialias.near_pixels import segment_distance
 from course.images import SEED_000_CUBIC
+from course.raster.canvas import crop
 
 SEED_CURVE = SEED_000_CUBIC / 5
 SHAPE = (140, 140)
@@ -106,3 +113,41 @@ def test_variants_refuses_a_degree_agg_cannot_draw_before_rendering_anything(mon
     with pytest.raises(ValueError, match="degree 1 to 3"):
         curve_quality.variants(curve, (10, 32))
     assert drawn == [curve_quality.AGG]
+
+
+coordinates = st.floats(0, 120, allow_nan=False)
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    points=st.lists(st.tuples(coordinates, coordinates), min_size=2, max_size=4),
+    centre=st.tuples(coordinates, coordinates),
+    width=st.sampled_from([0.5, 1.0, 3.0]),
+)
+def test_a_window_of_the_reference_is_the_crop_of_the_whole_reference(points, centre, width):
+    # The window looks only at the segments that pass within reach of it: the same
+    # numbers as the whole canvas's reference, cropped.
+    window, _extent = render_window(REFERENCE, points, (120, 120), centre, 12, width, k=4)
+    whole = reference(points, (120, 120), width, k=4)
+    np.testing.assert_array_equal(window, crop(whole, centre, 12)[0])
+
+
+@settings(max_examples=50, deadline=None)
+@given(
+    line=st.lists(
+        st.tuples(st.floats(-20, 40, allow_nan=False), st.floats(-20, 40, allow_nan=False)),
+        min_size=2,
+        max_size=12,
+    ),
+    reach=st.floats(0.8, 3.0),
+)
+def test_the_reference_skips_only_segments_no_pixel_centre_is_within_reach_of(line, reach):
+    line = np.array(line)
+    skipped = _beyond_reach(line, None, (12, 20), reach)
+    rows, columns = np.mgrid[0:12, 0:20]
+    centres_x, centres_y = columns.ravel() + 0.5, rows.ravel() + 0.5
+    for index in np.flatnonzero(skipped):
+        distance, _along, _across = segment_distance(
+            centres_x, centres_y, line[index], line[index + 1]
+        )
+        assert distance.min() > reach

@@ -62,7 +62,9 @@ def reference_coverage(path: Curves, canvas: tuple[int, int], width: float, k: i
     height, canvas_width = canvas
     half = 0.5 * width
     line, gaps = path_polyline(path, REFERENCE_TOLERANCE, tolerance_checked=True)
-    near = pixels_near(line, (height, canvas_width), half + HALF_DIAGONAL, gaps=gaps)
+    reach = half + HALF_DIAGONAL
+    gaps = _beyond_reach(line, gaps, (height, canvas_width), reach)
+    near = pixels_near(line, (height, canvas_width), reach, gaps=gaps)
     image = np.zeros(height * canvas_width)
     if len(near.flat) == 0:
         return image.reshape(height, canvas_width)
@@ -73,6 +75,27 @@ def reference_coverage(path: Curves, canvas: tuple[int, int], width: float, k: i
     firsts, coverage = _supersample(near, ~inside[near.flat], half, k)
     image[near.flat[firsts]] = coverage
     return image.reshape(height, canvas_width)
+
+
+def _beyond_reach(
+    line: np.ndarray, gaps: np.ndarray | None, canvas: tuple[int, int], reach: float
+) -> np.ndarray:
+    """``gaps``, and the segments too far from the canvas for any of its pixels to be near.
+
+    Skipped alike by :func:`pixels_near`: a window of a long curve
+    (:func:`~course.antialias.curve_quality.render_window`) looks only at the
+    few segments that pass by it. The coverage does not change: it takes the
+    nearest distance and the union of the samples over a pixel's segments.
+    """
+    height, width = canvas
+    low, high = np.minimum(line[:-1], line[1:]), np.maximum(line[:-1], line[1:])
+    far = (
+        (high[:, 0] < -reach)
+        | (low[:, 0] > width + reach)
+        | (high[:, 1] < -reach)
+        | (low[:, 1] > height + reach)
+    )
+    return far if gaps is None else gaps | far
 
 
 @lru_cache(maxsize=8)

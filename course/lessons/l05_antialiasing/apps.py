@@ -248,10 +248,10 @@ class ZoomApp(SliderApp):
             )
             zoom.curve.set_data(near[:, 0], near[:, 1])
             note = _("RMSE here {error:.3f}").format(error=rmse(window, truth))
-            self.windows.append(zoom.show_window(window, extent, label_of(name), note))
+            self.windows.append(zoom.show_checked(window, extent, label_of(name), note))
         self.panels[3].curve.set_data(near[:, 0], near[:, 1])
         note = _("{k} x {k} samples a pixel").format(k=k)
-        self.windows.append(self.panels[3].show_window(truth, extent, label_of(REFERENCE), note))
+        self.windows.append(self.panels[3].show_checked(truth, extent, label_of(REFERENCE), note))
         if [panel.title.get_text() for panel in self.panels] != self._titles:
             self._titles = [panel.title.get_text() for panel in self.panels]
             self.view.invalidate()  # the titles are part of the still background

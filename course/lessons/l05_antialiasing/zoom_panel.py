@@ -93,8 +93,13 @@ class ZoomPanel:
             np.zeros((2, 2)), cmap="gray", vmin=0.0, vmax=1.0, interpolation="nearest"
         )
         self.picture.set_visible(app is None)
-        self.grid = LineCollection([], colors="#3a6ea5", linewidths=0.5, alpha=0.6)
+        # In the axes' coordinates: a window of the same size has the same grid wherever
+        # it is, so a drag does not change it (it is replayed, not laid out again).
+        self.grid = LineCollection(
+            [], colors="#3a6ea5", linewidths=0.5, alpha=0.6, transform=axes.transAxes
+        )
         axes.add_collection(self.grid)
+        self._grid_size: tuple[int, int] | None = None
         (self.curve,) = axes.plot(curve[:, 0], curve[:, 1], color="#e8502f", linewidth=1.0)
         self.title = axes.set_title("", fontsize=9, pad=16 if app else 6)
         self.note = axes.text(
@@ -149,6 +154,13 @@ class ZoomPanel:
                     height=y1 - y0,
                 )
             )
+        return self.show_checked(window, (x0, x1, y1, y0), title, note)
+
+    def show_checked(
+        self, window: np.ndarray, extent: tuple[int, int, int, int], title: str, note: str
+    ) -> np.ndarray:
+        """:meth:`show_window` of a window and an extent the calling app checked."""
+        x0, x1, y1, y0 = extent
         if self.app is None:
             self.picture.set_data(window)
             self.picture.set_extent(extent)
@@ -156,9 +168,12 @@ class ZoomPanel:
             zoom = round(self.axes.get_window_extent().width) // window.shape[1]
             gray = (np.clip(window, 0.0, 1.0) * 255).astype(np.uint8)  # as imshow maps gray
             self.app.pixel_images[self.axes] = ZoomedPixels(np.repeat(gray[..., None], 3, 2), zoom)
-        columns = [[(x, y0), (x, y1)] for x in range(x0, x1 + 1)]
-        rows = [[(x0, y), (x1, y)] for y in range(y0, y1 + 1)]
-        self.grid.set_segments(columns + rows)
+        size = (x1 - x0, y1 - y0)
+        if size != self._grid_size:
+            self._grid_size = size
+            columns = [[(i / size[0], 1.0), (i / size[0], 0.0)] for i in range(size[0] + 1)]
+            rows = [[(0.0, 1 - j / size[1]), (1.0, 1 - j / size[1])] for j in range(size[1] + 1)]
+            self.grid.set_segments(columns + rows)
         self.axes.set_xlim(x0, x1)
         self.axes.set_ylim(y1, y0)  # y down, as in the image
         self.title.set_text(title)

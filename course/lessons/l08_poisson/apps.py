@@ -27,7 +27,8 @@ from course._validate import (
     require_finite,
 )
 from course.i18n import N_, _
-from course.poisson.problem import build_clone_problem
+from course.poisson._build import clone_problem_of
+from course.poisson.problem import PoissonProblem
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import ZoomedPixels, rounding_level
 
@@ -236,8 +237,11 @@ class CloneApp(SliderApp):
 
     def update(self) -> None:
         x, y = self.read_offset()
-        # The inputs were checked once, in __init__: build and solve directly.
-        problem = build_clone_problem(self.background, self.foreground, (x, y), None, "plain")
+        # The inputs were checked once, in __init__ (the offset as it was read): the
+        # unchecked build, where build_clone_problem would check the whole lake again.
+        problem = clone_problem_of(
+            PoissonProblem, self.background, self.foreground, (int(x), int(y)), None, "plain"
+        )
         solution = np.clip(poisson.solve(problem), 0.0, 1.0)
         # Both change the region: the foreground inside its outer ring of pixels
         # (course.poisson.naive_paste and seamless_clone).

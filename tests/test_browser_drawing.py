@@ -15,10 +15,12 @@ import math
 
 import numpy as np
 import pytest
+from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from matplotlib.font_manager import FontProperties
+from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 from matplotlib.path import Path as MatplotlibPath
 from matplotlib.transforms import Affine2D, Bbox, IdentityTransform
@@ -216,6 +218,41 @@ def test_lesson_08_s_drag_sends_only_the_windows_the_foreground_covers_over_the_
             np.testing.assert_array_equal(drawn[window], expected[window])
         difference = np.abs(drawn.astype(int) - expected.astype(int))
         assert difference.max() <= 19  # the backdrop's JPEG (FigureView.JPEG_QUALITY)
+
+
+def limits_scene() -> tuple[FigureView, Axes, Line2D, LineCollection]:
+    """A view with a moving line in data coordinates and a grid line in the axes' own."""
+    view = FigureView(shape=(60, 90))
+    axes = view.figure.add_axes((0.1, 0.1, 0.8, 0.8), xlim=(0, 10), ylim=(0, 10))
+    axes.set_axis_off()  # no ticks: new limits leave the background as it was
+    (line,) = axes.plot([1, 5, 9], [2, 8, 3], "o-", animated=True)
+    grid = axes.add_collection(
+        LineCollection([[(0.5, 0), (0.5, 1)]], transform=axes.transAxes, animated=True)
+    )
+    return view, axes, line, grid
+
+
+def test_new_limits_during_a_drag_move_the_lines_drawn_through_them_not_the_grid():
+    # A replay keeps its recording's transform: an app that moves its view at a step
+    # (lesson 05's panels follow their window) must not get the line where it was.
+    view, axes, line, grid = limits_scene()
+    view.render_moving([line, grid])
+    sent = Sent(view)
+    view.render_moving([line, grid], patches=True)
+    ((_, buffers),) = sent.messages
+    backdrop = decoded(buffers[0])
+    for low in (1, 3):
+        axes.set_xlim(low, low + 10)
+        line.set_data([1, 5, 9 + low], [2, 8, 3])
+        view.render_moving([line, grid], patches=True)
+        content, buffers = sent.messages[-1]
+        assert view._command_replays.get(grid) is not None  # in the axes' box: kept
+        # The same step drawn by Agg, in a view of its own (a whole draw drops replays).
+        agg, agg_axes, agg_line, agg_grid = limits_scene()
+        agg_axes.set_xlim(low, low + 10)
+        agg_line.set_data([1, 5, 9 + low], [2, 8, 3])
+        agg.render_moving([agg_line, agg_grid])
+        assert_close(played(content, buffers, backdrop, view.figure.dpi), agg.pixels())
 
 
 def test_dashes_markers_fills_clips_and_turned_text_are_drawn_as_agg_draws_them():

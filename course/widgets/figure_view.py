@@ -83,6 +83,7 @@ class FigureView:
         self._recorder: CommandRecorder | None = None
         self._drawn: list[bytes] | None = None  # the drawing's buffers the browser shows
         self._command_replays: dict[Artist, Any] = {}  # LinePaint, TextReplay, StillReplay
+        self._watched: set[Axes] = set()  # axes whose limits drop the replays through them
         #: Pictures that stay while images move over them, by axes, (h, w, 3) uint8 the axes'
         #: size: written into the background (:meth:`paste`), so that a moving image may
         #: be only the window of them that changes. Set before the first render, or
@@ -152,6 +153,7 @@ class FigureView:
             if replay is not None and replay.draw(renderer):
                 continue
             if patches and isinstance(artist, Line2D):
+                self._watch_limits(artist.axes)
                 self._replays[artist] = LineReplay.record(artist, renderer)
             else:
                 self.figure.draw_artist(artist)
@@ -224,6 +226,22 @@ class FigureView:
         self._holding = False
         self._held = []
         self._start_over(self._still)
+
+    def _watch_limits(self, axes: Axes | None) -> None:
+        """Have a change of ``axes``' limits drop the replays drawn through its data."""
+        if axes is not None and axes not in self._watched:
+            self._watched.add(axes)
+            axes.callbacks.connect("xlim_changed", self._limits_changed)
+            axes.callbacks.connect("ylim_changed", self._limits_changed)
+
+    def _limits_changed(self, axes: Axes) -> None:
+        # A replay keeps the transform of its recording: where new limits move an artist
+        # (lesson 05's zoom panels follow their window at every step of a drag), it is
+        # recorded anew. What the axes place in their own box (a grid, a title) stays.
+        for replays in (self._replays, self._command_replays):
+            for artist in [artist for artist in replays if artist.axes is axes]:
+                if artist.get_transform().contains_branch(axes.transData):
+                    del replays[artist]
 
     def _start_over(self, background: Any) -> None:
         self._background = background
@@ -358,6 +376,7 @@ class FigureView:
                     continue
                 if empty_line(artist):
                     continue
+                self._watch_limits(artist.axes)
                 if isinstance(artist, Line2D):  # matplotlib's calls, replayed at later steps
                     replays[artist] = LineReplay.record(artist, recorder)
                 elif isinstance(artist, Text):  # its commands, moved with it at later steps

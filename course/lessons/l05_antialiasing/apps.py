@@ -162,9 +162,16 @@ class ZoomApp(SliderApp):
         (self.polygon,) = overview.plot([], [], "o--", color="0.4", markersize=6, linewidth=0.8)
         self.window_box = Rectangle((0, 0), 0, 0, fill=False, edgecolor="#3a6ea5", linewidth=1.5)
         overview.add_patch(self.window_box)
+        # Never hidden by their point (kept on the canvas anyway): a drag then moves a
+        # label's recorded text with its point (TextReplay), not laid out anew.
         self.labels = [
             overview.annotate(
-                f"P{i}", (0, 0), xytext=(4, 4), textcoords="offset points", fontsize=8
+                f"P{i}",
+                (0, 0),
+                xytext=(4, 4),
+                textcoords="offset points",
+                fontsize=8,
+                annotation_clip=False,
             )
             for i in range(len(self.points))
         ]
@@ -257,7 +264,12 @@ class ZoomApp(SliderApp):
             self.view.invalidate()  # the titles are part of the still background
 
     def _near(self, extent: tuple[int, int, int, int]) -> np.ndarray:
-        """The part of the curve's polyline around the window (drawing all of it is slow)."""
+        """The part of the curve's polyline around the window (drawing all of it is slow).
+
+        Its pieces, a NaN row between two: a few dozen vertices, which a drag's
+        step sends as they are (the whole polyline, NaN but near the window,
+        was cut down by matplotlib at every step).
+        """
         left, right, bottom, top = extent
         line = self.walk.polyline
         inside = (
@@ -266,8 +278,9 @@ class ZoomApp(SliderApp):
             & (line[:, 1] >= top - 2)
             & (line[:, 1] <= bottom + 2)
         )
-        keep = inside | np.roll(inside, 1) | np.roll(inside, -1)  # a segment's far end too
-        return np.where(keep[:, None], line, np.nan)
+        keep = np.flatnonzero(inside | np.roll(inside, 1) | np.roll(inside, -1))  # far ends too
+        breaks = np.flatnonzero(np.diff(keep) > 1) + 1
+        return np.insert(line[keep], breaks, np.nan, axis=0)
 
     def handles(self) -> list[Handle]:
         return [Handle(f"P{i}", self.overview, tuple(p)) for i, p in enumerate(self.points)]

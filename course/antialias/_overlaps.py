@@ -46,17 +46,19 @@ def overlapping(segments: Segments, half: float) -> np.ndarray:
                 "that runs over itself this often is better drawn in pieces"
             ).format(first_count=len(first), most=limits.MAX_OVERLAP_PAIRS)
         )
+    # Neighbours meet at a join the outline draws; along one subpath, a path
+    # turning less than TURNING_LIMIT cannot come back. Both tests read only
+    # the path's structure, and they leave few pairs of the many.
+    keep = (s.next[first] != second) & (s.next[second] != first)
+    first, second = first[keep], second[keep]
+    keep = _turning_between(s, first, second) >= TURNING_LIMIT
+    first, second = first[keep], second[keep]
     # Segments whose middles lie farther apart than their half lengths and
-    # the reach cannot be that close: a cheap test first, which leaves few.
+    # the reach cannot be that close: a cheap test before the exact one.
     middle = 0.5 * (s.start + s.end)
     apart = middle.take(first, 0) - middle.take(second, 0)
-    apart = np.hypot(apart[:, 0], apart[:, 1])
-    keep = apart - 0.5 * (s.length[first] + s.length[second]) <= 2 * half * (1 + 1e-9)
-    # Neighbours meet at a join the outline draws.
-    keep &= (s.next[first] != second) & (s.next[second] != first)
-    first, second = first[keep], second[keep]
-    # Along one subpath, a path turning less than TURNING_LIMIT cannot come back.
-    keep = _turning_between(s, first, second) >= TURNING_LIMIT
+    within = 2 * half * (1 + 1e-9) + 0.5 * (s.length[first] + s.length[second])
+    keep = apart[:, 0] * apart[:, 0] + apart[:, 1] * apart[:, 1] <= within * within
     first, second = first[keep], second[keep]
     start, end = s.start.take(first, 0), s.end.take(first, 0)
     close = _segment_gap(start, end, s.start.take(second, 0), s.end.take(second, 0))

@@ -31,18 +31,29 @@ _DENSE = 16
 
 
 def accumulate(
-    starts: np.ndarray, ends: np.ndarray, shape: tuple[int, int], clip: bool = False
+    starts: np.ndarray,
+    ends: np.ndarray,
+    shape: tuple[int, int],
+    clip: bool = False,
+    chains: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> np.ndarray:
     """The signed area each pixel of the canvas holds inside the closed outline.
 
     ``starts``, ``ends`` (E, 2): the directed edges of closed loops (in any
-    order). Each pixel gets the integral over its square of the winding
-    number, with the sign of the loops' orientation. With ``clip``, values
-    are clipped to [0, 1] and the rounding the running sums leave (below
-    1e-9) set to 0, only where the outline passes: a large canvas is never
-    swept whole.
+    order). ``chains``, optional, more of them as polylines: ``(points,
+    last)``, the points (N, 2) of one polyline after another and True at
+    each one's last point. Each pixel gets the integral over its square of
+    the winding number, with the sign of the loops' orientation. With
+    ``clip``, values are clipped to [0, 1] and the rounding the running sums
+    leave (below 1e-9) set to 0, only where the outline passes: a large
+    canvas is never swept whole.
     """
     height, width = shape
+    patch_cells, patch_areas = np.zeros(0, dtype=np.int64), np.zeros(0)
+    if chains is not None:
+        chain_starts, chain_ends, patch_cells, patch_areas = _merged(*chains, height, width)
+        starts = np.concatenate([starts, chain_starts])
+        ends = np.concatenate([ends, chain_ends])
     x0, y0, x1, y1, inside = _clip(starts, ends, height, width)
     # Every edge now spans at most one pixel boundary each way. Most (the
     # chords of the arcs) cross none: one piece each. An edge that crosses
@@ -90,7 +101,55 @@ def accumulate(
         column = np.minimum(np.maximum(cell_x, 0), width)
         cell_y = np.maximum(cell_y, 0)
     cells = (cell_y * (width + 1) + column).astype(np.int64)
+    if len(patch_cells):
+        cells = np.concatenate([cells, patch_cells])
+        area = np.concatenate([area, patch_areas])
+        rise = np.concatenate([rise, np.zeros(len(patch_areas))])
     return _running_sums(cells, area, rise, (height, width), clip)
+
+
+def _merged(
+    points: np.ndarray, last: np.ndarray, height: int, width: int
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The polylines' edges, a run of edges within one pixel as one edge and its patch.
+
+    The chords of a round join or cap are short: most lie in the same pixel
+    as their neighbours. Within a pixel, a run of edges adds to it what the
+    straight edge from the run's first point to its last adds, plus the
+    area between the run and that edge (the *patch*), and the same rise to
+    the pixels on its right: one edge and one area instead of many edges.
+    Returns the edges' starts and ends, and the patches' cells ``row * (W +
+    1) + column`` and areas, for the pixels on the canvas (off it, the
+    patch adds nothing: the running sums only carry the rise).
+    """
+    x, y = points[:, 0], points[:, 1]
+    column, row = np.floor(x), np.floor(y)
+    # Edge i runs from point i to point i + 1, unless point i ends a polyline.
+    edge = ~last[:-1]
+    within = edge & (column[1:] == column[:-1]) & (row[1:] == row[:-1])
+    # An edge continues a run when it and the edge before it both stay in their pixel.
+    continues = np.zeros(len(within), dtype=bool)
+    continues[1:] = within[1:] & within[:-1]
+    ends_run = np.zeros(len(within), dtype=bool)
+    ends_run[:-1] = continues[1:]
+    first = np.flatnonzero(edge & ~continues)
+    final = np.flatnonzero(edge & ~ends_run) + 1
+    # What each edge adds to its pixel, the fill's formula (for those within
+    # one pixel), summed over each run and compared with the run's straight edge.
+    rise = y[1:] - y[:-1]
+    middle = 0.5 * (x[1:] + x[:-1])
+    area = np.where(within, rise * (column[:-1] + 1 - middle), 0.0)
+    long = np.flatnonzero(final - first > 1)
+    run_first, run_final = first[long], final[long]
+    run_column, run_row = column.take(run_first), row.take(run_first)
+    run_rise = y.take(run_final) - y.take(run_first)
+    run_middle = 0.5 * (x.take(run_first) + x.take(run_final))
+    # Runs follow one another (a polyline's last point adds 0 between them).
+    patch = np.add.reduceat(area, first).take(long)
+    patch -= run_rise * (run_column + 1 - run_middle)
+    on_canvas = (run_column >= 0) & (run_column < width) & (run_row >= 0) & (run_row < height)
+    cells = (run_row * (width + 1) + run_column)[on_canvas].astype(np.int64)
+    return points.take(first, 0), points.take(final, 0), cells, patch[on_canvas]
 
 
 def _clip(

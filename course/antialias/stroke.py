@@ -89,8 +89,8 @@ def stroke_coverage(
     array([1.   , 0.395, 0.   ])
     """
     segments = as_segments(polyline, gaps)
-    starts, ends, doubtful = _outline(segments, half)
-    image = accumulate(starts, ends, shape, clip=True)
+    starts, ends, arcs, doubtful = _outline(segments, half)
+    image = accumulate(starts, ends, shape, clip=True, chains=arcs)
     doubtful |= overlapping(segments, half)
     dots = crowded_dots(segments, half)
     if doubtful.any() or dots.any():
@@ -101,8 +101,14 @@ def stroke_coverage(
 # --- the outline ---------------------------------------------------------------
 
 
-def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The outline's edges (start and end points) and the segments it cannot settle.
+def _outline(
+    segments: Segments, half: float
+) -> tuple[np.ndarray, np.ndarray, tuple[np.ndarray, np.ndarray], np.ndarray]:
+    """The outline's edges and arcs, and the segments it cannot settle.
+
+    The straight edges come as start and end points, the arcs as polylines
+    (their points and True at each one's last point, as
+    :func:`course.antialias._fill.accumulate` takes them).
 
     The offset edges are indexed flat, ``2 * segment + side``, so that both
     sides are cut and linked in one pass.
@@ -157,12 +163,12 @@ def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, n
         (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi)),
     ]
     centre, normal, sweep = (np.concatenate(part) for part in zip(*arcs, strict=True))
-    chord_starts, chord_ends = _arc(centre, normal, sweep, half)
+    arc_points = _arc(centre, normal, sweep, half)
     drawn = ~consumed
     side_0, side_1 = drawn[0::2], drawn[1::2]
-    starts = [a[0::2].compress(side_0, 0), b[1::2].compress(side_1, 0), link_starts, chord_starts]
-    ends = [b[0::2].compress(side_0, 0), a[1::2].compress(side_1, 0), link_ends, chord_ends]
-    return np.concatenate(starts), np.concatenate(ends), doubtful
+    starts = [a[0::2].compress(side_0, 0), b[1::2].compress(side_1, 0), link_starts]
+    ends = [b[0::2].compress(side_0, 0), a[1::2].compress(side_1, 0), link_ends]
+    return np.concatenate(starts), np.concatenate(ends), arc_points, doubtful
 
 
 def _links(
@@ -359,10 +365,11 @@ def _walk(step: np.ndarray, consumed: np.ndarray, index: np.ndarray) -> np.ndarr
 def _arc(
     centre: np.ndarray, normal: np.ndarray, sweep: np.ndarray, half: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Chords of the arcs from ``centre + half * normal`` turning by ``sweep`` radians.
+    """The arcs from ``centre + half * normal`` turning by ``sweep`` radians, as polylines.
 
-    Returns the chords' starts and ends, arc after arc. Each arc's points are
-    computed once: a chord ends exactly where the next begins.
+    Returns their points, arc after arc, and True at each arc's last point:
+    chords no longer than ``ARC_STEP`` radians, each point computed once, so
+    a chord ends exactly where the next begins.
     """
     count = np.maximum(np.ceil(np.abs(sweep) / ARC_STEP), 1).astype(np.int64)
     arc = np.repeat(np.arange(len(count)), count + 1)
@@ -373,5 +380,4 @@ def _arc(
     points = np.empty((len(arc), 2))
     points[:, 0] = centre[arc, 0] + half * (cos * nx - sin * ny)
     points[:, 1] = centre[arc, 1] + half * (sin * nx + cos * ny)
-    last = step == count[arc]
-    return points.compress(~last, 0), points.compress(step > 0, 0)
+    return points, step == count[arc]

@@ -197,19 +197,21 @@ def row_coverage(
     has = (rect_hi >= rect_lo) & (length > 0)[:, None]
     lo = np.where(has, np.fmin(lo, rect_lo), lo)
     hi = np.where(has, np.fmax(hi, rect_hi), hi)
-    # Inside the pixel; a row that misses the stroke becomes (1, 0), no length.
+    # Inside the pixel; a row that misses the stroke becomes (1, 1), no length.
     lo = np.fmax(np.fmin(lo, 1.0), 0.0)
-    hi = np.fmin(np.fmax(hi, 0.0), 1.0)
-    # Merge each (pixel, row)'s intervals: sort by start, then a running
-    # maximum of the ends. Groups are 4 apart, so one running maximum serves
-    # all, and after the sort each pixel's rows are still together, in order.
+    hi = np.fmax(np.fmin(hi, 1.0), lo)
+    # Merge each (pixel, row)'s intervals. How many cover a point counts the
+    # starts at or before it less the ends before it, whichever start goes
+    # with whichever end: so the starts and the ends are sorted apart, the
+    # k-th start paired with the k-th end (still an interval), and the
+    # union measured along the sorted starts, each end the largest so far.
+    # Groups are 4 apart, so after the sort each pixel's rows are still
+    # together, in order.
     first = first_of_runs(pixel)
     key = (((np.cumsum(first) - 1) * rows)[:, None] + np.arange(rows)[None, :]) * 4.0
-    lo, hi = (key + lo).ravel(), (key + hi).ravel()
-    order = np.argsort(lo)
-    lo, hi = lo[order], hi[order]
-    reach = np.maximum.accumulate(hi)
-    before = np.concatenate([[-np.inf], reach[:-1]])
+    lo, hi = np.sort((key + lo).ravel()), np.sort((key + hi).ravel())
+    before = np.empty_like(hi)
+    before[0], before[1:] = -np.inf, hi[:-1]
     covered = np.maximum(hi - np.maximum(lo, before), 0.0)
     return np.add.reduceat(covered, np.flatnonzero(first) * rows) / rows
 

@@ -167,8 +167,8 @@ def row_coverage(
     # The end discs: a row misses a disc where the root is NaN, which
     # fmin and fmax skip; NaN is left where a row misses both.
     with np.errstate(invalid="ignore"):
-        dy = line_y - sy[:, None]
-        r = np.sqrt(half * half - dy * dy)
+        from_start = line_y - sy[:, None]
+        r = np.sqrt(half * half - from_start * from_start)
         lo, hi = sx[:, None] - r, sx[:, None] + r
         dy = line_y - ey[:, None]
         r = np.sqrt(half * half - dy * dy)
@@ -188,15 +188,15 @@ def row_coverage(
     across = ux / cy, -half / np.abs(cy), half / np.abs(cy)  # |Y ux - X uy| <= half
     bounds = []
     for slope, first, second in (along, across):
-        shift = (line_y - sy[:, None]) * slope[:, None] + sx[:, None]
+        shift = from_start * slope[:, None] + sx[:, None]
         # Rounding is monotonic: min(shift + a, shift + b) is shift + min(a, b).
         low, high = np.minimum(first, second), np.maximum(first, second)
         bounds.append((shift + low[:, None], shift + high[:, None]))
     rect_lo = np.maximum(bounds[0][0], bounds[1][0])
     rect_hi = np.minimum(bounds[0][1], bounds[1][1])
     has = (rect_hi >= rect_lo) & (length > 0)[:, None]
-    lo = np.where(has, np.fmin(lo, rect_lo), lo)
-    hi = np.where(has, np.fmax(hi, rect_hi), hi)
+    np.fmin(lo, rect_lo, out=lo, where=has)
+    np.fmax(hi, rect_hi, out=hi, where=has)
     # Inside the pixel; a row that misses the stroke becomes (1, 1), no length.
     lo = np.fmax(np.fmin(lo, 1.0), 0.0)
     hi = np.fmax(np.fmin(hi, 1.0), lo)

@@ -98,9 +98,16 @@ def crowded_dots(segments: Segments, half: float) -> np.ndarray:
     return crowded
 
 
-def pieces(start: np.ndarray, end: np.ndarray, piece: float) -> tuple[np.ndarray, np.ndarray]:
-    """Segments cut into pieces no longer than ``piece``: each piece's owner and middle."""
-    pieces = np.maximum(np.ceil(np.hypot(*(end - start).T) / piece), 1).astype(np.int64)
+def pieces(
+    start: np.ndarray, end: np.ndarray, piece: float, length: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """Segments cut into pieces no longer than ``piece``: each piece's owner and middle.
+
+    ``length``, the segments' lengths if they are known already.
+    """
+    if length is None:
+        length = np.hypot(*(end - start).T)
+    pieces = np.maximum(np.ceil(length / piece), 1).astype(np.int64)
     owner = np.repeat(np.arange(len(pieces)), pieces)
     step = np.arange(len(owner)) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     fraction = ((step + 0.5) / pieces[owner])[:, None]
@@ -117,7 +124,7 @@ def _candidate_pairs(s: Segments, reach: float) -> tuple[np.ndarray, np.ndarray]
     a fraction of a millisecond). Pairs may repeat.
     """
     piece = max(reach, 2.0)
-    owner, middle = pieces(s.start, s.end, piece)
+    owner, middle = pieces(s.start, s.end, piece, s.length)
     # An unbalanced tree of loose nodes builds faster and finds the same pairs.
     tree = cKDTree(middle, balanced_tree=False, compact_nodes=False)
     pairs = tree.query_pairs(reach + piece, output_type="ndarray")

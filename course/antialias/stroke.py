@@ -203,7 +203,8 @@ def _links(
     via = single & joins.through[join] & on_inner
     # max(|x|, |y|) by columns: numpy's reduction over an axis of two is slow.
     scale = 1e-9 * np.maximum(1.0, np.maximum(np.abs(there[:, 0]), np.abs(there[:, 1])))
-    apart = ~arc & ~via & (np.hypot(*(there - here).T) > scale)
+    gap = there - here
+    apart = ~arc & ~via & (gap[:, 0] * gap[:, 0] + gap[:, 1] * gap[:, 1] > scale * scale)
     doubtful[p_segment[apart]] = doubtful[q_segment[apart]] = True
     vertex = s.end.take(p_segment, 0)
     first = np.concatenate(

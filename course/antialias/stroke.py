@@ -135,7 +135,8 @@ def _outline(
     join_of_start[second] = np.arange(len(second))
     through = cusp.copy()  # joins whose inner side runs through the vertex
     joins = _Joins(first, second, inner, turn, join_of_end, join_of_start, _sided(s.next), through)
-    _through(s, joins, np.flatnonzero(cusp), begin, finish)
+    if cusp.any():
+        _through(s, joins, np.flatnonzero(cusp), begin, finish)
     consumed, doubtful = _cut(s, half, begin, finish, joins)
     doubtful[first[through]] = doubtful[second[through]] = True
     # Side 0 is offset by +half normal, side 1 by -half normal.
@@ -151,17 +152,24 @@ def _outline(
     open_end = np.flatnonzero(s.next < 0)
     open_start = np.flatnonzero(s.prev < 0)
     # Every arc of the outline in one batch of chords: the outer sides of
-    # round joins, then open ends, open starts and dots.
-    arcs = [
-        arc,
-        (s.end.take(open_end, 0), s.normal.take(open_end, 0), np.full(len(open_end), -np.pi)),
-        (
-            s.start.take(open_start, 0),
-            -s.normal.take(open_start, 0),
-            np.full(len(open_start), -np.pi),
-        ),
-        (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi)),
-    ]
+    # round joins, then open ends, open starts and dots (a closed path has
+    # no ends, and few paths have dots).
+    arcs = [arc]
+    if len(open_end):
+        arcs.append(
+            (s.end.take(open_end, 0), s.normal.take(open_end, 0), np.full(len(open_end), -np.pi))
+        )
+        arcs.append(
+            (
+                s.start.take(open_start, 0),
+                -s.normal.take(open_start, 0),
+                np.full(len(open_start), -np.pi),
+            )
+        )
+    if len(s.dots):
+        arcs.append(
+            (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi))
+        )
     centre, normal, sweep = (np.concatenate(part) for part in zip(*arcs, strict=True))
     arc_points = _arc(centre, normal, sweep, half)
     drawn = ~consumed
@@ -355,11 +363,14 @@ def _through(
 def _walk(step: np.ndarray, consumed: np.ndarray, index: np.ndarray) -> np.ndarray:
     """From each index, follow ``step`` to the first segment not consumed (-1: none)."""
     at = step[index]
+    # Only the indices still on a consumed edge move on: few, and fewer each step.
+    going = np.flatnonzero((at >= 0) & consumed[np.maximum(at, 0)] & (at != index))
     for _ in range(len(consumed)):
-        going = (at >= 0) & consumed[np.maximum(at, 0)] & (at != index)
-        if not going.any():
+        if len(going) == 0:
             break
-        at = np.where(going, step[np.maximum(at, 0)], at)
+        moved = step[at[going]]
+        at[going] = moved
+        going = going[(moved >= 0) & consumed[np.maximum(moved, 0)] & (moved != index[going])]
     return np.where(at == index, -1, at)
 
 

@@ -88,7 +88,7 @@ def _nearby(
         owner, middle = pieces(starts, ends, 2.0)
         distance, _ = cKDTree(centres).query(middle, distance_upper_bound=reach + 1.0 + 1e-9)
         return np.unique(owner[np.isfinite(distance)])
-    table = np.zeros((height + 1, width + 1), dtype=np.int32)
+    table = np.zeros((height + 1, width + 1), dtype=np.int64)  # cumsum would widen int32 anyway
     table[rows - top + 1, columns - left + 1] = 1
     table = table.cumsum(axis=0).cumsum(axis=1)
     # Pixel (r, c) has its centre in the box when low - reach <= c + 0.5 <= high + reach.

@@ -237,8 +237,8 @@ def _curve_list(curves: Any, name: str) -> Curves:
             arrays.append(array)
         joined = np.concatenate(arrays), np.fromiter(map(len, arrays), np.int64, len(arrays))
     points, sizes = joined[0].astype(float), joined[1]
-    bad = ~np.isfinite(points).all(axis=1)
-    if bad.any():
+    if not np.isfinite(points).all():  # the whole array at once; rows only to name the curve
+        bad = ~np.isfinite(points).all(axis=1)
         curve = int(np.searchsorted(np.cumsum(sizes), np.flatnonzero(bad)[0], side="right"))
         as_curve(curves[curve], f"{name}[{curve}]")  # raises, naming the entry
     return _bounded(points, sizes)

@@ -7,7 +7,10 @@ its height to every pixel to the right of it (a running sum along the row)
 of the winding number: its exact area inside the outline where the winding
 number is 0 or 1. The running sums only run through the blocks of a row that
 the outline touches, so a long thin shape on a large canvas costs what its
-outline costs.
+outline costs. Part of the outline may come as polylines of many short edges
+(the chords of round joins and caps): a run of them within one pixel is
+filled as the one edge from its first point to its last, plus the area
+between them, the same sums in fewer pieces.
 
 References
 ----------
@@ -55,10 +58,9 @@ def accumulate(
         starts = np.concatenate([starts, chain_starts])
         ends = np.concatenate([ends, chain_ends])
     x0, y0, x1, y1, inside = _clip(starts, ends, height, width)
-    # Every edge now spans at most one pixel boundary each way. Most (the
-    # chords of the arcs) cross none: one piece each. An edge that crosses
-    # one boundary is cut at t1 in two pieces, one that crosses both at t1
-    # and t2 in three.
+    # Every edge now spans at most one pixel boundary each way. Most cross
+    # none: one piece each. An edge that crosses one boundary is cut at t1
+    # in two pieces, one that crosses both at t1 and t2 in three.
     column, row = np.floor(np.minimum(x0, x1)), np.floor(np.minimum(y0, y1))
     across_x = np.maximum(x0, x1) > column + 1
     across_y = np.maximum(y0, y1) > row + 1

@@ -221,6 +221,21 @@ def test_a_path_of_curves_is_the_reference_within_the_stated_tolerance(curves, w
     assert np.sqrt(np.mean(error**2)) <= RMSE_TOLERANCE
 
 
+@pytest.mark.parametrize("centre", [(3.2, 2.7), (1.1, 4.6)])
+def test_accumulate_fills_polylines_as_it_fills_their_edges(centre):
+    # Two circles of short chords, one crossing the canvas's sides: the runs
+    # of chords within one pixel are filled as one edge and the area between.
+    angle = np.linspace(0.0, 2 * np.pi, 301)[:, None]
+    circle = np.hstack([np.cos(angle), np.sin(angle)])
+    points = np.vstack([np.add(centre, 2.3 * circle), np.add(centre, 1.2 * circle[::-1])])
+    last = np.zeros(len(points), dtype=bool)
+    last[[300, 601]] = True
+    edges = (points[:-1][~last[:-1]], points[1:][~last[:-1]])
+    empty = np.zeros((0, 2))
+    chained = accumulate(empty, empty, (5, 6), chains=(points, last))
+    np.testing.assert_allclose(chained, accumulate(*edges, (5, 6)), atol=1e-12)
+
+
 @settings(max_examples=30, deadline=None)
 @given(
     corners=st.lists(

@@ -88,7 +88,7 @@ def _nearby(
         owner, middle = pieces(starts, ends, 2.0)
         distance, _ = cKDTree(centres).query(middle, distance_upper_bound=reach + 1.0 + 1e-9)
         return np.unique(owner[np.isfinite(distance)])
-    table = np.zeros((height + 1, width + 1), dtype=np.int32)
+    table = np.zeros((height + 1, width + 1), dtype=np.int64)  # cumsum would widen int32 anyway
     table[rows - top + 1, columns - left + 1] = 1
     table = table.cumsum(axis=0).cumsum(axis=1)
     # Pixel (r, c) has its centre in the box when low - reach <= c + 0.5 <= high + reach.
@@ -167,8 +167,8 @@ def row_coverage(
     # The end discs: a row misses a disc where the root is NaN, which
     # fmin and fmax skip; NaN is left where a row misses both.
     with np.errstate(invalid="ignore"):
-        dy = line_y - sy[:, None]
-        r = np.sqrt(half * half - dy * dy)
+        from_start = line_y - sy[:, None]
+        r = np.sqrt(half * half - from_start * from_start)
         lo, hi = sx[:, None] - r, sx[:, None] + r
         dy = line_y - ey[:, None]
         r = np.sqrt(half * half - dy * dy)
@@ -188,28 +188,30 @@ def row_coverage(
     across = ux / cy, -half / np.abs(cy), half / np.abs(cy)  # |Y ux - X uy| <= half
     bounds = []
     for slope, first, second in (along, across):
-        shift = (line_y - sy[:, None]) * slope[:, None] + sx[:, None]
+        shift = from_start * slope[:, None] + sx[:, None]
         # Rounding is monotonic: min(shift + a, shift + b) is shift + min(a, b).
         low, high = np.minimum(first, second), np.maximum(first, second)
         bounds.append((shift + low[:, None], shift + high[:, None]))
     rect_lo = np.maximum(bounds[0][0], bounds[1][0])
     rect_hi = np.minimum(bounds[0][1], bounds[1][1])
     has = (rect_hi >= rect_lo) & (length > 0)[:, None]
-    lo = np.where(has, np.fmin(lo, rect_lo), lo)
-    hi = np.where(has, np.fmax(hi, rect_hi), hi)
-    # Inside the pixel; a row that misses the stroke becomes (1, 0), no length.
+    np.fmin(lo, rect_lo, out=lo, where=has)
+    np.fmax(hi, rect_hi, out=hi, where=has)
+    # Inside the pixel; a row that misses the stroke becomes (1, 1), no length.
     lo = np.fmax(np.fmin(lo, 1.0), 0.0)
-    hi = np.fmin(np.fmax(hi, 0.0), 1.0)
-    # Merge each (pixel, row)'s intervals: sort by start, then a running
-    # maximum of the ends. Groups are 4 apart, so one running maximum serves
-    # all, and after the sort each pixel's rows are still together, in order.
+    hi = np.fmax(np.fmin(hi, 1.0), lo)
+    # Merge each (pixel, row)'s intervals. How many cover a point counts the
+    # starts at or before it less the ends before it, whichever start goes
+    # with whichever end: so the starts and the ends are sorted apart, the
+    # k-th start paired with the k-th end (still an interval), and the
+    # union measured along the sorted starts, each end the largest so far.
+    # Groups are 4 apart, so after the sort each pixel's rows are still
+    # together, in order.
     first = first_of_runs(pixel)
     key = (((np.cumsum(first) - 1) * rows)[:, None] + np.arange(rows)[None, :]) * 4.0
-    lo, hi = (key + lo).ravel(), (key + hi).ravel()
-    order = np.argsort(lo)
-    lo, hi = lo[order], hi[order]
-    reach = np.maximum.accumulate(hi)
-    before = np.concatenate([[-np.inf], reach[:-1]])
+    lo, hi = np.sort((key + lo).ravel()), np.sort((key + hi).ravel())
+    before = np.empty_like(hi)
+    before[0], before[1:] = -np.inf, hi[:-1]
     covered = np.maximum(hi - np.maximum(lo, before), 0.0)
     return np.add.reduceat(covered, np.flatnonzero(first) * rows) / rows
 

@@ -46,17 +46,19 @@ def overlapping(segments: Segments, half: float) -> np.ndarray:
                 "that runs over itself this often is better drawn in pieces"
             ).format(first_count=len(first), most=limits.MAX_OVERLAP_PAIRS)
         )
+    # Neighbours meet at a join the outline draws; along one subpath, a path
+    # turning less than TURNING_LIMIT cannot come back. Both tests read only
+    # the path's structure, and they leave few pairs of the many.
+    keep = (s.next[first] != second) & (s.next[second] != first)
+    first, second = first[keep], second[keep]
+    keep = _turning_between(s, first, second) >= TURNING_LIMIT
+    first, second = first[keep], second[keep]
     # Segments whose middles lie farther apart than their half lengths and
-    # the reach cannot be that close: a cheap test first, which leaves few.
+    # the reach cannot be that close: a cheap test before the exact one.
     middle = 0.5 * (s.start + s.end)
     apart = middle.take(first, 0) - middle.take(second, 0)
-    apart = np.hypot(apart[:, 0], apart[:, 1])
-    keep = apart - 0.5 * (s.length[first] + s.length[second]) <= 2 * half * (1 + 1e-9)
-    # Neighbours meet at a join the outline draws.
-    keep &= (s.next[first] != second) & (s.next[second] != first)
-    first, second = first[keep], second[keep]
-    # Along one subpath, a path turning less than TURNING_LIMIT cannot come back.
-    keep = _turning_between(s, first, second) >= TURNING_LIMIT
+    within = 2 * half * (1 + 1e-9) + 0.5 * (s.length[first] + s.length[second])
+    keep = apart[:, 0] * apart[:, 0] + apart[:, 1] * apart[:, 1] <= within * within
     first, second = first[keep], second[keep]
     start, end = s.start.take(first, 0), s.end.take(first, 0)
     close = _segment_gap(start, end, s.start.take(second, 0), s.end.take(second, 0))
@@ -96,9 +98,16 @@ def crowded_dots(segments: Segments, half: float) -> np.ndarray:
     return crowded
 
 
-def pieces(start: np.ndarray, end: np.ndarray, piece: float) -> tuple[np.ndarray, np.ndarray]:
-    """Segments cut into pieces no longer than ``piece``: each piece's owner and middle."""
-    pieces = np.maximum(np.ceil(np.hypot(*(end - start).T) / piece), 1).astype(np.int64)
+def pieces(
+    start: np.ndarray, end: np.ndarray, piece: float, length: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """Segments cut into pieces no longer than ``piece``: each piece's owner and middle.
+
+    ``length``, the segments' lengths if they are known already.
+    """
+    if length is None:
+        length = np.hypot(*(end - start).T)
+    pieces = np.maximum(np.ceil(length / piece), 1).astype(np.int64)
     owner = np.repeat(np.arange(len(pieces)), pieces)
     step = np.arange(len(owner)) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     fraction = ((step + 0.5) / pieces[owner])[:, None]
@@ -115,7 +124,7 @@ def _candidate_pairs(s: Segments, reach: float) -> tuple[np.ndarray, np.ndarray]
     a fraction of a millisecond). Pairs may repeat.
     """
     piece = max(reach, 2.0)
-    owner, middle = pieces(s.start, s.end, piece)
+    owner, middle = pieces(s.start, s.end, piece, s.length)
     # An unbalanced tree of loose nodes builds faster and finds the same pairs.
     tree = cKDTree(middle, balanced_tree=False, compact_nodes=False)
     pairs = tree.query_pairs(reach + piece, output_type="ndarray")
@@ -154,14 +163,13 @@ def distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.nd
 
 def _segment_gap(a0: np.ndarray, a1: np.ndarray, b0: np.ndarray, b1: np.ndarray) -> np.ndarray:
     """Distance between segments a0-a1 and b0-b1, elementwise (0 where they cross)."""
-    gap = np.minimum.reduce(
-        [
-            distance_to(a0, b0, b1),
-            distance_to(a1, b0, b1),
-            distance_to(b0, a0, a1),
-            distance_to(b1, a0, a1),
-        ]
+    # Each end to the other segment, the four measured in one call.
+    ends = distance_to(
+        np.concatenate([a0, a1, b0, b1]),
+        np.concatenate([b0, b0, a0, a0]),
+        np.concatenate([b1, b1, a1, a1]),
     )
+    gap = ends.reshape(4, -1).min(axis=0)
 
     def side(p: np.ndarray, q0: np.ndarray, q1: np.ndarray) -> np.ndarray:
         d, e = q1 - q0, p - q0

@@ -89,8 +89,8 @@ def stroke_coverage(
     array([1.   , 0.395, 0.   ])
     """
     segments = as_segments(polyline, gaps)
-    starts, ends, doubtful = _outline(segments, half)
-    image = accumulate(starts, ends, shape, clip=True)
+    starts, ends, arcs, doubtful = _outline(segments, half)
+    image = accumulate(starts, ends, shape, clip=True, chains=arcs)
     doubtful |= overlapping(segments, half)
     dots = crowded_dots(segments, half)
     if doubtful.any() or dots.any():
@@ -101,8 +101,14 @@ def stroke_coverage(
 # --- the outline ---------------------------------------------------------------
 
 
-def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The outline's edges (start and end points) and the segments it cannot settle.
+def _outline(
+    segments: Segments, half: float
+) -> tuple[np.ndarray, np.ndarray, tuple[np.ndarray, np.ndarray], np.ndarray]:
+    """The outline's edges and arcs, and the segments it cannot settle.
+
+    The straight edges come as start and end points, the arcs as polylines
+    (their points and True at each one's last point, as
+    :func:`course.antialias._fill.accumulate` takes them).
 
     The offset edges are indexed flat, ``2 * segment + side``, so that both
     sides are cut and linked in one pass.
@@ -129,7 +135,8 @@ def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, n
     join_of_start[second] = np.arange(len(second))
     through = cusp.copy()  # joins whose inner side runs through the vertex
     joins = _Joins(first, second, inner, turn, join_of_end, join_of_start, _sided(s.next), through)
-    _through(s, joins, np.flatnonzero(cusp), begin, finish)
+    if cusp.any():
+        _through(s, joins, np.flatnonzero(cusp), begin, finish)
     consumed, doubtful = _cut(s, half, begin, finish, joins)
     doubtful[first[through]] = doubtful[second[through]] = True
     # Side 0 is offset by +half normal, side 1 by -half normal.
@@ -145,24 +152,31 @@ def _outline(segments: Segments, half: float) -> tuple[np.ndarray, np.ndarray, n
     open_end = np.flatnonzero(s.next < 0)
     open_start = np.flatnonzero(s.prev < 0)
     # Every arc of the outline in one batch of chords: the outer sides of
-    # round joins, then open ends, open starts and dots.
-    arcs = [
-        arc,
-        (s.end.take(open_end, 0), s.normal.take(open_end, 0), np.full(len(open_end), -np.pi)),
-        (
-            s.start.take(open_start, 0),
-            -s.normal.take(open_start, 0),
-            np.full(len(open_start), -np.pi),
-        ),
-        (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi)),
-    ]
+    # round joins, then open ends, open starts and dots (a closed path has
+    # no ends, and few paths have dots).
+    arcs = [arc]
+    if len(open_end):
+        arcs.append(
+            (s.end.take(open_end, 0), s.normal.take(open_end, 0), np.full(len(open_end), -np.pi))
+        )
+        arcs.append(
+            (
+                s.start.take(open_start, 0),
+                -s.normal.take(open_start, 0),
+                np.full(len(open_start), -np.pi),
+            )
+        )
+    if len(s.dots):
+        arcs.append(
+            (s.dots, np.tile([1.0, 0.0], (len(s.dots), 1)), np.full(len(s.dots), -2 * np.pi))
+        )
     centre, normal, sweep = (np.concatenate(part) for part in zip(*arcs, strict=True))
-    chord_starts, chord_ends = _arc(centre, normal, sweep, half)
+    arc_points = _arc(centre, normal, sweep, half)
     drawn = ~consumed
     side_0, side_1 = drawn[0::2], drawn[1::2]
-    starts = [a[0::2].compress(side_0, 0), b[1::2].compress(side_1, 0), link_starts, chord_starts]
-    ends = [b[0::2].compress(side_0, 0), a[1::2].compress(side_1, 0), link_ends, chord_ends]
-    return np.concatenate(starts), np.concatenate(ends), doubtful
+    starts = [a[0::2].compress(side_0, 0), b[1::2].compress(side_1, 0), link_starts]
+    ends = [b[0::2].compress(side_0, 0), a[1::2].compress(side_1, 0), link_ends]
+    return np.concatenate(starts), np.concatenate(ends), arc_points, doubtful
 
 
 def _links(
@@ -197,7 +211,8 @@ def _links(
     via = single & joins.through[join] & on_inner
     # max(|x|, |y|) by columns: numpy's reduction over an axis of two is slow.
     scale = 1e-9 * np.maximum(1.0, np.maximum(np.abs(there[:, 0]), np.abs(there[:, 1])))
-    apart = ~arc & ~via & (np.hypot(*(there - here).T) > scale)
+    gap = there - here
+    apart = ~arc & ~via & (gap[:, 0] * gap[:, 0] + gap[:, 1] * gap[:, 1] > scale * scale)
     doubtful[p_segment[apart]] = doubtful[q_segment[apart]] = True
     vertex = s.end.take(p_segment, 0)
     first = np.concatenate(
@@ -348,21 +363,25 @@ def _through(
 def _walk(step: np.ndarray, consumed: np.ndarray, index: np.ndarray) -> np.ndarray:
     """From each index, follow ``step`` to the first segment not consumed (-1: none)."""
     at = step[index]
+    # Only the indices still on a consumed edge move on: few, and fewer each step.
+    going = np.flatnonzero((at >= 0) & consumed[np.maximum(at, 0)] & (at != index))
     for _ in range(len(consumed)):
-        going = (at >= 0) & consumed[np.maximum(at, 0)] & (at != index)
-        if not going.any():
+        if len(going) == 0:
             break
-        at = np.where(going, step[np.maximum(at, 0)], at)
+        moved = step[at[going]]
+        at[going] = moved
+        going = going[(moved >= 0) & consumed[np.maximum(moved, 0)] & (moved != index[going])]
     return np.where(at == index, -1, at)
 
 
 def _arc(
     centre: np.ndarray, normal: np.ndarray, sweep: np.ndarray, half: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Chords of the arcs from ``centre + half * normal`` turning by ``sweep`` radians.
+    """The arcs from ``centre + half * normal`` turning by ``sweep`` radians, as polylines.
 
-    Returns the chords' starts and ends, arc after arc. Each arc's points are
-    computed once: a chord ends exactly where the next begins.
+    Returns their points, arc after arc, and True at each arc's last point:
+    chords no longer than ``ARC_STEP`` radians, each point computed once, so
+    a chord ends exactly where the next begins.
     """
     count = np.maximum(np.ceil(np.abs(sweep) / ARC_STEP), 1).astype(np.int64)
     arc = np.repeat(np.arange(len(count)), count + 1)
@@ -373,5 +392,4 @@ def _arc(
     points = np.empty((len(arc), 2))
     points[:, 0] = centre[arc, 0] + half * (cos * nx - sin * ny)
     points[:, 1] = centre[arc, 1] + half * (sin * nx + cos * ny)
-    last = step == count[arc]
-    return points.compress(~last, 0), points.compress(step > 0, 0)
+    return points, step == count[arc]

@@ -79,7 +79,9 @@ def uniform_polyline(curves: Any, tolerance: float) -> tuple[np.ndarray, np.ndar
                 ).format(tolerance=tolerance, total=count.sum(), most=limits.MAX_SAMPLES)
             )
         counts[which] = count
-        pieces[size] = (which, uniform_points(control, count))
+        # A line's one step is its two control points, exactly as evaluated.
+        points = control.reshape(-1, 2) if size <= 2 else uniform_points(control, count)
+        pieces[size] = (which, points)
     return assemble(curves, counts + 1, pieces)
 
 

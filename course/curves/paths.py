@@ -221,25 +221,44 @@ def _curve_list(curves: Any, name: str) -> Curves:
                 name=name, curves=describe(curves)
             )
         )
-    arrays = []
-    for index, curve in enumerate(curves):
-        array = curve if isinstance(curve, np.ndarray) else None
-        if (
-            array is None
-            or array.ndim != 2
-            or array.shape[1] != 2
-            or len(array) == 0
-            or array.dtype.kind not in "iuf"
-        ):
-            array = as_curve(curve, f"{name}[{index}]")  # the one message for a bad curve
-        arrays.append(array)
-    points = np.concatenate(arrays).astype(float)
-    sizes = np.array([len(array) for array in arrays])
-    bad = ~np.isfinite(points).all(axis=1)
-    if bad.any():
+    joined = _joined_arrays(curves)
+    if joined is None:
+        arrays = []
+        for index, curve in enumerate(curves):
+            array = curve if isinstance(curve, np.ndarray) else None
+            if (
+                array is None
+                or array.ndim != 2
+                or array.shape[1] != 2
+                or len(array) == 0
+                or array.dtype.kind not in "iuf"
+            ):
+                array = as_curve(curve, f"{name}[{index}]")  # the one message for a bad curve
+            arrays.append(array)
+        joined = np.concatenate(arrays), np.fromiter(map(len, arrays), np.int64, len(arrays))
+    points, sizes = joined[0].astype(float), joined[1]
+    if not np.isfinite(points).all():  # the whole array at once; rows only to name the curve
+        bad = ~np.isfinite(points).all(axis=1)
         curve = int(np.searchsorted(np.cumsum(sizes), np.flatnonzero(bad)[0], side="right"))
         as_curve(curves[curve], f"{name}[{curve}]")  # raises, naming the entry
     return _bounded(points, sizes)
+
+
+def _joined_arrays(curves: Any) -> tuple[np.ndarray, np.ndarray] | None:
+    """All the curves' points and sizes, if every curve is a non-empty real (N, 2) array.
+
+    One sweep over the curves, for a path of many (a line of text); None for
+    anything else, which :func:`_curve_list` checks curve by curve.
+    """
+    try:
+        kinds = {curve.dtype.kind for curve in curves}
+        points = np.concatenate(curves)
+    except (AttributeError, TypeError, ValueError):  # not arrays, or of unequal dimensions
+        return None
+    sizes = np.fromiter(map(len, curves), np.int64, len(curves))
+    if not kinds <= set("iuf") or points.ndim != 2 or points.shape[1] != 2 or sizes.min() == 0:
+        return None
+    return points, sizes
 
 
 def curves_of_path(path: Path, height: float | None = None, name: str = "points") -> Curves:

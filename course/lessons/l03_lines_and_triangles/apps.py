@@ -299,8 +299,17 @@ class TriangleApp(SliderApp):
         self.outlines = [axes.plot([], [], color="navy", linewidth=1)[0] for axes in (left, right)]
         self.shared = [axes.plot([], [], color="navy", linewidth=2)[0] for axes in (left, right)]
         self.left, self.right = left, right
+        # Never hidden by their point (a drag keeps it on the grid anyway): a drag then
+        # moves a label's recorded text with its point (TextReplay), not laid out anew.
         self.labels = [
-            left.annotate(name, (0, 0), xytext=(5, 5), textcoords="offset points", fontsize=10)
+            left.annotate(
+                name,
+                (0, 0),
+                xytext=(5, 5),
+                textcoords="offset points",
+                fontsize=10,
+                annotation_clip=False,
+            )
             for name in self.NAMES
         ]
         self.counts = np.zeros((size, size), dtype=np.int64)
@@ -367,9 +376,9 @@ class TriangleApp(SliderApp):
             pixels, weights = triangle_coverage(*triple, shape, rate, rule=rule)
             paint(image, pixels, 1.0, weight=weights)
         self.coverage.set_data(image)
-        self.right.set_title(
-            _("SSAA coverage, {rate} x {rate} samples per pixel").format(rate=rate), fontsize=9
-        )
+        title = _("SSAA coverage, {rate} x {rate} samples per pixel").format(rate=rate)
+        if title != self.right.get_title():  # set_title would give it a new layout anyway
+            self.right.set_title(title, fontsize=9)
         for label, corner in zip(self.labels, (a, b, c, d), strict=True):
             label.xy = tuple(corner)
         quad = np.array([a, b, c, d, a])

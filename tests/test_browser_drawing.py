@@ -181,6 +181,15 @@ def grabbed(app, index: int) -> tuple[Sent, tuple[float, float], np.ndarray]:
     return sent, (x, y), decoded(buffers[0])
 
 
+def moved(app, sent: Sent, x: float, y: float) -> tuple[dict, list, list[dict]]:
+    """The drawing message a move to (x, y) sends: its content, buffers and pixel commands."""
+    app.view.awaited = True
+    app.pointer("move", x, y)
+    content, buffers = sent.messages[-1]
+    assert content["kind"] == "drawing" and len(buffers) == 4
+    return content, buffers, [command for command in commands_of(buffers) if "pixels" in command]
+
+
 @pytest.mark.parametrize("kind", [TriangleApp, ZoomApp])
 def test_pixel_panels_drawn_from_a_drag_s_message_are_the_picture_agg_draws(kind):
     # Lesson 03's triangles and lesson 05's zoom: their panels' pixels travel as they
@@ -188,11 +197,7 @@ def test_pixel_panels_drawn_from_a_drag_s_message_are_the_picture_agg_draws(kind
     app = kind()
     sent, (x, y), backdrop = grabbed(app, 1)
     for step in range(1, 4):
-        app.view.awaited = True
-        app.pointer("move", x + 9 * step, y - 6 * step)
-        content, buffers = sent.messages[-1]
-        assert content["kind"] == "drawing" and len(buffers) == 4
-        panels = [command for command in commands_of(buffers) if "pixels" in command]
+        content, buffers, panels = moved(app, sent, x + 9 * step, y - 6 * step)
         assert panels and all(command["zoom"] > 1 for command in panels)
         drawn = played(content, buffers, backdrop, app.view.figure.dpi)
         texts = sum("text" in command for command in commands_of(buffers))
@@ -209,11 +214,7 @@ def test_lesson_08_s_drag_sends_only_the_windows_the_foreground_covers_over_the_
     sent, (x, y), backdrop = grabbed(app, 0)
     height, width = app.foreground.shape[:2]
     for step in range(1, 4):
-        app.view.awaited = True
-        app.pointer("move", x + 9 * step, y - 6 * step)
-        content, buffers = sent.messages[-1]
-        assert content["kind"] == "drawing" and len(buffers) == 4
-        windows = [command for command in commands_of(buffers) if "pixels" in command]
+        content, buffers, windows = moved(app, sent, x + 9 * step, y - 6 * step)
         assert len(windows) == 2 and {command["zoom"] for command in windows} == {1}
         # Each window is the half-size blocks the foreground covers, not the panel.
         for command in windows:

@@ -122,8 +122,8 @@ class FigureView:
         such steps a moving line is drawn by replaying the Agg calls of its
         last full draw with its new data
         (:class:`~course.widgets.line_replay.LineReplay`), as long as its
-        style is the one it was drawn with; :meth:`invalidate`, which a new
-        view calls for anyway, drops the recordings.
+        style is the one it was drawn with; new limits of an axes drop the
+        recordings drawn through its data, and :meth:`invalidate` drops them all.
         """
         if (
             patches

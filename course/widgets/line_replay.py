@@ -88,8 +88,8 @@ class LineReplay:
     is), the default draw style, no mark-every, gap colour, sketch, path
     effects, filter or rasterization; and :meth:`draw` refuses (returns
     False) once the line no longer holds the style it was recorded with
-    (:data:`_HELD_STYLE`). A new view
-    (limits, axes moved) comes with
+    (:data:`_HELD_STYLE`). New limits of its axes drop its recording
+    (``FigureView`` listens for them); axes moved come with
     :meth:`~course.widgets.figure_view.FigureView.invalidate`, as the
     cached background needs it too, and that drops every recording.
     """

@@ -7,9 +7,10 @@ pixels at every step, 68 grid lines whose commands cost most of the step.
 :class:`StillReplay` keeps what the recorder made of an artist's draw (each
 command's making, ``CommandRecorder.log``) and makes it again, with its
 places in the new step's buffers, for as long as the artist is not *stale*:
-matplotlib marks an artist stale whenever one of its setters changes it. A
-new view (limits, axes moved) comes with ``FigureView.invalidate``, which
-drops every replay, as does a whole draw of the figure.
+matplotlib marks an artist stale whenever one of its setters changes it.
+New limits of its axes drop the replay of an artist drawn through their data
+(``FigureView`` listens for them, since the artist is not marked stale);
+``FigureView.invalidate`` drops every replay, as does a whole draw of the figure.
 
 ``FigureView.publish_drawing`` is this module's only caller, with artists the
 apps made (``UNCHECKED = True``).

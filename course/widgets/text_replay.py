@@ -83,9 +83,10 @@ class TextReplay:
     arrow, no path effects), that stands where its anchor is: a plain text
     (its position through its transform) or an annotation offset from its
     point and never clipped by it. :meth:`draw` refuses (returns False) once
-    anything but the anchor differs from the recorded (:func:`_layout`); a
-    new view comes with ``FigureView.invalidate``, which drops every
-    recording. The commands' places are kept to 1/10,000 pixel, as the
+    anything but the anchor differs from the recorded (:func:`_layout`); new
+    limits of its axes drop the recording of a text placed in their data
+    (``FigureView`` listens for them), and ``FigureView.invalidate`` drops
+    every recording. The commands' places are kept to 1/10,000 pixel, as the
     recorder keeps them.
     """
 

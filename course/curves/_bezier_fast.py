@@ -28,6 +28,7 @@ _MIN_CHUNK, _MAX_CHUNK = 256, 8192
 # time at degrees 3 and 9 (10^5 and 10^6 t, 2 coordinates).
 _LINE_BYTES = 64
 _LINE_FLOATS = _LINE_BYTES // 8
+_ALIGNED_FROM = 1 << 14  # elements (see _line_aligned_empty)
 
 
 def _chunk_size(rows: int, dimension: int) -> int:
@@ -36,7 +37,13 @@ def _chunk_size(rows: int, dimension: int) -> int:
 
 
 def _line_aligned_empty(size: int) -> np.ndarray:
-    """An uninitialized float64 array of ``size`` whose data starts on a cache line."""
+    """An uninitialized float64 array of ``size`` whose data starts on a cache line.
+
+    A small one (a drag's curve: 4 x 2 x 402) as numpy places it: its rows are
+    too short to straddle lines often, and aligning cost a sixth of the call.
+    """
+    if size < _ALIGNED_FROM:
+        return np.empty(size)
     raw = np.empty(size + _LINE_FLOATS)
     skip = (-raw.__array_interface__["data"][0] % _LINE_BYTES) // raw.itemsize
     return raw[skip : skip + size]

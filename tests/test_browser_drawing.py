@@ -155,10 +155,14 @@ def agg_picture(app) -> np.ndarray:
     """The app's picture as Agg draws it now: the moving artists over the background.
 
     A whole draw drops the drawing's replays; they are kept, so that the next
-    step's message is made by them, as in a drag where Agg draws nothing.
+    step's message is made by them, as in a drag where Agg draws nothing. A
+    step drawn from arrays (ArrayStep) left the artists as they were: they
+    are brought to the app's state first, as ``refresh`` brings them.
     """
     view = app.view
     replays = dict(view._command_replays)
+    app.update()
+    app._place_highlight()
     view.render_moving(app.moving, app.pixel_images)
     view._command_replays.update(replays)
     return view.pixels()

@@ -350,13 +350,10 @@ class FigureView:
         (:mod:`course.widgets.browser_drawing`); the first after the
         background was drawn anew also carries it (``"backdrop": true``, its
         encoded picture as the first buffer). The commands travel as a
-        buffer, not in the message's content: ipykernel would copy and check
-        every number of the content in Python (``json_clean``), which took
-        longer than the drawing.
-        Nothing is drawn with Agg, so a step costs what matplotlib takes to
-        lay the artists out; a step whose commands are the last ones sends
-        nothing. Returns False, having sent nothing, when an
-        artist holds something the browser cannot draw as Agg does: then
+        buffer: ipykernel checks every number of a content in Python
+        (``json_clean``). Nothing is drawn with Agg; a step whose commands are
+        the last ones sends nothing. Returns False, having sent nothing, when
+        an artist holds something the browser cannot draw as Agg does: then
         :meth:`render_moving` draws with Agg until :meth:`invalidate`.
         """
         renderer = self.canvas.get_renderer()
@@ -387,10 +384,28 @@ class FigureView:
             self._browser_draws = False
             return False
         self._browser_draws = True
-        buffers = recorder.finish()
+        self.send_drawing()
+        return True
+
+    def array_drawing(self) -> tuple[CommandRecorder, dict[Artist, Any]] | None:
+        """The recorder, started, and the moving artists' replays: a step drawn from arrays.
+
+        For :class:`~course.widgets.array_step.ArrayStep`. None unless the
+        browser draws this view's steps and holds their backdrop (recorded
+        with the canvas's renderer: a new one comes with a whole picture).
+        """
+        recorder = self._recorder
+        if not (self.draw_in_browser and self._browser_draws and self._backdrop_sent):
+            return None
+        recorder.start()
+        return recorder, self._command_replays
+
+    def send_drawing(self) -> None:
+        """Send the browser what the recorder holds, as :meth:`publish_drawing` sends it."""
+        buffers = self._recorder.finish()
         # Sent only with a background in hand: _draw_background and invalidate clear it.
         if self._backdrop_sent and buffers == self._drawn:
-            return True  # the browser shows it already
+            return  # the browser shows it already
         self._drawn = buffers
         content: dict[str, Any] = {"kind": "drawing"}
         buffers = list(buffers)
@@ -407,7 +422,6 @@ class FigureView:
         self.image.send(content, buffers=buffers)
         # The browser no longer shows the canvas's last picture: no patch can follow it.
         self._shown = None
-        return True
 
     def publish_patches(self) -> bool:
         """Send the browser only the rectangles that changed since what it shows.

@@ -181,13 +181,25 @@ class LinePaint:
         vertices = _data_vertices(line)
         if vertices is None or len(vertices) == 0:
             return False
+        self.draw_vertices(recorder, vertices)
+        line.stale = False
+        return True
+
+    def draw_vertices(self, recorder: Any, vertices: np.ndarray) -> None:
+        """Add the commands of the line through ``vertices``, (N, 2) data, N > 0, finite.
+
+        What :meth:`draw` adds for a line whose data are those vertices; the
+        line itself is not read (:class:`~course.widgets.array_step.ArrayStep`).
+        """
         for kind, paint in self.paints:
             if kind == "path paint":
                 recorder.add_line(paint, vertices)
             else:
                 recorder.add_markers(paint, vertices)
-        line.stale = False
-        return True
+
+    def holds_style(self) -> bool:
+        """Whether the line still holds the style it was recorded with."""
+        return _holds(self.line, self.held)
 
 
 def _data_vertices(line: Line2D) -> np.ndarray | None:

@@ -125,6 +125,17 @@ class PointerMixin:
                     self.animate(artist)
         self.view.release()
 
+    def drag_step(self, name: str, x: float, y: float, offset: np.ndarray) -> bool:
+        """A move of held handle ``name`` to picture pixel (x, y), taken the app's quicker way.
+
+        The handle's anchor goes to the data point of (x, y) less ``offset``
+        (where the press fell from it, in data units), as in :meth:`drag`.
+        Return False (as here) for the usual step: :meth:`drag`, then one
+        redraw. An app that draws its step from arrays
+        (:class:`~course.widgets.array_step.ArrayStep`) returns True.
+        """
+        return False
+
     def double_click(self, name: str) -> bool:
         """A double click on handle ``name``; True if it changed something."""
         return False
@@ -173,6 +184,8 @@ class PointerMixin:
                 self.refresh()  # the highlight
         elif kind in ("move", "up") and self._grab is not None:
             grab = self._grab
+            if kind == "move" and self.drag_step(grab.handle.name, x, y, grab.offset):
+                return
             point = self.data_point(grab.handle.axes, x, y) - grab.offset
             if kind == "up":
                 self._grab, self.grabbed = None, None

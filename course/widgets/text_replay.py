@@ -124,12 +124,20 @@ class TextReplay:
         anchor = _anchor(text, recorder)
         if anchor is None:
             return False
+        self.draw_at(recorder, anchor)
+        text.stale = False
+        return True
+
+    def draw_at(self, recorder: Any, anchor: np.ndarray) -> None:
+        """Add the text's commands for its anchor at ``anchor``, display pixels (y up)."""
         right, up = anchor - self.anchor
         for x, y, rest in self.commands:
             # The commands' y runs down the picture.
             recorder.add_text(round(x + float(right), 4), round(y - float(up), 4), rest)
-        text.stale = False
-        return True
+
+    def holds_layout(self) -> bool:
+        """Whether the text is shown and holds the layout it was recorded with."""
+        return bool(self.text.get_visible()) and _unchanged(_layout(self.text), self.layout)
 
 
 class FixedTextReplay:
@@ -166,17 +174,31 @@ class FixedTextReplay:
         """Add the text's command for its current string; False if it must be drawn anew."""
         text = self.text
         string = text.get_text()
-        if not (_unchanged(_layout(text, with_string=False), self.layout) and _placed(string)):
+        if not _unchanged(_layout(text, with_string=False), self.layout):
             return False
-        origin = text._origin(recorder, string)
+        if not self.draw_string(recorder, string):
+            return False
+        text.stale = False
+        return True
+
+    def draw_string(self, recorder: Any, string: str) -> bool:
+        """Add the command of the text showing ``string``, one line FixedText places itself.
+
+        False, having added nothing, if ``FixedText`` cannot place it.
+        """
+        origin = self.text._origin(recorder, string) if _placed(string) else None
         if origin is None:
             return False
         x, y = origin
         recorder.add_text(
             round(float(x), 4), round(float(y), 4), f'"text":{json.dumps(string)},{self.tail}'
         )
-        text.stale = False
         return True
+
+    def holds_layout(self) -> bool:
+        """Whether the text is shown and holds the layout it was recorded with, string aside."""
+        layout = _layout(self.text, with_string=False)
+        return bool(self.text.get_visible()) and _unchanged(layout, self.layout)
 
 
 def _texts_since(recorder: Any, start: int) -> list[tuple[float, float, str]]:

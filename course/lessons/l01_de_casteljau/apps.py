@@ -11,9 +11,11 @@ set with a slider; text, slider and picture stay in step.
 from __future__ import annotations
 
 import functools
+from typing import NamedTuple
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib._path import affine_transform
 from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.transforms import IdentityTransform
@@ -23,6 +25,7 @@ from course.curves._bezier_fast import de_casteljau_chunked, levels_at
 from course.i18n import _
 from course.images import EXAMPLE_POINTS
 from course.lessons.printed import degree_numeral
+from course.widgets.array_step import ArrayStep
 from course.widgets.base import Handle, SliderApp, format_points, parse_points
 from course.widgets.text_cache import FixedText
 
@@ -57,6 +60,16 @@ _LEVEL_COLORS = (
     "#882255",
     "#DDCC77",
 )
+
+
+class _HeldView(NamedTuple):
+    """What a drag's steps read of the view, which stays as it is while a point is held."""
+
+    t: float
+    to_data: np.ndarray  # picture (x, height - y) to data: the axes' inverse transData
+    to_display: np.ndarray  # data to display pixels, y up: the axes' transData
+    height: float  # the figure's, in pixels
+    limits: tuple[tuple[float, float], tuple[float, float]]  # get_xlim(), get_ylim()
 
 
 def _numbers(point: np.ndarray) -> str:
@@ -116,8 +129,12 @@ class DeCasteljauApp(SliderApp):
         self._count_changed = False
         self.points = np.array(start, dtype=float)
         self._drawn_points: np.ndarray | None = None
+        # True after a step drawn from arrays (drag_step): the artists still show the points
+        # before it, which are not to refit the view at the release (the step's had no fit).
+        self._artists_behind = False
         self._legend_count = 0
         self._title_position: tuple[float, float] = (0.5, 1.0)  # where a drag found it
+        self._held_view: _HeldView | None = None  # while a point is held (drag_step)
 
         axes = self.figure.add_axes((0.08, 0.06, 0.9, 0.88))
         axes.tick_params(labelsize=8)
@@ -224,9 +241,10 @@ class DeCasteljauApp(SliderApp):
         # The points were validated as they were read: the unchecked kernels, at every step.
         # A drag moves them at every step: the whole curve and the traced part in one call.
         traced_at, both_at = _samples(t)
-        if self._drawn_points is None or not np.array_equal(points, self._drawn_points):
+        moved = self._drawn_points is None or not np.array_equal(points, self._drawn_points)
+        if moved or self._artists_behind:
             both = de_casteljau_chunked(points, both_at)
-            self._set_points(points, both[:_CURVE_SAMPLES])
+            self._set_points(points, both[:_CURVE_SAMPLES], fit=moved)
             traced = both[_CURVE_SAMPLES:]
         else:
             traced = de_casteljau_chunked(points, traced_at)
@@ -250,16 +268,20 @@ class DeCasteljauApp(SliderApp):
                 self.title_start.set_text(start)
                 self.view.invalidate()
 
-    def _set_points(self, points: np.ndarray, curve: np.ndarray) -> None:
-        """New control points and their whole curve: the labels, and the view if they left it."""
+    def _set_points(self, points: np.ndarray, curve: np.ndarray, fit: bool = True) -> None:
+        """New control points and their whole curve: the labels, and the view if they left it.
+
+        ``fit=False`` leaves the view: points a drag's step showed already.
+        """
         self.points = np.array(points, dtype=float)
         self._drawn_points = self.points.copy()
+        self._artists_behind = False
         self.full_curve.set_data(curve[:, 0], curve[:, 1])
         for index, label in enumerate(self.labels):
             label.set_visible(index < len(points))
             if index < len(points):
                 label.xy = tuple(points[index])
-        if self.grabbed is None:  # never rescale under a dragging hand
+        if fit and self.grabbed is None:  # never rescale under a dragging hand
             self._fit_view(np.vstack([points, curve]))
         if len(points) != self._legend_count:
             self._legend(len(points))
@@ -319,13 +341,65 @@ class DeCasteljauApp(SliderApp):
         # extent; the release draws it where it stood, over the background kept.
         self._title_position = self.title.get_position()
         self.view.hold([self.title_start])  # it was hidden: drawn into the background now
+        axes = self.axes
+        self._held_view = _HeldView(
+            float(self.value("t")),
+            axes.transData.inverted().get_matrix(),
+            axes.transData.get_matrix(),
+            self.figure.bbox.height,
+            (axes.get_xlim(), axes.get_ylim()),
+        )
 
     def grab_ended(self, name: str) -> None:
+        self._held_view = None
         super().grab_ended(name)
         self.title.set_position(self._title_position)
         self.title.set_visible(True)
         self.title_start.set_visible(False)
         self.title_numbers.set_visible(False)
+
+    def drag_step(self, name: str, x: float, y: float, offset: np.ndarray) -> bool:
+        """A step of a drag drawn from the construction's arrays (ArrayStep).
+
+        What :meth:`drag` and :meth:`update` do at a step, without the
+        artists: the point moves as :meth:`drag` moves it, and the levels, the
+        curve, B(t), the label, B(t)'s numbers and the highlight ring go to the
+        browser with the paints their last step recorded. The artists get the
+        new points at the next :meth:`update` (the release's at the latest).
+        """
+        held = self._held_view
+        if held is None or float(self.value("t")) != held.t:
+            return False  # a new t: drawn the usual way, which moves the title's start
+        index = int(name[1:])
+        label = self.labels[index]
+        ring = self.highlight_ring(self.axes)[0]
+        levels_drawn = self.level_lines[: len(self.points) - 1]
+        shapes = {self.full_curve, *levels_drawn, self.traced, self.point_marker, ring}
+        step = ArrayStep.start(self.view, self.moving, {*shapes, label, self.title_numbers})
+        if step is None:
+            return False
+        # As data_point and drag: the matrices the axes' transforms use, read at the press.
+        point = affine_transform(np.array([[x, held.height - y]]), held.to_data)[0] - offset
+        points = self.points.copy()
+        points[index] = self._inside_view(point, held.limits)
+        self.points, self._drawn_points, self._artists_behind = points, points.copy(), True
+        _, both_at = _samples(held.t)
+        both = de_casteljau_chunked(points, both_at)
+        levels = levels_at(points, held.t)
+        lines = dict(zip(levels_drawn, levels, strict=False))
+        lines[self.full_curve], lines[self.traced] = both[:_CURVE_SAMPLES], both[_CURVE_SAMPLES:]
+        lines[self.point_marker], lines[ring] = levels[-1], points[index : index + 1]
+        anchor = affine_transform(points[index : index + 1], held.to_display)[0]
+        numbers = _numbers(levels[-1][0])
+        # The titles' texts stay the app's state, as update sets them.
+        self.title.set_text(self.title_start.get_text() + numbers)
+        self.title_numbers.set_text(numbers)
+        if step.draw(lines, {label: anchor}, {self.title_numbers: numbers}):
+            step.send()
+            self.renders += 1
+        else:
+            self.refresh()  # a string FixedText does not place: drawn the usual way
+        return True
 
     def handles(self) -> list[Handle]:
         return [Handle(f"P{i}", self.axes, tuple(p)) for i, p in enumerate(self.points)]
@@ -361,9 +435,12 @@ class DeCasteljauApp(SliderApp):
         self._write_points(np.delete(self.points, int(name[1:]), axis=0))
         return True
 
-    def _inside_view(self, point: np.ndarray) -> np.ndarray:
-        """The point, kept inside the view (a drag past the edge stops at it), rounded to 0.1."""
-        (x0, x1), (y1, y0) = self.axes.get_xlim(), self.axes.get_ylim()
+    def _inside_view(self, point: np.ndarray, limits: tuple | None = None) -> np.ndarray:
+        """The point, kept inside the view (a drag past the edge stops at it), rounded to 0.1.
+
+        ``limits``: the view's ``(get_xlim(), get_ylim())``, if read already.
+        """
+        (x0, x1), (y1, y0) = limits or (self.axes.get_xlim(), self.axes.get_ylim())
         x = min(max(float(point[0]), min(x0, x1)), max(x0, x1))
         y = min(max(float(point[1]), min(y0, y1)), max(y0, y1))
         return np.round([x, y], 1)

@@ -45,15 +45,27 @@ def test_wavefront_in_bands_gives_the_same_values(gray, kernel, band):
     assert np.array_equal(banded, values)
 
 
-@given(float_grays, st.sampled_from(sorted(dither.KERNELS)), st.integers(1, 6))
-def test_wavefront_in_chunks_of_any_length_gives_the_same_values(gray, kernel, chunk):
-    # A chunk's columns hold cells no pixel owns, beside the image: zeroed before
-    # their step, they push nothing back (one ulp off, or one pixel, would fail).
+# Tall, wide and one-pixel images: a band's buffer is L cells a wavefront, L set
+# by the width (tall) or by the band's rows (wide); both, and bands of any height.
+extreme_grays = arrays(
+    np.float64,
+    st.one_of(
+        st.tuples(st.integers(1, 40), st.integers(1, 4)),
+        st.tuples(st.integers(1, 4), st.integers(1, 40)),
+    ),
+    elements=st.floats(0, 1, allow_nan=False, allow_subnormal=False),
+)
+
+
+@given(extreme_grays, st.sampled_from(sorted(dither.KERNELS)), st.none() | st.integers(1, 20))
+def test_wavefront_on_tall_and_wide_images_gives_the_same_values_bit_for_bit(gray, kernel, band):
+    # Cells beside the image and past a band's last row are zeroed before they
+    # push (one ulp off, or one pixel, would fail); the sign of zero counts too.
     from course.halftone.diffusion import _error_diffusion_wavefront
 
     values = dither.error_diffusion_values(gray, kernel, method="loop")
-    chunked = _error_diffusion_wavefront(gray, dither.diffusion_offsets(kernel), chunk=chunk)[1]
-    assert np.array_equal(chunked, values)
+    banded = _error_diffusion_wavefront(gray, dither.diffusion_offsets(kernel), band=band)[1]
+    assert np.array_equal(banded.view(np.int64), values.view(np.int64))
 
 
 @given(float_grays, st.sampled_from(sorted(dither.KERNELS)))

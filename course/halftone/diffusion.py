@@ -11,9 +11,12 @@ forms with the same output bit for bit, and the report's pitfall
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from itertools import chain
 from typing import Any
 
 import numpy as np
+from numpy.lib.stride_tricks import as_strided
 
 from course._validate import as_choice, as_gray, describe
 from course.halftone._diffusion import FORMS, default_method, diffuse, kernel_offsets
@@ -40,9 +43,6 @@ KERNELS: dict[str, tuple[tuple[tuple[int, ...], ...], int]] = {
 }
 
 ERROR_DIFFUSION_METHODS = ("wavefront", "rows", "loop")
-
-# Wavefront steps whose views are made together (see _wavefront_band); 32 measured best.
-_CHUNK = 32
 
 
 def diffusion_offsets(kernel: str = "floyd-steinberg") -> list[tuple[int, int, float]]:
@@ -257,154 +257,177 @@ def _wavefront_skew(offsets: list[tuple[int, int, float]]) -> int:
 
 
 def _error_diffusion_wavefront(
-    gray: np.ndarray,
-    offsets: list[tuple[int, int, float]],
-    band: int | None = None,
-    chunk: int = _CHUNK,
+    gray: np.ndarray, offsets: list[tuple[int, int, float]], band: int | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """All pixels of one wavefront x + s y = t at once, t = 0, 1, 2, ...
 
-    The skewed layout (see ``_wavefront_band``) needs about ``(width + s
-    height) height`` cells: fine for a wide image, quadratic for a tall one.
-    So the image runs in bands of ``band`` rows, by default
-    ``max(width, 1024)``. A band hands the rows below it their values with
-    the errors received so far, added in order, so the result does not
+    The image runs in bands of ``band`` rows, by default ``max(width,
+    1024)``, each in a buffer of about ``(width + s band) width / s`` cells
+    (see ``_wavefront_band``). A band hands the rows below it their values
+    with the errors received so far, added in order, so the result does not
     depend on the banding.
     """
     height, width = gray.shape
     depth = max(dy for _, dy, _ in offsets)
     band = band or max(width, 1024)
-    blank = np.zeros(width)
-
-    def row(y: int) -> np.ndarray:
-        return gray[y] if y < height else blank
-
     values = np.empty_like(gray)
-    below = [row(y) for y in range(depth)]
+    below = np.zeros((depth, width))
+    below[: min(depth, height)] = gray[:depth]
     for first in range(0, height, band):
-        count = min(band, height - first)
-        rows = below + [row(y) for y in range(first + depth, first + count + depth)]
-        below = _wavefront_band(rows, count, offsets, values[first : first + count], chunk)
+        rows = gray[first + depth : first + band + depth]
+        below = _wavefront_band(below, rows, offsets, values[first : first + band])
     return (values > 0.5).astype(float), values
 
 
 def _wavefront_band(
-    rows: list[np.ndarray],
-    count: int,
+    below: np.ndarray,
+    rows: np.ndarray,
     offsets: list[tuple[int, int, float]],
     values: np.ndarray,
-    chunk: int = _CHUNK,
-) -> list[np.ndarray]:
-    """Run the first ``count`` of ``rows`` into ``values``; return the rest as received.
+) -> np.ndarray:
+    """Run the band ``values`` (``below``, then ``rows``), return the rows below it as received.
 
-    ``pending[t, y]`` holds pixel (x = t - s y, y): its value plus the errors
-    received so far, so each wavefront is one row of ``pending``, and a push
-    by (dx, dy) lands in row ``t + dx + s dy``, column ``y + dy``.
+    Pixel (x, y) lives in cell ``(x + s y) L + y`` of a flat buffer: wavefront
+    t = x + s y is then a run of consecutive cells, ``t L + y``, and a push by
+    (dx, dy) lands ``(dx + s dy) L + dy`` cells further on. Every step takes
+    exactly L cells, from the first row of its pixels, so the pushes of one
+    kernel row (dx from ``first`` to ``last``) land in ``last - first + 1``
+    runs of L cells that follow each other: one contiguous addition, which
+    costs a third of a strided one (a step costs a few numpy calls whatever
+    its length, so the calls' overhead is the time).
 
-    A step costs a few numpy calls whatever its length, so the time goes to
-    the calls and to making their views. The steps therefore run in chunks of
-    ``chunk``: a chunk's views are made once, over the columns of all its
-    wavefronts, and a step takes its own from iterators. A chunk's columns
-    include cells no pixel owns (x < 0 or x >= width). Those far from the
-    image only ever receive nothing; those next to it receive the pushes
-    that leave the image, and are zeroed before their step, so that the
-    errors they push back are exactly 0.
+    The cells after a step's ``n`` pixels are not pixels; their errors are
+    zeroed, so that they push exactly 0, wherever that lands. Nothing else
+    reads a cell, so pixels must only not share a cell with each other or
+    with a cell pushes reach. L is the smaller of two widths that ensure it:
+    ``count + depth`` (rows never share a cell), or ``s L >= width + reach -
+    1``, cells beside the image by up to ``reach`` columns then lie too far
+    in x from every pixel (beside cells may share cells with each other:
+    they only receive).
     """
-    width = len(rows[0])
-    depth = len(rows) - count
+    count, width = values.shape
+    depth = len(below)
     skew = _wavefront_skew(offsets)
     steps = width + skew * (count - 1)
-    reach = max(max(dx + skew * dy for dx, dy, _ in offsets), skew * depth)
-    pending = np.zeros((steps + reach + chunk, count + depth))
-    for y, initial in enumerate(rows):
-        pending[skew * y : skew * y + width, y] = initial
+    reach = max(max(abs(dx) for dx, _dy, _w in offsets), 1)
+    length = min(-(-(width + reach - 1) // skew), count + depth)
+    # Room for the views of up to 2 s steps past the last one, and their pushes.
+    furthest = max(dx for dx, _dy, _w in offsets) + skew * (depth + 3) + 2
+    pending = np.zeros((steps + furthest) * length + count + depth + 3)
+    image = np.ndarray(
+        (count + depth, width), buffer=pending, strides=((skew * length + 1) * 8, length * 8)
+    )
+    image[:depth] = below
+    _copy(image[depth : depth + len(rows)], rows, skew)
 
-    # One block addition per kernel row, deepest first: a block spans the row's
-    # contiguous dx range, whose targets are consecutive rows of pending.
+    # One block addition per kernel row, deepest first: a block spans the row's dx range.
     weights, blocks = [], []
     for dy in sorted({dy for _dx, dy, _weight in offsets}, reverse=True):
         row = {dx: weight for dx, other_dy, weight in offsets if other_dy == dy}
         first, last = min(row), max(row)
         start = len(weights)
         weights.extend(row.get(dx, 0.0) for dx in range(first, last + 1))
-        blocks.append((first + skew * dy, dy, last - first + 1, slice(start, len(weights))))
-    weight_column = np.array(weights)[:, None]
-    # The cells beside the image that a push can leave the image into, and come back from.
-    beside = [*range(-max(dx for dx, _dy, _w in offsets), 0)]
-    beside += range(width, width - min(dx for dx, _dy, _w in offsets))
+        blocks.append(((first + skew * dy) * length + dy, last - first + 1, start))
+    # A full weight matrix times a broadcast error: faster than broadcasting the weights.
+    weight_matrix = np.repeat(np.array(weights)[:, None], length, axis=1)
+    error = np.zeros(length)
+    error_rows = np.broadcast_to(error, weight_matrix.shape)
+    pushed = np.empty_like(weight_matrix)
+    above = np.empty(length, dtype=bool)
+    shares = [pushed[start : start + span].reshape(-1) for _offset, span, start in blocks]
+    targets = [
+        _step_windows(pending, offset, span * length, length, width, skew, steps)
+        for offset, span, _start in blocks
+    ]
+    windows = _step_windows(pending, 0, length, length, width, skew, steps)
+    # Step t's pixels: rows lo to min(count, t // s + 1), lo = max(0, ceil((t - width + 1) / s)).
+    t = np.arange(steps)
+    pixels = np.minimum(count, t // skew + 1) - np.maximum(0, -((width - 1 - t) // skew))
+    tails = [error[n:] for n in range(length)] + [None]
+    # One per step: the loops stop with it, the views run on past the last step.
+    cuts = map(tails.__getitem__, pixels.tolist())
 
-    error_buffer, pushed_buffer = np.empty(count), np.empty((len(weights), count))
-    above_buffer = np.empty(count, dtype=bool)
     add, greater, multiply, subtract = np.add, np.greater, np.multiply, np.subtract
-    for begin in range(0, steps, chunk):
-        end = min(steps, begin + chunk)
-        top = max(0, (begin - width) // skew + 1)
-        bottom = min(count, (end - 1) // skew + 1)
-        size = bottom - top
-        error, above = error_buffer[:size], above_buffer[:size]
-        pushed = pushed_buffer[:, :size]
-        # A block of one kernel row's dx is one row of pending: plain rows add faster.
-        shares = [pushed[share.start] if span == 1 else pushed[share] for *_, span, share in blocks]
-        targets = [
-            pending[begin + row : end + row, top + dy : bottom + dy]
-            if span == 1
-            else _row_windows(pending, begin + row, end - begin, span, top + dy, size)
-            for row, dy, span, _share in blocks
-        ]
-        zeroed: list[list[int]] = [[] for _ in range(end - begin)]
-        for x in beside:
-            for t in range(begin + (x - begin) % skew, end, skew):
-                if top <= (y := (t - x) // skew) < bottom:
-                    zeroed[t - begin].append(y - top)
-        # Unrolled for one, two and three kernel rows: a loop over the blocks
-        # would cost a quarter of the step.
-        if len(blocks) == 2:
-            (first, second), (first_share, second_share) = targets, shares
-            for value, cells, first_target, second_target in zip(
-                pending[begin:end, top:bottom], zeroed, first, second, strict=True
-            ):
-                for cell in cells:
-                    value[cell] = 0.0
-                greater(value, 0.5, above)
-                subtract(value, above, error)
-                multiply(weight_column, error, pushed)
-                add(first_target, first_share, first_target)
-                add(second_target, second_share, second_target)
-        else:
-            for value, cells, *step_targets in zip(
-                pending[begin:end, top:bottom], zeroed, *targets, strict=True
-            ):
-                for cell in cells:
-                    value[cell] = 0.0
-                greater(value, 0.5, above)
-                subtract(value, above, error)
-                multiply(weight_column, error, pushed)
-                for target, share in zip(step_targets, shares, strict=True):
-                    add(target, share, target)
+    # Unrolled for two kernel rows (Floyd-Steinberg): a loop over the blocks
+    # would cost a tenth of the step.
+    if len(blocks) == 2:
+        (deep, shallow), (deep_share, shallow_share) = targets, shares
+        for cut, value, deep_target, shallow_target in zip(
+            cuts, windows, deep, shallow, strict=False
+        ):
+            greater(value, 0.5, above)
+            subtract(value, above, error)
+            if cut is not None:
+                cut.fill(0.0)
+            multiply(weight_matrix, error_rows, pushed)
+            add(deep_target, deep_share, deep_target)
+            add(shallow_target, shallow_share, shallow_target)
+    else:
+        for cut, value, *step_targets in zip(cuts, windows, *targets, strict=False):
+            greater(value, 0.5, above)
+            subtract(value, above, error)
+            if cut is not None:
+                cut.fill(0.0)
+            multiply(weight_matrix, error_rows, pushed)
+            for target, share in zip(step_targets, shares, strict=True):
+                add(target, share, target)
 
-    # A pixel's pending value is final once its wavefront has run.
-    for y in range(count):
-        values[y] = pending[skew * y : skew * y + width, y]
-    return [pending[skew * y : skew * y + width, y].copy() for y in range(count, count + depth)]
+    # A pixel's value is final once its wavefront has run.
+    _copy(values, image[:count], skew)
+    return image[count:].copy()
 
 
-def _row_windows(
-    array: np.ndarray, first: int, count: int, span: int, column: int, width: int
-) -> np.ndarray:
-    """Views ``array[first + i : first + i + span, column : column + width]`` for i < count.
+def _step_windows(
+    array: np.ndarray, offset: int, size: int, length: int, width: int, skew: int, steps: int
+) -> Iterator[np.ndarray]:
+    """Views ``array[start + offset : start + offset + size]`` for steps t = 0, 1, 2, ...
 
-    A writeable view of shape (count, span, width). numpy checks that it lies
-    within ``array``'s buffer; ``sliding_window_view`` makes the same view
-    with twenty times the overhead, which the wavefront pays once per chunk.
+    Step t starts at ``t L + lo``. Until t = width - 1, lo = 0; then lo grows
+    by one every s steps, so the starts of every s-th step are evenly spaced
+    and s strided views make all of them, interleaved. Iterating an array
+    is the cheapest way to make many views; it stops only when the caller
+    does (the views run past the last step).
     """
-    rows, columns = array.strides
-    return np.ndarray(
-        (count, span, width),
-        dtype=array.dtype,
-        buffer=array,
-        offset=first * rows + column * columns,
-        strides=(rows, rows, columns),
-    )
+    early = width - 1
+
+    def views(start: int, number: int, stride: int) -> np.ndarray:
+        return np.ndarray(
+            (number, size),
+            buffer=array,
+            offset=(start + offset) * 8,
+            strides=(stride * 8, 8),
+        )
+
+    number = -(-(steps - early) // skew) + 1
+    phases = [views((early + r) * length + (r > 0), number, skew * length + 1) for r in range(skew)]
+    return chain(views(0, early, length), chain.from_iterable(zip(*phases, strict=True)))
+
+
+def _copy(target: np.ndarray, source: np.ndarray, skew: int, rows: int = 16) -> None:
+    """``target[...] = source``, one of them the band's pixels in the buffer (cells L apart).
+
+    Along a row, the buffer's pixels lie L cells apart, so a plain copy
+    touches a cache line per pixel; along a wavefront they are contiguous.
+    So bands of ``rows`` rows are copied as pieces of wavefronts, ``rows``
+    long (one strided view over all bands), then the corners the pieces miss.
+    Half the time of a plain copy.
+    """
+    height, width = source.shape
+    margin = skew * (rows - 1)
+    bands = height // rows if width > margin else 0
+    if bands:
+
+        def pieces(array: np.ndarray) -> np.ndarray:
+            # Piece (band, i) holds pixels (margin + i - s j, band * rows + j), j < rows.
+            down, across = array.strides
+            shape = (bands, width - margin, rows)
+            return as_strided(array[:, margin:], shape, (rows * down, across, down - skew * across))
+
+        pieces(target)[...] = pieces(source)
+        done = bands * rows
+        target[:done, :margin] = source[:done, :margin]
+        target[:done, width - margin :] = source[:done, width - margin :]
+    target[bands * rows :] = source[bands * rows :]
 
 
 # The forms, by method, for every caller of the kernel (see course.halftone._diffusion).

@@ -415,3 +415,23 @@ def test_a_recorder_measures_text_as_agg_does_and_finishes_empty_when_nothing_is
     text.draw(recorder)
     (command,) = json.loads(recorder.finish()[1])
     assert command["font"][0] == pytest.approx(12.0) and command["text"] == "x"
+
+
+def test_markers_at_nan_or_infinite_places_are_dropped_and_the_rest_kept():
+    # As Agg: a marker whose place is not finite is not drawn; huge finite ones are.
+    figure = Figure(figsize=(1, 1), dpi=100)
+    canvas = FigureCanvasAgg(figure)
+    axes = figure.add_axes((0, 0, 1, 1), xlim=(0, 1), ylim=(0, 1))
+    recorder = CommandRecorder(canvas.get_renderer())
+    for x, y, kept in (
+        ([0.2, np.nan, 0.6, 0.8], [0.5, 0.5, 0.5, np.inf], 2),
+        ([0.2, 0.4, 0.6], [0.5, -np.inf, 0.5], 2),
+        ([0.2, 1e306, 1e306], [0.5, 0.5, 0.5], 3),
+        ([0.2, 0.4], [0.5, 0.6], 2),
+    ):
+        (line,) = axes.plot(x, y, "o", markersize=4)
+        recorder.start()
+        line.draw(recorder)
+        (command,) = recorder.recorded()
+        assert command["at"][1] == kept, (x, y)
+        line.remove()

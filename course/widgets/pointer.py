@@ -17,6 +17,7 @@ module (``UNCHECKED = True``); it fuzzes the apps.
 
 from __future__ import annotations
 
+import math
 from contextlib import ExitStack
 from dataclasses import dataclass
 from typing import Any
@@ -165,7 +166,7 @@ class PointerMixin:
                     )
                 )
         x, y = float(x), float(y)
-        if not (np.isfinite(x) and np.isfinite(y)):
+        if not (math.isfinite(x) and math.isfinite(y)):
             raise ValueError(
                 _("x and y must be finite picture pixels; got ({x}, {y})").format(x=x, y=y)
             )

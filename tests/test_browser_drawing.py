@@ -435,3 +435,17 @@ def test_markers_at_nan_or_infinite_places_are_dropped_and_the_rest_kept():
         (command,) = recorder.recorded()
         assert command["at"][1] == kept, (x, y)
         line.remove()
+
+
+def test_a_zoom_step_that_keeps_its_window_keeps_the_panels_recordings():
+    # New limits drop the recordings drawn through an axes' data: a panel whose
+    # window stays sets none, so its curve's recording serves the next step.
+    app = ZoomApp()
+    sent, (x, y), _backdrop = grabbed(app, 1)
+    moved(app, sent, x + 0.3, y)
+    curve = app.panels[0].curve
+    recorded = app.view._command_replays[curve]
+    extent = app.panels[0].axes.get_xlim()
+    moved(app, sent, x + 0.4, y)
+    assert app.panels[0].axes.get_xlim() == extent
+    assert app.view._command_replays[curve] is recorded

@@ -174,8 +174,11 @@ class ZoomPanel:
             columns = [[(i / size[0], 1.0), (i / size[0], 0.0)] for i in range(size[0] + 1)]
             rows = [[(0.0, 1 - j / size[1]), (1.0, 1 - j / size[1])] for j in range(size[1] + 1)]
             self.grid.set_segments(columns + rows)
-        self.axes.set_xlim(x0, x1)
-        self.axes.set_ylim(y1, y0)  # y down, as in the image
+        # Only a new window is set: new limits drop the drag's recordings of the axes'
+        # lines (FigureView listens for them), and a step often keeps its window.
+        if self.axes.get_xlim() != (x0, x1) or self.axes.get_ylim() != (y1, y0):
+            self.axes.set_xlim(x0, x1)
+            self.axes.set_ylim(y1, y0)  # y down, as in the image
         self.title.set_text(title)
         self.note.set_text(note)
         return window

@@ -176,7 +176,7 @@ class LinePaint:
     def draw(self, recorder: Any) -> bool:
         """Add the line's commands with its current data; False if it must be recorded anew."""
         line = self.line
-        if not _holds(line, self.held):
+        if not self.holds_style():
             return False
         vertices = _data_vertices(line)
         if vertices is None or len(vertices) == 0:

@@ -119,7 +119,7 @@ class TextReplay:
         text = self.text
         if not (text.get_visible() or self.layout[0][0]):
             return True  # hidden then and now: nothing to draw, whatever else changed
-        if not _unchanged(_layout(text), self.layout):
+        if not self._same_layout():
             return False
         anchor = _anchor(text, recorder)
         if anchor is None:
@@ -137,7 +137,10 @@ class TextReplay:
 
     def holds_layout(self) -> bool:
         """Whether the text is shown and holds the layout it was recorded with."""
-        return bool(self.text.get_visible()) and _unchanged(_layout(self.text), self.layout)
+        return bool(self.text.get_visible()) and self._same_layout()
+
+    def _same_layout(self) -> bool:
+        return _unchanged(_layout(self.text), self.layout)
 
 
 class FixedTextReplay:
@@ -174,7 +177,7 @@ class FixedTextReplay:
         """Add the text's command for its current string; False if it must be drawn anew."""
         text = self.text
         string = text.get_text()
-        if not _unchanged(_layout(text, with_string=False), self.layout):
+        if not self._same_layout():
             return False
         if not self.draw_string(recorder, string):
             return False
@@ -197,8 +200,10 @@ class FixedTextReplay:
 
     def holds_layout(self) -> bool:
         """Whether the text is shown and holds the layout it was recorded with, string aside."""
-        layout = _layout(self.text, with_string=False)
-        return bool(self.text.get_visible()) and _unchanged(layout, self.layout)
+        return bool(self.text.get_visible()) and self._same_layout()
+
+    def _same_layout(self) -> bool:
+        return _unchanged(_layout(self.text, with_string=False), self.layout)
 
 
 def _texts_since(recorder: Any, start: int) -> list[tuple[float, float, str]]:

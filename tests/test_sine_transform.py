@@ -6,6 +6,7 @@ import pytest
 from course.poisson.sine_transform import (
     box_solve,
     fast_transform,
+    harmonic_fill,
     laplacian_eigenvalues,
     largest_prime_factor,
     sine_matrix,
@@ -74,3 +75,27 @@ def test_box_solve_leaves_its_input_alone():
 def test_fast_transform_follows_the_largest_prime_factor_of_size_plus_one():
     sizes = (1, 15, 160, 190, 198, 52, 1025)  # + 1: 2, 16, 7 x 23, 191, 199, 53, 1026
     assert [fast_transform(n) for n in sizes] == [True, True, True, False, False, False, True]
+
+
+@pytest.mark.parametrize("shape", [(1, 1), (3, 4), (198, 3), (3, 198), (40, 52), (21, 30)])
+def test_harmonic_fill_solves_the_box_with_the_ring_moved_to_the_right_hand_side(shape):
+    height, width = shape
+    ring = np.random.default_rng(5).normal(size=(2, height + 2, width + 2))
+    rhs = np.zeros((2, height, width))  # the ring's values beside the box, by hand
+    rhs[:, 0, :] += ring[:, 0, 1:-1]
+    rhs[:, -1, :] += ring[:, -1, 1:-1]
+    rhs[:, :, 0] += ring[:, 1:-1, 0]
+    rhs[:, :, -1] += ring[:, 1:-1, -1]
+    expected = np.linalg.solve(box_matrix(*shape), rhs.reshape(2, -1).T).T.reshape(rhs.shape)
+    before = ring.copy()
+    ring[:, 1:-1, 1:-1] = np.nan  # never read
+    filled = harmonic_fill(ring)
+    np.testing.assert_allclose(filled, expected, rtol=0, atol=1e-12 * np.abs(expected).max())
+    assert np.array_equal(ring[:, 0], before[:, 0]) and np.array_equal(
+        ring[:, :, -1], before[:, :, -1]
+    )
+
+
+def test_harmonic_fill_of_a_constant_ring_is_that_constant():
+    ring = np.full((1, 9, 14), 0.375)
+    np.testing.assert_allclose(harmonic_fill(ring), np.full((1, 7, 12), 0.375), atol=1e-14)

@@ -25,6 +25,7 @@ import scipy.fft
 __all__ = [
     "box_solve",
     "fast_transform",
+    "harmonic_fill",
     "laplacian_eigenvalues",
     "largest_prime_factor",
     "sine_matrix",
@@ -80,6 +81,51 @@ def box_solve(rhs: np.ndarray) -> np.ndarray:
     spectrum = sine_transform(sine_transform(rhs, axis=1), axis=2)
     spectrum *= _inverse_eigenvalues(height, width, 4.0 / ((height + 1) * (width + 1)))
     return sine_transform(sine_transform(spectrum, axis=1), axis=2)
+
+
+def harmonic_fill(ring: np.ndarray) -> np.ndarray:
+    """The interior of a ``(C, m + 2, n + 2)`` box, harmonic, with ``ring``'s outer ring as it is.
+
+    ``L^{-1}`` of the right-hand side that the ring's values make: nonzero
+    only beside the ring, so its sine transform is four outer products of a
+    side's 1-D transform with one sine mode, not a 2-D transform (only the
+    inverse is). The interior of ``ring`` is not read. A clone whose guidance
+    is the foreground's own Laplacian is the foreground plus this fill of the
+    ring's differences: lesson 08's drag moves only the ring.
+
+    Examples
+    --------
+    >>> ring = np.zeros((1, 3, 4)); ring[0, :, 0] = 1.0
+    >>> harmonic_fill(ring) * 15   # as box_solve of [[1, 0]]: the left values moved over
+    array([[[4., 1.]]])
+    """
+    height, width = ring.shape[1] - 2, ring.shape[2] - 2
+    sides = [
+        (ring[:, 0, 1:-1], _sine_mode(height, 1), False),
+        (ring[:, -1, 1:-1], _sine_mode(height, height), False),
+        (ring[:, 1:-1, 0], _sine_mode(width, 1), True),
+        (ring[:, 1:-1, -1], _sine_mode(width, width), True),
+    ]
+    spectrum = np.zeros((len(ring), height, width))
+    for side, mode, is_column in sides:
+        along = sine_transform(side[:, None, :], axis=2)[:, 0, :]  # the side's own transform
+        if is_column:
+            spectrum += along[:, :, None] * mode[None, None, :]
+        else:
+            spectrum += mode[None, :, None] * along[:, None, :]
+    if fast_transform(height) and fast_transform(width):
+        spectrum *= _inverse_eigenvalues(height, width, 4.0)  # scipy's idstn: a factor 2 per axis
+        return scipy.fft.idstn(spectrum, type=1, axes=(1, 2), overwrite_x=True)
+    spectrum *= _inverse_eigenvalues(height, width, 4.0 / ((height + 1) * (width + 1)))
+    return sine_transform(sine_transform(spectrum, axis=1), axis=2)
+
+
+@functools.lru_cache(maxsize=16)
+def _sine_mode(size: int, index: int) -> np.ndarray:
+    """``sin(pi index k / (size + 1))``, k = 1 .. size: the transform of a unit vector."""
+    mode = np.sin(np.pi * index * np.arange(1, size + 1) / (size + 1))
+    mode.flags.writeable = False
+    return mode
 
 
 def fast_transform(size: int) -> bool:

@@ -27,8 +27,7 @@ from course._validate import (
     require_finite,
 )
 from course.i18n import N_, _
-from course.poisson._build import clone_problem_of
-from course.poisson.problem import PoissonProblem
+from course.poisson.sine_transform import harmonic_fill
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import ZoomedPixels, rounding_level
 
@@ -175,8 +174,9 @@ class CloneApp(SliderApp):
     """Drag the pasted foreground over the background: the naive paste and the clone follow.
 
     Left, the foreground's pixels copied in (a seam all around); right, the
-    seamless clone, solved exactly at each step (:func:`course.poisson.solve`:
-    the discrete sine transform for a rectangle). Both are shown at half
+    seamless clone, solved exactly at each step (the foreground plus the
+    harmonic fill of its ring, by the discrete sine transform: the values
+    of :func:`course.poisson.seamless_clone`). Both are shown at half
     size, each screen pixel the mean of 2 x 2 image pixels. Drag the
     foreground in either panel, or type its top-left pixel in ``offset``.
     """
@@ -237,17 +237,11 @@ class CloneApp(SliderApp):
 
     def update(self) -> None:
         x, y = self.read_offset()
-        # The inputs were checked once, in __init__ (the offset as it was read): the
-        # unchecked build, where build_clone_problem would check the whole lake again.
-        problem = clone_problem_of(
-            PoissonProblem, self.background, self.foreground, (int(x), int(y)), None, "plain"
-        )
-        solution = np.clip(poisson.solve(problem), 0.0, 1.0)
         # Both change the region: the foreground inside its outer ring of pixels
         # (course.poisson.naive_paste and seamless_clone).
         for name, region in (
             ("naive paste", self.foreground[1:-1, 1:-1]),
-            ("seamless clone", solution[1:-1, 1:-1]),
+            ("seamless clone", self._cloned_region(int(x), int(y))),
         ):
             window, corner = self._pasted_window(x + 1, y + 1, region)
             self._windows[name] = window, corner
@@ -255,6 +249,22 @@ class CloneApp(SliderApp):
             self.pixel_images[self.panels[name]] = ZoomedPixels(_pixels_uint8(window), 1, corner)
         self.titles["naive paste"].set_text(_("naive paste at ({x}, {y})").format(x=x, y=y))
         self.titles["seamless clone"].set_text(_("seamless clone at ({x}, {y})").format(x=x, y=y))
+
+    def _cloned_region(self, x: int, y: int) -> np.ndarray:
+        """The seamless clone's region with the foreground's top-left pixel at (x, y), clipped.
+
+        :func:`course.poisson.seamless_clone`'s values, to rounding. Its plain
+        guidance is the foreground's own Laplacian, so the clone is the
+        foreground plus the harmonic fill of the ring's differences from the
+        background (:func:`~course.poisson.sine_transform.harmonic_fill`): a
+        step reads the background's ring alone, and transforms one way in 2-D
+        where a whole solve builds the problem and transforms both ways.
+        """
+        height, width = self.foreground.shape[:2]
+        window = self.background[y : y + height, x : x + width]
+        planes = (window - self.foreground).reshape(height, width, -1).transpose(2, 0, 1)
+        fill = harmonic_fill(planes).transpose(1, 2, 0).reshape(self.foreground[1:-1, 1:-1].shape)
+        return np.clip(self.foreground[1:-1, 1:-1] + fill, 0.0, 1.0)
 
     @property
     def shown(self) -> dict[str, np.ndarray]:

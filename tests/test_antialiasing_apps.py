@@ -2,11 +2,13 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from matplotlib.figure import Figure
 
 from course.antialias import render
 from course.antialias.coverage import reference
-from course.antialias.curve_quality import intensity_along
+from course.antialias.curve_quality import REFERENCE, intensity_along, render_window
 from course.i18n import language
 from course.images import SEED_000_CUBIC
 from course.lessons.l05_antialiasing.apps import StepApp, ZoomApp, label_of
@@ -102,6 +104,36 @@ def test_while_dragging_the_reference_takes_fewer_samples():
     assert app.panels[3].note.get_text() == "16 x 16 samples a pixel"
     app.pointer("up", *np.add(start, (5, 0)))
     assert app.panels[3].note.get_text() == "32 x 32 samples a pixel"
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    offsets=st.lists(st.tuples(st.floats(-60, 60), st.floats(-60, 60)), min_size=1, max_size=3),
+    position=st.integers(0, 200),
+    size=st.sampled_from(ZoomApp.SIZES),
+)
+def test_a_drags_reference_lies_between_the_references_of_a_stroke_a_hair_thinner_and_thicker(
+    offsets, position, size
+):
+    # During a drag the reference comes from the app's own polyline (within 1e-3 px of
+    # the curve), cut near the window: a sample it counts lies within 0.5 + 1e-3 of the
+    # curve, one it leaves out beyond 0.5 - 1e-3. The release draws the reference itself.
+    app = ZoomApp(CURVE, SHAPE, picks=PICKS, k=16)
+    app.controls["position"].value = position * 0.005
+    app.controls["size"].value = size
+    app.refresh()
+    start = app.picture_point(app.overview, CURVE[1])
+    app.pointer("down", *start)
+    for offset in offsets:
+        app.pointer("move", *np.add(start, offset))
+        points, centre = app.points, app.centre()
+        thinner, _ = render_window(REFERENCE, points, SHAPE, centre, size, 1 - 2.5e-3, 16)
+        thicker, _ = render_window(REFERENCE, points, SHAPE, centre, size, 1 + 2.5e-3, 16)
+        assert (thinner <= app.windows[3]).all() and (app.windows[3] <= thicker).all()
+        assert app.panels[3].note.get_text() == "16 x 16 samples a pixel"
+    app.pointer("up", *np.add(start, offsets[-1]))
+    window, _extent = render_window(REFERENCE, app.points, SHAPE, app.centre(), size, 1.0, 16)
+    np.testing.assert_array_equal(app.windows[3], window)
 
 
 def test_zoom_app_rejects_unknown_picks_and_keeps_points_on_bad_text():

@@ -26,7 +26,7 @@ from course.curves.paths import Curves
 from course.i18n import _
 from course.limits import require_bounded_flattening
 
-__all__ = ["REFERENCE_TOLERANCE", "path_polyline", "reference_coverage"]
+__all__ = ["REFERENCE_TOLERANCE", "path_polyline", "polyline_coverage", "reference_coverage"]
 
 UNCHECKED = True  # kernels for checked callers; see the module docstring
 
@@ -59,9 +59,21 @@ def path_polyline(
 
 def reference_coverage(path: Curves, canvas: tuple[int, int], width: float, k: int) -> np.ndarray:
     """:func:`course.antialias.coverage.reference` of checked arguments: (H, W) coverage."""
+    line, gaps = path_polyline(path, REFERENCE_TOLERANCE, tolerance_checked=True)
+    return polyline_coverage(line, gaps, canvas, width, k)
+
+
+def polyline_coverage(
+    line: np.ndarray, gaps: np.ndarray | None, canvas: tuple[int, int], width: float, k: int
+) -> np.ndarray:
+    """The reference's (H, W) coverage of a polyline already flattened: ``line``, (K >= 2, 2).
+
+    ``gaps`` marks the segments not drawn, as :func:`path_polyline` returns
+    them (or None). Lesson 05's zoom app draws its window during a drag from
+    the pieces of its own polyline that pass by it.
+    """
     height, canvas_width = canvas
     half = 0.5 * width
-    line, gaps = path_polyline(path, REFERENCE_TOLERANCE, tolerance_checked=True)
     reach = half + HALF_DIAGONAL
     gaps = _beyond_reach(line, gaps, (height, canvas_width), reach)
     near = pixels_near(line, (height, canvas_width), reach, gaps=gaps)

@@ -22,6 +22,7 @@ from matplotlib.patches import Rectangle
 from course import limits
 from course._validate import as_curve, as_int, as_positive_float, as_shape
 from course.antialias import SPLATS, WEIGHTINGS, render
+from course.antialias._reference import polyline_coverage
 from course.antialias.curve_quality import (
     AGG,
     ARC_LENGTH,
@@ -36,6 +37,7 @@ from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.lessons.l05_antialiasing.measurements import WEIGHTING_LABELS
 from course.lessons.l05_antialiasing.zoom_panel import CurveWalk, ZoomPanel
 from course.metrics import rmse
+from course.raster.canvas import crop_extent
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import bare_axes
 
@@ -102,7 +104,8 @@ class ZoomApp(SliderApp):
     shows ``size`` x ``size`` pixels, each a flat square at an integer zoom;
     drop-downs pick the variants of :data:`course.antialias.curve_quality.VARIANTS`.
     The control points can be typed too. The reference takes ``k`` x ``k``
-    samples a pixel (16 x 16 while a point is dragged).
+    samples a pixel (16 x 16 while a point is dragged, of the app's own
+    polyline where it passes the window: see :meth:`_dragged_reference`).
     """
 
     BLIT = True
@@ -238,14 +241,18 @@ class ZoomApp(SliderApp):
         for label, point in zip(self.labels, points, strict=True):
             label.xy = tuple(point)
         centre, size = self.centre(), self.value("size")
-        # While a point is dragged the reference takes 16 x 16 samples a pixel,
-        # a quarter of the work of 32 x 32 and within 1/16 of the exact coverage.
-        k = self.k if self.grabbed is None else min(self.k, 16)
-        truth, extent = render_window(
-            REFERENCE, points, self.shape, centre, size, self.stroke_width, k
-        )
+        extent = crop_extent(self.shape, centre, size)
         left, right, bottom, top = extent
-        near = self._near(extent)
+        line, gaps = self._near_pieces(extent)
+        if self.grabbed is None:
+            k = self.k
+            truth, _extent = render_window(
+                REFERENCE, points, self.shape, centre, size, self.stroke_width, k
+            )
+        else:
+            k = min(self.k, 16)
+            truth = self._dragged_reference(line, gaps, extent, k)
+        near = np.insert(line, np.flatnonzero(gaps) + 1, np.nan, axis=0)
         self.window_box.set_bounds(left, top, right - left, bottom - top)
         self.windows = []
         titles = [self.value(slot) for slot in ("left", "middle", "right")]
@@ -263,12 +270,15 @@ class ZoomApp(SliderApp):
             self._titles = [panel.title.get_text() for panel in self.panels]
             self.view.invalidate()  # the titles are part of the still background
 
-    def _near(self, extent: tuple[int, int, int, int]) -> np.ndarray:
-        """The part of the curve's polyline around the window (drawing all of it is slow).
+    def _near_pieces(self, extent: tuple[int, int, int, int]) -> tuple[np.ndarray, np.ndarray]:
+        """The pieces of the curve's polyline around the window, and the gaps between them.
 
-        Its pieces, a NaN row between two: a few dozen vertices, which a drag's
-        step sends as they are (the whole polyline, NaN but near the window,
-        was cut down by matplotlib at every step).
+        A few dozen vertices: every segment within 2 pixels of the window and
+        its neighbours (the polyline's segments are at most a pixel long). The
+        panels draw them, a NaN row in each gap: a drag's step sends them as
+        they are (the whole polyline, NaN but near the window, was cut down by
+        matplotlib at every step). ``gaps[i]`` is True when vertices ``i`` and
+        ``i + 1`` are not neighbours on the curve.
         """
         left, right, bottom, top = extent
         line = self.walk.polyline
@@ -279,8 +289,24 @@ class ZoomApp(SliderApp):
             & (line[:, 1] <= bottom + 2)
         )
         keep = np.flatnonzero(inside | np.roll(inside, 1) | np.roll(inside, -1))  # far ends too
-        breaks = np.flatnonzero(np.diff(keep) > 1) + 1
-        return np.insert(line[keep], breaks, np.nan, axis=0)
+        return line[keep], np.diff(keep) > 1
+
+    def _dragged_reference(
+        self, line: np.ndarray, gaps: np.ndarray, extent: tuple[int, int, int, int], k: int
+    ) -> np.ndarray:
+        """The reference in the window during a drag, from the pieces of the app's polyline.
+
+        That polyline (flattened to 1e-3 pixel for the walk) stands in for the
+        reference's own (1e-4, the whole curve flattened again): no sample
+        moves by more than 1e-3 pixel, far below the 1/16 pixel between two
+        of the 16 x 16. Every segment within reach of the window is among the
+        pieces; the release draws the reference as :func:`render_window` does.
+        """
+        left, right, bottom, top = extent
+        if len(line) < 2:
+            return np.zeros((bottom - top, right - left))
+        window = (bottom - top, right - left)
+        return polyline_coverage(line - (left, top), gaps, window, self.stroke_width, k)
 
     def handles(self) -> list[Handle]:
         return [Handle(f"P{i}", self.overview, tuple(p)) for i, p in enumerate(self.points)]

@@ -42,7 +42,14 @@ def test_zoom_app_moves_its_window_along_the_curve(images, exact):
     # The window shows exactly the crop of the whole rendering around the curve point.
     window, extent = crop(images["nearest_round"], centre, 16)
     np.testing.assert_allclose(app.windows[0], window, atol=1e-9)
-    assert tuple(app.panels[0].axes.get_xlim()) == extent[:2]
+    # The panels' data are the window's pixels from its corner, where the curve is drawn.
+    left, top = extent[0], extent[3]
+    assert app.panels[0].axes.get_xlim() == (0, 16) and app.panels[0].axes.get_ylim() == (16, 0)
+    x, y = app.panels[0].curve.get_data()
+    drawn = np.column_stack([x, y])[~np.isnan(x)] + (left, top)
+    walk = CurveWalk(CURVE).polyline
+    assert len(drawn) > 16 and all((walk == vertex).all(axis=1).any() for vertex in drawn)
+    assert (np.abs(drawn - (left + 8, top + 8)) <= 8 + 3).all()
     app.controls["position"].value = 0.5
     assert app.renders == 2 and app.view.image.value != before
     middle = CurveWalk(CURVE).at(0.5)

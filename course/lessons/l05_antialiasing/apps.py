@@ -252,7 +252,8 @@ class ZoomApp(SliderApp):
         else:
             k = min(self.k, 16)
             truth = self._dragged_reference(line, gaps, extent, k)
-        near = np.insert(line, np.flatnonzero(gaps) + 1, np.nan, axis=0)
+        # In the panels' data: the window's pixels from its corner (ZoomPanel).
+        near = np.insert(line - (left, top), np.flatnonzero(gaps) + 1, np.nan, axis=0)
         self.window_box.set_bounds(left, top, right - left, bottom - top)
         self.windows = []
         titles = [self.value(slot) for slot in ("left", "middle", "right")]

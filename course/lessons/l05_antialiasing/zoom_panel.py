@@ -74,7 +74,10 @@ class ZoomPanel:
     With ``app``, the pixels are written into the app's picture as they are,
     at a whole zoom (as :class:`course.widgets.picture.PixelPanel` does), not
     resampled by ``imshow``: the axes' width in picture pixels must then be
-    a whole multiple of every window size shown.
+    a whole multiple of every window size shown. The axes' data are then the
+    window's own pixels, from its top-left corner, where the app draws the
+    curve: limits that change with the window's size alone, so a drag that
+    moves the window keeps the recordings of the panel's lines.
     """
 
     def __init__(self, axes: Axes, curve: np.ndarray, app: SliderApp | None = None) -> None:
@@ -161,6 +164,7 @@ class ZoomPanel:
     ) -> np.ndarray:
         """:meth:`show_window` of a window and an extent the calling app checked."""
         x0, x1, y1, y0 = extent
+        size = (x1 - x0, y1 - y0)
         if self.app is None:
             self.picture.set_data(window)
             self.picture.set_extent(extent)
@@ -168,17 +172,19 @@ class ZoomPanel:
             zoom = round(self.axes.get_window_extent().width) // window.shape[1]
             gray = (np.clip(window, 0.0, 1.0) * 255).astype(np.uint8)  # as imshow maps gray
             self.app.pixel_images[self.axes] = ZoomedPixels(np.repeat(gray[..., None], 3, 2), zoom)
-        size = (x1 - x0, y1 - y0)
         if size != self._grid_size:
             self._grid_size = size
             columns = [[(i / size[0], 1.0), (i / size[0], 0.0)] for i in range(size[0] + 1)]
             rows = [[(0.0, 1 - j / size[1]), (1.0, 1 - j / size[1])] for j in range(size[1] + 1)]
             self.grid.set_segments(columns + rows)
-        # Only a new window is set: new limits drop the drag's recordings of the axes'
-        # lines (FigureView listens for them), and a step often keeps its window.
-        if self.axes.get_xlim() != (x0, x1) or self.axes.get_ylim() != (y1, y0):
-            self.axes.set_xlim(x0, x1)
-            self.axes.set_ylim(y1, y0)  # y down, as in the image
+        # Only new limits are set: they drop the drag's recordings of the axes' lines
+        # (FigureView listens for them), and most steps keep them.
+        x_limits, y_limits = (
+            ((x0, x1), (y1, y0)) if self.app is None else ((0, size[0]), (size[1], 0))
+        )
+        if self.axes.get_xlim() != x_limits or self.axes.get_ylim() != y_limits:
+            self.axes.set_xlim(*x_limits)
+            self.axes.set_ylim(*y_limits)  # y down, as in the image
         self.title.set_text(title)
         self.note.set_text(note)
         return window

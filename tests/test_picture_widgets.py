@@ -523,6 +523,37 @@ def test_fixed_text_draws_what_text_draws_and_falls_back_where_it_cannot():
         np.testing.assert_array_equal(fixed_frame, text_frame)
 
 
+@pytest.mark.parametrize(("align", "share"), [("center", 0.5), ("right", 1.0)])
+def test_steady_text_stands_where_text_puts_its_string_with_zeros_for_digits(align, share):
+    strings = ["RMSE here 0.123", "RMSE here 0.000", "at (500, 300)", "at (17, 9)", "(-4.5, 0.0)"]
+    for shown in strings:
+        zeros = shown.translate(str.maketrans("123456789", "000000000"))
+        drawn = []
+        for kind in ("steady", "placed by hand", "zeros by Text"):
+            view = FigureView(shape=(40, 240))
+            if kind == "steady":
+                text = text_cache.SteadyText(120.3, 14.6, shown, ha=align, va="bottom")
+            else:
+                width = view.canvas.get_renderer().get_text_width_height_descent(
+                    zeros, FontProperties(size=9), False
+                )[0]
+                text = (
+                    Text(120.3 - share * width, 14.6, shown, ha="left", va="bottom")
+                    if kind == "placed by hand"
+                    else Text(120.3, 14.6, zeros, ha=align, va="bottom")
+                )
+            text.set_transform(IdentityTransform())
+            text.set_fontsize(9)
+            text.set_animated(True)
+            view.figure.add_artist(text)
+            view.render_moving([text])
+            drawn.append(view.pixels())
+        assert (drawn[0][..., 0] < 200).any()
+        np.testing.assert_array_equal(drawn[0], drawn[1])  # the digits' own glyphs, in place
+        if shown == zeros:
+            np.testing.assert_array_equal(drawn[0], drawn[2])  # centred as Text centres it
+
+
 def test_a_replayed_line_is_drawn_as_matplotlib_draws_it_and_a_restyled_one_anew():
     def drag(change: str, replay: bool) -> list[np.ndarray]:
         view = FigureView(shape=(80, 120))

@@ -9,7 +9,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from course.widgets.browser_drawing import CommandRecorder
-from course.widgets.text_cache import FixedText
+from course.widgets.text_cache import FixedText, SteadyText
 from course.widgets.text_replay import TextReplay
 
 
@@ -111,6 +111,23 @@ def test_numbers_whose_characters_change_are_drawn_where_a_new_draw_puts_them(fi
         if not replay.draw(recorder):  # empty, several lines, mathtext: drawn by Text.draw
             assert string in ("", "$x$", "a\nb")
             continue
+        assert recorder.recorded() == _fresh(text, recorder)
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    first=numbers, later=st.lists(numbers, max_size=4), align=st.sampled_from(["center", "right"])
+)
+def test_steady_numbers_are_replayed_where_a_new_draw_puts_them(first, later, align):
+    axes, recorder = _axes()
+    text = axes.figure.add_artist(SteadyText(0.5, 0.1, f"at {first}", fontsize=10, ha=align))
+    recorder.start()
+    replay = TextReplay.record(text, recorder)
+    assert replay is not None
+    for string in later:
+        text.set_text(f"at {string}")
+        recorder.start()
+        assert replay.draw(recorder)
         assert recorder.recorded() == _fresh(text, recorder)
 
 

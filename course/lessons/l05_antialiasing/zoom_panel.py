@@ -34,6 +34,7 @@ from course.i18n import _
 from course.raster.canvas import crop
 from course.widgets.base import SliderApp
 from course.widgets.picture import ZoomedPixels
+from course.widgets.text_cache import SteadyText
 
 __all__ = ["CurveWalk", "ZoomPanel", "zoom_figure"]
 
@@ -105,9 +106,12 @@ class ZoomPanel:
         self._grid_size: tuple[int, int] | None = None
         (self.curve,) = axes.plot(curve[:, 0], curve[:, 1], color="#e8502f", linewidth=1.0)
         self.title = axes.set_title("", fontsize=9, pad=16 if app else 6)
-        self.note = axes.text(
+        # Its numbers change at every step of a drag: placed without measuring each one.
+        self.note = SteadyText(
             0.5, 1.015, "", transform=axes.transAxes, ha="center", va="bottom", fontsize=9
         )
+        self.note.set_clip_on(False)
+        axes.add_artist(self.note)
         axes.set_xticks([])
         axes.set_yticks([])
 

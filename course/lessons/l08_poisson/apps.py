@@ -30,6 +30,7 @@ from course.i18n import N_, _
 from course.poisson.sine_transform import harmonic_fill
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import ZoomedPixels, rounding_level
+from course.widgets.text_cache import SteadyText
 
 __all__ = [
     "CloneApp",
@@ -223,7 +224,22 @@ class CloneApp(SliderApp):
             self.panels[name] = axes
         still = _pixels_uint8(self.half_background)
         self.view.still_images.update(dict.fromkeys(self.panels.values(), still))
-        self.titles = {name: axes.set_title("", fontsize=10) for name, axes in self.panels.items()}
+        # Where the axes' titles stand; their numbers change at every step of a drag.
+        self.titles = {
+            name: axes.add_artist(
+                SteadyText(
+                    0.5,
+                    1.0,
+                    "",
+                    transform=axes.title.get_transform(),
+                    ha="center",
+                    va="baseline",
+                    fontsize=10,
+                    clip_on=False,
+                )
+            )
+            for name, axes in self.panels.items()
+        }
         self.animate(*self.titles.values())
         for axes in self.panels.values():
             self.highlight_ring(axes)

@@ -1,10 +1,13 @@
 """Lesson 05's apps: the sliders move the picture to what the library computes."""
 
+import math
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from matplotlib.figure import Figure
+from scipy.spatial import cKDTree
 
 from course.antialias import render
 from course.antialias.coverage import reference
@@ -137,8 +140,9 @@ def test_a_drags_reference_lies_between_the_references_of_a_stroke_a_hair_thinne
         thinner, _ = render_window(REFERENCE, points, SHAPE, centre, size, 1 - 2.5e-3, 16)
         thicker, _ = render_window(REFERENCE, points, SHAPE, centre, size, 1 + 2.5e-3, 16)
         assert (thinner <= app.windows[3]).all() and (app.windows[3] <= thicker).all()
-        assert app.panels[3].note.get_text() == "16 x 16 samples a pixel"
+        assert app.panels[3].note.get_text() == "16 x 16 samples a pixel" and app.walk.quick
     app.pointer("up", *np.add(start, offsets[-1]))
+    assert not app.walk.quick  # walked the usual way, even where the release did not move
     window, _extent = render_window(REFERENCE, app.points, SHAPE, app.centre(), size, 1.0, 16)
     np.testing.assert_array_equal(app.windows[3], window)
 
@@ -245,6 +249,27 @@ def test_zoom_app_clips_points_given_off_its_canvas_too():
     app = ZoomApp(CURVE * [1, -1], SHAPE, picks=PICKS, k=8)
     assert app.status.value.startswith("Clipped P0, P1, P2, P3 to the 140 x 140 canvas")
     assert (app.points[:, 1] == 0).all()
+
+
+@pytest.mark.parametrize("points", [CURVE, SEED_000_CUBIC, [[0, 0], [300, 40], [10, 60]]])
+def test_a_quick_walk_keeps_within_1e_3_of_the_curve_in_pieces_of_at_most_a_pixel(points):
+    control = np.asarray(points, dtype=float)
+    quick, usual = CurveWalk(control, quick=True), CurveWalk(control)
+    assert quick.quick and not usual.quick
+    line = quick.polyline
+    np.testing.assert_array_equal(line[[0, -1]], control[[0, -1]])
+    assert np.hypot(*np.diff(line, axis=0).T).max() <= 1.0 + 1e-9
+    # The curve, sampled densely by its Bernstein form, next to every vertex.
+    t = np.linspace(0.0, 1.0, 2_000_001)[:, None]
+    degree = len(control) - 1
+    curve = sum(
+        math.comb(degree, i) * t**i * (1 - t) ** (degree - i) * control[i]
+        for i in range(degree + 1)
+    )
+    distance, _index = cKDTree(curve).query(line)
+    assert distance.max() <= 1.1e-3
+    assert abs(quick.lengths[-1] - usual.lengths[-1]) <= 1e-3
+    np.testing.assert_allclose(quick.at(0.37), usual.at(0.37), atol=2e-3)
 
 
 def test_curve_walk_and_zoom_panel_refuse_what_they_cannot_draw():

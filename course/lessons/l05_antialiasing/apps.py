@@ -208,9 +208,11 @@ class ZoomApp(SliderApp):
         )
         if clipped:
             self.status.value = clipped
-        if not np.array_equal(points, self.points):
+        # A dragged curve's walk is the quick one; the release walks it the usual way.
+        dragged = self.grabbed is not None
+        if not np.array_equal(points, self.points) or self.walk.quick != dragged:
             self.points = points
-            self.walk = CurveWalk(points)
+            self.walk = CurveWalk(points, quick=dragged)
         return self.points
 
     def _on_canvas(self, points: np.ndarray) -> tuple[np.ndarray, str]:

@@ -136,15 +136,26 @@ function markerStamp(command, vertices, codes) {
   return [canvas, left, top];
 }
 
-// The commands of course/widgets/browser_drawing.py, in their order.
+// The commands of course/widgets/browser_drawing.py, in their order. A run of commands
+// with the same clip (a pixel grid's dozens of lines) sets it once: every command sets
+// the styles it draws with, and a text undoes its own transform.
+// (Saving and restoring the context around each of them cost more than drawing them.)
 function drawCommands(context, commands, pixels, vertices, codes) {
+  let clipped = null; // the clip in force, as its JSON: none at first
   for (const command of commands) {
     if (command.pixels) {
+      if (clipped !== null) context.restore(); // written whatever the clip
+      clipped = null;
       putPixels(context, pixels, command.pixels, command.at, command.zoom);
       continue;
     }
-    context.save();
-    clipTo(context, command.clip);
+    const clip = JSON.stringify(command.clip ?? null);
+    if (clip !== clipped) {
+      if (clipped !== null) context.restore();
+      context.save();
+      clipTo(context, command.clip);
+      clipped = clip;
+    }
     if (command.path) {
       context.beginPath();
       trace(context, vertices, codes, command.path);
@@ -172,9 +183,10 @@ function drawCommands(context, commands, pixels, vertices, codes) {
       context.translate(command.x, command.y);
       context.rotate((-command.angle * Math.PI) / 180);
       context.fillText(command.text, 0, 0);
+      context.resetTransform(); // no other command sets one
     }
-    context.restore();
   }
+  if (clipped !== null) context.restore();
 }
 
 function render({ model, el }) {

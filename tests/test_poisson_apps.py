@@ -1,5 +1,7 @@
 """course.lessons.l08_poisson.apps: the sweep slider shows the library's iterate and its error."""
 
+import re
+
 import numpy as np
 import pytest
 import scipy.ndimage
@@ -107,3 +109,17 @@ def test_the_offset_box_says_what_is_wrong_with_the_one_point_typed(text, said):
     assert app.status.value.startswith("Kept the last offset: ")
     assert "point 1" not in app.status.value and "separate points" not in app.status.value
     assert tuple(app.offset) == (4, 6)
+
+
+@pytest.mark.parametrize(
+    ("shape", "said"),
+    [
+        ((2, 5), "foreground must be at least 3 x 3 pixels"),
+        ((30, 5), "foreground of shape (30, 5) at offset (x, y) = (0, 0) does not fit inside"),
+    ],
+)
+def test_the_clone_app_refuses_a_foreground_without_an_inside_or_larger_than_the_background(
+    shape, said
+):
+    with pytest.raises(ValueError, match=re.escape(said)):
+        CloneApp(np.zeros((20, 20)), np.ones(shape), (1, 1))

@@ -27,6 +27,8 @@ from course._validate import (
     require_finite,
 )
 from course.i18n import N_, _
+from course.poisson._threads import limited_threads
+from course.poisson.inputs import clone_inputs
 from course.poisson.sine_transform import harmonic_fill
 from course.widgets.base import Handle, SliderApp, format_points
 from course.widgets.picture import ZoomedPixels, rounding_level
@@ -198,6 +200,9 @@ class CloneApp(SliderApp):
                     foreground_shape=self.foreground.shape, background_shape=self.background.shape
                 )
             )
+        # As seamless_clone refuses them: a foreground without an inside, or larger than
+        # the background (at no offset would it fit).
+        clone_inputs(self.background, self.foreground, (0, 0), None)
         self.half_background = half_size(self.background)
         # The panels' half-size pictures are the background but for the window the
         # foreground's blocks cover: only that window moves (FigureView.still_images).
@@ -279,7 +284,9 @@ class CloneApp(SliderApp):
         height, width = self.foreground.shape[:2]
         window = self.background[y : y + height, x : x + width]
         planes = (window - self.foreground).reshape(height, width, -1).transpose(2, 0, 1)
-        fill = harmonic_fill(planes).transpose(1, 2, 0).reshape(self.foreground[1:-1, 1:-1].shape)
+        with limited_threads():  # as the solvers run their transforms
+            fill = harmonic_fill(planes)
+        fill = fill.transpose(1, 2, 0).reshape(self.foreground[1:-1, 1:-1].shape)
         return np.clip(self.foreground[1:-1, 1:-1] + fill, 0.0, 1.0)
 
     @property

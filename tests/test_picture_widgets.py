@@ -717,11 +717,15 @@ def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
     printed = picture_js_in_node(tmp_path, DRAWING_HARNESS)
     assert printed["warnings"] == [] and printed["after"] == []
     assert printed["shown"] == "V1"
-    two = "10,20,30,255," * 2 + "40,50,60,255," * 2
     assert printed["first"] == [
         "drawImage(BACK,0,0)",
-        # The pixels, each 2 x 2, written from (1, 2) as they are, unclipped.
-        f"putImageData(4x2:{(two * 2)[:-1]},1,2)",
+        # The pixels as they are, on a canvas of their own size, then drawn each
+        # 2 x 2 from (1, 2), unsmoothed and unclipped.
+        "putImageData(2x1:10,20,30,255,40,50,60,255,0,0)",
+        "save()",
+        "imageSmoothingEnabled=false",
+        "drawImage([object Object],1,2,4,2)",
+        "restore()",
         # The path: clipped, traced, stroked half-transparent with its dashes.
         "save()",
         "beginPath()",
@@ -737,18 +741,16 @@ def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
         "setLineDash(3,2)",
         "lineDashOffset=1",
         "stroke()",
+        # The marker, unclipped: the path's clip goes. A closed triangle at
+        # (2.5, 3.5), filled, not stroked.
         "restore()",
-        # The marker, a closed triangle, at (2.5, 3.5): filled, not stroked.
-        "save()",
         "beginPath()",
         "moveTo(2.5,2.5)",
         "lineTo(3.5,4.5)",
         "closePath()",
         "fillStyle=rgba(0, 0, 255, 1)",
         "fill()",
-        "restore()",
-        # The text at its baseline's start, turned as matplotlib turns it.
-        "save()",
+        # The text at its baseline's start, turned as matplotlib turns it, then turned back.
         'font=italic 700 12.5px "DejaVu Sans", sans-serif',
         "fillStyle=rgba(0, 0, 0, 1)",
         "textAlign=left",
@@ -756,8 +758,44 @@ def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
         "translate(1,3)",
         f"rotate({-math.pi / 2})",
         "fillText(B(t),0,0)",
-        "restore()",
+        "resetTransform()",
     ]
+
+
+CLIP_RUN_HARNESS = (
+    RECORDING_CONTEXT
+    + r"""
+const vertices = new Float32Array([0, 0, 1, 1]);
+const codes = new Uint8Array([1, 2]);
+const line = { path: [0, 2], stroke: [0, 0, 0, 1], fill: null, width: 1, dash: null,
+  cap: "butt", join: "round", clip: [0, 0, 5, 4] };
+const commands = [line, line, { pixels: [0, 1, 1], at: [0, 0], zoom: 1 }, line,
+  { ...line, clip: [1, 1, 2, 2] }];
+const listed = new TextEncoder().encode(JSON.stringify(commands));
+handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [
+  new TextEncoder().encode("BACK"), new Uint8Array([1, 2, 3]), listed, vertices.buffer,
+  codes.buffer,
+]);
+await turns(50);
+console.log(JSON.stringify({ calls }));
+"""
+)
+
+
+@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
+def test_picture_js_sets_a_run_s_clip_once_and_writes_pixels_whatever_the_clip(tmp_path):
+    calls = picture_js_in_node(tmp_path, CLIP_RUN_HARNESS)["calls"]
+    shown = [call for call in calls if call in ("save()", "restore()", "clip()", "stroke()")]
+    shown += [call for call in calls if call.startswith(("putImageData", "rect"))]
+    assert shown == [
+        *("save()", "clip()", "stroke()", "stroke()", "restore()"),  # two lines, one clip
+        *("save()", "clip()", "stroke()", "restore()"),  # after the pixels, clipped anew
+        *("save()", "clip()", "stroke()", "restore()"),  # another clip
+        *("rect(0,0,5,4)", "putImageData(1x1:1,2,3,255,0,0)", "rect(0,0,5,4)", "rect(1,1,2,2)"),
+    ]
+    # The pixels come between the first clip's restore and the second's save.
+    first_restore = calls.index("restore()")
+    assert calls.index("putImageData(1x1:1,2,3,255,0,0)") == first_restore + 1
 
 
 STAMP_HARNESS = (

@@ -88,7 +88,7 @@ function fillAndStroke(context, style) {
 // of their own size, scaled by whole pixels without smoothing: each pixel's square
 // (writing every picture pixel of four 192 x 192 panels in script cost more).
 function putPixels(context, pixels, [start, width, height], [left, top], zoom) {
-  const image = new ImageData(width, height);
+  const image = context.createImageData(width, height);
   // A pixel as one 32-bit word, its bytes R, G, B, A in memory (every browser's
   // platform is little-endian).
   const words = new Uint32Array(image.data.buffer);
@@ -149,11 +149,13 @@ function drawCommands(context, commands, pixels, vertices, codes) {
       putPixels(context, pixels, command.pixels, command.at, command.zoom);
       continue;
     }
-    const clip = JSON.stringify(command.clip ?? null);
+    const clip = command.clip ? JSON.stringify(command.clip) : null;
     if (clip !== clipped) {
       if (clipped !== null) context.restore();
-      context.save();
-      clipTo(context, command.clip);
+      if (clip !== null) {
+        context.save();
+        clipTo(context, command.clip);
+      }
       clipped = clip;
     }
     if (command.path) {

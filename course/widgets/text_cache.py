@@ -289,6 +289,12 @@ class FixedText(Text):
         renderer.close_group("text")
         self.stale = False
 
+    def _position(self) -> tuple[float, float]:
+        """Its position in display pixels, through its transform, as Text.draw finds it."""
+        return self.get_transform().transform(
+            (float(self.convert_xunits(self._x)), float(self.convert_yunits(self._y)))
+        )
+
     def _origin(self, renderer: Any, text: str) -> tuple[float, float] | None:
         """Where Text.draw would draw ``text``: measured for its ascent and descent once."""
         place = (
@@ -321,9 +327,7 @@ class FixedText(Text):
             # Text.draw's own arithmetic, on this text's layout.
             _, info, _ = self._get_layout(renderer)
             x, y = info[0][2]
-            posx, posy = self.get_transform().transform(
-                (float(self.convert_xunits(self._x)), float(self.convert_yunits(self._y)))
-            )
+            posx, posy = self._position()
             x, y = x + posx, y + posy
             if renderer.flipy():
                 y = renderer.get_canvas_width_height()[1] - y
@@ -369,10 +373,7 @@ class SteadyText(FixedText):
             self._widths[key] = renderer.get_text_width_height_descent(
                 zeros, self._fontproperties, False
             )[0]
-        x, _ = self.get_transform().transform(
-            (float(self.convert_xunits(self._x)), float(self.convert_yunits(self._y)))
-        )
-        return x - share * self._widths[key], origin[1]
+        return self._position()[0] - share * self._widths[key], origin[1]
 
 
 _DIGITS_AS_ZEROS = str.maketrans("123456789", "000000000")

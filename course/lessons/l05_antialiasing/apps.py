@@ -245,7 +245,9 @@ class ZoomApp(SliderApp):
         centre, size = self.centre(), self.value("size")
         extent = crop_extent(self.shape, centre, size)
         left, right, bottom, top = extent
+        # In the window's pixels from its corner: the panels' data (ZoomPanel).
         line, gaps = self._near_pieces(extent)
+        line = line - (left, top)
         if self.grabbed is None:
             k = self.k
             truth, _extent = render_window(
@@ -253,9 +255,8 @@ class ZoomApp(SliderApp):
             )
         else:
             k = min(self.k, 16)
-            truth = self._dragged_reference(line, gaps, extent, k)
-        # In the panels' data: the window's pixels from its corner (ZoomPanel).
-        near = np.insert(line - (left, top), np.flatnonzero(gaps) + 1, np.nan, axis=0)
+            truth = self._dragged_reference(line, gaps, (bottom - top, right - left), k)
+        near = np.insert(line, np.flatnonzero(gaps) + 1, np.nan, axis=0)
         self.window_box.set_bounds(left, top, right - left, bottom - top)
         self.windows = []
         titles = [self.value(slot) for slot in ("left", "middle", "right")]
@@ -295,9 +296,10 @@ class ZoomApp(SliderApp):
         return line[keep], np.diff(keep) > 1
 
     def _dragged_reference(
-        self, line: np.ndarray, gaps: np.ndarray, extent: tuple[int, int, int, int], k: int
+        self, line: np.ndarray, gaps: np.ndarray, window: tuple[int, int], k: int
     ) -> np.ndarray:
-        """The reference in the window during a drag, from the pieces of the app's polyline.
+        """The reference in the ``window`` (H, W) during a drag, from the pieces of the
+        app's polyline moved to its corner.
 
         That polyline (flattened to 1e-3 pixel for the walk) stands in for the
         reference's own (1e-4, the whole curve flattened again): no sample
@@ -305,11 +307,9 @@ class ZoomApp(SliderApp):
         of the 16 x 16. Every segment within reach of the window is among the
         pieces; the release draws the reference as :func:`render_window` does.
         """
-        left, right, bottom, top = extent
         if len(line) < 2:
-            return np.zeros((bottom - top, right - left))
-        window = (bottom - top, right - left)
-        return polyline_coverage(line - (left, top), gaps, window, self.stroke_width, k)
+            return np.zeros(window)
+        return polyline_coverage(line, gaps, window, self.stroke_width, k)
 
     def handles(self) -> list[Handle]:
         return [Handle(f"P{i}", self.overview, tuple(p)) for i, p in enumerate(self.points)]

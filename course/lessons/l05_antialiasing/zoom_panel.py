@@ -141,11 +141,18 @@ class ZoomPanel:
         (self.curve,) = axes.plot(curve[:, 0], curve[:, 1], color="#e8502f", linewidth=1.0)
         self.title = axes.set_title("", fontsize=9, pad=16 if app else 6)
         # Its numbers change at every step of a drag: placed without measuring each one.
-        self.note = SteadyText(
-            0.5, 1.015, "", transform=axes.transAxes, ha="center", va="bottom", fontsize=9
+        self.note = axes.add_artist(
+            SteadyText(
+                0.5,
+                1.015,
+                "",
+                transform=axes.transAxes,
+                ha="center",
+                va="bottom",
+                fontsize=9,
+                clip_on=False,
+            )
         )
-        self.note.set_clip_on(False)
-        axes.add_artist(self.note)
         axes.set_xticks([])
         axes.set_yticks([])
 

@@ -56,3 +56,24 @@ def test_a_changed_artist_or_a_whole_draw_drops_the_replay():
     assert view._command_replays == {}
     view.render_moving([line, grid], patches=True)
     assert sent[-1][-3].count(b'"stroke":[0.0,0.0,1.0,1.0]') == 9
+
+
+def test_a_replayed_run_of_paths_skips_the_empty_ones_as_a_fresh_draw_does():
+    view, axes, line, _grid = _view_with_grid()
+    nan = float("nan")
+    segments = [[(0, 1), (8, 1)], [(nan, nan), (nan, nan)], [(0, 2), (8, 2)], [(0, 3), (8, 5)]]
+    ragged = axes.add_collection(LineCollection(segments, color="0.2", animated=True))
+    recorder = CommandRecorder(view.canvas.get_renderer())
+    recorder.start()
+    replay = StillReplay.record(ragged, recorder)
+    fresh = recorder.finish()
+    assert [method for method, _ in replay.calls] == ["_paths"]  # one run, not four calls
+    assert len(recorder.recorded()) == 3  # the NaN segment draws nothing
+    recorder.start()
+    line.draw(recorder)
+    assert replay.draw(recorder)
+    replayed = recorder.finish()
+    recorder.start()
+    line.draw(recorder)
+    ragged.draw(recorder)
+    assert replayed == recorder.finish() and fresh[2] in replayed[2]

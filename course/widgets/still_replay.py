@@ -18,8 +18,10 @@ apps made (``UNCHECKED = True``).
 
 from __future__ import annotations
 
+import itertools
 from typing import Any
 
+import numpy as np
 from matplotlib.artist import Artist
 
 __all__ = ["StillReplay"]
@@ -50,7 +52,15 @@ class StillReplay:
     """
 
     def __init__(self, artist: Artist, calls: list[tuple[str, tuple]]) -> None:
-        self.artist, self.calls = artist, calls
+        self.artist = artist
+        # A grid's dozens of paths, stored and named in one go: one call, not one a path.
+        self.calls: list[tuple[str, tuple]] = []
+        for method, group in itertools.groupby(calls, key=lambda call: call[0]):
+            group = list(group)
+            if method == "_add_cleaned" and len(group) > 1:
+                self.calls.append(("_paths", _path_run([arguments for _, arguments in group])))
+            else:
+                self.calls.extend(group)
 
     @classmethod
     def record(cls, artist: Artist, recorder: Any) -> StillReplay | None:
@@ -67,5 +77,37 @@ class StillReplay:
         if self.artist.stale:
             return False
         for method, arguments in self.calls:
-            getattr(recorder, method)(*arguments)
+            if method == "_paths":
+                _add_path_run(recorder, *arguments)
+            else:
+                getattr(recorder, method)(*arguments)
         return True
+
+
+def _path_run(calls: list[tuple]) -> tuple[list[tuple[int, int, str]], np.ndarray, np.ndarray]:
+    """``_add_cleaned``'s arguments for several paths as one run: each path's (start in the
+    run, count, style), and the run's vertices and codes, each path's closing STOP left out."""
+    kept = [(style, vertices, codes) for style, vertices, codes in calls if len(codes) > 1]
+    counts = [len(codes) - 1 for _, _, codes in kept]
+    starts = list(itertools.accumulate(counts, initial=0))[:-1]
+    paths = [
+        (start, count, style)
+        for start, count, (style, _, _) in zip(starts, counts, kept, strict=True)
+    ]
+    if not kept:
+        return paths, np.zeros((0, 2)), np.zeros(0, np.uint8)
+    vertices = np.concatenate([vertices[:-1] for _, vertices, _ in kept])
+    codes = np.concatenate([codes[:-1] for _, _, codes in kept])
+    return paths, vertices, codes
+
+
+def _add_path_run(recorder: Any, paths: list, vertices: np.ndarray, codes: np.ndarray) -> None:
+    """What ``recorder._add_cleaned`` makes of each of a run's paths, stored at once."""
+    if recorder.log is not None:  # a replay being recorded: the run stays one
+        recorder.log.append(("_paths", (paths, vertices, codes)))
+    if not paths:
+        return
+    first, _count = recorder._add(vertices, codes)
+    recorder.commands.extend(
+        f'{{"path":[{first + start},{count}],{style}}}' for start, count, style in paths
+    )

@@ -374,3 +374,36 @@ def test_curve_samples_refuses_a_step_too_fine():
 
     with pytest.raises(ValueError, match="step must give at most"):
         curve_samples([[0.0, 1.0], [4.0, 1.0]], 1e-9)
+
+
+@pytest.mark.parametrize("kind", SPLATS)
+@given(samples=any_samples, height=st.integers(1, 20), width=st.integers(1, 20))
+def test_a_sample_render_leaves_out_paints_nothing_on_the_canvas(kind, samples, height, width):
+    from course.antialias._render import _touching
+    from course.antialias.splats import splat_points
+    from course.raster._paint import on_canvas
+
+    touching = _touching(samples, (height, width))
+    left_out = samples if touching is None else samples[~touching]
+    if touching is None:
+        left_out = left_out[:0]
+    pixels, _weights = splat_points(left_out, kind)
+    assert not on_canvas(pixels, (height, width)).any()
+
+
+@pytest.mark.parametrize("method", SPLATS)
+@pytest.mark.parametrize("weighting", ["count", "arc_length"])
+def test_a_small_canvas_on_a_long_curve_is_painted_as_by_every_sample(method, weighting):
+    from course.antialias import _render
+
+    points = np.array(SEED_000_CUBIC, dtype=float) - (320, 149)  # a 16 x 16 window on it
+    drawn = render(points, (16, 16), method, weighting=weighting)
+    original = _render._touching
+    _render._touching = lambda samples, canvas: None
+    try:
+        every = render(points, (16, 16), method, weighting=weighting)
+    finally:
+        _render._touching = original
+    assert drawn.any() and np.array_equal(drawn, every)
+    samples = _render.evaluate(points, np.linspace(0.0, 1.0, 1001))
+    assert original(samples, (16, 16)).sum() < 100  # the rest were left out

@@ -38,6 +38,7 @@ from course.raster.canvas import painted
 __all__ = [
     "ARC_LENGTH_SPACING",
     "DEFAULT_STEP",
+    "SPLAT_REACH",
     "STROKE_TOLERANCE",
     "agg_coverage",
     "agg_stroke",
@@ -59,6 +60,8 @@ DEFAULT_STEP = 0.001
 ARC_LENGTH_SPACING = 0.5
 # Largest distance from the flattened curve to the true one in the stroke methods.
 STROKE_TOLERANCE = 0.01
+# Farther than any splat paints from its sample, in pixels (bilinear: 1.5, rounded up).
+SPLAT_REACH = 3.0
 
 
 def render_path(
@@ -93,15 +96,37 @@ def render_path(
         if np.floor(1 / own_step * (1 + 1e-12)) + 2 > limits.MAX_STEP_SAMPLES:
             require_step_samples(own_step, "step")  # one curve's samples, refused as before
         samples = checked_samples(evaluate(control, uniform_steps(own_step, "exact")))
+        lengths = arc_length_weights(samples) if weighting == "arc_length" else None
+        # A window of a long curve (render_window) is touched by a few of its thousand.
+        touching = _touching(samples, canvas)
+        if touching is not None:
+            samples = samples[touching]
+            lengths = None if lengths is None else lengths[touching]
         pixels, weights = splat_points(samples, method)
-        if weighting == "arc_length":
-            spread = np.repeat(arc_length_weights(samples) * width, PIXELS_PER_SAMPLE[method])
+        if lengths is not None:
+            spread = np.repeat(lengths * width, PIXELS_PER_SAMPLE[method])
             weights = np.minimum(weights * spread, 1)
         all_pixels.append(pixels)
         all_weights.append(weights)
     if len(all_pixels) > 1:
         all_pixels, all_weights = [np.concatenate(all_pixels)], [np.concatenate(all_weights)]
     return painted_white(canvas, all_pixels[0], all_weights[0])
+
+
+def _touching(samples: np.ndarray, canvas: tuple[int, int]) -> np.ndarray | None:
+    """Which samples' splats can reach the canvas (None when all can).
+
+    Every splat paints within :data:`SPLAT_REACH` pixels of its sample: the
+    others add nothing, as the canvas drops their pixels, and the order of
+    the rest is kept, so the sums are the same.
+    """
+    height, width = canvas
+    x, y = samples[:, 0], samples[:, 1]
+    touching = (
+        (x >= -SPLAT_REACH) & (x <= width + SPLAT_REACH) & (y >= -SPLAT_REACH)
+        & (y <= height + SPLAT_REACH)
+    )  # fmt: skip
+    return None if touching.all() else touching
 
 
 def stroke_linear_coverage(

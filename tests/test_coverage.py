@@ -139,6 +139,54 @@ def test_reference_is_the_fraction_of_samples_within_half_the_width(control, wid
     assert np.all(surely - 1e-12 <= image) and np.all(image <= maybe + 1e-12)
 
 
+@settings(max_examples=12, deadline=None)
+@given(
+    control=st.lists(
+        st.tuples(st.floats(-2, 10, allow_nan=False), st.floats(-2, 10, allow_nan=False)),
+        min_size=2,
+        max_size=3,
+    ),
+    width=st.sampled_from([0.3, 1.0, 2.0]),
+    k=st.sampled_from([63, 64, 65, 130]),
+)
+def test_reference_counts_the_samples_of_rows_longer_than_a_word(control, width, k):
+    # Each row's samples are bits of 64-bit words: at 64 they fill one word, past it two or more.
+    curve = np.array(control, dtype=float)
+    shape = (6, 7)
+    image = reference(curve, shape, width, k=k)
+    line = curve_polyline(curve, 1e-4)
+    grid = (np.arange(k) + 0.5) / k
+    ys, xs = np.mgrid[0 : shape[0], 0 : shape[1]]
+    size = (*shape, k, k)
+    samples_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(*shape, -1)
+    samples_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(*shape, -1)
+    nearest = np.full(samples_x.shape, np.inf)
+    for a, b in itertools.pairwise(line):
+        distance, _, _ = segment_distance(samples_x, samples_y, a, b)
+        nearest = np.minimum(nearest, distance)
+    surely = np.mean(nearest <= width / 2 - 1e-9, axis=-1)
+    maybe = np.mean(nearest <= width / 2 + 1e-9, axis=-1)
+    assert np.all(surely - 1e-12 <= image) and np.all(image <= maybe + 1e-12)
+
+
+@given(
+    spans=st.lists(st.tuples(st.integers(0, 130), st.integers(0, 130)), min_size=1, max_size=20),
+    k=st.integers(1, 130),
+)
+def test_a_row_s_samples_are_the_bits_of_its_columns(spans, k):
+    from course.antialias._reference import _row_words
+
+    first = np.array([min(a, b, k) for a, b in spans])
+    stop = np.array([min(max(a, b), k) for a, b in spans])
+    words = _row_words(first, stop, k)
+    bits = np.unpackbits(words.astype("<u8").view(np.uint8), axis=-1, bitorder="little")
+    expected = (np.arange(bits.shape[1]) >= first[:, None]) & (
+        np.arange(bits.shape[1]) < stop[:, None]
+    )
+    assert words.shape == (len(spans), -(-k // 64))
+    np.testing.assert_array_equal(bits.astype(bool), expected)
+
+
 def agg_polyline(line, shape, width=1.0):
     """Agg stroking a fine polyline, matplotlib's simplification off."""
     path = Path(line)

@@ -77,6 +77,25 @@ def test_reference_converges_to_the_exact_area_as_k_grows(angle):
     assert errors[-1] <= errors[0] / 6
 
 
+def sample_grid(shape, k):
+    """The reference's k x k sample points of every pixel: x and y, (H, W, k * k)."""
+    grid = (np.arange(k) + 0.5) / k
+    ys, xs = np.mgrid[0 : shape[0], 0 : shape[1]]
+    size = (*shape, k, k)
+    samples_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(*shape, -1)
+    samples_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(*shape, -1)
+    return samples_x, samples_y
+
+
+def polyline_distance(samples_x, samples_y, line):
+    """Each sample's distance to the nearest segment of ``line``."""
+    nearest = np.full(samples_x.shape, np.inf)
+    for a, b in itertools.pairwise(line):
+        distance, _, _ = segment_distance(samples_x, samples_y, a, b)
+        nearest = np.minimum(nearest, distance)
+    return nearest
+
+
 def test_reference_holds_the_stroke_area():
     # Width x length plus the two half-disc caps.
     for width in (1.0, 3.0):
@@ -93,15 +112,7 @@ def test_reference_wide_stroke_agrees_with_sampling_every_pixel():
     width, k = 3.0, 8
     image = reference(curve, (16, 18), width, k=k)
     line = curve_polyline(curve, 1e-4)
-    grid = (np.arange(k) + 0.5) / k
-    ys, xs = np.mgrid[0:16, 0:18]
-    size = (16, 18, k, k)
-    points_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(16, 18, -1)
-    points_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(16, 18, -1)
-    nearest = np.full(points_x.shape, np.inf)
-    for a, b in itertools.pairwise(line):
-        distance, _, _ = segment_distance(points_x, points_y, a, b)
-        nearest = np.minimum(nearest, distance)
+    nearest = polyline_distance(*sample_grid((16, 18), k), line)
     np.testing.assert_allclose(image, np.mean(nearest <= width / 2, axis=-1), atol=1e-12)
     assert image.max() == 1.0
 
@@ -124,15 +135,7 @@ def test_reference_is_the_fraction_of_samples_within_half_the_width(control, wid
     shape = (11, 12)
     image = reference(curve, shape, width, k=k)
     line = curve_polyline(curve, 1e-4)
-    grid = (np.arange(k) + 0.5) / k
-    ys, xs = np.mgrid[0 : shape[0], 0 : shape[1]]
-    size = (*shape, k, k)
-    samples_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(*shape, -1)
-    samples_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(*shape, -1)
-    nearest = np.full(samples_x.shape, np.inf)
-    for a, b in itertools.pairwise(line):
-        distance, _, _ = segment_distance(samples_x, samples_y, a, b)
-        nearest = np.minimum(nearest, distance)
+    nearest = polyline_distance(*sample_grid(shape, k), line)
     # A sample within rounding of the edge may fall either way.
     surely = np.mean(nearest <= width / 2 - 1e-9, axis=-1)
     maybe = np.mean(nearest <= width / 2 + 1e-9, axis=-1)
@@ -155,15 +158,7 @@ def test_reference_counts_the_samples_of_rows_longer_than_a_word(control, width,
     shape = (6, 7)
     image = reference(curve, shape, width, k=k)
     line = curve_polyline(curve, 1e-4)
-    grid = (np.arange(k) + 0.5) / k
-    ys, xs = np.mgrid[0 : shape[0], 0 : shape[1]]
-    size = (*shape, k, k)
-    samples_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(*shape, -1)
-    samples_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(*shape, -1)
-    nearest = np.full(samples_x.shape, np.inf)
-    for a, b in itertools.pairwise(line):
-        distance, _, _ = segment_distance(samples_x, samples_y, a, b)
-        nearest = np.minimum(nearest, distance)
+    nearest = polyline_distance(*sample_grid(shape, k), line)
     surely = np.mean(nearest <= width / 2 - 1e-9, axis=-1)
     maybe = np.mean(nearest <= width / 2 + 1e-9, axis=-1)
     assert np.all(surely - 1e-12 <= image) and np.all(image <= maybe + 1e-12)
@@ -328,11 +323,7 @@ def test_a_path_reference_is_dense_sampling_of_the_union_of_its_curves(curves, w
     # the stroke when it lies within width / 2 of any curve of the path.
     k, shape = 3, (13, 13)
     image = reference(curves, shape, width, k=k)
-    grid = (np.arange(k) + 0.5) / k
-    ys, xs = np.mgrid[0 : shape[0], 0 : shape[1]]
-    size = (*shape, k, k)
-    samples_x = np.broadcast_to(xs[..., None, None] + grid, size).reshape(*shape, -1)
-    samples_y = np.broadcast_to(ys[..., None, None] + grid[:, None], size).reshape(*shape, -1)
+    samples_x, samples_y = sample_grid(shape, k)
     nearest = dense_distance(samples_x, samples_y, [c for c in curves if len(c) > 1], 400)
     for dot in (c for c in curves if len(c) == 1):
         nearest = np.minimum(nearest, np.hypot(samples_x - dot[0, 0], samples_y - dot[0, 1]))

@@ -175,6 +175,26 @@ def test_clipping_only_clips():
     np.testing.assert_allclose(clipped, np.clip(raw, 0, 1), rtol=0, atol=1e-12)
 
 
+@pytest.mark.parametrize("rgb", [True, False])
+def test_the_problem_and_the_paste_take_the_masked_pixels_of_every_channel(rgb):
+    # The masked copies go a channel at a time (course.poisson._build): check them against
+    # np.where with the mask broadcast over the channels, on a Fortran-ordered background.
+    background, foreground = scene(rgb)
+    background = np.asfortranarray(background)
+    mask = mask_for(foreground.shape[:2])
+    problem = poisson.clone_problem(background, foreground, (5, 4), mask=mask)
+    x, y = problem.corner
+    height, width = problem.region.shape
+    window = (slice(y, y + height), slice(x, x + width))
+    crop = (slice(y - 4, y - 4 + height), slice(x - 5, x - 5 + width))
+    selected = problem.region if not rgb else problem.region[..., None]
+    assert np.array_equal(problem.values, np.where(selected, foreground[crop], background[window]))
+    solution = np.random.default_rng(2).random(problem.values.shape)
+    expected = background.copy()
+    expected[window] = np.where(selected, solution, background[window])
+    assert np.array_equal(problem.paste(background, solution), expected)
+
+
 def test_inputs_are_not_modified():
     background, foreground = scene()
     mask = mask_for(foreground.shape[:2])

@@ -20,7 +20,7 @@ import numpy as np
 from course import limits
 from course.i18n import _
 from course.poisson import solvers
-from course.poisson._layout import clipped_window, mask_for
+from course.poisson._layout import clipped_window
 
 __all__ = ["clone_problem_of", "guidance_sum", "inpaint_problem_of", "paste", "problem_of"]
 
@@ -68,14 +68,16 @@ def clone_problem_of(
     if mask is None:
         mask = np.zeros((height, width), bool)
         mask[1:-1, 1:-1] = True
-    rows, columns = np.nonzero(mask)
-    top, bottom = rows.min() - 1, rows.max() + 2
-    left, right = columns.min() - 1, columns.max() + 2
+    # The masked rows and columns, from two reductions: np.nonzero of a 2-D mask is slow.
+    rows, columns = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
+    top, bottom = rows[0] - 1, rows[-1] + 2
+    left, right = columns[0] - 1, columns[-1] + 2
     region = mask[top:bottom, left:right].copy()
     crop = (corner[0] + left, corner[1] + top)
     f = foreground[top:bottom, left:right]
     b = clipped_window(background, crop, region.shape)
-    values = np.where(mask_for(region, f), f, b)
+    values = b.copy()
+    _copy_where(values, f, region)
     source = guidance_sum(f, b, region, guidance)
     return problem_of(kind, values, region, source, (int(crop[0]), int(crop[1])))
 
@@ -125,5 +127,27 @@ def paste(problem: Any, image: np.ndarray, window: np.ndarray) -> np.ndarray:
     if problem.rectangular:  # a slice copies several times faster than a mask
         target[1:-1, 1:-1] = window[1:-1, 1:-1]
     else:
-        np.copyto(target, window, where=mask_for(problem.region, window))
+        _copy_where(target, window, problem.region)
     return result
+
+
+def _copy_where(target: np.ndarray, source: np.ndarray, mask: np.ndarray) -> None:
+    """``source``'s pixels where the ``(h, w)`` ``mask`` is True into ``target``, in place.
+
+    A channel at a time: with the mask broadcast over the channels
+    (:func:`~course.poisson._layout.mask_for`), numpy copies three values per
+    inner loop, and the clone spent a twentieth of its time in two such copies.
+
+    Examples
+    --------
+    >>> target = np.zeros((1, 2, 3))
+    >>> _copy_where(target, np.ones((1, 2, 3)), np.array([[False, True]]))
+    >>> target[0]
+    array([[0., 0., 0.],
+           [1., 1., 1.]])
+    """
+    if source.ndim == 2:
+        np.copyto(target, source, where=mask)
+        return
+    for channel in range(source.shape[-1]):
+        np.copyto(target[..., channel], source[..., channel], where=mask)

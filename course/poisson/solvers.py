@@ -110,7 +110,7 @@ def defect(u: np.ndarray, region: np.ndarray, source: np.ndarray) -> np.ndarray:
     """
     out = np.zeros_like(u)
     inner = neighbour_sum(u) + source[:, 1:-1, 1:-1] - 4.0 * u[:, 1:-1, 1:-1]
-    out[:, 1:-1, 1:-1] = np.where(region[1:-1, 1:-1], inner, 0.0)
+    np.copyto(out[:, 1:-1, 1:-1], inner, where=region[1:-1, 1:-1])  # no temporary, unlike where
     return out
 
 

@@ -77,3 +77,21 @@ def test_a_replayed_run_of_paths_skips_the_empty_ones_as_a_fresh_draw_does():
     line.draw(recorder)
     ragged.draw(recorder)
     assert replayed == recorder.finish() and fresh[2] in replayed[2]
+
+
+def test_a_hidden_artist_is_neither_drawn_nor_recorded_until_it_shows_again():
+    view, axes, line, _grid = _view_with_grid()
+    box = axes.add_patch(Rectangle((1, 1), 2, 3, edgecolor="red", fill=False, animated=True))
+    box.set_visible(False)
+    sent = []
+    view.image.send = lambda content, buffers=None: sent.append(buffers)
+    view.render_moving([line, box])
+    for step in range(2):
+        line.set_data([0, 8], [step, 6])
+        view.render_moving([line, box], patches=True)
+    assert box not in view._command_replays
+    assert all(b'"stroke":[1.0,0.0,0.0,1.0]' not in buffers[-3] for buffers in sent)
+    box.set_visible(True)
+    line.set_data([0, 8], [3, 6])
+    view.render_moving([line, box], patches=True)
+    assert sent[-1][-3].count(b'"stroke":[1.0,0.0,0.0,1.0]') == 1

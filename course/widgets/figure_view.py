@@ -367,9 +367,9 @@ class FigureView:
             recorder.add_pixels(left + column, top + row, image.pixels, image.zoom)
         replays = self._command_replays
         try:
-            for artist in artists:
+            for artist in artists:  # a hidden one draws nothing, and stays stale: not recorded
                 replay = replays.get(artist)
-                if replay is not None and replay.draw(recorder):
+                if not artist.get_visible() or (replay is not None and replay.draw(recorder)):
                     continue
                 if empty_line(artist):
                     continue

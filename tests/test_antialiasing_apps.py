@@ -11,7 +11,8 @@ from scipy.spatial import cKDTree
 
 from course.antialias import render
 from course.antialias.coverage import reference
-from course.antialias.curve_quality import REFERENCE, intensity_along, render_window
+from course.antialias.curve_quality import REFERENCE, intensity_along
+from course.antialias.windows import render_window
 from course.i18n import language
 from course.images import SEED_000_CUBIC
 from course.lessons.l05_antialiasing.apps import StepApp, ZoomApp, label_of

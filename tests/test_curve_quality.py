@@ -16,11 +16,11 @@ from course.antialias.curve_quality import (
     intensity_along,
     position_error,
     quality_table,
-    render_window,
     uniformity,
     variants,
 )
 from course.antialias.near_pixels import segment_distance
+from course.antialias.windows import render_window
 from course.images import SEED_000_CUBIC
 from course.raster.canvas import crop
 

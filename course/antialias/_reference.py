@@ -6,7 +6,7 @@ within :data:`course.limits.MAX_STROKE_WIDTH` and ``k`` an integer from 1 to
 :data:`course.limits.MAX_RATE`, as :func:`course.antialias.coverage.reference` makes sure
 before it calls :func:`reference_coverage`. What flattening each curve costs depends on
 the curve and on the reference's own tolerance: :func:`path_polyline` checks it, curve by
-curve, as it flattens. :func:`course.antialias.curve_quality.render_window` draws its
+curve, as it flattens. :func:`course.antialias.windows.render_window` draws its
 window of the reference here.
 """
 
@@ -97,7 +97,7 @@ def _beyond_reach(
     """``gaps``, and the segments too far from the canvas for any of its pixels to be near.
 
     Skipped alike by :func:`pixels_near`: a window of a long curve
-    (:func:`~course.antialias.curve_quality.render_window`) looks only at the
+    (:func:`~course.antialias.windows.render_window`) looks only at the
     few segments that pass by it. The coverage does not change: it takes the
     nearest distance and the union of the samples over a pixel's segments.
     """

@@ -27,20 +27,17 @@ from course._validate import (
     as_curve,
     as_gray,
     as_image_like,
-    as_int,
     as_positive_float,
     as_shape,
 )
 from course.antialias import RENDER_METHODS, SPLATS
 from course.antialias._polyline import flattened
-from course.antialias._reference import reference_coverage
 from course.antialias._render import agg_coverage, render_path
 from course.antialias.near_pixels import first_of_runs, pixels_near
 from course.curves._frozen import made
 from course.curves.paths import Curves
 from course.i18n import _
 from course.limits import require_bounded_flattening
-from course.raster.canvas import crop_extent
 
 __all__ = [
     "AGG",
@@ -53,7 +50,6 @@ __all__ = [
     "position_error",
     "quality_table",
     "render_variant",
-    "render_window",
     "uniformity",
     "variants",
 ]
@@ -64,7 +60,7 @@ ARC_LENGTH = " + arc length"
 #: Every variant of the lesson, by name: the render methods, the splats with the
 #: arc-length fix, and matplotlib's Agg.
 VARIANTS = (*RENDER_METHODS, *(splat + ARC_LENGTH for splat in SPLATS), AGG)
-#: The name :func:`render_window` gives the exact coverage.
+#: The name :func:`course.antialias.windows.render_window` gives the exact coverage.
 REFERENCE = "exact reference"
 
 # How closely the metrics follow the true curve, in pixels.
@@ -358,53 +354,6 @@ def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarra
         name: drawn[name] if name in drawn else _render_variant(name, path, canvas, width)
         for name in VARIANTS
     }
-
-
-def render_window(
-    name: str, points: Any, shape: Any, centre: Any, size: int, width: float = 1.0, k: int = 64
-) -> tuple[np.ndarray, tuple[int, int, int, int]]:
-    """A variant, or :data:`REFERENCE`, drawn only in the window
-    :func:`~course.raster.canvas.crop` takes.
-
-    The values of ``crop(render_variant(name, points, shape), centre, size)``
-    (and of the reference at ``k`` x ``k`` samples per pixel), to rounding,
-    at the cost of the window alone: the curve is moved by the window's
-    corner, a whole number of pixels, and drawn on a canvas of the window's
-    size. For apps that redraw as a control point is dragged. Returns the
-    window and its extent ``(left, right, bottom, top)``.
-
-    Examples
-    --------
-    >>> from course.raster.canvas import crop
-    >>> curve = [[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]
-    >>> window, extent = render_window("bilinear_centres", curve, (700, 700), (100, 40), 8)
-    >>> full = render_variant("bilinear_centres", curve, (700, 700))
-    >>> extent, bool(np.allclose(window, crop(full, (100, 40), 8)[0], atol=1e-12))
-    ((96, 104, 44, 36), True)
-    """
-    control = as_curve(points)
-    left, right, bottom, top = crop_extent(shape, centre, size)
-    moved = control - (left, top)
-    window_shape = (bottom - top, right - left)
-    if name == REFERENCE:
-        path = _moved_path(moved)
-        width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
-        k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
-        window = reference_coverage(path, window_shape, width, k)
-    else:
-        name = as_choice(name, "name", VARIANTS)
-        path = _moved_path(moved)
-        width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
-        window = _render_variant(name, path, window_shape, width)
-    return window, (left, right, bottom, top)
-
-
-def _moved_path(moved: np.ndarray) -> Curves:
-    """A checked curve moved by a window's corner, as one curve of a path: its points can
-    have left the coordinates' bound, refused then as the curve itself would be."""
-    if np.abs(moved).max() > limits.MAX_COORDINATE:
-        as_curve(moved)  # refused, as before
-    return _curve_path(moved)
 
 
 def quality_table(

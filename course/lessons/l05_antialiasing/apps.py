@@ -29,9 +29,9 @@ from course.antialias.curve_quality import (
     REFERENCE,
     VARIANTS,
     intensity_along,
-    render_window,
     uniformity,
 )
+from course.antialias.windows import render_window
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.lessons.l05_antialiasing.measurements import WEIGHTING_LABELS
@@ -99,7 +99,7 @@ class ZoomApp(SliderApp):
 
     Left, the whole curve on its canvas with its control polygon and the
     window; drag a control point and every panel follows, each redrawn in
-    its window alone (:func:`course.antialias.curve_quality.render_window`). The
+    its window alone (:func:`course.antialias.windows.render_window`). The
     window sits ``position`` of the way along the curve (by arc length) and
     shows ``size`` x ``size`` pixels, each a flat square at an integer zoom;
     drop-downs pick the variants of :data:`course.antialias.curve_quality.VARIANTS`.

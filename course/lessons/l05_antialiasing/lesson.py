@@ -13,7 +13,8 @@ import numpy as np
 from course._validate import as_choice
 from course.antialias import WEIGHTINGS
 from course.antialias.coverage import curve_polyline
-from course.antialias.curve_quality import REFERENCE, render_window
+from course.antialias.curve_quality import REFERENCE
+from course.antialias.windows import render_window
 from course.classroom.pictures import (
     app_picture,
     clear_point,
@@ -144,7 +145,7 @@ def zoom_landmarks(app: SliderApp) -> list[Landmark]:
 
     The window's centre is the point ``position`` of the way along the curve
     (by arc length); each panel must show that window of the variant, as
-    ``curve_quality.render_window`` draws it, and of the exact reference.
+    ``windows.render_window`` draws it, and of the exact reference.
     """
     points = np.asarray(app.points)
     position, size = float(app.value("position")), int(app.value("size"))

@@ -1,0 +1,76 @@
+"""A zoom window of a variant or of the exact reference, drawn at the window's cost alone.
+
+Lesson 05's zoom app redraws a small window of every variant (and the
+exact reference) as a control point is dragged: :func:`render_window` moves
+the curve by the window's corner and draws it on a canvas of the window's
+size, with the values of a crop of the whole drawing
+(:func:`course.antialias.curve_quality.render_variant`), to rounding.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from course import limits
+from course._validate import as_choice, as_curve, as_int, as_positive_float
+from course.antialias._reference import reference_coverage
+from course.antialias.curve_quality import (
+    REFERENCE,
+    VARIANTS,
+    _curve_path,
+    _render_variant,
+)
+from course.curves.paths import Curves
+from course.raster.canvas import crop_extent
+
+__all__ = ["render_window"]
+
+
+def render_window(
+    name: str, points: Any, shape: Any, centre: Any, size: int, width: float = 1.0, k: int = 64
+) -> tuple[np.ndarray, tuple[int, int, int, int]]:
+    """A variant, or :data:`REFERENCE`, drawn only in the window
+    :func:`~course.raster.canvas.crop` takes.
+
+    The values of ``crop(render_variant(name, points, shape), centre, size)``
+    (and of the reference at ``k`` x ``k`` samples per pixel), to rounding,
+    at the cost of the window alone: the curve is moved by the window's
+    corner, a whole number of pixels, and drawn on a canvas of the window's
+    size. For apps that redraw as a control point is dragged. Returns the
+    window and its extent ``(left, right, bottom, top)``.
+
+    Examples
+    --------
+    >>> from course.antialias.curve_quality import render_variant
+    >>> from course.raster.canvas import crop
+    >>> curve = [[10.0, 10.0], [690.0, 10.0], [10.0, 690.0], [690.0, 690.0]]
+    >>> window, extent = render_window("bilinear_centres", curve, (700, 700), (100, 40), 8)
+    >>> full = render_variant("bilinear_centres", curve, (700, 700))
+    >>> extent, bool(np.allclose(window, crop(full, (100, 40), 8)[0], atol=1e-12))
+    ((96, 104, 44, 36), True)
+    """
+    control = as_curve(points)
+    left, right, bottom, top = crop_extent(shape, centre, size)
+    moved = control - (left, top)
+    window_shape = (bottom - top, right - left)
+    if name == REFERENCE:
+        path = _moved_path(moved)
+        width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
+        k = as_int(k, "k", minimum=1, maximum=limits.MAX_RATE)
+        window = reference_coverage(path, window_shape, width, k)
+    else:
+        name = as_choice(name, "name", VARIANTS)
+        path = _moved_path(moved)
+        width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
+        window = _render_variant(name, path, window_shape, width)
+    return window, (left, right, bottom, top)
+
+
+def _moved_path(moved: np.ndarray) -> Curves:
+    """A checked curve moved by a window's corner, as one curve of a path: its points can
+    have left the coordinates' bound, refused then as the curve itself would be."""
+    if np.abs(moved).max() > limits.MAX_COORDINATE:
+        as_curve(moved)  # refused, as before
+    return _curve_path(moved)

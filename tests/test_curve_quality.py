@@ -151,3 +151,33 @@ def test_the_reference_skips_only_segments_no_pixel_centre_is_within_reach_of(li
             centres_x, centres_y, line[index], line[index + 1]
         )
         assert distance.min() > reach
+
+
+def test_windows_drawn_together_are_each_window_drawn_alone_in_any_order():
+    from course.antialias.windows import render_windows
+
+    names = ["bilinear_centres", "nearest_round", "bilinear_corners + arc length", AGG, REFERENCE]
+    names += ["stroke_area", "bilinear_zero_offset", "bilinear_centres"]
+    centre = (328.2, 156.9)  # on the curve
+    alone = [render_window(name, SEED_000_CUBIC, (700, 700), centre, 12, k=8)[0] for name in names]
+    for order in (names, names[::-1]):
+        windows, extent = render_windows(order, SEED_000_CUBIC, (700, 700), centre, 12, k=8)
+        expected = alone if order is names else alone[::-1]
+        assert all(np.array_equal(a, b) for a, b in zip(windows, expected, strict=True))
+        assert extent == render_window(AGG, SEED_000_CUBIC, (700, 700), centre, 12)[1]
+    assert any(window.any() for window in windows)
+
+
+@pytest.mark.parametrize(
+    "names, error, message",
+    [
+        ("bilinear_centres", TypeError, "names must be a non-empty list of variant names; got"),
+        ([], TypeError, "names must be a non-empty list"),
+        (["bilinear_centres", "blur"], ValueError, "names must be one of"),
+    ],
+)
+def test_windows_drawn_together_refuse_names_that_are_not_a_list_of_variants(names, error, message):
+    from course.antialias.windows import render_windows
+
+    with pytest.raises(error, match=message):
+        render_windows(names, SEED_000_CUBIC, (140, 140), (63.0, 40.0), 12)

@@ -362,6 +362,11 @@ VALID: dict[str, Any] = {
     "course.antialias.curve_quality.render_variant:name": lambda: "bilinear_centres",
     "course.antialias.windows.render_window:name": lambda: "bilinear_centres",
     "course.antialias.windows.render_window:size": lambda: 6,
+    "course.antialias.windows.render_windows:names": lambda: [
+        "bilinear_centres",
+        "exact reference",
+    ],
+    "course.antialias.windows.render_windows:size": lambda: 6,
     "course.antialias.splats.splat:kind": lambda: "bilinear_centres",
     "course.poisson.methods.sweeps_to_residual:method": lambda: "jacobi",
     "course.poisson.methods.convergence:method": lambda: "jacobi",

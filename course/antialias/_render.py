@@ -71,8 +71,13 @@ def render_path(
     width: float,
     step: float | None,
     weighting: str,
+    evaluated: dict | None = None,
 ) -> np.ndarray:
-    """:func:`course.antialias.render` of checked arguments: the path drawn on a new canvas."""
+    """:func:`course.antialias.render` of checked arguments: the path drawn on a new canvas.
+
+    ``evaluated``, when given, keeps each curve's samples by its step, for
+    the next call on the same path (read, never written into).
+    """
     if method == "stroke_area":
         # The fast path: the exact coverage straight into a new canvas.
         line, gaps = uniform_polyline(path, STROKE_TOLERANCE)
@@ -92,10 +97,14 @@ def render_path(
     ]
     _require_few_samples(steps, step is not None)
     all_pixels, all_weights = [], []
-    for control, own_step in zip(controls, steps, strict=True):
+    for index, (control, own_step) in enumerate(zip(controls, steps, strict=True)):
         if np.floor(1 / own_step * (1 + 1e-12)) + 2 > limits.MAX_STEP_SAMPLES:
             require_step_samples(own_step, "step")  # one curve's samples, refused as before
-        samples = checked_samples(evaluate(control, uniform_steps(own_step, "exact")))
+        samples = None if evaluated is None else evaluated.get((index, own_step))
+        if samples is None:
+            samples = checked_samples(evaluate(control, uniform_steps(own_step, "exact")))
+            if evaluated is not None:
+                evaluated[index, own_step] = samples
         lengths = arc_length_weights(samples) if weighting == "arc_length" else None
         # A window of a long curve (render_window) is touched by a few of its thousand.
         touching = _touching(samples, canvas)

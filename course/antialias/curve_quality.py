@@ -323,13 +323,18 @@ def _curve_path(control: np.ndarray) -> Curves:
     return made(Curves, points=control, sizes=np.array([len(control)]))
 
 
-def _render_variant(name: str, path: Curves, canvas: tuple[int, int], width: float) -> np.ndarray:
-    """:func:`render_variant` of checked arguments."""
+def _render_variant(
+    name: str, path: Curves, canvas: tuple[int, int], width: float, evaluated: dict | None = None
+) -> np.ndarray:
+    """:func:`render_variant` of checked arguments; ``evaluated`` keeps the splats' samples
+    for the next variant of the same path (:func:`~course.antialias._render.render_path`)."""
     if name == AGG:
         return agg_coverage(path, canvas, width)
     if name.endswith(ARC_LENGTH):
-        return render_path(path, canvas, name[: -len(ARC_LENGTH)], width, None, "arc_length")
-    return render_path(path, canvas, name, width, None, "count")
+        method, weighting = name[: -len(ARC_LENGTH)], "arc_length"
+    else:
+        method, weighting = name, "count"
+    return render_path(path, canvas, method, width, None, weighting, evaluated)
 
 
 def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarray]:

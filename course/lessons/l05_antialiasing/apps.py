@@ -31,7 +31,7 @@ from course.antialias.curve_quality import (
     intensity_along,
     uniformity,
 )
-from course.antialias.windows import render_window
+from course.antialias.windows import render_windows
 from course.i18n import N_, _
 from course.images import SEED_000_CUBIC, SEED_000_SHAPE
 from course.lessons.l05_antialiasing.measurements import WEIGHTING_LABELS
@@ -99,7 +99,7 @@ class ZoomApp(SliderApp):
 
     Left, the whole curve on its canvas with its control polygon and the
     window; drag a control point and every panel follows, each redrawn in
-    its window alone (:func:`course.antialias.windows.render_window`). The
+    its window alone (:func:`course.antialias.windows.render_windows`). The
     window sits ``position`` of the way along the curve (by arc length) and
     shows ``size`` x ``size`` pixels, each a flat square at an integer zoom;
     drop-downs pick the variants of :data:`course.antialias.curve_quality.VARIANTS`.
@@ -248,22 +248,20 @@ class ZoomApp(SliderApp):
         # In the window's pixels from its corner: the panels' data (ZoomPanel).
         line, gaps = self._near_pieces(extent)
         line = line - (left, top)
+        titles = [self.value(slot) for slot in ("left", "middle", "right")]
+        drawn = titles if self.grabbed is not None else [*titles, REFERENCE]
+        k = self.k if self.grabbed is None else min(self.k, 16)
+        windows, _extent = render_windows(
+            drawn, points, self.shape, centre, size, self.stroke_width, k
+        )
         if self.grabbed is None:
-            k = self.k
-            truth, _extent = render_window(
-                REFERENCE, points, self.shape, centre, size, self.stroke_width, k
-            )
+            truth = windows[3]
         else:
-            k = min(self.k, 16)
             truth = self._dragged_reference(line, gaps, (bottom - top, right - left), k)
         near = np.insert(line, np.flatnonzero(gaps) + 1, np.nan, axis=0)
         self.window_box.set_bounds(left, top, right - left, bottom - top)
         self.windows = []
-        titles = [self.value(slot) for slot in ("left", "middle", "right")]
-        for zoom, name in zip(self.panels, titles, strict=False):
-            window, _extent = render_window(
-                name, points, self.shape, centre, size, self.stroke_width
-            )
+        for zoom, name, window in zip(self.panels, titles, windows, strict=False):
             zoom.curve.set_data(near[:, 0], near[:, 1])
             note = _("RMSE here {error:.3f}").format(error=rmse(window, truth))
             self.windows.append(zoom.show_checked(window, extent, label_of(name), note))
@@ -305,7 +303,8 @@ class ZoomApp(SliderApp):
         reference's own (1e-4, the whole curve flattened again): no sample
         moves by more than 1e-3 pixel, far below the 1/16 pixel between two
         of the 16 x 16. Every segment within reach of the window is among the
-        pieces; the release draws the reference as :func:`render_window` does.
+        pieces; the release draws the reference as
+        :func:`~course.antialias.windows.render_window` does.
         """
         if len(line) < 2:
             return np.zeros(window)

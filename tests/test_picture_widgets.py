@@ -798,6 +798,42 @@ def test_picture_js_sets_a_run_s_clip_once_and_writes_pixels_whatever_the_clip(t
     assert calls.index("putImageData(1x1:1,2,3,255,0,0)") == first_restore + 1
 
 
+STROKE_RUN_HARNESS = (
+    RECORDING_CONTEXT
+    + r"""
+const vertices = new Float32Array([0, 0, 1, 1]);
+const codes = new Uint8Array([1, 2]);
+const line = { path: [0, 2], stroke: [0, 0, 0, 1], fill: null, width: 1, dash: null,
+  cap: "butt", join: "round", clip: [0, 0, 5, 4] };
+const red = { ...line, stroke: [1, 0, 0, 1] };
+const dashed = { ...line, dash: [0, [2, 1]] };
+const commands = [line, line, red, line, dashed, dashed, { pixels: [0, 1, 1], at: [0, 0], zoom: 1 },
+  line];
+const listed = new TextEncoder().encode(JSON.stringify(commands));
+handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [
+  new TextEncoder().encode("BACK"), new Uint8Array([1, 2, 3]), listed, vertices.buffer,
+  codes.buffer,
+]);
+await turns(50);
+console.log(JSON.stringify({ calls }));
+"""
+)
+
+
+@pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
+def test_picture_js_sets_a_run_s_stroke_once_and_again_after_a_restore(tmp_path):
+    calls = picture_js_in_node(tmp_path, STROKE_RUN_HARNESS)["calls"]
+    styles = [call for call in calls if call.startswith(("strokeStyle", "setLineDash"))]
+    assert calls.count("stroke()") == 7
+    assert styles == [
+        *("strokeStyle=rgba(0, 0, 0, 1)", "setLineDash()"),  # two lines, one setting
+        *("strokeStyle=rgba(255, 0, 0, 1)", "setLineDash()"),  # another colour
+        *("strokeStyle=rgba(0, 0, 0, 1)", "setLineDash()"),  # the first again
+        *("strokeStyle=rgba(0, 0, 0, 1)", "setLineDash(2,1)"),  # dashed, twice
+        *("strokeStyle=rgba(0, 0, 0, 1)", "setLineDash()"),  # the pixels restored the context
+    ]
+
+
 STAMP_HARNESS = (
     RECORDING_CONTEXT
     + r"""

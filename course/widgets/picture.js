@@ -66,20 +66,37 @@ function clipTo(context, clip) {
   context.clip();
 }
 
-function fillAndStroke(context, style) {
+// Fills and strokes the path traced, with `style`'s paint; `set` is the stroke's
+// style the context holds already (or null), whose settings are not made again (a
+// pixel grid's dozens of lines share one). Returns the stroke's style it holds then.
+function fillAndStroke(context, style, set = null) {
   if (style.fill) {
     context.fillStyle = rgba(style.fill);
     context.fill();
   }
-  if (style.stroke) {
+  if (!style.stroke) return set;
+  if (!sameStroke(style, set)) {
     context.strokeStyle = rgba(style.stroke);
     context.lineWidth = style.width;
     context.lineCap = style.cap;
     context.lineJoin = style.join;
     context.setLineDash(style.dash ? style.dash[1] : []);
     context.lineDashOffset = style.dash ? style.dash[0] : 0;
-    context.stroke();
   }
+  context.stroke();
+  return style;
+}
+
+const sameNumbers = (a, b) => a === b || (!!a && !!b && a.length === b.length && a.every((v, i) => v === b[i]));
+
+function sameStroke(style, set) {
+  if (set === null) return false;
+  const dash = style.dash, other = set.dash;
+  return (
+    style.width === set.width && style.cap === set.cap && style.join === set.join &&
+    sameNumbers(style.stroke, set.stroke) &&
+    (dash === other || (!!dash && !!other && dash[0] === other[0] && sameNumbers(dash[1], other[1])))
+  );
 }
 
 // A pixel panel's pixels (RGB, row by row, from byte `start`), each `zoom` x `zoom`
@@ -141,27 +158,31 @@ function markerStamp(command, vertices, codes) {
 // the styles it draws with, and a text undoes its own transform.
 // (Saving and restoring the context around each of them cost more than drawing them.)
 function drawCommands(context, commands, pixels, vertices, codes) {
-  let clipped = null; // the clip in force, as its JSON: none at first
+  let clipped = null; // the clip in force: none at first
+  let stroked = null; // the stroke's style the context holds, since the last restore
   for (const command of commands) {
     if (command.pixels) {
       if (clipped !== null) context.restore(); // written whatever the clip
-      clipped = null;
+      clipped = stroked = null;
       putPixels(context, pixels, command.pixels, command.at, command.zoom);
       continue;
     }
-    const clip = command.clip ? JSON.stringify(command.clip) : null;
-    if (clip !== clipped) {
-      if (clipped !== null) context.restore();
+    const clip = command.clip ?? null;
+    if (!sameNumbers(clip, clipped)) {
+      if (clipped !== null) {
+        context.restore(); // back to the settings before the clip
+        stroked = null;
+      }
       if (clip !== null) {
         context.save();
-        clipTo(context, command.clip);
+        clipTo(context, clip);
       }
       clipped = clip;
     }
     if (command.path) {
       context.beginPath();
       trace(context, vertices, codes, command.path);
-      fillAndStroke(context, command);
+      stroked = fillAndStroke(context, command, stroked);
     } else if (command.marker) {
       const [start, count] = command.at;
       if (count >= STAMPED) {
@@ -173,7 +194,7 @@ function drawCommands(context, commands, pixels, vertices, codes) {
         for (let i = start; i < start + count; i++) {
           context.beginPath();
           trace(context, vertices, codes, command.marker, vertices[2 * i], vertices[2 * i + 1]);
-          fillAndStroke(context, command);
+          stroked = fillAndStroke(context, command, stroked);
         }
       }
     } else if (command.text !== undefined) {

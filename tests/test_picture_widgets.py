@@ -762,16 +762,19 @@ def test_picture_js_draws_a_drawing_s_commands_over_its_backdrop(tmp_path):
     ]
 
 
-CLIP_RUN_HARNESS = (
-    RECORDING_CONTEXT
-    + r"""
+def line_run_harness(commands: str) -> str:
+    """A drawing of ``commands`` (JavaScript), of a 1-pixel picture and one ``line``."""
+    return (
+        RECORDING_CONTEXT
+        + r"""
 const vertices = new Float32Array([0, 0, 1, 1]);
 const codes = new Uint8Array([1, 2]);
 const line = { path: [0, 2], stroke: [0, 0, 0, 1], fill: null, width: 1, dash: null,
   cap: "butt", join: "round", clip: [0, 0, 5, 4] };
-const commands = [line, line, { pixels: [0, 1, 1], at: [0, 0], zoom: 1 }, line,
-  { ...line, clip: [1, 1, 2, 2] }];
-const listed = new TextEncoder().encode(JSON.stringify(commands));
+const pixels = { pixels: [0, 1, 1], at: [0, 0], zoom: 1 };
+const listed = new TextEncoder().encode(JSON.stringify("""
+        + commands
+        + r"""));
 handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [
   new TextEncoder().encode("BACK"), new Uint8Array([1, 2, 3]), listed, vertices.buffer,
   codes.buffer,
@@ -779,12 +782,14 @@ handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [
 await turns(50);
 console.log(JSON.stringify({ calls }));
 """
-)
+    )
 
 
 @pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
 def test_picture_js_sets_a_run_s_clip_once_and_writes_pixels_whatever_the_clip(tmp_path):
-    calls = picture_js_in_node(tmp_path, CLIP_RUN_HARNESS)["calls"]
+    calls = picture_js_in_node(
+        tmp_path, line_run_harness("[line, line, pixels, line, { ...line, clip: [1, 1, 2, 2] }]")
+    )["calls"]
     shown = [call for call in calls if call in ("save()", "restore()", "clip()", "stroke()")]
     shown += [call for call in calls if call.startswith(("putImageData", "rect"))]
     assert shown == [
@@ -798,31 +803,15 @@ def test_picture_js_sets_a_run_s_clip_once_and_writes_pixels_whatever_the_clip(t
     assert calls.index("putImageData(1x1:1,2,3,255,0,0)") == first_restore + 1
 
 
-STROKE_RUN_HARNESS = (
-    RECORDING_CONTEXT
-    + r"""
-const vertices = new Float32Array([0, 0, 1, 1]);
-const codes = new Uint8Array([1, 2]);
-const line = { path: [0, 2], stroke: [0, 0, 0, 1], fill: null, width: 1, dash: null,
-  cap: "butt", join: "round", clip: [0, 0, 5, 4] };
-const red = { ...line, stroke: [1, 0, 0, 1] };
-const dashed = { ...line, dash: [0, [2, 1]] };
-const commands = [line, line, red, line, dashed, dashed, { pixels: [0, 1, 1], at: [0, 0], zoom: 1 },
-  line];
-const listed = new TextEncoder().encode(JSON.stringify(commands));
-handlers["msg:custom"]({ kind: "drawing", backdrop: true }, [
-  new TextEncoder().encode("BACK"), new Uint8Array([1, 2, 3]), listed, vertices.buffer,
-  codes.buffer,
-]);
-await turns(50);
-console.log(JSON.stringify({ calls }));
-"""
-)
-
-
 @pytest.mark.skipif(NODE is None, reason="Node.js runs picture.js outside a browser")
 def test_picture_js_sets_a_run_s_stroke_once_and_again_after_a_restore(tmp_path):
-    calls = picture_js_in_node(tmp_path, STROKE_RUN_HARNESS)["calls"]
+    calls = picture_js_in_node(
+        tmp_path,
+        line_run_harness(
+            """[line, line, { ...line, stroke: [1, 0, 0, 1] }, line,
+                { ...line, dash: [0, [2, 1]] }, { ...line, dash: [0, [2, 1]] }, pixels, line]"""
+        ),
+    )["calls"]
     styles = [call for call in calls if call.startswith(("strokeStyle", "setLineDash"))]
     assert calls.count("stroke()") == 7
     assert styles == [

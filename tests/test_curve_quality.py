@@ -102,13 +102,13 @@ def test_variants_refuses_a_degree_agg_cannot_draw_before_rendering_anything(mon
     from course.antialias import curve_quality
 
     drawn = []
-    original = curve_quality._render_variant
+    original = curve_quality.variant_coverage
 
     def counting(name, *args, **kwargs):
         drawn.append(name)
         return original(name, *args, **kwargs)
 
-    monkeypatch.setattr(curve_quality, "_render_variant", counting)
+    monkeypatch.setattr(curve_quality, "variant_coverage", counting)
     curve = np.column_stack([np.linspace(1, 30, 201), np.full(201, 5.0)])
     with pytest.raises(ValueError, match="degree 1 to 3"):
         curve_quality.variants(curve, (10, 32))

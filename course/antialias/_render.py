@@ -27,6 +27,7 @@ from course.antialias.near_pixels import first_of_runs, pixels_near
 from course.antialias.splats import PIXELS_PER_SAMPLE
 from course.antialias.stroke import stroke_coverage
 from course.curves._bezier_fast import bernstein_horner, de_casteljau_chunked
+from course.curves._frozen import made
 from course.curves._uniform import uniform_polyline, uniform_steps
 from course.curves.drawable_paths import matplotlib_path
 from course.curves.paths import Curves
@@ -36,6 +37,8 @@ from course.raster._paint import painted_canvas
 from course.raster.canvas import painted
 
 __all__ = [
+    "AGG",
+    "ARC_LENGTH",
     "ARC_LENGTH_SPACING",
     "DEFAULT_STEP",
     "SPLAT_REACH",
@@ -46,9 +49,11 @@ __all__ = [
     "checked_samples",
     "default_arc_length_step",
     "evaluate",
+    "one_curve_path",
     "painted_white",
     "render_path",
     "stroke_linear_coverage",
+    "variant_coverage",
     "with_gaps",
 ]
 
@@ -60,8 +65,31 @@ DEFAULT_STEP = 0.001
 ARC_LENGTH_SPACING = 0.5
 # Largest distance from the flattened curve to the true one in the stroke methods.
 STROKE_TOLERANCE = 0.01
+# Names of the variants beside the methods' own names (course.antialias.curve_quality's).
+AGG = "Agg (matplotlib)"
+ARC_LENGTH = " + arc length"
 # Farther than any splat paints from its sample, in pixels (bilinear: 1.5, rounded up).
 SPLAT_REACH = 3.0
+
+
+def one_curve_path(control: np.ndarray) -> Curves:
+    """A checked curve as the one curve of a path, as course.curves.paths.as_path makes it."""
+    return made(Curves, points=control, sizes=np.array([len(control)]))
+
+
+def variant_coverage(
+    name: str, path: Curves, canvas: tuple[int, int], width: float, evaluated: dict | None = None
+) -> np.ndarray:
+    """:func:`course.antialias.curve_quality.render_variant` of checked arguments;
+    ``evaluated`` keeps the splats' samples for the next variant of the same path
+    (:func:`render_path`)."""
+    if name == AGG:
+        return agg_coverage(path, canvas, width)
+    if name.endswith(ARC_LENGTH):
+        method, weighting = name[: -len(ARC_LENGTH)], "arc_length"
+    else:
+        method, weighting = name, "count"
+    return render_path(path, canvas, method, width, None, weighting, evaluated)
 
 
 def render_path(

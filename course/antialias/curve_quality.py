@@ -32,10 +32,8 @@ from course._validate import (
 )
 from course.antialias import RENDER_METHODS, SPLATS
 from course.antialias._polyline import flattened
-from course.antialias._render import agg_coverage, render_path
+from course.antialias._render import AGG, ARC_LENGTH, one_curve_path, variant_coverage
 from course.antialias.near_pixels import first_of_runs, pixels_near
-from course.curves._frozen import made
-from course.curves.paths import Curves
 from course.i18n import _
 from course.limits import require_bounded_flattening
 
@@ -54,9 +52,6 @@ __all__ = [
     "variants",
 ]
 
-# Names of the variants beside the methods' own names.
-AGG = "Agg (matplotlib)"
-ARC_LENGTH = " + arc length"
 #: Every variant of the lesson, by name: the render methods, the splats with the
 #: arc-length fix, and matplotlib's Agg.
 VARIANTS = (*RENDER_METHODS, *(splat + ARC_LENGTH for splat in SPLATS), AGG)
@@ -312,29 +307,10 @@ def render_variant(name: str, points: Any, shape: Any, width: float = 1.0) -> np
     (4, 10)
     """
     name = as_choice(name, "name", VARIANTS)
-    path = _curve_path(as_curve(points))
+    path = one_curve_path(as_curve(points))
     canvas = as_shape(shape)
     width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
-    return _render_variant(name, path, canvas, width)
-
-
-def _curve_path(control: np.ndarray) -> Curves:
-    """A checked curve as the one curve of a path, as course.curves.paths.as_path makes it."""
-    return made(Curves, points=control, sizes=np.array([len(control)]))
-
-
-def _render_variant(
-    name: str, path: Curves, canvas: tuple[int, int], width: float, evaluated: dict | None = None
-) -> np.ndarray:
-    """:func:`render_variant` of checked arguments; ``evaluated`` keeps the splats' samples
-    for the next variant of the same path (:func:`~course.antialias._render.render_path`)."""
-    if name == AGG:
-        return agg_coverage(path, canvas, width)
-    if name.endswith(ARC_LENGTH):
-        method, weighting = name[: -len(ARC_LENGTH)], "arc_length"
-    else:
-        method, weighting = name, "count"
-    return render_path(path, canvas, method, width, None, weighting, evaluated)
+    return variant_coverage(name, path, canvas, width)
 
 
 def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarray]:
@@ -350,13 +326,13 @@ def variants(points: Any, shape: Any, width: float = 1.0) -> dict[str, np.ndarra
     >>> len(images), images[AGG].shape
     (17, (4, 10))
     """
-    path = _curve_path(as_curve(points))
+    path = one_curve_path(as_curve(points))
     canvas = as_shape(shape)
     width = as_positive_float(width, "width", largest=limits.MAX_STROKE_WIDTH)
     # Agg takes degrees 1 to 3 only: drawn first, a curve it refuses costs nothing else.
-    drawn = {AGG: _render_variant(AGG, path, canvas, width)}
+    drawn = {AGG: variant_coverage(AGG, path, canvas, width)}
     return {
-        name: drawn[name] if name in drawn else _render_variant(name, path, canvas, width)
+        name: drawn[name] if name in drawn else variant_coverage(name, path, canvas, width)
         for name in VARIANTS
     }
 

@@ -16,12 +16,8 @@ import numpy as np
 from course import limits
 from course._validate import as_choice, as_curve, as_int, as_positive_float, describe
 from course.antialias._reference import reference_coverage
-from course.antialias.curve_quality import (
-    REFERENCE,
-    VARIANTS,
-    _curve_path,
-    _render_variant,
-)
+from course.antialias._render import one_curve_path, variant_coverage
+from course.antialias.curve_quality import REFERENCE, VARIANTS
 from course.curves.paths import Curves
 from course.i18n import _
 from course.raster.canvas import crop_extent
@@ -112,7 +108,7 @@ def _windows(
     windows = [
         reference_coverage(path, window_shape, width, k)
         if name == REFERENCE
-        else _render_variant(name, path, window_shape, width, evaluated)
+        else variant_coverage(name, path, window_shape, width, evaluated)
         for name in names
     ]
     return windows, (left, right, bottom, top)
@@ -123,4 +119,4 @@ def _moved_path(moved: np.ndarray) -> Curves:
     have left the coordinates' bound, refused then as the curve itself would be."""
     if np.abs(moved).max() > limits.MAX_COORDINATE:
         as_curve(moved)  # refused, as before
-    return _curve_path(moved)
+    return one_curve_path(moved)

@@ -384,9 +384,7 @@ def test_a_sample_render_leaves_out_paints_nothing_on_the_canvas(kind, samples, 
     from course.raster._paint import on_canvas
 
     touching = _touching(samples, (height, width))
-    left_out = samples if touching is None else samples[~touching]
-    if touching is None:
-        left_out = left_out[:0]
+    left_out = samples[:0] if touching is None else samples[~touching]
     pixels, _weights = splat_points(left_out, kind)
     assert not on_canvas(pixels, (height, width)).any()
 

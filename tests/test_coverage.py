@@ -96,6 +96,17 @@ def polyline_distance(samples_x, samples_y, line):
     return nearest
 
 
+def assert_reference_counts_the_samples_within_half_the_width(control, shape, width, k):
+    """The reference against the samples within width / 2 of the flattened curve, by brute force."""
+    curve = np.array(control, dtype=float)
+    image = reference(curve, shape, width, k=k)
+    nearest = polyline_distance(*sample_grid(shape, k), curve_polyline(curve, 1e-4))
+    # A sample within rounding of the edge may fall either way.
+    surely = np.mean(nearest <= width / 2 - 1e-9, axis=-1)
+    maybe = np.mean(nearest <= width / 2 + 1e-9, axis=-1)
+    assert np.all(surely - 1e-12 <= image) and np.all(image <= maybe + 1e-12)
+
+
 def test_reference_holds_the_stroke_area():
     # Width x length plus the two half-disc caps.
     for width in (1.0, 3.0):
@@ -131,15 +142,7 @@ def test_reference_wide_stroke_agrees_with_sampling_every_pixel():
 )
 @example(control=[(3.0, 4.0), (3.0, 4.0)], width=1.0, k=4)  # a single point: a dot
 def test_reference_is_the_fraction_of_samples_within_half_the_width(control, width, k):
-    curve = np.array(control, dtype=float)
-    shape = (11, 12)
-    image = reference(curve, shape, width, k=k)
-    line = curve_polyline(curve, 1e-4)
-    nearest = polyline_distance(*sample_grid(shape, k), line)
-    # A sample within rounding of the edge may fall either way.
-    surely = np.mean(nearest <= width / 2 - 1e-9, axis=-1)
-    maybe = np.mean(nearest <= width / 2 + 1e-9, axis=-1)
-    assert np.all(surely - 1e-12 <= image) and np.all(image <= maybe + 1e-12)
+    assert_reference_counts_the_samples_within_half_the_width(control, (11, 12), width, k)
 
 
 @settings(max_examples=12, deadline=None)
@@ -154,14 +157,7 @@ def test_reference_is_the_fraction_of_samples_within_half_the_width(control, wid
 )
 def test_reference_counts_the_samples_of_rows_longer_than_a_word(control, width, k):
     # Each row's samples are bits of 64-bit words: at 64 they fill one word, past it two or more.
-    curve = np.array(control, dtype=float)
-    shape = (6, 7)
-    image = reference(curve, shape, width, k=k)
-    line = curve_polyline(curve, 1e-4)
-    nearest = polyline_distance(*sample_grid(shape, k), line)
-    surely = np.mean(nearest <= width / 2 - 1e-9, axis=-1)
-    maybe = np.mean(nearest <= width / 2 + 1e-9, axis=-1)
-    assert np.all(surely - 1e-12 <= image) and np.all(image <= maybe + 1e-12)
+    assert_reference_counts_the_samples_within_half_the_width(control, (6, 7), width, k)
 
 
 @given(

@@ -104,7 +104,7 @@ def render_path(
     """:func:`course.antialias.render` of checked arguments: the path drawn on a new canvas.
 
     ``evaluated``, when given, keeps each curve's samples by its step, for
-    the next call on the same path (read, never written into).
+    the next call on the same path (the samples are read, never modified).
     """
     if method == "stroke_area":
         # The fast path: the exact coverage straight into a new canvas.

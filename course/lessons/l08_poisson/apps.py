@@ -286,8 +286,10 @@ class CloneApp(SliderApp):
         planes = (window - self.foreground).reshape(height, width, -1).transpose(2, 0, 1)
         with limited_threads():  # as the solvers run their transforms
             fill = harmonic_fill(planes)
-        fill = fill.transpose(1, 2, 0).reshape(self.foreground[1:-1, 1:-1].shape)
-        return np.clip(self.foreground[1:-1, 1:-1] + fill, 0.0, 1.0)
+        inside = self.foreground[1:-1, 1:-1]
+        # The fill's memory is channels last, as its transform leaves it: the sum runs along it.
+        region = inside + fill.transpose(1, 2, 0).reshape(inside.shape)
+        return np.clip(region, 0.0, 1.0, out=region)
 
     @property
     def shown(self) -> dict[str, np.ndarray]:

@@ -80,13 +80,14 @@ def test_fast_transform_follows_the_largest_prime_factor_of_size_plus_one():
 @pytest.mark.parametrize("shape", [(1, 1), (3, 4), (198, 3), (3, 198), (40, 52), (21, 30)])
 def test_harmonic_fill_solves_the_box_with_the_ring_moved_to_the_right_hand_side(shape):
     height, width = shape
-    ring = np.random.default_rng(5).normal(size=(2, height + 2, width + 2))
-    rhs = np.zeros((2, height, width))  # the ring's values beside the box, by hand
+    # Three channels, as an RGB clone has them, in a view whose channels are last in memory.
+    ring = np.random.default_rng(5).normal(size=(height + 2, width + 2, 3)).transpose(2, 0, 1)
+    rhs = np.zeros((3, height, width))  # the ring's values beside the box, by hand
     rhs[:, 0, :] += ring[:, 0, 1:-1]
     rhs[:, -1, :] += ring[:, -1, 1:-1]
     rhs[:, :, 0] += ring[:, 1:-1, 0]
     rhs[:, :, -1] += ring[:, 1:-1, -1]
-    expected = np.linalg.solve(box_matrix(*shape), rhs.reshape(2, -1).T).T.reshape(rhs.shape)
+    expected = np.linalg.solve(box_matrix(*shape), rhs.reshape(3, -1).T).T.reshape(rhs.shape)
     before = ring.copy()
     ring[:, 1:-1, 1:-1] = np.nan  # never read
     filled = harmonic_fill(ring)

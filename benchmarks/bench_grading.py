@@ -49,7 +49,8 @@ NBGRADER = Path(sys.executable).parent / "nbgrader"
 GOAL = 2.0
 #: Appended to the course's nbgrader_config.py for today's autograde: the step taken out.
 WITHOUT_THE_GRADER = (
-    "\n_steps.remove(CheckOutsideKernel)\nc.Autograde.autograde_preprocessors = _steps\n"
+    "\n_steps[_steps.index(ExecuteAnswers)] = Execute\n_steps.remove(CheckOutsideKernel)\n"
+    "c.Autograde.autograde_preprocessors = _steps\n"
 )
 
 

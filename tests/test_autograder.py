@@ -1046,10 +1046,17 @@ def test_an_honest_answer_that_says_something_keeps_every_point(student, graded)
 
 
 def test_nbgrader_refuses_only_what_it_cannot_run(graded):
-    """nbgrader itself refuses a file that is not JSON and a notebook whose kernel died
-    (os._exit in the check): both score 0, and nothing else is refused."""
-    assert graded.refused == {"corrupt_json", "os_exit"}, graded.refused
-    assert not any(any(graded.scores[name].values()) for name in graded.refused)
+    """nbgrader itself refuses a file that is not JSON, which scores 0, and nothing else. The
+    kernel never calls the student's functions (it does not run the check cells), so
+    functions that end their process (os._exit) end the grader's child alone: graded, 0,
+    each verdict saying so."""
+    assert graded.refused == {"corrupt_json"}, graded.refused
+    assert not any(graded.scores["corrupt_json"].values())
+    assert graded.scores["os_exit"] == {e: 0.0 for e in EXERCISES[L01]}
+    for exercise in EXERCISES[L01]:
+        assert verdict(graded, "os_exit", exercise).startswith("FAIL")
+        report = str(graded.outputs["os_exit"][exercise])
+        assert "your code ended the process it ran in" in report, report
 
 
 @pytest.mark.skipif(not TODAY, reason="COURSE_TRICKS=today: the tricks against today's nbgrader")
@@ -1069,7 +1076,8 @@ def test_the_tricks_against_todays_nbgrader(tmp_path):
 
 #: Appended to the course's nbgrader_config.py: today's autograde, without the grader.
 WITHOUT_THE_GRADER = (
-    "\n_steps.remove(CheckOutsideKernel)\nc.Autograde.autograde_preprocessors = _steps\n"
+    "\n_steps[_steps.index(ExecuteAnswers)] = Execute\n_steps.remove(CheckOutsideKernel)\n"
+    "c.Autograde.autograde_preprocessors = _steps\n"
 )
 
 

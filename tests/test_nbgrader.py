@@ -414,3 +414,59 @@ def test_the_graders_own_answers_agree_with_the_library_without_running_it():
         np.testing.assert_allclose(
             reference("bilinear_sample")(image, x, y), resample.bilinear(image, x, y)
         )
+
+
+def test_the_course_s_autograde_runs_the_answers_in_the_kernel_and_the_checks_outside(course):
+    """nbgrader's Execute gives way to ExecuteAnswers, CheckOutsideKernel right after it,
+    and ExecuteAnswers keeps Execute's settings (its timeout)."""
+    from nbgrader.converters import Autograde
+    from nbgrader.preprocessors import Execute
+
+    from course.classroom.autograder import CheckOutsideKernel, ExecuteAnswers
+
+    config = PyFileConfigLoader("nbgrader_config.py", str(course)).load_config()
+    steps = config.Autograde.autograde_preprocessors
+    default = list(Autograde.class_traits()["autograde_preprocessors"].make_dynamic_default())
+    where = default.index(Execute)
+    assert steps == [*default[:where], ExecuteAnswers, CheckOutsideKernel, *default[where + 1 :]]
+    assert ExecuteAnswers(config=config).timeout == 600 == config.Execute.timeout
+
+
+def test_a_check_cell_graded_outside_is_not_run_in_the_kernel_and_costs_its_points_until_graded(
+    monkeypatch,
+):
+    """ExecuteAnswers hands nbgrader's Execute every cell but the declared exercises' check
+    cells, which it leaves holding an error: were CheckOutsideKernel taken out of the
+    steps, they would score nothing, not every point."""
+    from nbformat.v4 import new_code_cell
+    from nbgrader.preprocessors import Execute
+
+    from course.classroom.autograder import ExecuteAnswers
+    from course.classroom.exercise_list import course_exercises
+
+    run = []
+
+    def executed(self, cell, resources, index):
+        run.append(index)
+        return cell, resources
+
+    monkeypatch.setattr(Execute, "preprocess_cell", executed)
+
+    def graded(grade_id, source):
+        metadata = {"nbgrader": {"grade": True, "grade_id": grade_id, "points": 1}}
+        return new_code_cell(source, metadata=metadata)
+
+    cells = [
+        new_code_cell("def next_level(control_points, t):\n    return control_points[:-1]"),
+        graded("next_level_test", "check.next_level(next_level)"),
+        graded("teachers_own_test", "assert True"),  # no declared exercise: the kernel runs it
+        new_code_cell("check.next_level(next_level)"),  # not a graded cell
+    ]
+    course_exercises()  # as ExecuteAnswers.preprocess declares them before the cells
+    step = ExecuteAnswers()
+    for index, cell in enumerate(cells):
+        step.preprocess_cell(cell, {}, index)
+    assert run == [0, 2, 3]
+    (error,) = cells[1].outputs
+    assert error.output_type == "error" and error.ename == "NotGraded"
+    assert "next_level is graded outside the kernel by CheckOutsideKernel" in error.evalue

@@ -1,9 +1,11 @@
 """The grade nbgrader saves: each exercise checked outside the student's kernel.
 
 ``nbgrader autograde`` runs a student's notebook in a kernel, then saves each check cell's
-points from its outputs (an error costs the points; so does any line on stderr). Between
-the two, :class:`CheckOutsideKernel` (which ``make nbgrader``'s ``nbgrader_config.py``
-installs) grades each exercise again, in nbgrader's own process:
+points from its outputs (an error costs the points; so does any line on stderr). The two
+steps ``make nbgrader``'s ``nbgrader_config.py`` installs change that:
+:class:`ExecuteAnswers` runs the notebook as nbgrader does but for the check cells of the
+declared exercises, and then :class:`CheckOutsideKernel` grades each of those exercises in
+nbgrader's own process:
 
 - it takes the student's answer cells from the notebook by nbgrader's grade ids (the
   exercise's and the earlier ones', whose helpers it may use) and runs them in a fresh
@@ -35,7 +37,7 @@ from typing import Any
 
 import numpy as np
 from nbformat.notebooknode import NotebookNode, from_dict
-from nbgrader.preprocessors import NbGraderPreprocessor
+from nbgrader.preprocessors import Execute, NbGraderPreprocessor
 from traitlets import List, Unicode
 
 from course.check.exercises import declared
@@ -46,7 +48,7 @@ from course.classroom.exercise_list import course_exercises
 from course.classroom.notebooks import NOTEBOOKS
 from course.i18n import _
 
-__all__ = ["CheckOutsideKernel", "grade_exercise", "lesson_constants"]
+__all__ = ["CheckOutsideKernel", "ExecuteAnswers", "grade_exercise", "lesson_constants"]
 
 UNCHECKED = True  # see the module docstring
 
@@ -184,6 +186,21 @@ def _once(said: list[str]) -> list[str]:
     ]
 
 
+def _graded_outside(cell: Mapping[str, Any]) -> str | None:
+    """The exercise whose check cell ``cell`` is, if :class:`CheckOutsideKernel` grades it.
+
+    None for every other cell, a check cell of the teacher's own among them. The
+    chapters' checkers must be declared (:func:`course_exercises`).
+    """
+    grade_id = str(_grading(cell).get("grade_id", ""))
+    if cell.get("cell_type") != "code" or not _grading(cell).get("grade"):
+        return None
+    if not grade_id.endswith(_TEST):
+        return None
+    function = grade_id[: -len(_TEST)]
+    return function if _has_declaration(function) else None
+
+
 def _has_declaration(name: str) -> bool:
     try:
         declared(name)
@@ -255,13 +272,8 @@ class CheckOutsideKernel(NbGraderPreprocessor):
         seed = submission_seed(student, assignment, self.grading_secret)
         course_exercises()  # every chapter's checkers declared, in nbgrader's fresh process
         for cell in nb.cells:
-            grade_id = str(_grading(cell).get("grade_id", ""))
-            if cell.cell_type != "code" or not _grading(cell).get("grade"):
-                continue
-            if not grade_id.endswith(_TEST):
-                continue
-            function = grade_id[: -len(_TEST)]
-            if not _has_declaration(function):
+            function = _graded_outside(cell)
+            if function is None:
                 continue
             try:
                 result, said = grade_exercise(nb, function, seed, assignment, self.child_paths)
@@ -270,3 +282,41 @@ class CheckOutsideKernel(NbGraderPreprocessor):
                 result, said = CheckResult(function, False, 0, f"the grader failed: {error}"), []
             cell.outputs = _verdict(result, said)
         return nb, resources
+
+
+class ExecuteAnswers(Execute):
+    """nbgrader's Execute, but for the check cells :class:`CheckOutsideKernel` grades.
+
+    Their outputs are the verdict :class:`CheckOutsideKernel` writes, whatever the kernel
+    printed: run in the kernel too, a check would only cost its time (1.7 s of a lesson 01
+    submission's 7.6 s). Such a cell is left with an error, which costs its points unless
+    :class:`CheckOutsideKernel` replaces it: without that step, nothing is graded by
+    mistake. The student's answers and every other cell run as nbgrader runs them; a
+    check cell of the teacher's own, for no declared exercise, too.
+    """
+
+    def preprocess(
+        self, nb: NotebookNode, resources: dict | None = None, km: Any = None
+    ) -> tuple[NotebookNode, dict]:
+        course_exercises()  # every chapter's checkers declared, in nbgrader's fresh process
+        return super().preprocess(nb, resources, km)
+
+    def preprocess_cell(
+        self, cell: NotebookNode, resources: dict, index: int
+    ) -> tuple[NotebookNode, dict]:
+        function = _graded_outside(cell)
+        if function is None:
+            return super().preprocess_cell(cell, resources, index)
+        cell.outputs = [_not_graded(function)]
+        return cell, resources
+
+
+def _not_graded(function: str) -> NotebookNode:
+    """The error a check cell holds until :class:`CheckOutsideKernel` writes its verdict."""
+    message = _(
+        "{function} is graded outside the kernel by CheckOutsideKernel, which did not run: "
+        "add it to the autograde steps (python -m course nbgrader writes them)"
+    ).format(function=function)
+    return from_dict(
+        {"output_type": "error", "ename": "NotGraded", "evalue": message, "traceback": [message]}
+    )

@@ -60,13 +60,14 @@ c.ClearSolutions.code_stub = {{"python": {stub!r}}}
 # A lesson's pictures and apps take a while to compute in a fresh kernel.
 c.Execute.timeout = 600
 # Each exercise graded outside the student's kernel (course.classroom.autograder), right
-# after nbgrader has run the notebook: the check cells' points are its verdicts.
-from course.classroom.autograder import CheckOutsideKernel  # noqa: E402
+# after nbgrader has run the notebook but for its check cells: their points are its verdicts.
+from course.classroom.autograder import CheckOutsideKernel, ExecuteAnswers  # noqa: E402
 from nbgrader.converters import Autograde  # noqa: E402
 from nbgrader.preprocessors import Execute  # noqa: E402
 
 _steps = list(Autograde.class_traits()["autograde_preprocessors"].make_dynamic_default())
-_steps.insert(_steps.index(Execute) + 1, CheckOutsideKernel)
+_at = _steps.index(Execute)
+_steps[_at : _at + 1] = [ExecuteAnswers, CheckOutsideKernel]
 c.Autograde.autograde_preprocessors = _steps
 # The graded cases are drawn from this secret, the student and the lesson: keep this file
 # where students cannot read it. A new secret draws new cases for every submission.

@@ -315,7 +315,7 @@ def _not_graded(function: str) -> NotebookNode:
     """The error a check cell holds until :class:`CheckOutsideKernel` writes its verdict."""
     message = _(
         "{function} is graded outside the kernel by CheckOutsideKernel, which did not run: "
-        "add it to the autograde steps (python -m course nbgrader writes them)"
+        "add it to the autograde steps, as the course's nbgrader_config.py does"
     ).format(function=function)
     return from_dict(
         {"output_type": "error", "ename": "NotGraded", "evalue": message, "traceback": [message]}

@@ -445,7 +445,11 @@ def test_a_zoom_step_that_keeps_its_window_keeps_the_panels_recordings():
     moved(app, sent, x + 0.3, y)
     curve = app.panels[0].curve
     recorded = app.view._command_replays[curve]
+    box, box_recorded = app.window_box.get_bbox().bounds, app.view._command_replays[app.window_box]
     extent = app.panels[0].axes.get_xlim()
     moved(app, sent, x + 0.4, y)
     assert app.panels[0].axes.get_xlim() == extent
     assert app.view._command_replays[curve] is recorded
+    # The overview's window box, where the window stays, is not drawn anew either.
+    assert app.window_box.get_bbox().bounds == box
+    assert app.view._command_replays[app.window_box] is box_recorded

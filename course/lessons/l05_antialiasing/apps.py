@@ -259,7 +259,9 @@ class ZoomApp(SliderApp):
         else:
             truth = self._dragged_reference(line, gaps, (bottom - top, right - left), k)
         near = np.insert(line, np.flatnonzero(gaps) + 1, np.nan, axis=0)
-        self.window_box.set_bounds(left, top, right - left, bottom - top)
+        bounds = (left, top, right - left, bottom - top)
+        if self.window_box.get_bbox().bounds != bounds:  # set_bounds always marks it changed
+            self.window_box.set_bounds(*bounds)
         self.windows = []
         for zoom, name, window in zip(self.panels, titles, windows, strict=False):
             zoom.curve.set_data(near[:, 0], near[:, 1])

@@ -7,6 +7,8 @@ arguments, budgets), while nothing of the grader's process is reachable from the
 from __future__ import annotations
 
 import inspect
+import io
+import json
 import re
 import sys
 import time
@@ -16,6 +18,7 @@ import numpy as np
 import pytest
 
 import course
+from course.check._outside_child import decode, encode, read_message, write_message
 from course.check.outside import outside_function
 from course.check.references import CallBudget, call_budget
 from course.check.sandbox import CaseStopped, student_line
@@ -47,6 +50,27 @@ def test_values_cross_as_plain_numbers_text_lists_and_arrays(stand_in):
     assert plain == [1, 2.5, "a", None, True] and big == 2**80
     assert np.isnan(nan) and complex_number == 1 + 2j
     assert str(inspect.signature(echo)) == "(x)"
+
+
+ARRAYS = [
+    np.arange(6.0).reshape(2, 3).T,  # not contiguous
+    np.array(2.5),  # no dimensions
+    np.zeros((0, 3)),
+    np.array([True, False]),
+    np.arange(4, dtype=np.uint8),
+    np.arange(3, dtype=">i4"),  # big-endian
+    np.array([1 + 2j, -3j], dtype=np.complex64),
+    np.random.default_rng(0).random((700, 700, 3)),  # a lesson's window
+]
+
+
+def test_arrays_of_every_kind_cross_and_come_back_writable(stand_in):
+    echo = stand_in("def echo(*arrays):\n    return list(arrays)", "echo")
+    back = echo(*ARRAYS)
+    assert len(back) == len(ARRAYS)
+    for sent, got in zip(ARRAYS, back, strict=True):
+        assert got.dtype == sent.dtype and got.shape == sent.shape
+        assert np.array_equal(got, sent) and got.flags.writeable
 
 
 def test_an_iterator_arrives_as_its_items_and_an_object_as_its_type(stand_in):
@@ -164,6 +188,81 @@ def test_lines_written_to_the_grader_s_channel_are_not_taken_for_the_answer(stan
     )
     assert forger() == 1
     assert forger() == 1  # and the channel is still in step
+
+
+def test_arrays_written_to_the_grader_s_channel_are_not_taken_for_the_answer(stand_in):
+    # A forged answer with the bytes of an array, for a question not asked: read and skipped.
+    forger = stand_in(
+        "import os\n\ndef forger(window):\n"
+        "    window[0, 0] = 7.0\n"
+        "    for descriptor in range(3, 20):\n"
+        "        try:\n"
+        '            os.write(descriptor, b\'{"returned": {"array": ["<f8", [1], 0]}, \'\n'
+        '                     b\'"asked": 999, "buffers": [8]}\\n\' + bytes(8))\n'
+        "        except OSError:\n"
+        "            pass\n"
+        "    return window.sum()",
+        "forger",
+    )
+    window = np.zeros((4, 4))
+    assert forger(window) == 7.0 and window[0, 0] == 7.0
+    assert forger(np.ones((2, 2))) == 10.0  # and the channel is still in step
+
+
+def framed(*messages: tuple[dict, list]) -> io.BytesIO:
+    stream = io.BytesIO()
+    for message, buffers in messages:
+        write_message(stream, message, buffers)
+    stream.seek(0)
+    return stream
+
+
+def test_a_message_s_arrays_travel_as_bytes_after_its_line():
+    buffers: list = []
+    message = {"values": [encode(array, buffers) for array in ARRAYS[:-1]], "n": 1}
+    stream = framed((message, buffers))
+    line = stream.getvalue().split(b"\n", 1)[0]
+    assert json.loads(line)["buffers"] == [array.nbytes for array in ARRAYS[:-1]]
+    got, got_buffers = read_message(stream, 10**6)
+    assert got["n"] == 1 and read_message(stream, 10**6) is None  # then the stream ends
+    for sent, back in zip(ARRAYS, got["values"], strict=False):
+        decoded = decode(back, got_buffers)
+        assert decoded.dtype == sent.dtype and np.array_equal(decoded, sent)
+
+
+def test_reading_skips_what_is_not_a_message_and_stops_at_a_cut_buffer():
+    stream = io.BytesIO(
+        b"garbage \xff\xfe\n"  # not JSON, not even UTF-8
+        b"[1, 2]\n"  # not an object
+        b'{"buffers": [-1]}\n'  # not sizes
+        b'{"buffers": [1000]}\n'  # more than the bound
+        + b"x" * 50  # a line longer than the bound: skipped in pieces
+        + b'\n{"asked": 3, "buffers": [2, 0]}\nab{"asked": 4}\n'
+        + b'{"asked": 5, "buffers": [4]}\nab'  # its buffer cut short: the child died
+    )
+    assert read_message(stream, 40) == (
+        {"asked": 3, "buffers": [2, 0]},
+        [bytearray(b"ab"), bytearray()],
+    )
+    assert read_message(stream, 40) == ({"asked": 4}, [])
+    assert read_message(stream, 40) is None
+
+
+@pytest.mark.parametrize(
+    "spec",
+    [
+        ["|O", [1], 0],  # objects
+        ["<U1", [2], 0],  # text
+        ["<f8", [3], 0],  # more than the buffer holds
+        ["<f8", [-1], 0],
+        ["<f8", [1], 5],  # no such buffer
+        ["not a dtype", [1], 0],
+        "<f8",
+    ],
+)
+def test_an_array_its_buffer_cannot_hold_is_refused(spec):
+    with pytest.raises(ValueError, match="array"):
+        decode({"array": spec}, [bytearray(8)])
 
 
 COURSE_FILE = str(Path(course.__file__).resolve())

@@ -29,7 +29,6 @@ import builtins
 import contextlib
 import importlib.util
 import inspect
-import json
 import os
 import queue
 import shutil
@@ -60,6 +59,8 @@ from course.check._outside_child import (
     UP,
     decode,
     encode,
+    read_message,
+    write_message,
 )
 from course.check.references import CallBudget, call_limits, known_mistake
 from course.check.sandbox import MEMORY_BUDGET, TIME_BUDGET, CaseStopped
@@ -73,6 +74,8 @@ UNCHECKED = True  # see the module docstring
 PRELUDE = "import itertools\nimport math\n\nimport numpy as np\n"
 #: Seconds of processor time the whole child may use (every case, and loading the cells).
 CHILD_CPU_SECONDS = 120
+#: The child's address space beyond the cells' memory budget: numpy's own, and the cells'.
+_CHILD_OWN_MEMORY = 256 * 2**20
 #: The wall-clock grace beyond a call's budget before the grader kills the child: a call
 #: that waits (``time.sleep``) or sits in one long C call uses no processor time.
 _WALL_FACTOR, _WALL_EXTRA = 4, 5.0
@@ -164,8 +167,8 @@ class Outside:
         self.memory = int(memory)
         self.printed: list[str] = []
         self.warned: list[str] = []
-        self._process: subprocess.Popen[str] | None = None
-        self._lines: queue.Queue[str | None] | None = None
+        self._process: subprocess.Popen[bytes] | None = None
+        self._answers: queue.Queue[tuple[dict[str, Any], list[bytearray]] | None] | None = None
         self._asked = 0
         self._folder: Path | None = None
         self.loaded: dict[str, Any] = {}
@@ -193,66 +196,65 @@ class Outside:
             stderr=subprocess.DEVNULL,
             cwd=self._folder,
             env=environment,
-            text=True,
-            encoding="utf-8",
-            errors="replace",
             start_new_session=sys.platform != "win32",  # its own group: close() ends them all
         )
-        self._lines = queue.Queue()
+        self._answers = queue.Queue()
+        # No answer holds more than the child's address space could.
+        most = self.memory + _CHILD_OWN_MEMORY
         threading.Thread(
-            target=_read_lines, args=(self._process.stdout, self._lines), daemon=True
+            target=_read_answers, args=(self._process.stdout, self._answers, most), daemon=True
         ).start()
+        buffers: list[Any] = []
         message = {
             "op": "load",
             "prelude": self.prelude,
-            "given": {name: encode(value) for name, value in self.given.items()},
+            "given": {name: encode(value, buffers) for name, value in self.given.items()},
             "cells": [
                 [cell, index == len(self.cells) - 1] for index, cell in enumerate(self.cells)
             ],
             "function": self.function,
             "confine": _confinement(self._folder, self.paths),
-            "memory": self.memory + 256 * 2**20,  # numpy's own, and the cells'
+            "memory": self.memory + _CHILD_OWN_MEMORY,
             "cpu_seconds": CHILD_CPU_SECONDS,
             "seconds": max(self.seconds, 10.0),  # importing numpy takes a while
         }
-        answer = self._ask(message, max(self.seconds, 10.0))
-        self.loaded = answer if answer is not None else {"stopped": "time"}
+        answer = self._ask(message, buffers, max(self.seconds, 10.0))
+        self.loaded = answer[0] if answer is not None else {"stopped": "time"}
         return self.loaded
 
-    def _ask(self, message: dict[str, Any], seconds: float) -> dict[str, Any] | None:
-        """Send ``message``; the child's answer, or None (the child killed) past the wall time.
+    def _ask(
+        self, message: dict[str, Any], buffers: list[Any], seconds: float
+    ) -> tuple[dict[str, Any], list[bytearray]] | None:
+        """Send ``message`` and the bytes of its arrays; the child's answer and the bytes of
+        its arrays, or None (the child killed) past the wall time.
 
         Each message carries a number the answer repeats: a line the student's code wrote to
         the grader's channel itself is skipped, never taken for the answer.
         """
-        process, lines = self._process, self._lines
-        if process is None or process.stdin is None or lines is None:
+        process, answers = self._process, self._answers
+        if process is None or process.stdin is None or answers is None:
             return None
         self._asked += 1
         try:
-            process.stdin.write(json.dumps({**message, "asked": self._asked}) + "\n")
-            process.stdin.flush()
+            write_message(process.stdin, {**message, "asked": self._asked}, buffers)
         except OSError:
-            return self._died()
+            return self._died(), []
         deadline = time.monotonic() + seconds * _WALL_FACTOR + _WALL_EXTRA
         while True:
             try:
-                line = lines.get(timeout=max(deadline - time.monotonic(), 0.0))
+                received = answers.get(timeout=max(deadline - time.monotonic(), 0.0))
             except queue.Empty:
                 self.close()
                 return None
-            if line is None:  # the child's output ended: it died
-                return self._died()
-            try:
-                answer = json.loads(line)
-            except ValueError:
-                continue
-            if isinstance(answer, dict) and answer.get("asked") == self._asked:
+            if received is None:  # the child's output ended: it died
+                return self._died(), []
+            answer, answer_buffers = received
+            if answer.get("asked") == self._asked:
                 break
         if answer.get("printed"):
             self.printed.append(str(answer["printed"]))
         self.warned.extend(str(warning) for warning in answer.get("warnings", []))
-        return answer
+        return answer, answer_buffers
 
     def _died(self) -> dict[str, Any]:
         code = None
@@ -313,16 +315,15 @@ class Outside:
         loaded = self.loaded if self._process is not None else self._start()
         self._raise_for(loaded)
         max_calls, too_many = call_limits()
+        buffers: list[Any] = []
         message = {
             "op": "call",
             "function": self.function,
-            "arguments": [encode(value) for value in arguments],
+            "arguments": [encode(value, buffers) for value in arguments],
             "seconds": self.seconds,
             "max_calls": max_calls,
         }
-        answer = self._ask(message, self.seconds)
-        if answer is None:
-            answer = {"stopped": "time"}
+        answer, buffers = self._ask(message, buffers, self.seconds) or ({"stopped": "time"}, [])
         if answer.get("stopped") == "calls" and max_calls is not None:
             text = _("more than {count:,} Python function calls").format(count=max_calls)
             if too_many is None:
@@ -330,8 +331,8 @@ class Outside:
             raise CallBudget(f"{text}\n{known_mistake(too_many)}", too_many.name)
         self._raise_for(answer)
         for given, left in zip(arguments, answer.get("arguments", ()), strict=False):
-            _write_back(given, decode(left))
-        return decode(answer["returned"])
+            _write_back(given, decode(left, buffers))
+        return decode(answer["returned"], buffers)
 
     def _raise_for(self, answer: Mapping[str, Any]) -> None:
         if "stopped" in answer:
@@ -364,15 +365,18 @@ class Outside:
             raise rebuilt
 
 
-def _read_lines(stream: Any, lines: queue.Queue[str | None]) -> None:
-    """The child's output, line by line, then None: a thread's job, so that the grader waits
-    with a timeout on any system (select cannot wait on a pipe on Windows)."""
+def _read_answers(
+    stream: Any, answers: queue.Queue[tuple[dict[str, Any], list[bytearray]] | None], most: int
+) -> None:
+    """The child's answers (:func:`~course.check._outside_child.read_message`, each at most
+    ``most`` bytes), then None: a thread's job, so that the grader waits with a timeout on
+    any system (select cannot wait on a pipe on Windows)."""
     try:
-        for line in stream:
-            lines.put(line)
+        while (received := read_message(stream, most)) is not None:
+            answers.put(received)
     except (OSError, ValueError):
         pass
-    lines.put(None)
+    answers.put(None)
 
 
 def _write_back(given: Any, left: Any) -> None:

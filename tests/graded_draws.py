@@ -18,7 +18,6 @@ of its exercises to these, for :data:`SEEDS`:
 
 from __future__ import annotations
 
-import copy
 import importlib
 import os
 from collections.abc import Callable, Iterator, Mapping
@@ -177,12 +176,14 @@ def students(
 
 @contextmanager
 def drawn_once() -> Iterator[None]:
-    """Inside, the checkers draw a seed's cases once and get a copy at every check after.
+    """Inside, the checkers draw a seed's cases once and share them at every check after.
 
     A draw depends on the exercise and the seed alone (:func:`check_drawn_cases` asserts
     it), and drawing is most of a graded check's time: the triangle's draw runs every named
-    mistake on its candidates, 0.9 s, against 0.04 s for the check itself. Only the last
-    draw is kept (a lesson window's cases hold 60 MB).
+    mistake on its candidates, 0.9 s, against 0.04 s for the check itself. The shared
+    cases' arrays are read-only, so a checker that wrote into one would fail loudly (a
+    copy at each check cost more than the bezier's draw: five 700 x 700 windows). Only the
+    last draw is kept.
     """
     last: dict[tuple[str, int], list[Any]] = {}
     draw = base.drawn_cases
@@ -193,11 +194,24 @@ def drawn_once() -> Iterator[None]:
             return draw(exercise, fixed)
         if key not in last:
             last.clear()
-            last[key] = draw(exercise, fixed)
-        return copy.deepcopy(last[key])
+            last[key] = [_read_only(case) for case in draw(exercise, fixed)]
+        return [dict(case) for case in last[key]]
 
     with mock.patch.object(base, "drawn_cases", drawn):
         yield
+
+
+def _read_only(value: Any) -> Any:
+    """``value`` with every array in it made read-only (in place: a fresh draw's)."""
+    if isinstance(value, np.ndarray):
+        value.flags.writeable = False
+    elif isinstance(value, Mapping):
+        for item in value.values():
+            _read_only(item)
+    elif isinstance(value, (list, tuple)):
+        for item in value:
+            _read_only(item)
+    return value
 
 
 def check_graded(

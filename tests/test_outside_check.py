@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 import course
-from course.check._outside_child import decode, encode, read_message, write_message
+from course.check._wire import decode, encode, read_message, write_message
 from course.check.outside import outside_function
 from course.check.references import CallBudget, call_budget
 from course.check.sandbox import CaseStopped, student_line

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from course import limits
-from course.check._outside_child import Opaque
+from course.check._wire import Opaque
 from course.check.shown import show_value
 from course.i18n import _
 

@@ -46,17 +46,12 @@ from typing import Any
 
 import numpy as np
 
-from course.check._outside_child import (
+from course.check._outside_child import CHANGE, EVENT, LOAD, MEMORY_EXIT, READ, UP
+from course.check._wire import (
     ARRAY,
-    CHANGE,
-    EVENT,
     ITERATOR,
     LIST,
-    LOAD,
-    MEMORY_EXIT,
     NESTED,
-    READ,
-    UP,
     decode,
     encode,
     read_message,
@@ -127,8 +122,12 @@ def _confinement(folder: Path, paths: Sequence[str]) -> dict[str, Any]:
 
 
 _SITE: list[Path] = []
-#: The child's program, run by path as text (importing it would bring the course along).
-_CHILD_PROGRAM = str(importlib.util.find_spec("course.check._outside_child").origin)
+#: The child's program, run as text (importing it would bring the course along): how values
+#: cross, then the child itself.
+_CHILD_PROGRAM = [
+    str(importlib.util.find_spec(f"course.check.{name}").origin)
+    for name in ("_wire", "_outside_child")
+]
 
 
 def _site() -> Path:
@@ -178,7 +177,7 @@ class Outside:
     def _start(self) -> dict[str, Any]:
         self.close()
         self._folder = Path(tempfile.mkdtemp(prefix="course-outside-"))
-        source = Path(_CHILD_PROGRAM).read_text(encoding="utf-8")
+        source = "\n".join(Path(part).read_text(encoding="utf-8") for part in _CHILD_PROGRAM)
         environment = {
             "PATH": os.environ.get("PATH", ""),
             "HOME": str(self._folder),
@@ -368,7 +367,7 @@ class Outside:
 def _read_answers(
     stream: Any, answers: queue.Queue[tuple[dict[str, Any], list[bytearray]] | None], most: int
 ) -> None:
-    """The child's answers (:func:`~course.check._outside_child.read_message`, each at most
+    """The child's answers (:func:`~course.check._wire.read_message`, each at most
     ``most`` bytes), then None: a thread's job, so that the grader waits with a timeout on
     any system (select cannot wait on a pipe on Windows)."""
     try:

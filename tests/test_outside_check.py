@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 import course
-from course.check._wire import decode, encode, read_message, write_message
+from course.check._wire import BYTES, Unreadable, decode, encode, read_message, write_message
 from course.check.outside import outside_function
 from course.check.references import CallBudget, call_budget
 from course.check.sandbox import CaseStopped, student_line
@@ -261,8 +261,27 @@ def test_reading_skips_what_is_not_a_message_and_stops_at_a_cut_buffer():
     ],
 )
 def test_an_array_its_buffer_cannot_hold_is_refused(spec):
-    with pytest.raises(ValueError, match="array"):
+    with pytest.raises(Unreadable) as refused:
         decode({"array": spec}, [bytearray(8)])
+    assert refused.value.args == (BYTES, 0)
+
+
+def test_a_forged_answer_for_the_question_asked_is_a_case_stopped_if_unreadable(stand_in):
+    # The load is question 1, the first call question 2: its forged answer says 3 numbers
+    # lie in 8 bytes.
+    forger = stand_in(
+        "import os\n\ndef forger():\n"
+        "    for descriptor in range(3, 20):\n"
+        "        try:\n"
+        '            os.write(descriptor, b\'{"returned": {"array": ["<f8", [3], 0]}, \'\n'
+        '                     b\'"asked": 2, "buffers": [8]}\\n\' + bytes(8))\n'
+        "        except OSError:\n"
+        "            pass\n"
+        "    return 1",
+        "forger",
+    )
+    with pytest.raises(CaseStopped, match="bytes do not match its shape and type"):
+        forger()
 
 
 COURSE_FILE = str(Path(course.__file__).resolve())

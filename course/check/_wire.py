@@ -26,7 +26,7 @@ MAX_ITEMS = 2_000_000
 MAX_DEPTH = 32
 #: Why an answer could not cross (:class:`Unreadable`): the grader words each in the
 #: student's language.
-NESTED, ARRAY, LIST, ITERATOR = range(1, 5)
+NESTED, ARRAY, LIST, ITERATOR, BYTES = range(1, 6)
 
 
 class Unreadable(Exception):
@@ -98,7 +98,7 @@ def decode(value: Any, buffers: list[bytearray]) -> Any:
     """The value :func:`encode` made, its arrays in ``buffers`` (writable, as the student's
     function may write into an argument): numbers, text, lists, tuples, arrays;
     :class:`Opaque` for an object that could not cross. An iterator arrives as the list of
-    its items. ValueError for an array its buffer cannot hold."""
+    its items. :class:`Unreadable` for an array its buffer cannot hold."""
     if not isinstance(value, dict):
         return value
     if "array" in value:
@@ -117,7 +117,10 @@ def decode(value: Any, buffers: list[bytearray]) -> Any:
 
 
 def _array(spec: Any, buffers: list[bytearray]) -> Any:
-    """The numeric array ``[dtype, shape, index]`` describes, on its buffer (not copied)."""
+    """The numeric array ``[dtype, shape, index]`` describes, on its buffer (not copied).
+
+    :class:`Unreadable` (:data:`BYTES`) for anything else: only a child that wrote to the
+    grader's channel itself sends such an answer."""
     import numpy as np
 
     try:
@@ -126,11 +129,14 @@ def _array(spec: Any, buffers: list[bytearray]) -> Any:
         shape = tuple(int(length) for length in shape)
         buffer = buffers[int(index)]
     except (TypeError, ValueError, IndexError) as error:
-        raise ValueError(f"not an array: {spec!r:.100}") from error
-    if dtype.kind not in "biufc" or dtype.fields is not None or min(shape, default=0) < 0:
-        raise ValueError(f"not an array: {spec!r:.100}")
-    if math.prod(shape) * dtype.itemsize != len(buffer):
-        raise ValueError(f"an array of shape {shape} and dtype {dtype} in {len(buffer)} bytes")
+        raise Unreadable(BYTES, 0) from error
+    if (
+        dtype.kind not in "biufc"
+        or dtype.fields is not None
+        or min(shape, default=0) < 0
+        or math.prod(shape) * dtype.itemsize != len(buffer)
+    ):
+        raise Unreadable(BYTES, 0)
     return np.frombuffer(buffer, dtype).reshape(shape)
 
 

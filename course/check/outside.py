@@ -49,9 +49,11 @@ import numpy as np
 from course.check._outside_child import CHANGE, EVENT, LOAD, MEMORY_EXIT, READ, UP
 from course.check._wire import (
     ARRAY,
+    BYTES,
     ITERATOR,
     LIST,
     NESTED,
+    Unreadable,
     decode,
     encode,
     read_message,
@@ -329,9 +331,13 @@ class Outside:
                 raise CallBudget(text)
             raise CallBudget(f"{text}\n{known_mistake(too_many)}", too_many.name)
         self._raise_for(answer)
-        for given, left in zip(arguments, answer.get("arguments", ()), strict=False):
-            _write_back(given, decode(left, buffers))
-        return decode(answer["returned"], buffers)
+        try:
+            for given, left in zip(arguments, answer.get("arguments", ()), strict=False):
+                _write_back(given, decode(left, buffers))
+            return decode(answer["returned"], buffers)
+        except Unreadable as unreadable:
+            self._raise_for({"unreadable": list(unreadable.args)})
+            raise  # not reached: _raise_for raises for an unreadable answer
 
     def _raise_for(self, answer: Mapping[str, Any]) -> None:
         if "stopped" in answer:
@@ -413,6 +419,7 @@ _UNREADABLE = {
     ARRAY: N_("an array of {count:,} numbers"),
     LIST: N_("a list of {count:,} items"),
     ITERATOR: N_("an iterator of more than {count:,} items"),
+    BYTES: N_("an array whose bytes do not match its shape and type"),
 }
 #: What the confined child refused, by its code; any other code is a refused audit event.
 _REFUSALS = {

@@ -365,8 +365,16 @@ def start_server(tmp_path: Path, command: str, port: int, **streams) -> subproce
         cwd=tmp_path,
         env=environment,
         start_new_session=True,
+        preexec_fn=terminal_sigint,
         **streams,
     )
+
+
+def terminal_sigint() -> None:
+    # A shell without job control starts its background jobs with Ctrl-C ignored, and an
+    # ignored signal stays ignored through exec: a test run started that way would hand
+    # every server it starts a deaf ear. The server gets Ctrl-C as a terminal's program does.
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
 def wait_until_up(server: subprocess.Popen, url: str, log) -> None:

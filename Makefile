@@ -115,6 +115,11 @@ $(VENV)/.%-installed: $(LOCK)/%.txt pyproject.toml | $(BIN)/python
 	@echo "make: installing the '$*' set into $(VENV) $(if $(LATEST),(newest releases),from $(LOCK)/$*.txt)"
 	$(BIN)/python -m pip install --progress-bar on \
 		$(if $(LATEST),--upgrade --upgrade-strategy eager $(PIP_$*),-r $(LOCK)/$*.txt -e .)
+	@# jsonschema imports rfc3987-syntax whenever it is installed (jupyter-events asks for it),
+	@# which builds a Lark grammar at import: 2.8 s more for every process that reads a
+	@# notebook (each nbgrader command, each Jupyter server). Without it jsonschema only skips
+	@# the "iri" formats, which nothing here uses (python-jsonschema/jsonschema#1428).
+	$(BIN)/python -m pip uninstall --yes --quiet rfc3987-syntax
 	$(BIN)/pybabel compile -d course/locale -D course --statistics
 	touch $@
 

@@ -72,6 +72,24 @@ def test_make_alone_prints_one_line_per_target():
     assert "a longer fuzz campaign over every public function" in lines["fuzz"]
 
 
+def test_reading_a_notebook_does_not_build_the_iri_grammar():
+    # Installed, rfc3987-syntax is imported by jsonschema with nbformat and builds its Lark
+    # grammar: 2.8 s for every nbgrader command and Jupyter server. make's install step
+    # removes it (see the Makefile); a lock that brought it back would fail here.
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import sys, nbformat; print(sorted({'rfc3987_syntax', 'lark'} & set(sys.modules)))",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "[]"
+
+
 def fake_python(tmp_path: Path, script: str) -> Path:
     path = tmp_path / "python"
     path.write_text(f"#!/bin/sh\n{script}\n")

@@ -30,8 +30,9 @@ NESTED, ARRAY, LIST, ITERATOR, BYTES = range(1, 6)
 
 
 class Unreadable(Exception):
-    """The returned value cannot cross: why (:data:`NESTED`, :data:`ARRAY`, :data:`LIST` or
-    :data:`ITERATOR`) and the count, which the grader words in the student's language."""
+    """The returned value cannot cross: why (:data:`NESTED`, :data:`ARRAY`, :data:`LIST`,
+    :data:`ITERATOR`, or :data:`BYTES` for an array its bytes cannot make) and the count,
+    which the grader words in the student's language."""
 
 
 def encode(value: Any, buffers: list[Any], depth: int = 0) -> Any:

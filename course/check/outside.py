@@ -336,8 +336,7 @@ class Outside:
                 _write_back(given, decode(left, buffers))
             return decode(answer["returned"], buffers)
         except Unreadable as unreadable:
-            self._raise_for({"unreadable": list(unreadable.args)})
-            raise  # not reached: _raise_for raises for an unreadable answer
+            raise _unreadable(*unreadable.args) from None
 
     def _raise_for(self, answer: Mapping[str, Any]) -> None:
         if "stopped" in answer:
@@ -357,10 +356,7 @@ class Outside:
             )
             raise CaseStopped(reason, "time")
         if "unreadable" in answer:
-            kind, count = [*list(answer["unreadable"]), 0, 0][:2]
-            why = _(_UNREADABLE.get(kind, _UNREADABLE[ITERATOR]))
-            unreadable = _("your answer cannot be read: {reason}")
-            raise CaseStopped(unreadable.format(reason=why.format(count=int(count))), "answer")
+            raise _unreadable(*[*list(answer["unreadable"]), 0, 0][:2])
         if "missing" in answer:
             raise NameError(
                 _("your cell does not define {function}").format(function=answer["missing"])
@@ -382,6 +378,14 @@ def _read_answers(
     except (OSError, ValueError):
         pass
     answers.put(None)
+
+
+def _unreadable(kind: Any, count: Any) -> CaseStopped:
+    """Why an answer could not be read (an :class:`Unreadable`'s kind and count), in the
+    student's language."""
+    why = _(_UNREADABLE.get(kind, _UNREADABLE[ITERATOR]))
+    unreadable = _("your answer cannot be read: {reason}")
+    return CaseStopped(unreadable.format(reason=why.format(count=int(count))), "answer")
 
 
 def _write_back(given: Any, left: Any) -> None:
